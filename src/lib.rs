@@ -1,0 +1,9 @@
+//! refraction-explorer: makes refraction visible.
+//!
+//! Layers, dependencies pointing down only (see `DESIGN.md`): [`kernel`] (glam only) is the
+//! refraction math; [`oracle`] is its exact reference in double-double arithmetic; [`solve`] is
+//! the JSON Lines interface of the `solve` command.
+
+pub mod kernel;
+pub mod oracle;
+pub mod solve;
