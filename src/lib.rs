@@ -4,6 +4,7 @@
 //! refraction math; [`oracle`] is its exact reference in double-double arithmetic; [`solve`] is
 //! the JSON Lines interface of the `solve` command.
 
+pub mod atomic;
 pub mod kernel;
 pub mod oracle;
 pub mod solve;
