@@ -5,6 +5,7 @@
 //! the JSON Lines interface of the `solve` command.
 
 pub mod atomic;
+pub mod bench;
 pub mod kernel;
 pub mod oracle;
 pub mod solve;
