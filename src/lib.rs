@@ -1,11 +1,14 @@
 //! refraction-explorer: makes refraction visible.
 //!
 //! Layers, dependencies pointing down only (see `DESIGN.md`): [`kernel`] (glam only) is the
-//! refraction math; [`oracle`] is its exact reference in double-double arithmetic; [`solve`] is
-//! the JSON Lines interface of the `solve` command.
+//! refraction math; [`oracle`] is its exact reference in double-double arithmetic; [`bench`]
+//! measures the kernel variants against it; [`solve`] and [`check`] are the JSON Lines
+//! interfaces of the `solve` and `check` commands, sharing [`jsonl`]'s loop.
 
 pub mod atomic;
 pub mod bench;
+pub mod check;
+pub mod jsonl;
 pub mod kernel;
 pub mod oracle;
 pub mod solve;

@@ -21,6 +21,16 @@ enum Command {
     /// "convention" ("along_ray" | "toward_origin") and "precision" ("f64" | "f32").
     /// Exit status 0 when every line was solved, 1 when any line was an error.
     Solve,
+    /// Check the T your ray tracer produced: JSON Lines with the `solve` fields plus
+    /// "t_yours" (an array, or a string such as "vec3(0.1, -0.9, 0)"), from FILE or stdin.
+    ///
+    /// Answers each line with "ok", "matches" (chosen, wrong_side, wrong_bend, reversed,
+    /// total_internal_reflection or null) and "explanation"; a summary of the mistakes goes to
+    /// stderr. Exit status 0 when every line is ok, 1 otherwise.
+    Check {
+        /// JSON Lines file to read (stdin when absent).
+        file: Option<std::path::PathBuf>,
+    },
     /// Measure what accuracy costs in time: every kernel variant at f32 and f64, timed on
     /// this machine and compared with a double-double oracle.
     Bench {
@@ -48,6 +58,7 @@ fn main() -> ExitCode {
             }
         }
         Some(Command::Bench { quick, json }) => bench(quick, json),
+        Some(Command::Check { file }) => check(file.as_deref()),
         None => {
             use clap::CommandFactory;
             let _ = Cli::command().print_help();
@@ -85,4 +96,57 @@ fn bench(quick: bool, json: bool) -> ExitCode {
         print!("{}", report.table());
     }
     ExitCode::SUCCESS
+}
+
+fn check(file: Option<&std::path::Path>) -> ExitCode {
+    use refraction_explorer::check::Match;
+    use std::collections::BTreeMap;
+    let input: Box<dyn io::BufRead> = match file {
+        None => Box::new(io::stdin().lock()),
+        Some(path) => match std::fs::File::open(path) {
+            Ok(f) => Box::new(io::BufReader::new(f)),
+            Err(e) => {
+                eprintln!(
+                    "refraction-explorer check: cannot read {}: {e}",
+                    path.display()
+                );
+                return ExitCode::from(2);
+            }
+        },
+    };
+    let mut tally: BTreeMap<&'static str, usize> = BTreeMap::new();
+    let mut all_ok = true;
+    let result = refraction_explorer::jsonl::answer_lines(input, io::stdout().lock(), |line| {
+        let kind = match refraction_explorer::check::answer(line) {
+            Ok((text, verdict)) => {
+                all_ok &= verdict.ok;
+                let kind = match (verdict.ok, verdict.matches) {
+                    (true, _) => "ok",
+                    (false, Some(Match::Chosen)) => "not unit length",
+                    (false, Some(m)) => m.name(),
+                    (false, None) => "matching no candidate",
+                };
+                (kind, Ok(text))
+            }
+            Err(e) => ("unreadable", Err(e)),
+        };
+        *tally.entry(kind.0).or_default() += 1;
+        kind.1
+    });
+    match result {
+        Ok(answered) => {
+            let summary: Vec<String> = tally.iter().map(|(k, n)| format!("{n} {k}")).collect();
+            eprintln!("check: {}", summary.join(", "));
+            if answered && all_ok {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::from(1)
+            }
+        }
+        Err(e) if e.kind() == ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("refraction-explorer check: {e}");
+            ExitCode::from(2)
+        }
+    }
 }

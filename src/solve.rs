@@ -107,7 +107,7 @@ fn optional_name<'a>(
 }
 
 /// Strips serde_json's " at line 1 column C" (always line 1 here) in favour of the column alone.
-fn json_error(error: &serde_json::Error) -> String {
+pub(crate) fn json_error(error: &serde_json::Error) -> String {
     let text = error.to_string();
     let message = text
         .rfind(" at line ")
@@ -270,44 +270,13 @@ pub fn answer(line: &str) -> Result<String, String> {
     }
 }
 
-/// The error line for input line `line` (1-based).
-#[must_use]
-pub fn error_line(line: usize, message: &str) -> String {
-    serde_json::json!({ "line": line, "error": message }).to_string()
-}
-
-/// Answers every non-empty line of `input` on `output`, in order, one line at a time (nothing is
-/// held beyond the current line). Returns whether every line was solved.
+/// Answers every non-empty line of `input` on `output` (see [`crate::jsonl::answer_lines`]).
+/// Returns whether every line was solved.
 ///
 /// # Errors
-/// Reading `input` or writing `output` failed (a line that is not UTF-8 is answered, not an
-/// error).
-pub fn run(mut input: impl BufRead, mut output: impl Write) -> io::Result<bool> {
-    let mut all_solved = true;
-    let mut buffer = Vec::new();
-    let mut number = 0;
-    loop {
-        buffer.clear();
-        if input.read_until(b'\n', &mut buffer)? == 0 {
-            break;
-        }
-        number += 1;
-        let reply = match std::str::from_utf8(&buffer) {
-            Err(e) => Err(format!(
-                "the line is not valid UTF-8 (byte {})",
-                e.valid_up_to() + 1
-            )),
-            Ok(text) if text.trim().is_empty() => continue,
-            Ok(text) => answer(text.trim()),
-        };
-        let text = reply.unwrap_or_else(|message| {
-            all_solved = false;
-            error_line(number, &message)
-        });
-        writeln!(output, "{text}")?;
-    }
-    output.flush()?;
-    Ok(all_solved)
+/// Reading `input` or writing `output` failed.
+pub fn run(input: impl BufRead, output: impl Write) -> io::Result<bool> {
+    crate::jsonl::answer_lines(input, output, answer)
 }
 
 #[cfg(test)]

@@ -152,39 +152,38 @@ fn lane<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> (S::Vec3, bool) {
     )
 }
 
+/// Runs `lane` on every ray of `rays`, writing `out` (which must have the same length): the
+/// loop shared by the batch kernel and the scalar variants, sliced so that no bounds check is
+/// left inside it. `index` sees every index before use: the identity lets the compiler
+/// vectorise across rays; `std::hint::black_box` keeps each ray a call of its own.
 #[inline(always)]
-fn transmit_lanes<S: Real>(rays: &RayBatch<S>, out: &mut Transmissions<S>) {
-    let len = rays.len();
-    let [dx, dy, dz] = &rays.d;
-    let [nx, ny, nz] = &rays.n;
-    let (dx, dy, dz, nx, ny, nz) = (
-        &dx[..len],
-        &dy[..len],
-        &dz[..len],
-        &nx[..len],
-        &ny[..len],
-        &nz[..len],
-    );
+pub(crate) fn for_each_ray<S: Real>(
+    rays: &RayBatch<S>,
+    out: &mut Transmissions<S>,
+    index: impl Fn(usize) -> usize,
+    lane: impl Fn(S::Vec3, S::Vec3, S) -> (S::Vec3, bool),
+) {
+    let len = rays.len().min(out.len());
+    let [dx, dy, dz] = rays.d.each_ref().map(|c| &c[..len]);
+    let [nx, ny, nz] = rays.n.each_ref().map(|c| &c[..len]);
     let mu = &rays.mu[..len];
-    let [tx, ty, tz] = &mut out.t;
-    let (tx, ty, tz, tir) = (
-        &mut tx[..len],
-        &mut ty[..len],
-        &mut tz[..len],
-        &mut out.tir[..len],
-    );
+    let [tx, ty, tz] = out.t.each_mut().map(|c| &mut c[..len]);
+    let tir = &mut out.tir[..len];
     for i in 0..len {
+        let i = index(i).min(len - 1);
         let (t, reflected) = lane(
             S::Vec3::new(dx[i], dy[i], dz[i]),
             S::Vec3::new(nx[i], ny[i], nz[i]),
             mu[i],
         );
-        let [x, y, z] = t.to_array();
-        tx[i] = x;
-        ty[i] = y;
-        tz[i] = z;
+        [tx[i], ty[i], tz[i]] = t.to_array();
         tir[i] = reflected;
     }
+}
+
+#[inline(always)]
+fn transmit_lanes<S: Real>(rays: &RayBatch<S>, out: &mut Transmissions<S>) {
+    for_each_ray(rays, out, |i| i, lane);
 }
 
 #[cfg(target_arch = "x86_64")]

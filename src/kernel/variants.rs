@@ -1,7 +1,7 @@
 //! The refraction variants whose accuracy and speed the `bench` command compares, behind one
 //! enum so that every caller runs them the same way.
 
-use super::batch::{RayBatch, Transmissions, transmit_batch};
+use super::batch::{RayBatch, Transmissions, for_each_ray, transmit_batch};
 use super::input::Convention;
 use super::real::{Real, Vector3};
 use super::{seed, stable, trig};
@@ -75,38 +75,19 @@ impl Variant {
     }
 }
 
-/// Calls `transmit` on each ray in turn, as a ray tracer calls a scalar kernel. One loop per
-/// variant (the closure is a distinct type), with no bounds checks inside.
+/// Calls `transmit` on each ray in turn, as a ray tracer calls a scalar kernel: one loop per
+/// variant (each closure is a distinct type), kept from being vectorised across rays so that
+/// its time is the cost of one call per ray (which is how a tracer, with other work between
+/// calls, runs it).
 #[inline(always)]
 fn each_ray<S: Real>(
     rays: &RayBatch<S>,
     out: &mut Transmissions<S>,
     transmit: impl Fn(S::Vec3, S::Vec3, S) -> Option<S::Vec3>,
 ) {
-    let ([dx, dy, dz], [nx, ny, nz], mu) = rays.columns();
-    let ([tx, ty, tz], tir) = out.columns_mut();
-    let len = mu.len();
-    let (dx, dy, dz, nx, ny, nz) = (
-        &dx[..len],
-        &dy[..len],
-        &dz[..len],
-        &nx[..len],
-        &ny[..len],
-        &nz[..len],
-    );
-    let (tx, ty, tz, tir) = (
-        &mut tx[..len],
-        &mut ty[..len],
-        &mut tz[..len],
-        &mut tir[..len],
-    );
-    for i in 0..len {
-        let t = transmit(
-            S::Vec3::new(dx[i], dy[i], dz[i]),
-            S::Vec3::new(nx[i], ny[i], nz[i]),
-            mu[i],
-        );
-        [tx[i], ty[i], tz[i]] = t.map_or([S::ZERO; 3], Vector3::to_array);
-        tir[i] = t.is_none();
-    }
+    let zero = S::Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+    for_each_ray(rays, out, std::hint::black_box, |d, n, mu| {
+        let t = transmit(d, n, mu);
+        (t.unwrap_or(zero), t.is_none())
+    });
 }
