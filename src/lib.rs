@@ -11,4 +11,5 @@ pub mod check;
 pub mod jsonl;
 pub mod kernel;
 pub mod oracle;
+pub mod snippets;
 pub mod solve;
