@@ -35,7 +35,10 @@ pub struct SceneInfo {
 
 /// The text of the built-in scene `name`.
 pub(super) fn text(name: &str) -> Option<&'static str> {
-    SCENES.iter().find(|(n, _)| *n == name).map(|(_, text)| *text)
+    SCENES
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, text)| *text)
 }
 
 /// The names of the built-in scenes.

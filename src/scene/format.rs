@@ -202,7 +202,10 @@ fn positive(x: f64, what: &str, span: &Range<usize>) -> Result<f64, Invalid> {
     if x.is_finite() && x > 0.0 {
         Ok(x)
     } else {
-        invalid(span.clone(), format!("{what} is {x}: expected a finite number > 0"))
+        invalid(
+            span.clone(),
+            format!("{what} is {x}: expected a finite number > 0"),
+        )
     }
 }
 
@@ -226,7 +229,9 @@ impl MediaTable {
                     if !(a.is_finite() && a >= 0.0) {
                         return invalid(
                             spec.span(),
-                            format!("medium `{name}`: absorption is {a}: expected a finite number ≥ 0"),
+                            format!(
+                                "medium `{name}`: absorption is {a}: expected a finite number ≥ 0"
+                            ),
                         );
                     }
                     a
@@ -294,7 +299,10 @@ fn dispersion(spec: &Spanned<MediumSpec>) -> Result<Dispersion, Invalid> {
             c: c.c,
         }),
         (None, None, Some(s))
-            if s.b.len() == s.c.len() && !s.b.is_empty() && all_finite(&s.b) && all_finite(&s.c) =>
+            if s.b.len() == s.c.len()
+                && !s.b.is_empty()
+                && all_finite(&s.b)
+                && all_finite(&s.c) =>
         {
             Ok(Dispersion::Sellmeier {
                 b: s.b.clone(),
@@ -404,8 +412,16 @@ fn source(spec: &Spanned<SourceSpec>) -> Result<Source, Invalid> {
     let span = spec.span();
     let s = spec.get_ref();
     let misplaced = [
-        ("rays", s.rays.is_some() && s.kind == SourceKind::Ray, "a beam or a fan"),
-        ("width", s.width.is_some() && s.kind != SourceKind::Beam, "a beam"),
+        (
+            "rays",
+            s.rays.is_some() && s.kind == SourceKind::Ray,
+            "a beam or a fan",
+        ),
+        (
+            "width",
+            s.width.is_some() && s.kind != SourceKind::Beam,
+            "a beam",
+        ),
         (
             "spread_deg",
             s.spread_deg.is_some() && s.kind != SourceKind::Fan,
@@ -433,13 +449,19 @@ fn source(spec: &Spanned<SourceSpec>) -> Result<Source, Invalid> {
     let spread_deg = match (s.kind, s.spread_deg) {
         (SourceKind::Fan, None) => return invalid(span, "a fan needs a `spread_deg`"),
         (_, Some(d)) if !(d.is_finite() && d > 0.0 && d <= 360.0) => {
-            return invalid(span, format!("`spread_deg` is {d}: expected 0 < angle ≤ 360"));
+            return invalid(
+                span,
+                format!("`spread_deg` is {d}: expected 0 < angle ≤ 360"),
+            );
         }
         (_, spread) => spread.unwrap_or(0.0),
     };
     let light = match (s.white, s.wavelength_nm) {
         (true, Some(_)) => {
-            return invalid(span, "give either `white = true` or `wavelength_nm`, not both");
+            return invalid(
+                span,
+                "give either `white = true` or `wavelength_nm`, not both",
+            );
         }
         (true, None) => Light::White,
         (false, None) => Light::Wavelength(super::REFERENCE_WAVELENGTH_NM),
@@ -525,8 +547,8 @@ impl Scene {
             position: span.map(|s| Position::of(text, s.start)),
             message,
         };
-        let parsed: SceneFile = toml::from_str(text)
-            .map_err(|e| fail(e.span(), e.message().trim_end().to_owned()))?;
+        let parsed: SceneFile =
+            toml::from_str(text).map_err(|e| fail(e.span(), e.message().trim_end().to_owned()))?;
         build(parsed, name).map_err(|e| fail(Some(e.span), e.message))
     }
 
@@ -563,9 +585,10 @@ impl Scene {
                 embedded::names().join(", ")
             ),
         })?;
-        let name = path
-            .file_stem()
-            .map_or_else(|| name_or_path.to_owned(), |s| s.to_string_lossy().into_owned());
+        let name = path.file_stem().map_or_else(
+            || name_or_path.to_owned(),
+            |s| s.to_string_lossy().into_owned(),
+        );
         Self::from_toml(&text, name_or_path, &name)
     }
 }
@@ -596,7 +619,10 @@ direction = [1, 0]
 
     #[test]
     fn positions_count_lines_and_characters_from_one() {
-        assert_eq!(Position::of("ab\ncdé f", 7), Position { line: 2, column: 4 });
+        assert_eq!(
+            Position::of("ab\ncdé f", 7),
+            Position { line: 2, column: 4 }
+        );
         assert_eq!(Position::of("", 10), Position { line: 1, column: 1 });
     }
 
@@ -611,7 +637,10 @@ direction = [1, 0]
     fn an_unknown_field_is_named_with_the_expected_ones() {
         let e = error(&format!("{MINIMAL}[effects]\nfresnell = true\n"));
         assert_eq!(e.position, Some(Position { line: 8, column: 1 }));
-        assert!(e.message.contains("fresnell") && e.message.contains("fresnel"), "{e}");
+        assert!(
+            e.message.contains("fresnell") && e.message.contains("fresnel"),
+            "{e}"
+        );
     }
 
     #[test]
@@ -620,19 +649,37 @@ direction = [1, 0]
             "{MINIMAL}[[shapes]]\ncircle = {{ center = [0, 0], radius = 1, medium = \"glas\" }}\n"
         ));
         assert_eq!(e.position.map(|p| p.line), Some(8));
-        assert!(e.message.contains("`glas`") && e.message.contains("vacuum"), "{e}");
+        assert!(
+            e.message.contains("`glas`") && e.message.contains("vacuum"),
+            "{e}"
+        );
         assert!(e.to_string().starts_with("x.toml:8:"), "{e}");
     }
 
     #[test]
     fn bad_numbers_are_refused_where_they_stand() {
         for (extra, expected) in [
-            ("[media.g]\nindex = nan\n", "index nan"),
-            ("[media.g]\nsellmeier = { b = [1.0], c = [0.36] }\n", "at 587.56 nm"),
-            ("[media.g]\nindex = 1.5\ncauchy = { a = 1.5, b = 0.004 }\n", "exactly one"),
-            ("[[shapes]]\ncircle = { center = [0, inf], radius = 1, medium = \"vacuum\" }\n", "finite"),
-            ("[[shapes]]\npolygon = { points = [[0, 0], [1, 1], [2, 2]], medium = \"vacuum\" }\n", "area"),
-            ("[[shapes]]\nlens = { center = [0, 0], thickness = 3, radii = [1, 5], medium = \"vacuum\" }\n", "twice"),
+            ("[media.g]\nindex = nan\n", "index NaN"),
+            (
+                "[media.g]\nsellmeier = { b = [1.0], c = [0.36] }\n",
+                "at 587.56 nm",
+            ),
+            (
+                "[media.g]\nindex = 1.5\ncauchy = { a = 1.5, b = 0.004 }\n",
+                "exactly one",
+            ),
+            (
+                "[[shapes]]\ncircle = { center = [0, inf], radius = 1, medium = \"vacuum\" }\n",
+                "finite",
+            ),
+            (
+                "[[shapes]]\npolygon = { points = [[0, 0], [1, 1], [2, 2]], medium = \"vacuum\" }\n",
+                "area",
+            ),
+            (
+                "[[shapes]]\nlens = { center = [0, 0], thickness = 3, radii = [1, 5], medium = \"vacuum\" }\n",
+                "twice",
+            ),
             ("[effects]\nmax_depth = 100000\n", "max_depth"),
             ("[view]\nmin = [1, 1]\nmax = [0, 2]\n", "below and left"),
         ] {
@@ -645,25 +692,39 @@ direction = [1, 0]
     #[test]
     fn source_fields_must_fit_its_kind() {
         let with = |body: &str| error(&format!("title = \"t\"\n[source]\n{body}"));
-        assert!(with("kind = \"ray\"\norigin = [0, 0]\ndirection = [1, 0]\nwidth = 1\n")
-            .message
-            .contains("`width` applies to a beam only"));
-        assert!(with("kind = \"fan\"\norigin = [0, 0]\ndirection = [1, 0]\n")
-            .message
-            .contains("spread_deg"));
-        assert!(with("kind = \"ray\"\norigin = [0, 0]\ndirection = [0, 0]\n")
-            .message
-            .contains("[0, 0]"));
-        assert!(with("kind = \"laser\"\norigin = [0, 0]\ndirection = [1, 0]\n")
-            .message
-            .contains("ray"));
-        let e = with("kind = \"ray\"\norigin = [0, 0]\ndirection = [1, 0]\nwhite = true\nwavelength_nm = 500\n");
+        assert!(
+            with("kind = \"ray\"\norigin = [0, 0]\ndirection = [1, 0]\nwidth = 1\n")
+                .message
+                .contains("`width` applies to a beam only")
+        );
+        assert!(
+            with("kind = \"fan\"\norigin = [0, 0]\ndirection = [1, 0]\n")
+                .message
+                .contains("spread_deg")
+        );
+        assert!(
+            with("kind = \"ray\"\norigin = [0, 0]\ndirection = [0, 0]\n")
+                .message
+                .contains("[0, 0]")
+        );
+        assert!(
+            with("kind = \"laser\"\norigin = [0, 0]\ndirection = [1, 0]\n")
+                .message
+                .contains("ray")
+        );
+        let e = with(
+            "kind = \"ray\"\norigin = [0, 0]\ndirection = [1, 0]\nwhite = true\nwavelength_nm = 500\n",
+        );
         assert_eq!(e.position, Some(Position { line: 2, column: 1 }), "{e}");
     }
 
     #[test]
     fn a_missing_file_names_the_path() {
         let e = Scene::load("/nonexistent/scene.toml").unwrap_err();
-        assert!(e.to_string().starts_with("/nonexistent/scene.toml: cannot read"), "{e}");
+        assert!(
+            e.to_string()
+                .starts_with("/nonexistent/scene.toml: cannot read"),
+            "{e}"
+        );
     }
 }

@@ -55,7 +55,12 @@ impl Piece {
                 to,
             } => {
                 let start = angle(from - center);
-                (center, radius, start, (angle(to - center) - start).rem_euclid(TAU))
+                (
+                    center,
+                    radius,
+                    start,
+                    (angle(to - center) - start).rem_euclid(TAU),
+                )
             }
             Self::Circle { center, radius } => (center, radius, 0.0, TAU),
         };
@@ -81,7 +86,10 @@ fn angle(v: DVec2) -> f64 {
 }
 
 fn push_distinct(points: &mut Vec<DVec2>, p: DVec2) {
-    if points.last().is_none_or(|last| last.distance_squared(p) > 1e-24) {
+    if points
+        .last()
+        .is_none_or(|last| last.distance_squared(p) > 1e-24)
+    {
         points.push(p);
     }
 }

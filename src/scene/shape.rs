@@ -247,7 +247,11 @@ impl Shape {
         match self {
             Self::Line { point, .. } => *point,
             Self::Segment { from, to } => from.midpoint(*to),
-            Self::Circle { center, .. } | Self::Lens { lens: Lens { center, .. }, .. } => *center,
+            Self::Circle { center, .. }
+            | Self::Lens {
+                lens: Lens { center, .. },
+                ..
+            } => *center,
             Self::Polygon { points, .. } => {
                 points.iter().copied().sum::<DVec2>() / points.len().max(1) as f64
             }
@@ -262,7 +266,11 @@ impl Shape {
                 *from += delta;
                 *to += delta;
             }
-            Self::Circle { center, .. } | Self::Lens { lens: Lens { center, .. }, .. } => {
+            Self::Circle { center, .. }
+            | Self::Lens {
+                lens: Lens { center, .. },
+                ..
+            } => {
                 *center += delta;
             }
             Self::Polygon { points, .. } => points.iter_mut().for_each(|p| *p += delta),
@@ -383,7 +391,9 @@ mod tests {
             .first_crossing(DVec2::new(-5.0, 0.0), DVec2::X)
             .unwrap();
         assert!((enter.t - 3.0).abs() < 1e-15 && enter.normal == -DVec2::X);
-        let leave = circle.first_crossing(DVec2::new(-2.0, 0.0), DVec2::X).unwrap();
+        let leave = circle
+            .first_crossing(DVec2::new(-2.0, 0.0), DVec2::X)
+            .unwrap();
         assert!((leave.t - 4.0).abs() < 1e-15);
         assert!(leave.normal.dot(DVec2::X) > 0.0);
         assert!(circle.contains(DVec2::ONE) && !circle.contains(DVec2::splat(2.0)));
@@ -411,14 +421,20 @@ mod tests {
             .first_crossing(DVec2::new(-5.0, 0.0), DVec2::X)
             .unwrap();
         assert!((hit.t - 5.75).abs() < 1e-12 && (hit.normal + DVec2::X).length() < 1e-12);
-        let out = shape.first_crossing(DVec2::new(1.0, 0.0), DVec2::X).unwrap();
+        let out = shape
+            .first_crossing(DVec2::new(1.0, 0.0), DVec2::X)
+            .unwrap();
         assert!((out.t - 0.25).abs() < 1e-12 && (out.normal - DVec2::X).length() < 1e-12);
         let [top, bottom] = lens.rim();
         for (c, r) in lens.circles() {
             assert!((top.distance(c) - r).abs() < 1e-12);
             assert!((bottom.distance(c) - r).abs() < 1e-12);
         }
-        assert!(shape.first_crossing(top + DVec2::new(-5.0, 0.1), DVec2::X).is_none());
+        assert!(
+            shape
+                .first_crossing(top + DVec2::new(-5.0, 0.1), DVec2::X)
+                .is_none()
+        );
         assert!(shape.contains(DVec2::new(1.0, 0.0)));
     }
 

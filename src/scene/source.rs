@@ -74,7 +74,11 @@ impl Source {
     /// Every wavelength in nm the source may be traced at, with or without dispersion.
     #[must_use]
     pub fn wavelengths(&self) -> Vec<f64> {
-        let mut all: Vec<f64> = self.colours(true).into_iter().map(traced_wavelength).collect();
+        let mut all: Vec<f64> = self
+            .colours(true)
+            .into_iter()
+            .map(traced_wavelength)
+            .collect();
         all.push(REFERENCE_WAVELENGTH_NM);
         all
     }
@@ -140,7 +144,10 @@ mod tests {
         let h = 0.5_f64.sqrt();
         assert!((rays[0].1 - DVec2::new(h, -h)).length() < 1e-15);
         assert!((rays[1].1 - DVec2::new(h, h)).length() < 1e-15);
-        assert_eq!(source(SourceKind::Fan, 1).rays().next().unwrap().1, DVec2::X);
+        assert_eq!(
+            source(SourceKind::Fan, 1).rays().next().unwrap().1,
+            DVec2::X
+        );
     }
 
     #[test]

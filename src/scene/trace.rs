@@ -1,6 +1,7 @@
 //! The tracer: follows each source ray from interface to interface, one kernel call per hit
 //! between different indices, and computes only the effects the scene asks for.
 
+use std::fmt;
 use std::ops::Range;
 
 use glam::{DVec2, DVec3};
@@ -41,6 +42,33 @@ pub struct Counts {
     pub paths: usize,
     /// Whether the trace stopped at [`MAX_SEGMENTS`].
     pub truncated: bool,
+}
+
+impl fmt::Display for Counts {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let rows = [
+            ("wavelengths", self.wavelengths),
+            ("source rays", self.source_rays),
+            ("kernel calls", self.kernel_calls),
+            ("equal-index skips", self.equal_index_skips),
+            (
+                "total internal reflections",
+                self.total_internal_reflections,
+            ),
+            ("reflections spawned", self.reflections_spawned),
+            ("Fresnel evaluations", self.fresnel_evaluations),
+            ("absorption evaluations", self.absorption_evaluations),
+            ("segments", self.segments),
+            ("paths", self.paths),
+        ];
+        for (name, count) in rows {
+            writeln!(f, "{name:<28}{count}")?;
+        }
+        if self.truncated {
+            writeln!(f, "stopped at {MAX_SEGMENTS} segments")?;
+        }
+        Ok(())
+    }
 }
 
 /// Which way a ray crosses a boundary, relative to the shape's region.
@@ -180,9 +208,11 @@ impl Trace {
     /// The hit nearest to a world point, if there is any hit.
     #[must_use]
     pub fn nearest_hit(&self, point: DVec2) -> Option<&Hit> {
-        self.hits
-            .iter()
-            .min_by(|a, b| point.distance_squared(a.point).total_cmp(&point.distance_squared(b.point)))
+        self.hits.iter().min_by(|a, b| {
+            point
+                .distance_squared(a.point)
+                .total_cmp(&point.distance_squared(b.point))
+        })
     }
 
     /// A path's points: its start, then the end of each segment.
