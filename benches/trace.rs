@@ -1,5 +1,7 @@
 //! What tracing only the effects a scene asks for saves: each built-in scene with 1,000 source
-//! rays, traced as its file says and with every effect on.
+//! rays (a single-ray source keeps its one ray), traced as its file says and with every effect
+//! on, each into a reused `Trace` as an editor retraces; and as the file says into a fresh
+//! one, to show what allocating costs. `cargo bench --bench trace`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use refraction_explorer::scene::{Scene, catalogue};
@@ -20,11 +22,16 @@ fn trace(c: &mut Criterion) {
         {
             continue;
         }
-        group.bench_function(format!("{}/as_file", info.name), |b| {
-            b.iter(|| std::hint::black_box(scene.trace()));
+        let name = format!("{}/{}_rays", info.name, scene.source().rays);
+        let mut trace = scene.trace();
+        group.bench_function(format!("{name}/as_file"), |b| {
+            b.iter(|| scene.retrace(std::hint::black_box(&mut trace)));
         });
-        group.bench_function(format!("{}/every_effect", info.name), |b| {
-            b.iter(|| std::hint::black_box(everything.trace()));
+        group.bench_function(format!("{name}/every_effect"), |b| {
+            b.iter(|| everything.retrace(std::hint::black_box(&mut trace)));
+        });
+        group.bench_function(format!("{name}/as_file_fresh"), |b| {
+            b.iter(|| std::hint::black_box(scene.trace()));
         });
     }
     group.finish();

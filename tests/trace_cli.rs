@@ -2,6 +2,7 @@
 
 use std::process::{Command, Output};
 
+use refraction_explorer::scene::catalogue;
 use serde_json::Value;
 
 fn trace(args: &[&str]) -> Output {
@@ -53,15 +54,7 @@ fn without_a_scene_it_traces_the_single_interface() {
 fn list_names_every_built_in_scene() {
     let output = trace(&["--list"]);
     let text = String::from_utf8(output.stdout).unwrap();
-    for name in [
-        "interface",
-        "slab",
-        "right-angle-prism",
-        "droplet",
-        "lens",
-        "fibre",
-        "dispersing-prism",
-    ] {
+    for name in catalogue().iter().map(|info| info.name) {
         assert!(text.lines().any(|l| l.starts_with(name)), "{name}: {text}");
     }
 }

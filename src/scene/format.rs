@@ -221,44 +221,43 @@ impl MediaTable {
             media.push(Medium::vacuum());
         }
         for (name, spec) in specs {
+            let absorption = spec.get_ref().absorption;
+            if !(absorption.is_finite() && absorption >= 0.0) {
+                return invalid(
+                    spec.span(),
+                    format!(
+                        "medium `{name}`: absorption is {absorption}: expected a finite number ≥ 0"
+                    ),
+                );
+            }
             media.push(Medium {
                 name: name.clone(),
                 dispersion: dispersion(spec)?,
-                absorption: {
-                    let a = spec.get_ref().absorption;
-                    if !(a.is_finite() && a >= 0.0) {
-                        return invalid(
-                            spec.span(),
-                            format!(
-                                "medium `{name}`: absorption is {a}: expected a finite number ≥ 0"
-                            ),
-                        );
-                    }
-                    a
-                },
+                absorption,
             });
         }
         Ok(Self { media })
     }
 
+    fn position(&self, name: &str) -> Option<usize> {
+        self.media.iter().position(|m| m.name == name)
+    }
+
     fn find(&self, name: &Spanned<String>) -> Result<usize, Invalid> {
-        self.media
-            .iter()
-            .position(|m| m.name == *name.get_ref())
-            .map_or_else(
-                || {
-                    let known: Vec<_> = self.media.iter().map(|m| m.name.as_str()).collect();
-                    invalid(
-                        name.span(),
-                        format!(
-                            "no medium named `{}`: expected one of {} (define it under [media])",
-                            name.get_ref(),
-                            known.join(", ")
-                        ),
-                    )
-                },
-                Ok,
-            )
+        self.position(name.get_ref()).map_or_else(
+            || {
+                let known: Vec<_> = self.media.iter().map(|m| m.name.as_str()).collect();
+                invalid(
+                    name.span(),
+                    format!(
+                        "no medium named `{}`: expected one of {} (define it under [media])",
+                        name.get_ref(),
+                        known.join(", ")
+                    ),
+                )
+            },
+            Ok,
+        )
     }
 
     /// Checks that every medium has a sensible index at every wavelength the source may use.
@@ -502,7 +501,8 @@ fn build(file: SceneFile, name: &str) -> Result<Scene, Invalid> {
     let media = MediaTable::build(&file.media)?;
     let background = match &file.background {
         Some(name) => media.find(name)?,
-        None => media.find(&Spanned::new(0..0, "vacuum".to_owned()))?,
+        // Vacuum is always defined: built in unless the file defines its own.
+        None => media.position("vacuum").unwrap_or(0),
     };
     let shapes = file
         .shapes

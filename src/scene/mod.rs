@@ -192,6 +192,17 @@ impl Scene {
             .unwrap_or(self.background)
     }
 
+    /// The first boundary the ray `origin + t·direction` (unit `direction`) crosses at
+    /// t > [`T_MIN`]: the shape's position in [`Self::shapes`] and the crossing.
+    #[must_use]
+    pub fn first_crossing(&self, origin: DVec2, direction: DVec2) -> Option<(usize, Crossing)> {
+        self.shapes
+            .iter()
+            .enumerate()
+            .filter_map(|(i, shape)| shape.first_crossing(origin, direction).map(|c| (i, c)))
+            .min_by(|a, b| a.1.t.total_cmp(&b.1.t))
+    }
+
     /// Moves the source to start at `origin`.
     ///
     /// # Errors

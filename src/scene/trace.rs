@@ -264,8 +264,7 @@ struct Ray {
 /// The state of one trace of a scene.
 struct Tracer<'a> {
     scene: &'a Scene,
-    bounds: Bounds,
-    trace: Trace,
+    trace: &'a mut Trace,
     pending: Vec<Ray>,
     /// The position in [`Trace::paths`] of the path being followed.
     path: usize,
@@ -275,22 +274,33 @@ impl Scene {
     /// Traces the scene's source through its shapes with the effects the scene asks for.
     #[must_use]
     pub fn trace(&self) -> Trace {
-        let bounds = self.bounds();
-        let mut tracer = Tracer {
+        let mut trace = Trace {
+            bounds: self.bounds(),
+            segments: Vec::new(),
+            paths: Vec::new(),
+            hits: Vec::new(),
+            counts: Counts::default(),
+        };
+        self.retrace(&mut trace);
+        trace
+    }
+
+    /// Traces the scene again into `trace`, replacing what it held but keeping its memory:
+    /// what an editor calls on every drag, where allocating afresh would cost more than the
+    /// tracing itself.
+    pub fn retrace(&self, trace: &mut Trace) {
+        trace.bounds = self.bounds();
+        trace.segments.clear();
+        trace.paths.clear();
+        trace.hits.clear();
+        trace.counts = Counts::default();
+        Tracer {
             scene: self,
-            bounds,
-            trace: Trace {
-                bounds,
-                segments: Vec::new(),
-                paths: Vec::new(),
-                hits: Vec::new(),
-                counts: Counts::default(),
-            },
+            trace,
             pending: Vec::new(),
             path: 0,
-        };
-        tracer.run();
-        tracer.trace
+        }
+        .run();
     }
 }
 
@@ -353,7 +363,6 @@ impl Tracer<'_> {
     /// Follows one ray to its end, queueing the reflections it spawns.
     fn follow(&mut self, mut ray: Ray, colour: Colour, indices: &[f64]) {
         let scene = self.scene;
-        let effects = scene.effects();
         let first_segment = self.trace.segments.len();
         self.path = self.trace.paths.len();
         let mut medium = scene.medium_where(ray.origin, None);
@@ -363,14 +372,8 @@ impl Tracer<'_> {
                 break End::Truncated;
             }
             let (origin, d) = (ray.origin, ray.direction);
-            let nearest = scene
-                .shapes()
-                .iter()
-                .enumerate()
-                .filter_map(|(i, shape)| shape.first_crossing(origin, d).map(|c| (i, c)))
-                .min_by(|a, b| a.1.t.total_cmp(&b.1.t));
-            let Some((shape, crossing)) = nearest else {
-                let to = origin + d * self.bounds.exit(origin, d);
+            let Some((shape, crossing)) = scene.first_crossing(origin, d) else {
+                let to = origin + d * self.trace.bounds.exit(origin, d);
                 self.segment(origin, to, medium, colour, &mut ray);
                 break End::Escaped;
             };
@@ -398,20 +401,10 @@ impl Tracer<'_> {
                 self.trace.counts.equal_index_skips += 1;
                 continue;
             }
-            if ray.depth >= effects.max_depth {
+            if ray.depth >= scene.effects().max_depth {
                 break End::MaxDepth;
             }
-            ray.depth += 1;
-            let facing = if entering {
-                crossing.normal
-            } else {
-                -crossing.normal
-            };
-            let mu = mu_i / mu_t;
-            self.trace.counts.kernel_calls += 1;
-            let kernel = stable::refract_facing::<f64>(d.extend(0.0), facing.extend(0.0), mu);
-            let reflected = d + facing * (2.0 * kernel.cos_i);
-            let mut hit = Hit {
+            let hit = Hit {
                 point: x,
                 w: d,
                 n: crossing.normal,
@@ -423,42 +416,12 @@ impl Tracer<'_> {
                 shape,
                 path: self.path,
                 wavelength_nm: colour,
-                outcome: Outcome::TotalInternalReflection,
+                outcome: Outcome::Refracted,
                 fresnel: None,
             };
-            let Some(transmitted) = kernel.transmitted else {
-                self.trace.counts.total_internal_reflections += 1;
-                hit.fresnel = effects.fresnel.then_some(Fresnel::TOTAL_REFLECTION);
-                self.trace.hits.push(hit);
-                ray.direction = reflected.normalize();
+            if self.interact(&mut ray, hit) == Outcome::TotalInternalReflection {
                 medium = before;
-                continue;
-            };
-            let fresnel = effects.fresnel.then(|| {
-                self.trace.counts.fresnel_evaluations += 1;
-                Fresnel::new(mu, kernel.cos_i, transmitted.cos_t)
-            });
-            hit.outcome = Outcome::Refracted;
-            hit.fresnel = fresnel;
-            self.trace.hits.push(hit);
-            let hit_index = self.trace.hits.len() - 1;
-            let (r, t) = fresnel.map_or(((1.0, 1.0), (1.0, 1.0)), |f| ((f.rs, f.rp), (f.ts, f.tp)));
-            if effects.partial_reflection {
-                let intensity = ray.intensity.map(|i| i.scaled(r.0, r.1));
-                if !self.is_faint(intensity) {
-                    self.trace.counts.reflections_spawned += 1;
-                    self.pending.push(Ray {
-                        origin: x,
-                        direction: reflected.normalize(),
-                        intensity,
-                        depth: ray.depth,
-                        parent_hit: Some(hit_index),
-                        reflections: ray.reflections + 1,
-                    });
-                }
             }
-            ray.intensity = ray.intensity.map(|i| i.scaled(t.0, t.1));
-            ray.direction = project(transmitted.t);
         };
         self.trace.paths.push(Path {
             wavelength_nm: colour,
@@ -469,6 +432,56 @@ impl Tracer<'_> {
         });
         self.trace.counts.segments = self.trace.segments.len();
         self.trace.counts.paths = self.trace.paths.len();
+    }
+
+    /// One kernel call at `hit` (its outcome and Fresnel intensities not yet filled in): turns
+    /// `ray` into the transmitted or totally reflected ray, records the hit and, when asked
+    /// for, queues the partial reflection.
+    fn interact(&mut self, ray: &mut Ray, mut hit: Hit) -> Outcome {
+        let effects = *self.scene.effects();
+        let facing = match hit.side {
+            Side::Entering => hit.n,
+            Side::Leaving => -hit.n,
+        };
+        let mu = hit.mu_i / hit.mu_t;
+        self.trace.counts.kernel_calls += 1;
+        ray.depth += 1;
+        let kernel = stable::refract_facing::<f64>(hit.w.extend(0.0), facing.extend(0.0), mu);
+        let reflected = (hit.w + facing * (2.0 * kernel.cos_i)).normalize();
+        let Some(transmitted) = kernel.transmitted else {
+            self.trace.counts.total_internal_reflections += 1;
+            hit.outcome = Outcome::TotalInternalReflection;
+            hit.fresnel = effects.fresnel.then_some(Fresnel::TOTAL_REFLECTION);
+            self.trace.hits.push(hit);
+            ray.direction = reflected;
+            return hit.outcome;
+        };
+        hit.fresnel = effects.fresnel.then(|| {
+            self.trace.counts.fresnel_evaluations += 1;
+            Fresnel::new(mu, kernel.cos_i, transmitted.cos_t)
+        });
+        self.trace.hits.push(hit);
+        // Without Fresnel the split is unknown: both rays keep the incoming intensity.
+        let (r, t) = hit
+            .fresnel
+            .map_or(((1.0, 1.0), (1.0, 1.0)), |f| ((f.rs, f.rp), (f.ts, f.tp)));
+        if effects.partial_reflection {
+            let intensity = ray.intensity.map(|i| i.scaled(r.0, r.1));
+            if !self.is_faint(intensity) {
+                self.trace.counts.reflections_spawned += 1;
+                self.pending.push(Ray {
+                    origin: hit.point,
+                    direction: reflected,
+                    intensity,
+                    depth: ray.depth,
+                    parent_hit: Some(self.trace.hits.len() - 1),
+                    reflections: ray.reflections + 1,
+                });
+            }
+        }
+        ray.intensity = ray.intensity.map(|i| i.scaled(t.0, t.1));
+        ray.direction = project(transmitted.t);
+        hit.outcome
     }
 }
 
