@@ -165,11 +165,7 @@ mod tests {
 
     #[test]
     fn glsl_turns_the_incident_vector_and_the_normal_the_way_the_builtin_expects() {
-        let leaving = request(
-            [-0.6, -0.8, 0.0],
-            [0.0, 1.0, 0.0],
-            Convention::TowardOrigin,
-        );
+        let leaving = request([-0.6, -0.8, 0.0], [0.0, 1.0, 0.0], Convention::TowardOrigin);
         let glsl = glsl(&leaving).unwrap();
         assert!(glsl.contains("-normalize(W)"), "{glsl}");
         assert!(glsl.contains("-normalize(N)"), "{glsl}");

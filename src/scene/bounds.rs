@@ -1,0 +1,103 @@
+//! The axis-aligned world rectangle a scene is seen and traced in.
+
+use glam::DVec2;
+use serde::Serialize;
+
+/// An axis-aligned rectangle in world coordinates (`min` ≤ `max` componentwise). Rays that
+/// leave every shape end where they leave it.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Bounds {
+    /// The lower-left corner.
+    pub min: DVec2,
+    /// The upper-right corner.
+    pub max: DVec2,
+}
+
+impl Bounds {
+    /// The smallest rectangle holding one point.
+    #[must_use]
+    pub fn point(p: DVec2) -> Self {
+        Self { min: p, max: p }
+    }
+
+    /// The smallest rectangle holding both.
+    #[must_use]
+    pub fn union(self, other: Self) -> Self {
+        Self {
+            min: self.min.min(other.min),
+            max: self.max.max(other.max),
+        }
+    }
+
+    /// The rectangle grown by `fraction` of its larger side on every side, and by at least
+    /// `at_least` world units, so that a single point or a thin shape still has room around it.
+    #[must_use]
+    pub fn padded(self, fraction: f64, at_least: f64) -> Self {
+        let size = self.max - self.min;
+        let pad = DVec2::splat((size.max_element() * fraction).max(at_least));
+        Self {
+            min: self.min - pad,
+            max: self.max + pad,
+        }
+    }
+
+    /// The four corners, counter-clockwise from `min`.
+    #[must_use]
+    pub fn corners(self) -> [DVec2; 4] {
+        [
+            self.min,
+            DVec2::new(self.max.x, self.min.y),
+            self.max,
+            DVec2::new(self.min.x, self.max.y),
+        ]
+    }
+
+    /// The parameter t ≥ 0 at which the ray `origin + t·direction` leaves the rectangle, or 0
+    /// when it never is inside it ahead of `origin`.
+    #[must_use]
+    pub fn exit(self, origin: DVec2, direction: DVec2) -> f64 {
+        let mut exit = f64::INFINITY;
+        let mut entry = 0.0_f64;
+        for axis in 0..2 {
+            let (o, d) = (origin[axis], direction[axis]);
+            if d == 0.0 {
+                if o < self.min[axis] || o > self.max[axis] {
+                    return 0.0;
+                }
+                continue;
+            }
+            let (t0, t1) = ((self.min[axis] - o) / d, (self.max[axis] - o) / d);
+            entry = entry.max(t0.min(t1));
+            exit = exit.min(t0.max(t1));
+        }
+        if exit >= entry && exit.is_finite() {
+            exit
+        } else {
+            0.0
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_ray_leaves_the_box_where_it_crosses_its_side() {
+        let b = Bounds {
+            min: DVec2::new(-1.0, -2.0),
+            max: DVec2::new(3.0, 2.0),
+        };
+        assert_eq!(b.exit(DVec2::ZERO, DVec2::X), 3.0);
+        assert_eq!(b.exit(DVec2::ZERO, -DVec2::Y), 2.0);
+        assert_eq!(b.exit(DVec2::new(5.0, 0.0), DVec2::X), 0.0);
+        assert_eq!(b.exit(DVec2::new(0.0, 5.0), DVec2::X), 0.0);
+    }
+
+    #[test]
+    fn padding_gives_a_point_room() {
+        let b = Bounds::point(DVec2::ONE).padded(0.2, 0.5);
+        assert_eq!(b.min, DVec2::splat(0.5));
+        assert_eq!(b.max, DVec2::splat(1.5));
+    }
+}
