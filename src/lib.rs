@@ -2,9 +2,10 @@
 //!
 //! Layers, dependencies pointing down only (see `DESIGN.md`): [`kernel`] (glam only) is the
 //! refraction math; [`oracle`] is its exact reference in double-double arithmetic; [`solve`] is
-//! the JSON Lines interface of the `solve` command.
+//! the JSON Lines interface of the `solve` command; [`diagram`] is what the explorer draws.
 
 pub mod atomic;
+pub mod diagram;
 pub mod kernel;
 pub mod oracle;
 pub mod solve;

@@ -60,10 +60,10 @@ fn add(a: &Vec3DD, b: &Vec3DD) -> Vec3DD {
 /// `v` scaled to unit length (by its largest component first, so no square over- or
 /// underflows). `v` must be finite and non-zero.
 fn unit(v: &Vec3DD) -> Vec3DD {
-    let largest =
-        v.iter()
-            .map(TwoFloat::abs)
-            .fold(TwoFloat::from(0.0), |m, c| if c > m { c } else { m });
+    let largest = v
+        .iter()
+        .map(TwoFloat::abs)
+        .fold(TwoFloat::from(0.0), |m, c| if c > m { c } else { m });
     let scaled = scale(v, TwoFloat::from(1.0) / largest);
     scale(&scaled, TwoFloat::from(1.0) / dot(&scaled, &scaled).sqrt())
 }
