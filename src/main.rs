@@ -1,16 +1,24 @@
-//! The `refraction-explorer` command: subcommands for scripts.
+//! The `refraction-explorer` command: the explorer window by default, subcommands for scripts.
 
 use std::io::{self, ErrorKind};
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use refraction_explorer::diagram::ExplorerState;
+use refraction_explorer::{render, state_file};
 
-/// Makes refraction visible: a trig-free refraction kernel and its four sign candidates.
+/// Makes refraction visible: a trig-free refraction kernel, its four sign candidates, and an
+/// interactive explorer (opened when no subcommand is given).
 #[derive(Parser)]
 #[command(version, about)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+    /// Open the explorer on the problem in this JSON file (fields as for `solve`); without it
+    /// the explorer reopens where it was last closed.
+    #[arg(long, value_name = "FILE.json")]
+    state: Option<PathBuf>,
 }
 
 #[derive(Subcommand)]
@@ -21,6 +29,31 @@ enum Command {
     /// "convention" ("along_ray" | "toward_origin") and "precision" ("f64" | "f32").
     /// Exit status 0 when every line was solved, 1 when any line was an error.
     Solve,
+    /// Draw the explorer's diagram into a PNG file, without a window.
+    Render {
+        /// The PNG file to write (replaced atomically).
+        #[arg(long, value_name = "FILE.png")]
+        out: PathBuf,
+        /// Width in pixels.
+        #[arg(long, default_value_t = render::DEFAULT_SIZE.0)]
+        width: u32,
+        /// Height in pixels.
+        #[arg(long, default_value_t = render::DEFAULT_SIZE.1)]
+        height: u32,
+        /// The problem to draw, as JSON with the fields of `solve` (default: 40° from air into
+        /// glass).
+        #[arg(long, value_name = "FILE.json")]
+        state: Option<PathBuf>,
+    },
+}
+
+fn initial_state(path: Option<&Path>) -> Result<ExplorerState, String> {
+    path.map_or_else(|| Ok(ExplorerState::default()), state_file::load)
+}
+
+fn fail(command: &str, message: &str) -> ExitCode {
+    eprintln!("refraction-explorer{command}: {message}");
+    ExitCode::from(2)
 }
 
 fn main() -> ExitCode {
@@ -31,16 +64,29 @@ fn main() -> ExitCode {
                 Ok(true) => ExitCode::SUCCESS,
                 Ok(false) => ExitCode::from(1),
                 Err(e) if e.kind() == ErrorKind::BrokenPipe => ExitCode::SUCCESS,
-                Err(e) => {
-                    eprintln!("refraction-explorer solve: {e}");
-                    ExitCode::from(2)
-                }
+                Err(e) => fail(" solve", &e.to_string()),
             }
         }
-        None => {
-            use clap::CommandFactory;
-            let _ = Cli::command().print_help();
-            ExitCode::from(2)
-        }
+        Some(Command::Render {
+            out,
+            width,
+            height,
+            state,
+        }) => match initial_state(state.as_deref())
+            .and_then(|s| render::export(&s, width, height, &out).map_err(|e| e.to_string()))
+        {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(message) => fail(" render", &message),
+        },
+        None => match cli
+            .state
+            .as_deref()
+            .map(state_file::load)
+            .transpose()
+            .and_then(|s| refraction_explorer::app::run(s).map_err(|e| e.to_string()))
+        {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(message) => fail("", &message),
+        },
     }
 }
