@@ -7,6 +7,7 @@
 
 pub mod app;
 pub mod atomic;
+pub mod bench;
 pub mod diagram;
 pub mod kernel;
 pub mod oracle;

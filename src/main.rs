@@ -29,6 +29,16 @@ enum Command {
     /// "convention" ("along_ray" | "toward_origin") and "precision" ("f64" | "f32").
     /// Exit status 0 when every line was solved, 1 when any line was an error.
     Solve,
+    /// Measure what accuracy costs in time: every kernel variant at f32 and f64, timed on
+    /// this machine and compared with a double-double oracle.
+    Bench {
+        /// A shorter run (under 20 s on 2 cores); the default run is steadier.
+        #[arg(long)]
+        quick: bool,
+        /// Print one JSON document instead of the table.
+        #[arg(long)]
+        json: bool,
+    },
     /// Draw the explorer's diagram into a PNG file, without a window.
     Render {
         /// The PNG file to write (replaced atomically).
@@ -67,6 +77,7 @@ fn main() -> ExitCode {
                 Err(e) => fail(" solve", &e.to_string()),
             }
         }
+        Some(Command::Bench { quick, json }) => bench(quick, json),
         Some(Command::Render {
             out,
             width,
@@ -89,4 +100,35 @@ fn main() -> ExitCode {
             Err(message) => fail("", &message),
         },
     }
+}
+
+fn bench(quick: bool, json: bool) -> ExitCode {
+    use std::io::{IsTerminal, Write};
+    let config = if quick {
+        refraction_explorer::bench::Config::QUICK
+    } else {
+        refraction_explorer::bench::Config::FULL
+    };
+    let show_progress = io::stderr().is_terminal();
+    let report = refraction_explorer::bench::run(&config, &mut |fraction| {
+        if show_progress {
+            eprint!("\rmeasuring... {:3.0}%", fraction * 100.0);
+            let _ = io::stderr().flush();
+        }
+    });
+    if show_progress {
+        eprintln!();
+    }
+    if json {
+        match serde_json::to_string(&report) {
+            Ok(text) => println!("{text}"),
+            Err(e) => {
+                eprintln!("refraction-explorer bench: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    } else {
+        print!("{}", report.table());
+    }
+    ExitCode::SUCCESS
 }

@@ -57,15 +57,23 @@ fn add(a: &Vec3DD, b: &Vec3DD) -> Vec3DD {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }
 
+/// 1/√x for x > 0, to double-double accuracy: one Newton step from the f64 estimate.
+///
+/// twofloat's double-double ÷ double-double leaves out the fused multiply-add of its source
+/// algorithm (Joldes et al. 2017, Algorithm 18) and is only f64-accurate, so the oracle never
+/// divides by a double-double: it divides by f64 values (Algorithm 15, accurate) or multiplies
+/// by this reciprocal square root.
+fn reciprocal_sqrt(x: TwoFloat) -> TwoFloat {
+    let r = TwoFloat::from(1.0 / x.hi().sqrt());
+    r + r * (TwoFloat::from(1.0) - x * r * r) * 0.5
+}
+
 /// `v` scaled to unit length (by its largest component first, so no square over- or
 /// underflows). `v` must be finite and non-zero.
 fn unit(v: &Vec3DD) -> Vec3DD {
-    let largest = v
-        .iter()
-        .map(TwoFloat::abs)
-        .fold(TwoFloat::from(0.0), |m, c| if c > m { c } else { m });
-    let scaled = scale(v, TwoFloat::from(1.0) / largest);
-    scale(&scaled, TwoFloat::from(1.0) / dot(&scaled, &scaled).sqrt())
+    let largest = v.iter().map(|c| c.hi().abs()).fold(0.0, f64::max);
+    let scaled = v.map(|c| c / largest);
+    scale(&scaled, reciprocal_sqrt(dot(&scaled, &scaled)))
 }
 
 /// The exact refraction of `w` at `n` with indices `mu_i`, `mu_t` in `convention`, the normal
@@ -73,17 +81,38 @@ fn unit(v: &Vec3DD) -> Vec3DD {
 /// vectors, indices > 0).
 #[must_use]
 pub fn refract(w: [f64; 3], n: [f64; 3], mu_i: f64, mu_t: f64, convention: Convention) -> Exact {
-    let sign = TwoFloat::from(convention.travel_sign::<f64>());
-    let d = scale(&unit(&dd(w)), sign);
-    let mut n = unit(&dd(n));
-    if dot(&d, &n) > 0.0 {
-        n = scale(&n, TwoFloat::from(-1.0));
-    }
-    let mu = TwoFloat::from(mu_i) / TwoFloat::from(mu_t);
+    let d = travel(w, convention);
+    let facing = if dot(&d, &dd(n)) > 0.0 {
+        n.map(|c| -c)
+    } else {
+        n
+    };
+    refract_facing(w, facing, mu_i, mu_t, convention)
+}
+
+fn travel(w: [f64; 3], convention: Convention) -> Vec3DD {
+    scale(
+        &unit(&dd(w)),
+        TwoFloat::from(convention.travel_sign::<f64>()),
+    )
+}
+
+/// As [`refract`], but with `n` used as given even if it points slightly along the ray: for
+/// grazing rays, whose side of the surface is decided by the rounding of the dot product.
+#[must_use]
+pub fn refract_facing(
+    w: [f64; 3],
+    n: [f64; 3],
+    mu_i: f64,
+    mu_t: f64,
+    convention: Convention,
+) -> Exact {
+    let d = travel(w, convention);
+    let n = unit(&dd(n));
+    let mu = TwoFloat::new_div(mu_i, mu_t);
     let cos_i = -dot(&d, &n);
-    let tangential = add(&d, &scale(&n, cos_i));
-    let sin2_i = dot(&tangential, &tangential);
-    let k = TwoFloat::from(1.0) - mu * mu * sin2_i;
+    // k = 1 − μ²(1 − cos²θi), arranged so that μ = 1 gives cos²θi ≥ 0 exactly.
+    let k = mu * mu * cos_i * cos_i + (TwoFloat::from(1.0) - mu) * (TwoFloat::from(1.0) + mu);
     if k < 0.0 {
         return Exact {
             t: None,
@@ -94,6 +123,7 @@ pub fn refract(w: [f64; 3], n: [f64; 3], mu_i: f64, mu_t: f64, convention: Conve
         };
     }
     let cos_t = k.sqrt();
+    let tangential = add(&d, &scale(&n, cos_i));
     let t = add(&scale(&tangential, mu), &scale(&n, -cos_t));
     Exact {
         t: Some(unit(&t)),
@@ -140,5 +170,13 @@ mod tests {
         let err = angular_error([1.0, 1e-9, 0.0], &exact);
         assert!((err - 1e-9).abs() < 1e-20);
         assert_eq!(angular_error([0.0; 3], &exact), f64::INFINITY);
+    }
+
+    #[test]
+    fn normalisation_is_accurate_to_double_double() {
+        let s = 0.999_999_999_999_f64;
+        let u = unit(&dd([s, -(1.0 - s * s).sqrt(), 0.0]));
+        let error = (dot(&u, &u) - 1.0).abs();
+        assert!(error < 1e-30, "|u|^2 - 1 = {error:e}");
     }
 }

@@ -55,6 +55,18 @@ pub trait Real:
     /// The larger of two values.
     #[must_use]
     fn max(self, other: Self) -> Self;
+    /// The smaller of two values.
+    #[must_use]
+    fn min(self, other: Self) -> Self;
+    /// Arccosine in radians (the `trig` variant only).
+    #[must_use]
+    fn acos(self) -> Self;
+    /// Arcsine in radians (the `trig` variant only).
+    #[must_use]
+    fn asin(self) -> Self;
+    /// Sine and cosine of an angle in radians (the `trig` variant only).
+    #[must_use]
+    fn sin_cos(self) -> (Self, Self);
 }
 
 /// The vector operations the kernel uses, implemented by `glam::Vec3` and `glam::DVec3`.
@@ -91,6 +103,9 @@ pub trait Vector3<S>:
     /// Each component divided by `s`.
     #[must_use]
     fn div_scalar(self, s: S) -> Self;
+    /// glam's own `refract` (the GLSL formula): zero on total internal reflection.
+    #[must_use]
+    fn glam_refract(self, normal: Self, eta: S) -> Self;
 }
 
 macro_rules! impl_real {
@@ -123,6 +138,18 @@ macro_rules! impl_real {
             fn max(self, other: Self) -> Self {
                 <$s>::max(self, other)
             }
+            fn min(self, other: Self) -> Self {
+                <$s>::min(self, other)
+            }
+            fn acos(self) -> Self {
+                <$s>::acos(self)
+            }
+            fn asin(self) -> Self {
+                <$s>::asin(self)
+            }
+            fn sin_cos(self) -> (Self, Self) {
+                <$s>::sin_cos(self)
+            }
         }
 
         impl Vector3<$s> for $v {
@@ -146,6 +173,9 @@ macro_rules! impl_real {
             }
             fn div_scalar(self, s: $s) -> Self {
                 self / s
+            }
+            fn glam_refract(self, normal: Self, eta: $s) -> Self {
+                <$v>::refract(self, normal, eta)
             }
         }
     };

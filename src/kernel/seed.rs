@@ -17,7 +17,7 @@ use super::real::{Real, Vector3};
 pub fn weights<S: Real>(w: S::Vec3, n: S::Vec3, mu: S, convention: Convention) -> Option<(S, S)> {
     let wn = w.dot(n);
     let k = mu * mu * wn * wn - mu * mu + S::ONE;
-    if !(k >= S::ZERO) {
+    if k < S::ZERO {
         return None;
     }
     let a = convention.travel_sign::<S>() * mu;

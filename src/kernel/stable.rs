@@ -44,6 +44,30 @@ pub struct Facing<S: Real> {
     pub transmitted: Option<Transmitted<S>>,
 }
 
+/// k = 1 − μ²(1 − cos²θi) without cancellation: from |n × d|² near normal incidence, from
+/// (μ·cosθi)² + (1 − μ)(1 + μ) otherwise. Shared with the batch kernel so both round alike.
+#[inline(always)]
+pub(crate) fn discriminant<S: Real>(
+    d: S::Vec3,
+    n: S::Vec3,
+    cos_i: S,
+    mu: S,
+    one_minus_mu2: S,
+) -> S {
+    if cos_i * cos_i > S::HALF {
+        S::ONE - mu * mu * n.cross(d).length_squared()
+    } else {
+        let mc = mu * cos_i;
+        mc * mc + one_minus_mu2
+    }
+}
+
+/// b = μ·cosθi − cosθt in its cancellation-free form −(1 − μ²)/(μ·cosθi + cosθt).
+#[inline(always)]
+pub(crate) fn normal_weight<S: Real>(mu: S, cos_i: S, cos_t: S, one_minus_mu2: S) -> S {
+    -one_minus_mu2 / (mu * cos_i + cos_t)
+}
+
 /// Refracts the unit travel direction `d` at the unit normal `n`, which must face it (d·n ≤ 0),
 /// with μ = μ_i/μ_t (finite, > 0, μ² finite).
 ///
@@ -64,15 +88,10 @@ pub fn refract_facing<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Facing<S> {
         };
     }
     let one_minus_mu2 = (S::ONE - mu) * (S::ONE + mu);
-    let k = if cos_i * cos_i > S::HALF {
-        S::ONE - mu * mu * n.cross(d).length_squared()
-    } else {
-        let mc = mu * cos_i;
-        mc * mc + one_minus_mu2
-    };
+    let k = discriminant(d, n, cos_i, mu, one_minus_mu2);
     let transmitted = (k >= S::ZERO).then(|| {
         let cos_t = k.sqrt();
-        let b = -one_minus_mu2 / (mu * cos_i + cos_t);
+        let b = normal_weight(mu, cos_i, cos_t, one_minus_mu2);
         Transmitted {
             t: d * mu + n * b,
             cos_t,
@@ -92,8 +111,15 @@ pub fn refract_facing<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Facing<S> {
 #[inline]
 #[must_use]
 pub fn transmit<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Option<S::Vec3> {
-    let facing = if d.dot(n) > S::ZERO { -n } else { n };
-    refract_facing(d, facing, mu).transmitted.map(|t| t.t)
+    refract_facing(d, facing::<S>(d, n), mu)
+        .transmitted
+        .map(|t| t.t)
+}
+
+/// `n` or `−n`, whichever faces the travel direction `d` (d·n ≤ 0).
+#[inline(always)]
+pub(crate) fn facing<S: Real>(d: S::Vec3, n: S::Vec3) -> S::Vec3 {
+    if d.dot(n) > S::ZERO { -n } else { n }
 }
 
 #[cfg(test)]
