@@ -109,7 +109,7 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState) {
         let center = to_screen.transform_pos(Pos2::new(handle.center.x, handle.center.y));
         let ring = Stroke::new(2.0, color(palette::INK));
         painter.circle_stroke(center, handle.radius * 1.7, ring);
-        let hint = "←/→ turn (Shift: 0.1°), +/− index, Tab: next";
+        let hint = "arrow keys: turn or move by 1° or 0.01 (Shift: a tenth), +/− index, Tab: next";
         painter.text(
             response.rect.left_bottom() + EguiVec2::new(8.0, -6.0),
             egui::Align2::LEFT_BOTTOM,

@@ -103,7 +103,7 @@ fn candidates(ui: &mut Ui, r: &Refraction<f64>) {
         .striped(true)
         .spacing([8.0, 3.0])
         .show(ui, |ui| {
-            for heading in ["candidate", "a", "b", "T", "|T|=1", "eq.10", "side", "μ→1"] {
+            for heading in ["candidate", "a", "b", "T", "|T|=1", "eq.10", "side", "bend"] {
                 ui.label(RichText::new(heading).strong());
             }
             ui.end_row();
@@ -136,7 +136,8 @@ fn candidates(ui: &mut Ui, r: &Refraction<f64>) {
     ui.label(
         RichText::new(
             "All four are unit length and satisfy squared Snell (eq. 10): squaring cannot tell \
-             them apart. Only side and the μ → 1 argument pick T.",
+             them apart. Only the side and the bend (the
+             source's μ = 1 argument) pick T.",
         )
         .small(),
     );

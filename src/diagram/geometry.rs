@@ -151,7 +151,7 @@ pub fn clip_segment(a: Vec2, b: Vec2, rect: &Rect) -> Option<(Vec2, Vec2)> {
 #[must_use]
 pub fn dash(points: &[Vec2], pattern: &[f32]) -> Vec<Vec<Vec2>> {
     let period: f32 = pattern.iter().sum();
-    if pattern.is_empty() || !(period > 0.0) || pattern.iter().any(|l| !(*l >= 0.0)) {
+    if !pattern.iter().all(|l| l.is_finite() && *l >= 0.0) || period <= 0.0 {
         return vec![points.to_vec()];
     }
     let mut pieces = Vec::new();

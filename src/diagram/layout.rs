@@ -96,7 +96,7 @@ impl Layout {
         let font = (size.min_element() / 48.0).clamp(13.0, 30.0);
         let canvas = Rect::from_min_size(Vec2::ZERO, size);
         let banner = Rect::from_min_size(Vec2::ZERO, Vec2::new(size.x, font * 3.2));
-        let scale_width = font * 9.0;
+        let scale_width = font * 10.0;
         let drawing = Rect {
             min: Vec2::new(0.0, banner.max.y),
             max: Vec2::new(
@@ -105,7 +105,7 @@ impl Layout {
             ),
         };
         let scale = IndexScale {
-            x: size.x - scale_width * 0.5,
+            x: size.x - scale_width * 0.45,
             top: banner.max.y + font * 2.5,
             bottom: size.y - font * 2.5,
         };

@@ -6,10 +6,11 @@
 //! - [`state`]: the state and the edits a user makes;
 //! - [`layout`]: where things go on a canvas of a given size;
 //! - [`picture`]: the interface diagram itself;
-//! - [`shapes`], [`geometry`], [`palette`]: its vocabulary;
+//! - [`shapes`], [`geometry`], [`palette`], [`font`]: its vocabulary;
 //! - [`table`], [`equations`], [`quadratic`]: the numbers shown beside it.
 
 pub mod equations;
+pub mod font;
 pub mod geometry;
 pub mod layout;
 pub mod palette;

@@ -3,6 +3,7 @@
 
 use glam::{DVec2, DVec3, Vec2};
 
+use super::font::Typeface;
 use super::geometry::{Colour, Rect, arc, clip_rect_to_half_plane, clip_segment};
 use super::layout::Layout;
 use super::palette::{self, number, text_shade};
@@ -62,6 +63,7 @@ fn medium_colour(index: f64) -> Colour {
 struct Builder<'a> {
     layout: &'a Layout,
     state: &'a ExplorerState,
+    face: Option<Typeface>,
     shapes: Vec<Shape>,
 }
 
@@ -99,15 +101,33 @@ impl Builder<'_> {
         size: f32,
         colour: Colour,
     ) {
+        let text = text.into();
+        let size = size * self.font();
+        let at = self.fit(&text, at, (h, v), size);
         self.shapes.push(Shape::Text(Label {
-            text: text.into(),
+            text,
             at,
             h,
             v,
-            size: size * self.font(),
+            size,
             colour,
             background: Some(palette::LABEL_BACKGROUND),
         }));
+    }
+
+    /// Moves the anchor of a label that starts in the drawing area so that the whole label
+    /// (with its background) stays inside it, clear of the banner and the index scale.
+    fn fit(&self, text: &str, at: Vec2, (h, v): (Align, Align), size: f32) -> Vec2 {
+        let drawing = self.layout.drawing;
+        let Some(face) = self.face.as_ref().filter(|_| drawing.contains(at)) else {
+            return at;
+        };
+        let pad = Vec2::splat(size * 0.25);
+        let extent = face.measure(text, size);
+        let min = at - extent * Vec2::new(h.fraction(), v.fraction()) - pad;
+        let max = min + extent + pad * 2.0;
+        let shift = (drawing.min - min).max(Vec2::ZERO) + (drawing.max - max).min(Vec2::ZERO);
+        at + shift
     }
 
     /// An arrow from the hit point along the unit diagram direction `d`, `length` long, with a
@@ -354,7 +374,7 @@ impl Builder<'_> {
             }
         }
         for m in MATERIALS.iter().filter(|m| m.name != "air") {
-            let at = Vec2::new(scale.x - font * 1.7, scale.y_of(m.index));
+            let at = Vec2::new(scale.x - font * 2.0, scale.y_of(m.index));
             self.label(m.name, at, (Align::End, Align::Center), 0.75);
         }
         [
@@ -405,6 +425,7 @@ impl Diagram {
         let mut b = Builder {
             layout: &layout,
             state,
+            face: Typeface::egui_default().ok(),
             shapes: vec![Shape::Fill {
                 points: layout.canvas.corners().to_vec(),
                 colour: palette::BACKGROUND,
@@ -473,9 +494,15 @@ impl Diagram {
         let [mu_i, mu_t] = b.index_scale();
         let w = b.tip_handle(HandleId::W, w_dir, palette::W);
         let n = b.tip_handle(HandleId::N, n_dir, palette::N);
+        // Labels go on top of every line, so no arrow crosses a number.
+        let (mut shapes, labels): (Vec<_>, Vec<_>) = b
+            .shapes
+            .into_iter()
+            .partition(|s| !matches!(s, Shape::Text(_)));
+        shapes.extend(labels);
         Self {
             handles: vec![w, n, mu_i, mu_t],
-            shapes: b.shapes,
+            shapes,
             layout,
         }
     }
@@ -613,11 +640,23 @@ mod tests {
 
     #[test]
     fn every_label_fits_on_small_and_large_canvases() {
-        for size in [Vec2::new(500.0, 560.0), Vec2::new(1920.0, 1080.0)] {
-            let diagram = Diagram::new(&ExplorerState::default(), size);
-            for shape in &diagram.shapes {
-                if let Shape::Text(label) = shape {
-                    assert!(diagram.layout.canvas.contains(label.at), "{label:?}");
+        let face = Typeface::egui_default().unwrap();
+        let mut tir = ExplorerState::default();
+        tir.set_mu_i(1.5).unwrap();
+        tir.set_mu_t(1.0).unwrap();
+        tir.rotate(HandleId::W, 45.0);
+        for state in [ExplorerState::default(), tir] {
+            for size in [Vec2::new(500.0, 560.0), Vec2::new(1920.0, 1080.0)] {
+                let diagram = Diagram::new(&state, size);
+                let canvas = diagram.layout.canvas;
+                for shape in &diagram.shapes {
+                    if let Shape::Text(l) = shape {
+                        let extent = face.measure(&l.text, l.size);
+                        let min = l.at - extent * Vec2::new(l.h.fraction(), l.v.fraction());
+                        let inside = canvas.contains(min) && canvas.contains(min + extent);
+                        assert!(inside, "{l:?} is cut off at {size}");
+                        assert!(l.text.chars().all(|c| c == '\n' || face.covers(c)), "{l:?}");
+                    }
                 }
             }
         }
