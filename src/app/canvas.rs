@@ -3,7 +3,7 @@
 
 use egui::emath::RectTransform;
 use egui::{
-    CursorIcon, EventFilter, Key, Pos2, Rect, Sense, Stroke, Ui, Vec2 as EguiVec2, WidgetInfo,
+    CursorIcon, EventFilter, Key, Pos2, Rect, Role, Sense, Stroke, Ui, Vec2 as EguiVec2, WidgetInfo,
 };
 use glam::Vec2;
 
@@ -105,6 +105,7 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState) {
     }
     let after = Diagram::new(state, canvas_size);
     paint(&painter, &to_screen, &after.primitives());
+    response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &after.summary));
     if let Some(handle) = after.handles.iter().find(|h| Some(h.id) == focused) {
         let center = to_screen.transform_pos(Pos2::new(handle.center.x, handle.center.y));
         let ring = Stroke::new(2.0, color(palette::INK));

@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use egui::{ComboBox, DragValue, RichText, Slider, Ui};
+use egui::{ComboBox, DragValue, RichText, Slider, SliderClamping, Ui};
 
 use super::paint::color;
 use super::typed::{TypedField, format_vector, parse_number, parse_vector, short};
@@ -53,9 +53,11 @@ fn index_controls(
     };
     let mut index = state.index(handle);
     let (low, high) = INDEX_RANGE;
+    // Never clamping, so that the slider does not round a typed 1.000293 to its own decimals
+    // or pull a typed 3.2 into its range.
     let slider = Slider::new(&mut index, low..=high)
         .text(symbol)
-        .max_decimals(4);
+        .clamping(SliderClamping::Never);
     if ui.add(slider).changed() {
         let _ = state.set_index(handle, index);
     }

@@ -31,6 +31,8 @@ pub struct Diagram {
     pub shapes: Vec<Shape>,
     /// The handles, in [`HandleId::ALL`] order.
     pub handles: Vec<Handle>,
+    /// The banner's text: what the picture says in words, for screen readers.
+    pub summary: String,
 }
 
 /// The lengths of the diagram's rays, in world units (W, N and T are 1).
@@ -298,7 +300,7 @@ impl Builder<'_> {
     }
 
     /// The status strip: the convention in words, or total internal reflection.
-    fn banner(&mut self, r: &Refraction<f64>) {
+    fn banner(&mut self, r: &Refraction<f64>) -> String {
         let rect = self.layout.banner;
         let (fill, ink) = if r.is_tir() {
             (palette::ALARM, palette::BACKGROUND)
@@ -331,7 +333,7 @@ impl Builder<'_> {
         };
         let at = Vec2::new(rect.min.x + self.font() * 0.6, rect.center().y);
         self.shapes.push(Shape::Text(Label {
-            text,
+            text: text.clone(),
             at,
             h: Align::Start,
             v: Align::Center,
@@ -339,6 +341,7 @@ impl Builder<'_> {
             colour: ink,
             background: None,
         }));
+        text
     }
 
     /// The index scale with the presets and the two μ markers.
@@ -490,7 +493,7 @@ impl Diagram {
                 1.1,
             );
         }
-        b.banner(r);
+        let summary = b.banner(r);
         let [mu_i, mu_t] = b.index_scale();
         let w = b.tip_handle(HandleId::W, w_dir, palette::W);
         let n = b.tip_handle(HandleId::N, n_dir, palette::N);
@@ -504,6 +507,7 @@ impl Diagram {
             handles: vec![w, n, mu_i, mu_t],
             shapes,
             layout,
+            summary,
         }
     }
 
