@@ -136,7 +136,7 @@ fn candidates(ui: &mut Ui, r: &Refraction<f64>) {
     ui.label(
         RichText::new(
             "All four are unit length and satisfy squared Snell (eq. 10): squaring cannot tell \
-             them apart. Only the side and the bend (the
+             them apart. Only the side and the bend (the \
              source's μ = 1 argument) pick T.",
         )
         .small(),

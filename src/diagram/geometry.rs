@@ -93,6 +93,12 @@ impl Rect {
         ]
     }
 
+    /// Whether the two rectangles share interior points.
+    #[must_use]
+    pub fn overlaps(&self, other: &Self) -> bool {
+        self.min.cmplt(other.max).all() && other.min.cmplt(self.max).all()
+    }
+
     /// Whether `p` lies inside or on the border.
     #[must_use]
     pub fn contains(&self, p: Vec2) -> bool {
@@ -244,6 +250,12 @@ mod tests {
         assert_eq!((a, b), (Vec2::new(0.0, 25.0), Vec2::new(100.0, 25.0)));
         assert!(clip_segment(Vec2::new(-5.0, -5.0), Vec2::new(-1.0, 80.0), &rect()).is_none());
         assert!(clip_segment(Vec2::splat(10.0), Vec2::splat(10.0), &rect()).is_some());
+        let right = Rect::from_min_size(Vec2::new(100.0, 0.0), Vec2::splat(10.0));
+        assert!(!rect().overlaps(&right));
+        assert!(rect().overlaps(&Rect::from_min_size(
+            Vec2::new(90.0, 40.0),
+            Vec2::splat(20.0)
+        )));
     }
 
     #[test]

@@ -67,6 +67,11 @@ struct Builder<'a> {
     state: &'a ExplorerState,
     face: Option<Typeface>,
     shapes: Vec<Shape>,
+    /// Labels wait here, with their rank, to be placed last and on top.
+    labels: Vec<(u8, Label)>,
+    /// The placement rank of labels added next: lower ranks are placed first and keep their
+    /// spot; later ones move aside.
+    rank: u8,
 }
 
 impl Builder<'_> {
@@ -103,33 +108,56 @@ impl Builder<'_> {
         size: f32,
         colour: Colour,
     ) {
-        let text = text.into();
-        let size = size * self.font();
-        let at = self.fit(&text, at, (h, v), size);
-        self.shapes.push(Shape::Text(Label {
-            text,
+        let label = Label {
+            text: text.into(),
             at,
             h,
             v,
-            size,
+            size: size * self.font(),
             colour,
             background: Some(palette::LABEL_BACKGROUND),
-        }));
+        };
+        self.labels.push((self.rank, label));
     }
 
-    /// Moves the anchor of a label that starts in the drawing area so that the whole label
-    /// (with its background) stays inside it, clear of the banner and the index scale.
-    fn fit(&self, text: &str, at: Vec2, (h, v): (Align, Align), size: f32) -> Vec2 {
+    /// Places the waiting labels, by rank, on top of everything else. A label anchored in the
+    /// drawing area is kept inside it (clear of the banner and the index scale) and moved
+    /// aside, a step at a time, until it overlaps no handle and no label placed before it.
+    fn finish(mut self, handles: &[Handle]) -> Vec<Shape> {
+        let mut labels = std::mem::take(&mut self.labels);
+        labels.sort_by_key(|(rank, _)| *rank);
         let drawing = self.layout.drawing;
-        let Some(face) = self.face.as_ref().filter(|_| drawing.contains(at)) else {
-            return at;
-        };
-        let pad = Vec2::splat(size * 0.25);
-        let extent = face.measure(text, size);
-        let min = at - extent * Vec2::new(h.fraction(), v.fraction()) - pad;
-        let max = min + extent + pad * 2.0;
-        let shift = (drawing.min - min).max(Vec2::ZERO) + (drawing.max - max).min(Vec2::ZERO);
-        at + shift
+        let mut taken: Vec<Rect> = handles.iter().map(Diagram::grab_area).collect();
+        for (_, mut label) in labels {
+            if let Some(face) = self.face.as_ref().filter(|_| drawing.contains(label.at)) {
+                let extent = face.measure(&label.text, label.size);
+                let pad = Vec2::splat(label.size * 0.25);
+                let corner = extent * Vec2::new(label.h.fraction(), label.v.fraction()) + pad;
+                let boxed = |at: Vec2| {
+                    let min = at - corner;
+                    let max = min + extent + pad * 2.0;
+                    let shift =
+                        (drawing.min - min).max(Vec2::ZERO) + (drawing.max - max).min(Vec2::ZERO);
+                    let rect = Rect {
+                        min: min + shift,
+                        max: max + shift,
+                    };
+                    (at + shift, rect)
+                };
+                let step = label.size * 0.6;
+                let offsets = std::iter::once(Vec2::ZERO).chain((1..=12).flat_map(|k| {
+                    [Vec2::Y, -Vec2::Y, Vec2::X, -Vec2::X].map(|d| d * step * k as f32)
+                }));
+                let (at, rect) = offsets
+                    .map(|offset| boxed(label.at + offset))
+                    .find(|(_, rect)| !taken.iter().any(|t| t.overlaps(rect)))
+                    .unwrap_or_else(|| boxed(label.at));
+                label.at = at;
+                taken.push(rect);
+            }
+            self.shapes.push(Shape::Text(label));
+        }
+        self.shapes
     }
 
     /// An arrow from the hit point along the unit diagram direction `d`, `length` long, with a
@@ -250,12 +278,17 @@ impl Builder<'_> {
                 Rejection::Reversed => Dash::DashDot,
             };
             let stroke = self.stroke(1.8, palette::REJECTED, dash);
-            let text = format!(
-                "{}\n(a, b) = ({}, {})",
-                short_rule(rejection),
-                number(c.a, 3),
-                number(c.b, 3)
-            );
+            // With a flipped normal the bug's ghost lies on the wrong-side root and says so.
+            let text = if r.normal_flipped && rejection == Rejection::WrongSide {
+                String::new()
+            } else {
+                format!(
+                    "{}\n(a, b) = ({}, {})",
+                    short_rule(rejection),
+                    number(c.a, 3),
+                    number(c.b, 3)
+                )
+            };
             self.ray(self.flat(c.t), GHOST_LENGTH, stroke, &text, 0.8);
         }
     }
@@ -275,7 +308,7 @@ impl Builder<'_> {
                 self.flat(wrong),
                 1.0,
                 stroke,
-                "source formula with un-flipped N:\nthe wrong T (outward-normal bug)",
+                "source formula with un-flipped N: the wrong-side root,\nthe wrong T of the outward-normal bug",
                 0.85,
             );
         }
@@ -429,6 +462,8 @@ impl Diagram {
             layout: &layout,
             state,
             face: Typeface::egui_default().ok(),
+            labels: Vec::new(),
+            rank: 5,
             shapes: vec![Shape::Fill {
                 points: layout.canvas.corners().to_vec(),
                 colour: palette::BACKGROUND,
@@ -438,7 +473,9 @@ impl Diagram {
         let normal = b.flat(r.facing_normal);
         let toward_source = b.flat(-r.travel);
         b.media(normal);
+        b.rank = 4;
         b.guides(normal, toward_source);
+        b.rank = 1;
         b.angle(
             normal,
             toward_source,
@@ -453,9 +490,13 @@ impl Diagram {
             to: b.at(source * 0.45),
             stroke: incoming,
         });
+        b.rank = 3;
         b.candidates(r);
+        b.rank = 2;
         b.outward_normal_bug(r);
+        b.rank = 4;
         b.decomposition(r);
+        b.rank = 1;
         let reflected = b.flat(r.reflected);
         match r.transmission {
             Some(tr) => {
@@ -474,6 +515,7 @@ impl Diagram {
             Convention::AlongRay => "W (along the ray)",
             Convention::TowardOrigin => "W (toward the origin)",
         };
+        b.rank = 0;
         let w_dir = state.direction(HandleId::W);
         let n_dir = state.direction(HandleId::N);
         b.ray(
@@ -497,15 +539,10 @@ impl Diagram {
         let [mu_i, mu_t] = b.index_scale();
         let w = b.tip_handle(HandleId::W, w_dir, palette::W);
         let n = b.tip_handle(HandleId::N, n_dir, palette::N);
-        // Labels go on top of every line, so no arrow crosses a number.
-        let (mut shapes, labels): (Vec<_>, Vec<_>) = b
-            .shapes
-            .into_iter()
-            .partition(|s| !matches!(s, Shape::Text(_)));
-        shapes.extend(labels);
+        let handles = vec![w, n, mu_i, mu_t];
         Self {
-            handles: vec![w, n, mu_i, mu_t],
-            shapes,
+            shapes: b.finish(&handles),
+            handles,
             layout,
             summary,
         }
