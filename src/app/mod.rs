@@ -84,8 +84,8 @@ pub fn run(state: Option<ExplorerState>) -> Result<(), eframe::Error> {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title(TITLE)
-            .with_inner_size([1280.0, 760.0])
-            .with_min_inner_size([960.0, 600.0]),
+            .with_inner_size([1200.0, 680.0])
+            .with_min_inner_size([900.0, 560.0]),
         multisampling: 0,
         ..eframe::NativeOptions::default()
     };

@@ -48,11 +48,10 @@ fn discriminant(ui: &mut Ui, r: &Refraction<f64>) {
 fn quadratic(ui: &mut Ui, r: &Refraction<f64>) {
     let q = Quadratic::of(r);
     ui.label(format!(
-        "Eq. {}.20, the quadratic in b: b² + 2·({})·({})·b + {}² − 1 = 0",
+        "Eq. {}.20, the quadratic in b: b² + 2a·wn·b + a² − 1 = 0 with a = {}, wn = {}",
         r.convention.section(),
         number(q.a, 3),
         number(q.wn, 3),
-        number(q.a, 3)
     ));
     let roots: Vec<[f64; 2]> = q.roots.iter().map(|b| [*b, 0.0]).collect();
     let caption = if roots.is_empty() {
