@@ -1,17 +1,25 @@
-//! The `refraction-explorer` command: subcommands for scripts.
+//! The `refraction-explorer` command: the explorer window by default, subcommands for scripts.
 
-use std::io::{self, ErrorKind, Write};
+mod commands;
+
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use refraction_explorer::scene::{DEFAULT_SCENE, Report, Scene, catalogue};
+use refraction_explorer::render;
+use refraction_explorer::scene::DEFAULT_SCENE;
 
-/// Makes refraction visible: a trig-free refraction kernel and its four sign candidates.
+/// Makes refraction visible: a trig-free refraction kernel, its four sign candidates, and an
+/// interactive explorer (opened when no subcommand is given).
 #[derive(Parser)]
 #[command(version, about)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+    /// Open the explorer on the problem in this JSON file (fields as for `solve`); without it
+    /// the explorer reopens where it was last closed.
+    #[arg(long, value_name = "FILE.json")]
+    state: Option<PathBuf>,
 }
 
 #[derive(Subcommand)]
@@ -30,7 +38,7 @@ enum Command {
     /// stderr. Exit status 0 when every line is ok, 1 otherwise.
     Check {
         /// JSON Lines file to read (stdin when absent).
-        file: Option<std::path::PathBuf>,
+        file: Option<PathBuf>,
     },
     /// Measure what accuracy costs in time: every kernel variant at f32 and f64, timed on
     /// this machine and compared with a double-double oracle.
@@ -58,152 +66,37 @@ enum Command {
         #[arg(long)]
         list: bool,
     },
-}
-
-/// Runs `trace`: the scene's summary or JSON on stdout, or the load error on stderr.
-fn trace(scene: &str, json: bool, list: bool) -> ExitCode {
-    let mut out = io::stdout().lock();
-    let written = if list {
-        catalogue()
-            .iter()
-            .try_for_each(|info| writeln!(out, "{:<20}{}", info.name, info.title))
-    } else {
-        let scene = match Scene::load(scene) {
-            Ok(scene) => scene,
-            Err(e) => {
-                eprintln!("refraction-explorer trace: {e}");
-                return ExitCode::from(1);
-            }
-        };
-        let traced = scene.trace();
-        if json {
-            serde_json::to_writer(&mut out, &Report::new(&scene, &traced))
-                .map_err(io::Error::from)
-                .and_then(|()| writeln!(out))
-        } else {
-            writeln!(
-                out,
-                "{} ({})\n{}",
-                scene.title(),
-                scene.name(),
-                traced.counts
-            )
-        }
-    };
-    match written {
-        Err(e) if e.kind() != ErrorKind::BrokenPipe => {
-            eprintln!("refraction-explorer trace: {e}");
-            ExitCode::from(2)
-        }
-        _ => ExitCode::SUCCESS,
-    }
+    /// Draw the explorer's diagram into a PNG file, without a window.
+    Render {
+        /// The PNG file to write (replaced atomically).
+        #[arg(long, value_name = "FILE.png")]
+        out: PathBuf,
+        /// Width in pixels.
+        #[arg(long, default_value_t = render::DEFAULT_SIZE.0)]
+        width: u32,
+        /// Height in pixels.
+        #[arg(long, default_value_t = render::DEFAULT_SIZE.1)]
+        height: u32,
+        /// The problem to draw, as JSON with the fields of `solve` (default: 40° from air into
+        /// glass).
+        #[arg(long, value_name = "FILE.json")]
+        state: Option<PathBuf>,
+    },
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
-        Some(Command::Solve) => {
-            match refraction_explorer::solve::run(io::stdin().lock(), io::stdout().lock()) {
-                Ok(true) => ExitCode::SUCCESS,
-                Ok(false) => ExitCode::from(1),
-                Err(e) if e.kind() == ErrorKind::BrokenPipe => ExitCode::SUCCESS,
-                Err(e) => {
-                    eprintln!("refraction-explorer solve: {e}");
-                    ExitCode::from(2)
-                }
-            }
-        }
-        Some(Command::Bench { quick, json }) => bench(quick, json),
-        Some(Command::Check { file }) => check(file.as_deref()),
-        Some(Command::Trace { scene, json, list }) => trace(&scene, json, list),
-        None => {
-            use clap::CommandFactory;
-            let _ = Cli::command().print_help();
-            ExitCode::from(2)
-        }
-    }
-}
-
-fn bench(quick: bool, json: bool) -> ExitCode {
-    use std::io::{IsTerminal, Write};
-    let config = if quick {
-        refraction_explorer::bench::Config::QUICK
-    } else {
-        refraction_explorer::bench::Config::FULL
-    };
-    let show_progress = io::stderr().is_terminal();
-    let report = refraction_explorer::bench::run(&config, &mut |fraction| {
-        if show_progress {
-            eprint!("\rmeasuring... {:3.0}%", fraction * 100.0);
-            let _ = io::stderr().flush();
-        }
-    });
-    if show_progress {
-        eprintln!();
-    }
-    if json {
-        match serde_json::to_string(&report) {
-            Ok(text) => println!("{text}"),
-            Err(e) => {
-                eprintln!("refraction-explorer bench: {e}");
-                return ExitCode::from(2);
-            }
-        }
-    } else {
-        print!("{}", report.table());
-    }
-    ExitCode::SUCCESS
-}
-
-fn check(file: Option<&std::path::Path>) -> ExitCode {
-    use refraction_explorer::check::Match;
-    use std::collections::BTreeMap;
-    let input: Box<dyn io::BufRead> = match file {
-        None => Box::new(io::stdin().lock()),
-        Some(path) => match std::fs::File::open(path) {
-            Ok(f) => Box::new(io::BufReader::new(f)),
-            Err(e) => {
-                eprintln!(
-                    "refraction-explorer check: cannot read {}: {e}",
-                    path.display()
-                );
-                return ExitCode::from(2);
-            }
-        },
-    };
-    let mut tally: BTreeMap<&'static str, usize> = BTreeMap::new();
-    let mut all_ok = true;
-    let result = refraction_explorer::jsonl::answer_lines(input, io::stdout().lock(), |line| {
-        let kind = match refraction_explorer::check::answer(line) {
-            Ok((text, verdict)) => {
-                all_ok &= verdict.ok;
-                let kind = match (verdict.ok, verdict.matches) {
-                    (true, _) => "ok",
-                    (false, Some(Match::Chosen)) => "not unit length",
-                    (false, Some(m)) => m.name(),
-                    (false, None) => "matching no candidate",
-                };
-                (kind, Ok(text))
-            }
-            Err(e) => ("unreadable", Err(e)),
-        };
-        *tally.entry(kind.0).or_default() += 1;
-        kind.1
-    });
-    match result {
-        Ok(answered) => {
-            let summary: Vec<String> = tally.iter().map(|(k, n)| format!("{n} {k}")).collect();
-            eprintln!("check: {}", summary.join(", "));
-            if answered && all_ok {
-                ExitCode::SUCCESS
-            } else {
-                ExitCode::from(1)
-            }
-        }
-        Err(e) if e.kind() == ErrorKind::BrokenPipe => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("refraction-explorer check: {e}");
-            ExitCode::from(2)
-        }
+        Some(Command::Solve) => commands::lines::solve(),
+        Some(Command::Check { file }) => commands::lines::check(file.as_deref()),
+        Some(Command::Bench { quick, json }) => commands::bench::run(quick, json),
+        Some(Command::Trace { scene, json, list }) => commands::trace::run(&scene, json, list),
+        Some(Command::Render {
+            out,
+            width,
+            height,
+            state,
+        }) => commands::render::run(&out, width, height, state.as_deref()),
+        None => commands::render::explorer(cli.state.as_deref()),
     }
 }

@@ -1,0 +1,122 @@
+//! The interactive diagram: painted from [`Diagram`], with one focusable, draggable widget per
+//! handle (named for screen readers and tests) and keyboard nudges.
+
+use egui::emath::RectTransform;
+use egui::{
+    CursorIcon, EventFilter, Key, Pos2, Rect, Role, Sense, Stroke, Ui, Vec2 as EguiVec2, WidgetInfo,
+};
+use glam::Vec2;
+
+use super::paint::{color, paint};
+use crate::diagram::{Diagram, ExplorerState, HandleId, palette};
+
+/// Degrees per arrow-key press (Shift: a tenth of it).
+const ANGLE_STEP: f64 = 1.0;
+/// Index change per key press (Shift: a tenth of it).
+const INDEX_STEP: f64 = 0.01;
+
+/// The value a handle reports to screen readers: the diagram angle of W or N in degrees, or
+/// the index.
+fn handle_value(state: &ExplorerState, handle: HandleId) -> f64 {
+    match handle {
+        HandleId::W | HandleId::N => state.direction(handle).to_angle().to_degrees(),
+        HandleId::MuI | HandleId::MuT => state.index(handle),
+    }
+}
+
+/// Changes the index of a μ handle by `delta`, rounding away binary noise.
+fn nudge_index(state: &mut ExplorerState, handle: HandleId, delta: f64) {
+    let index = ((state.index(handle) + delta) * 1e6).round() / 1e6;
+    let _ = state.set_index(handle, index);
+}
+
+/// Applies the keys pressed while `handle` has focus: arrows turn W or N (counter-clockwise
+/// for ← and ↑) or move a μ marker (↑ and → raise it); + and − change the selected index
+/// (μt while W or N is selected).
+fn keyboard(ui: &Ui, state: &mut ExplorerState, handle: HandleId) {
+    let (turn, raise, plus, shift) = ui.input(|i| {
+        let pressed = |key| i32::from(i.key_pressed(key));
+        let turn = pressed(Key::ArrowLeft) + pressed(Key::ArrowUp)
+            - pressed(Key::ArrowRight)
+            - pressed(Key::ArrowDown);
+        let raise = pressed(Key::ArrowUp) + pressed(Key::ArrowRight)
+            - pressed(Key::ArrowDown)
+            - pressed(Key::ArrowLeft);
+        let plus = pressed(Key::Plus) + pressed(Key::Equals) - pressed(Key::Minus);
+        (turn, raise, plus, i.modifiers.shift)
+    });
+    let scale = if shift { 0.1 } else { 1.0 };
+    match handle {
+        HandleId::W | HandleId::N if turn != 0 => {
+            state.rotate(handle, f64::from(turn) * ANGLE_STEP * scale);
+        }
+        HandleId::MuI | HandleId::MuT if raise != 0 => {
+            nudge_index(state, handle, f64::from(raise) * INDEX_STEP * scale);
+        }
+        _ => {}
+    }
+    if plus != 0 {
+        let target = if handle == HandleId::MuI {
+            HandleId::MuI
+        } else {
+            HandleId::MuT
+        };
+        nudge_index(state, target, f64::from(plus) * INDEX_STEP * scale);
+    }
+}
+
+/// Shows the diagram filling the available space, editing `state` by drag and keyboard.
+pub fn show(ui: &mut Ui, state: &mut ExplorerState) {
+    let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::hover());
+    let size = response.rect.size();
+    let to_screen = RectTransform::from_to(Rect::from_min_size(Pos2::ZERO, size), response.rect);
+    let from_screen = to_screen.inverse();
+    let canvas_size = Vec2::new(size.x, size.y);
+    let before = Diagram::new(state, canvas_size);
+    let mut focused = None;
+    for handle in &before.handles {
+        let area = Diagram::grab_area(handle);
+        let rect = Rect::from_min_max(
+            to_screen.transform_pos(Pos2::new(area.min.x, area.min.y)),
+            to_screen.transform_pos(Pos2::new(area.max.x, area.max.y)),
+        );
+        let id = response.id.with(handle.id);
+        let grab = ui.interact(rect, id, Sense::drag());
+        let value = handle_value(state, handle.id);
+        grab.widget_info(|| WidgetInfo::slider(true, value, handle.id.label()));
+        if let Some(pointer) = grab.interact_pointer_pos().filter(|_| grab.dragged()) {
+            let p = from_screen.transform_pos(pointer);
+            before.drag(state, handle.id, Vec2::new(p.x, p.y));
+            grab.request_focus();
+        }
+        if grab.hovered() || grab.dragged() {
+            ui.ctx().set_cursor_icon(CursorIcon::Grab);
+        }
+        if grab.has_focus() {
+            let filter = EventFilter {
+                horizontal_arrows: true,
+                vertical_arrows: true,
+                ..EventFilter::default()
+            };
+            ui.memory_mut(|m| m.set_focus_lock_filter(id, filter));
+            keyboard(ui, state, handle.id);
+            focused = Some(handle.id);
+        }
+    }
+    let after = Diagram::new(state, canvas_size);
+    paint(&painter, &to_screen, &after.primitives());
+    response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &after.summary));
+    if let Some(handle) = after.handles.iter().find(|h| Some(h.id) == focused) {
+        let center = to_screen.transform_pos(Pos2::new(handle.center.x, handle.center.y));
+        let ring = Stroke::new(2.0, color(palette::INK));
+        painter.circle_stroke(center, handle.radius * 1.7, ring);
+        let hint = "arrow keys: turn or move by 1° or 0.01 (Shift: a tenth), +/− index, Tab: next";
+        painter.text(
+            response.rect.left_bottom() + EguiVec2::new(8.0, -6.0),
+            egui::Align2::LEFT_BOTTOM,
+            hint,
+            egui::FontId::proportional(12.0),
+            color(palette::INK),
+        );
+    }
+}

@@ -1,0 +1,188 @@
+//! The left panel: convention, flipping N, the two indices (slider, typed value, preset), typed
+//! 3D W and N, the critical-angle snap and the PNG export.
+
+use std::path::PathBuf;
+
+use egui::{ComboBox, DragValue, RichText, Slider, SliderClamping, Ui};
+
+use super::paint::color;
+use super::typed::{TypedField, format_vector, parse_number, parse_vector, short};
+use crate::diagram::palette;
+use crate::diagram::state::{INDEX_RANGE, MATERIALS, material_of};
+use crate::diagram::{ExplorerState, HandleId};
+use crate::kernel::Convention;
+use crate::render;
+
+/// What the controls keep between frames.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Controls {
+    mu_i: TypedField,
+    mu_t: TypedField,
+    w: TypedField,
+    n: TypedField,
+    export_size: (u32, u32),
+    export_path: String,
+    export_status: Option<Result<String, String>>,
+}
+
+impl Default for Controls {
+    fn default() -> Self {
+        Self {
+            mu_i: TypedField::default(),
+            mu_t: TypedField::default(),
+            w: TypedField::default(),
+            n: TypedField::default(),
+            export_size: render::DEFAULT_SIZE,
+            export_path: "refraction.png".to_owned(),
+            export_status: None,
+        }
+    }
+}
+
+/// The slider, typed value and preset of one index.
+fn index_controls(
+    ui: &mut Ui,
+    state: &mut ExplorerState,
+    handle: HandleId,
+    field: &mut TypedField,
+) {
+    let symbol = if handle == HandleId::MuI {
+        "μi"
+    } else {
+        "μt"
+    };
+    let mut index = state.index(handle);
+    let (low, high) = INDEX_RANGE;
+    // Never clamping, so that the slider does not round a typed 1.000293 to its own decimals
+    // or pull a typed 3.2 into its range.
+    let slider = Slider::new(&mut index, low..=high)
+        .text(symbol)
+        .clamping(SliderClamping::Never);
+    if ui.add(slider).changed() {
+        let _ = state.set_index(handle, index);
+    }
+    let typed = field.show(
+        ui,
+        &format!("{symbol} value"),
+        short(state.index(handle)),
+        90.0,
+    );
+    if let Some(text) = typed {
+        let outcome = parse_number(&text, symbol).and_then(|value| {
+            state
+                .set_index(handle, value)
+                .map_err(|e| format!("{symbol}: {e}"))
+        });
+        field.settle(outcome);
+    }
+    let current = material_of(state.index(handle)).map_or("custom", |m| m.name);
+    ComboBox::from_label(format!("{symbol} material"))
+        .selected_text(current)
+        .show_ui(ui, |ui| {
+            for m in MATERIALS {
+                let text = format!("{} ({})", m.name, m.index);
+                if ui.selectable_label(current == m.name, text).clicked() {
+                    let _ = state.set_index(handle, m.index);
+                    field.error = None;
+                }
+            }
+            ui.label("custom: type a value above");
+        });
+}
+
+impl Controls {
+    /// Shows the controls, editing `state`.
+    pub fn show(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
+        ui.heading("Convention");
+        let mut convention = state.convention();
+        ui.radio_value(
+            &mut convention,
+            Convention::TowardOrigin,
+            "Section 1: W points back toward the origin",
+        );
+        ui.radio_value(
+            &mut convention,
+            Convention::AlongRay,
+            "Section 2: W is the direction of travel",
+        );
+        state.set_convention(convention);
+        ui.horizontal(|ui| {
+            if ui
+                .button("Flip N")
+                .on_hover_text(
+                    "Turn the normal around, as an outward normal is where a ray leaves glass",
+                )
+                .clicked()
+            {
+                state.flip_normal();
+            }
+            let snap = ui.add_enabled(
+                state.critical_angle().is_some(),
+                egui::Button::new("Snap W to θc"),
+            );
+            if snap
+                .on_hover_text("Put W at the critical angle (needs μi > μt)")
+                .on_disabled_hover_text("There is a critical angle only when μi > μt")
+                .clicked()
+            {
+                state.snap_to_critical_angle();
+            }
+        });
+        ui.separator();
+        ui.heading("Indices");
+        index_controls(ui, state, HandleId::MuI, &mut self.mu_i);
+        index_controls(ui, state, HandleId::MuT, &mut self.mu_t);
+        ui.separator();
+        ui.heading("Typed W and N");
+        ui.label("Paste a student's logged vectors (x, y, z); press Enter.");
+        if let Some(text) = self.w.show(ui, "W =", format_vector(state.w()), 170.0) {
+            let outcome = parse_vector(&text, "W")
+                .and_then(|w| state.set_vectors(w, state.n()).map_err(|e| e.to_string()));
+            self.w.settle(outcome);
+        }
+        if let Some(text) = self.n.show(ui, "N =", format_vector(state.n()), 170.0) {
+            let outcome = parse_vector(&text, "N")
+                .and_then(|n| state.set_vectors(state.w(), n).map_err(|e| e.to_string()));
+            self.n.settle(outcome);
+        }
+        ui.separator();
+        self.export(ui, state);
+    }
+
+    fn export(&mut self, ui: &mut Ui, state: &ExplorerState) {
+        ui.heading("Export PNG");
+        let (low, high) = render::SIZE_LIMITS;
+        ui.horizontal(|ui| {
+            let (width, height) = &mut self.export_size;
+            let label = ui.label("Size");
+            ui.add(DragValue::new(width).range(low..=high).suffix(" px"))
+                .labelled_by(label.id);
+            ui.label("×");
+            ui.add(DragValue::new(height).range(low..=high).suffix(" px"))
+                .labelled_by(label.id);
+        });
+        ui.horizontal(|ui| {
+            let label = ui.label("File");
+            ui.add(egui::TextEdit::singleline(&mut self.export_path).desired_width(170.0))
+                .labelled_by(label.id);
+        });
+        if ui.button("Export PNG").clicked() {
+            let path = PathBuf::from(self.export_path.trim());
+            let (width, height) = self.export_size;
+            self.export_status = Some(
+                render::export(state, width, height, &path)
+                    .map(|()| format!("wrote {}", path.display()))
+                    .map_err(|e| e.to_string()),
+            );
+        }
+        match &self.export_status {
+            Some(Ok(message)) => {
+                ui.label(message);
+            }
+            Some(Err(message)) => {
+                ui.label(RichText::new(format!("⚠ {message}")).color(color(palette::ALARM)));
+            }
+            None => {}
+        }
+    }
+}

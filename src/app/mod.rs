@@ -1,0 +1,106 @@
+//! The explorer window (eframe/egui): controls on the left, the interactive diagram in the
+//! middle, the kernel's numbers on the right. The state lives in [`ExplorerState`]; drawing
+//! comes from [`crate::diagram`]; nothing here computes refraction.
+
+mod canvas;
+mod controls;
+mod paint;
+mod readouts;
+mod typed;
+
+use egui::{Panel, ScrollArea, Ui};
+
+use crate::diagram::ExplorerState;
+use crate::state_file;
+use controls::Controls;
+
+/// The window title.
+pub const TITLE: &str = "Refraction explorer";
+
+/// Where eframe keeps the last state between runs.
+const STORAGE_KEY: &str = "explorer_state";
+
+/// The whole explorer: the state being explored and the controls' own memory.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Explorer {
+    state: ExplorerState,
+    controls: Controls,
+}
+
+impl Explorer {
+    /// An explorer opened on `state`.
+    #[must_use]
+    pub fn new(state: ExplorerState) -> Self {
+        Self {
+            state,
+            controls: Controls::default(),
+        }
+    }
+
+    /// The state being explored.
+    #[must_use]
+    pub fn state(&self) -> &ExplorerState {
+        &self.state
+    }
+
+    /// Shows the explorer in `ui` (the whole window).
+    pub fn show(&mut self, ui: &mut Ui) {
+        Panel::left("controls")
+            .default_size(290.0)
+            .resizable(true)
+            .show(ui, |ui| {
+                ScrollArea::vertical().show(ui, |ui| {
+                    self.controls.show(ui, &mut self.state);
+                });
+            });
+        Panel::right("readouts")
+            .default_size(440.0)
+            .resizable(true)
+            .show(ui, |ui| {
+                ScrollArea::vertical().show(ui, |ui| {
+                    readouts::show(ui, self.state.refraction());
+                });
+            });
+        egui::CentralPanel::no_frame().show(ui, |ui| canvas::show(ui, &mut self.state));
+    }
+}
+
+impl eframe::App for Explorer {
+    fn ui(&mut self, ui: &mut Ui, _frame: &mut eframe::Frame) {
+        self.show(ui);
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        storage.set_string(STORAGE_KEY, state_file::to_json(&self.state));
+    }
+}
+
+/// Opens the explorer window on `state` (or, when `state` is `None`, on the state of the last
+/// run, falling back to the default) and returns when it is closed.
+///
+/// # Errors
+/// The window could not be created (no display, no OpenGL).
+pub fn run(state: Option<ExplorerState>) -> Result<(), eframe::Error> {
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_title(TITLE)
+            .with_inner_size([1200.0, 680.0])
+            .with_min_inner_size([900.0, 560.0]),
+        multisampling: 0,
+        ..eframe::NativeOptions::default()
+    };
+    eframe::run_native(
+        TITLE,
+        options,
+        Box::new(move |cc| {
+            cc.egui_ctx.set_theme(egui::Theme::Light);
+            let state = state.unwrap_or_else(|| {
+                cc.storage
+                    .and_then(|s| s.get_string(STORAGE_KEY))
+                    .and_then(|json| state_file::parse(&json).ok())
+                    .unwrap_or_default()
+            });
+            Ok(Box::new(Explorer::new(state)))
+        }),
+    )
+}

@@ -1,0 +1,74 @@
+//! Draws the diagram's primitives with an egui painter, the screen twin of `render`.
+
+use egui::emath::RectTransform;
+use egui::{Align2, Color32, FontId, Painter, Pos2, Shape, Stroke};
+use glam::Vec2;
+
+use crate::diagram::Primitive;
+use crate::diagram::geometry::Colour;
+use crate::diagram::shapes::Align;
+
+/// The egui colour of a diagram colour.
+#[must_use]
+pub fn color(c: Colour) -> Color32 {
+    Color32::from_rgba_unmultiplied(c.r, c.g, c.b, c.a)
+}
+
+fn align(a: Align) -> egui::Align {
+    match a {
+        Align::Start => egui::Align::Min,
+        Align::Center => egui::Align::Center,
+        Align::End => egui::Align::Max,
+    }
+}
+
+/// Paints `primitives` (canvas pixels) through `to_screen` (canvas → screen points).
+pub fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[Primitive]) {
+    let at = |p: Vec2| to_screen.transform_pos(Pos2::new(p.x, p.y));
+    let points = |ps: &[Vec2]| ps.iter().map(|p| at(*p)).collect::<Vec<_>>();
+    for primitive in primitives {
+        match primitive {
+            Primitive::Polygon { points: ps, colour } => {
+                painter.add(Shape::convex_polygon(
+                    points(ps),
+                    color(*colour),
+                    Stroke::NONE,
+                ));
+            }
+            Primitive::Polyline {
+                points: ps,
+                width,
+                colour,
+            } => {
+                painter.add(Shape::line(points(ps), Stroke::new(*width, color(*colour))));
+            }
+            Primitive::Disc {
+                center,
+                radius,
+                fill,
+                outline_width,
+                outline,
+            } => {
+                painter.circle(
+                    at(*center),
+                    *radius,
+                    color(*fill),
+                    Stroke::new(*outline_width, color(*outline)),
+                );
+            }
+            Primitive::Text(label) => {
+                let galley = painter.layout_no_wrap(
+                    label.text.clone(),
+                    FontId::proportional(label.size),
+                    color(label.colour),
+                );
+                let anchor = Align2([align(label.h), align(label.v)]);
+                let rect = anchor.anchor_size(at(label.at), galley.size());
+                if let Some(background) = label.background {
+                    painter.rect_filled(rect.expand(label.size * 0.2), 0.0, color(background));
+                }
+                painter.galley(rect.min, galley, color(label.colour));
+            }
+        }
+    }
+}

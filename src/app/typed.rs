@@ -1,0 +1,132 @@
+//! Typed input: a text field that follows the state while the user is not editing it, applies
+//! what was typed, if it differs, on Enter (or when focus leaves), and shows an inline error instead when the
+//! text is refused, keeping the last good state.
+
+use egui::{RichText, TextEdit, Ui};
+use glam::DVec3;
+
+use super::paint::color;
+use crate::diagram::palette;
+
+/// One typed field: its text and the error of the last attempt to apply it.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TypedField {
+    /// What is in the field.
+    pub text: String,
+    /// Why the last text typed was refused.
+    pub error: Option<String>,
+}
+
+impl TypedField {
+    /// Shows the field labelled `label`, showing `current` when not being edited. Returns the
+    /// text to apply when the user confirmed an edit.
+    pub fn show(
+        &mut self,
+        ui: &mut Ui,
+        label: &str,
+        current: String,
+        width: f32,
+    ) -> Option<String> {
+        let mut submitted = None;
+        ui.horizontal(|ui| {
+            let name = ui.label(label);
+            let response = ui
+                .add(TextEdit::singleline(&mut self.text).desired_width(width))
+                .labelled_by(name.id);
+            if response.lost_focus() {
+                if self.text.trim() == current {
+                    self.error = None;
+                } else {
+                    submitted = Some(self.text.trim().to_owned());
+                }
+            } else if !response.has_focus() && self.error.is_none() {
+                self.text = current;
+            }
+        });
+        if let Some(error) = &self.error {
+            ui.label(RichText::new(format!("⚠ {error}")).color(color(palette::ALARM)));
+        }
+        submitted
+    }
+
+    /// Records the outcome of applying the text: an error is shown until the next success.
+    pub fn settle(&mut self, outcome: Result<(), String>) {
+        self.error = outcome.err();
+    }
+}
+
+/// Parses a number as typed (`NaN` and `inf` parse, for the kernel to refuse by name).
+///
+/// # Errors
+/// The text is not a number.
+pub fn parse_number(text: &str, name: &str) -> Result<f64, String> {
+    text.parse()
+        .map_err(|_| format!("{name}: “{text}” is not a number"))
+}
+
+/// Parses a 3D vector typed as `x, y, z` (commas and/or spaces, optional brackets).
+///
+/// # Errors
+/// Not exactly three numbers; the message names the vector.
+pub fn parse_vector(text: &str, name: &str) -> Result<DVec3, String> {
+    let parts: Vec<&str> = text
+        .trim_matches(|c: char| "[]() ".contains(c))
+        .split(|c: char| c == ',' || c.is_whitespace())
+        .filter(|s| !s.is_empty())
+        .collect();
+    if parts.len() != 3 {
+        return Err(format!(
+            "{name}: expected three numbers x, y, z, got {}",
+            parts.len()
+        ));
+    }
+    let mut v = [0.0; 3];
+    for (slot, part) in v.iter_mut().zip(&parts) {
+        *slot = parse_number(part, name)?;
+    }
+    Ok(DVec3::from_array(v))
+}
+
+/// A vector as `x, y, z` with enough digits to read back what a student logged.
+#[must_use]
+pub fn format_vector(v: DVec3) -> String {
+    format!("{}, {}, {}", short(v.x), short(v.y), short(v.z))
+}
+
+/// A number with at most 6 decimals and no trailing zeros.
+#[must_use]
+pub fn short(x: f64) -> String {
+    let text = format!("{x:.6}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".to_owned()
+    } else {
+        text.to_owned()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn vectors_and_numbers_parse_with_clear_errors() {
+        assert_eq!(
+            parse_vector("[0.6, -0.8 0]", "W").unwrap(),
+            DVec3::new(0.6, -0.8, 0.0)
+        );
+        assert_eq!(
+            parse_vector("1, 2", "N").unwrap_err(),
+            "N: expected three numbers x, y, z, got 2"
+        );
+        assert_eq!(
+            parse_vector("1, x, 2", "N").unwrap_err(),
+            "N: “x” is not a number"
+        );
+        assert!(parse_number("NaN", "μt").unwrap().is_nan());
+        assert_eq!(
+            format_vector(DVec3::new(0.5, -0.0, 1.0 / 3.0)),
+            "0.5, 0, 0.333333"
+        );
+    }
+}

@@ -1,0 +1,41 @@
+//! `trace`: a scene's counts, or its whole trace as JSON.
+
+use std::io::{self, Write};
+use std::process::ExitCode;
+
+use refraction_explorer::scene::{Report, Scene, catalogue};
+
+use super::output_error;
+
+/// Runs `trace`: the scene's summary or JSON on stdout, or the load error on stderr.
+pub fn run(scene: &str, json: bool, list: bool) -> ExitCode {
+    let mut out = io::stdout().lock();
+    let written = if list {
+        catalogue()
+            .iter()
+            .try_for_each(|info| writeln!(out, "{:<20}{}", info.name, info.title))
+    } else {
+        let scene = match Scene::load(scene) {
+            Ok(scene) => scene,
+            Err(e) => {
+                eprintln!("refraction-explorer trace: {e}");
+                return ExitCode::from(1);
+            }
+        };
+        let traced = scene.trace();
+        if json {
+            serde_json::to_writer(&mut out, &Report::new(&scene, &traced))
+                .map_err(io::Error::from)
+                .and_then(|()| writeln!(out))
+        } else {
+            writeln!(
+                out,
+                "{} ({})\n{}",
+                scene.title(),
+                scene.name(),
+                traced.counts
+            )
+        }
+    };
+    written.map_or_else(|e| output_error("trace", &e), |()| ExitCode::SUCCESS)
+}

@@ -1,0 +1,290 @@
+//! Plane geometry on the canvas: colours, rectangles, clipping, dashes, arcs and arrowheads.
+//!
+//! Canvas coordinates are pixels with the origin at the top-left corner and y pointing down, as
+//! both egui and tiny-skia use them. Everything here is total: degenerate input (zero-length
+//! segments, empty rectangles) gives empty output, never NaN or a panic.
+
+use glam::Vec2;
+
+/// An sRGB colour with straight (not premultiplied) alpha.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Colour {
+    /// Red, 0–255.
+    pub r: u8,
+    /// Green, 0–255.
+    pub g: u8,
+    /// Blue, 0–255.
+    pub b: u8,
+    /// Opacity, 0 (transparent) to 255 (opaque).
+    pub a: u8,
+}
+
+impl Colour {
+    /// An opaque colour from its hex code, e.g. `0x0072B2`.
+    #[must_use]
+    pub const fn hex(code: u32) -> Self {
+        Self {
+            r: (code >> 16) as u8,
+            g: (code >> 8) as u8,
+            b: code as u8,
+            a: 255,
+        }
+    }
+
+    /// The same colour with opacity `a`.
+    #[must_use]
+    pub const fn with_alpha(self, a: u8) -> Self {
+        Self { a, ..self }
+    }
+
+    /// The colour `t` of the way from `self` to `other` (t clamped to 0..=1), channel by channel.
+    #[must_use]
+    pub fn lerp(self, other: Self, t: f32) -> Self {
+        let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
+        let mix = |x: u8, y: u8| (f32::from(x) + (f32::from(y) - f32::from(x)) * t).round() as u8;
+        Self {
+            r: mix(self.r, other.r),
+            g: mix(self.g, other.g),
+            b: mix(self.b, other.b),
+            a: mix(self.a, other.a),
+        }
+    }
+}
+
+/// An axis-aligned rectangle on the canvas (`min` top-left, `max` bottom-right).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Rect {
+    /// Top-left corner.
+    pub min: Vec2,
+    /// Bottom-right corner.
+    pub max: Vec2,
+}
+
+impl Rect {
+    /// The rectangle from its top-left corner and size.
+    #[must_use]
+    pub fn from_min_size(min: Vec2, size: Vec2) -> Self {
+        Self {
+            min,
+            max: min + size,
+        }
+    }
+
+    /// Width and height.
+    #[must_use]
+    pub fn size(&self) -> Vec2 {
+        self.max - self.min
+    }
+
+    /// The centre point.
+    #[must_use]
+    pub fn center(&self) -> Vec2 {
+        (self.min + self.max) * 0.5
+    }
+
+    /// The four corners, clockwise on screen from the top-left.
+    #[must_use]
+    pub fn corners(&self) -> [Vec2; 4] {
+        [
+            self.min,
+            Vec2::new(self.max.x, self.min.y),
+            self.max,
+            Vec2::new(self.min.x, self.max.y),
+        ]
+    }
+
+    /// Whether the two rectangles share interior points.
+    #[must_use]
+    pub fn overlaps(&self, other: &Self) -> bool {
+        self.min.cmplt(other.max).all() && other.min.cmplt(self.max).all()
+    }
+
+    /// Whether `p` lies inside or on the border.
+    #[must_use]
+    pub fn contains(&self, p: Vec2) -> bool {
+        p.cmpge(self.min).all() && p.cmple(self.max).all()
+    }
+}
+
+/// The convex polygon `rect ∩ {p : (p − through)·normal ≥ 0}` (empty when they do not meet).
+#[must_use]
+pub fn clip_rect_to_half_plane(rect: &Rect, through: Vec2, normal: Vec2) -> Vec<Vec2> {
+    let side = |p: Vec2| (p - through).dot(normal);
+    let corners = rect.corners();
+    let mut out = Vec::with_capacity(5);
+    for (i, &p) in corners.iter().enumerate() {
+        let q = corners[(i + 1) % 4];
+        let (sp, sq) = (side(p), side(q));
+        if sp >= 0.0 {
+            out.push(p);
+        }
+        if (sp >= 0.0) != (sq >= 0.0) {
+            out.push(p + (q - p) * (sp / (sp - sq)));
+        }
+    }
+    out
+}
+
+/// The part of the segment `a`–`b` inside `rect` (Liang–Barsky), or `None`.
+#[must_use]
+pub fn clip_segment(a: Vec2, b: Vec2, rect: &Rect) -> Option<(Vec2, Vec2)> {
+    let d = b - a;
+    let (mut t0, mut t1) = (0.0_f32, 1.0_f32);
+    for (p, q) in [
+        (-d.x, a.x - rect.min.x),
+        (d.x, rect.max.x - a.x),
+        (-d.y, a.y - rect.min.y),
+        (d.y, rect.max.y - a.y),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return None;
+            }
+        } else {
+            let t = q / p;
+            if p < 0.0 {
+                t0 = t0.max(t);
+            } else {
+                t1 = t1.min(t);
+            }
+        }
+    }
+    (t0 <= t1 && t0.is_finite() && t1.is_finite()).then(|| (a + d * t0, a + d * t1))
+}
+
+/// Splits a polyline into the drawn pieces of a dash `pattern` (on, off, on, off… lengths in
+/// pixels). An empty or non-positive pattern returns the polyline whole.
+#[must_use]
+pub fn dash(points: &[Vec2], pattern: &[f32]) -> Vec<Vec<Vec2>> {
+    let period: f32 = pattern.iter().sum();
+    if !pattern.iter().all(|l| l.is_finite() && *l >= 0.0) || period <= 0.0 {
+        return vec![points.to_vec()];
+    }
+    let mut pieces = Vec::new();
+    let mut current: Vec<Vec2> = Vec::new();
+    let (mut index, mut left) = (0, pattern[0]);
+    for pair in points.windows(2) {
+        let (mut from, to) = (pair[0], pair[1]);
+        let mut remaining = from.distance(to);
+        while remaining > 0.0 {
+            let on = index % 2 == 0;
+            if on && current.is_empty() {
+                current.push(from);
+            }
+            let step = left.min(remaining);
+            let next = from + (to - from) * (step / remaining);
+            if on {
+                current.push(next);
+            }
+            (from, remaining, left) = (next, remaining - step, left - step);
+            if left <= 0.0 {
+                if on {
+                    pieces.push(std::mem::take(&mut current));
+                }
+                index = (index + 1) % pattern.len();
+                left = pattern[index];
+            }
+        }
+    }
+    if current.len() > 1 {
+        pieces.push(current);
+    }
+    pieces
+}
+
+/// Points along the circular arc around `center` of `radius`, from the direction `from` turning
+/// the short way to the direction `to` (both canvas directions, any non-zero length).
+#[must_use]
+pub fn arc(center: Vec2, radius: f32, from: Vec2, to: Vec2) -> Vec<Vec2> {
+    let start = from.y.atan2(from.x);
+    let mut sweep = to.y.atan2(to.x) - start;
+    if sweep > std::f32::consts::PI {
+        sweep -= std::f32::consts::TAU;
+    } else if sweep < -std::f32::consts::PI {
+        sweep += std::f32::consts::TAU;
+    }
+    let steps = 32;
+    (0..=steps)
+        .map(|i| {
+            let angle = start + sweep * i as f32 / steps as f32;
+            center + Vec2::new(angle.cos(), angle.sin()) * radius
+        })
+        .collect()
+}
+
+/// The triangle of an arrowhead whose tip is at `tip`, pointing along `direction`, `length`
+/// long and `length`·0.7 wide. Empty when `direction` is zero.
+#[must_use]
+pub fn arrowhead(tip: Vec2, direction: Vec2, length: f32) -> Vec<Vec2> {
+    let Some(d) = direction.try_normalize() else {
+        return Vec::new();
+    };
+    let base = tip - d * length;
+    let side = d.perp() * (length * 0.35);
+    vec![tip, base + side, base - side]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rect() -> Rect {
+        Rect::from_min_size(Vec2::ZERO, Vec2::new(100.0, 50.0))
+    }
+
+    #[test]
+    fn half_plane_clip_keeps_the_right_half() {
+        let half = clip_rect_to_half_plane(&rect(), Vec2::new(50.0, 25.0), Vec2::X);
+        assert_eq!(half.len(), 4);
+        assert!(half.iter().all(|p| p.x >= 50.0 - 1e-4));
+        assert!(clip_rect_to_half_plane(&rect(), Vec2::new(200.0, 0.0), Vec2::X).is_empty());
+        assert_eq!(
+            clip_rect_to_half_plane(&rect(), Vec2::ZERO, Vec2::X).len(),
+            4
+        );
+    }
+
+    #[test]
+    fn segments_are_clipped_to_the_rectangle() {
+        let (a, b) = clip_segment(Vec2::new(-50.0, 25.0), Vec2::new(150.0, 25.0), &rect()).unwrap();
+        assert_eq!((a, b), (Vec2::new(0.0, 25.0), Vec2::new(100.0, 25.0)));
+        assert!(clip_segment(Vec2::new(-5.0, -5.0), Vec2::new(-1.0, 80.0), &rect()).is_none());
+        assert!(clip_segment(Vec2::splat(10.0), Vec2::splat(10.0), &rect()).is_some());
+        let right = Rect::from_min_size(Vec2::new(100.0, 0.0), Vec2::splat(10.0));
+        assert!(!rect().overlaps(&right));
+        assert!(rect().overlaps(&Rect::from_min_size(
+            Vec2::new(90.0, 40.0),
+            Vec2::splat(20.0)
+        )));
+    }
+
+    #[test]
+    fn dashes_cover_the_on_parts_only() {
+        let line = [Vec2::ZERO, Vec2::new(25.0, 0.0)];
+        let pieces = dash(&line, &[5.0, 5.0]);
+        assert_eq!(pieces.len(), 3);
+        assert_eq!(pieces[1], vec![Vec2::new(10.0, 0.0), Vec2::new(15.0, 0.0)]);
+        assert_eq!(dash(&line, &[]), vec![line.to_vec()]);
+        assert_eq!(dash(&line, &[0.0, 0.0]), vec![line.to_vec()]);
+    }
+
+    #[test]
+    fn arcs_turn_the_short_way_and_arrowheads_point_along() {
+        let points = arc(Vec2::ZERO, 10.0, Vec2::X, -Vec2::Y);
+        assert!((points[0] - Vec2::new(10.0, 0.0)).length() < 1e-4);
+        assert!((points[32] - Vec2::new(0.0, -10.0)).length() < 1e-4);
+        assert!(points.iter().all(|p| p.x >= -1e-4 && p.y <= 1e-4));
+        let head = arrowhead(Vec2::ZERO, Vec2::X, 10.0);
+        assert_eq!(head[0], Vec2::ZERO);
+        assert!(head[1].x < 0.0 && head[2].x < 0.0);
+        assert!(arrowhead(Vec2::ZERO, Vec2::ZERO, 10.0).is_empty());
+    }
+
+    #[test]
+    fn colours_mix_and_parse() {
+        let c = Colour::hex(0x0072B2);
+        assert_eq!((c.r, c.g, c.b, c.a), (0x00, 0x72, 0xB2, 255));
+        assert_eq!(Colour::hex(0).lerp(Colour::hex(0xFFFFFF), 0.5).r, 128);
+        assert_eq!(c.lerp(Colour::hex(0), f32::NAN), c);
+    }
+}

@@ -1,0 +1,26 @@
+//! What the explorer draws, computed from an [`ExplorerState`] and the kernel's answer for it:
+//! shapes with colours, widths, dash patterns and anchored labels, in canvas pixels. No egui and
+//! no tiny-skia here: the screen ([`crate::app`]) and the PNG ([`crate::render`]) both draw
+//! [`Diagram::primitives`], so what a teacher exports is what the class saw.
+//!
+//! - [`state`]: the state and the edits a user makes;
+//! - [`layout`]: where things go on a canvas of a given size;
+//! - [`picture`]: the interface diagram itself;
+//! - [`shapes`], [`geometry`], [`palette`], [`font`]: its vocabulary;
+//! - [`table`], [`equations`], [`quadratic`]: the numbers shown beside it.
+
+pub mod equations;
+pub mod font;
+pub mod geometry;
+pub mod layout;
+pub mod palette;
+pub mod picture;
+pub mod quadratic;
+pub mod shapes;
+pub mod state;
+pub mod table;
+
+pub use layout::Layout;
+pub use picture::{Diagram, Handle};
+pub use shapes::{Align, Primitive};
+pub use state::{ExplorerState, HandleId};

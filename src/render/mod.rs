@@ -1,0 +1,232 @@
+//! The diagram to pixels off screen: a PNG of [`Diagram::primitives`] drawn with tiny-skia,
+//! labels in egui's own font ([`text`]), written atomically.
+
+pub mod text;
+
+use std::fmt;
+use std::path::Path;
+
+use glam::Vec2;
+use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Transform};
+
+use crate::atomic::write_atomically;
+use crate::diagram::font::Typeface;
+use crate::diagram::geometry::Colour;
+use crate::diagram::{Diagram, ExplorerState, Primitive};
+
+/// The export size when none is given.
+pub const DEFAULT_SIZE: (u32, u32) = (1920, 1080);
+
+/// The smallest and largest accepted width or height, in pixels.
+pub const SIZE_LIMITS: (u32, u32) = (64, 8192);
+
+/// Why a PNG could not be made or written.
+#[derive(Debug)]
+pub enum RenderError {
+    /// The width or height is outside [`SIZE_LIMITS`].
+    BadSize {
+        /// Requested width.
+        width: u32,
+        /// Requested height.
+        height: u32,
+    },
+    /// The embedded font could not be read.
+    Font(String),
+    /// PNG encoding failed.
+    Encode(String),
+    /// The file could not be written.
+    Write(std::io::Error),
+}
+
+impl fmt::Display for RenderError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (low, high) = SIZE_LIMITS;
+        match self {
+            Self::BadSize { width, height } => write!(
+                f,
+                "the image size {width}×{height} is not allowed: width and height must each be \
+                 {low} to {high} pixels"
+            ),
+            Self::Font(message) | Self::Encode(message) => f.write_str(message),
+            Self::Write(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for RenderError {}
+
+fn paint(colour: Colour) -> Paint<'static> {
+    let mut paint = Paint {
+        anti_alias: true,
+        ..Paint::default()
+    };
+    paint.set_color_rgba8(colour.r, colour.g, colour.b, colour.a);
+    paint
+}
+
+fn path(points: &[Vec2], closed: bool) -> Option<tiny_skia::Path> {
+    let (first, rest) = points.split_first()?;
+    let mut path = PathBuilder::new();
+    path.move_to(first.x, first.y);
+    for p in rest {
+        path.line_to(p.x, p.y);
+    }
+    if closed {
+        path.close();
+    }
+    path.finish()
+}
+
+fn stroke(pixmap: &mut Pixmap, path: &tiny_skia::Path, width: f32, colour: Colour) {
+    let stroke = tiny_skia::Stroke {
+        width,
+        line_cap: LineCap::Round,
+        line_join: LineJoin::Round,
+        ..tiny_skia::Stroke::default()
+    };
+    pixmap.stroke_path(path, &paint(colour), &stroke, Transform::identity(), None);
+}
+
+fn fill(pixmap: &mut Pixmap, path: &tiny_skia::Path, colour: Colour) {
+    let rule = FillRule::Winding;
+    pixmap.fill_path(path, &paint(colour), rule, Transform::identity(), None);
+}
+
+/// Draws one primitive.
+fn draw(pixmap: &mut Pixmap, face: &Typeface, primitive: &Primitive) {
+    match primitive {
+        Primitive::Polygon { points, colour } => {
+            if let Some(path) = path(points, true) {
+                fill(pixmap, &path, *colour);
+            }
+        }
+        Primitive::Polyline {
+            points,
+            width,
+            colour,
+        } => {
+            if let Some(path) = path(points, false) {
+                stroke(pixmap, &path, *width, *colour);
+            }
+        }
+        Primitive::Disc {
+            center,
+            radius,
+            fill: inside,
+            outline_width,
+            outline,
+        } => {
+            if let Some(path) = PathBuilder::from_circle(center.x, center.y, *radius) {
+                fill(pixmap, &path, *inside);
+                stroke(pixmap, &path, *outline_width, *outline);
+            }
+        }
+        Primitive::Text(label) => {
+            let size = face.measure(&label.text, label.size);
+            let top_left = label.at - size * Vec2::new(label.h.fraction(), label.v.fraction());
+            if let Some(background) = label.background {
+                let pad = Vec2::splat(label.size * 0.2);
+                let corners = [
+                    top_left - pad,
+                    Vec2::new(top_left.x + size.x + pad.x, top_left.y - pad.y),
+                    top_left + size + pad,
+                    Vec2::new(top_left.x - pad.x, top_left.y + size.y + pad.y),
+                ];
+                if let Some(path) = path(&corners, true) {
+                    fill(pixmap, &path, background);
+                }
+            }
+            if let Some(path) = text::outline(face, &label.text, top_left, label.size) {
+                fill(pixmap, &path, label.colour);
+            }
+        }
+    }
+}
+
+/// The diagram of `state` drawn on a `width` × `height` pixmap.
+///
+/// # Errors
+/// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
+pub fn render(state: &ExplorerState, width: u32, height: u32) -> Result<Pixmap, RenderError> {
+    let (low, high) = SIZE_LIMITS;
+    let bad_size = RenderError::BadSize { width, height };
+    if !(low..=high).contains(&width) || !(low..=high).contains(&height) {
+        return Err(bad_size);
+    }
+    let mut pixmap = Pixmap::new(width, height).ok_or(bad_size)?;
+    let face = Typeface::egui_default().map_err(RenderError::Font)?;
+    let diagram = Diagram::new(state, Vec2::new(width as f32, height as f32));
+    for primitive in diagram.primitives() {
+        draw(&mut pixmap, &face, &primitive);
+    }
+    Ok(pixmap)
+}
+
+/// The diagram of `state` as PNG bytes.
+///
+/// # Errors
+/// As [`render`], or a failed encoding.
+pub fn png(state: &ExplorerState, width: u32, height: u32) -> Result<Vec<u8>, RenderError> {
+    render(state, width, height)?
+        .encode_png()
+        .map_err(|e| RenderError::Encode(format!("cannot encode the PNG: {e}")))
+}
+
+/// Writes the diagram of `state` as a PNG file at `path`, atomically.
+///
+/// # Errors
+/// As [`png`], or the file cannot be written (the message names it).
+pub fn export(
+    state: &ExplorerState,
+    width: u32,
+    height: u32,
+    path: &Path,
+) -> Result<(), RenderError> {
+    let bytes = png(state, width, height)?;
+    write_atomically(path, &bytes).map_err(RenderError::Write)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diagram::palette;
+
+    #[test]
+    fn the_png_decodes_at_the_requested_size_and_t_is_drawn_in_its_colour() {
+        let state = ExplorerState::default();
+        let bytes = png(&state, 1920, 1080).unwrap();
+        let decoded = Pixmap::decode_png(&bytes).unwrap();
+        assert_eq!((decoded.width(), decoded.height()), (1920, 1080));
+        let layout = crate::diagram::Layout::new(Vec2::new(1920.0, 1080.0));
+        let t = state.plane().project(state.refraction().t().unwrap());
+        let mut on_t = 0;
+        // From past the θt label to before the arrowhead.
+        for i in 45..=85 {
+            let world = t * (f64::from(i) / 100.0);
+            let p = layout.view.to_canvas(world);
+            let pixel = decoded
+                .pixel(p.x.round() as u32, p.y.round() as u32)
+                .unwrap();
+            let c = palette::T;
+            if (pixel.red(), pixel.green(), pixel.blue()) == (c.r, c.g, c.b) {
+                on_t += 1;
+            }
+        }
+        assert!(
+            on_t >= 39,
+            "only {on_t} of 41 pixels along T have T's colour"
+        );
+    }
+
+    #[test]
+    fn bad_sizes_and_paths_are_errors_with_clear_messages() {
+        let state = ExplorerState::default();
+        let err = png(&state, 0, 1080).unwrap_err().to_string();
+        assert!(
+            err.contains("0×1080") && err.contains("64 to 8192"),
+            "{err}"
+        );
+        let err = export(&state, 640, 360, Path::new("/nonexistent-folder/x.png")).unwrap_err();
+        assert!(err.to_string().contains("/nonexistent-folder/x.png"));
+    }
+}
