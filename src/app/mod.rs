@@ -20,10 +20,32 @@ pub const TITLE: &str = "Refraction explorer";
 /// Where eframe keeps the last state between runs.
 const STORAGE_KEY: &str = "explorer_state";
 
-/// The whole explorer: the state being explored and the controls' own memory.
+/// The explorer's views, chosen in the bar at the top of the window.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum View {
+    /// One interface at a hit point: drag W, N and μ.
+    #[default]
+    Interface,
+}
+
+impl View {
+    /// Every view, in the order of the bar.
+    pub const ALL: [Self; 1] = [Self::Interface];
+
+    /// The view's name in the bar (also its accessible name).
+    #[must_use]
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Interface => "One interface",
+        }
+    }
+}
+
+/// The whole explorer: the state being explored, the view shown and the controls' own memory.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Explorer {
     state: ExplorerState,
+    view: View,
     controls: Controls,
 }
 
@@ -33,6 +55,7 @@ impl Explorer {
     pub fn new(state: ExplorerState) -> Self {
         Self {
             state,
+            view: View::default(),
             controls: Controls::default(),
         }
     }
@@ -43,8 +66,28 @@ impl Explorer {
         &self.state
     }
 
-    /// Shows the explorer in `ui` (the whole window).
+    /// The view shown.
+    #[must_use]
+    pub fn view(&self) -> View {
+        self.view
+    }
+
+    /// Shows the explorer in `ui` (the whole window): the bar of views, then the view.
     pub fn show(&mut self, ui: &mut Ui) {
+        Panel::top("views").show(ui, |ui| {
+            ui.horizontal(|ui| {
+                for view in View::ALL {
+                    ui.selectable_value(&mut self.view, view, view.label());
+                }
+            });
+        });
+        match self.view {
+            View::Interface => self.show_interface(ui),
+        }
+    }
+
+    /// The single-interface view: controls, diagram, the kernel's numbers.
+    fn show_interface(&mut self, ui: &mut Ui) {
         Panel::left("controls")
             .default_size(290.0)
             .resizable(true)
