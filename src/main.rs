@@ -49,6 +49,9 @@ enum Command {
         /// Print one JSON document instead of the table.
         #[arg(long)]
         json: bool,
+        /// Also draw error against time per variant (log scales) into this PNG file.
+        #[arg(long, value_name = "FILE.png")]
+        plot: Option<PathBuf>,
     },
     /// Trace a scene: a ray, beam or fan crossing interface after interface.
     ///
@@ -89,7 +92,9 @@ fn main() -> ExitCode {
     match cli.command {
         Some(Command::Solve) => commands::lines::solve(),
         Some(Command::Check { file }) => commands::lines::check(file.as_deref()),
-        Some(Command::Bench { quick, json }) => commands::bench::run(quick, json),
+        Some(Command::Bench { quick, json, plot }) => {
+            commands::bench::run(quick, json, plot.as_deref())
+        }
         Some(Command::Trace { scene, json, list }) => commands::trace::run(&scene, json, list),
         Some(Command::Render {
             out,

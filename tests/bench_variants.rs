@@ -70,12 +70,17 @@ fn batch_lanes_equal_the_scalar_kernel_bit_for_bit() {
 }
 
 #[test]
-fn bench_json_quick_reports_every_row() {
+fn bench_json_quick_reports_every_row_and_plots_them() {
+    let plot = std::env::temp_dir().join(format!("bench-plot-{}.png", std::process::id()));
     let output = std::process::Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
-        .args(["bench", "--json", "--quick"])
+        .args(["bench", "--json", "--quick", "--plot"])
+        .arg(&plot)
         .output()
         .unwrap();
     assert!(output.status.success());
+    let image = tiny_skia::Pixmap::load_png(&plot).expect("the plot is a PNG");
+    std::fs::remove_file(&plot).unwrap();
+    assert_eq!((image.width(), image.height()), (1600, 1000));
     let report: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
     let rows = report["rows"].as_array().unwrap();
     assert_eq!(rows.len(), 2 * Variant::ALL.len());

@@ -2,6 +2,7 @@
 //! middle, the kernel's numbers on the right. The state lives in [`ExplorerState`]; drawing
 //! comes from [`crate::diagram`]; nothing here computes refraction.
 
+mod accuracy;
 mod canvas;
 mod controls;
 mod paint;
@@ -12,6 +13,7 @@ use egui::{Panel, ScrollArea, Ui};
 
 use crate::diagram::ExplorerState;
 use crate::state_file;
+use accuracy::AccuracyView;
 use controls::Controls;
 
 /// The window title.
@@ -26,27 +28,31 @@ pub enum View {
     /// One interface at a hit point: drag W, N and μ.
     #[default]
     Interface,
+    /// What accuracy costs in time: the `bench` measurement, plotted.
+    Accuracy,
 }
 
 impl View {
     /// Every view, in the order of the bar.
-    pub const ALL: [Self; 1] = [Self::Interface];
+    pub const ALL: [Self; 2] = [Self::Interface, Self::Accuracy];
 
     /// The view's name in the bar (also its accessible name).
     #[must_use]
     pub fn label(self) -> &'static str {
         match self {
             Self::Interface => "One interface",
+            Self::Accuracy => "Accuracy vs time",
         }
     }
 }
 
-/// The whole explorer: the state being explored, the view shown and the controls' own memory.
-#[derive(Clone, Debug, PartialEq)]
+/// The whole explorer: the state being explored, the view shown and each view's own memory.
+#[derive(Debug)]
 pub struct Explorer {
     state: ExplorerState,
     view: View,
     controls: Controls,
+    accuracy: AccuracyView,
 }
 
 impl Explorer {
@@ -57,6 +63,7 @@ impl Explorer {
             state,
             view: View::default(),
             controls: Controls::default(),
+            accuracy: AccuracyView::default(),
         }
     }
 
@@ -83,6 +90,11 @@ impl Explorer {
         });
         match self.view {
             View::Interface => self.show_interface(ui),
+            View::Accuracy => {
+                egui::CentralPanel::default().show(ui, |ui| {
+                    ScrollArea::vertical().show(ui, |ui| self.accuracy.show(ui));
+                });
+            }
         }
     }
 

@@ -1,14 +1,20 @@
 //! `bench`: the accuracy-against-time table or JSON.
 
 use std::io::{self, IsTerminal, Write};
+use std::path::Path;
 use std::process::ExitCode;
 
 use refraction_explorer::bench::{self, Config};
+use refraction_explorer::render;
 
 use super::fail;
 
-/// Runs the measurement, with a progress line on stderr when it is a terminal.
-pub fn run(quick: bool, json: bool) -> ExitCode {
+/// The size of the `--plot` image, in pixels.
+const PLOT_SIZE: (u32, u32) = (1600, 1000);
+
+/// Runs the measurement, with a progress line on stderr when it is a terminal, and writes the
+/// plot to `plot` if given.
+pub fn run(quick: bool, json: bool, plot: Option<&Path>) -> ExitCode {
     let config = if quick { Config::QUICK } else { Config::FULL };
     let show_progress = io::stderr().is_terminal();
     let report = bench::run(&config, &mut |fraction| {
@@ -19,6 +25,12 @@ pub fn run(quick: bool, json: bool) -> ExitCode {
     });
     if show_progress {
         eprintln!();
+    }
+    if let Some(path) = plot {
+        let (width, height) = PLOT_SIZE;
+        if let Err(e) = render::export_accuracy_plot(&report, width, height, path) {
+            return fail("bench", &e);
+        }
     }
     if json {
         match serde_json::to_string(&report) {

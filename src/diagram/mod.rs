@@ -7,8 +7,10 @@
 //! - [`layout`]: where things go on a canvas of a given size;
 //! - [`picture`]: the interface diagram itself;
 //! - [`shapes`], [`geometry`], [`palette`], [`font`]: its vocabulary;
-//! - [`table`], [`equations`], [`quadratic`]: the numbers shown beside it.
+//! - [`table`], [`equations`], [`quadratic`]: the numbers shown beside it;
+//! - [`accuracy_plot`]: the `bench` report as error against time.
 
+pub mod accuracy_plot;
 pub mod equations;
 pub mod font;
 pub mod geometry;

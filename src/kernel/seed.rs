@@ -13,6 +13,7 @@ use super::real::{Real, Vector3};
 ///
 /// Section 1 (W toward the origin): a = −μ, b = μ·wn − √k. Section 2 (W along the ray): a = μ,
 /// b = −μ·wn − √k.
+#[inline]
 #[must_use]
 pub fn weights<S: Real>(w: S::Vec3, n: S::Vec3, mu: S, convention: Convention) -> Option<(S, S)> {
     let wn = w.dot(n);
@@ -25,6 +26,7 @@ pub fn weights<S: Real>(w: S::Vec3, n: S::Vec3, mu: S, convention: Convention) -
 }
 
 /// The source's T = a·W + b·N for unit `w` and `n`, or `None` on total internal reflection.
+#[inline]
 #[must_use]
 pub fn refract<S: Real>(w: S::Vec3, n: S::Vec3, mu: S, convention: Convention) -> Option<S::Vec3> {
     weights(w, n, mu, convention).map(|(a, b)| w * a + n * b)

@@ -7,6 +7,7 @@ use super::stable::facing;
 
 /// The refracted direction of travel for unit `d` and unit `n` (either side), or `None` on
 /// total internal reflection, computed with acos, asin, sin and cos.
+#[inline]
 #[must_use]
 pub fn transmit<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Option<S::Vec3> {
     let n = facing::<S>(d, n);

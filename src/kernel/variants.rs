@@ -46,6 +46,7 @@ impl Variant {
     /// T for one ray (unit travel direction `d`, unit normal `n` facing it, μ), or `None` on
     /// total internal reflection. [`Variant::Batch`] answers as [`Variant::Stable`], which it
     /// equals bit for bit.
+    #[inline]
     #[must_use]
     pub fn transmit<S: Real>(self, d: S::Vec3, n: S::Vec3, mu: S) -> Option<S::Vec3> {
         match self {

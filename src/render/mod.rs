@@ -143,11 +143,15 @@ fn draw(pixmap: &mut Pixmap, face: &Typeface, primitive: &Primitive) {
     }
 }
 
-/// The diagram of `state` drawn on a `width` × `height` pixmap.
+/// A `width` × `height` pixmap with `primitives` drawn on it in order.
 ///
 /// # Errors
 /// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
-pub fn render(state: &ExplorerState, width: u32, height: u32) -> Result<Pixmap, RenderError> {
+pub fn draw_primitives(
+    width: u32,
+    height: u32,
+    primitives: impl FnOnce(Vec2, &Typeface) -> Vec<Primitive>,
+) -> Result<Pixmap, RenderError> {
     let (low, high) = SIZE_LIMITS;
     let bad_size = RenderError::BadSize { width, height };
     if !(low..=high).contains(&width) || !(low..=high).contains(&height) {
@@ -155,11 +159,30 @@ pub fn render(state: &ExplorerState, width: u32, height: u32) -> Result<Pixmap, 
     }
     let mut pixmap = Pixmap::new(width, height).ok_or(bad_size)?;
     let face = Typeface::egui_default().map_err(RenderError::Font)?;
-    let diagram = Diagram::new(state, Vec2::new(width as f32, height as f32));
-    for primitive in diagram.primitives() {
+    for primitive in primitives(Vec2::new(width as f32, height as f32), &face) {
         draw(&mut pixmap, &face, &primitive);
     }
     Ok(pixmap)
+}
+
+/// The diagram of `state` drawn on a `width` × `height` pixmap.
+///
+/// # Errors
+/// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
+pub fn render(state: &ExplorerState, width: u32, height: u32) -> Result<Pixmap, RenderError> {
+    draw_primitives(width, height, |size, _| {
+        Diagram::new(state, size).primitives()
+    })
+}
+
+/// A pixmap as PNG bytes.
+///
+/// # Errors
+/// The encoder failed.
+pub fn encode(pixmap: &Pixmap) -> Result<Vec<u8>, RenderError> {
+    pixmap
+        .encode_png()
+        .map_err(|e| RenderError::Encode(format!("cannot encode the PNG: {e}")))
 }
 
 /// The diagram of `state` as PNG bytes.
@@ -167,9 +190,15 @@ pub fn render(state: &ExplorerState, width: u32, height: u32) -> Result<Pixmap, 
 /// # Errors
 /// As [`render`], or a failed encoding.
 pub fn png(state: &ExplorerState, width: u32, height: u32) -> Result<Vec<u8>, RenderError> {
-    render(state, width, height)?
-        .encode_png()
-        .map_err(|e| RenderError::Encode(format!("cannot encode the PNG: {e}")))
+    encode(&render(state, width, height)?)
+}
+
+/// Writes a pixmap as a PNG file at `path`, atomically.
+///
+/// # Errors
+/// A failed encoding, or the file cannot be written (the message names it).
+pub fn write_png(pixmap: &Pixmap, path: &Path) -> Result<(), RenderError> {
+    write_atomically(path, &encode(pixmap)?).map_err(RenderError::Write)
 }
 
 /// Writes the diagram of `state` as a PNG file at `path`, atomically.
@@ -182,8 +211,23 @@ pub fn export(
     height: u32,
     path: &Path,
 ) -> Result<(), RenderError> {
-    let bytes = png(state, width, height)?;
-    write_atomically(path, &bytes).map_err(RenderError::Write)
+    write_png(&render(state, width, height)?, path)
+}
+
+/// Writes the plot of a `bench` report as a PNG file at `path`, atomically.
+///
+/// # Errors
+/// As [`draw_primitives`], or the file cannot be written (the message names it).
+pub fn export_accuracy_plot(
+    report: &crate::bench::Report,
+    width: u32,
+    height: u32,
+    path: &Path,
+) -> Result<(), RenderError> {
+    let pixmap = draw_primitives(width, height, |size, face| {
+        crate::diagram::accuracy_plot::primitives(report, size, face)
+    })?;
+    write_png(&pixmap, path)
 }
 
 #[cfg(test)]

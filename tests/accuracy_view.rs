@@ -1,0 +1,43 @@
+//! The "Accuracy vs time" view driven headlessly: the measurement runs in the background while
+//! the window keeps drawing frames, then the verdict, plot and table appear. No time is
+//! asserted; the test only waits (up to a generous limit) for the measurement to finish.
+
+use std::time::{Duration, Instant};
+
+use egui::Vec2;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use refraction_explorer::app::Explorer;
+use refraction_explorer::diagram::ExplorerState;
+
+#[test]
+fn measuring_shows_progress_then_the_verdict() {
+    let mut h = Harness::builder()
+        .with_size(Vec2::new(1280.0, 760.0))
+        .build_ui_state(
+            |ui, app: &mut Explorer| app.show(ui),
+            Explorer::new(ExplorerState::default()),
+        );
+    h.run();
+    h.get_by_label("Accuracy vs time").click();
+    h.run();
+    h.get_by_label("Quick run (a few seconds)").click();
+    h.run();
+    h.get_by_label("Measure").click();
+    h.step();
+    h.step();
+    assert!(
+        h.query_by_label_contains("measuring").is_some(),
+        "no progress bar while measuring"
+    );
+    let give_up = Instant::now() + Duration::from_secs(300);
+    while h.query_by_label_contains("Fastest within").is_none() {
+        assert!(Instant::now() < give_up, "the measurement never finished");
+        std::thread::sleep(Duration::from_millis(50));
+        h.step();
+    }
+    assert!(h.query_by_label_contains("measuring").is_none());
+    for row in ["stable f32", "batch f64", "trig f32"] {
+        assert!(h.query_by_label(row).is_some(), "no table row {row}");
+    }
+}
