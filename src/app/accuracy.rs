@@ -7,12 +7,14 @@ use std::sync::{Arc, Mutex, PoisonError};
 
 use egui::{Grid, ProgressBar, RichText, Ui};
 use egui_plot::{
-    GridInput, GridMark, HLine, HoverPosition, MarkerShape, Plot, PlotPoint, Points, Text,
+    Corner, GridInput, GridMark, HLine, HoverPosition, Legend, MarkerShape, Plot, Points,
 };
 
 use super::paint::color;
 use crate::bench::{self, Config, Report};
-use crate::diagram::accuracy_plot::{BOUND, FLOOR, decade_label, point_label, variant_colour};
+use crate::diagram::accuracy_plot::{
+    BOUND, FLOOR, LogAxis, decade_label, point_label, variant_colour,
+};
 use crate::diagram::palette;
 
 /// What the background measurement has reached.
@@ -30,23 +32,29 @@ pub struct AccuracyView {
     report: Option<Report>,
 }
 
-/// Grid marks at every whole power of ten of a log10 axis.
+/// Grid marks of a log10 axis: every power of ten, and 2× and 5× it in between.
 fn decades(input: GridInput) -> Vec<GridMark> {
     let (low, high) = input.bounds;
     (low.floor() as i32..=high.ceil() as i32)
-        .map(|e| GridMark {
-            value: f64::from(e),
-            step_size: 1.0,
+        .flat_map(|e| {
+            [(1.0, 1.0), (2.0, 0.5), (5.0, 0.5)].map(|(m, step_size)| GridMark {
+                value: f64::from(e) + f64::log10(m),
+                step_size,
+            })
         })
+        .filter(|mark| (low..=high).contains(&mark.value))
         .collect()
 }
 
-/// An axis label for a log10 coordinate: the power of ten at whole values, nothing between.
+/// The value of a log10 coordinate as a label: `0.2`, `50`, `1e4`, `5e-3`.
 fn decade_text(mark: GridMark) -> String {
+    let value = 10f64.powf(mark.value);
     if mark.value.fract() == 0.0 {
         decade_label(mark.value as i32)
+    } else if (0.01..1e4).contains(&value) {
+        format!("{}", (value * 1e3).round() / 1e3)
     } else {
-        String::new()
+        format!("{value:.0e}")
     }
 }
 
@@ -129,10 +137,23 @@ impl AccuracyView {
     }
 }
 
-/// Error against time, both log10-transformed (egui_plot has no log axes).
+/// Error against time, both log10-transformed (egui_plot has no log axes), framed on whole
+/// decades like the `bench --plot` image.
 fn plot(ui: &mut Ui, report: &Report) {
+    let x = LogAxis::covering(report.rows.iter().map(|r| r.ns_per_ray), 1e-3);
+    let y = LogAxis::covering(
+        report
+            .rows
+            .iter()
+            .map(|r| r.max_err_hard_eps_kappa)
+            .chain([BOUND]),
+        FLOOR,
+    );
     Plot::new("accuracy against time")
         .height((ui.available_height() * 0.6).max(260.0))
+        .legend(Legend::default().position(Corner::RightBottom))
+        .default_x_bounds(x.low, x.high)
+        .default_y_bounds(y.low, y.high)
         .x_axis_label("time per ray, ns (log)")
         .y_axis_label("largest hard-set error, ε·κ (log)")
         .x_grid_spacer(decades)
@@ -164,23 +185,12 @@ fn plot(ui: &mut Ui, report: &Report) {
                     row.ns_per_ray.log10(),
                     row.max_err_hard_eps_kappa.max(FLOOR).log10(),
                 ];
-                let colour = color(variant_colour(row.variant));
-                let label = point_label(row);
                 plot.points(
-                    Points::new(label.clone(), vec![at])
+                    Points::new(point_label(row), vec![at])
                         .shape(MarkerShape::Circle)
                         .filled(row.precision == "f64")
                         .radius(6.0)
-                        .color(colour),
-                );
-                plot.text(
-                    Text::new(
-                        label.clone(),
-                        PlotPoint::new(at[0], at[1]),
-                        format!("  {label}"),
-                    )
-                    .anchor(egui::Align2::LEFT_CENTER)
-                    .color(colour),
+                        .color(color(variant_colour(row.variant))),
                 );
             }
         });
@@ -222,8 +232,13 @@ mod tests {
             bounds: (-1.3, 2.2),
             base_step_size: 0.1,
         });
-        let values: Vec<f64> = marks.iter().map(|m| m.value).collect();
-        assert_eq!(values, [-2.0, -1.0, 0.0, 1.0, 2.0, 3.0]);
+        let whole: Vec<f64> = marks
+            .iter()
+            .filter(|m| m.step_size == 1.0)
+            .map(|m| m.value)
+            .collect();
+        assert_eq!(whole, [-1.0, 0.0, 1.0, 2.0]);
+        assert_eq!(marks.len(), 10);
         let label = |value| {
             decade_text(GridMark {
                 value,
@@ -231,6 +246,7 @@ mod tests {
             })
         };
         assert_eq!(label(-1.0), "0.1");
-        assert_eq!(label(0.5), "");
+        assert_eq!(label(2.0_f64.log10()), "2");
+        assert_eq!(label(-3.0 + 5.0_f64.log10()), "5e-3");
     }
 }
