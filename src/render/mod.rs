@@ -12,7 +12,7 @@ use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Transfo
 use crate::atomic::write_atomically;
 use crate::diagram::font::Typeface;
 use crate::diagram::geometry::Colour;
-use crate::diagram::{Diagram, ExplorerState, Primitive};
+use crate::diagram::{Diagram, ExplorerState, Overlay, Primitive};
 
 /// The export size when none is given.
 pub const DEFAULT_SIZE: (u32, u32) = (1920, 1080);
@@ -143,11 +143,16 @@ fn draw(pixmap: &mut Pixmap, face: &Typeface, primitive: &Primitive) {
     }
 }
 
-/// The diagram of `state` drawn on a `width` × `height` pixmap.
+/// The diagram of `state` with `overlay` drawn on a `width` × `height` pixmap.
 ///
 /// # Errors
 /// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
-pub fn render(state: &ExplorerState, width: u32, height: u32) -> Result<Pixmap, RenderError> {
+pub fn render(
+    state: &ExplorerState,
+    overlay: &Overlay,
+    width: u32,
+    height: u32,
+) -> Result<Pixmap, RenderError> {
     let (low, high) = SIZE_LIMITS;
     let bad_size = RenderError::BadSize { width, height };
     if !(low..=high).contains(&width) || !(low..=high).contains(&height) {
@@ -155,34 +160,39 @@ pub fn render(state: &ExplorerState, width: u32, height: u32) -> Result<Pixmap, 
     }
     let mut pixmap = Pixmap::new(width, height).ok_or(bad_size)?;
     let face = Typeface::egui_default().map_err(RenderError::Font)?;
-    let diagram = Diagram::new(state, Vec2::new(width as f32, height as f32));
+    let diagram = Diagram::with_overlay(state, Vec2::new(width as f32, height as f32), overlay);
     for primitive in diagram.primitives() {
         draw(&mut pixmap, &face, &primitive);
     }
     Ok(pixmap)
 }
 
-/// The diagram of `state` as PNG bytes.
+/// The diagram of `state` with `overlay` as PNG bytes.
 ///
 /// # Errors
 /// As [`render`], or a failed encoding.
-pub fn png(state: &ExplorerState, width: u32, height: u32) -> Result<Vec<u8>, RenderError> {
-    render(state, width, height)?
+pub fn png(
+    state: &ExplorerState,
+    overlay: &Overlay,
+    width: u32,
+    height: u32,
+) -> Result<Vec<u8>, RenderError> {
+    render(state, overlay, width, height)?
         .encode_png()
         .map_err(|e| RenderError::Encode(format!("cannot encode the PNG: {e}")))
 }
 
-/// Writes the diagram of `state` as a PNG file at `path`, atomically.
+/// Writes the diagram of `state` with `overlay` as a PNG file at `path`, atomically.
 ///
 /// # Errors
 /// As [`png`], or the file cannot be written (the message names it).
 pub fn export(
     state: &ExplorerState,
-    width: u32,
-    height: u32,
+    overlay: &Overlay,
+    (width, height): (u32, u32),
     path: &Path,
 ) -> Result<(), RenderError> {
-    let bytes = png(state, width, height)?;
+    let bytes = png(state, overlay, width, height)?;
     write_atomically(path, &bytes).map_err(RenderError::Write)
 }
 
@@ -194,7 +204,7 @@ mod tests {
     #[test]
     fn the_png_decodes_at_the_requested_size_and_t_is_drawn_in_its_colour() {
         let state = ExplorerState::default();
-        let bytes = png(&state, 1920, 1080).unwrap();
+        let bytes = png(&state, &Overlay::default(), 1920, 1080).unwrap();
         let decoded = Pixmap::decode_png(&bytes).unwrap();
         assert_eq!((decoded.width(), decoded.height()), (1920, 1080));
         let layout = crate::diagram::Layout::new(Vec2::new(1920.0, 1080.0));
@@ -221,12 +231,15 @@ mod tests {
     #[test]
     fn bad_sizes_and_paths_are_errors_with_clear_messages() {
         let state = ExplorerState::default();
-        let err = png(&state, 0, 1080).unwrap_err().to_string();
+        let err = png(&state, &Overlay::default(), 0, 1080)
+            .unwrap_err()
+            .to_string();
         assert!(
             err.contains("0×1080") && err.contains("64 to 8192"),
             "{err}"
         );
-        let err = export(&state, 640, 360, Path::new("/nonexistent-folder/x.png")).unwrap_err();
+        let path = Path::new("/nonexistent-folder/x.png");
+        let err = export(&state, &Overlay::default(), (640, 360), path).unwrap_err();
         assert!(err.to_string().contains("/nonexistent-folder/x.png"));
     }
 }
