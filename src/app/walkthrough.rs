@@ -103,34 +103,23 @@ impl WalkThrough {
     pub fn show(&mut self, ui: &mut Ui, state: &ExplorerState) {
         let all = steps(state.refraction());
         self.step = self.step.min(all.len() - 1);
-        let step = &all[self.step];
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             if ui
                 .add_enabled(self.step > 0, Button::new("◀ Previous step"))
                 .clicked()
             {
                 self.step -= 1;
             }
-            ui.label(
-                RichText::new(format!(
-                    "Step {} of {}: {}",
-                    self.step + 1,
-                    all.len(),
-                    step.title
-                ))
-                .strong(),
-            );
             if ui
                 .add_enabled(self.step + 1 < all.len(), Button::new("Next step ▶"))
                 .clicked()
             {
                 self.step += 1;
             }
-            ui.separator();
             let label = if self.animating() {
-                "Animating μ → 1 …"
+                "Animating μ to 1 …"
             } else {
-                "Animate μ → 1"
+                "Animate μ to 1"
             };
             let can_morph = !self.animating() && state.mu_i() != state.mu_t();
             if ui
@@ -142,6 +131,17 @@ impl WalkThrough {
                 self.start_morph(state);
             }
         });
+        // The buttons may have moved on: show the step now selected.
+        let step = &all[self.step];
+        ui.label(
+            RichText::new(format!(
+                "Step {} of {}: {}",
+                self.step + 1,
+                all.len(),
+                step.title
+            ))
+            .strong(),
+        );
         for eq in &step.equations {
             ui.horizontal_wrapped(|ui| {
                 ui.label(RichText::new(format!("({})  {}", eq.number, eq.formula)).strong());
@@ -179,9 +179,10 @@ mod tests {
         walk.start_morph(&state);
         let ctx = Context::default();
         for _ in 0..400 {
-            let _ = ctx.run_ui(egui::RawInput::default(), |ui| {
+            let mut output = ctx.run_ui(egui::RawInput::default(), |ui| {
                 walk.animate(ui.ctx(), &mut state);
             });
+            output.textures_delta.clear();
         }
         assert!(!walk.animating());
         let r = state.refraction();

@@ -161,12 +161,12 @@ pub fn steps(r: &Refraction<f64>) -> Vec<Step> {
             focus: Focus::RootsOfA,
         },
         Step {
-            title: "Choosing a: the μ → 1 argument",
+            title: "Choosing a: the limit μ = 1",
             equations: vec![eq19],
             explanation: format!(
                 "When μ = 1 nothing bends, so T must be the direction of travel, {travel}. Only \
                  a = {} gives that; the other sign would give the mirror image. Press \
-                 \"Animate μ → 1\" to watch T converge to {travel} and the ghosts not.{typo}",
+                 \"Animate μ to 1\" to watch T converge to {travel} and the ghosts not.{typo}",
                 if a < 0.0 { "−μ" } else { "+μ" }
             ),
             focus: Focus::ChoiceOfA,
