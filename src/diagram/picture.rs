@@ -742,6 +742,78 @@ mod tests {
     }
 
     #[test]
+    fn the_students_t_and_the_walk_through_highlights_are_part_of_the_picture() {
+        use crate::diagram::overlay::{Focus, Overlay, StudentRay};
+        let state = ExplorerState::default();
+        let wrong = state.refraction().candidates[1].t;
+        let overlay = Overlay {
+            student: Some(StudentRay {
+                t: wrong * 1.3,
+                label: "your T: wrong side".to_owned(),
+            }),
+            focus: Some(Focus::SquaredConstraints),
+            ..Overlay::default()
+        };
+        let size = Vec2::new(1000.0, 700.0);
+        let diagram = Diagram::with_overlay(&state, size, &overlay);
+        let plain = Diagram::new(&state, size);
+        let student: Vec<_> = arrows(&diagram)
+            .into_iter()
+            .filter(|(_, s)| s.colour == palette::STUDENT)
+            .collect();
+        assert_eq!(student.len(), 1);
+        assert_eq!(student[0].1.dash, Dash::LongDash);
+        let origin = diagram.layout.view.origin;
+        let length = (student[0].0 - origin).length() / diagram.layout.view.scale;
+        assert!(
+            (length - 1.3).abs() < 1e-3,
+            "drawn with its own length: {length}"
+        );
+        assert!(texts(&diagram).contains(&"your T: wrong side"));
+        let halos = |d: &Diagram| {
+            d.shapes
+                .iter()
+                .filter(|s| matches!(s, Shape::Line { stroke, .. } if stroke.colour == palette::HIGHLIGHT))
+                .count()
+        };
+        assert_eq!(halos(&diagram), 4, "T and the three ghosts");
+        assert_eq!(halos(&plain), 0);
+        let nan = Overlay {
+            student: Some(StudentRay {
+                t: glam::DVec3::NAN,
+                label: "your T".to_owned(),
+            }),
+            ..Overlay::default()
+        };
+        assert_eq!(
+            Diagram::with_overlay(&state, size, &nan).shapes.len(),
+            plain.shapes.len()
+        );
+    }
+
+    #[test]
+    fn every_palette_draws_the_same_picture_in_its_own_colours() {
+        use crate::diagram::overlay::Overlay;
+        use crate::diagram::palette::{Palette, Theme};
+        let state = ExplorerState::default();
+        let size = Vec2::new(1000.0, 700.0);
+        let dark = Overlay {
+            palette: Palette::new(Theme::HighContrastDark, true),
+            ..Overlay::default()
+        };
+        let diagram = Diagram::with_overlay(&state, size, &dark);
+        assert!(
+            matches!(&diagram.shapes[0], Shape::Fill { colour, .. } if *colour == dark.palette.background)
+        );
+        assert!(texts(&diagram).contains(&"incoming ray"));
+        let reflected = arrows(&diagram)
+            .into_iter()
+            .find(|(_, s)| s.colour == dark.palette.reflected)
+            .unwrap();
+        assert_eq!(reflected.1.dash, Dash::DashDotDot);
+    }
+
+    #[test]
     fn dragging_handles_moves_w_and_the_indices() {
         let mut state = ExplorerState::default();
         let diagram = Diagram::new(&state, Vec2::new(1000.0, 700.0));
