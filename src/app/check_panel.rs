@@ -6,7 +6,7 @@ use egui::{RichText, TextEdit, Ui};
 use glam::DVec3;
 
 use super::paint::color;
-use super::typed::{format_vector, short};
+use super::typed::{error_label, format_vector, short};
 use crate::check::{self, Match, Verdict};
 use crate::diagram::ExplorerState;
 use crate::diagram::overlay::StudentRay;
@@ -173,9 +173,7 @@ impl CheckPanel {
         });
         match &self.outcome {
             None => {}
-            Some(Err(message)) => {
-                ui.label(RichText::new(format!("⚠ {message}")).color(color(palette::ALARM)));
-            }
+            Some(Err(message)) => error_label(ui, message),
             Some(Ok(checked)) => {
                 let v = &checked.verdict;
                 let (mark, ink) = if v.ok {

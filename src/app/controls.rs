@@ -3,12 +3,10 @@
 
 use std::path::PathBuf;
 
-use egui::{ComboBox, DragValue, RichText, Slider, SliderClamping, Ui};
+use egui::{ComboBox, DragValue, Slider, SliderClamping, Ui};
 
-use super::paint::color;
-use super::typed::{TypedField, format_vector, parse_number, parse_vector, short};
+use super::typed::{TypedField, format_vector, parse_number, parse_vector, short, status};
 use crate::diagram::overlay::PanZoom;
-use crate::diagram::palette;
 use crate::diagram::state::{INDEX_RANGE, MATERIALS, material_of};
 use crate::diagram::{ExplorerState, HandleId, Overlay};
 use crate::kernel::Convention;
@@ -181,14 +179,6 @@ impl Controls {
                     .map_err(|e| e.to_string()),
             );
         }
-        match &self.export_status {
-            Some(Ok(message)) => {
-                ui.label(message);
-            }
-            Some(Err(message)) => {
-                ui.label(RichText::new(format!("⚠ {message}")).color(color(palette::ALARM)));
-            }
-            None => {}
-        }
+        status(ui, self.export_status.as_ref());
     }
 }

@@ -6,8 +6,8 @@ use std::path::PathBuf;
 
 use egui::{RichText, TextEdit, Ui};
 
-use super::paint::color;
-use crate::diagram::{ExplorerState, palette};
+use super::typed::status;
+use crate::diagram::ExplorerState;
 use crate::snippets;
 use crate::state_file;
 
@@ -134,15 +134,7 @@ impl FilesPanel {
                 }
             }
         });
-        match &self.status {
-            Some(Ok(message)) => {
-                ui.label(message);
-            }
-            Some(Err(message)) => {
-                ui.label(RichText::new(format!("⚠ {message}")).color(color(palette::ALARM)));
-            }
-            None => {}
-        }
+        status(ui, self.status.as_ref());
         if let Some(text) = &self.copied {
             ui.label(RichText::new(text).monospace().small());
         }
