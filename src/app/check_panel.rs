@@ -6,7 +6,7 @@ use egui::{RichText, TextEdit, Ui};
 use glam::DVec3;
 
 use super::paint::color;
-use super::typed::{error_label, format_vector, short};
+use super::typed::error_label;
 use crate::check::{self, Match, Verdict};
 use crate::diagram::ExplorerState;
 use crate::diagram::overlay::StudentRay;
@@ -61,12 +61,20 @@ fn vector_field(text: &str, name: &str) -> Result<[f64; 3], String> {
 }
 
 impl CheckPanel {
+    /// Fills the case fields from a case, every digit kept so that checking the current case
+    /// does not move it.
+    fn fill(&mut self, w: [f64; 3], n: [f64; 3], mu_i: f64, mu_t: f64) {
+        let exact = |v: [f64; 3]| format!("{}, {}, {}", v[0], v[1], v[2]);
+        self.w = exact(w);
+        self.n = exact(n);
+        self.mu_i = mu_i.to_string();
+        self.mu_t = mu_t.to_string();
+    }
+
     /// Fills the case fields from the explorer's state.
     fn take_case(&mut self, state: &ExplorerState) {
-        self.w = format_vector(state.w());
-        self.n = format_vector(state.n());
-        self.mu_i = short(state.mu_i());
-        self.mu_t = short(state.mu_t());
+        let r = state_file::request(state);
+        self.fill(r.w, r.n, r.mu_i, r.mu_t);
     }
 
     /// The case and the student's T from the fields: a whole JSON line in "Your T", or the
@@ -101,11 +109,8 @@ impl CheckPanel {
                 verdict,
             })
         });
-        if let Ok(checked) = &outcome {
-            self.w = format_vector(DVec3::from_array(checked.request.w));
-            self.n = format_vector(DVec3::from_array(checked.request.n));
-            self.mu_i = short(checked.request.mu_i);
-            self.mu_t = short(checked.request.mu_t);
+        if let Ok(Checked { request: r, .. }) = &outcome {
+            self.fill(r.w, r.n, r.mu_i, r.mu_t);
         }
         self.outcome = Some(outcome);
     }
@@ -161,10 +166,11 @@ impl CheckPanel {
                 self.take_case(state);
             }
         });
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             let name = ui.label("Your T");
+            let width = (ui.available_width() - 80.0).clamp(120.0, 520.0);
             let field = ui
-                .add(TextEdit::singleline(&mut self.yours).desired_width(360.0))
+                .add(TextEdit::singleline(&mut self.yours).desired_width(width))
                 .labelled_by(name.id);
             let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
             if ui.button("Check").clicked() || entered {

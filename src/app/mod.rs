@@ -156,7 +156,9 @@ impl Explorer {
 
     /// The single-interface view: controls, diagram, the kernel's numbers, the open tool.
     fn show_interface(&mut self, ui: &mut Ui) {
-        let overlay = self.overlay();
+        // First, so that the tool spans the whole width under the three columns.
+        self.tools.panel(ui, &mut self.state);
+        let mut overlay = self.overlay();
         Panel::left("controls")
             .default_size(290.0)
             .resizable(true)
@@ -173,9 +175,6 @@ impl Explorer {
                     readouts::show(ui, self.state.refraction());
                 });
             });
-        self.tools.panel(ui, &mut self.state);
-        // Again: the tool may have opened another case.
-        let mut overlay = self.overlay();
         egui::CentralPanel::no_frame()
             .show(ui, |ui| canvas::show(ui, &mut self.state, &mut overlay));
         self.presentation.pan_zoom = overlay.pan_zoom;

@@ -64,16 +64,17 @@ impl Tools {
         let Some(tool) = self.open else {
             return;
         };
-        Panel::bottom("tool")
-            .resizable(true)
-            .default_size(150.0)
-            .show(ui, |ui| {
-                ScrollArea::vertical().show(ui, |ui| match tool {
+        // Sized to what the tool shows (a verdict, a step), up to 40 % of the window.
+        let limit = ui.ctx().content_rect().height() * 0.4;
+        Panel::bottom("tool").resizable(false).show(ui, |ui| {
+            ScrollArea::vertical()
+                .max_height(limit)
+                .show(ui, |ui| match tool {
                     Tool::Check => self.check.show(ui, state),
                     Tool::WalkThrough => self.walk.show(ui, state),
                     Tool::Files => self.files.show(ui, state),
                 });
-            });
+        });
     }
 
     /// What the walk-through highlights, while it is open.
