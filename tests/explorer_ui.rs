@@ -429,7 +429,11 @@ fn check_my_t_names_every_sign_and_convention_mix_up_and_draws_the_students_t() 
         ),
     ];
     check_t(&mut h, &vector_text(t));
-    assert_eq!(h.state().state(), &ExplorerState::default(), "the case kept exactly");
+    assert_eq!(
+        h.state().state(),
+        &ExplorerState::default(),
+        "the case kept exactly"
+    );
     assert_eq!(h.state().history().undo_steps(), 0);
     for (yours, headline, explanation) in cases {
         check_t(&mut h, &yours);

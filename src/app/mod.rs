@@ -159,8 +159,12 @@ impl Explorer {
         // First, so that the tool spans the whole width under the three columns.
         self.tools.panel(ui, &mut self.state);
         let mut overlay = self.overlay();
+        // Zoomed for presentation the window is narrow in points: the diagram keeps at least
+        // half of it.
+        let width = ui.available_width();
         Panel::left("controls")
             .default_size(290.0)
+            .max_size(width * 0.25)
             .resizable(true)
             .show(ui, |ui| {
                 ScrollArea::vertical().show(ui, |ui| {
@@ -169,9 +173,11 @@ impl Explorer {
             });
         Panel::right("readouts")
             .default_size(440.0)
+            .max_size(width * 0.37)
             .resizable(true)
             .show(ui, |ui| {
-                ScrollArea::vertical().show(ui, |ui| {
+                // Both ways: narrowed for presentation, the table scrolls instead of clipping.
+                ScrollArea::both().show(ui, |ui| {
                     readouts::show(ui, self.state.refraction());
                 });
             });

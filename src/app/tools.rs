@@ -33,6 +33,15 @@ impl Tool {
             Self::Files => "💾 Save, open, share",
         }
     }
+
+    /// The panel's first height in points: what the tool shows without scrolling.
+    fn height(self) -> f32 {
+        match self {
+            Self::Check => 170.0,
+            Self::WalkThrough => 140.0,
+            Self::Files => 150.0,
+        }
+    }
 }
 
 /// The tools and which one is open.
@@ -64,17 +73,21 @@ impl Tools {
         let Some(tool) = self.open else {
             return;
         };
-        // Sized to what the tool shows (a verdict, a step), up to 40 % of the window.
-        let limit = ui.ctx().content_rect().height() * 0.4;
-        Panel::bottom("tool").resizable(false).show(ui, |ui| {
-            ScrollArea::vertical()
-                .max_height(limit)
-                .show(ui, |ui| match tool {
+        // A panel only grows to what its scroll area was given last frame: each tool asks for
+        // the height its verdict or step needs (at most 45 % of the window), and can be
+        // dragged taller.
+        let limit = ui.ctx().content_rect().height() * 0.45;
+        let height = tool.height().min(limit);
+        Panel::bottom(tool.label())
+            .resizable(true)
+            .size_range(height..=limit.max(height))
+            .show(ui, |ui| {
+                ScrollArea::vertical().show(ui, |ui| match tool {
                     Tool::Check => self.check.show(ui, state),
                     Tool::WalkThrough => self.walk.show(ui, state),
                     Tool::Files => self.files.show(ui, state),
                 });
-        });
+            });
     }
 
     /// What the walk-through highlights, while it is open.
