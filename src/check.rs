@@ -299,17 +299,26 @@ struct Answer<'a> {
     t: Option<[f64; 3]>,
 }
 
-/// Answers one line of the `check` command: the `solve` fields plus `t_yours`.
+/// Reads one line of the `check` command: the `solve` fields plus `t_yours`.
 ///
 /// # Errors
-/// Why the line cannot be judged (malformed JSON, a missing or ill-typed field, bad input).
-pub fn answer(line: &str) -> Result<(String, Verdict), String> {
+/// Malformed JSON, or a missing or ill-typed field; the message names it.
+pub fn parse_line(line: &str) -> Result<(Request, [f64; 3]), String> {
     let value: Value = serde_json::from_str(line).map_err(|e| crate::solve::json_error(&e))?;
     let request = Request::from_value(&value)?;
     let yours = value
         .get("t_yours")
         .ok_or_else(|| "missing field `t_yours` (the T your code produced)".to_owned())
         .and_then(vector_from_json)?;
+    Ok((request, yours))
+}
+
+/// Answers one line of the `check` command: the `solve` fields plus `t_yours`.
+///
+/// # Errors
+/// Why the line cannot be judged (malformed JSON, a missing or ill-typed field, bad input).
+pub fn answer(line: &str) -> Result<(String, Verdict), String> {
+    let (request, yours) = parse_line(line)?;
     let verdict = check(&request, yours)?;
     let text = serde_json::to_string(&Answer {
         ok: verdict.ok,

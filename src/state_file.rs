@@ -1,13 +1,13 @@
 //! The explorer's state as a JSON file, in the field names of the `solve` command: `w`, `n`,
 //! `mu_i`, `mu_t` and optional `convention` (`precision` is accepted and ignored: the explorer
-//! works in f64).
+//! works in f64). The same line is the "share" string that reproduces a state elsewhere.
 
 use std::path::Path;
 
 use glam::DVec3;
 
 use crate::diagram::ExplorerState;
-use crate::solve::Request;
+use crate::solve::{Precision, Request};
 
 /// Reads a state from JSON text.
 ///
@@ -36,17 +36,34 @@ pub fn load(path: &Path) -> Result<ExplorerState, String> {
     parse(&text).map_err(|e| format!("state file {}: {e}", path.display()))
 }
 
-/// The state as one line of JSON that [`parse`] (and `solve`) read back.
+/// The state as a `solve` request (in f64, the explorer's precision).
+#[must_use]
+pub fn request(state: &ExplorerState) -> Request {
+    Request {
+        w: state.w().to_array(),
+        n: state.n().to_array(),
+        mu_i: state.mu_i(),
+        mu_t: state.mu_t(),
+        convention: state.convention(),
+        precision: Precision::F64,
+    }
+}
+
+/// The state as one line of JSON that [`parse`] (and `solve`) read back bit for bit: numbers
+/// are written in their shortest form that reads back to the same bits.
 #[must_use]
 pub fn to_json(state: &ExplorerState) -> String {
-    serde_json::json!({
-        "w": state.w().to_array(),
-        "n": state.n().to_array(),
-        "mu_i": state.mu_i(),
-        "mu_t": state.mu_t(),
-        "convention": state.convention().name(),
-    })
-    .to_string()
+    request(state).to_json_line()
+}
+
+/// Writes the state to `path` as one line of JSON, atomically: a failed write leaves no
+/// half-written file.
+///
+/// # Errors
+/// The file cannot be written; the message names it.
+pub fn save(state: &ExplorerState, path: &Path) -> Result<(), String> {
+    let text = to_json(state) + "\n";
+    crate::atomic::write_atomically(path, text.as_bytes()).map_err(|e| e.to_string())
 }
 
 #[cfg(test)]
@@ -64,5 +81,27 @@ mod tests {
         assert!(err.starts_with("mu_i is -1"), "{err}");
         let err = load(Path::new("/nonexistent/state.json")).unwrap_err();
         assert!(err.starts_with("cannot read state file /nonexistent/state.json"));
+        let err = save(&state, Path::new("/nonexistent/state.json")).unwrap_err();
+        assert!(err.contains("/nonexistent/state.json"), "{err}");
+    }
+
+    #[test]
+    fn a_saved_file_opens_to_the_same_bits() {
+        let w = glam::DVec3::new(0.1, -1.0 / 3.0, 1e-300);
+        let state = ExplorerState::new(
+            w,
+            glam::DVec3::Y,
+            1.000_293,
+            std::f64::consts::E,
+            Convention::TowardOrigin,
+        )
+        .unwrap();
+        let path =
+            std::env::temp_dir().join(format!("state-file-test-{}.json", std::process::id()));
+        save(&state, &path).unwrap();
+        let back = load(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(back, state);
+        assert_eq!(back.w().z.to_bits(), state.w().z.to_bits());
     }
 }

@@ -8,7 +8,7 @@ use egui::{
 use glam::Vec2;
 
 use super::paint::{color, paint};
-use crate::diagram::{Diagram, ExplorerState, HandleId, palette};
+use crate::diagram::{Diagram, ExplorerState, HandleId, Overlay};
 
 /// Degrees per arrow-key press (Shift: a tenth of it).
 const ANGLE_STEP: f64 = 1.0;
@@ -65,14 +65,44 @@ fn keyboard(ui: &Ui, state: &mut ExplorerState, handle: HandleId) {
     }
 }
 
-/// Shows the diagram filling the available space, editing `state` by drag and keyboard.
-pub fn show(ui: &mut Ui, state: &mut ExplorerState) {
-    let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::hover());
+/// Pans by dragging the background and zooms by scrolling (or pinching) over it, about the
+/// pointer; a double click puts the view back.
+fn pan_and_zoom(ui: &Ui, response: &egui::Response, overlay: &mut Overlay) {
+    let view = &mut overlay.pan_zoom;
+    if response.double_clicked() {
+        *view = Default::default();
+        return;
+    }
+    if response.dragged() {
+        let delta = response.drag_delta();
+        view.pan += Vec2::new(delta.x, delta.y);
+    }
+    if let Some(pointer) = response.hover_pos() {
+        let (scroll, pinch) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
+        let factor = pinch * (scroll / 400.0).exp();
+        if factor != 1.0 {
+            let fitted = crate::diagram::Layout::new(Vec2::new(
+                response.rect.width(),
+                response.rect.height(),
+            ))
+            .view
+            .origin;
+            let at = pointer - response.rect.min;
+            view.zoom_about(factor, Vec2::new(at.x, at.y) - fitted);
+        }
+    }
+}
+
+/// Shows the diagram of `state` with `overlay` filling the available space, editing `state` by
+/// drag and keyboard and the overlay's view by pan and zoom.
+pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
+    let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click_and_drag());
+    pan_and_zoom(ui, &response, overlay);
     let size = response.rect.size();
     let to_screen = RectTransform::from_to(Rect::from_min_size(Pos2::ZERO, size), response.rect);
     let from_screen = to_screen.inverse();
     let canvas_size = Vec2::new(size.x, size.y);
-    let before = Diagram::new(state, canvas_size);
+    let before = Diagram::with_overlay(state, canvas_size, overlay);
     let mut focused = None;
     for handle in &before.handles {
         let area = Diagram::grab_area(handle);
@@ -103,12 +133,13 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState) {
             focused = Some(handle.id);
         }
     }
-    let after = Diagram::new(state, canvas_size);
+    let after = Diagram::with_overlay(state, canvas_size, overlay);
     paint(&painter, &to_screen, &after.primitives());
     response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &after.summary));
     if let Some(handle) = after.handles.iter().find(|h| Some(h.id) == focused) {
         let center = to_screen.transform_pos(Pos2::new(handle.center.x, handle.center.y));
-        let ring = Stroke::new(2.0, color(palette::INK));
+        let ink = color(overlay.palette.ink);
+        let ring = Stroke::new(2.0, ink);
         painter.circle_stroke(center, handle.radius * 1.7, ring);
         let hint = "arrow keys: turn or move by 1° or 0.01 (Shift: a tenth), +/− index, Tab: next";
         painter.text(
@@ -116,7 +147,7 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState) {
             egui::Align2::LEFT_BOTTOM,
             hint,
             egui::FontId::proportional(12.0),
-            color(palette::INK),
+            ink,
         );
     }
 }

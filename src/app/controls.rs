@@ -3,13 +3,12 @@
 
 use std::path::PathBuf;
 
-use egui::{ComboBox, DragValue, RichText, Slider, SliderClamping, Ui};
+use egui::{ComboBox, DragValue, Slider, SliderClamping, Ui};
 
-use super::paint::color;
-use super::typed::{TypedField, format_vector, parse_number, parse_vector, short};
-use crate::diagram::palette;
+use super::typed::{TypedField, format_vector, parse_number, parse_vector, short, status};
+use crate::diagram::overlay::PanZoom;
 use crate::diagram::state::{INDEX_RANGE, MATERIALS, material_of};
-use crate::diagram::{ExplorerState, HandleId};
+use crate::diagram::{ExplorerState, HandleId, Overlay};
 use crate::kernel::Convention;
 use crate::render;
 
@@ -91,8 +90,8 @@ fn index_controls(
 }
 
 impl Controls {
-    /// Shows the controls, editing `state`.
-    pub fn show(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
+    /// Shows the controls, editing `state`; the PNG export draws `overlay` too.
+    pub fn show(&mut self, ui: &mut Ui, state: &mut ExplorerState, overlay: &Overlay) {
         ui.heading("Convention");
         let mut convention = state.convention();
         ui.radio_value(
@@ -146,10 +145,12 @@ impl Controls {
             self.n.settle(outcome);
         }
         ui.separator();
-        self.export(ui, state);
+        self.export(ui, state, overlay);
     }
 
-    fn export(&mut self, ui: &mut Ui, state: &ExplorerState) {
+    /// The PNG export: what the screen shows (palette, student's T, highlights) in the fitted
+    /// view, since the screen's pan is in its own pixels.
+    fn export(&mut self, ui: &mut Ui, state: &ExplorerState, overlay: &Overlay) {
         ui.heading("Export PNG");
         let (low, high) = render::SIZE_LIMITS;
         ui.horizontal(|ui| {
@@ -168,21 +169,16 @@ impl Controls {
         });
         if ui.button("Export PNG").clicked() {
             let path = PathBuf::from(self.export_path.trim());
-            let (width, height) = self.export_size;
+            let overlay = Overlay {
+                pan_zoom: PanZoom::default(),
+                ..overlay.clone()
+            };
             self.export_status = Some(
-                render::export(state, width, height, &path)
+                render::export(state, &overlay, self.export_size, &path)
                     .map(|()| format!("wrote {}", path.display()))
                     .map_err(|e| e.to_string()),
             );
         }
-        match &self.export_status {
-            Some(Ok(message)) => {
-                ui.label(message);
-            }
-            Some(Err(message)) => {
-                ui.label(RichText::new(format!("⚠ {message}")).color(color(palette::ALARM)));
-            }
-            None => {}
-        }
+        status(ui, self.export_status.as_ref());
     }
 }

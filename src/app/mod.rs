@@ -1,20 +1,32 @@
 //! The explorer window (eframe/egui): controls on the left, the interactive diagram in the
 //! middle, the kernel's numbers on the right. The state lives in [`ExplorerState`]; drawing
 //! comes from [`crate::diagram`]; nothing here computes refraction.
+//!
+//! The classroom tools each live in their own module: [`history`] (undo/redo), [`presentation`],
+//! and under the diagram ([`tools`]) check my T, the walk-through and save/open/share.
 
 mod accuracy;
 mod canvas;
+mod check_panel;
 mod controls;
+mod files_panel;
+pub mod history;
 mod paint;
+pub mod presentation;
 mod readouts;
+mod tools;
 mod typed;
+pub mod walkthrough;
 
 use egui::{Panel, ScrollArea, Ui};
 
-use crate::diagram::ExplorerState;
+use crate::diagram::{ExplorerState, Overlay};
 use crate::state_file;
 use accuracy::AccuracyView;
 use controls::Controls;
+use history::{History, Snapshot};
+use presentation::Presentation;
+use tools::Tools;
 
 /// The window title.
 pub const TITLE: &str = "Refraction explorer";
@@ -46,13 +58,17 @@ impl View {
     }
 }
 
-/// The whole explorer: the state being explored, the view shown and each view's own memory.
+/// The whole explorer: the state being explored, the view shown, each view's own memory,
+/// the undo history, the presentation settings and the classroom tools.
 #[derive(Debug)]
 pub struct Explorer {
     state: ExplorerState,
     view: View,
     controls: Controls,
     accuracy: AccuracyView,
+    history: History<Snapshot>,
+    presentation: Presentation,
+    tools: Tools,
 }
 
 impl Explorer {
@@ -60,10 +76,45 @@ impl Explorer {
     #[must_use]
     pub fn new(state: ExplorerState) -> Self {
         Self {
+            history: History::new(Snapshot {
+                interface: state.clone(),
+            }),
             state,
             view: View::default(),
             controls: Controls::default(),
             accuracy: AccuracyView::default(),
+            presentation: Presentation::default(),
+            tools: Tools::default(),
+        }
+    }
+
+    /// What undo restores: everything the user edits.
+    fn snapshot(&self) -> Snapshot {
+        Snapshot {
+            interface: self.state.clone(),
+        }
+    }
+
+    /// The undo history.
+    #[must_use]
+    pub fn history(&self) -> &History<Snapshot> {
+        &self.history
+    }
+
+    /// The presentation settings.
+    #[must_use]
+    pub fn presentation(&self) -> &Presentation {
+        &self.presentation
+    }
+
+    /// What is drawn over the diagram now: palette, view, the student's T, the highlights.
+    #[must_use]
+    pub fn overlay(&self) -> Overlay {
+        Overlay {
+            palette: self.presentation.palette(),
+            pan_zoom: self.presentation.pan_zoom,
+            student: self.tools.student(&self.state),
+            focus: self.tools.focus(&self.state),
         }
     }
 
@@ -79,13 +130,26 @@ impl Explorer {
         self.view
     }
 
-    /// Shows the explorer in `ui` (the whole window): the bar of views, then the view.
+    /// Shows the explorer in `ui` (the whole window): the bar of views and tools, then the
+    /// view; records a step of history once the user lets go.
     pub fn show(&mut self, ui: &mut Ui) {
+        self.presentation.apply(ui.ctx());
+        self.tools.walk.animate(ui.ctx(), &mut self.state);
         Panel::top("views").show(ui, |ui| {
-            ui.horizontal(|ui| {
+            ui.horizontal_wrapped(|ui| {
                 for view in View::ALL {
                     ui.selectable_value(&mut self.view, view, view.label());
                 }
+                ui.separator();
+                if let Some(travel) = history::controls(ui, &self.history)
+                    && let Some(snapshot) = self.history.travel(travel)
+                {
+                    self.state = snapshot.interface;
+                }
+                ui.separator();
+                self.presentation.controls(ui);
+                ui.separator();
+                self.tools.bar(ui);
             });
         });
         match self.view {
@@ -96,27 +160,42 @@ impl Explorer {
                 });
             }
         }
+        let settled = !ui.input(|i| i.pointer.any_down()) && !self.tools.walk.animating();
+        if settled {
+            self.history.record(&self.snapshot());
+        }
     }
 
-    /// The single-interface view: controls, diagram, the kernel's numbers.
+    /// The single-interface view: controls, diagram, the kernel's numbers, the open tool.
     fn show_interface(&mut self, ui: &mut Ui) {
+        // First, so that the tool spans the whole width under the three columns.
+        self.tools.panel(ui, &mut self.state);
+        let mut overlay = self.overlay();
+        // Zoomed for presentation the window is narrow in points: the diagram keeps at least
+        // half of it.
+        let width = ui.available_width();
         Panel::left("controls")
             .default_size(290.0)
+            .max_size(width * 0.25)
             .resizable(true)
             .show(ui, |ui| {
                 ScrollArea::vertical().show(ui, |ui| {
-                    self.controls.show(ui, &mut self.state);
+                    self.controls.show(ui, &mut self.state, &overlay);
                 });
             });
         Panel::right("readouts")
             .default_size(440.0)
+            .max_size(width * 0.37)
             .resizable(true)
             .show(ui, |ui| {
-                ScrollArea::vertical().show(ui, |ui| {
+                // Both ways: narrowed for presentation, the table scrolls instead of clipping.
+                ScrollArea::both().show(ui, |ui| {
                     readouts::show(ui, self.state.refraction());
                 });
             });
-        egui::CentralPanel::no_frame().show(ui, |ui| canvas::show(ui, &mut self.state));
+        egui::CentralPanel::no_frame()
+            .show(ui, |ui| canvas::show(ui, &mut self.state, &mut overlay));
+        self.presentation.pan_zoom = overlay.pan_zoom;
     }
 }
 

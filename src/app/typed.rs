@@ -44,7 +44,7 @@ impl TypedField {
             }
         });
         if let Some(error) = &self.error {
-            ui.label(RichText::new(format!("⚠ {error}")).color(color(palette::ALARM)));
+            error_label(ui, error);
         }
         submitted
     }
@@ -52,6 +52,22 @@ impl TypedField {
     /// Records the outcome of applying the text: an error is shown until the next success.
     pub fn settle(&mut self, outcome: Result<(), String>) {
         self.error = outcome.err();
+    }
+}
+
+/// Shows why something typed or asked for was refused, in the alarm colour.
+pub fn error_label(ui: &mut Ui, message: &str) {
+    ui.label(RichText::new(format!("⚠ {message}")).color(color(palette::ALARM)));
+}
+
+/// Shows the outcome of the last action (a file written, a string copied), if any.
+pub fn status(ui: &mut Ui, outcome: Option<&Result<String, String>>) {
+    match outcome {
+        Some(Ok(message)) => {
+            ui.label(message);
+        }
+        Some(Err(message)) => error_label(ui, message),
+        None => {}
     }
 }
 

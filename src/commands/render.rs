@@ -3,7 +3,7 @@
 use std::path::Path;
 use std::process::ExitCode;
 
-use refraction_explorer::diagram::ExplorerState;
+use refraction_explorer::diagram::{ExplorerState, Overlay};
 use refraction_explorer::{app, render, state_file};
 
 use super::fail;
@@ -14,9 +14,9 @@ fn initial_state(path: Option<&Path>) -> Result<ExplorerState, String> {
 
 /// Draws the state in `state` (or the default) into the PNG `out`.
 pub fn run(out: &Path, width: u32, height: u32, state: Option<&Path>) -> ExitCode {
-    match initial_state(state)
-        .and_then(|s| render::export(&s, width, height, out).map_err(|e| e.to_string()))
-    {
+    match initial_state(state).and_then(|s| {
+        render::export(&s, &Overlay::default(), (width, height), out).map_err(|e| e.to_string())
+    }) {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => fail("render", &message),
     }

@@ -275,7 +275,7 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
             corner,
             (Align::Start, Align::Start),
             m.text,
-            palette::text_shade(colour),
+            palette::Palette::STANDARD.text_shade(colour),
         ));
     }
     shapes.push(text(

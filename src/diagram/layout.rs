@@ -5,6 +5,7 @@
 use glam::{DVec2, Vec2};
 
 use super::geometry::Rect;
+use super::overlay::PanZoom;
 use super::state::INDEX_RANGE;
 
 /// The world↔canvas map of the drawing area.
@@ -121,6 +122,15 @@ impl Layout {
             view,
             font,
         }
+    }
+
+    /// The same layout with the view moved by `pan_zoom` (the hit point shifted, the world
+    /// scaled about it).
+    #[must_use]
+    pub fn panned(mut self, pan_zoom: PanZoom) -> Self {
+        self.view.origin += pan_zoom.pan;
+        self.view.scale *= pan_zoom.zoom;
+        self
     }
 
     /// One stroke-width unit in pixels.

@@ -5,24 +5,30 @@
 //!
 //! - [`state`]: the state and the edits a user makes;
 //! - [`layout`]: where things go on a canvas of a given size;
+//! - [`overlay`]: what is drawn over the state: palette, pan and zoom, a student's T, the
+//!   walk-through's highlights;
 //! - [`picture`]: the interface diagram itself;
 //! - [`shapes`], [`geometry`], [`palette`], [`font`]: its vocabulary;
 //! - [`table`], [`equations`], [`quadratic`]: the numbers shown beside it;
-//! - [`accuracy_plot`]: the `bench` report as error against time.
+//! - [`accuracy_plot`]: the `bench` report as error against time;
+//! - [`walkthrough`]: the source's derivation step by step with the live numbers.
 
 pub mod accuracy_plot;
 pub mod equations;
 pub mod font;
 pub mod geometry;
 pub mod layout;
+pub mod overlay;
 pub mod palette;
 pub mod picture;
 pub mod quadratic;
 pub mod shapes;
 pub mod state;
 pub mod table;
+pub mod walkthrough;
 
 pub use layout::Layout;
+pub use overlay::{Focus, Overlay};
 pub use picture::{Diagram, Handle};
 pub use shapes::{Align, Primitive};
 pub use state::{ExplorerState, HandleId};

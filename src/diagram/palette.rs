@@ -1,7 +1,13 @@
 //! The explorer's colours (Okabe–Ito hues, which stay distinct for the common colour-vision
 //! deficiencies) and how numbers are written in labels.
+//!
+//! The constants are the standard light palette, which the egui panels use too. [`Palette`]
+//! gathers them so that the diagram can also be drawn in the high-contrast light and dark
+//! themes of presentation mode, or with the strictly colour-blind-safe choice, in which every
+//! ray also has its own dash pattern and label.
 
 use super::geometry::Colour;
+use super::shapes::Dash;
 
 /// The canvas background.
 pub const BACKGROUND: Colour = Colour::hex(0xFFFFFF);
@@ -36,10 +42,204 @@ pub const DENSE_MEDIUM: Colour = Colour::hex(0x8DB6DC);
 /// Behind labels.
 pub const LABEL_BACKGROUND: Colour = Colour::hex(0xFFFFFF).with_alpha(210);
 
-/// A darker shade of an arrow colour, for text in that colour on a light background.
-#[must_use]
-pub fn text_shade(colour: Colour) -> Colour {
-    colour.lerp(Colour::hex(0x000000), 0.35)
+/// The student's T drawn beside the right one.
+pub const STUDENT: Colour = Colour::hex(0x000000);
+/// The halo behind what a walk-through step is about.
+pub const HIGHLIGHT: Colour = Colour::hex(0xF0E442).with_alpha(170);
+
+/// The diagram's themes: the standard look and the two high-contrast ones for a projector.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Theme {
+    /// Soft media shading on white.
+    #[default]
+    Standard,
+    /// Black on white, darker hues, stronger shading.
+    HighContrastLight,
+    /// White on black, lighter hues.
+    HighContrastDark,
+}
+
+impl Theme {
+    /// Every theme, in the order of the menu.
+    pub const ALL: [Self; 3] = [
+        Self::Standard,
+        Self::HighContrastLight,
+        Self::HighContrastDark,
+    ];
+
+    /// The theme's name in the menu.
+    #[must_use]
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Standard => "Standard",
+            Self::HighContrastLight => "High contrast light",
+            Self::HighContrastDark => "High contrast dark",
+        }
+    }
+
+    /// Whether the background is dark.
+    #[must_use]
+    pub fn is_dark(self) -> bool {
+        self == Self::HighContrastDark
+    }
+}
+
+/// Every colour the diagram uses, and the dash patterns of the rays that have no other.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Palette {
+    /// The canvas background.
+    pub background: Colour,
+    /// Text and the surface line.
+    pub ink: Colour,
+    /// Reference lines.
+    pub guide: Colour,
+    /// The incoming ray.
+    pub incoming: Colour,
+    /// W.
+    pub w: Colour,
+    /// N.
+    pub n: Colour,
+    /// T.
+    pub t: Colour,
+    /// The reflected ray.
+    pub reflected: Colour,
+    /// The rejected candidates.
+    pub rejected: Colour,
+    /// The outward-normal bug's T.
+    pub warning: Colour,
+    /// The critical-angle line.
+    pub critical: Colour,
+    /// The total-internal-reflection banner.
+    pub alarm: Colour,
+    /// Text on the alarm banner.
+    pub on_alarm: Colour,
+    /// The ordinary banner.
+    pub calm: Colour,
+    /// A medium with index 1.
+    pub thin_medium: Colour,
+    /// A medium at the top of the index scale.
+    pub dense_medium: Colour,
+    /// Behind labels.
+    pub label_background: Colour,
+    /// The student's T.
+    pub student: Colour,
+    /// The halo of a walk-through step.
+    pub highlight: Colour,
+    /// What text in a ray's colour is shaded toward, for legibility on the background.
+    pub text_toward: Colour,
+    /// The incoming ray's dash.
+    pub incoming_dash: Dash,
+    /// The reflected ray's dash.
+    pub reflected_dash: Dash,
+    /// Whether the incoming ray is labelled (the colour-blind-safe choice labels every ray).
+    pub label_incoming: bool,
+}
+
+impl Palette {
+    /// The standard light palette: the module's constants.
+    pub const STANDARD: Self = Self {
+        background: BACKGROUND,
+        ink: INK,
+        guide: GUIDE,
+        incoming: INCOMING,
+        w: W,
+        n: N,
+        t: T,
+        reflected: REFLECTED,
+        rejected: REJECTED,
+        warning: WARNING,
+        critical: CRITICAL,
+        alarm: ALARM,
+        on_alarm: BACKGROUND,
+        calm: CALM,
+        thin_medium: THIN_MEDIUM,
+        dense_medium: DENSE_MEDIUM,
+        label_background: LABEL_BACKGROUND,
+        student: STUDENT,
+        highlight: HIGHLIGHT,
+        text_toward: Colour::hex(0x000000),
+        incoming_dash: Dash::Solid,
+        reflected_dash: Dash::Solid,
+        label_incoming: false,
+    };
+
+    /// The palette of `theme`; `colour_blind_safe` keeps to the eight Okabe–Ito colours and
+    /// gives the incoming and reflected rays their own dashes and labels, so that no two rays
+    /// differ by colour alone.
+    #[must_use]
+    pub fn new(theme: Theme, colour_blind_safe: bool) -> Self {
+        let base = match theme {
+            Theme::Standard => Self::STANDARD,
+            Theme::HighContrastLight => Self {
+                ink: Colour::hex(0x000000),
+                guide: Colour::hex(0x4A4A4A),
+                incoming: Colour::hex(0x303030),
+                w: Colour::hex(0xB36B00),
+                n: Colour::hex(0x00704F),
+                t: Colour::hex(0x004F8C),
+                reflected: Colour::hex(0x9C3F75),
+                rejected: Colour::hex(0x4A4A4A),
+                warning: Colour::hex(0xB34700),
+                critical: Colour::hex(0x5A1F74),
+                alarm: Colour::hex(0x9E0016),
+                calm: Colour::hex(0xE4E4E4),
+                thin_medium: Colour::hex(0xFFFFFF),
+                dense_medium: Colour::hex(0x8CB8E2),
+                label_background: Colour::hex(0xFFFFFF).with_alpha(235),
+                ..Self::STANDARD
+            },
+            Theme::HighContrastDark => Self {
+                background: Colour::hex(0x000000),
+                ink: Colour::hex(0xFFFFFF),
+                guide: Colour::hex(0xA8A8A8),
+                incoming: Colour::hex(0xD0D0D0),
+                w: Colour::hex(0xFFB000),
+                n: Colour::hex(0x2BD9A4),
+                t: Colour::hex(0x56B4E9),
+                reflected: Colour::hex(0xE495C4),
+                rejected: Colour::hex(0xA0A0A0),
+                warning: Colour::hex(0xFF7A2F),
+                critical: Colour::hex(0xC9A0DC),
+                alarm: Colour::hex(0xC0002A),
+                on_alarm: Colour::hex(0xFFFFFF),
+                calm: Colour::hex(0x1C1C1C),
+                thin_medium: Colour::hex(0x0A0A0A),
+                dense_medium: Colour::hex(0x1E4E7E),
+                label_background: Colour::hex(0x000000).with_alpha(215),
+                student: Colour::hex(0xFFFFFF),
+                highlight: Colour::hex(0xF0E442).with_alpha(120),
+                text_toward: Colour::hex(0xFFFFFF),
+                ..Self::STANDARD
+            },
+        };
+        if !colour_blind_safe {
+            return base;
+        }
+        // Okabe–Ito: orange, bluish green, blue (sky blue on black), reddish purple,
+        // vermillion, yellow; black or white for everything without a hue.
+        let t = if theme.is_dark() { 0x56B4E9 } else { 0x0072B2 };
+        Self {
+            w: Colour::hex(0xE69F00),
+            n: Colour::hex(0x009E73),
+            t: Colour::hex(t),
+            reflected: Colour::hex(0xCC79A7),
+            warning: Colour::hex(0xD55E00),
+            critical: base.ink,
+            alarm: Colour::hex(0xD55E00),
+            highlight: Colour::hex(0xF0E442).with_alpha(150),
+            incoming_dash: Dash::LongDashDot,
+            reflected_dash: Dash::DashDotDot,
+            label_incoming: true,
+            ..base
+        }
+    }
+
+    /// A shade of an arrow colour for text in that colour: darker on a light background,
+    /// lighter on a dark one.
+    #[must_use]
+    pub fn text_shade(&self, colour: Colour) -> Colour {
+        colour.lerp(self.text_toward, 0.35)
+    }
 }
 
 /// `x` with `decimals` digits, a true minus sign, and no "−0".
@@ -71,6 +271,33 @@ pub fn vector(v: glam::DVec3, decimals: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_palette_keeps_rays_apart_and_text_readable() {
+        for theme in Theme::ALL {
+            for safe in [false, true] {
+                let p = Palette::new(theme, safe);
+                let rays = [
+                    p.incoming,
+                    p.w,
+                    p.n,
+                    p.t,
+                    p.reflected,
+                    p.rejected,
+                    p.student,
+                ];
+                for (i, a) in rays.iter().enumerate() {
+                    assert!(rays[i + 1..].iter().all(|b| b != a), "{theme:?} {safe}");
+                }
+                assert_ne!(p.ink, p.background);
+                if safe {
+                    assert_ne!(p.incoming_dash, p.reflected_dash);
+                    assert!(p.label_incoming);
+                }
+            }
+        }
+        assert_eq!(Palette::new(Theme::Standard, false), Palette::STANDARD);
+    }
 
     #[test]
     fn numbers_use_a_true_minus_and_no_negative_zero() {

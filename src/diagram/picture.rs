@@ -6,7 +6,8 @@ use glam::{DVec2, DVec3, Vec2};
 use super::font::Typeface;
 use super::geometry::{Colour, Rect, arc, clip_rect_to_half_plane, clip_segment};
 use super::layout::Layout;
-use super::palette::{self, number, text_shade};
+use super::overlay::{Overlay, Part};
+use super::palette::{Palette, number};
 use super::shapes::{Align, Dash, Label, Primitive, Shape, Stroke, lower_all};
 use super::state::{ExplorerState, HandleId, INDEX_RANGE, MATERIALS, material_of};
 use crate::kernel::{Convention, Refraction, Rejection, seed};
@@ -56,15 +57,19 @@ fn medium_text(symbol: &str, index: f64) -> String {
 }
 
 /// The shade of a medium: lighter for lower index.
-fn medium_colour(index: f64) -> Colour {
+fn medium_colour(palette: &Palette, index: f64) -> Colour {
     let (low, high) = INDEX_RANGE;
-    palette::THIN_MEDIUM.lerp(palette::DENSE_MEDIUM, ((index - low) / (high - low)) as f32)
+    palette
+        .thin_medium
+        .lerp(palette.dense_medium, ((index - low) / (high - low)) as f32)
 }
 
 /// Builds the shapes, with the world→canvas map at hand.
 struct Builder<'a> {
     layout: &'a Layout,
     state: &'a ExplorerState,
+    overlay: &'a Overlay,
+    palette: Palette,
     face: Option<Typeface>,
     shapes: Vec<Shape>,
     /// Labels wait here, with their rank, to be placed last and on top.
@@ -97,7 +102,7 @@ impl Builder<'_> {
     }
 
     fn label(&mut self, text: impl Into<String>, at: Vec2, (h, v): (Align, Align), size: f32) {
-        self.label_coloured(text, at, (h, v), size, palette::INK);
+        self.label_coloured(text, at, (h, v), size, self.palette.ink);
     }
 
     fn label_coloured(
@@ -115,7 +120,7 @@ impl Builder<'_> {
             v,
             size: size * self.font(),
             colour,
-            background: Some(palette::LABEL_BACKGROUND),
+            background: Some(self.palette.label_background),
         };
         self.labels.push((self.rank, label));
     }
@@ -172,10 +177,47 @@ impl Builder<'_> {
         if !text.is_empty() {
             let away = self.layout.view.direction(d);
             let at = tip + away * (self.font() * 0.9);
-            let colour = text_shade(stroke.colour);
+            let colour = self.palette.text_shade(stroke.colour);
             let anchor = (Align::away(away.x), Align::away(away.y));
             self.label_coloured(text, at, anchor, size, colour);
         }
+    }
+
+    /// A wide translucent stroke along `points` when the walk-through highlights `part`, drawn
+    /// before the part so that the part stays sharp on top of it.
+    fn halo(&mut self, part: Part, points: Vec<Vec2>) {
+        if self.overlay.highlights(part) {
+            let stroke = self.stroke(13.0, self.palette.highlight, Dash::Solid);
+            self.shapes.push(Shape::Line { points, stroke });
+        }
+    }
+
+    /// [`Builder::ray`] for a part a walk-through step may highlight.
+    fn part_ray(&mut self, part: Part, d: DVec2, length: f64, stroke: Stroke, text: &str) {
+        let size = match part {
+            Part::T => 1.1,
+            Part::Candidate(_) => 0.8,
+            _ => 1.0,
+        };
+        self.halo(part, vec![self.at(DVec2::ZERO), self.at(d * length)]);
+        self.ray(d, length, stroke, text, size);
+    }
+
+    /// The student's T, with its own length and dash, labelled with what it is.
+    fn student(&mut self) {
+        let Some(student) = self.overlay.student.as_ref() else {
+            return;
+        };
+        let flat = self.state.plane().project(student.t);
+        let length = flat.length();
+        // NaN, zero or perpendicular to the plane: nothing to draw; the verdict says why.
+        if !(length > 1e-9 && length.is_finite()) {
+            return;
+        }
+        let drawn = student.t.length().clamp(0.25, 1.6);
+        let stroke = self.stroke(2.6, self.palette.student, Dash::LongDash);
+        let text = student.label.clone();
+        self.ray(flat / length, drawn, stroke, &text, 0.95);
     }
 
     /// A straight line between world points, clipped to the drawing area.
@@ -201,7 +243,7 @@ impl Builder<'_> {
             let points = clip_rect_to_half_plane(&drawing, origin, facing * side);
             self.shapes.push(Shape::Fill {
                 points,
-                colour: medium_colour(index),
+                colour: medium_colour(&self.palette, index),
             });
             let corners = drawing.corners();
             let corner = corners
@@ -226,9 +268,9 @@ impl Builder<'_> {
     /// The surface line, the normal's axis and, when there is one, the critical angle.
     fn guides(&mut self, normal: DVec2, toward_source: DVec2) {
         let along = normal.perp() * 10.0;
-        let surface = self.stroke(2.5, palette::INK, Dash::Solid);
+        let surface = self.stroke(2.5, self.palette.ink, Dash::Solid);
         self.segment(-along, along, surface);
-        let axis = self.stroke(1.0, palette::GUIDE, Dash::Dashed);
+        let axis = self.stroke(1.0, self.palette.guide, Dash::Dashed);
         self.segment(-normal * 1.15, normal * 1.15, axis);
         if let Some(critical) = self.state.critical_angle() {
             let side = if normal.perp_dot(toward_source) < 0.0 {
@@ -237,18 +279,24 @@ impl Builder<'_> {
                 1.0
             };
             let direction = DVec2::from_angle(side * critical).rotate(normal);
-            let stroke = self.stroke(1.8, palette::CRITICAL, Dash::DashDot);
+            let stroke = self.stroke(1.8, self.palette.critical, Dash::DashDot);
             self.segment(DVec2::ZERO, direction * 1.15, stroke);
             let at = self.at(direction * 1.15);
             let away = self.layout.view.direction(direction);
             let text = format!("critical angle θc = {}°", number(critical.to_degrees(), 1));
             let anchor = (Align::away(away.x), Align::away(away.y));
-            self.label_coloured(text, at, anchor, 0.85, text_shade(palette::CRITICAL));
+            self.label_coloured(
+                text,
+                at,
+                anchor,
+                0.85,
+                self.palette.text_shade(self.palette.critical),
+            );
         }
     }
 
     /// An angle arc between two unit diagram directions, labelled `text`.
-    fn angle(&mut self, from: DVec2, to: DVec2, text: String, colour: Colour) {
+    fn angle(&mut self, part: Part, (from, to): (DVec2, DVec2), text: String, colour: Colour) {
         let view = self.layout.view;
         let radius = ARC_RADIUS as f32 * view.scale;
         let points = arc(
@@ -257,13 +305,14 @@ impl Builder<'_> {
             view.direction(from),
             view.direction(to),
         );
+        self.halo(part, points.clone());
         let stroke = self.stroke(1.5, colour, Dash::Solid);
         self.shapes.push(Shape::Line { points, stroke });
         let middle = (from + to).normalize_or(from);
         let away = view.direction(middle);
         let at = self.at(middle * ARC_RADIUS) + away * (self.font() * 0.5);
         let anchor = (Align::away(away.x), Align::away(away.y));
-        self.label_coloured(text, at, anchor, 0.9, text_shade(colour));
+        self.label_coloured(text, at, anchor, 0.9, self.palette.text_shade(colour));
     }
 
     /// The three rejected candidates as ghosts, labelled with (a, b) and the rule they break.
@@ -277,7 +326,7 @@ impl Builder<'_> {
                 Rejection::WrongBend => Dash::Dotted,
                 Rejection::Reversed => Dash::DashDot,
             };
-            let stroke = self.stroke(1.8, palette::REJECTED, dash);
+            let stroke = self.stroke(1.8, self.palette.rejected, dash);
             // With a flipped normal the bug's ghost lies on the wrong-side root and says so.
             let text = if r.normal_flipped && rejection == Rejection::WrongSide {
                 String::new()
@@ -289,7 +338,8 @@ impl Builder<'_> {
                     number(c.b, 3)
                 )
             };
-            self.ray(self.flat(c.t), GHOST_LENGTH, stroke, &text, 0.8);
+            let part = Part::Candidate(rejection);
+            self.part_ray(part, self.flat(c.t), GHOST_LENGTH, stroke, &text);
         }
     }
 
@@ -300,10 +350,10 @@ impl Builder<'_> {
             return;
         }
         let facing = self.flat(r.facing_normal);
-        let stroke = self.stroke(1.6, palette::N, Dash::Dashed);
+        let stroke = self.stroke(1.6, self.palette.n, Dash::Dashed);
         self.ray(facing, 0.75, stroke, "−N: the normal the kernel uses", 0.8);
         if let Some(wrong) = seed::refract(r.w, r.n, r.mu, r.convention) {
-            let stroke = self.stroke(3.0, palette::WARNING, Dash::Dashed);
+            let stroke = self.stroke(3.0, self.palette.warning, Dash::Dashed);
             self.ray(
                 self.flat(wrong),
                 1.0,
@@ -321,14 +371,22 @@ impl Builder<'_> {
         };
         let a_w = self.state.plane().project(r.w * tr.a);
         let t = self.state.plane().project(tr.t);
-        let w_part = self.stroke(1.3, palette::W, Dash::Dotted);
+        let path = [DVec2::ZERO, a_w, t].map(|p| self.at(p)).to_vec();
+        self.halo(Part::Decomposition, path);
+        let w_part = self.stroke(1.3, self.palette.w, Dash::Dotted);
         self.segment(DVec2::ZERO, a_w, w_part);
-        let n_part = self.stroke(1.3, palette::N, Dash::Dotted);
+        let n_part = self.stroke(1.3, self.palette.n, Dash::Dotted);
         self.segment(a_w, t, n_part);
         if self.layout.drawing.contains(self.at(a_w)) {
             let at = self.at(a_w);
             let text = format!("a·W (a = {})", number(tr.a, 3));
-            self.label_coloured(text, at, (Align::Center, Align::End), 0.75, palette::INK);
+            self.label_coloured(
+                text,
+                at,
+                (Align::Center, Align::End),
+                0.75,
+                self.palette.ink,
+            );
         }
     }
 
@@ -336,9 +394,9 @@ impl Builder<'_> {
     fn banner(&mut self, r: &Refraction<f64>) -> String {
         let rect = self.layout.banner;
         let (fill, ink) = if r.is_tir() {
-            (palette::ALARM, palette::BACKGROUND)
+            (self.palette.alarm, self.palette.on_alarm)
         } else {
-            (palette::CALM, palette::INK)
+            (self.palette.calm, self.palette.ink)
         };
         self.shapes.push(Shape::Fill {
             points: rect.corners().to_vec(),
@@ -381,7 +439,7 @@ impl Builder<'_> {
     fn index_scale(&mut self) -> [Handle; 2] {
         let scale = self.layout.scale;
         let font = self.font();
-        let line = self.stroke(1.5, palette::GUIDE, Dash::Solid);
+        let line = self.stroke(1.5, self.palette.guide, Dash::Solid);
         self.shapes.push(Shape::Line {
             points: vec![
                 Vec2::new(scale.x, scale.top),
@@ -423,8 +481,8 @@ impl Builder<'_> {
             self.shapes.push(Shape::Disc {
                 center,
                 radius,
-                fill: medium_colour(index),
-                outline: self.stroke(2.0, palette::INK, Dash::Solid),
+                fill: medium_colour(&self.palette, index),
+                outline: self.stroke(2.0, self.palette.ink, Dash::Solid),
             });
             self.shapes.push(Shape::Text(Label {
                 text: text.into(),
@@ -432,7 +490,7 @@ impl Builder<'_> {
                 h: Align::Center,
                 v: Align::Center,
                 size: font * 0.75,
-                colour: palette::INK,
+                colour: self.palette.ink,
                 background: None,
             }));
             Handle { id, center, radius }
@@ -446,7 +504,7 @@ impl Builder<'_> {
         self.shapes.push(Shape::Disc {
             center,
             radius,
-            fill: palette::BACKGROUND,
+            fill: self.palette.background,
             outline: self.stroke(2.5, colour, Dash::Solid),
         });
         Handle { id, center, radius }
@@ -454,19 +512,30 @@ impl Builder<'_> {
 }
 
 impl Diagram {
-    /// The diagram of `state` on a canvas `size` pixels wide and high.
+    /// The diagram of `state` on a canvas `size` pixels wide and high, in the standard
+    /// palette and nothing over it.
     #[must_use]
     pub fn new(state: &ExplorerState, size: Vec2) -> Self {
-        let layout = Layout::new(size);
+        Self::with_overlay(state, size, &Overlay::default())
+    }
+
+    /// The diagram of `state` on a canvas `size` pixels wide and high, drawn in the overlay's
+    /// palette and view, with its student's T and highlights.
+    #[must_use]
+    pub fn with_overlay(state: &ExplorerState, size: Vec2, overlay: &Overlay) -> Self {
+        let layout = Layout::new(size).panned(overlay.pan_zoom);
+        let palette = overlay.palette;
         let mut b = Builder {
             layout: &layout,
             state,
+            overlay,
+            palette,
             face: Typeface::egui_default().ok(),
             labels: Vec::new(),
             rank: 5,
             shapes: vec![Shape::Fill {
                 points: layout.canvas.corners().to_vec(),
-                colour: palette::BACKGROUND,
+                colour: palette.background,
             }],
         };
         let r = state.refraction();
@@ -477,14 +546,27 @@ impl Diagram {
         b.guides(normal, toward_source);
         b.rank = 1;
         b.angle(
-            normal,
-            toward_source,
+            Part::AngleI,
+            (normal, toward_source),
             format!("θi = {}°", number(r.cos_i.acos().to_degrees(), 1)),
-            palette::INCOMING,
+            b.palette.incoming,
         );
-        let incoming = b.stroke(2.0, palette::INCOMING, Dash::Solid);
-        b.segment(toward_source * INCOMING_LENGTH, DVec2::ZERO, incoming);
+        let incoming = b.stroke(2.0, palette.incoming, palette.incoming_dash);
         let source = toward_source * INCOMING_LENGTH;
+        b.halo(Part::Incoming, vec![b.at(source), b.at(DVec2::ZERO)]);
+        b.segment(source, DVec2::ZERO, incoming);
+        if palette.label_incoming {
+            let at = b.at(source);
+            let away = b.layout.view.direction(toward_source);
+            let anchor = (Align::away(away.x), Align::away(away.y));
+            b.label_coloured(
+                "incoming ray",
+                at,
+                anchor,
+                0.8,
+                palette.text_shade(palette.incoming),
+            );
+        }
         b.shapes.push(Shape::Arrow {
             from: b.at(source),
             to: b.at(source * 0.45),
@@ -502,12 +584,13 @@ impl Diagram {
             Some(tr) => {
                 let t = b.flat(tr.t);
                 let theta_t = number(tr.cos_t.clamp(-1.0, 1.0).acos().to_degrees(), 1);
-                b.angle(-normal, t, format!("θt = {theta_t}°"), palette::T);
-                let thin = b.stroke(1.6, palette::REFLECTED, Dash::Solid);
+                let text = format!("θt = {theta_t}°");
+                b.angle(Part::AngleT, (-normal, t), text, palette.t);
+                let thin = b.stroke(1.6, palette.reflected, palette.reflected_dash);
                 b.ray(reflected, 0.7, thin, "reflected", 0.8);
             }
             None => {
-                let bold = b.stroke(4.5, palette::REFLECTED, Dash::Solid);
+                let bold = b.stroke(4.5, palette.reflected, palette.reflected_dash);
                 b.ray(reflected, 1.0, bold, "reflected ray (all the light)", 1.0);
             }
         }
@@ -518,27 +601,19 @@ impl Diagram {
         b.rank = 0;
         let w_dir = state.direction(HandleId::W);
         let n_dir = state.direction(HandleId::N);
-        b.ray(
-            w_dir,
-            1.0,
-            b.stroke(3.0, palette::W, Dash::Solid),
-            w_text,
-            1.0,
-        );
-        b.ray(n_dir, 1.0, b.stroke(3.0, palette::N, Dash::Solid), "N", 1.0);
+        let w_stroke = b.stroke(3.0, palette.w, Dash::Solid);
+        b.part_ray(Part::W, w_dir, 1.0, w_stroke, w_text);
+        let n_stroke = b.stroke(3.0, palette.n, Dash::Solid);
+        b.part_ray(Part::N, n_dir, 1.0, n_stroke, "N");
         if let Some(tr) = r.transmission {
-            b.ray(
-                b.flat(tr.t),
-                1.0,
-                b.stroke(4.5, palette::T, Dash::Solid),
-                "T",
-                1.1,
-            );
+            let t_stroke = b.stroke(4.5, palette.t, Dash::Solid);
+            b.part_ray(Part::T, b.flat(tr.t), 1.0, t_stroke, "T");
         }
+        b.student();
         let summary = b.banner(r);
         let [mu_i, mu_t] = b.index_scale();
-        let w = b.tip_handle(HandleId::W, w_dir, palette::W);
-        let n = b.tip_handle(HandleId::N, n_dir, palette::N);
+        let w = b.tip_handle(HandleId::W, w_dir, palette.w);
+        let n = b.tip_handle(HandleId::N, n_dir, palette.n);
         let handles = vec![w, n, mu_i, mu_t];
         Self {
             shapes: b.finish(&handles),
@@ -579,6 +654,7 @@ impl Diagram {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::diagram::palette;
 
     fn arrows(diagram: &Diagram) -> Vec<(Vec2, Stroke)> {
         diagram
@@ -663,6 +739,78 @@ mod tests {
             .unwrap();
         // The bug's T goes back up into the ray's medium (above the surface on screen).
         assert!(tip.y < diagram.layout.view.origin.y);
+    }
+
+    #[test]
+    fn the_students_t_and_the_walk_through_highlights_are_part_of_the_picture() {
+        use crate::diagram::overlay::{Focus, Overlay, StudentRay};
+        let state = ExplorerState::default();
+        let wrong = state.refraction().candidates[1].t;
+        let overlay = Overlay {
+            student: Some(StudentRay {
+                t: wrong * 1.3,
+                label: "your T: wrong side".to_owned(),
+            }),
+            focus: Some(Focus::SquaredConstraints),
+            ..Overlay::default()
+        };
+        let size = Vec2::new(1000.0, 700.0);
+        let diagram = Diagram::with_overlay(&state, size, &overlay);
+        let plain = Diagram::new(&state, size);
+        let student: Vec<_> = arrows(&diagram)
+            .into_iter()
+            .filter(|(_, s)| s.colour == palette::STUDENT)
+            .collect();
+        assert_eq!(student.len(), 1);
+        assert_eq!(student[0].1.dash, Dash::LongDash);
+        let origin = diagram.layout.view.origin;
+        let length = (student[0].0 - origin).length() / diagram.layout.view.scale;
+        assert!(
+            (length - 1.3).abs() < 1e-3,
+            "drawn with its own length: {length}"
+        );
+        assert!(texts(&diagram).contains(&"your T: wrong side"));
+        let halos = |d: &Diagram| {
+            d.shapes
+                .iter()
+                .filter(|s| matches!(s, Shape::Line { stroke, .. } if stroke.colour == palette::HIGHLIGHT))
+                .count()
+        };
+        assert_eq!(halos(&diagram), 4, "T and the three ghosts");
+        assert_eq!(halos(&plain), 0);
+        let nan = Overlay {
+            student: Some(StudentRay {
+                t: glam::DVec3::NAN,
+                label: "your T".to_owned(),
+            }),
+            ..Overlay::default()
+        };
+        assert_eq!(
+            Diagram::with_overlay(&state, size, &nan).shapes.len(),
+            plain.shapes.len()
+        );
+    }
+
+    #[test]
+    fn every_palette_draws_the_same_picture_in_its_own_colours() {
+        use crate::diagram::overlay::Overlay;
+        use crate::diagram::palette::{Palette, Theme};
+        let state = ExplorerState::default();
+        let size = Vec2::new(1000.0, 700.0);
+        let dark = Overlay {
+            palette: Palette::new(Theme::HighContrastDark, true),
+            ..Overlay::default()
+        };
+        let diagram = Diagram::with_overlay(&state, size, &dark);
+        assert!(
+            matches!(&diagram.shapes[0], Shape::Fill { colour, .. } if *colour == dark.palette.background)
+        );
+        assert!(texts(&diagram).contains(&"incoming ray"));
+        let reflected = arrows(&diagram)
+            .into_iter()
+            .find(|(_, s)| s.colour == dark.palette.reflected)
+            .unwrap();
+        assert_eq!(reflected.1.dash, Dash::DashDotDot);
     }
 
     #[test]

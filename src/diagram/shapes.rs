@@ -18,6 +18,12 @@ pub enum Dash {
     Dotted,
     /// Dash, dot, dash.
     DashDot,
+    /// Long dashes with short gaps.
+    LongDash,
+    /// Dash, dot, dot.
+    DashDotDot,
+    /// Long dash, dot.
+    LongDashDot,
 }
 
 impl Dash {
@@ -30,6 +36,9 @@ impl Dash {
             Self::Dashed => vec![6.0 * w, 4.0 * w],
             Self::Dotted => vec![1.2 * w, 2.6 * w],
             Self::DashDot => vec![6.0 * w, 2.5 * w, 1.2 * w, 2.5 * w],
+            Self::LongDash => vec![11.0 * w, 3.0 * w],
+            Self::DashDotDot => vec![6.0 * w, 2.2 * w, 1.2 * w, 2.2 * w, 1.2 * w, 2.2 * w],
+            Self::LongDashDot => vec![11.0 * w, 2.5 * w, 1.2 * w, 2.5 * w],
         }
     }
 }
@@ -277,7 +286,16 @@ mod tests {
 
     #[test]
     fn patterns_differ_without_colour() {
-        let all = [Dash::Solid, Dash::Dashed, Dash::Dotted, Dash::DashDot].map(|d| d.pattern(2.0));
+        let all = [
+            Dash::Solid,
+            Dash::Dashed,
+            Dash::Dotted,
+            Dash::DashDot,
+            Dash::LongDash,
+            Dash::DashDotDot,
+            Dash::LongDashDot,
+        ]
+        .map(|d| d.pattern(2.0));
         for (i, a) in all.iter().enumerate() {
             for b in &all[i + 1..] {
                 assert_ne!(a, b);

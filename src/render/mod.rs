@@ -12,7 +12,7 @@ use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Transfo
 use crate::atomic::write_atomically;
 use crate::diagram::font::Typeface;
 use crate::diagram::geometry::Colour;
-use crate::diagram::{Diagram, ExplorerState, Primitive};
+use crate::diagram::{Diagram, ExplorerState, Overlay, Primitive};
 
 /// The export size when none is given.
 pub const DEFAULT_SIZE: (u32, u32) = (1920, 1080);
@@ -165,13 +165,18 @@ pub fn draw_primitives(
     Ok(pixmap)
 }
 
-/// The diagram of `state` drawn on a `width` × `height` pixmap.
+/// The diagram of `state` with `overlay` drawn on a `width` × `height` pixmap.
 ///
 /// # Errors
 /// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
-pub fn render(state: &ExplorerState, width: u32, height: u32) -> Result<Pixmap, RenderError> {
+pub fn render(
+    state: &ExplorerState,
+    overlay: &Overlay,
+    width: u32,
+    height: u32,
+) -> Result<Pixmap, RenderError> {
     draw_primitives(width, height, |size, _| {
-        Diagram::new(state, size).primitives()
+        Diagram::with_overlay(state, size, overlay).primitives()
     })
 }
 
@@ -185,12 +190,17 @@ pub fn encode(pixmap: &Pixmap) -> Result<Vec<u8>, RenderError> {
         .map_err(|e| RenderError::Encode(format!("cannot encode the PNG: {e}")))
 }
 
-/// The diagram of `state` as PNG bytes.
+/// The diagram of `state` with `overlay` as PNG bytes.
 ///
 /// # Errors
 /// As [`render`], or a failed encoding.
-pub fn png(state: &ExplorerState, width: u32, height: u32) -> Result<Vec<u8>, RenderError> {
-    encode(&render(state, width, height)?)
+pub fn png(
+    state: &ExplorerState,
+    overlay: &Overlay,
+    width: u32,
+    height: u32,
+) -> Result<Vec<u8>, RenderError> {
+    encode(&render(state, overlay, width, height)?)
 }
 
 /// Writes a pixmap as a PNG file at `path`, atomically.
@@ -201,17 +211,17 @@ pub fn write_png(pixmap: &Pixmap, path: &Path) -> Result<(), RenderError> {
     write_atomically(path, &encode(pixmap)?).map_err(RenderError::Write)
 }
 
-/// Writes the diagram of `state` as a PNG file at `path`, atomically.
+/// Writes the diagram of `state` with `overlay` as a PNG file at `path`, atomically.
 ///
 /// # Errors
 /// As [`png`], or the file cannot be written (the message names it).
 pub fn export(
     state: &ExplorerState,
-    width: u32,
-    height: u32,
+    overlay: &Overlay,
+    (width, height): (u32, u32),
     path: &Path,
 ) -> Result<(), RenderError> {
-    write_png(&render(state, width, height)?, path)
+    write_png(&render(state, overlay, width, height)?, path)
 }
 
 /// Writes the plot of a `bench` report as a PNG file at `path`, atomically.
@@ -238,7 +248,7 @@ mod tests {
     #[test]
     fn the_png_decodes_at_the_requested_size_and_t_is_drawn_in_its_colour() {
         let state = ExplorerState::default();
-        let bytes = png(&state, 1920, 1080).unwrap();
+        let bytes = png(&state, &Overlay::default(), 1920, 1080).unwrap();
         let decoded = Pixmap::decode_png(&bytes).unwrap();
         assert_eq!((decoded.width(), decoded.height()), (1920, 1080));
         let layout = crate::diagram::Layout::new(Vec2::new(1920.0, 1080.0));
@@ -265,12 +275,15 @@ mod tests {
     #[test]
     fn bad_sizes_and_paths_are_errors_with_clear_messages() {
         let state = ExplorerState::default();
-        let err = png(&state, 0, 1080).unwrap_err().to_string();
+        let err = png(&state, &Overlay::default(), 0, 1080)
+            .unwrap_err()
+            .to_string();
         assert!(
             err.contains("0×1080") && err.contains("64 to 8192"),
             "{err}"
         );
-        let err = export(&state, 640, 360, Path::new("/nonexistent-folder/x.png")).unwrap_err();
+        let path = Path::new("/nonexistent-folder/x.png");
+        let err = export(&state, &Overlay::default(), (640, 360), path).unwrap_err();
         assert!(err.to_string().contains("/nonexistent-folder/x.png"));
     }
 }

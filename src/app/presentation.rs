@@ -1,0 +1,119 @@
+//! Presentation mode for a projector: full screen with the whole UI zoomed (large fonts, thick
+//! lines), the high-contrast themes, the colour-blind-safe palette, and the diagram's pan and
+//! zoom.
+
+use egui::{Color32, ComboBox, Context, Key, KeyboardShortcut, Modifiers, Ui, ViewportCommand};
+
+use crate::diagram::overlay::PanZoom;
+use crate::diagram::palette::{Palette, Theme};
+
+/// The UI zoom in presentation mode.
+pub const ZOOM: f32 = 1.6;
+
+/// What was last applied to the egui context, so that it is changed only when asked.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Applied {
+    on: bool,
+    theme: Theme,
+}
+
+/// The presentation settings.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Presentation {
+    /// Full screen and zoomed.
+    pub on: bool,
+    /// The look of the panels and the diagram.
+    pub theme: Theme,
+    /// Okabe–Ito colours only, and every ray with its own dash and label.
+    pub colour_blind_safe: bool,
+    /// How the diagram is panned and zoomed (drag the background, scroll; double-click resets).
+    pub pan_zoom: PanZoom,
+    applied: Option<Applied>,
+}
+
+/// The egui look of a theme: the standard light one, or black on white / white on black with
+/// strong borders.
+#[must_use]
+pub fn visuals(theme: Theme) -> egui::Visuals {
+    let (mut visuals, text, back) = match theme {
+        Theme::Standard => return egui::Visuals::light(),
+        Theme::HighContrastLight => (egui::Visuals::light(), Color32::BLACK, Color32::WHITE),
+        Theme::HighContrastDark => (egui::Visuals::dark(), Color32::WHITE, Color32::BLACK),
+    };
+    visuals.override_text_color = Some(text);
+    visuals.panel_fill = back;
+    visuals.window_fill = back;
+    visuals.extreme_bg_color = back;
+    for widget in [
+        &mut visuals.widgets.noninteractive,
+        &mut visuals.widgets.inactive,
+        &mut visuals.widgets.hovered,
+        &mut visuals.widgets.active,
+        &mut visuals.widgets.open,
+    ] {
+        widget.fg_stroke.color = text;
+        widget.bg_stroke = egui::Stroke::new(1.5, text);
+    }
+    visuals
+}
+
+impl Presentation {
+    /// The diagram's palette for these settings.
+    #[must_use]
+    pub fn palette(&self) -> Palette {
+        Palette::new(self.theme, self.colour_blind_safe)
+    }
+
+    /// Applies the zoom, full screen and theme to `ctx` when they changed since last time.
+    pub fn apply(&mut self, ctx: &Context) {
+        let now = Applied {
+            on: self.on,
+            theme: self.theme,
+        };
+        let before = self.applied.replace(now);
+        if before.map(|b| b.on) != Some(self.on) {
+            ctx.set_zoom_factor(if self.on { ZOOM } else { 1.0 });
+            // Only a change of mode touches the window: never leave full screen at start.
+            if before.is_some() {
+                ctx.send_viewport_cmd(ViewportCommand::Fullscreen(self.on));
+            }
+        }
+        if before.map(|b| b.theme) != Some(self.theme) {
+            ctx.set_visuals(visuals(self.theme));
+        }
+    }
+
+    /// The presentation toggle (also F11), the theme menu and the colour-blind-safe switch.
+    pub fn controls(&mut self, ui: &mut Ui) {
+        if ui.input_mut(|i| i.consume_shortcut(&KeyboardShortcut::new(Modifiers::NONE, Key::F11))) {
+            self.on = !self.on;
+        }
+        ui.toggle_value(&mut self.on, "🖵 Presentation")
+            .on_hover_text("Full screen, everything larger (F11)");
+        ComboBox::from_label("Theme")
+            .selected_text(self.theme.label())
+            .show_ui(ui, |ui| {
+                for theme in Theme::ALL {
+                    ui.selectable_value(&mut self.theme, theme, theme.label());
+                }
+            });
+        ui.checkbox(&mut self.colour_blind_safe, "Colour-blind safe")
+            .on_hover_text("Okabe–Ito colours only; every ray also has its own dash and label");
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn high_contrast_themes_use_pure_black_and_white() {
+        let light = visuals(Theme::HighContrastLight);
+        assert_eq!(light.override_text_color, Some(Color32::BLACK));
+        assert_eq!(light.panel_fill, Color32::WHITE);
+        let dark = visuals(Theme::HighContrastDark);
+        assert!(dark.dark_mode);
+        assert_eq!(dark.panel_fill, Color32::BLACK);
+        assert_eq!(visuals(Theme::Standard), egui::Visuals::light());
+    }
+}

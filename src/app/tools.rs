@@ -1,0 +1,106 @@
+//! The classroom tools under the diagram, one at a time: check my T, the walk-through, and
+//! save / open / share. Their switches sit in the top bar.
+
+use egui::{Panel, ScrollArea, Ui};
+
+use super::check_panel::CheckPanel;
+use super::files_panel::FilesPanel;
+use super::walkthrough::WalkThrough;
+use crate::diagram::overlay::StudentRay;
+use crate::diagram::{ExplorerState, Focus};
+
+/// The tool shown under the diagram.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tool {
+    /// Check a student's T.
+    Check,
+    /// The guided walk through the derivation.
+    WalkThrough,
+    /// Save, open, share and copy.
+    Files,
+}
+
+impl Tool {
+    /// Every tool, in the order of the bar.
+    pub const ALL: [Self; 3] = [Self::Check, Self::WalkThrough, Self::Files];
+
+    /// The switch's label (also its accessible name).
+    #[must_use]
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Check => "✔ Check my T",
+            Self::WalkThrough => "📖 Walk-through",
+            Self::Files => "💾 Save, open, share",
+        }
+    }
+
+    /// The panel's first height in points: what the tool shows without scrolling.
+    fn height(self) -> f32 {
+        match self {
+            Self::Check => 170.0,
+            Self::WalkThrough => 140.0,
+            Self::Files => 150.0,
+        }
+    }
+}
+
+/// The tools and which one is open.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Tools {
+    /// The open tool, if any.
+    pub open: Option<Tool>,
+    /// Check my T.
+    pub check: CheckPanel,
+    /// The walk-through.
+    pub walk: WalkThrough,
+    /// Save, open, share.
+    pub files: FilesPanel,
+}
+
+impl Tools {
+    /// The switches for the top bar: clicking the open tool closes it.
+    pub fn bar(&mut self, ui: &mut Ui) {
+        for tool in Tool::ALL {
+            let open = self.open == Some(tool);
+            if ui.selectable_label(open, tool.label()).clicked() {
+                self.open = if open { None } else { Some(tool) };
+            }
+        }
+    }
+
+    /// The open tool in a panel at the bottom of `ui`.
+    pub fn panel(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
+        let Some(tool) = self.open else {
+            return;
+        };
+        // A panel only grows to what its scroll area was given last frame: each tool asks for
+        // the height its verdict or step needs (at most 45 % of the window), and can be
+        // dragged taller.
+        let limit = ui.ctx().content_rect().height() * 0.45;
+        let height = tool.height().min(limit);
+        Panel::bottom(tool.label())
+            .resizable(true)
+            .size_range(height..=limit.max(height))
+            .show(ui, |ui| {
+                ScrollArea::vertical().show(ui, |ui| match tool {
+                    Tool::Check => self.check.show(ui, state),
+                    Tool::WalkThrough => self.walk.show(ui, state),
+                    Tool::Files => self.files.show(ui, state),
+                });
+            });
+    }
+
+    /// What the walk-through highlights, while it is open.
+    #[must_use]
+    pub fn focus(&self, state: &ExplorerState) -> Option<Focus> {
+        (self.open == Some(Tool::WalkThrough))
+            .then(|| self.walk.focus(state))
+            .flatten()
+    }
+
+    /// The student's T to draw (whether or not its panel is open, while its case is shown).
+    #[must_use]
+    pub fn student(&self, state: &ExplorerState) -> Option<StudentRay> {
+        self.check.student(state)
+    }
+}
