@@ -284,6 +284,8 @@ fn presentation_mode_zooms_the_ui_and_the_themes_change_panels_and_diagram() {
         h.ctx.zoom_factor(),
         refraction_explorer::app::presentation::ZOOM
     );
+    // 1280 pixels zoomed are 800 points: the controls give way to the diagram.
+    assert!(h.query_by_label("Flip N").is_none());
     h.get_by_role_and_label(Role::ComboBox, "Theme").click();
     h.run();
     click(&mut h, Theme::HighContrastDark.label());
@@ -296,6 +298,7 @@ fn presentation_mode_zooms_the_ui_and_the_themes_change_panels_and_diagram() {
     h.run();
     assert!(!h.state().presentation().on);
     assert_eq!(h.ctx.zoom_factor(), 1.0);
+    assert!(h.query_by_label("Flip N").is_some());
 }
 
 fn glam_colour(code: u32) -> refraction_explorer::diagram::geometry::Colour {

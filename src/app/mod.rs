@@ -31,6 +31,9 @@ use tools::Tools;
 /// The window title.
 pub const TITLE: &str = "Refraction explorer";
 
+/// The narrowest window (in points) that keeps the controls panel in presentation mode.
+const PRESENTATION_CONTROLS_WIDTH: f32 = 1000.0;
+
 /// Where eframe keeps the last state between runs.
 const STORAGE_KEY: &str = "explorer_state";
 
@@ -172,17 +175,21 @@ impl Explorer {
         self.tools.panel(ui, &mut self.state);
         let mut overlay = self.overlay();
         // Zoomed for presentation the window is narrow in points: the diagram keeps at least
-        // half of it.
+        // half of it, and on a small projector (1280×720 is 800 points wide zoomed) the
+        // controls give way altogether; the handles and keys still edit everything.
         let width = ui.available_width();
-        Panel::left("controls")
-            .default_size(290.0)
-            .max_size(width * 0.25)
-            .resizable(true)
-            .show(ui, |ui| {
-                ScrollArea::vertical().show(ui, |ui| {
-                    self.controls.show(ui, &mut self.state, &overlay);
+        let controls_fit = !self.presentation.on || width >= PRESENTATION_CONTROLS_WIDTH;
+        if controls_fit {
+            Panel::left("controls")
+                .default_size(290.0)
+                .max_size(width * 0.25)
+                .resizable(true)
+                .show(ui, |ui| {
+                    ScrollArea::vertical().show(ui, |ui| {
+                        self.controls.show(ui, &mut self.state, &overlay);
+                    });
                 });
-            });
+        }
         Panel::right("readouts")
             .default_size(440.0)
             .max_size(width * 0.37)
