@@ -33,6 +33,8 @@ pub const CALM: Colour = Colour::hex(0xEEF2F6);
 pub const THIN_MEDIUM: Colour = Colour::hex(0xF6F9FC);
 /// A medium with the index at the top of the scale.
 pub const DENSE_MEDIUM: Colour = Colour::hex(0x8DB6DC);
+/// White light traced at one wavelength (no dispersion asked for): neutral on the light canvas.
+pub const WHITE_LIGHT: Colour = Colour::hex(0x5A5A5A);
 /// Behind labels.
 pub const LABEL_BACKGROUND: Colour = Colour::hex(0xFFFFFF).with_alpha(210);
 
