@@ -1,18 +1,22 @@
 //! The explorer window (eframe/egui): controls on the left, the interactive diagram in the
-//! middle, the kernel's numbers on the right. The state lives in [`ExplorerState`]; drawing
+//! middle, the kernel's numbers on the right; or, in the Scenes view ([`ScenesView`]), a traced
+//! scene whose hit points open here. The state lives in [`ExplorerState`]; drawing
 //! comes from [`crate::diagram`]; nothing here computes refraction.
 
 mod canvas;
 mod controls;
 mod paint;
 mod readouts;
+mod scenes;
 mod typed;
 
 use egui::{Panel, ScrollArea, Ui};
 
 use crate::diagram::ExplorerState;
+use crate::scene::Scene;
 use crate::state_file;
 use controls::Controls;
+pub use scenes::ScenesView;
 
 /// The window title.
 pub const TITLE: &str = "Refraction explorer";
@@ -26,17 +30,20 @@ pub enum View {
     /// One interface at a hit point: drag W, N and μ.
     #[default]
     Interface,
+    /// A traced scene: drag the source and the shapes, click a hit to open it.
+    Scenes,
 }
 
 impl View {
     /// Every view, in the order of the bar.
-    pub const ALL: [Self; 1] = [Self::Interface];
+    pub const ALL: [Self; 2] = [Self::Interface, Self::Scenes];
 
     /// The view's name in the bar (also its accessible name).
     #[must_use]
     pub fn label(self) -> &'static str {
         match self {
             Self::Interface => "One interface",
+            Self::Scenes => "Scenes",
         }
     }
 }
@@ -47,6 +54,7 @@ pub struct Explorer {
     state: ExplorerState,
     view: View,
     controls: Controls,
+    scenes: ScenesView,
 }
 
 impl Explorer {
@@ -57,7 +65,20 @@ impl Explorer {
             state,
             view: View::default(),
             controls: Controls::default(),
+            scenes: ScenesView::default(),
         }
+    }
+
+    /// Shows `scene` in the Scenes view, and that view.
+    pub fn open_scene(&mut self, scene: Scene) {
+        self.scenes = ScenesView::new(scene);
+        self.view = View::Scenes;
+    }
+
+    /// The Scenes view's state.
+    #[must_use]
+    pub fn scenes(&self) -> &ScenesView {
+        &self.scenes
     }
 
     /// The state being explored.
@@ -83,6 +104,12 @@ impl Explorer {
         });
         match self.view {
             View::Interface => self.show_interface(ui),
+            View::Scenes => {
+                if let Some(state) = self.scenes.show(ui) {
+                    self.state = state;
+                    self.view = View::Interface;
+                }
+            }
         }
     }
 

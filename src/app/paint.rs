@@ -40,7 +40,13 @@ pub fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[Primiti
                 width,
                 colour,
             } => {
-                painter.add(Shape::line(points(ps), Stroke::new(*width, color(*colour))));
+                let stroke = Stroke::new(*width, color(*colour));
+                // Most rays of a scene are single segments: no point list to allocate.
+                if let [a, b] = ps.as_slice() {
+                    painter.line_segment([at(*a), at(*b)], stroke);
+                } else {
+                    painter.add(Shape::line(points(ps), stroke));
+                }
             }
             Primitive::Disc {
                 center,

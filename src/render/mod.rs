@@ -1,5 +1,6 @@
-//! The diagram to pixels off screen: a PNG of [`Diagram::primitives`] drawn with tiny-skia,
-//! labels in egui's own font ([`text`]), written atomically.
+//! The diagram to pixels off screen: a PNG of [`Diagram::primitives`] (the single interface) or
+//! [`ScenePicture::primitives`] (a traced scene) drawn with tiny-skia, labels in egui's own font
+//! ([`text`]), written atomically.
 
 pub mod text;
 
@@ -12,7 +13,8 @@ use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Transfo
 use crate::atomic::write_atomically;
 use crate::diagram::font::Typeface;
 use crate::diagram::geometry::Colour;
-use crate::diagram::{Diagram, ExplorerState, Primitive};
+use crate::diagram::{Diagram, ExplorerState, Primitive, SceneLayout, ScenePicture};
+use crate::scene::Scene;
 
 /// The export size when none is given.
 pub const DEFAULT_SIZE: (u32, u32) = (1920, 1080);
@@ -143,11 +145,12 @@ fn draw(pixmap: &mut Pixmap, face: &Typeface, primitive: &Primitive) {
     }
 }
 
-/// The diagram of `state` drawn on a `width` × `height` pixmap.
-///
-/// # Errors
-/// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
-pub fn render(state: &ExplorerState, width: u32, height: u32) -> Result<Pixmap, RenderError> {
+/// `primitives` for a canvas of the given size, drawn on a `width` × `height` pixmap.
+fn draw_all(
+    width: u32,
+    height: u32,
+    primitives: impl FnOnce(Vec2) -> Vec<Primitive>,
+) -> Result<Pixmap, RenderError> {
     let (low, high) = SIZE_LIMITS;
     let bad_size = RenderError::BadSize { width, height };
     if !(low..=high).contains(&width) || !(low..=high).contains(&height) {
@@ -155,11 +158,24 @@ pub fn render(state: &ExplorerState, width: u32, height: u32) -> Result<Pixmap, 
     }
     let mut pixmap = Pixmap::new(width, height).ok_or(bad_size)?;
     let face = Typeface::egui_default().map_err(RenderError::Font)?;
-    let diagram = Diagram::new(state, Vec2::new(width as f32, height as f32));
-    for primitive in diagram.primitives() {
+    for primitive in primitives(Vec2::new(width as f32, height as f32)) {
         draw(&mut pixmap, &face, &primitive);
     }
     Ok(pixmap)
+}
+
+fn encode(pixmap: &Pixmap) -> Result<Vec<u8>, RenderError> {
+    pixmap
+        .encode_png()
+        .map_err(|e| RenderError::Encode(format!("cannot encode the PNG: {e}")))
+}
+
+/// The diagram of `state` drawn on a `width` × `height` pixmap.
+///
+/// # Errors
+/// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
+pub fn render(state: &ExplorerState, width: u32, height: u32) -> Result<Pixmap, RenderError> {
+    draw_all(width, height, |size| Diagram::new(state, size).primitives())
 }
 
 /// The diagram of `state` as PNG bytes.
@@ -167,9 +183,7 @@ pub fn render(state: &ExplorerState, width: u32, height: u32) -> Result<Pixmap, 
 /// # Errors
 /// As [`render`], or a failed encoding.
 pub fn png(state: &ExplorerState, width: u32, height: u32) -> Result<Vec<u8>, RenderError> {
-    render(state, width, height)?
-        .encode_png()
-        .map_err(|e| RenderError::Encode(format!("cannot encode the PNG: {e}")))
+    encode(&render(state, width, height)?)
 }
 
 /// Writes the diagram of `state` as a PNG file at `path`, atomically.
@@ -183,6 +197,33 @@ pub fn export(
     path: &Path,
 ) -> Result<(), RenderError> {
     let bytes = png(state, width, height)?;
+    write_atomically(path, &bytes).map_err(RenderError::Write)
+}
+
+/// `scene`, traced, drawn on a `width` × `height` pixmap as the explorer's Scenes view shows
+/// it.
+///
+/// # Errors
+/// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
+pub fn render_scene(scene: &Scene, width: u32, height: u32) -> Result<Pixmap, RenderError> {
+    let trace = scene.trace();
+    draw_all(width, height, |size| {
+        ScenePicture::new(scene, &trace, &SceneLayout::new(trace.bounds, size)).primitives
+    })
+}
+
+/// Writes `scene`, traced, as a PNG file at `path`, atomically.
+///
+/// # Errors
+/// As [`render_scene`], a failed encoding, or the file cannot be written (the message names
+/// it).
+pub fn export_scene(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    path: &Path,
+) -> Result<(), RenderError> {
+    let bytes = encode(&render_scene(scene, width, height)?)?;
     write_atomically(path, &bytes).map_err(RenderError::Write)
 }
 
@@ -216,6 +257,33 @@ mod tests {
             on_t >= 39,
             "only {on_t} of 41 pixels along T have T's colour"
         );
+    }
+
+    #[test]
+    fn every_built_in_scene_renders_with_its_rays_in_their_colours() {
+        for info in crate::scene::catalogue() {
+            let scene = Scene::embedded(info.name).unwrap();
+            let pixmap = render_scene(&scene, 800, 500).unwrap();
+            assert_eq!((pixmap.width(), pixmap.height()), (800, 500));
+            let colours: Vec<_> = scene
+                .source()
+                .colours(scene.effects().dispersion)
+                .into_iter()
+                .map(crate::diagram::spectrum::ray_colour)
+                .collect();
+            // Rays are translucent where the scene computes intensities: count pixels near a
+            // ray colour rather than equal to it.
+            let near = |p: &tiny_skia::PremultipliedColorU8, c: &Colour| {
+                let d = |x: u8, y: u8| i32::from(x).abs_diff(i32::from(y));
+                d(p.red(), c.r) + d(p.green(), c.g) + d(p.blue(), c.b) < 40
+            };
+            let on_rays = pixmap
+                .pixels()
+                .iter()
+                .filter(|p| colours.iter().any(|c| near(p, c)))
+                .count();
+            assert!(on_rays > 100, "{}: {on_rays} ray pixels", info.name);
+        }
     }
 
     #[test]
