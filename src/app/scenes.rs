@@ -56,7 +56,7 @@ fn hit_text(scene: &Scene, hit: &Hit) -> String {
         Side::Leaving => "leaving: the kernel turns N round",
     };
     format!(
-        "{} → {} ({side})\nμi = {}, μt = {}, {} nm\nclick: open in One interface",
+        "{} into {} ({side})\nμi = {}, μt = {}, {} nm\nclick: open in One interface",
         name(hit.from_medium),
         name(hit.to_medium),
         number(hit.mu_i, 4),
