@@ -4,8 +4,6 @@
 //! [`Primitive`]s directly (no dashes to lower), because a scene of a thousand rays is rebuilt
 //! on every frame of a drag.
 
-use std::collections::HashSet;
-
 use glam::{DVec2, Vec2};
 
 use super::font::Typeface;
@@ -226,7 +224,9 @@ fn opacity(intensity: Option<f64>) -> u8 {
         0.0
     };
     let alpha = 0.15 + 0.85 * i.sqrt();
-    ((alpha * 16.0).round() / 16.0 * 255.0).round() as u8
+    // Sixteenths, rounded (the cast truncates a positive number).
+    let step = (alpha * 16.0 + 0.5) as u32;
+    (step * 255 / 16) as u8
 }
 
 /// The name and index of a medium for a label (dispersive media at the reference wavelength).
@@ -391,13 +391,31 @@ impl Builder<'_> {
     }
 
     /// Every path as polylines in its wavelength's colour, split where its opacity changes.
+    /// When white light is dispersed, every colour of a source ray shares its first segment
+    /// (nothing has refracted yet): it is drawn once, as white light.
     fn rays(&mut self, trace: &Trace) {
         let wavelengths = trace.counts.wavelengths.max(1);
         let per_colour = (trace.counts.source_rays / wavelengths).max(1) as f32;
         let width = (2.2 * self.unit() * (30.0 / per_colour).sqrt().min(1.0)).max(0.8);
+        let first_colour = trace.paths.first().map(|p| p.wavelength_nm);
+        let mut last_colour = None;
         for path in &trace.paths {
-            let colour = ray_colour(path.wavelength_nm);
-            let segments = trace.segments.get(path.segments.clone()).unwrap_or(&[]);
+            // Paths come colour after colour: look each colour up once.
+            let colour = match last_colour {
+                Some((traced, colour)) if traced == path.wavelength_nm => colour,
+                _ => ray_colour(path.wavelength_nm),
+            };
+            last_colour = Some((path.wavelength_nm, colour));
+            let mut segments = trace.segments.get(path.segments.clone()).unwrap_or(&[]);
+            if wavelengths > 1 && path.parent_hit.is_none() {
+                if let Some(first) = segments.first()
+                    && Some(path.wavelength_nm) == first_colour
+                {
+                    let points = vec![self.layout.at(first.from), self.layout.at(first.to)];
+                    self.ray(points, palette::WHITE_LIGHT, width);
+                }
+                segments = segments.get(1..).unwrap_or(&[]);
+            }
             let mut run: Vec<Vec2> = Vec::new();
             let mut alpha = 0;
             for s in segments {
@@ -438,11 +456,21 @@ impl Builder<'_> {
     fn hits(&mut self, trace: &Trace) {
         let radius = self.layout.font * 0.25;
         let cell = radius * 1.5;
-        let mut taken = HashSet::new();
+        let cells = (self.layout.canvas.size() / cell).ceil();
+        let (columns, rows) = (cells.x as usize, cells.y as usize);
+        let mut taken = vec![false; columns * rows];
         for hit in &trace.hits {
             let center = self.layout.at(hit.point);
-            let key = ((center.x / cell) as i32, (center.y / cell) as i32);
-            if !taken.insert(key) {
+            // Off the canvas (only while a drag keeps an old layout) nothing would show.
+            if !self.layout.canvas.contains(center) {
+                continue;
+            }
+            let (column, row) = ((center.x / cell) as usize, (center.y / cell) as usize);
+            let Some(cell) = taken.get_mut(row.min(rows - 1) * columns + column.min(columns - 1))
+            else {
+                continue;
+            };
+            if std::mem::replace(cell, true) {
                 continue;
             }
             self.out.push(Primitive::Disc {
@@ -707,6 +735,23 @@ mod tests {
         );
         assert!(legend.contains("leaving (N turned round)"), "{legend}");
         assert!(picture.summary.contains("kernel calls"));
+    }
+
+    #[test]
+    fn dispersed_white_light_is_white_until_it_first_refracts() {
+        let (scene, trace) = traced("dispersing-prism");
+        let layout = SceneLayout::new(trace.bounds, Vec2::new(1200.0, 800.0));
+        let picture = ScenePicture::new(&scene, &trace, &layout);
+        let source = layout.at(scene.source().origin);
+        let from_source: Vec<Colour> = picture
+            .primitives
+            .iter()
+            .filter_map(|p| match p {
+                Primitive::Polyline { points, colour, .. } if points[0] == source => Some(*colour),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(from_source, vec![palette::WHITE_LIGHT]);
     }
 
     #[test]
