@@ -194,13 +194,22 @@ impl ScenesView {
             SceneLayout::new(self.trace.bounds, Vec2::new(rect.width(), rect.height()))
         });
         let mut dragging = false;
+        // A handle may sit on a hit point (a line's anchor where the ray meets it): a click on
+        // it, without a drag, still picks the hit.
+        let mut clicked_at = response
+            .interact_pointer_pos()
+            .filter(|_| response.clicked());
         for handle in layout.handles(&self.scene) {
             let area = handle.grab_area();
             let grab_rect = Rect::from_min_max(
                 to_screen.transform_pos(Pos2::new(area.min.x, area.min.y)),
                 to_screen.transform_pos(Pos2::new(area.max.x, area.max.y)),
             );
-            let grab = ui.interact(grab_rect, response.id.with(handle.id), Sense::drag());
+            let id = response.id.with(handle.id);
+            let grab = ui.interact(grab_rect, id, Sense::click_and_drag());
+            if grab.clicked() {
+                clicked_at = grab.interact_pointer_pos();
+            }
             let label = handle.id.label(&self.scene);
             grab.widget_info(|| WidgetInfo::labeled(Role::Button, true, &label));
             if let Some(pointer) = grab.interact_pointer_pos().filter(|_| grab.dragged()) {
@@ -246,10 +255,7 @@ impl ScenesView {
             paint(&painter, &to_screen, &[Primitive::Text(label)]);
             ui.ctx().set_cursor_icon(CursorIcon::PointingHand);
         }
-        let clicked = response
-            .interact_pointer_pos()
-            .filter(|_| response.clicked())
-            .and_then(|p| layout.hit_near(&self.trace, canvas_point(p)))?;
+        let clicked = clicked_at.and_then(|p| layout.hit_near(&self.trace, canvas_point(p)))?;
         let problem = clicked.incidence();
         ExplorerState::new(
             problem.w,

@@ -4,6 +4,8 @@
 //! [`Primitive`]s directly (no dashes to lower), because a scene of a thousand rays is rebuilt
 //! on every frame of a drag.
 
+use std::collections::HashSet;
+
 use glam::{DVec2, Vec2};
 
 use super::font::Typeface;
@@ -14,7 +16,7 @@ use super::picture::{GRAB_SCALE, medium_colour};
 use super::shapes::{Align, Dash, Label, Primitive, Shape as Drawn, Stroke};
 use super::spectrum::{ray_colour, wavelength_colour};
 use crate::scene::{
-    Bounds, Counts, EditError, Hit, Outcome, REFERENCE_WAVELENGTH_NM, Scene, Side, Trace,
+    Bounds, Counts, EditError, Hit, Outcome, Path, REFERENCE_WAVELENGTH_NM, Scene, Side, Trace,
 };
 
 /// Ray points closer than this many pixels to the previous one are left out: they change
@@ -322,7 +324,8 @@ impl Builder<'_> {
         }));
     }
 
-    /// The background medium, then each shape filled with its medium's shade and outlined; a
+    /// The world rectangle in the background medium's shade (rays end at its edge), then each
+    /// shape filled with its medium's shade and outlined; a
     /// screen as a thick line. Edges along the world rectangle's border are the view's edge,
     /// not a surface, and are not outlined.
     fn shapes(&mut self, scene: &Scene) {
@@ -332,10 +335,14 @@ impl Builder<'_> {
             .map_or(1.0, |m| m.index(REFERENCE_WAVELENGTH_NM));
         self.out.push(Primitive::Polygon {
             points: self.layout.canvas.corners().to_vec(),
+            colour: palette::OUTSIDE_WORLD,
+        });
+        let bounds = self.layout.bounds;
+        self.out.push(Primitive::Polygon {
+            points: bounds.corners().map(|p| self.layout.at(p)).to_vec(),
             colour: medium_colour(background),
         });
         let max_step = 2.0 / f64::from(self.layout.view.scale);
-        let bounds = self.layout.bounds;
         let on_border = |a: DVec2, b: DVec2| {
             let same = |x: f64, y: f64| (x - y).abs() <= 1e-9 * (1.0 + x.abs());
             (0..2).any(|axis| {
@@ -391,13 +398,14 @@ impl Builder<'_> {
     }
 
     /// Every path as polylines in its wavelength's colour, split where its opacity changes.
-    /// When white light is dispersed, every colour of a source ray shares its first segment
-    /// (nothing has refracted yet): it is drawn once, as white light.
+    /// When white light is dispersed, what every colour shares (a source ray up to its first
+    /// kernel call, and the reflection there) is drawn once, as white light: drawn colour by
+    /// colour, the last colour would hide the others.
     fn rays(&mut self, trace: &Trace) {
         let wavelengths = trace.counts.wavelengths.max(1);
         let per_colour = (trace.counts.source_rays / wavelengths).max(1) as f32;
         let width = (2.2 * self.unit() * (30.0 / per_colour).sqrt().min(1.0)).max(0.8);
-        let first_colour = trace.paths.first().map(|p| p.wavelength_nm);
+        let mut white = HashSet::new();
         let mut last_colour = None;
         for path in &trace.paths {
             // Paths come colour after colour: look each colour up once.
@@ -407,14 +415,17 @@ impl Builder<'_> {
             };
             last_colour = Some((path.wavelength_nm, colour));
             let mut segments = trace.segments.get(path.segments.clone()).unwrap_or(&[]);
-            if wavelengths > 1 && path.parent_hit.is_none() {
-                if let Some(first) = segments.first()
-                    && Some(path.wavelength_nm) == first_colour
-                {
+            if wavelengths > 1
+                && starts_colour_blind(trace, path)
+                && let Some((first, rest)) = segments.split_first()
+            {
+                let key = [first.from, first.to].map(|p| [p.x.to_bits(), p.y.to_bits()]);
+                if white.insert(key) {
                     let points = vec![self.layout.at(first.from), self.layout.at(first.to)];
-                    self.ray(points, palette::WHITE_LIGHT, width);
+                    let alpha = opacity(first.intensity);
+                    self.ray(points, palette::WHITE_LIGHT.with_alpha(alpha), width);
                 }
-                segments = segments.get(1..).unwrap_or(&[]);
+                segments = rest;
             }
             let mut run: Vec<Vec2> = Vec::new();
             let mut alpha = 0;
@@ -483,10 +494,13 @@ impl Builder<'_> {
         }
     }
 
-    /// Each shape's medium named below its handle, and the background's in the top-left corner.
+    /// Each shape's medium named below its handle, and the background's in the world's top-left
+    /// corner.
     fn media_labels(&mut self, scene: &Scene, handles: &[SceneHandle]) {
         let size = self.layout.font * 0.8;
-        let corner = self.layout.drawing.min + Vec2::splat(self.layout.font * 0.6);
+        let bounds = self.layout.bounds;
+        let top_left = self.layout.at(DVec2::new(bounds.min.x, bounds.max.y));
+        let corner = top_left.max(self.layout.drawing.min) + Vec2::splat(self.layout.font * 0.6);
         let text = medium_text(scene, scene.background());
         self.boxed_label(text, corner, (Align::Start, Align::Start), size);
         for handle in handles {
@@ -608,6 +622,24 @@ impl Builder<'_> {
     }
 }
 
+/// Whether the first segment of `path` is the same for every wavelength: a source ray's (it
+/// ends at its first kernel call), or a reflection's off a source ray's first kernel call
+/// (reflection does not depend on the index).
+fn starts_colour_blind(trace: &Trace, path: &Path) -> bool {
+    let Some(h) = path.parent_hit else {
+        return true;
+    };
+    let Some(parent) = trace.hits.get(h) else {
+        return false;
+    };
+    let first_of_its_path = h == 0 || trace.hits.get(h - 1).is_none_or(|p| p.path != parent.path);
+    first_of_its_path
+        && trace
+            .paths
+            .get(parent.path)
+            .is_some_and(|p| p.parent_hit.is_none())
+}
+
 /// The fill of a hit's marker.
 fn hit_colour(hit: &Hit) -> Colour {
     match (hit.outcome, hit.side) {
@@ -628,6 +660,9 @@ fn legend(scene: &Scene, trace: &Trace) -> Vec<(String, Colour)> {
             palette::WHITE_LIGHT,
         )),
         _ => {
+            if colours.len() > 1 {
+                pieces.push(("white light, then ".to_owned(), palette::WHITE_LIGHT));
+            }
             for nm in colours.iter().flatten() {
                 pieces.push((format!("{} ", number(*nm, 0)), wavelength_colour(*nm)));
             }
