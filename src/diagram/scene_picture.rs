@@ -137,7 +137,9 @@ impl SceneLayout {
         self.font * 0.8
     }
 
-    /// The handles of `scene`: the source, its aim, then each shape's anchor.
+    /// The handles of `scene`: the source, its aim, then each shape's anchor. A shape handle
+    /// that would cover an earlier handle (a fibre's core and cladding share their centre) is
+    /// moved down until it is clear.
     #[must_use]
     pub fn handles(&self, scene: &Scene) -> Vec<SceneHandle> {
         let source = scene.source();
@@ -145,7 +147,7 @@ impl SceneLayout {
         let aim = origin
             + self.view.direction(source.direction).normalize_or(Vec2::X) * (self.font * 5.0);
         let small = self.font * 0.5;
-        [
+        let mut handles = vec![
             SceneHandle {
                 id: SceneHandleId::Source,
                 center: origin,
@@ -156,24 +158,28 @@ impl SceneLayout {
                 center: aim,
                 radius: small,
             },
-        ]
-        .into_iter()
-        .chain(
-            scene
-                .shapes()
+        ];
+        for (i, shape) in scene.shapes().iter().enumerate() {
+            let mut center = self.at(shape.anchor());
+            // Far enough apart for the two lines of a medium label beside each.
+            let step = self.font * 2.4;
+            while handles
                 .iter()
-                .enumerate()
-                .map(|(i, shape)| SceneHandle {
-                    id: SceneHandleId::Shape(i),
-                    center: self.at(shape.anchor()),
-                    radius: small,
-                }),
-        )
-        .collect()
+                .any(|h| h.center.distance(center) < step * 0.99)
+            {
+                center.y += step;
+            }
+            handles.push(SceneHandle {
+                id: SceneHandleId::Shape(i),
+                center,
+                radius: small,
+            });
+        }
+        handles
     }
 
     /// Moves `handle` to the canvas point `p`: the source starts there, aims at it, or the
-    /// shape's anchor moves there. The caller retraces.
+    /// shape moves with its handle. The caller retraces.
     ///
     /// # Errors
     /// The scene's [`EditError`] (e.g. aiming the source at itself); the scene is unchanged.
@@ -183,12 +189,13 @@ impl SceneLayout {
             SceneHandleId::Source => scene.set_source_origin(world),
             SceneHandleId::Aim => scene.set_source_direction(world - scene.source().origin),
             SceneHandleId::Shape(i) => {
-                let anchor = scene
-                    .shapes()
-                    .get(i)
-                    .ok_or(EditError::NoSuchShape(i))?
-                    .anchor();
-                scene.move_shape(i, world - anchor)
+                // The handle may sit beside the anchor: the shape moves as far as its handle.
+                let at = self
+                    .handles(scene)
+                    .into_iter()
+                    .find(|h| h.id == handle)
+                    .map_or(p, |h| h.center);
+                scene.move_shape(i, world - self.view.to_world(at))
             }
         }
     }
@@ -494,7 +501,7 @@ impl Builder<'_> {
         }
     }
 
-    /// Each shape's medium named below its handle, and the background's in the world's top-left
+    /// Each shape's medium named beside its handle, and the background's in the world's top-left
     /// corner.
     fn media_labels(&mut self, scene: &Scene, handles: &[SceneHandle]) {
         let size = self.layout.font * 0.8;
@@ -512,8 +519,8 @@ impl Builder<'_> {
                 .get(i)
                 .and_then(|s| s.medium())
                 .map_or_else(|| "screen".to_owned(), |m| medium_text(scene, m));
-            let at = handle.center + Vec2::new(0.0, handle.radius * GRAB_SCALE + size * 0.3);
-            self.boxed_label(text, at, (Align::Center, Align::Start), size);
+            let at = handle.center + Vec2::new(handle.radius * GRAB_SCALE + size * 0.3, 0.0);
+            self.boxed_label(text, at, (Align::Start, Align::Center), size);
         }
     }
 
@@ -826,6 +833,21 @@ mod tests {
             SceneHandleId::Shape(0).label(&scene),
             "Shape 1 handle (water)"
         );
+    }
+
+    #[test]
+    fn shapes_sharing_an_anchor_get_handles_apart_that_move_them_alike() {
+        let (mut scene, trace) = traced("fibre");
+        let layout = SceneLayout::new(trace.bounds, Vec2::new(1000.0, 700.0));
+        let handles = layout.handles(&scene);
+        let (cladding, core) = (handles[2], handles[3]);
+        assert_eq!(cladding.center, layout.at(scene.shapes()[0].anchor()));
+        assert!(!cladding.grab_area().overlaps(&core.grab_area()));
+        let anchor = scene.shapes()[1].anchor();
+        let p = core.center + Vec2::new(50.0, 0.0);
+        layout.drag(&mut scene, SceneHandleId::Shape(1), p).unwrap();
+        let moved = scene.shapes()[1].anchor() - anchor;
+        assert!((moved - DVec2::new(50.0 / f64::from(layout.view.scale), 0.0)).length() < 1e-5);
     }
 
     #[test]
