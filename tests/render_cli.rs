@@ -19,6 +19,20 @@ fn render(args: &[&str]) -> Output {
         .expect("the binary starts")
 }
 
+/// Runs `render` with `args` and checks it fails with exit status 2 and one line on stderr,
+/// naming the command and containing `message`.
+fn fails_in_one_line(args: &[&str], message: &str) {
+    let output = render(args);
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert_eq!(output.status.code(), Some(2), "{args:?}");
+    assert!(
+        stderr.starts_with("refraction-explorer render: "),
+        "{stderr}"
+    );
+    assert!(stderr.contains(message), "{message}: {stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+}
+
 #[test]
 fn a_state_file_renders_at_the_requested_size() {
     let folder = folder("ok");
@@ -72,15 +86,7 @@ fn bad_input_is_one_clear_line_and_a_non_zero_exit() {
             "/nonexistent-folder/x.png",
         ),
     ] {
-        let output = render(&args);
-        let stderr = String::from_utf8(output.stderr).unwrap();
-        assert_eq!(output.status.code(), Some(2), "{args:?}");
-        assert!(
-            stderr.starts_with("refraction-explorer render: "),
-            "{stderr}"
-        );
-        assert!(stderr.contains(message), "{stderr}");
-        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        fails_in_one_line(&args, message);
     }
     assert!(!folder.join("x.png").exists());
     std::fs::remove_dir_all(&folder).unwrap();
@@ -135,15 +141,7 @@ fn a_bad_scene_or_a_scene_with_a_state_is_one_clear_line() {
         ),
         (vec!["droplet", "--out", out, "--width", "9"], "9×1080"),
     ] {
-        let output = render(&args);
-        let stderr = String::from_utf8(output.stderr).unwrap();
-        assert_eq!(output.status.code(), Some(2), "{args:?}");
-        assert!(
-            stderr.starts_with("refraction-explorer render: "),
-            "{stderr}"
-        );
-        assert!(stderr.contains(message), "{message}: {stderr}");
-        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        fails_in_one_line(&args, message);
     }
     assert!(!folder.join("x.png").exists());
     std::fs::remove_dir_all(&folder).unwrap();

@@ -23,13 +23,21 @@ fn droplet() -> Harness<'static, Explorer> {
     harness(explorer)
 }
 
-/// Presses and releases the pointer at `at`.
-fn click_at(harness: &mut Harness<'_, Explorer>, at: Pos2) {
-    harness.hover_at(at);
+/// Presses the pointer at `path`'s first point, moves it through the rest and releases it at
+/// the last: a click when the path is one point, a drag otherwise.
+fn press_move_release(harness: &mut Harness<'_, Explorer>, path: &[Pos2]) {
+    let (Some(&first), Some(&last)) = (path.first(), path.last()) else {
+        return;
+    };
+    harness.hover_at(first);
     harness.run();
-    harness.drag_at(at);
+    harness.drag_at(first);
     harness.run();
-    harness.drop_at(at);
+    for &p in &path[1..] {
+        harness.hover_at(p);
+        harness.run();
+    }
+    harness.drop_at(last);
     harness.run();
 }
 
@@ -58,16 +66,10 @@ fn dragging_the_source_retraces_the_scene() {
     let first = h.state().scenes().trace().segments[0];
     let from = h.get_by_label("Source handle").rect().center();
     let to = from + Vec2::new(0.0, 40.0);
-    h.hover_at(from);
-    h.run();
-    h.drag_at(from);
-    h.run();
-    for step in 1..=4 {
-        h.hover_at(from + (to - from) * (step as f32 / 4.0));
-        h.run();
-    }
-    h.drop_at(to);
-    h.run();
+    let path: Vec<Pos2> = (0..=4)
+        .map(|step| from + (to - from) * (step as f32 / 4.0))
+        .collect();
+    press_move_release(&mut h, &path);
     let scenes = h.state().scenes();
     let moved = scenes.scene().source().origin;
     assert!(moved.y < origin.y - 0.1, "{origin} → {moved}");
@@ -90,7 +92,7 @@ fn clicking_the_droplets_exit_opens_it_with_the_flipped_normal() {
         .find(|hit| hit.side == Side::Leaving)
         .unwrap();
     let at = scenes.to_screen(exit.point).unwrap();
-    click_at(&mut h, at);
+    press_move_release(&mut h, &[at]);
     assert_eq!(h.state().view(), View::Interface);
     let state = h.state().state();
     let refraction = state.refraction();
@@ -107,6 +109,6 @@ fn a_click_away_from_every_hit_stays_in_the_scene() {
         .scenes()
         .to_screen(glam::DVec2::new(2.5, -2.2))
         .unwrap();
-    click_at(&mut h, at);
+    press_move_release(&mut h, &[at]);
     assert_eq!(h.state().view(), View::Scenes);
 }
