@@ -69,8 +69,11 @@ enum Command {
         #[arg(long)]
         list: bool,
     },
-    /// Draw the explorer's diagram into a PNG file, without a window.
+    /// Draw the explorer's diagram, or a traced scene, into a PNG file, without a window.
     Render {
+        /// A scene to trace and draw instead of the single interface: a built-in scene's name
+        /// (see `trace --list`) or the path of a scene file (TOML).
+        scene: Option<String>,
         /// The PNG file to write (replaced atomically).
         #[arg(long, value_name = "FILE.png")]
         out: PathBuf,
@@ -80,8 +83,8 @@ enum Command {
         /// Height in pixels.
         #[arg(long, default_value_t = render::DEFAULT_SIZE.1)]
         height: u32,
-        /// The problem to draw, as JSON with the fields of `solve` (default: 40° from air into
-        /// glass).
+        /// The single-interface problem to draw, as JSON with the fields of `solve` (default: 40°
+        /// from air into glass); not with SCENE.
         #[arg(long, value_name = "FILE.json")]
         state: Option<PathBuf>,
     },
@@ -97,11 +100,12 @@ fn main() -> ExitCode {
         }
         Some(Command::Trace { scene, json, list }) => commands::trace::run(&scene, json, list),
         Some(Command::Render {
+            scene,
             out,
             width,
             height,
             state,
-        }) => commands::render::run(&out, width, height, state.as_deref()),
+        }) => commands::render::run(scene.as_deref(), &out, width, height, state.as_deref()),
         None => commands::render::explorer(cli.state.as_deref()),
     }
 }

@@ -1,7 +1,9 @@
-//! The `render` command end to end: a PNG of the diagram without a window.
+//! The `render` command end to end: a PNG of the diagram or of a traced scene without a window.
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
+
+use refraction_explorer::diagram::spectrum::wavelength_colour;
 
 fn folder(name: &str) -> PathBuf {
     let folder = std::env::temp_dir().join(format!("render-cli-{}-{name}", std::process::id()));
@@ -15,6 +17,20 @@ fn render(args: &[&str]) -> Output {
         .args(args)
         .output()
         .expect("the binary starts")
+}
+
+/// Runs `render` with `args` and checks it fails with exit status 2 and one line on stderr,
+/// naming the command and containing `message`.
+fn fails_in_one_line(args: &[&str], message: &str) {
+    let output = render(args);
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert_eq!(output.status.code(), Some(2), "{args:?}");
+    assert!(
+        stderr.starts_with("refraction-explorer render: "),
+        "{stderr}"
+    );
+    assert!(stderr.contains(message), "{message}: {stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
 }
 
 #[test]
@@ -70,15 +86,62 @@ fn bad_input_is_one_clear_line_and_a_non_zero_exit() {
             "/nonexistent-folder/x.png",
         ),
     ] {
-        let output = render(&args);
-        let stderr = String::from_utf8(output.stderr).unwrap();
-        assert_eq!(output.status.code(), Some(2), "{args:?}");
-        assert!(
-            stderr.starts_with("refraction-explorer render: "),
-            "{stderr}"
-        );
-        assert!(stderr.contains(message), "{stderr}");
-        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        fails_in_one_line(&args, message);
+    }
+    assert!(!folder.join("x.png").exists());
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn a_scene_renders_with_its_rays_in_their_wavelengths_colours() {
+    let folder = folder("scene");
+    let out = folder.join("prism.png");
+    let output = render(&[
+        "dispersing-prism",
+        "--out",
+        out.to_str().unwrap(),
+        "--width",
+        "800",
+        "--height",
+        "500",
+    ]);
+    assert!(output.status.success(), "{output:?}");
+    let png = tiny_skia::Pixmap::load_png(&out).unwrap();
+    assert_eq!((png.width(), png.height()), (800, 500));
+    let red = wavelength_colour(700.0);
+    let violet = wavelength_colour(400.0);
+    for colour in [red, violet] {
+        let count = png
+            .pixels()
+            .iter()
+            .filter(|p| (p.red(), p.green(), p.blue()) == (colour.r, colour.g, colour.b))
+            .count();
+        assert!(count > 20, "{count} pixels of {colour:?}");
+    }
+    assert_eq!(std::fs::read_dir(&folder).unwrap().count(), 1);
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn a_bad_scene_or_a_scene_with_a_state_is_one_clear_line() {
+    let folder = folder("bad-scene");
+    let scene = folder.join("broken.toml");
+    std::fs::write(&scene, "title = \"x\"\n[source]\nkind = \"laser\"\n").unwrap();
+    let out = folder.join("x.png");
+    let out = out.to_str().unwrap();
+    for (args, message) in [
+        (
+            vec!["droplet", "--out", out, "--state", "s.json"],
+            "not both",
+        ),
+        (vec!["no-such-scene", "--out", out], "no-such-scene"),
+        (
+            vec![scene.to_str().unwrap(), "--out", out],
+            "broken.toml:3:",
+        ),
+        (vec!["droplet", "--out", out, "--width", "9"], "9×1080"),
+    ] {
+        fails_in_one_line(&args, message);
     }
     assert!(!folder.join("x.png").exists());
     std::fs::remove_dir_all(&folder).unwrap();

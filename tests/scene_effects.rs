@@ -1,10 +1,11 @@
-//! The tracer computes what a scene asks for and nothing else; every scene file loads and
-//! traces; no input makes loading or tracing panic.
+//! The tracer computes what a scene asks for and nothing else; every scene file loads, traces
+//! and renders; no input makes loading or tracing panic.
 
 use std::path::Path;
 
 use glam::DVec2;
 use proptest::prelude::*;
+use refraction_explorer::render;
 use refraction_explorer::scene::{
     Counts, DEFAULT_SCENE, EditError, Effects, Outcome, Scene, Trace, catalogue,
 };
@@ -44,7 +45,7 @@ fn computes_only_what_is_asked(name: &str, effects: &Effects, trace: &Trace) {
 }
 
 #[test]
-fn every_file_in_assets_is_built_in_loads_and_traces() {
+fn every_file_in_assets_is_built_in_loads_traces_and_renders() {
     let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes");
     let mut files: Vec<String> = std::fs::read_dir(&folder)
         .unwrap()
@@ -69,6 +70,8 @@ fn every_file_in_assets_is_built_in_loads_and_traces() {
         for s in &trace.segments {
             assert!(s.from.is_finite() && s.to.is_finite(), "{name}");
         }
+        let png = render::render_scene(&from_file, 640, 360).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!((png.width(), png.height()), (640, 360), "{name}");
     }
 }
 

@@ -8,6 +8,7 @@
 use egui::{Button, Key, KeyboardShortcut, Modifiers, Ui};
 
 use crate::diagram::ExplorerState;
+use crate::scene::Scene;
 
 /// How many steps back the history reaches; older ones are forgotten.
 pub const LIMIT: usize = 1000;
@@ -17,6 +18,17 @@ pub const LIMIT: usize = 1000;
 pub struct Snapshot {
     /// The single interface: W, N, μ_i, μ_t and the convention.
     pub interface: ExplorerState,
+    /// The Scenes view's scene as edited: which scene, its source and its shapes.
+    pub scene: Scene,
+}
+
+impl Snapshot {
+    /// Whether this snapshot already holds `interface` and `scene` (compared in place, so that
+    /// nothing is copied on the frames where nothing changed).
+    #[must_use]
+    pub fn holds(&self, interface: &ExplorerState, scene: &Scene) -> bool {
+        self.interface == *interface && self.scene == *scene
+    }
 }
 
 /// A linear history of values: the present, what came before it and what was undone.
@@ -50,11 +62,21 @@ impl<T: Clone + PartialEq> History<T> {
     /// Records `now` as a new step if it differs from the present; a new step forgets what was
     /// undone.
     pub fn record(&mut self, now: &T) {
-        if *now == self.present {
-            return;
+        if *now != self.present {
+            self.push(now.clone());
         }
-        self.past
-            .push(std::mem::replace(&mut self.present, now.clone()));
+    }
+
+    /// Records `make()` as the present unless `unchanged` says the present already holds it:
+    /// for values that are costly to build every frame.
+    pub fn record_unless(&mut self, unchanged: impl FnOnce(&T) -> bool, make: impl FnOnce() -> T) {
+        if !unchanged(&self.present) {
+            self.push(make());
+        }
+    }
+
+    fn push(&mut self, now: T) {
+        self.past.push(std::mem::replace(&mut self.present, now));
         if self.past.len() > LIMIT {
             self.past.remove(0);
         }

@@ -1,5 +1,6 @@
 //! The explorer window (eframe/egui): controls on the left, the interactive diagram in the
-//! middle, the kernel's numbers on the right. The state lives in [`ExplorerState`]; drawing
+//! middle, the kernel's numbers on the right; or, in the Scenes view ([`ScenesView`]), a traced
+//! scene whose hit points open here. The state lives in [`ExplorerState`]; drawing
 //! comes from [`crate::diagram`]; nothing here computes refraction.
 //!
 //! The classroom tools each live in their own module: [`history`] (undo/redo), [`presentation`],
@@ -14,6 +15,7 @@ pub mod history;
 mod paint;
 pub mod presentation;
 mod readouts;
+mod scenes;
 mod tools;
 mod typed;
 pub mod walkthrough;
@@ -21,11 +23,13 @@ pub mod walkthrough;
 use egui::{Panel, ScrollArea, Ui};
 
 use crate::diagram::{ExplorerState, Overlay};
+use crate::scene::Scene;
 use crate::state_file;
 use accuracy::AccuracyView;
 use controls::Controls;
 use history::{History, Snapshot};
 use presentation::Presentation;
+pub use scenes::ScenesView;
 use tools::Tools;
 
 /// The window title.
@@ -43,19 +47,22 @@ pub enum View {
     /// One interface at a hit point: drag W, N and μ.
     #[default]
     Interface,
+    /// A traced scene: drag the source and the shapes, click a hit to open it.
+    Scenes,
     /// What accuracy costs in time: the `bench` measurement, plotted.
     Accuracy,
 }
 
 impl View {
     /// Every view, in the order of the bar.
-    pub const ALL: [Self; 2] = [Self::Interface, Self::Accuracy];
+    pub const ALL: [Self; 3] = [Self::Interface, Self::Scenes, Self::Accuracy];
 
     /// The view's name in the bar (also its accessible name).
     #[must_use]
     pub fn label(self) -> &'static str {
         match self {
             Self::Interface => "One interface",
+            Self::Scenes => "Scenes",
             Self::Accuracy => "Accuracy vs time",
         }
     }
@@ -72,29 +79,26 @@ pub struct Explorer {
     history: History<Snapshot>,
     presentation: Presentation,
     tools: Tools,
+    scenes: ScenesView,
 }
 
 impl Explorer {
     /// An explorer opened on `state`.
     #[must_use]
     pub fn new(state: ExplorerState) -> Self {
+        let scenes = ScenesView::default();
         Self {
             history: History::new(Snapshot {
                 interface: state.clone(),
+                scene: scenes.scene().clone(),
             }),
             state,
             view: View::default(),
             controls: Controls::default(),
             accuracy: AccuracyView::default(),
+            scenes,
             presentation: Presentation::default(),
             tools: Tools::default(),
-        }
-    }
-
-    /// What undo restores: everything the user edits.
-    fn snapshot(&self) -> Snapshot {
-        Snapshot {
-            interface: self.state.clone(),
         }
     }
 
@@ -119,6 +123,18 @@ impl Explorer {
             student: self.tools.student(&self.state),
             focus: self.tools.focus(&self.state),
         }
+    }
+
+    /// Shows `scene` in the Scenes view, and that view.
+    pub fn open_scene(&mut self, scene: Scene) {
+        self.scenes = ScenesView::new(scene);
+        self.view = View::Scenes;
+    }
+
+    /// The Scenes view's state.
+    #[must_use]
+    pub fn scenes(&self) -> &ScenesView {
+        &self.scenes
     }
 
     /// The state being explored.
@@ -148,6 +164,7 @@ impl Explorer {
                     && let Some(snapshot) = self.history.travel(travel)
                 {
                     self.state = snapshot.interface;
+                    self.scenes.restore(snapshot.scene);
                 }
                 ui.separator();
                 self.presentation.controls(ui);
@@ -157,6 +174,12 @@ impl Explorer {
         });
         match self.view {
             View::Interface => self.show_interface(ui),
+            View::Scenes => {
+                if let Some(state) = self.scenes.show(ui) {
+                    self.state = state;
+                    self.view = View::Interface;
+                }
+            }
             View::Accuracy => {
                 egui::CentralPanel::default().show(ui, |ui| {
                     ScrollArea::vertical().show(ui, |ui| self.accuracy.show(ui));
@@ -165,7 +188,14 @@ impl Explorer {
         }
         let settled = !ui.input(|i| i.pointer.any_down()) && !self.tools.walk.animating();
         if settled {
-            self.history.record(&self.snapshot());
+            let (state, scene) = (&self.state, self.scenes.scene());
+            self.history.record_unless(
+                |present| present.holds(state, scene),
+                || Snapshot {
+                    interface: state.clone(),
+                    scene: scene.clone(),
+                },
+            );
         }
     }
 

@@ -1,6 +1,7 @@
 //! Draws the diagram's primitives with an egui painter, the screen twin of `render`.
 
 use egui::emath::RectTransform;
+use egui::epaint::CircleShape;
 use egui::{Align2, Color32, FontId, Painter, Pos2, Shape, Stroke};
 use glam::Vec2;
 
@@ -22,14 +23,16 @@ fn align(a: Align) -> egui::Align {
     }
 }
 
-/// Paints `primitives` (canvas pixels) through `to_screen` (canvas → screen points).
+/// Paints `primitives` (canvas pixels) through `to_screen` (canvas → screen points), handing
+/// them to egui in one batch (each separate `Painter::add` takes the context's lock).
 pub fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[Primitive]) {
     let at = |p: Vec2| to_screen.transform_pos(Pos2::new(p.x, p.y));
     let points = |ps: &[Vec2]| ps.iter().map(|p| at(*p)).collect::<Vec<_>>();
+    let mut shapes = Vec::with_capacity(primitives.len());
     for primitive in primitives {
         match primitive {
             Primitive::Polygon { points: ps, colour } => {
-                painter.add(Shape::convex_polygon(
+                shapes.push(Shape::convex_polygon(
                     points(ps),
                     color(*colour),
                     Stroke::NONE,
@@ -40,7 +43,13 @@ pub fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[Primiti
                 width,
                 colour,
             } => {
-                painter.add(Shape::line(points(ps), Stroke::new(*width, color(*colour))));
+                let stroke = Stroke::new(*width, color(*colour));
+                // Most rays of a scene are single segments: no point list to allocate.
+                shapes.push(if let [a, b] = ps.as_slice() {
+                    Shape::line_segment([at(*a), at(*b)], stroke)
+                } else {
+                    Shape::line(points(ps), stroke)
+                });
             }
             Primitive::Disc {
                 center,
@@ -49,12 +58,12 @@ pub fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[Primiti
                 outline_width,
                 outline,
             } => {
-                painter.circle(
-                    at(*center),
-                    *radius,
-                    color(*fill),
-                    Stroke::new(*outline_width, color(*outline)),
-                );
+                shapes.push(Shape::Circle(CircleShape {
+                    center: at(*center),
+                    radius: *radius,
+                    fill: color(*fill),
+                    stroke: Stroke::new(*outline_width, color(*outline)),
+                }));
             }
             Primitive::Text(label) => {
                 let galley = painter.layout_no_wrap(
@@ -65,10 +74,12 @@ pub fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[Primiti
                 let anchor = Align2([align(label.h), align(label.v)]);
                 let rect = anchor.anchor_size(at(label.at), galley.size());
                 if let Some(background) = label.background {
-                    painter.rect_filled(rect.expand(label.size * 0.2), 0.0, color(background));
+                    let back = rect.expand(label.size * 0.2);
+                    shapes.push(Shape::rect_filled(back, 0.0, color(background)));
                 }
-                painter.galley(rect.min, galley, color(label.colour));
+                shapes.push(Shape::galley(rect.min, galley, color(label.colour)));
             }
         }
     }
+    painter.extend(shapes);
 }

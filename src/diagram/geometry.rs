@@ -70,6 +70,15 @@ impl Rect {
         }
     }
 
+    /// The square of half-side `half` centred on `center`.
+    #[must_use]
+    pub fn around(center: Vec2, half: f32) -> Self {
+        Self {
+            min: center - Vec2::splat(half),
+            max: center + Vec2::splat(half),
+        }
+    }
+
     /// Width and height.
     #[must_use]
     pub fn size(&self) -> Vec2 {
@@ -123,6 +132,64 @@ pub fn clip_rect_to_half_plane(rect: &Rect, through: Vec2, normal: Vec2) -> Vec<
         }
     }
     out
+}
+
+/// Twice the signed area of the triangle `a`, `b`, `c`: positive when it turns one way, negative
+/// the other, zero when the points are in a line.
+fn turn(a: Vec2, b: Vec2, c: Vec2) -> f32 {
+    (b - a).perp_dot(c - b)
+}
+
+/// A simple polygon as convex pieces that fill it together: itself when it is convex, else the
+/// triangles of ear clipping. A repeated closing point is ignored; fewer than three corners give
+/// nothing. A self-intersecting outline gives triangles that cover it only roughly, never a panic.
+#[must_use]
+pub fn convex_pieces(points: &[Vec2]) -> Vec<Vec<Vec2>> {
+    let mut corners = points.to_vec();
+    if corners.len() > 1 && corners.first() == corners.last() {
+        corners.pop();
+    }
+    if corners.len() < 3 {
+        return Vec::new();
+    }
+    let n = corners.len();
+    let turns: Vec<f32> = (0..n)
+        .map(|i| turn(corners[i], corners[(i + 1) % n], corners[(i + 2) % n]))
+        .collect();
+    if turns.iter().all(|t| *t >= 0.0) || turns.iter().all(|t| *t <= 0.0) {
+        return vec![corners];
+    }
+    let orientation: f32 = (0..n)
+        .map(|i| corners[i].perp_dot(corners[(i + 1) % n]))
+        .sum::<f32>()
+        .signum();
+    let mut triangles = Vec::with_capacity(n - 2);
+    while corners.len() > 3 {
+        let m = corners.len();
+        let is_ear = |i: usize| {
+            let (a, b, c) = (corners[(i + m - 1) % m], corners[i], corners[(i + 1) % m]);
+            turn(a, b, c) * orientation > 0.0
+                && corners.iter().all(|&p| {
+                    p == a
+                        || p == b
+                        || p == c
+                        || turn(a, b, p) * orientation < 0.0
+                        || turn(b, c, p) * orientation < 0.0
+                        || turn(c, a, p) * orientation < 0.0
+                })
+        };
+        // A degenerate outline may have no ear: cut its first corner anyway, so that the loop
+        // always ends.
+        let ear = (0..m).find(|&i| is_ear(i)).unwrap_or(0);
+        triangles.push(vec![
+            corners[(ear + m - 1) % m],
+            corners[ear],
+            corners[(ear + 1) % m],
+        ]);
+        corners.remove(ear);
+    }
+    triangles.push(corners);
+    triangles
 }
 
 /// The part of the segment `a`–`b` inside `rect` (Liang–Barsky), or `None`.
@@ -278,6 +345,38 @@ mod tests {
         assert_eq!(head[0], Vec2::ZERO);
         assert!(head[1].x < 0.0 && head[2].x < 0.0);
         assert!(arrowhead(Vec2::ZERO, Vec2::ZERO, 10.0).is_empty());
+    }
+
+    fn area(polygon: &[Vec2]) -> f32 {
+        let n = polygon.len();
+        (0..n)
+            .map(|i| polygon[i].perp_dot(polygon[(i + 1) % n]))
+            .sum::<f32>()
+            .abs()
+            / 2.0
+    }
+
+    #[test]
+    fn a_convex_polygon_stays_whole_and_a_concave_one_becomes_triangles_of_the_same_area() {
+        let square = [Vec2::ZERO, Vec2::X, Vec2::ONE, Vec2::Y, Vec2::ZERO];
+        assert_eq!(convex_pieces(&square), vec![square[..4].to_vec()]);
+        let l_shape = [
+            Vec2::ZERO,
+            Vec2::new(2.0, 0.0),
+            Vec2::new(2.0, 1.0),
+            Vec2::new(1.0, 1.0),
+            Vec2::new(1.0, 2.0),
+            Vec2::new(0.0, 2.0),
+        ];
+        for outline in [l_shape.to_vec(), l_shape.iter().rev().copied().collect()] {
+            let pieces = convex_pieces(&outline);
+            assert_eq!(pieces.len(), 4);
+            let total: f32 = pieces.iter().map(|t| area(t)).sum();
+            assert!((total - 3.0).abs() < 1e-5, "{pieces:?}");
+        }
+        assert!(convex_pieces(&[Vec2::ZERO, Vec2::X]).is_empty());
+        let bow_tie = [Vec2::ZERO, Vec2::ONE, Vec2::X, Vec2::Y];
+        assert_eq!(convex_pieces(&bow_tie).len(), 2);
     }
 
     #[test]

@@ -30,6 +30,29 @@ impl View {
         Vec2::new(world.x as f32, -(world.y as f32))
     }
 
+    /// The map that shows the world rectangle `min`–`max` as large as fits in `rect`, centred,
+    /// y up. A rectangle with no area (or not finite) is shown at 1 pixel per world unit.
+    #[must_use]
+    pub fn fitted(min: DVec2, max: DVec2, rect: &Rect) -> Self {
+        let world = (max - min).as_vec2();
+        let fit = (rect.size() / world).min_element();
+        let scale = if fit.is_finite() && fit > 0.0 {
+            fit
+        } else {
+            1.0
+        };
+        let center = (min + max) * 0.5;
+        let center = if center.is_finite() {
+            center
+        } else {
+            DVec2::ZERO
+        };
+        Self {
+            origin: rect.center() - Vec2::new(center.x as f32, -(center.y as f32)) * scale,
+            scale,
+        }
+    }
+
     /// The world point of a canvas point.
     #[must_use]
     pub fn to_world(&self, canvas: Vec2) -> DVec2 {
@@ -72,6 +95,13 @@ impl IndexScale {
     }
 }
 
+/// The label font size in pixels for a canvas `size` pixels wide and high: larger canvases
+/// (a projector, a 1080p export) get larger text, within limits.
+#[must_use]
+pub fn font_size(size: Vec2) -> f32 {
+    (size.min_element() / 48.0).clamp(13.0, 30.0)
+}
+
 /// Where everything goes on a canvas of one size.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Layout {
@@ -94,7 +124,7 @@ impl Layout {
     #[must_use]
     pub fn new(size: Vec2) -> Self {
         let size = size.max(Vec2::ONE);
-        let font = (size.min_element() / 48.0).clamp(13.0, 30.0);
+        let font = font_size(size);
         let canvas = Rect::from_min_size(Vec2::ZERO, size);
         let banner = Rect::from_min_size(Vec2::ZERO, Vec2::new(size.x, font * 3.2));
         let scale_width = font * 10.0;
@@ -156,6 +186,18 @@ mod tests {
                 .drawing
                 .contains(view.to_canvas(DVec2::new(1.0, 1.0)))
         );
+    }
+
+    #[test]
+    fn a_fitted_view_shows_the_whole_world_rectangle_centred() {
+        let rect = Rect::from_min_size(Vec2::new(0.0, 100.0), Vec2::new(800.0, 400.0));
+        let view = View::fitted(DVec2::new(-4.0, -1.0), DVec2::new(4.0, 3.0), &rect);
+        assert_eq!(view.scale, 100.0);
+        assert_eq!(view.to_canvas(DVec2::new(0.0, 1.0)), rect.center());
+        assert_eq!(view.to_canvas(DVec2::new(-4.0, 3.0)), Vec2::new(0.0, 100.0));
+        let flat = View::fitted(DVec2::ONE, DVec2::ONE, &rect);
+        assert_eq!(flat.scale, 1.0);
+        assert_eq!(flat.to_canvas(DVec2::ONE), rect.center());
     }
 
     #[test]

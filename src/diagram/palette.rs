@@ -39,6 +39,10 @@ pub const CALM: Colour = Colour::hex(0xEEF2F6);
 pub const THIN_MEDIUM: Colour = Colour::hex(0xF6F9FC);
 /// A medium with the index at the top of the scale.
 pub const DENSE_MEDIUM: Colour = Colour::hex(0x8DB6DC);
+/// White light traced at one wavelength (no dispersion asked for): neutral on the light canvas.
+pub const WHITE_LIGHT: Colour = Colour::hex(0x767676);
+/// Beyond the world rectangle of a scene, where no ray goes.
+pub const OUTSIDE_WORLD: Colour = Colour::hex(0xE2E5E9);
 /// Behind labels.
 pub const LABEL_BACKGROUND: Colour = Colour::hex(0xFFFFFF).with_alpha(210);
 

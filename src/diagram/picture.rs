@@ -56,8 +56,12 @@ fn medium_text(symbol: &str, index: f64) -> String {
     format!("{symbol} = {index} ({name})")
 }
 
-/// The shade of a medium: lighter for lower index.
-fn medium_colour(palette: &Palette, index: f64) -> Colour {
+/// How much larger than a handle its grab area is (half-side over radius).
+pub const GRAB_SCALE: f32 = 1.6;
+
+/// The shade of a medium in `palette`: lighter for lower index (clamped to [`INDEX_RANGE`]).
+#[must_use]
+pub fn medium_colour(palette: &Palette, index: f64) -> Colour {
     let (low, high) = INDEX_RANGE;
     palette
         .thin_medium
@@ -632,11 +636,7 @@ impl Diagram {
     /// A handle's grab area on the canvas.
     #[must_use]
     pub fn grab_area(handle: &Handle) -> Rect {
-        let half = Vec2::splat(handle.radius * 1.6);
-        Rect {
-            min: handle.center - half,
-            max: handle.center + half,
-        }
+        Rect::around(handle.center, handle.radius * GRAB_SCALE)
     }
 
     /// Moves `handle` to the canvas point `p`: W and N point at it, a μ marker takes the index

@@ -12,7 +12,8 @@ use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Transfo
 use crate::atomic::write_atomically;
 use crate::diagram::font::Typeface;
 use crate::diagram::geometry::Colour;
-use crate::diagram::{Diagram, ExplorerState, Overlay, Primitive};
+use crate::diagram::{Diagram, ExplorerState, Overlay, Primitive, SceneLayout, ScenePicture};
+use crate::scene::Scene;
 
 /// The export size when none is given.
 pub const DEFAULT_SIZE: (u32, u32) = (1920, 1080);
@@ -240,6 +241,32 @@ pub fn export_accuracy_plot(
     write_png(&pixmap, path)
 }
 
+/// `scene`, traced, drawn on a `width` × `height` pixmap as the explorer's Scenes view shows
+/// it.
+///
+/// # Errors
+/// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
+pub fn render_scene(scene: &Scene, width: u32, height: u32) -> Result<Pixmap, RenderError> {
+    let trace = scene.trace();
+    draw_primitives(width, height, |size, _| {
+        ScenePicture::new(scene, &trace, &SceneLayout::new(trace.bounds, size)).primitives
+    })
+}
+
+/// Writes `scene`, traced, as a PNG file at `path`, atomically.
+///
+/// # Errors
+/// As [`render_scene`], a failed encoding, or the file cannot be written (the message names
+/// it).
+pub fn export_scene(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    path: &Path,
+) -> Result<(), RenderError> {
+    write_png(&render_scene(scene, width, height)?, path)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -270,6 +297,33 @@ mod tests {
             on_t >= 39,
             "only {on_t} of 41 pixels along T have T's colour"
         );
+    }
+
+    #[test]
+    fn every_built_in_scene_renders_with_its_rays_in_their_colours() {
+        for info in crate::scene::catalogue() {
+            let scene = Scene::embedded(info.name).unwrap();
+            let pixmap = render_scene(&scene, 800, 500).unwrap();
+            assert_eq!((pixmap.width(), pixmap.height()), (800, 500));
+            let colours: Vec<_> = scene
+                .source()
+                .colours(scene.effects().dispersion)
+                .into_iter()
+                .map(crate::diagram::spectrum::ray_colour)
+                .collect();
+            // Rays are translucent where the scene computes intensities: count pixels near a
+            // ray colour rather than equal to it.
+            let near = |p: &tiny_skia::PremultipliedColorU8, c: &Colour| {
+                let d = |x: u8, y: u8| i32::from(x).abs_diff(i32::from(y));
+                d(p.red(), c.r) + d(p.green(), c.g) + d(p.blue(), c.b) < 40
+            };
+            let on_rays = pixmap
+                .pixels()
+                .iter()
+                .filter(|p| colours.iter().any(|c| near(p, c)))
+                .count();
+            assert!(on_rays > 100, "{}: {on_rays} ray pixels", info.name);
+        }
     }
 
     #[test]

@@ -1,0 +1,285 @@
+//! The Scenes view: a picker of the built-in scenes and the traced scene on a canvas, where the
+//! source, its direction and each shape are dragged (the scene is retraced into the same
+//! [`Trace`] on every change) and a click on a hit point opens it in the single-interface view.
+
+use egui::emath::RectTransform;
+use egui::{
+    CentralPanel, ComboBox, CursorIcon, Panel, Pos2, Rect, RichText, Role, Sense, Slider,
+    SliderClamping, Ui, WidgetInfo,
+};
+use glam::{DVec2, Vec2};
+
+use super::paint::{color, paint};
+use crate::diagram::palette::{self, number};
+use crate::diagram::shapes::{Align, Label};
+use crate::diagram::{ExplorerState, Primitive, SceneLayout, ScenePicture};
+use crate::scene::{
+    DEFAULT_SCENE, EditError, Hit, Scene, SceneInfo, Side, SourceKind, Trace, catalogue,
+    traced_wavelength,
+};
+
+/// The most rays the slider offers: enough to see a caustic, few enough to drag smoothly.
+const MAX_SLIDER_RAYS: usize = 1000;
+
+/// The Scenes view's state: the scene as edited, its trace, and what the canvas remembers
+/// between frames.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScenesView {
+    catalogue: Vec<SceneInfo>,
+    /// The scene as loaded, for *Reset*.
+    original: Scene,
+    scene: Scene,
+    trace: Trace,
+    /// The layout at the start of the drag under way: a scene without a `[view]` is fitted to
+    /// its source and shapes, and refitting while dragging would move the world under the
+    /// pointer.
+    drag_layout: Option<SceneLayout>,
+    error: Option<String>,
+    /// Where the canvas was drawn in the last frame, with the layout it used.
+    drawn: Option<(Rect, SceneLayout)>,
+}
+
+impl Default for ScenesView {
+    /// The default built-in scene.
+    fn default() -> Self {
+        let scene = Scene::embedded(DEFAULT_SCENE)
+            .unwrap_or_else(|e| unreachable!("the built-in scenes load (tested): {e}"));
+        Self::new(scene)
+    }
+}
+
+/// What the overlay beside a hovered hit says.
+fn hit_text(scene: &Scene, hit: &Hit) -> String {
+    let name = |m: usize| scene.media().get(m).map_or("?", |m| m.name.as_str());
+    let side = match hit.side {
+        Side::Entering => "entering",
+        Side::Leaving => "leaving: the kernel turns N round",
+    };
+    format!(
+        "{} into {} ({side})\nμi = {}, μt = {}, {} nm\nclick: open in One interface",
+        name(hit.from_medium),
+        name(hit.to_medium),
+        number(hit.mu_i, 4),
+        number(hit.mu_t, 4),
+        number(traced_wavelength(hit.wavelength_nm), 1)
+    )
+}
+
+impl ScenesView {
+    /// The view showing `scene`, traced.
+    #[must_use]
+    pub fn new(scene: Scene) -> Self {
+        let trace = scene.trace();
+        Self {
+            catalogue: catalogue(),
+            original: scene.clone(),
+            scene,
+            trace,
+            drag_layout: None,
+            error: None,
+            drawn: None,
+        }
+    }
+
+    /// The scene as edited.
+    #[must_use]
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// Its trace.
+    #[must_use]
+    pub fn trace(&self) -> &Trace {
+        &self.trace
+    }
+
+    /// Where the world point `world` was drawn in the last frame, in screen points (`None`
+    /// before the view was first shown).
+    #[must_use]
+    pub fn to_screen(&self, world: DVec2) -> Option<Pos2> {
+        self.drawn.map(|(rect, layout)| {
+            let p = layout.at(world);
+            rect.min + egui::vec2(p.x, p.y)
+        })
+    }
+
+    /// Shows the scene afresh, and keeps it for *Reset*.
+    fn open(&mut self, scene: Scene) {
+        self.original = scene.clone();
+        self.scene = scene;
+        self.error = None;
+        self.drag_layout = None;
+        self.scene.retrace(&mut self.trace);
+    }
+
+    /// Puts back a scene from the undo history: the same scene edited differently is retraced
+    /// in place (*Reset* still goes back to it as loaded); another scene is opened afresh.
+    pub fn restore(&mut self, scene: Scene) {
+        if scene == self.scene {
+            return;
+        }
+        if scene.name() == self.original.name() {
+            self.scene = scene;
+            self.error = None;
+            self.scene.retrace(&mut self.trace);
+        } else {
+            self.open(scene);
+        }
+    }
+
+    /// Applies an edit and retraces, or keeps the scene and says why the edit was refused.
+    fn edit(&mut self, edit: impl FnOnce(&mut Scene) -> Result<(), EditError>) {
+        match edit(&mut self.scene) {
+            Ok(()) => {
+                self.error = None;
+                self.scene.retrace(&mut self.trace);
+            }
+            Err(e) => self.error = Some(e.to_string()),
+        }
+    }
+
+    /// Shows the view in `ui`: the controls strip, then the canvas. Returns the single-interface
+    /// problem of the hit point clicked, if one was.
+    pub fn show(&mut self, ui: &mut Ui) -> Option<ExplorerState> {
+        Panel::top("scene controls").show(ui, |ui| self.controls(ui));
+        CentralPanel::no_frame()
+            .show(ui, |ui| self.canvas(ui))
+            .inner
+    }
+
+    fn controls(&mut self, ui: &mut Ui) {
+        ui.horizontal(|ui| {
+            let mut picked = self.scene.name().to_owned();
+            ComboBox::from_label("Scene")
+                .selected_text(self.scene.title())
+                .show_ui(ui, |ui| {
+                    for info in &self.catalogue {
+                        ui.selectable_value(&mut picked, info.name.to_owned(), &info.title);
+                    }
+                });
+            if picked != self.scene.name() {
+                match Scene::embedded(&picked) {
+                    Ok(scene) => self.open(scene),
+                    Err(e) => self.error = Some(e.to_string()),
+                }
+            }
+            if self.scene.source().kind != SourceKind::Ray {
+                let mut rays = self.scene.source().rays;
+                let slider = Slider::new(&mut rays, 1..=MAX_SLIDER_RAYS)
+                    .logarithmic(true)
+                    .clamping(SliderClamping::Never)
+                    .text("Rays");
+                if ui.add(slider).changed() {
+                    self.edit(|s| s.set_ray_count(rays));
+                }
+            }
+            if ui
+                .button("Reset")
+                .on_hover_text("the scene as its file has it")
+                .clicked()
+            {
+                self.open(self.original.clone());
+            }
+        });
+        ui.label(self.scene.description());
+        ui.label(
+            RichText::new(
+                "Drag the source (amber), its direction (the ring at the end of the dashed arrow) \
+                 or a shape's handle; click a hit point to open it in One interface.",
+            )
+            .weak(),
+        );
+        if let Some(error) = &self.error {
+            ui.label(RichText::new(format!("⚠ {error}")).color(color(palette::ALARM)));
+        }
+    }
+
+    /// The canvas: handles dragged first (retracing), then the picture painted once; a click
+    /// near a hit point returns its problem.
+    fn canvas(&mut self, ui: &mut Ui) -> Option<ExplorerState> {
+        let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click());
+        let rect = response.rect;
+        let to_screen = RectTransform::from_to(Rect::from_min_size(Pos2::ZERO, rect.size()), rect);
+        let from_screen = to_screen.inverse();
+        let canvas_point = |p: Pos2| {
+            let p = from_screen.transform_pos(p);
+            Vec2::new(p.x, p.y)
+        };
+        let layout = self.drag_layout.unwrap_or_else(|| {
+            SceneLayout::new(self.trace.bounds, Vec2::new(rect.width(), rect.height()))
+        });
+        let mut dragging = false;
+        // A handle may sit on a hit point (a line's anchor where the ray meets it): a click on
+        // it, without a drag, still picks the hit.
+        let mut clicked_at = response
+            .interact_pointer_pos()
+            .filter(|_| response.clicked());
+        for handle in layout.handles(&self.scene) {
+            let area = handle.grab_area();
+            let grab_rect = Rect::from_min_max(
+                to_screen.transform_pos(Pos2::new(area.min.x, area.min.y)),
+                to_screen.transform_pos(Pos2::new(area.max.x, area.max.y)),
+            );
+            let id = response.id.with(handle.id);
+            let grab = ui.interact(grab_rect, id, Sense::click_and_drag());
+            if grab.clicked() {
+                clicked_at = grab.interact_pointer_pos();
+            }
+            let label = handle.id.label(&self.scene);
+            grab.widget_info(|| WidgetInfo::labeled(Role::Button, true, &label));
+            if let Some(pointer) = grab.interact_pointer_pos().filter(|_| grab.dragged()) {
+                dragging = true;
+                self.edit(|scene| layout.drag(scene, handle.id, canvas_point(pointer)));
+            }
+            if grab.hovered() || grab.dragged() {
+                ui.ctx().set_cursor_icon(CursorIcon::Grab);
+            }
+        }
+        self.drag_layout = dragging.then_some(layout);
+        self.drawn = Some((rect, layout));
+        let picture = ScenePicture::new(&self.scene, &self.trace, &layout);
+        paint(&painter, &to_screen, &picture.primitives);
+        response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &picture.summary));
+        let hovered = response
+            .hover_pos()
+            .and_then(|p| layout.hit_near(&self.trace, canvas_point(p)));
+        if let Some(hit) = hovered {
+            let center = layout.at(hit.point);
+            let ring = egui::Stroke::new(2.0, color(palette::INK));
+            painter.circle_stroke(
+                to_screen.transform_pos(Pos2::new(center.x, center.y)),
+                layout.pick_radius(),
+                ring,
+            );
+            let size = layout.font * 0.8;
+            // Beside the hit, on the side with more room.
+            let side = if center.x < layout.canvas.center().x {
+                1.0
+            } else {
+                -1.0
+            };
+            let label = Label {
+                text: hit_text(&self.scene, hit),
+                at: center + Vec2::new(side * (layout.pick_radius() + size * 0.5), 0.0),
+                h: Align::away(side),
+                v: Align::Center,
+                size,
+                colour: palette::INK,
+                background: Some(palette::BACKGROUND),
+            };
+            paint(&painter, &to_screen, &[Primitive::Text(label)]);
+            ui.ctx().set_cursor_icon(CursorIcon::PointingHand);
+        }
+        let clicked = clicked_at.and_then(|p| layout.hit_near(&self.trace, canvas_point(p)))?;
+        let problem = clicked.incidence();
+        ExplorerState::new(
+            problem.w,
+            problem.n,
+            problem.mu_i,
+            problem.mu_t,
+            problem.convention,
+        )
+        .map_err(|e| self.error = Some(e.to_string()))
+        .ok()
+    }
+}

@@ -1,0 +1,134 @@
+//! The Scenes view driven headlessly with egui_kittest: picking a scene, dragging the source,
+//! clicking a hit point to open it in the single-interface view. No display and no GPU needed.
+
+use egui::{Pos2, Vec2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use refraction_explorer::app::{Explorer, View};
+use refraction_explorer::diagram::ExplorerState;
+use refraction_explorer::scene::{Scene, Side};
+
+fn harness(explorer: Explorer) -> Harness<'static, Explorer> {
+    let mut harness = Harness::builder()
+        .with_size(Vec2::new(1280.0, 760.0))
+        .with_theme(egui::Theme::Light)
+        .build_ui_state(|ui, app: &mut Explorer| app.show(ui), explorer);
+    harness.run();
+    harness
+}
+
+fn droplet() -> Harness<'static, Explorer> {
+    let mut explorer = Explorer::new(ExplorerState::default());
+    explorer.open_scene(Scene::embedded("droplet").unwrap());
+    harness(explorer)
+}
+
+/// Presses the pointer at `path`'s first point, moves it through the rest and releases it at
+/// the last: a click when the path is one point, a drag otherwise.
+fn press_move_release(harness: &mut Harness<'_, Explorer>, path: &[Pos2]) {
+    let (Some(&first), Some(&last)) = (path.first(), path.last()) else {
+        return;
+    };
+    harness.hover_at(first);
+    harness.run();
+    harness.drag_at(first);
+    harness.run();
+    for &p in &path[1..] {
+        harness.hover_at(p);
+        harness.run();
+    }
+    harness.drop_at(last);
+    harness.run();
+}
+
+#[test]
+fn the_bar_switches_to_scenes_and_the_picker_opens_a_scene() {
+    let mut h = harness(Explorer::new(ExplorerState::default()));
+    h.get_by_label("Scenes").click();
+    h.run();
+    assert_eq!(h.state().view(), View::Scenes);
+    assert_eq!(h.state().scenes().scene().name(), "interface");
+    h.get_by_label("Scene").click();
+    h.run();
+    h.get_by_label("Water droplet (rainbow)").click();
+    h.run();
+    let scenes = h.state().scenes();
+    assert_eq!(scenes.scene().name(), "droplet");
+    assert!(scenes.trace().counts.wavelengths > 1);
+    assert!(h.query_by_label_contains("reflections spawned").is_some());
+    assert!(h.query_by_label("Shape 1 handle (water)").is_some());
+}
+
+#[test]
+fn dragging_the_source_retraces_the_scene() {
+    let mut h = droplet();
+    let origin = h.state().scenes().scene().source().origin;
+    let first = h.state().scenes().trace().segments[0];
+    let from = h.get_by_label("Source handle").rect().center();
+    let to = from + Vec2::new(0.0, 40.0);
+    let path: Vec<Pos2> = (0..=4)
+        .map(|step| from + (to - from) * (step as f32 / 4.0))
+        .collect();
+    press_move_release(&mut h, &path);
+    let scenes = h.state().scenes();
+    let moved = scenes.scene().source().origin;
+    assert!(moved.y < origin.y - 0.1, "{origin} → {moved}");
+    assert_ne!(scenes.trace().segments[0], first);
+    let handle = h.get_by_label("Source handle").rect().center();
+    assert!(
+        handle.distance(to) < 2.0,
+        "{handle:?} is not under the pointer {to:?}"
+    );
+}
+
+#[test]
+fn clicking_the_droplets_exit_opens_it_with_the_flipped_normal() {
+    let mut h = droplet();
+    let scenes = h.state().scenes();
+    let exit = *scenes
+        .trace()
+        .hits
+        .iter()
+        .find(|hit| hit.side == Side::Leaving)
+        .unwrap();
+    let at = scenes.to_screen(exit.point).unwrap();
+    press_move_release(&mut h, &[at]);
+    assert_eq!(h.state().view(), View::Interface);
+    let state = h.state().state();
+    let refraction = state.refraction();
+    assert!(refraction.normal_flipped);
+    assert!(state.mu_i() > 1.3 && state.mu_t() < 1.01, "water into air");
+    assert!(h.query_by_label("W handle").is_some());
+}
+
+#[test]
+fn a_click_away_from_every_hit_stays_in_the_scene() {
+    let mut h = droplet();
+    let at = h
+        .state()
+        .scenes()
+        .to_screen(glam::DVec2::new(2.5, -2.2))
+        .unwrap();
+    press_move_release(&mut h, &[at]);
+    assert_eq!(h.state().view(), View::Scenes);
+}
+
+#[test]
+fn undo_puts_the_scene_back_one_drag_at_a_time() {
+    let mut h = droplet();
+    let origin = h.state().scenes().scene().source().origin;
+    let from = h.get_by_label("Source handle").rect().center();
+    let path: Vec<Pos2> = (0..=4)
+        .map(|step| from + Vec2::new(0.0, 10.0 * step as f32))
+        .collect();
+    press_move_release(&mut h, &path);
+    let moved = h.state().scenes().scene().source().origin;
+    assert_ne!(moved, origin);
+    h.get_by_label("⟲ Undo").click();
+    h.run();
+    assert_eq!(h.state().scenes().scene().source().origin, origin);
+    assert_eq!(h.state().scenes().scene().name(), "droplet");
+    h.get_by_label("⟳ Redo").click();
+    h.run();
+    assert_eq!(h.state().scenes().scene().source().origin, moved);
+}
