@@ -1,6 +1,8 @@
 //! The explorer window driven headlessly with egui_kittest: drags, convention switch, the
 //! candidates table, typed input, keyboard. No display and no GPU needed.
 
+mod common;
+
 use egui::{Key, Modifiers, Pos2, Role, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -144,13 +146,7 @@ fn the_table_has_four_rows_with_the_right_marks() {
 
 /// Replaces the text of the field labelled `label` and presses Enter.
 fn type_into(h: &mut Harness<'_, Explorer>, label: &str, text: &str) {
-    h.get_by_role_and_label(Role::TextInput, label).focus();
-    h.run();
-    h.key_press_modifiers(Modifiers::COMMAND, Key::A);
-    h.run();
-    h.get_by_role_and_label(Role::TextInput, label)
-        .type_text(text);
-    h.run();
+    common::replace_text(h, label, text);
     h.key_press(Key::Enter);
     h.run();
 }

@@ -13,7 +13,7 @@ use egui_plot::{
 use super::paint::color;
 use crate::bench::{self, Config, Report};
 use crate::diagram::accuracy_plot::{
-    BOUND, FLOOR, LogAxis, decade_label, point_label, variant_colour,
+    BOUND, FLOOR, axes, decade_label, point_label, variant_colour,
 };
 use crate::diagram::palette;
 
@@ -140,15 +140,7 @@ impl AccuracyView {
 /// Error against time, both log10-transformed (egui_plot has no log axes), framed on whole
 /// decades like the `bench --plot` image.
 fn plot(ui: &mut Ui, report: &Report) {
-    let x = LogAxis::covering(report.rows.iter().map(|r| r.ns_per_ray), 1e-3);
-    let y = LogAxis::covering(
-        report
-            .rows
-            .iter()
-            .map(|r| r.max_err_hard_eps_kappa)
-            .chain([BOUND]),
-        FLOOR,
-    );
+    let (x, y) = axes(report);
     Plot::new("accuracy against time")
         .height((ui.available_height() * 0.6).max(260.0))
         .legend(Legend::default().position(Corner::RightBottom))

@@ -5,11 +5,14 @@
 use egui::emath::RectTransform;
 use egui::{
     CentralPanel, ComboBox, CursorIcon, Panel, Pos2, Rect, RichText, Role, Sense, Slider,
-    SliderClamping, Ui, WidgetInfo,
+    SliderClamping, TextEdit, Ui, WidgetInfo,
 };
+use std::path::PathBuf;
+
 use glam::{DVec2, Vec2};
 
 use super::paint::{color, paint};
+use crate::atomic::write_atomically;
 use crate::diagram::palette::{self, number};
 use crate::diagram::shapes::{Align, Label};
 use crate::diagram::{ExplorerState, Primitive, SceneLayout, ScenePicture};
@@ -20,6 +23,9 @@ use crate::scene::{
 
 /// The most rays the slider offers: enough to see a caustic, few enough to drag smoothly.
 const MAX_SLIDER_RAYS: usize = 1000;
+
+/// The scene file offered first.
+pub const DEFAULT_SCENE_PATH: &str = "scene.toml";
 
 /// The Scenes view's state: the scene as edited, its trace, and what the canvas remembers
 /// between frames.
@@ -37,6 +43,10 @@ pub struct ScenesView {
     error: Option<String>,
     /// Where the canvas was drawn in the last frame, with the layout it used.
     drawn: Option<(Rect, SceneLayout)>,
+    /// The scene file to save to or open.
+    path: String,
+    /// What the last save or open said.
+    file_status: Option<Result<String, String>>,
 }
 
 impl Default for ScenesView {
@@ -78,6 +88,8 @@ impl ScenesView {
             drag_layout: None,
             error: None,
             drawn: None,
+            path: DEFAULT_SCENE_PATH.to_owned(),
+            file_status: None,
         }
     }
 
@@ -110,6 +122,32 @@ impl ScenesView {
         self.error = None;
         self.drag_layout = None;
         self.scene.retrace(&mut self.trace);
+    }
+
+    /// Writes the scene as edited to the scene file in the path field, atomically.
+    pub fn save(&mut self) {
+        let path = PathBuf::from(self.path.trim());
+        self.file_status = Some(
+            self.scene
+                .to_toml()
+                .and_then(|text| {
+                    write_atomically(&path, text.as_bytes()).map_err(|e| e.to_string())
+                })
+                .map(|()| format!("saved {}", path.display())),
+        );
+    }
+
+    /// Opens the scene file in the path field (or a built-in scene by name); a file that cannot
+    /// be read or understood leaves the scene as it was and says why, with its line and column.
+    pub fn open_file(&mut self) {
+        let path = self.path.trim().to_owned();
+        self.file_status = Some(match Scene::load(&path) {
+            Ok(scene) => {
+                self.open(scene);
+                Ok(format!("opened {path}"))
+            }
+            Err(e) => Err(e.to_string()),
+        });
     }
 
     /// Puts back a scene from the undo history: the same scene edited differently is retraced
@@ -179,6 +217,29 @@ impl ScenesView {
                 .clicked()
             {
                 self.open(self.original.clone());
+            }
+        });
+        ui.horizontal(|ui| {
+            let field = TextEdit::singleline(&mut self.path).desired_width(260.0);
+            ui.add(field).labelled_by(ui.label("Scene file").id);
+            if ui.button("Open file").clicked() {
+                self.open_file();
+            }
+            if ui
+                .button("Save file")
+                .on_hover_text("the scene as edited, in the scene format (TOML)")
+                .clicked()
+            {
+                self.save();
+            }
+            match &self.file_status {
+                Some(Ok(done)) => {
+                    ui.label(done);
+                }
+                Some(Err(why)) => {
+                    ui.label(RichText::new(format!("⚠ {why}")).color(color(palette::ALARM)));
+                }
+                None => {}
             }
         });
         ui.label(self.scene.description());

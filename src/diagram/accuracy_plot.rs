@@ -129,19 +129,25 @@ fn text(text: String, at: Vec2, (h, v): (Align, Align), size: f32, colour: Colou
     })
 }
 
+/// The plot's axes: time per ray (x) and largest hard-set error in ε·κ (y, with room for the
+/// [`BOUND`] line), each over the whole decades its values need.
+#[must_use]
+pub fn axes(report: &Report) -> (LogAxis, LogAxis) {
+    let rows = &report.rows;
+    (
+        LogAxis::covering(rows.iter().map(|r| r.ns_per_ray), 1e-3),
+        LogAxis::covering(
+            rows.iter().map(|r| r.max_err_hard_eps_kappa).chain([BOUND]),
+            FLOOR,
+        ),
+    )
+}
+
 /// The report's plot on a canvas of `size` pixels, as primitives for any backend.
 #[must_use]
 pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive> {
     let m = Metrics::new(size);
-    let x_axis = LogAxis::covering(report.rows.iter().map(|r| r.ns_per_ray), 1e-3);
-    let y_axis = LogAxis::covering(
-        report
-            .rows
-            .iter()
-            .map(|r| r.max_err_hard_eps_kappa)
-            .chain([BOUND]),
-        FLOOR,
-    );
+    let (x_axis, y_axis) = axes(report);
     let at = |ns: f64, err: f64| {
         Vec2::new(
             m.plot.min.x + (m.plot.max.x - m.plot.min.x) * x_axis.fraction(ns) as f32,

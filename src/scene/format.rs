@@ -191,8 +191,14 @@ fn vector(v: [f64; 2], what: &str, span: &Range<usize>) -> Result<DVec2, Invalid
     }
 }
 
+/// `v` as a unit direction. A vector already unit to rounding is kept as written, so that a
+/// scene written back ([`Scene::to_toml`]) reads back bit for bit.
 fn direction(v: [f64; 2], what: &str, span: &Range<usize>) -> Result<DVec2, Invalid> {
-    vector(v, what, span)?.try_normalize().map_or_else(
+    let v = vector(v, what, span)?;
+    if (v.length_squared() - 1.0).abs() <= 4.0 * f64::EPSILON {
+        return Ok(v);
+    }
+    v.try_normalize().map_or_else(
         || invalid(span.clone(), format!("{what} must not be [0, 0]")),
         Ok,
     )

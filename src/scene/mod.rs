@@ -20,6 +20,7 @@ mod report;
 mod shape;
 mod source;
 mod trace;
+mod write;
 
 use std::fmt;
 
