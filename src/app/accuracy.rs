@@ -143,7 +143,7 @@ fn plot(ui: &mut Ui, report: &Report) {
     let (x, y) = axes(report);
     Plot::new("accuracy against time")
         .height((ui.available_height() * 0.6).max(260.0))
-        .legend(Legend::default().position(Corner::RightBottom))
+        .legend(Legend::default().position(Corner::LeftTop))
         .default_x_bounds(x.low, x.high)
         .default_y_bounds(y.low, y.high)
         .x_axis_label("time per ray, ns (log)")

@@ -222,7 +222,7 @@ impl Explorer {
         }
         Panel::right("readouts")
             .default_size(440.0)
-            .max_size(width * 0.37)
+            .max_size(width * 0.38)
             .resizable(true)
             .show(ui, |ui| {
                 // Both ways: narrowed for presentation, the table scrolls instead of clipping.

@@ -100,7 +100,7 @@ fn candidates(ui: &mut Ui, r: &Refraction<f64>) {
     }
     Grid::new("candidates")
         .striped(true)
-        .spacing([8.0, 3.0])
+        .spacing([5.0, 3.0])
         .show(ui, |ui| {
             for heading in ["candidate", "a", "b", "T", "|T|=1", "eq.10", "side", "bend"] {
                 ui.label(RichText::new(heading).strong());

@@ -29,7 +29,8 @@ pub struct LogAxis {
 
 impl LogAxis {
     /// The decades covering every finite positive value of `values` (clamped below at
-    /// `floor`); one decade either side of 1 when there is none.
+    /// `floor`) with a little room at both ends; one decade either side of 1 when there is
+    /// none.
     #[must_use]
     pub fn covering(values: impl IntoIterator<Item = f64>, floor: f64) -> Self {
         let logs: Vec<f64> = values
@@ -40,7 +41,8 @@ impl LogAxis {
         let low = logs.iter().copied().fold(f64::INFINITY, f64::min);
         let high = logs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         if low.is_finite() && high.is_finite() {
-            let (low, high) = (low.floor(), high.ceil());
+            // A twentieth of a decade of room, so that no marker sits on the frame.
+            let (low, high) = ((low - 0.05).floor(), (high + 0.05).ceil());
             Self {
                 low,
                 high: if high > low { high } else { low + 1.0 },
@@ -110,7 +112,7 @@ impl Metrics {
             text,
             title: text * 1.3,
             plot: Rect {
-                min: Vec2::new(text * 7.0, text * 5.0),
+                min: Vec2::new(text * 7.0, text * 6.5),
                 max: Vec2::new(size.x - text * 10.0, size.y - text * 4.5),
             },
         }
@@ -238,7 +240,7 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
         ),
         (
             "largest hard-set error, in ε·κ (log)".to_owned(),
-            Vec2::new(m.plot.min.x, m.plot.min.y - m.text * 0.8),
+            Vec2::new(m.plot.min.x, m.plot.min.y - m.text * 0.6),
             (Align::Start, Align::End),
             m.text,
         ),
@@ -252,14 +254,23 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
     for (words, anchor, align, size) in titles {
         shapes.push(text(words, anchor, align, size, palette::INK));
     }
-    let mut taken: Vec<Rect> = Vec::new();
-    for row in &report.rows {
-        let p = at(row.ns_per_ray, row.max_err_hard_eps_kappa);
+    let radius = m.text * 0.45;
+    let points: Vec<Vec2> = report
+        .rows
+        .iter()
+        .map(|row| at(row.ns_per_ray, row.max_err_hard_eps_kappa))
+        .collect();
+    // Labels go right of their marker, moved down until they cover no marker and no label.
+    let mut taken: Vec<Rect> = points
+        .iter()
+        .map(|p| Rect::from_min_size(*p - Vec2::splat(radius), Vec2::splat(2.0 * radius)))
+        .collect();
+    for (row, p) in report.rows.iter().zip(&points) {
         let colour = variant_colour(row.variant);
         let filled = row.precision == "f64";
         shapes.push(Shape::Disc {
-            center: p,
-            radius: m.text * 0.45,
+            center: *p,
+            radius,
             fill: if filled { colour } else { palette::BACKGROUND },
             outline: Stroke {
                 width: 2.0,
@@ -269,10 +280,10 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
         });
         let label = point_label(row);
         let extent = face.measure(&label, m.text);
-        let mut corner = p + Vec2::new(m.text * 0.8, -extent.y / 2.0);
+        let mut corner = *p + Vec2::new(m.text * 0.8, -extent.y / 2.0);
         let mut rect = Rect::from_min_size(corner, extent);
         while taken.iter().any(|t| t.overlaps(&rect)) {
-            corner.y += extent.y;
+            corner.y += extent.y * 0.5;
             rect = Rect::from_min_size(corner, extent);
         }
         taken.push(rect);
