@@ -4,7 +4,7 @@
 //! comes from [`crate::diagram`]; nothing here computes refraction.
 //!
 //! The classroom tools each live in their own module: [`history`] (undo/redo), [`presentation`],
-//! and under the diagram ([`tools`]) check my T, the walk-through and save/open/share.
+//! and under the diagram (`tools`) check my T, the walk-through and save/open/share.
 
 mod accuracy;
 mod canvas;

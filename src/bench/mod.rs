@@ -89,14 +89,6 @@ pub struct Report {
 }
 
 impl Report {
-    /// The row of `variant` at `precision`, if measured.
-    #[must_use]
-    pub fn row(&self, variant: Variant, precision: &str) -> Option<&Row> {
-        self.rows
-            .iter()
-            .find(|r| r.variant == variant.name() && r.precision == precision)
-    }
-
     /// The fastest variant whose largest hard-set error is within 10× of the most accurate
     /// one's, as a sentence.
     #[must_use]

@@ -117,15 +117,6 @@ impl<S: Real> Transmissions<S> {
         ([tx, ty, tz], &mut self.tir)
     }
 
-    /// Stores result `i`. Panics if `i >= len()`.
-    pub fn set(&mut self, i: usize, t: Option<S::Vec3>) {
-        let [x, y, z] = t.map_or([S::ZERO; 3], Vector3::to_array);
-        self.t[0][i] = x;
-        self.t[1][i] = y;
-        self.t[2][i] = z;
-        self.tir[i] = t.is_none();
-    }
-
     fn resize(&mut self, len: usize) {
         for column in &mut self.t {
             column.resize(len, S::ZERO);

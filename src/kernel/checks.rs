@@ -6,7 +6,8 @@ use super::real::{Real, Vector3};
 /// How far a candidate direction is from satisfying each law of refraction.
 ///
 /// All residuals are absolute and, for the kernel's T, at most about ε·κ (see
-/// [`condition_number`]); compare them with [`Checks::passes`].
+/// [`condition_number`]); compare them with the predicates below and a tolerance such as
+/// [`super::Refraction::tolerance`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Checks {
     /// | |T| − 1 |.
@@ -78,17 +79,6 @@ impl Checks {
     #[must_use]
     pub fn bends_correctly(&self, tolerance: f64) -> bool {
         self.tangential_part >= -tolerance
-    }
-
-    /// Whether every check passes within `tolerance`.
-    #[must_use]
-    pub fn passes(&self, tolerance: f64) -> bool {
-        self.is_unit(tolerance)
-            && self.obeys_snell(tolerance)
-            && self.obeys_squared_snell(tolerance)
-            && self.is_coplanar(tolerance)
-            && self.is_on_correct_side(tolerance)
-            && self.bends_correctly(tolerance)
     }
 }
 
