@@ -7,7 +7,7 @@ use std::fmt;
 use std::ops::Range;
 
 use glam::DVec2;
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 use toml::Spanned;
 
 use super::bounds::Bounds;
@@ -80,52 +80,59 @@ fn invalid<T>(span: Range<usize>, message: impl Into<String>) -> Result<T, Inval
     })
 }
 
-/// A scene file as written.
-#[derive(Deserialize)]
+/// A scene file as written: read with spans for the error messages, and written back by
+/// [`Scene::to_toml`](super::write) with empty ones.
+#[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
-struct SceneFile {
-    title: String,
+pub(super) struct SceneFile {
+    pub(super) title: String,
     #[serde(default)]
-    description: String,
-    background: Option<Spanned<String>>,
+    pub(super) description: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) background: Option<Spanned<String>>,
     #[serde(default)]
-    media: BTreeMap<String, Spanned<MediumSpec>>,
+    pub(super) media: BTreeMap<String, Spanned<MediumSpec>>,
     #[serde(default)]
-    shapes: Vec<Spanned<ShapeSpec>>,
-    source: Spanned<SourceSpec>,
-    effects: Option<Spanned<Effects>>,
-    view: Option<Spanned<ViewSpec>>,
+    pub(super) shapes: Vec<Spanned<ShapeSpec>>,
+    pub(super) source: Spanned<SourceSpec>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) effects: Option<Spanned<Effects>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) view: Option<Spanned<ViewSpec>>,
 }
 
-#[derive(Deserialize)]
+#[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
-struct MediumSpec {
-    index: Option<f64>,
-    cauchy: Option<CauchySpec>,
-    sellmeier: Option<SellmeierSpec>,
+pub(super) struct MediumSpec {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) index: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) cauchy: Option<CauchySpec>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) sellmeier: Option<SellmeierSpec>,
     #[serde(default)]
-    absorption: f64,
+    pub(super) absorption: f64,
 }
 
-#[derive(Deserialize)]
+#[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
-struct CauchySpec {
-    a: f64,
-    b: f64,
+pub(super) struct CauchySpec {
+    pub(super) a: f64,
+    pub(super) b: f64,
     #[serde(default)]
-    c: f64,
+    pub(super) c: f64,
 }
 
-#[derive(Deserialize)]
+#[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
-struct SellmeierSpec {
-    b: Vec<f64>,
-    c: Vec<f64>,
+pub(super) struct SellmeierSpec {
+    pub(super) b: Vec<f64>,
+    pub(super) c: Vec<f64>,
 }
 
-#[derive(Deserialize)]
+#[derive(Deserialize, Serialize)]
 #[serde(rename_all = "snake_case", deny_unknown_fields)]
-enum ShapeSpec {
+pub(super) enum ShapeSpec {
     Line {
         point: [f64; 2],
         normal: [f64; 2],
@@ -152,25 +159,29 @@ enum ShapeSpec {
     },
 }
 
-#[derive(Deserialize)]
+#[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
-struct SourceSpec {
-    kind: SourceKind,
-    origin: [f64; 2],
-    direction: [f64; 2],
-    rays: Option<usize>,
-    width: Option<f64>,
-    spread_deg: Option<f64>,
-    wavelength_nm: Option<f64>,
+pub(super) struct SourceSpec {
+    pub(super) kind: SourceKind,
+    pub(super) origin: [f64; 2],
+    pub(super) direction: [f64; 2],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) rays: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) width: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) spread_deg: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) wavelength_nm: Option<f64>,
     #[serde(default)]
-    white: bool,
+    pub(super) white: bool,
 }
 
-#[derive(Deserialize)]
+#[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
-struct ViewSpec {
-    min: [f64; 2],
-    max: [f64; 2],
+pub(super) struct ViewSpec {
+    pub(super) min: [f64; 2],
+    pub(super) max: [f64; 2],
 }
 
 /// The range of vacuum wavelengths a source may have, in nm.
