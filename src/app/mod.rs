@@ -41,6 +41,9 @@ const PRESENTATION_CONTROLS_WIDTH: f32 = 1000.0;
 /// Where eframe keeps the last state between runs.
 const STORAGE_KEY: &str = "explorer_state";
 
+/// Where eframe keeps the theme and palette between runs.
+const LOOK_KEY: &str = "explorer_look";
+
 /// The explorer's views, chosen in the bar at the top of the window.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum View {
@@ -243,6 +246,7 @@ impl eframe::App for Explorer {
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         storage.set_string(STORAGE_KEY, state_file::to_json(&self.state));
+        storage.set_string(LOOK_KEY, self.presentation.look());
     }
 }
 
@@ -271,7 +275,11 @@ pub fn run(state: Option<ExplorerState>) -> Result<(), eframe::Error> {
                     .and_then(|json| state_file::parse(&json).ok())
                     .unwrap_or_default()
             });
-            Ok(Box::new(Explorer::new(state)))
+            let mut explorer = Explorer::new(state);
+            if let Some(look) = cc.storage.and_then(|s| s.get_string(LOOK_KEY)) {
+                explorer.presentation.restore_look(&look);
+            }
+            Ok(Box::new(explorer))
         }),
     )
 }

@@ -83,6 +83,33 @@ impl Presentation {
         }
     }
 
+    /// The look worth keeping between runs, the theme and the palette, as a short JSON text
+    /// (presentation mode and the diagram's pan and zoom belong to one session).
+    #[must_use]
+    pub fn look(&self) -> String {
+        serde_json::json!({
+            "theme": self.theme.label(),
+            "colour_blind_safe": self.colour_blind_safe,
+        })
+        .to_string()
+    }
+
+    /// Takes back a look saved by [`Presentation::look`]; what cannot be read is left as it is.
+    pub fn restore_look(&mut self, text: &str) {
+        let Ok(look) = serde_json::from_str::<serde_json::Value>(text) else {
+            return;
+        };
+        if let Some(theme) = Theme::ALL
+            .into_iter()
+            .find(|t| look["theme"].as_str() == Some(t.label()))
+        {
+            self.theme = theme;
+        }
+        if let Some(safe) = look["colour_blind_safe"].as_bool() {
+            self.colour_blind_safe = safe;
+        }
+    }
+
     /// The presentation toggle (also F11), the theme menu and the colour-blind-safe switch.
     pub fn controls(&mut self, ui: &mut Ui) {
         if ui.input_mut(|i| i.consume_shortcut(&KeyboardShortcut::new(Modifiers::NONE, Key::F11))) {
@@ -105,6 +132,24 @@ impl Presentation {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_look_is_kept_between_runs_and_junk_is_ignored() {
+        let chosen = Presentation {
+            theme: Theme::HighContrastDark,
+            colour_blind_safe: true,
+            on: true,
+            ..Presentation::default()
+        };
+        let mut next_run = Presentation::default();
+        next_run.restore_look(&chosen.look());
+        assert_eq!(next_run.theme, Theme::HighContrastDark);
+        assert!(next_run.colour_blind_safe);
+        assert!(!next_run.on, "presentation mode is not restored");
+        next_run.restore_look("{\"theme\": \"Neon\"}");
+        next_run.restore_look("not json");
+        assert_eq!(next_run.theme, Theme::HighContrastDark);
+    }
 
     #[test]
     fn high_contrast_themes_use_pure_black_and_white() {
