@@ -1,22 +1,11 @@
-//! refraction-explorer: makes refraction visible.
+//! refraction-explorer: the explorer window and the JSON Lines commands, on top of the layer
+//! crates (see `ARCHITECTURE.md`): [`refraction_kernel`] (the math), [`refraction_bench`] (its
+//! accuracy against time), [`refraction_scene`] (scenes and their tracer),
+//! [`refraction_diagram`] (what is drawn) and [`refraction_render`] (drawn off screen).
 //!
-//! Layers, dependencies pointing down only (see `DESIGN.md`): [`kernel`] (glam only) is the
-//! refraction math; [`oracle`] is its exact reference in double-double arithmetic; [`bench`](mod@bench)
-//! measures the kernel variants against it; [`scene`] (serde and the kernel) holds the scenes of
-//! several interfaces and their tracer; [`diagram`] is what the explorer draws, [`render`] draws
-//! it into a PNG and [`app`] is the explorer window; [`solve`] and [`check`] are the JSON Lines
-//! interfaces of the `solve` and `check` commands, sharing [`jsonl`]'s loop.
+//! - [`app`]: the explorer window (eframe, egui, egui_plot);
+//! - [`lines`]: the `solve` and `check` commands' JSON Lines, and the explorer's state as one
+//!   such line.
 
 pub mod app;
-pub mod atomic;
-pub mod bench;
-pub mod check;
-pub mod diagram;
-pub mod jsonl;
-pub mod kernel;
-pub mod oracle;
-pub mod render;
-pub mod scene;
-pub mod snippets;
-pub mod solve;
-pub mod state_file;
+pub mod lines;

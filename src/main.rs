@@ -6,8 +6,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use refraction_explorer::render;
-use refraction_explorer::scene::DEFAULT_SCENE;
+use refraction_scene::DEFAULT_SCENE;
 
 /// Makes refraction visible: a trig-free refraction kernel, its four sign candidates, and an
 /// interactive explorer (opened when no subcommand is given).
@@ -78,10 +77,10 @@ enum Command {
         #[arg(long, value_name = "FILE.png")]
         out: PathBuf,
         /// Width in pixels.
-        #[arg(long, default_value_t = render::DEFAULT_SIZE.0)]
+        #[arg(long, default_value_t = refraction_render::DEFAULT_SIZE.0)]
         width: u32,
         /// Height in pixels.
-        #[arg(long, default_value_t = render::DEFAULT_SIZE.1)]
+        #[arg(long, default_value_t = refraction_render::DEFAULT_SIZE.1)]
         height: u32,
         /// The single-interface problem to draw, as JSON with the fields of `solve` (default: 40°
         /// from air into glass); not with SCENE.

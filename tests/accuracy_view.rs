@@ -7,8 +7,8 @@ use std::time::{Duration, Instant};
 use egui::Vec2;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
+use refraction_diagram::ExplorerState;
 use refraction_explorer::app::Explorer;
-use refraction_explorer::diagram::ExplorerState;
 
 #[test]
 fn measuring_shows_progress_then_the_verdict() {

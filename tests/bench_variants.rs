@@ -1,10 +1,10 @@
 //! The variants agree where they should, the batch kernel equals the scalar one bit for bit, and
 //! `bench --json --quick` reports every row. No test here asserts a time.
 
-use refraction_explorer::bench::accuracy::{Prepared, errors, prepare};
-use refraction_explorer::bench::sets;
-use refraction_explorer::kernel::batch::{Transmissions, transmit_batch};
-use refraction_explorer::kernel::{Real, Variant, stable};
+use refraction_bench::accuracy::{Prepared, errors, prepare};
+use refraction_bench::sets;
+use refraction_kernel::batch::{Transmissions, transmit_batch};
+use refraction_kernel::{Real, Variant, stable};
 
 /// Random incidences away from the critical angle, where every variant should be accurate.
 fn well_conditioned<S: Real>() -> Prepared<S> {

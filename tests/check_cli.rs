@@ -4,7 +4,7 @@
 use std::process::Command;
 
 use glam::DVec3;
-use refraction_explorer::kernel::{Convention, seed};
+use refraction_kernel::{Convention, seed};
 use serde_json::{Value, json};
 
 fn line(w: DVec3, n: DVec3, mu_i: f64, mu_t: f64, convention: &str, yours: Value) -> String {

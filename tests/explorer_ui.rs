@@ -7,8 +7,8 @@ use egui::{Key, Modifiers, Pos2, Role, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use glam::DVec3;
+use refraction_diagram::{ExplorerState, Layout};
 use refraction_explorer::app::Explorer;
-use refraction_explorer::diagram::{ExplorerState, Layout};
 
 fn harness(state: ExplorerState) -> Harness<'static, Explorer> {
     let mut harness = Harness::builder()
@@ -271,7 +271,7 @@ fn undo_and_redo_step_through_every_kind_of_change_and_a_drag_is_one_step() {
 
 #[test]
 fn presentation_mode_zooms_the_ui_and_the_themes_change_panels_and_diagram() {
-    use refraction_explorer::diagram::palette::Theme;
+    use refraction_diagram::palette::Theme;
     let mut h = harness(ExplorerState::default());
     assert_eq!(h.ctx.zoom_factor(), 1.0);
     click(&mut h, "🖵 Presentation");
@@ -297,13 +297,13 @@ fn presentation_mode_zooms_the_ui_and_the_themes_change_panels_and_diagram() {
     assert!(h.query_by_label("Flip N").is_some());
 }
 
-fn glam_colour(code: u32) -> refraction_explorer::diagram::geometry::Colour {
-    refraction_explorer::diagram::geometry::Colour::hex(code)
+fn glam_colour(code: u32) -> refraction_diagram::geometry::Colour {
+    refraction_diagram::geometry::Colour::hex(code)
 }
 
 #[test]
 fn the_walk_through_follows_the_source_highlights_the_diagram_and_animates_mu_to_one() {
-    use refraction_explorer::diagram::Focus;
+    use refraction_diagram::Focus;
     let mut h = harness(ExplorerState::default());
     assert_eq!(h.state().overlay().focus, None);
     click(&mut h, "📖 Walk-through");
@@ -363,7 +363,7 @@ fn vector_text(v: DVec3) -> String {
 
 #[test]
 fn check_my_t_names_every_sign_and_convention_mix_up_and_draws_the_students_t() {
-    use refraction_explorer::kernel::Rejection;
+    use refraction_kernel::Rejection;
     let mut h = harness(ExplorerState::default());
     click(&mut h, "✔ Check my T");
     let r = h.state().state().refraction().clone();
@@ -375,7 +375,7 @@ fn check_my_t_names_every_sign_and_convention_mix_up_and_draws_the_students_t() 
             .unwrap()
             .t
     };
-    let swapped_t = refraction_explorer::kernel::refract(&refraction_explorer::kernel::Incidence {
+    let swapped_t = refraction_kernel::refract(&refraction_kernel::Incidence {
         w: r.w,
         n: r.n,
         mu_i: 1.5,
@@ -574,7 +574,7 @@ fn the_share_string_reproduces_the_state_and_the_case_copies_as_code() {
     let mut h = harness(leaving_glass());
     click(&mut h, "💾 Save, open, share");
     click(&mut h, "🔗 Copy share string");
-    let share = refraction_explorer::state_file::to_json(h.state().state());
+    let share = refraction_explorer::lines::state_file::to_json(h.state().state());
     assert!(h.query_by_label(&share).is_some());
     let shared = h.state().state().clone();
     click(&mut h, "Flip N");
@@ -589,7 +589,7 @@ fn the_share_string_reproduces_the_state_and_the_case_copies_as_code() {
     );
     assert_eq!(h.state().state(), &shared);
     for (button, text) in [
-        ("Rust", "use refraction_explorer::kernel"),
+        ("Rust", "use refraction_kernel"),
         ("GLSL", "vec3 T = refract("),
         ("C++ (glm)", "glm::refract("),
         ("test vector", "\"t_expected\""),

@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
-use refraction_explorer::diagram::spectrum::wavelength_colour;
+use refraction_diagram::spectrum::wavelength_colour;
 
 fn folder(name: &str) -> PathBuf {
     let folder = std::env::temp_dir().join(format!("render-cli-{}-{name}", std::process::id()));

@@ -6,9 +6,9 @@ mod common;
 use egui::{Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
+use refraction_diagram::ExplorerState;
 use refraction_explorer::app::{Explorer, View};
-use refraction_explorer::diagram::ExplorerState;
-use refraction_explorer::scene::{Scene, Side};
+use refraction_scene::{Scene, Side};
 
 fn harness(explorer: Explorer) -> Harness<'static, Explorer> {
     let mut harness = Harness::builder()

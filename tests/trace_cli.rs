@@ -2,7 +2,7 @@
 
 use std::process::{Command, Output};
 
-use refraction_explorer::scene::catalogue;
+use refraction_scene::catalogue;
 use serde_json::Value;
 
 fn trace(args: &[&str]) -> Output {

@@ -11,11 +11,11 @@ use egui_plot::{
 };
 
 use super::paint::color;
-use crate::bench::{self, Config, Report};
-use crate::diagram::accuracy_plot::{
+use refraction_bench::{Config, Report};
+use refraction_diagram::accuracy_plot::{
     BOUND, FLOOR, axes, decade_label, point_label, variant_colour,
 };
-use crate::diagram::palette;
+use refraction_diagram::palette;
 
 /// What the background measurement has reached.
 #[derive(Debug, Default)]
@@ -69,7 +69,7 @@ impl AccuracyView {
         };
         let (shared, ctx) = (Arc::clone(&progress), ctx.clone());
         std::thread::spawn(move || {
-            let report = bench::run(&config, &mut |fraction| {
+            let report = refraction_bench::run(&config, &mut |fraction| {
                 shared
                     .lock()
                     .unwrap_or_else(PoisonError::into_inner)

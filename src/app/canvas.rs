@@ -8,7 +8,7 @@ use egui::{
 use glam::Vec2;
 
 use super::paint::{color, paint};
-use crate::diagram::{Diagram, ExplorerState, HandleId, Overlay};
+use refraction_diagram::{Diagram, ExplorerState, HandleId, Overlay};
 
 /// Degrees per arrow-key press (Shift: a tenth of it).
 const ANGLE_STEP: f64 = 1.0;
@@ -81,7 +81,7 @@ fn pan_and_zoom(ui: &Ui, response: &egui::Response, overlay: &mut Overlay) {
         let (scroll, pinch) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
         let factor = pinch * (scroll / 400.0).exp();
         if factor != 1.0 {
-            let fitted = crate::diagram::Layout::new(Vec2::new(
+            let fitted = refraction_diagram::Layout::new(Vec2::new(
                 response.rect.width(),
                 response.rect.height(),
             ))

@@ -1,18 +1,18 @@
 //! "Check my T": a student pastes W, N, μ_i, μ_t and the T their ray tracer produced (or a
 //! whole `check` JSON line); the explorer opens that case, says which candidate their T is and
-//! why, and draws it beside the right one. The verdict is [`crate::check`]'s.
+//! why, and draws it beside the right one. The verdict is [`crate::lines::check`]'s.
 
 use egui::{RichText, TextEdit, Ui};
 use glam::DVec3;
 
 use super::paint::color;
 use super::typed::error_label;
-use crate::check::{self, Match, Verdict};
-use crate::diagram::ExplorerState;
-use crate::diagram::overlay::StudentRay;
-use crate::diagram::palette::{self, vector};
-use crate::solve::{Precision, Request};
-use crate::state_file;
+use crate::lines::check::{self, Match, Verdict};
+use crate::lines::solve::{Precision, Request};
+use crate::lines::state_file;
+use refraction_diagram::ExplorerState;
+use refraction_diagram::overlay::StudentRay;
+use refraction_diagram::palette::{self, vector};
 
 /// A T that was checked, with the case it was checked against.
 #[derive(Clone, Debug, PartialEq)]
@@ -39,9 +39,9 @@ fn match_words(verdict: &Verdict) -> &'static str {
         Some(Match::Chosen) if verdict.ok => "the refracted ray T",
         Some(Match::Chosen) => "T's direction, but not unit length",
         Some(Match::Rejected(r)) => match r {
-            crate::kernel::Rejection::WrongSide => "wrong side (the other root for b)",
-            crate::kernel::Rejection::WrongBend => "wrong bend (the other sign of a)",
-            crate::kernel::Rejection::Reversed => "reversed (−T: both signs wrong)",
+            refraction_kernel::Rejection::WrongSide => "wrong side (the other root for b)",
+            refraction_kernel::Rejection::WrongBend => "wrong bend (the other sign of a)",
+            refraction_kernel::Rejection::Reversed => "reversed (−T: both signs wrong)",
         },
         Some(Match::TotalInternalReflection) => "total internal reflection, answered right",
         None => "none of the four candidates",

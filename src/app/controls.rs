@@ -6,11 +6,10 @@ use std::path::PathBuf;
 use egui::{ComboBox, DragValue, Slider, SliderClamping, Ui};
 
 use super::typed::{TypedField, format_vector, parse_number, parse_vector, short, status};
-use crate::diagram::overlay::PanZoom;
-use crate::diagram::state::{INDEX_RANGE, MATERIALS, material_of};
-use crate::diagram::{ExplorerState, HandleId, Overlay};
-use crate::kernel::Convention;
-use crate::render;
+use refraction_diagram::model::{INDEX_RANGE, MATERIALS, material_of};
+use refraction_diagram::overlay::PanZoom;
+use refraction_diagram::{ExplorerState, HandleId, Overlay};
+use refraction_kernel::Convention;
 
 /// What the controls keep between frames.
 #[derive(Clone, Debug, PartialEq)]
@@ -31,7 +30,7 @@ impl Default for Controls {
             mu_t: TypedField::default(),
             w: TypedField::default(),
             n: TypedField::default(),
-            export_size: render::DEFAULT_SIZE,
+            export_size: refraction_render::DEFAULT_SIZE,
             export_path: "refraction.png".to_owned(),
             export_status: None,
         }
@@ -152,7 +151,7 @@ impl Controls {
     /// view, since the screen's pan is in its own pixels.
     fn export(&mut self, ui: &mut Ui, state: &ExplorerState, overlay: &Overlay) {
         ui.heading("Export PNG");
-        let (low, high) = render::SIZE_LIMITS;
+        let (low, high) = refraction_render::SIZE_LIMITS;
         ui.horizontal(|ui| {
             let (width, height) = &mut self.export_size;
             let label = ui.label("Size");
@@ -174,7 +173,7 @@ impl Controls {
                 ..overlay.clone()
             };
             self.export_status = Some(
-                render::export(state, &overlay, self.export_size, &path)
+                refraction_render::export(state, &overlay, self.export_size, &path)
                     .map(|()| format!("wrote {}", path.display()))
                     .map_err(|e| e.to_string()),
             );

@@ -7,9 +7,9 @@ use std::path::PathBuf;
 use egui::{RichText, TextEdit, Ui};
 
 use super::typed::status;
-use crate::diagram::ExplorerState;
-use crate::snippets;
-use crate::state_file;
+use crate::app::snippets;
+use crate::lines::state_file;
+use refraction_diagram::ExplorerState;
 
 /// The file name offered first.
 pub const DEFAULT_PATH: &str = "refraction-state.json";
@@ -17,7 +17,7 @@ pub const DEFAULT_PATH: &str = "refraction-state.json";
 /// The formats the current case can be copied in: the button's label and how to write it.
 type Format = (
     &'static str,
-    fn(&crate::solve::Request) -> Result<String, String>,
+    fn(&crate::lines::solve::Request) -> Result<String, String>,
 );
 
 /// The copy buttons, in order.

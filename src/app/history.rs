@@ -7,8 +7,8 @@
 
 use egui::{Button, Key, KeyboardShortcut, Modifiers, Ui};
 
-use crate::diagram::ExplorerState;
-use crate::scene::Scene;
+use refraction_diagram::ExplorerState;
+use refraction_scene::Scene;
 
 /// How many steps back the history reaches; older ones are forgotten.
 pub const LIMIT: usize = 1000;

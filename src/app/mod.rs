@@ -1,7 +1,7 @@
 //! The explorer window (eframe/egui): controls on the left, the interactive diagram in the
 //! middle, the kernel's numbers on the right; or, in the Scenes view ([`ScenesView`]), a traced
 //! scene whose hit points open here. The state lives in [`ExplorerState`]; drawing
-//! comes from [`crate::diagram`]; nothing here computes refraction.
+//! comes from [`refraction_diagram`]; nothing here computes refraction.
 //!
 //! The classroom tools each live in their own module: [`history`] (undo/redo), [`presentation`],
 //! and under the diagram (`tools`) check my T, the walk-through and save/open/share.
@@ -16,19 +16,20 @@ mod paint;
 pub mod presentation;
 mod readouts;
 mod scenes;
+pub mod snippets;
 mod tools;
 mod typed;
 pub mod walkthrough;
 
 use egui::{Panel, ScrollArea, Ui};
 
-use crate::diagram::{ExplorerState, Overlay};
-use crate::scene::Scene;
-use crate::state_file;
+use crate::lines::state_file;
 use accuracy::AccuracyView;
 use controls::Controls;
 use history::{History, Snapshot};
 use presentation::Presentation;
+use refraction_diagram::{ExplorerState, Overlay};
+use refraction_scene::Scene;
 pub use scenes::ScenesView;
 use tools::Tools;
 

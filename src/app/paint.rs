@@ -5,9 +5,9 @@ use egui::epaint::CircleShape;
 use egui::{Align2, Color32, FontId, Painter, Pos2, Shape, Stroke};
 use glam::Vec2;
 
-use crate::diagram::Primitive;
-use crate::diagram::geometry::Colour;
-use crate::diagram::shapes::Align;
+use refraction_diagram::Primitive;
+use refraction_diagram::geometry::Colour;
+use refraction_diagram::shapes::Align;
 
 /// The egui colour of a diagram colour.
 #[must_use]

@@ -4,8 +4,8 @@
 
 use egui::{Color32, ComboBox, Context, Key, KeyboardShortcut, Modifiers, Ui, ViewportCommand};
 
-use crate::diagram::overlay::PanZoom;
-use crate::diagram::palette::{Palette, Theme};
+use refraction_diagram::overlay::PanZoom;
+use refraction_diagram::palette::{Palette, Theme};
 
 /// The UI zoom in presentation mode.
 pub const ZOOM: f32 = 1.6;

@@ -5,11 +5,11 @@ use egui::{Color32, Grid, RichText, Sense, Stroke, Ui, Vec2};
 use egui_plot::{HLine, Line, Plot, Points};
 
 use super::paint::color;
-use crate::diagram::equations::equations;
-use crate::diagram::palette::{self, number, vector};
-use crate::diagram::quadratic::Quadratic;
-use crate::diagram::table::rows;
-use crate::kernel::Refraction;
+use refraction_diagram::equations::equations;
+use refraction_diagram::palette::{self, number, vector};
+use refraction_diagram::quadratic::Quadratic;
+use refraction_diagram::table::rows;
+use refraction_kernel::Refraction;
 
 /// The mark for a passed (✔) or failed (✖) check.
 fn mark(passed: bool) -> &'static str {

@@ -12,11 +12,11 @@ use std::path::PathBuf;
 use glam::{DVec2, Vec2};
 
 use super::paint::{color, paint};
-use crate::atomic::write_atomically;
-use crate::diagram::palette::{self, number};
-use crate::diagram::shapes::{Align, Label};
-use crate::diagram::{ExplorerState, Primitive, SceneLayout, ScenePicture};
-use crate::scene::{
+use refraction_diagram::palette::{self, number};
+use refraction_diagram::shapes::{Align, Label};
+use refraction_diagram::{ExplorerState, Primitive, SceneLayout, ScenePicture};
+use refraction_render::atomic::write_atomically;
+use refraction_scene::{
     DEFAULT_SCENE, EditError, Hit, Scene, SceneInfo, Side, SourceKind, Trace, catalogue,
     traced_wavelength,
 };

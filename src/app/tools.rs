@@ -6,8 +6,8 @@ use egui::{Panel, ScrollArea, Ui};
 use super::check_panel::CheckPanel;
 use super::files_panel::FilesPanel;
 use super::walkthrough::WalkThrough;
-use crate::diagram::overlay::StudentRay;
-use crate::diagram::{ExplorerState, Focus};
+use refraction_diagram::overlay::StudentRay;
+use refraction_diagram::{ExplorerState, Focus};
 
 /// The tool shown under the diagram.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

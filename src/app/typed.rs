@@ -6,7 +6,7 @@ use egui::{RichText, TextEdit, Ui};
 use glam::DVec3;
 
 use super::paint::color;
-use crate::diagram::palette;
+use refraction_diagram::palette;
 
 /// One typed field: its text and the error of the last attempt to apply it.
 #[derive(Clone, Debug, Default, PartialEq)]

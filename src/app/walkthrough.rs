@@ -1,11 +1,11 @@
 //! The guided walk through the source's derivation: one step at a time with its equations and
-//! live numbers (from [`crate::diagram::walkthrough`]), the diagram highlighting what the step is
+//! live numbers (from [`refraction_diagram::walkthrough`]), the diagram highlighting what the step is
 //! about, and the "animate μ → 1" morph that shows why the source picks its signs.
 
 use egui::{Button, Context, RichText, Ui};
 
-use crate::diagram::walkthrough::steps;
-use crate::diagram::{ExplorerState, Focus};
+use refraction_diagram::walkthrough::steps;
+use refraction_diagram::{ExplorerState, Focus};
 
 /// How long the μ → 1 morph takes, in seconds.
 pub const MORPH_SECONDS: f32 = 3.0;

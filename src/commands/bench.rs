@@ -4,8 +4,7 @@ use std::io::{self, IsTerminal, Write};
 use std::path::Path;
 use std::process::ExitCode;
 
-use refraction_explorer::bench::{self, Config};
-use refraction_explorer::render;
+use refraction_bench::Config;
 
 use super::fail;
 
@@ -17,7 +16,7 @@ const PLOT_SIZE: (u32, u32) = (1600, 1000);
 pub fn run(quick: bool, json: bool, plot: Option<&Path>) -> ExitCode {
     let config = if quick { Config::QUICK } else { Config::FULL };
     let show_progress = io::stderr().is_terminal();
-    let report = bench::run(&config, &mut |fraction| {
+    let report = refraction_bench::run(&config, &mut |fraction| {
         if show_progress {
             eprint!("\rmeasuring... {:3.0}%", fraction * 100.0);
             let _ = io::stderr().flush();
@@ -28,7 +27,7 @@ pub fn run(quick: bool, json: bool, plot: Option<&Path>) -> ExitCode {
     }
     if let Some(path) = plot {
         let (width, height) = PLOT_SIZE;
-        if let Err(e) = render::export_accuracy_plot(&report, width, height, path) {
+        if let Err(e) = refraction_render::export_accuracy_plot(&report, width, height, path) {
             return fail("bench", &e);
         }
     }

@@ -5,8 +5,8 @@ use std::io::{self, BufRead};
 use std::path::Path;
 use std::process::ExitCode;
 
-use refraction_explorer::check::{self, Match};
-use refraction_explorer::{jsonl, solve as solver};
+use refraction_explorer::lines::check::{self, Match};
+use refraction_explorer::lines::{self as jsonl, solve as solver};
 
 use super::{fail, output_error};
 

@@ -4,9 +4,11 @@
 use std::path::Path;
 use std::process::ExitCode;
 
-use refraction_explorer::diagram::{ExplorerState, Overlay};
-use refraction_explorer::scene::Scene;
-use refraction_explorer::{app, render, state_file};
+use refraction_diagram::{ExplorerState, Overlay};
+use refraction_explorer::app;
+use refraction_explorer::lines::state_file;
+use refraction_render as render;
+use refraction_scene::Scene;
 
 use super::fail;
 

@@ -3,7 +3,7 @@
 use std::io::{self, Write};
 use std::process::ExitCode;
 
-use refraction_explorer::scene::{Report, Scene, catalogue};
+use refraction_scene::{Report, Scene, catalogue};
 
 use super::output_error;
 

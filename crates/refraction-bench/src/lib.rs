@@ -1,0 +1,261 @@
+//! What accuracy costs in time: every [`Variant`] at both precisions, timed on this machine
+//! and measured against the double-double oracle. Run by the `bench` command and by the
+//! explorer's "Accuracy vs time" panel.
+
+pub mod accuracy;
+pub mod oracle;
+pub mod sets;
+pub mod timing;
+
+use serde::Serialize;
+
+use accuracy::{Errors, Prepared, errors, prepare};
+use refraction_kernel::batch::RayBatch;
+use refraction_kernel::{Real, Variant};
+use timing::{Streaming, ns_per_ray, streaming};
+
+/// How much work a run does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Config {
+    /// Problems in the random set.
+    pub random_rays: usize,
+    /// Orientations of the hard cases (the axis-aligned one included).
+    pub hard_rotations: usize,
+    /// Rays in the in-cache timing set.
+    pub timing_rays: usize,
+    /// Timing samples per variant (the median is reported).
+    pub samples: usize,
+    /// Rays in the streaming measurement.
+    pub streaming_rays: usize,
+}
+
+impl Config {
+    /// Under 20 s on 2 cores (release build).
+    pub const QUICK: Self = Self {
+        random_rays: 20_000,
+        hard_rotations: 4,
+        timing_rays: 4096,
+        samples: 7,
+        streaming_rays: 2_000_000,
+    };
+
+    /// Steadier figures, about a minute.
+    pub const FULL: Self = Self {
+        random_rays: 200_000,
+        hard_rotations: 24,
+        timing_rays: 4096,
+        samples: 101,
+        streaming_rays: 8_000_000,
+    };
+}
+
+/// One line of the report: a variant at a precision.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Row {
+    /// The variant's name.
+    pub variant: &'static str,
+    /// `"f32"` or `"f64"`.
+    pub precision: &'static str,
+    /// Median time per ray in the in-cache set, in nanoseconds.
+    pub ns_per_ray: f64,
+    /// 1e9 / `ns_per_ray`.
+    pub rays_per_second: f64,
+    /// Largest angular error (radians) on the random set.
+    pub max_err_random: f64,
+    /// Median angular error (radians) on the random set.
+    pub median_err_random: f64,
+    /// Largest angular error (radians) on the hard set.
+    pub max_err_hard: f64,
+    /// Median angular error (radians) on the hard set.
+    pub median_err_hard: f64,
+    /// Largest hard-set error as a multiple of ε·κ.
+    pub max_err_hard_eps_kappa: f64,
+    /// Total internal reflection decisions that disagree with the oracle, both sets.
+    pub tir_mismatches: usize,
+}
+
+/// Everything a run measured.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Report {
+    /// One row per variant and precision.
+    pub rows: Vec<Row>,
+    /// Problems in the random set.
+    pub rays: usize,
+    /// Problems in the hard set.
+    pub hard_rays: usize,
+    /// The streaming figure (f32 batch against the memory limit).
+    pub streaming: Streaming,
+    /// The processor the figures were measured on.
+    pub cpu: String,
+}
+
+impl Report {
+    /// The fastest variant whose largest hard-set error is within 10× of the most accurate
+    /// one's, as a sentence.
+    #[must_use]
+    pub fn verdict(&self) -> String {
+        let best = self
+            .rows
+            .iter()
+            .map(|r| r.max_err_hard_eps_kappa)
+            .fold(f64::INFINITY, f64::min);
+        self.rows
+            .iter()
+            .filter(|r| r.max_err_hard_eps_kappa <= 10.0 * best)
+            .min_by(|a, b| a.ns_per_ray.total_cmp(&b.ns_per_ray))
+            .map_or_else(String::new, |r| {
+                format!(
+                    "Fastest within 10x of the best accuracy: {} {} at {:.2} ns per ray \
+                     (hard-set error {:.1} eps*kappa).",
+                    r.variant, r.precision, r.ns_per_ray, r.max_err_hard_eps_kappa
+                )
+            })
+    }
+
+    /// The report as an aligned text table with the streaming figure and the verdict below.
+    #[must_use]
+    pub fn table(&self) -> String {
+        let mut text = format!(
+            "{:<7} {:<4} {:>8} {:>11} {:>10} {:>10} {:>10} {:>10} {:>11} {:>5}\n",
+            "variant",
+            "prec",
+            "ns/ray",
+            "rays/s",
+            "max rand",
+            "med rand",
+            "max hard",
+            "med hard",
+            "hard eps*k",
+            "TIR!"
+        );
+        for r in &self.rows {
+            text.push_str(&format!(
+                "{:<7} {:<4} {:>8.2} {:>11.3e} {:>10.2e} {:>10.2e} {:>10.2e} {:>10.2e} {:>11.1} {:>5}\n",
+                r.variant,
+                r.precision,
+                r.ns_per_ray,
+                r.rays_per_second,
+                r.max_err_random,
+                r.median_err_random,
+                r.max_err_hard,
+                r.median_err_hard,
+                r.max_err_hard_eps_kappa,
+                r.tir_mismatches
+            ));
+        }
+        let s = &self.streaming;
+        text.push_str(&format!(
+            "\nstreaming {} rays (f32): batch {:.2} ns/ray, memory limit {:.2} ns/ray ({:.2}x)\n",
+            s.rays,
+            s.batch_ns_per_ray,
+            s.memory_limit_ns_per_ray,
+            s.batch_ns_per_ray / s.memory_limit_ns_per_ray
+        ));
+        text.push_str(&format!(
+            "{} random and {} hard problems on {}\n{}\n",
+            self.rays,
+            self.hard_rays,
+            self.cpu,
+            self.verdict()
+        ));
+        text
+    }
+}
+
+/// The processor's model name, its thread count and its vector extensions.
+#[must_use]
+pub fn cpu_description() -> String {
+    let model = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|info| {
+            info.lines()
+                .find(|l| l.starts_with("model name"))
+                .and_then(|l| l.split(':').nth(1))
+                .map(|m| m.trim().to_owned())
+        })
+        .unwrap_or_else(|| std::env::consts::ARCH.to_owned());
+    let threads = std::thread::available_parallelism().map_or(1, std::num::NonZero::get);
+    let mut features = Vec::new();
+    #[cfg(target_arch = "x86_64")]
+    for (name, present) in [
+        ("avx2", std::arch::is_x86_feature_detected!("avx2")),
+        ("fma", std::arch::is_x86_feature_detected!("fma")),
+    ] {
+        if present {
+            features.push(name);
+        }
+    }
+    format!("{model}, {threads} threads, {}", features.join("+"))
+}
+
+fn rows_at<S: Real>(
+    config: &Config,
+    random: &Prepared<S>,
+    hard: &Prepared<S>,
+    step: &mut dyn FnMut(),
+) -> Vec<Row> {
+    let mut timing_rays = RayBatch::new();
+    for i in 0..config.timing_rays.min(random.rays.len()) {
+        let (d, n, mu) = random.rays.get(i);
+        timing_rays.push(d, n, mu);
+    }
+    Variant::ALL
+        .into_iter()
+        .map(|variant| {
+            let ns = ns_per_ray(variant, &timing_rays, config.samples);
+            let (on_random, on_hard): (Errors, Errors) =
+                (errors(variant, random), errors(variant, hard));
+            step();
+            Row {
+                variant: variant.name(),
+                precision: S::NAME,
+                ns_per_ray: ns,
+                rays_per_second: 1e9 / ns,
+                max_err_random: on_random.max,
+                median_err_random: on_random.median,
+                max_err_hard: on_hard.max,
+                median_err_hard: on_hard.median,
+                max_err_hard_eps_kappa: on_hard.max_eps_kappa,
+                tir_mismatches: on_random.tir_mismatches + on_hard.tir_mismatches,
+            }
+        })
+        .collect()
+}
+
+/// Seeds of the problem sets, fixed so that every run measures the same problems.
+const RANDOM_SEED: u64 = 0x5eed_0001;
+const HARD_SEED: u64 = 0x5eed_0002;
+
+/// Measures every variant at both precisions. `progress` receives the fraction done (0 to 1).
+#[must_use]
+pub fn run(config: &Config, progress: &mut dyn FnMut(f64)) -> Report {
+    let random_set = sets::random_set(config.random_rays, RANDOM_SEED);
+    let hard_set = sets::hard_set(config.hard_rotations, HARD_SEED);
+    // Rough shares of the run: the oracle's answers 40 %, the rows 50 %, streaming 10 %.
+    let random32 = prepare::<f32>(&random_set, &mut |f| progress(0.2 * f));
+    let hard32 = prepare::<f32>(&hard_set, &mut |_| {});
+    let random64 = prepare::<f64>(&random_set, &mut |f| progress(0.2 + 0.2 * f));
+    let hard64 = prepare::<f64>(&hard_set, &mut |_| {});
+    let per_row = 0.5 / (2 * Variant::ALL.len()) as f64;
+    let mut done = 0.4;
+    let mut step = || {
+        done += per_row;
+        progress(done);
+    };
+    let mut rows = rows_at(config, &random32, &hard32, &mut step);
+    rows.extend(rows_at(config, &random64, &hard64, &mut step));
+    let mut streaming_rays = RayBatch::<f32>::new();
+    for i in 0..config.streaming_rays {
+        let (d, n, mu) = random32.rays.get(i % random32.rays.len());
+        streaming_rays.push(d, n, mu);
+    }
+    let streaming = streaming(&streaming_rays, config.samples.min(9));
+    progress(1.0);
+    Report {
+        rows,
+        rays: random_set.len(),
+        hard_rays: hard_set.len(),
+        streaming,
+        cpu: cpu_description(),
+    }
+}

@@ -1,0 +1,211 @@
+//! Where things go on a canvas of a given size: the banner strip, the index scale, the drawing
+//! area, and the map between the world (the hit point at the origin, arrows of length 1, y up)
+//! and canvas pixels.
+
+use glam::{DVec2, Vec2};
+
+use super::geometry::Rect;
+use super::model::INDEX_RANGE;
+use super::overlay::PanZoom;
+
+/// The world↔canvas map of the drawing area.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct View {
+    /// The canvas position of the hit point.
+    pub origin: Vec2,
+    /// Pixels per world unit (the length of W, N and T on screen).
+    pub scale: f32,
+}
+
+impl View {
+    /// The canvas point of a world point.
+    #[must_use]
+    pub fn to_canvas(&self, world: DVec2) -> Vec2 {
+        self.origin + Vec2::new(world.x as f32, -(world.y as f32)) * self.scale
+    }
+
+    /// The canvas direction of a world direction (same length in world units).
+    #[must_use]
+    pub fn direction(&self, world: DVec2) -> Vec2 {
+        Vec2::new(world.x as f32, -(world.y as f32))
+    }
+
+    /// The map that shows the world rectangle `min`–`max` as large as fits in `rect`, centred,
+    /// y up. A rectangle with no area (or not finite) is shown at 1 pixel per world unit.
+    #[must_use]
+    pub fn fitted(min: DVec2, max: DVec2, rect: &Rect) -> Self {
+        let world = (max - min).as_vec2();
+        let fit = (rect.size() / world).min_element();
+        let scale = if fit.is_finite() && fit > 0.0 {
+            fit
+        } else {
+            1.0
+        };
+        let center = (min + max) * 0.5;
+        let center = if center.is_finite() {
+            center
+        } else {
+            DVec2::ZERO
+        };
+        Self {
+            origin: rect.center() - Vec2::new(center.x as f32, -(center.y as f32)) * scale,
+            scale,
+        }
+    }
+
+    /// The world point of a canvas point.
+    #[must_use]
+    pub fn to_world(&self, canvas: Vec2) -> DVec2 {
+        let d = (canvas - self.origin) / self.scale;
+        DVec2::new(f64::from(d.x), -f64::from(d.y))
+    }
+}
+
+/// The vertical index scale at the right edge of the canvas.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct IndexScale {
+    /// The x of the scale's line.
+    pub x: f32,
+    /// The y of [`INDEX_RANGE`]'s top (largest index).
+    pub top: f32,
+    /// The y of [`INDEX_RANGE`]'s bottom (smallest index).
+    pub bottom: f32,
+}
+
+impl IndexScale {
+    /// The y of an index (clamped to the scale).
+    #[must_use]
+    pub fn y_of(&self, index: f64) -> f32 {
+        let (low, high) = INDEX_RANGE;
+        let t = ((index - low) / (high - low)).clamp(0.0, 1.0) as f32;
+        self.bottom + (self.top - self.bottom) * t
+    }
+
+    /// The index at height `y` (clamped to [`INDEX_RANGE`]), rounded to 0.001.
+    #[must_use]
+    pub fn index_at(&self, y: f32) -> f64 {
+        let (low, high) = INDEX_RANGE;
+        let t = f64::from((y - self.bottom) / (self.top - self.bottom));
+        let t = if t.is_finite() {
+            t.clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        ((low + (high - low) * t) * 1000.0).round() / 1000.0
+    }
+}
+
+/// The label font size in pixels for a canvas `size` pixels wide and high: larger canvases
+/// (a projector, a 1080p export) get larger text, within limits.
+#[must_use]
+pub fn font_size(size: Vec2) -> f32 {
+    (size.min_element() / 48.0).clamp(13.0, 30.0)
+}
+
+/// Where everything goes on a canvas of one size.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Layout {
+    /// The whole canvas, from (0, 0).
+    pub canvas: Rect,
+    /// The strip at the top for the banner.
+    pub banner: Rect,
+    /// The area of the interface diagram (canvas minus banner and scale).
+    pub drawing: Rect,
+    /// The index scale.
+    pub scale: IndexScale,
+    /// The world↔canvas map.
+    pub view: View,
+    /// The label font size in pixels; strokes and handles scale with it.
+    pub font: f32,
+}
+
+impl Layout {
+    /// The layout of a canvas `size` pixels wide and high (sizes below 1 are treated as 1).
+    #[must_use]
+    pub fn new(size: Vec2) -> Self {
+        let size = size.max(Vec2::ONE);
+        let font = font_size(size);
+        let canvas = Rect::from_min_size(Vec2::ZERO, size);
+        let banner = Rect::from_min_size(Vec2::ZERO, Vec2::new(size.x, font * 3.2));
+        let scale_width = font * 10.0;
+        let drawing = Rect {
+            min: Vec2::new(0.0, banner.max.y),
+            max: Vec2::new(
+                (size.x - scale_width).max(1.0),
+                size.y.max(banner.max.y + 1.0),
+            ),
+        };
+        let scale = IndexScale {
+            x: size.x - scale_width * 0.45,
+            top: banner.max.y + font * 2.5,
+            bottom: size.y - font * 2.5,
+        };
+        let view = View {
+            origin: drawing.center(),
+            scale: drawing.size().min_element() * 0.36,
+        };
+        Self {
+            canvas,
+            banner,
+            drawing,
+            scale,
+            view,
+            font,
+        }
+    }
+
+    /// The same layout with the view moved by `pan_zoom` (the hit point shifted, the world
+    /// scaled about it).
+    #[must_use]
+    pub fn panned(mut self, pan_zoom: PanZoom) -> Self {
+        self.view.origin += pan_zoom.pan;
+        self.view.scale *= pan_zoom.zoom;
+        self
+    }
+
+    /// One stroke-width unit in pixels.
+    #[must_use]
+    pub fn unit(&self) -> f32 {
+        self.font / 14.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn world_and_canvas_round_trip_with_y_up() {
+        let layout = Layout::new(Vec2::new(1920.0, 1080.0));
+        let view = layout.view;
+        let up = view.to_canvas(DVec2::Y);
+        assert!(up.y < view.origin.y);
+        assert!((view.to_world(up) - DVec2::Y).length() < 1e-6);
+        assert!(
+            layout
+                .drawing
+                .contains(view.to_canvas(DVec2::new(1.0, 1.0)))
+        );
+    }
+
+    #[test]
+    fn a_fitted_view_shows_the_whole_world_rectangle_centred() {
+        let rect = Rect::from_min_size(Vec2::new(0.0, 100.0), Vec2::new(800.0, 400.0));
+        let view = View::fitted(DVec2::new(-4.0, -1.0), DVec2::new(4.0, 3.0), &rect);
+        assert_eq!(view.scale, 100.0);
+        assert_eq!(view.to_canvas(DVec2::new(0.0, 1.0)), rect.center());
+        assert_eq!(view.to_canvas(DVec2::new(-4.0, 3.0)), Vec2::new(0.0, 100.0));
+        let flat = View::fitted(DVec2::ONE, DVec2::ONE, &rect);
+        assert_eq!(flat.scale, 1.0);
+        assert_eq!(flat.to_canvas(DVec2::ONE), rect.center());
+    }
+
+    #[test]
+    fn the_index_scale_maps_both_ways_and_clamps() {
+        let scale = Layout::new(Vec2::new(800.0, 600.0)).scale;
+        assert_eq!(scale.index_at(scale.y_of(1.5)), 1.5);
+        assert_eq!(scale.index_at(-1e6), INDEX_RANGE.1);
+        assert_eq!(scale.y_of(10.0), scale.top);
+        assert!(Layout::new(Vec2::ZERO).view.scale > 0.0);
+    }
+}

@@ -1,0 +1,39 @@
+//! What the explorer draws, computed from an [`ExplorerState`] and the kernel's answer for it,
+//! or from a traced scene: shapes with colours, widths, dash patterns and anchored labels, in
+//! canvas pixels. No egui and no tiny-skia here: the screen ([`crate::app`]) and the PNG
+//! ([`crate::render`]) both draw [`Diagram::primitives`] and [`ScenePicture::primitives`], so
+//! what a teacher exports is what the class saw.
+//!
+//! - [`state`]: the state and the edits a user makes;
+//! - [`layout`]: where things go on a canvas of a given size;
+//! - [`overlay`]: what is drawn over the state: palette, pan and zoom, a student's T, the
+//!   walk-through's highlights;
+//! - [`picture`]: the interface diagram itself;
+//! - [`scene_picture`]: a traced scene ([`refraction_scene`]), with [`spectrum`] colouring its rays;
+//! - [`shapes`], [`geometry`], [`palette`], [`font`]: its vocabulary;
+//! - [`table`], [`equations`], [`quadratic`]: the numbers shown beside it;
+//! - [`accuracy_plot`]: the `bench` report as error against time;
+//! - [`walkthrough`]: the source's derivation step by step with the live numbers.
+
+pub mod accuracy_plot;
+pub mod equations;
+pub mod font;
+pub mod geometry;
+pub mod layout;
+pub mod model;
+pub mod overlay;
+pub mod palette;
+pub mod picture;
+pub mod quadratic;
+pub mod scene_picture;
+pub mod shapes;
+pub mod spectrum;
+pub mod table;
+pub mod walkthrough;
+
+pub use layout::Layout;
+pub use model::{ExplorerState, HandleId};
+pub use overlay::{Focus, Overlay};
+pub use picture::{Diagram, Handle};
+pub use scene_picture::{SceneHandle, SceneHandleId, SceneLayout, ScenePicture};
+pub use shapes::{Align, Primitive};

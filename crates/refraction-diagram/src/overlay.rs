@@ -1,0 +1,179 @@
+//! What is drawn over the interface diagram besides the state itself: the palette, the pan and
+//! zoom of the view, a student's T beside the right one, and the parts a walk-through step is
+//! about. Kept in the diagram model, not in the window, so that the PNG export shows them too.
+
+use glam::{DVec3, Vec2};
+
+use super::palette::Palette;
+use refraction_kernel::Rejection;
+
+/// The least and the most the diagram can be zoomed.
+pub const ZOOM_RANGE: (f32, f32) = (0.4, 4.0);
+
+/// How the view is moved from its fitted place: a shift of the hit point in canvas pixels and a
+/// zoom factor about it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PanZoom {
+    /// Canvas pixels the hit point moves by.
+    pub pan: Vec2,
+    /// Scale factor on the fitted size (within [`ZOOM_RANGE`]).
+    pub zoom: f32,
+}
+
+impl Default for PanZoom {
+    fn default() -> Self {
+        Self {
+            pan: Vec2::ZERO,
+            zoom: 1.0,
+        }
+    }
+}
+
+impl PanZoom {
+    /// Zooms by `factor` keeping the canvas point `fixed` (relative to the fitted hit point)
+    /// where it is; the zoom stays within [`ZOOM_RANGE`] and non-finite factors are ignored.
+    pub fn zoom_about(&mut self, factor: f32, fixed: Vec2) {
+        if !factor.is_finite() || factor <= 0.0 {
+            return;
+        }
+        let (low, high) = ZOOM_RANGE;
+        let zoom = (self.zoom * factor).clamp(low, high);
+        let applied = zoom / self.zoom;
+        // The point under the pointer stays put: pan' = fixed − (fixed − pan)·applied.
+        self.pan = fixed - (fixed - self.pan) * applied;
+        self.zoom = zoom;
+    }
+}
+
+/// A student's T to draw beside the right one.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StudentRay {
+    /// Their T, as they gave it (any length; drawn with its length, so that a T that is not
+    /// unit length looks it).
+    pub t: DVec3,
+    /// What it is, e.g. `your T: wrong side`.
+    pub label: String,
+}
+
+/// A part of the diagram that a walk-through step can highlight.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Part {
+    /// The incoming ray.
+    Incoming,
+    /// W.
+    W,
+    /// N.
+    N,
+    /// The chosen T.
+    T,
+    /// The angle of incidence θi.
+    AngleI,
+    /// The angle of refraction θt.
+    AngleT,
+    /// T drawn as a·W then b·N.
+    Decomposition,
+    /// A rejected candidate.
+    Candidate(Rejection),
+}
+
+/// What a walk-through step is about, as the set of parts it highlights.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Focus {
+    /// Snell's law: the two angles.
+    Angles,
+    /// T = a·W + b·N and the cosines as dot products.
+    Decomposition,
+    /// The squared constraints: all four candidates satisfy them.
+    SquaredConstraints,
+    /// The two roots a = ±μ: T and its mirror across the normal.
+    RootsOfA,
+    /// The choice of a by the μ → 1 argument: the incoming ray, T and the wrong bend.
+    ChoiceOfA,
+    /// The two roots for b: T and its mirror across the surface.
+    RootsOfB,
+    /// The choice of b: T, the wrong side.
+    ChoiceOfB,
+}
+
+impl Focus {
+    /// The parts this focus highlights.
+    #[must_use]
+    pub fn parts(self) -> &'static [Part] {
+        use Part::{AngleI, AngleT, Candidate, Decomposition, Incoming, N, T, W};
+        use Rejection::{Reversed, WrongBend, WrongSide};
+        match self {
+            Self::Angles => &[AngleI, AngleT],
+            Self::Decomposition => &[W, N, Decomposition],
+            Self::SquaredConstraints => &[
+                T,
+                Candidate(WrongSide),
+                Candidate(WrongBend),
+                Candidate(Reversed),
+            ],
+            Self::RootsOfA => &[W, T, Candidate(WrongBend)],
+            Self::ChoiceOfA => &[Incoming, T, Candidate(WrongBend)],
+            Self::RootsOfB => &[N, T, Candidate(WrongSide)],
+            Self::ChoiceOfB => &[T, Candidate(WrongSide)],
+        }
+    }
+}
+
+/// Everything drawn on top of the state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Overlay {
+    /// The colours and ray dashes.
+    pub palette: Palette,
+    /// How the view is panned and zoomed.
+    pub pan_zoom: PanZoom,
+    /// A student's T, if one is being checked.
+    pub student: Option<StudentRay>,
+    /// What a walk-through step highlights.
+    pub focus: Option<Focus>,
+}
+
+impl Default for Overlay {
+    fn default() -> Self {
+        Self {
+            palette: Palette::STANDARD,
+            pan_zoom: PanZoom::default(),
+            student: None,
+            focus: None,
+        }
+    }
+}
+
+impl Overlay {
+    /// Whether `part` is highlighted.
+    #[must_use]
+    pub fn highlights(&self, part: Part) -> bool {
+        self.focus.is_some_and(|f| f.parts().contains(&part))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn zooming_keeps_the_fixed_point_and_stays_in_range() {
+        let mut view = PanZoom::default();
+        let fixed = Vec2::new(100.0, -40.0);
+        view.zoom_about(2.0, fixed);
+        // The point that was under `fixed` at zoom 1 is still there.
+        let world = (fixed - view.pan) / view.zoom;
+        assert!((world - fixed).length() < 1e-3, "{view:?}");
+        view.zoom_about(1e9, Vec2::ZERO);
+        assert_eq!(view.zoom, ZOOM_RANGE.1);
+        view.zoom_about(f32::NAN, Vec2::ZERO);
+        assert_eq!(view.zoom, ZOOM_RANGE.1);
+    }
+
+    #[test]
+    fn every_focus_highlights_something_and_none_highlights_nothing() {
+        let mut overlay = Overlay::default();
+        assert!(!overlay.highlights(Part::T));
+        overlay.focus = Some(Focus::ChoiceOfA);
+        assert!(overlay.highlights(Part::Candidate(Rejection::WrongBend)));
+        assert!(!overlay.highlights(Part::Candidate(Rejection::WrongSide)));
+    }
+}

@@ -1,0 +1,853 @@
+//! The interface diagram for one state: media, surface, rays, candidates, angles, banner and
+//! index scale, as [`Shape`]s on a canvas of a given size, plus the draggable handles.
+
+use glam::{DVec2, DVec3, Vec2};
+
+use super::font::Typeface;
+use super::geometry::{Colour, Rect, arc, clip_rect_to_half_plane, clip_segment};
+use super::layout::Layout;
+use super::model::{ExplorerState, HandleId, INDEX_RANGE, MATERIALS, material_of};
+use super::overlay::{Overlay, Part};
+use super::palette::{Palette, number};
+use super::shapes::{Align, Dash, Label, Primitive, Shape, Stroke, lower_all};
+use refraction_kernel::{Convention, Refraction, Rejection, seed};
+
+/// A draggable point on the canvas.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Handle {
+    /// Which handle.
+    pub id: HandleId,
+    /// Its centre on the canvas.
+    pub center: Vec2,
+    /// Its radius in pixels (the grab area is a little larger).
+    pub radius: f32,
+}
+
+/// Everything drawn for one state on one canvas size.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Diagram {
+    /// Where things go.
+    pub layout: Layout,
+    /// What is drawn, back to front.
+    pub shapes: Vec<Shape>,
+    /// The handles, in [`HandleId::ALL`] order.
+    pub handles: Vec<Handle>,
+    /// The banner's text: what the picture says in words, for screen readers.
+    pub summary: String,
+}
+
+/// The lengths of the diagram's rays, in world units (W, N and T are 1).
+const INCOMING_LENGTH: f64 = 1.25;
+const GHOST_LENGTH: f64 = 0.9;
+const ARC_RADIUS: f64 = 0.28;
+
+/// The short form of each rejection, for the label beside its ghost.
+fn short_rule(rejection: Rejection) -> &'static str {
+    match rejection {
+        Rejection::WrongSide => "other b root: wrong side",
+        Rejection::WrongBend => "other a sign: bends wrong way",
+        Rejection::Reversed => "both signs wrong: −T",
+    }
+}
+
+/// The name and index of a medium, e.g. `μt = 1.5 (glass)`.
+fn medium_text(symbol: &str, index: f64) -> String {
+    let name = material_of(index).map_or("custom", |m| m.name);
+    format!("{symbol} = {index} ({name})")
+}
+
+/// How much larger than a handle its grab area is (half-side over radius).
+pub const GRAB_SCALE: f32 = 1.6;
+
+/// The shade of a medium in `palette`: lighter for lower index (clamped to [`INDEX_RANGE`]).
+#[must_use]
+pub fn medium_colour(palette: &Palette, index: f64) -> Colour {
+    let (low, high) = INDEX_RANGE;
+    palette
+        .thin_medium
+        .lerp(palette.dense_medium, ((index - low) / (high - low)) as f32)
+}
+
+/// Builds the shapes, with the world→canvas map at hand.
+struct Builder<'a> {
+    layout: &'a Layout,
+    state: &'a ExplorerState,
+    overlay: &'a Overlay,
+    palette: Palette,
+    face: Option<Typeface>,
+    shapes: Vec<Shape>,
+    /// Labels wait here, with their rank, to be placed last and on top.
+    labels: Vec<(u8, Label)>,
+    /// The placement rank of labels added next: lower ranks are placed first and keep their
+    /// spot; later ones move aside.
+    rank: u8,
+}
+
+impl Builder<'_> {
+    fn font(&self) -> f32 {
+        self.layout.font
+    }
+
+    fn stroke(&self, width: f32, colour: Colour, dash: Dash) -> Stroke {
+        Stroke {
+            width: width * self.layout.unit(),
+            colour,
+            dash,
+        }
+    }
+
+    /// The unit diagram direction of a 3D vector of the plane.
+    fn flat(&self, v: DVec3) -> DVec2 {
+        self.state.plane().project(v).normalize_or(DVec2::X)
+    }
+
+    fn at(&self, world: DVec2) -> Vec2 {
+        self.layout.view.to_canvas(world)
+    }
+
+    fn label(&mut self, text: impl Into<String>, at: Vec2, (h, v): (Align, Align), size: f32) {
+        self.label_coloured(text, at, (h, v), size, self.palette.ink);
+    }
+
+    fn label_coloured(
+        &mut self,
+        text: impl Into<String>,
+        at: Vec2,
+        (h, v): (Align, Align),
+        size: f32,
+        colour: Colour,
+    ) {
+        let label = Label {
+            text: text.into(),
+            at,
+            h,
+            v,
+            size: size * self.font(),
+            colour,
+            background: Some(self.palette.label_background),
+        };
+        self.labels.push((self.rank, label));
+    }
+
+    /// Places the waiting labels, by rank, on top of everything else. A label anchored in the
+    /// drawing area is kept inside it (clear of the banner and the index scale) and moved
+    /// aside, a step at a time, until it overlaps no handle and no label placed before it.
+    fn finish(mut self, handles: &[Handle]) -> Vec<Shape> {
+        let mut labels = std::mem::take(&mut self.labels);
+        labels.sort_by_key(|(rank, _)| *rank);
+        let drawing = self.layout.drawing;
+        let mut taken: Vec<Rect> = handles.iter().map(Diagram::grab_area).collect();
+        for (_, mut label) in labels {
+            if let Some(face) = self.face.as_ref().filter(|_| drawing.contains(label.at)) {
+                let extent = face.measure(&label.text, label.size);
+                let pad = Vec2::splat(label.size * 0.25);
+                let corner = extent * Vec2::new(label.h.fraction(), label.v.fraction()) + pad;
+                let boxed = |at: Vec2| {
+                    let min = at - corner;
+                    let max = min + extent + pad * 2.0;
+                    let shift =
+                        (drawing.min - min).max(Vec2::ZERO) + (drawing.max - max).min(Vec2::ZERO);
+                    let rect = Rect {
+                        min: min + shift,
+                        max: max + shift,
+                    };
+                    (at + shift, rect)
+                };
+                let step = label.size * 0.6;
+                let offsets = std::iter::once(Vec2::ZERO).chain((1..=12).flat_map(|k| {
+                    [Vec2::Y, -Vec2::Y, Vec2::X, -Vec2::X].map(|d| d * step * k as f32)
+                }));
+                let (at, rect) = offsets
+                    .map(|offset| boxed(label.at + offset))
+                    .find(|(_, rect)| !taken.iter().any(|t| t.overlaps(rect)))
+                    .unwrap_or_else(|| boxed(label.at));
+                label.at = at;
+                taken.push(rect);
+            }
+            self.shapes.push(Shape::Text(label));
+        }
+        self.shapes
+    }
+
+    /// An arrow from the hit point along the unit diagram direction `d`, `length` long, with a
+    /// label beyond its tip.
+    fn ray(&mut self, d: DVec2, length: f64, stroke: Stroke, text: &str, size: f32) {
+        let tip = self.at(d * length);
+        self.shapes.push(Shape::Arrow {
+            from: self.at(DVec2::ZERO),
+            to: tip,
+            stroke,
+        });
+        if !text.is_empty() {
+            let away = self.layout.view.direction(d);
+            let at = tip + away * (self.font() * 0.9);
+            let colour = self.palette.text_shade(stroke.colour);
+            let anchor = (Align::away(away.x), Align::away(away.y));
+            self.label_coloured(text, at, anchor, size, colour);
+        }
+    }
+
+    /// A wide translucent stroke along `points` when the walk-through highlights `part`, drawn
+    /// before the part so that the part stays sharp on top of it.
+    fn halo(&mut self, part: Part, points: Vec<Vec2>) {
+        if self.overlay.highlights(part) {
+            let stroke = self.stroke(13.0, self.palette.highlight, Dash::Solid);
+            self.shapes.push(Shape::Line { points, stroke });
+        }
+    }
+
+    /// [`Builder::ray`] for a part a walk-through step may highlight.
+    fn part_ray(&mut self, part: Part, d: DVec2, length: f64, stroke: Stroke, text: &str) {
+        let size = match part {
+            Part::T => 1.1,
+            Part::Candidate(_) => 0.8,
+            _ => 1.0,
+        };
+        self.halo(part, vec![self.at(DVec2::ZERO), self.at(d * length)]);
+        self.ray(d, length, stroke, text, size);
+    }
+
+    /// The student's T, with its own length and dash, labelled with what it is.
+    fn student(&mut self) {
+        let Some(student) = self.overlay.student.as_ref() else {
+            return;
+        };
+        let flat = self.state.plane().project(student.t);
+        let length = flat.length();
+        // NaN, zero or perpendicular to the plane: nothing to draw; the verdict says why.
+        if !(length > 1e-9 && length.is_finite()) {
+            return;
+        }
+        let drawn = student.t.length().clamp(0.25, 1.6);
+        let stroke = self.stroke(2.6, self.palette.student, Dash::LongDash);
+        let text = student.label.clone();
+        self.ray(flat / length, drawn, stroke, &text, 0.95);
+    }
+
+    /// A straight line between world points, clipped to the drawing area.
+    fn segment(&mut self, a: DVec2, b: DVec2, stroke: Stroke) {
+        if let Some((a, b)) = clip_segment(self.at(a), self.at(b), &self.layout.drawing) {
+            self.shapes.push(Shape::Line {
+                points: vec![a, b],
+                stroke,
+            });
+        }
+    }
+
+    /// The two media, shaded by index and labelled in the drawing area's farthest corners.
+    fn media(&mut self, normal: DVec2) {
+        let drawing = self.layout.drawing;
+        let origin = self.at(DVec2::ZERO);
+        let facing = self.layout.view.direction(normal);
+        let inset = self.font() * 0.6;
+        for (side, symbol, index) in [
+            (1.0, "μi", self.state.mu_i()),
+            (-1.0, "μt", self.state.mu_t()),
+        ] {
+            let points = clip_rect_to_half_plane(&drawing, origin, facing * side);
+            self.shapes.push(Shape::Fill {
+                points,
+                colour: medium_colour(&self.palette, index),
+            });
+            let corners = drawing.corners();
+            let corner = corners
+                .into_iter()
+                .max_by(|a, b| {
+                    let depth = |p: &Vec2| (*p - origin).dot(facing * side) - p.y * 1e-3;
+                    depth(a).total_cmp(&depth(b))
+                })
+                .unwrap_or(drawing.min);
+            let inward = (drawing.center() - corner).signum();
+            let anchor = (Align::away(inward.x), Align::away(inward.y));
+            let text = medium_text(symbol, index);
+            let text = if side > 0.0 {
+                format!("{text}\nthe ray's medium")
+            } else {
+                format!("{text}\nthe medium it enters")
+            };
+            self.label(text, corner + inward * inset, anchor, 1.0);
+        }
+    }
+
+    /// The surface line, the normal's axis and, when there is one, the critical angle.
+    fn guides(&mut self, normal: DVec2, toward_source: DVec2) {
+        let along = normal.perp() * 10.0;
+        let surface = self.stroke(2.5, self.palette.ink, Dash::Solid);
+        self.segment(-along, along, surface);
+        let axis = self.stroke(1.0, self.palette.guide, Dash::Dashed);
+        self.segment(-normal * 1.15, normal * 1.15, axis);
+        if let Some(critical) = self.state.critical_angle() {
+            let side = if normal.perp_dot(toward_source) < 0.0 {
+                -1.0
+            } else {
+                1.0
+            };
+            let direction = DVec2::from_angle(side * critical).rotate(normal);
+            let stroke = self.stroke(1.8, self.palette.critical, Dash::DashDot);
+            self.segment(DVec2::ZERO, direction * 1.15, stroke);
+            let at = self.at(direction * 1.15);
+            let away = self.layout.view.direction(direction);
+            let text = format!("critical angle θc = {}°", number(critical.to_degrees(), 1));
+            let anchor = (Align::away(away.x), Align::away(away.y));
+            self.label_coloured(
+                text,
+                at,
+                anchor,
+                0.85,
+                self.palette.text_shade(self.palette.critical),
+            );
+        }
+    }
+
+    /// An angle arc between two unit diagram directions, labelled `text`.
+    fn angle(&mut self, part: Part, (from, to): (DVec2, DVec2), text: String, colour: Colour) {
+        let view = self.layout.view;
+        let radius = ARC_RADIUS as f32 * view.scale;
+        let points = arc(
+            self.at(DVec2::ZERO),
+            radius,
+            view.direction(from),
+            view.direction(to),
+        );
+        self.halo(part, points.clone());
+        let stroke = self.stroke(1.5, colour, Dash::Solid);
+        self.shapes.push(Shape::Line { points, stroke });
+        let middle = (from + to).normalize_or(from);
+        let away = view.direction(middle);
+        let at = self.at(middle * ARC_RADIUS) + away * (self.font() * 0.5);
+        let anchor = (Align::away(away.x), Align::away(away.y));
+        self.label_coloured(text, at, anchor, 0.9, self.palette.text_shade(colour));
+    }
+
+    /// The three rejected candidates as ghosts, labelled with (a, b) and the rule they break.
+    fn candidates(&mut self, r: &Refraction<f64>) {
+        for c in &r.candidates {
+            let Some(rejection) = c.rejection else {
+                continue;
+            };
+            let dash = match rejection {
+                Rejection::WrongSide => Dash::Dashed,
+                Rejection::WrongBend => Dash::Dotted,
+                Rejection::Reversed => Dash::DashDot,
+            };
+            let stroke = self.stroke(1.8, self.palette.rejected, dash);
+            // With a flipped normal the bug's ghost lies on the wrong-side root and says so.
+            let text = if r.normal_flipped && rejection == Rejection::WrongSide {
+                String::new()
+            } else {
+                format!(
+                    "{}\n(a, b) = ({}, {})",
+                    short_rule(rejection),
+                    number(c.a, 3),
+                    number(c.b, 3)
+                )
+            };
+            let part = Part::Candidate(rejection);
+            self.part_ray(part, self.flat(c.t), GHOST_LENGTH, stroke, &text);
+        }
+    }
+
+    /// What the source's formula gives with N as given when the kernel had to flip it: the
+    /// wrong T of a ray tracer that forgets to flip an outward normal.
+    fn outward_normal_bug(&mut self, r: &Refraction<f64>) {
+        if !r.normal_flipped {
+            return;
+        }
+        let facing = self.flat(r.facing_normal);
+        let stroke = self.stroke(1.6, self.palette.n, Dash::Dashed);
+        self.ray(facing, 0.75, stroke, "−N: the normal the kernel uses", 0.8);
+        if let Some(wrong) = seed::refract(r.w, r.n, r.mu, r.convention) {
+            let stroke = self.stroke(3.0, self.palette.warning, Dash::Dashed);
+            self.ray(
+                self.flat(wrong),
+                1.0,
+                stroke,
+                "source formula with un-flipped N: the wrong-side root,\nthe wrong T of the outward-normal bug",
+                0.85,
+            );
+        }
+    }
+
+    /// T = a·W + b·N drawn as its two parts, head to tail.
+    fn decomposition(&mut self, r: &Refraction<f64>) {
+        let Some(tr) = r.transmission else {
+            return;
+        };
+        let a_w = self.state.plane().project(r.w * tr.a);
+        let t = self.state.plane().project(tr.t);
+        let path = [DVec2::ZERO, a_w, t].map(|p| self.at(p)).to_vec();
+        self.halo(Part::Decomposition, path);
+        let w_part = self.stroke(1.3, self.palette.w, Dash::Dotted);
+        self.segment(DVec2::ZERO, a_w, w_part);
+        let n_part = self.stroke(1.3, self.palette.n, Dash::Dotted);
+        self.segment(a_w, t, n_part);
+        if self.layout.drawing.contains(self.at(a_w)) {
+            let at = self.at(a_w);
+            let text = format!("a·W (a = {})", number(tr.a, 3));
+            self.label_coloured(
+                text,
+                at,
+                (Align::Center, Align::End),
+                0.75,
+                self.palette.ink,
+            );
+        }
+    }
+
+    /// The status strip: the convention in words, or total internal reflection.
+    fn banner(&mut self, r: &Refraction<f64>) -> String {
+        let rect = self.layout.banner;
+        let (fill, ink) = if r.is_tir() {
+            (self.palette.alarm, self.palette.on_alarm)
+        } else {
+            (self.palette.calm, self.palette.ink)
+        };
+        self.shapes.push(Shape::Fill {
+            points: rect.corners().to_vec(),
+            colour: fill,
+        });
+        let theta_i = number(r.cos_i.clamp(-1.0, 1.0).acos().to_degrees(), 1);
+        let text = match r.transmission {
+            None => format!(
+                "TOTAL INTERNAL REFLECTION\nk = {} < 0: no real root for b, no refracted ray; \
+                 all light is reflected (θi = {theta_i}°)",
+                number(r.k, 4)
+            ),
+            Some(tr) => {
+                let words = match r.convention {
+                    Convention::TowardOrigin => "W points back toward the origin, so a = −μ",
+                    Convention::AlongRay => "W is the direction of travel, so a = +μ",
+                };
+                format!(
+                    "Section {}: {words}\nθi = {theta_i}°   θt = {}°   k = {} ≥ 0: T exists",
+                    r.convention.section(),
+                    number(tr.cos_t.clamp(-1.0, 1.0).acos().to_degrees(), 1),
+                    number(r.k, 4)
+                )
+            }
+        };
+        let at = Vec2::new(rect.min.x + self.font() * 0.6, rect.center().y);
+        self.shapes.push(Shape::Text(Label {
+            text: text.clone(),
+            at,
+            h: Align::Start,
+            v: Align::Center,
+            size: self.font(),
+            colour: ink,
+            background: None,
+        }));
+        text
+    }
+
+    /// The index scale with the presets and the two μ markers.
+    fn index_scale(&mut self) -> [Handle; 2] {
+        let scale = self.layout.scale;
+        let font = self.font();
+        let line = self.stroke(1.5, self.palette.guide, Dash::Solid);
+        self.shapes.push(Shape::Line {
+            points: vec![
+                Vec2::new(scale.x, scale.top),
+                Vec2::new(scale.x, scale.bottom),
+            ],
+            stroke: line,
+        });
+        self.label(
+            "index μ",
+            Vec2::new(scale.x, scale.top - font * 1.2),
+            (Align::Center, Align::End),
+            0.85,
+        );
+        for tenth in 10..=26 {
+            let y = scale.y_of(f64::from(tenth) / 10.0);
+            let long = tenth % 5 == 0;
+            let half = if long { 0.5 } else { 0.25 } * font;
+            self.shapes.push(Shape::Line {
+                points: vec![Vec2::new(scale.x - half, y), Vec2::new(scale.x + half, y)],
+                stroke: line,
+            });
+            if long {
+                let at = Vec2::new(scale.x + font * 1.7, y);
+                let text = number(f64::from(tenth) / 10.0, 1);
+                self.label(text, at, (Align::Start, Align::Center), 0.75);
+            }
+        }
+        for m in MATERIALS.iter().filter(|m| m.name != "air") {
+            let at = Vec2::new(scale.x - font * 2.0, scale.y_of(m.index));
+            self.label(m.name, at, (Align::End, Align::Center), 0.75);
+        }
+        [
+            (HandleId::MuI, -1.0, self.state.mu_i(), "μi"),
+            (HandleId::MuT, 1.0, self.state.mu_t(), "μt"),
+        ]
+        .map(|(id, side, index, text)| {
+            let center = Vec2::new(scale.x + side * font * 0.8, scale.y_of(index));
+            let radius = font * 0.75;
+            self.shapes.push(Shape::Disc {
+                center,
+                radius,
+                fill: medium_colour(&self.palette, index),
+                outline: self.stroke(2.0, self.palette.ink, Dash::Solid),
+            });
+            self.shapes.push(Shape::Text(Label {
+                text: text.into(),
+                at: center,
+                h: Align::Center,
+                v: Align::Center,
+                size: font * 0.75,
+                colour: self.palette.ink,
+                background: None,
+            }));
+            Handle { id, center, radius }
+        })
+    }
+
+    /// A round handle at a tip.
+    fn tip_handle(&mut self, id: HandleId, d: DVec2, colour: Colour) -> Handle {
+        let center = self.at(d);
+        let radius = self.font() * 0.6;
+        self.shapes.push(Shape::Disc {
+            center,
+            radius,
+            fill: self.palette.background,
+            outline: self.stroke(2.5, colour, Dash::Solid),
+        });
+        Handle { id, center, radius }
+    }
+}
+
+impl Diagram {
+    /// The diagram of `state` on a canvas `size` pixels wide and high, in the standard
+    /// palette and nothing over it.
+    #[must_use]
+    pub fn new(state: &ExplorerState, size: Vec2) -> Self {
+        Self::with_overlay(state, size, &Overlay::default())
+    }
+
+    /// The diagram of `state` on a canvas `size` pixels wide and high, drawn in the overlay's
+    /// palette and view, with its student's T and highlights.
+    #[must_use]
+    pub fn with_overlay(state: &ExplorerState, size: Vec2, overlay: &Overlay) -> Self {
+        let layout = Layout::new(size).panned(overlay.pan_zoom);
+        let palette = overlay.palette;
+        let mut b = Builder {
+            layout: &layout,
+            state,
+            overlay,
+            palette,
+            face: Typeface::egui_default().ok(),
+            labels: Vec::new(),
+            rank: 5,
+            shapes: vec![Shape::Fill {
+                points: layout.canvas.corners().to_vec(),
+                colour: palette.background,
+            }],
+        };
+        let r = state.refraction();
+        let normal = b.flat(r.facing_normal);
+        let toward_source = b.flat(-r.travel);
+        b.media(normal);
+        b.rank = 4;
+        b.guides(normal, toward_source);
+        b.rank = 1;
+        b.angle(
+            Part::AngleI,
+            (normal, toward_source),
+            format!("θi = {}°", number(r.cos_i.acos().to_degrees(), 1)),
+            b.palette.incoming,
+        );
+        let incoming = b.stroke(2.0, palette.incoming, palette.incoming_dash);
+        let source = toward_source * INCOMING_LENGTH;
+        b.halo(Part::Incoming, vec![b.at(source), b.at(DVec2::ZERO)]);
+        b.segment(source, DVec2::ZERO, incoming);
+        if palette.label_incoming {
+            let at = b.at(source);
+            let away = b.layout.view.direction(toward_source);
+            let anchor = (Align::away(away.x), Align::away(away.y));
+            b.label_coloured(
+                "incoming ray",
+                at,
+                anchor,
+                0.8,
+                palette.text_shade(palette.incoming),
+            );
+        }
+        b.shapes.push(Shape::Arrow {
+            from: b.at(source),
+            to: b.at(source * 0.45),
+            stroke: incoming,
+        });
+        b.rank = 3;
+        b.candidates(r);
+        b.rank = 2;
+        b.outward_normal_bug(r);
+        b.rank = 4;
+        b.decomposition(r);
+        b.rank = 1;
+        let reflected = b.flat(r.reflected);
+        match r.transmission {
+            Some(tr) => {
+                let t = b.flat(tr.t);
+                let theta_t = number(tr.cos_t.clamp(-1.0, 1.0).acos().to_degrees(), 1);
+                let text = format!("θt = {theta_t}°");
+                b.angle(Part::AngleT, (-normal, t), text, palette.t);
+                let thin = b.stroke(1.6, palette.reflected, palette.reflected_dash);
+                b.ray(reflected, 0.7, thin, "reflected", 0.8);
+            }
+            None => {
+                let bold = b.stroke(4.5, palette.reflected, palette.reflected_dash);
+                b.ray(reflected, 1.0, bold, "reflected ray (all the light)", 1.0);
+            }
+        }
+        let w_text = match state.convention() {
+            Convention::AlongRay => "W (along the ray)",
+            Convention::TowardOrigin => "W (toward the origin)",
+        };
+        b.rank = 0;
+        let w_dir = state.direction(HandleId::W);
+        let n_dir = state.direction(HandleId::N);
+        let w_stroke = b.stroke(3.0, palette.w, Dash::Solid);
+        b.part_ray(Part::W, w_dir, 1.0, w_stroke, w_text);
+        let n_stroke = b.stroke(3.0, palette.n, Dash::Solid);
+        b.part_ray(Part::N, n_dir, 1.0, n_stroke, "N");
+        if let Some(tr) = r.transmission {
+            let t_stroke = b.stroke(4.5, palette.t, Dash::Solid);
+            b.part_ray(Part::T, b.flat(tr.t), 1.0, t_stroke, "T");
+        }
+        b.student();
+        let summary = b.banner(r);
+        let [mu_i, mu_t] = b.index_scale();
+        let w = b.tip_handle(HandleId::W, w_dir, palette.w);
+        let n = b.tip_handle(HandleId::N, n_dir, palette.n);
+        let handles = vec![w, n, mu_i, mu_t];
+        Self {
+            shapes: b.finish(&handles),
+            handles,
+            layout,
+            summary,
+        }
+    }
+
+    /// The primitives to draw, back to front.
+    #[must_use]
+    pub fn primitives(&self) -> Vec<Primitive> {
+        lower_all(&self.shapes)
+    }
+
+    /// A handle's grab area on the canvas.
+    #[must_use]
+    pub fn grab_area(handle: &Handle) -> Rect {
+        Rect::around(handle.center, handle.radius * GRAB_SCALE)
+    }
+
+    /// Moves `handle` to the canvas point `p`: W and N point at it, a μ marker takes the index
+    /// at its height.
+    pub fn drag(&self, state: &mut ExplorerState, handle: HandleId, p: Vec2) {
+        match handle {
+            HandleId::W | HandleId::N => state.point(handle, self.layout.view.to_world(p)),
+            HandleId::MuI | HandleId::MuT => {
+                let _ = state.set_index(handle, self.layout.scale.index_at(p.y));
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::palette;
+
+    fn arrows(diagram: &Diagram) -> Vec<(Vec2, Stroke)> {
+        diagram
+            .shapes
+            .iter()
+            .filter_map(|s| match s {
+                Shape::Arrow { to, stroke, .. } => Some((*to, *stroke)),
+                _ => None,
+            })
+            .collect()
+    }
+
+    fn texts(diagram: &Diagram) -> Vec<&str> {
+        diagram
+            .shapes
+            .iter()
+            .filter_map(|s| match s {
+                Shape::Text(l) => Some(l.text.as_str()),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn t_is_bold_and_the_rejected_candidates_are_ghosts_with_distinct_dashes() {
+        let diagram = Diagram::new(&ExplorerState::default(), Vec2::new(1000.0, 700.0));
+        let all = arrows(&diagram);
+        let t = all.iter().find(|(_, s)| s.colour == palette::T).unwrap();
+        assert_eq!(t.1.dash, Dash::Solid);
+        let ghosts: Vec<_> = all
+            .iter()
+            .filter(|(_, s)| s.colour == palette::REJECTED)
+            .collect();
+        assert_eq!(ghosts.len(), 3);
+        assert!(ghosts.iter().all(|(_, s)| s.width < t.1.width));
+        let mut dashes: Vec<_> = ghosts.iter().map(|(_, s)| s.dash.pattern(2.0)).collect();
+        dashes.dedup();
+        assert_eq!(dashes.len(), 3);
+        let labels = texts(&diagram);
+        assert!(
+            labels
+                .iter()
+                .any(|l| l.starts_with("other b root: wrong side\n(a, b) = ("))
+        );
+        assert!(labels.iter().any(|l| l.starts_with("Section 2")));
+        assert_eq!(diagram.handles.len(), 4);
+    }
+
+    #[test]
+    fn total_internal_reflection_has_a_banner_and_no_candidates() {
+        let mut state = ExplorerState::default();
+        state.set_mu_i(1.5).unwrap();
+        state.set_mu_t(1.0).unwrap();
+        state.rotate(HandleId::W, 30.0);
+        assert!(state.refraction().is_tir());
+        let diagram = Diagram::new(&state, Vec2::new(1000.0, 700.0));
+        let all = arrows(&diagram);
+        assert!(!all.iter().any(|(_, s)| s.colour == palette::REJECTED));
+        assert!(!all.iter().any(|(_, s)| s.colour == palette::T));
+        assert!(all.iter().any(|(_, s)| s.colour == palette::REFLECTED));
+        let labels = texts(&diagram);
+        assert!(
+            labels
+                .iter()
+                .any(|l| l.starts_with("TOTAL INTERNAL REFLECTION"))
+        );
+        assert!(
+            labels
+                .iter()
+                .any(|l| l.starts_with("critical angle θc = 41.8°"))
+        );
+    }
+
+    #[test]
+    fn a_flipped_normal_shows_the_bug_as_a_warning_ghost() {
+        let mut state = ExplorerState::default();
+        state.flip_normal();
+        let diagram = Diagram::new(&state, Vec2::new(1000.0, 700.0));
+        let (tip, _) = arrows(&diagram)
+            .into_iter()
+            .find(|(_, s)| s.colour == palette::WARNING)
+            .unwrap();
+        // The bug's T goes back up into the ray's medium (above the surface on screen).
+        assert!(tip.y < diagram.layout.view.origin.y);
+    }
+
+    #[test]
+    fn the_students_t_and_the_walk_through_highlights_are_part_of_the_picture() {
+        use crate::overlay::{Focus, Overlay, StudentRay};
+        let state = ExplorerState::default();
+        let wrong = state.refraction().candidates[1].t;
+        let overlay = Overlay {
+            student: Some(StudentRay {
+                t: wrong * 1.3,
+                label: "your T: wrong side".to_owned(),
+            }),
+            focus: Some(Focus::SquaredConstraints),
+            ..Overlay::default()
+        };
+        let size = Vec2::new(1000.0, 700.0);
+        let diagram = Diagram::with_overlay(&state, size, &overlay);
+        let plain = Diagram::new(&state, size);
+        let student: Vec<_> = arrows(&diagram)
+            .into_iter()
+            .filter(|(_, s)| s.colour == palette::STUDENT)
+            .collect();
+        assert_eq!(student.len(), 1);
+        assert_eq!(student[0].1.dash, Dash::LongDash);
+        let origin = diagram.layout.view.origin;
+        let length = (student[0].0 - origin).length() / diagram.layout.view.scale;
+        assert!(
+            (length - 1.3).abs() < 1e-3,
+            "drawn with its own length: {length}"
+        );
+        assert!(texts(&diagram).contains(&"your T: wrong side"));
+        let halos = |d: &Diagram| {
+            d.shapes
+                .iter()
+                .filter(|s| matches!(s, Shape::Line { stroke, .. } if stroke.colour == palette::HIGHLIGHT))
+                .count()
+        };
+        assert_eq!(halos(&diagram), 4, "T and the three ghosts");
+        assert_eq!(halos(&plain), 0);
+        let nan = Overlay {
+            student: Some(StudentRay {
+                t: glam::DVec3::NAN,
+                label: "your T".to_owned(),
+            }),
+            ..Overlay::default()
+        };
+        assert_eq!(
+            Diagram::with_overlay(&state, size, &nan).shapes.len(),
+            plain.shapes.len()
+        );
+    }
+
+    #[test]
+    fn every_palette_draws_the_same_picture_in_its_own_colours() {
+        use crate::overlay::Overlay;
+        use crate::palette::{Palette, Theme};
+        let state = ExplorerState::default();
+        let size = Vec2::new(1000.0, 700.0);
+        let dark = Overlay {
+            palette: Palette::new(Theme::HighContrastDark, true),
+            ..Overlay::default()
+        };
+        let diagram = Diagram::with_overlay(&state, size, &dark);
+        assert!(
+            matches!(&diagram.shapes[0], Shape::Fill { colour, .. } if *colour == dark.palette.background)
+        );
+        assert!(texts(&diagram).contains(&"incoming ray"));
+        let reflected = arrows(&diagram)
+            .into_iter()
+            .find(|(_, s)| s.colour == dark.palette.reflected)
+            .unwrap();
+        assert_eq!(reflected.1.dash, Dash::DashDotDot);
+    }
+
+    #[test]
+    fn dragging_handles_moves_w_and_the_indices() {
+        let mut state = ExplorerState::default();
+        let diagram = Diagram::new(&state, Vec2::new(1000.0, 700.0));
+        let origin = diagram.layout.view.origin;
+        diagram.drag(&mut state, HandleId::W, origin + Vec2::new(0.0, 100.0));
+        assert!(state.refraction().cos_i > 1.0 - 1e-12);
+        let y = diagram.layout.scale.y_of(2.0);
+        diagram.drag(&mut state, HandleId::MuT, Vec2::new(0.0, y));
+        assert_eq!(state.mu_t(), 2.0);
+        let rect = Diagram::grab_area(&diagram.handles[0]);
+        assert!(rect.contains(diagram.handles[0].center));
+    }
+
+    #[test]
+    fn every_label_fits_on_small_and_large_canvases() {
+        let face = Typeface::egui_default().unwrap();
+        let mut tir = ExplorerState::default();
+        tir.set_mu_i(1.5).unwrap();
+        tir.set_mu_t(1.0).unwrap();
+        tir.rotate(HandleId::W, 45.0);
+        for state in [ExplorerState::default(), tir] {
+            for size in [Vec2::new(500.0, 560.0), Vec2::new(1920.0, 1080.0)] {
+                let diagram = Diagram::new(&state, size);
+                let canvas = diagram.layout.canvas;
+                for shape in &diagram.shapes {
+                    if let Shape::Text(l) = shape {
+                        let extent = face.measure(&l.text, l.size);
+                        let min = l.at - extent * Vec2::new(l.h.fraction(), l.v.fraction());
+                        let inside = canvas.contains(min) && canvas.contains(min + extent);
+                        assert!(inside, "{l:?} is cut off at {size}");
+                        assert!(l.text.chars().all(|c| c == '\n' || face.covers(c)), "{l:?}");
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,86 @@
+//! The source's quadratic in b (eq. 20), whose roots merge and vanish at the critical angle.
+
+use refraction_kernel::Refraction;
+
+/// b² + 2·a·wn·b + a² − 1 = 0 for the convention's chosen a = ±μ (Section 1:
+/// μ² − 2μ·b·wn + b² = 1; Section 2: μ² + 2μ·b·wn + b² = 1).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Quadratic {
+    /// The chosen weight of W (−μ in Section 1, +μ in Section 2).
+    pub a: f64,
+    /// wn = Ŵ·N̂.
+    pub wn: f64,
+    /// The kernel's roots: the chosen b and the other root, or none on total internal
+    /// reflection.
+    pub roots: Vec<f64>,
+}
+
+impl Quadratic {
+    /// The quadratic of a refraction, with the kernel's roots.
+    #[must_use]
+    pub fn of(r: &Refraction<f64>) -> Self {
+        let a = r.convention.travel_sign::<f64>() * r.mu;
+        Self {
+            a,
+            wn: r.wn(),
+            roots: r
+                .candidates
+                .iter()
+                .filter(|c| c.a == a)
+                .map(|c| c.b)
+                .collect(),
+        }
+    }
+
+    /// The left-hand side at `b`.
+    #[must_use]
+    pub fn value(&self, b: f64) -> f64 {
+        b * b + 2.0 * self.a * self.wn * b + self.a * self.a - 1.0
+    }
+
+    /// The b of the vertex, halfway between the roots.
+    #[must_use]
+    pub fn vertex(&self) -> f64 {
+        -self.a * self.wn
+    }
+
+    /// `count` points (b, value) evenly over vertex ± `half_width`.
+    #[must_use]
+    pub fn samples(&self, half_width: f64, count: usize) -> Vec<[f64; 2]> {
+        let count = count.max(2);
+        (0..count)
+            .map(|i| {
+                let b =
+                    self.vertex() - half_width + 2.0 * half_width * i as f64 / (count - 1) as f64;
+                [b, self.value(b)]
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{ExplorerState, HandleId};
+    use refraction_kernel::Convention;
+
+    #[test]
+    fn the_kernel_roots_are_roots_and_vanish_past_the_critical_angle() {
+        let mut state = ExplorerState::default();
+        for convention in [Convention::AlongRay, Convention::TowardOrigin] {
+            state.set_convention(convention);
+            let q = Quadratic::of(state.refraction());
+            assert_eq!(q.roots.len(), 2);
+            for b in &q.roots {
+                assert!(q.value(*b).abs() < 1e-12);
+            }
+            assert!((q.value(q.vertex()) + state.refraction().k).abs() < 1e-12);
+        }
+        state.set_mu_i(1.5).unwrap();
+        state.set_mu_t(1.0).unwrap();
+        state.rotate(HandleId::W, 30.0);
+        let q = Quadratic::of(state.refraction());
+        assert!(q.roots.is_empty() && q.value(q.vertex()) > 0.0);
+        assert_eq!(q.samples(1.0, 5).len(), 5);
+    }
+}

@@ -1,0 +1,893 @@
+//! The picture of a traced scene: media shaded by index, rays coloured by wavelength with their
+//! opacity by intensity, a marker at every kernel call, the source and shape handles, and a
+//! banner with the title, the counts of what was computed and the legend. Built as
+//! [`Primitive`]s directly (no dashes to lower), because a scene of a thousand rays is rebuilt
+//! on every frame of a drag.
+
+use std::collections::HashSet;
+
+use glam::{DVec2, Vec2};
+
+use super::font::Typeface;
+use super::geometry::{Colour, Rect, convex_pieces};
+use super::layout::{View, font_size};
+use super::palette::{self, Palette, number};
+use super::picture::{GRAB_SCALE, medium_colour};
+use super::shapes::{Align, Dash, Label, Primitive, Shape as Drawn, Stroke};
+use super::spectrum::{ray_colour, wavelength_colour};
+use refraction_scene::{
+    Bounds, Counts, EditError, Hit, Outcome, Path, REFERENCE_WAVELENGTH_NM, Scene, Side, Trace,
+};
+
+/// Ray points closer than this many pixels to the previous one are left out: they change
+/// nothing on screen and a dense scene has many.
+const MIN_STEP: f32 = 0.5;
+
+/// A draggable point of a scene picture.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SceneHandleId {
+    /// The source's origin: the start of the ray, the centre of the beam, the apex of the fan.
+    Source,
+    /// A point ahead of the source along its direction: dragging it aims the source.
+    Aim,
+    /// A shape's anchor ([`refraction_scene::Shape::anchor`]), by position in the scene's shapes.
+    Shape(usize),
+}
+
+impl SceneHandleId {
+    /// The handle's name for screen readers and tests, e.g. `Shape 1 handle (water)`.
+    #[must_use]
+    pub fn label(self, scene: &Scene) -> String {
+        match self {
+            Self::Source => "Source handle".to_owned(),
+            Self::Aim => "Source direction handle".to_owned(),
+            Self::Shape(i) => {
+                let what = scene
+                    .shapes()
+                    .get(i)
+                    .and_then(|s| s.medium())
+                    .and_then(|m| scene.media().get(m))
+                    .map_or("screen", |m| m.name.as_str());
+                format!("Shape {} handle ({what})", i + 1)
+            }
+        }
+    }
+}
+
+/// A draggable point on the canvas.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneHandle {
+    /// Which handle.
+    pub id: SceneHandleId,
+    /// Its centre on the canvas.
+    pub center: Vec2,
+    /// Its radius in pixels.
+    pub radius: f32,
+}
+
+impl SceneHandle {
+    /// The square in which a press grabs the handle (a little larger than the handle).
+    #[must_use]
+    pub fn grab_area(&self) -> Rect {
+        Rect::around(self.center, self.radius * GRAB_SCALE)
+    }
+}
+
+/// Where things go on a canvas for a scene: the banner at the top and the world rectangle
+/// fitted into the rest.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneLayout {
+    /// The whole canvas, from (0, 0).
+    pub canvas: Rect,
+    /// The strip at the top: title, counts, legend.
+    pub banner: Rect,
+    /// The area the world is shown in.
+    pub drawing: Rect,
+    /// The world↔canvas map, fitted to the world rectangle.
+    pub view: View,
+    /// The world rectangle it was fitted to.
+    pub bounds: Bounds,
+    /// The label font size in pixels; strokes, markers and handles scale with it.
+    pub font: f32,
+}
+
+impl SceneLayout {
+    /// The layout that shows the world rectangle `bounds` on a canvas `size` pixels wide and
+    /// high (sizes below 1 are treated as 1).
+    #[must_use]
+    pub fn new(bounds: Bounds, size: Vec2) -> Self {
+        let size = size.max(Vec2::ONE);
+        let font = font_size(size);
+        let canvas = Rect::from_min_size(Vec2::ZERO, size);
+        let banner = Rect::from_min_size(Vec2::ZERO, Vec2::new(size.x, font * 4.4));
+        let drawing = Rect {
+            min: Vec2::new(0.0, banner.max.y),
+            max: Vec2::new(size.x, size.y.max(banner.max.y + 1.0)),
+        };
+        let inset = Vec2::splat(font * 0.5);
+        let inner = Rect {
+            min: drawing.min + inset,
+            max: (drawing.max - inset).max(drawing.min + inset + Vec2::ONE),
+        };
+        Self {
+            canvas,
+            banner,
+            drawing,
+            view: View::fitted(bounds.min, bounds.max, &inner),
+            bounds,
+            font,
+        }
+    }
+
+    /// One stroke-width unit in pixels.
+    #[must_use]
+    pub fn unit(&self) -> f32 {
+        self.font / 14.0
+    }
+
+    /// The canvas point of a world point.
+    #[must_use]
+    pub fn at(&self, world: DVec2) -> Vec2 {
+        self.view.to_canvas(world)
+    }
+
+    /// How far from a hit point (in pixels) a click still picks it.
+    #[must_use]
+    pub fn pick_radius(&self) -> f32 {
+        self.font * 0.8
+    }
+
+    /// The handles of `scene`: the source, its aim, then each shape's anchor. A shape handle
+    /// that would cover an earlier handle (a fibre's core and cladding share their centre) is
+    /// moved down until it is clear.
+    #[must_use]
+    pub fn handles(&self, scene: &Scene) -> Vec<SceneHandle> {
+        let source = scene.source();
+        let origin = self.at(source.origin);
+        let aim = origin
+            + self.view.direction(source.direction).normalize_or(Vec2::X) * (self.font * 5.0);
+        let small = self.font * 0.5;
+        let mut handles = vec![
+            SceneHandle {
+                id: SceneHandleId::Source,
+                center: origin,
+                radius: self.font * 0.6,
+            },
+            SceneHandle {
+                id: SceneHandleId::Aim,
+                center: aim,
+                radius: small,
+            },
+        ];
+        for (i, shape) in scene.shapes().iter().enumerate() {
+            let mut center = self.at(shape.anchor());
+            // Far enough apart for the two lines of a medium label beside each.
+            let step = self.font * 2.4;
+            while handles
+                .iter()
+                .any(|h| h.center.distance(center) < step * 0.99)
+            {
+                center.y += step;
+            }
+            handles.push(SceneHandle {
+                id: SceneHandleId::Shape(i),
+                center,
+                radius: small,
+            });
+        }
+        handles
+    }
+
+    /// Moves `handle` to the canvas point `p`: the source starts there, aims at it, or the
+    /// shape moves with its handle. The caller retraces.
+    ///
+    /// # Errors
+    /// The scene's [`EditError`] (e.g. aiming the source at itself); the scene is unchanged.
+    pub fn drag(&self, scene: &mut Scene, handle: SceneHandleId, p: Vec2) -> Result<(), EditError> {
+        let world = self.view.to_world(p);
+        match handle {
+            SceneHandleId::Source => scene.set_source_origin(world),
+            SceneHandleId::Aim => scene.set_source_direction(world - scene.source().origin),
+            SceneHandleId::Shape(i) => {
+                // The handle may sit beside the anchor: the shape moves as far as its handle.
+                let at = self
+                    .handles(scene)
+                    .into_iter()
+                    .find(|h| h.id == handle)
+                    .map_or(p, |h| h.center);
+                scene.move_shape(i, world - self.view.to_world(at))
+            }
+        }
+    }
+
+    /// The hit nearest to the canvas point `p`, if it lies within [`Self::pick_radius`].
+    #[must_use]
+    pub fn hit_near<'t>(&self, trace: &'t Trace, p: Vec2) -> Option<&'t Hit> {
+        trace
+            .nearest_hit(self.view.to_world(p))
+            .filter(|hit| self.at(hit.point).distance(p) <= self.pick_radius())
+    }
+}
+
+/// Everything drawn for one traced scene on one canvas.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScenePicture {
+    /// What is drawn, back to front.
+    pub primitives: Vec<Primitive>,
+    /// The handles, as [`SceneLayout::handles`] gives them.
+    pub handles: Vec<SceneHandle>,
+    /// The title and the counts in words, for screen readers.
+    pub summary: String,
+}
+
+/// The opacity of a ray of this intensity (a fraction of the source ray's; `None` when the
+/// scene computes none): faint rays stay visible, and the steps are coarse so that a path is
+/// split into separately drawn pieces only where the change shows.
+fn opacity(intensity: Option<f64>) -> u8 {
+    let Some(i) = intensity else {
+        return 255;
+    };
+    let i = if i.is_finite() {
+        i.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let alpha = 0.15 + 0.85 * i.sqrt();
+    // Sixteenths, rounded (the cast truncates a positive number).
+    let step = (alpha * 16.0 + 0.5) as u32;
+    (step * 255 / 16) as u8
+}
+
+/// The name and index of a medium for a label (dispersive media at the reference wavelength).
+fn medium_text(scene: &Scene, medium: usize) -> String {
+    scene.media().get(medium).map_or_else(String::new, |m| {
+        let n = number(m.index(REFERENCE_WAVELENGTH_NM), 3);
+        if m.dispersion.is_dispersive() {
+            format!("{}\nn = {n} at {REFERENCE_WAVELENGTH_NM} nm", m.name)
+        } else {
+            format!("{}\nn = {n}", m.name)
+        }
+    })
+}
+
+/// The counts of what the tracer computed, in one line.
+fn counts_text(c: &Counts) -> String {
+    let plural =
+        |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
+    let mut parts = vec![
+        plural(c.kernel_calls, "kernel call", "kernel calls"),
+        plural(
+            c.total_internal_reflections,
+            "total internal reflection",
+            "total internal reflections",
+        ),
+        plural(
+            c.reflections_spawned,
+            "reflection spawned",
+            "reflections spawned",
+        ),
+        plural(
+            c.fresnel_evaluations,
+            "Fresnel evaluation",
+            "Fresnel evaluations",
+        ),
+        plural(c.wavelengths, "wavelength", "wavelengths"),
+        plural(c.source_rays, "source ray", "source rays"),
+    ];
+    if c.equal_index_skips > 0 {
+        parts.push(plural(
+            c.equal_index_skips,
+            "equal-index skip",
+            "equal-index skips",
+        ));
+    }
+    if c.absorption_evaluations > 0 {
+        parts.push(plural(
+            c.absorption_evaluations,
+            "absorption evaluation",
+            "absorption evaluations",
+        ));
+    }
+    parts.join(" · ")
+}
+
+/// Builds the primitives, with the layout at hand.
+struct Builder<'a> {
+    layout: &'a SceneLayout,
+    face: Option<Typeface>,
+    out: Vec<Primitive>,
+}
+
+impl Builder<'_> {
+    fn unit(&self) -> f32 {
+        self.layout.unit()
+    }
+
+    /// The extent of a label's text (estimated if the font is missing, which only a broken
+    /// build can cause).
+    fn measure(&self, text: &str, size: f32) -> Vec2 {
+        self.face.as_ref().map_or_else(
+            || Vec2::new(text.chars().count() as f32 * size * 0.55, size * 1.2),
+            |face| face.measure(text, size),
+        )
+    }
+
+    /// A label with a light box behind it, moved as little as needed to lie inside the canvas.
+    fn boxed_label(&mut self, text: String, at: Vec2, (h, v): (Align, Align), size: f32) {
+        let extent = self.measure(&text, size);
+        let pad = Vec2::splat(size * 0.25);
+        let min = at - extent * Vec2::new(h.fraction(), v.fraction()) - pad;
+        let max = min + extent + pad * 2.0;
+        let canvas = self.layout.canvas;
+        let shift = (canvas.min - min).max(Vec2::ZERO) + (canvas.max - max).min(Vec2::ZERO);
+        self.out.push(Primitive::Text(Label {
+            text,
+            at: at + shift,
+            h,
+            v,
+            size,
+            colour: palette::INK,
+            background: Some(palette::LABEL_BACKGROUND),
+        }));
+    }
+
+    /// The world rectangle in the background medium's shade (rays end at its edge), then each
+    /// shape filled with its medium's shade and outlined; a
+    /// screen as a thick line. Edges along the world rectangle's border are the view's edge,
+    /// not a surface, and are not outlined.
+    fn shapes(&mut self, scene: &Scene) {
+        let background = scene
+            .media()
+            .get(scene.background())
+            .map_or(1.0, |m| m.index(REFERENCE_WAVELENGTH_NM));
+        self.out.push(Primitive::Polygon {
+            points: self.layout.canvas.corners().to_vec(),
+            colour: palette::OUTSIDE_WORLD,
+        });
+        let bounds = self.layout.bounds;
+        self.out.push(Primitive::Polygon {
+            points: bounds.corners().map(|p| self.layout.at(p)).to_vec(),
+            colour: medium_colour(&Palette::STANDARD, background),
+        });
+        let max_step = 2.0 / f64::from(self.layout.view.scale);
+        let on_border = |a: DVec2, b: DVec2| {
+            let same = |x: f64, y: f64| (x - y).abs() <= 1e-9 * (1.0 + x.abs());
+            (0..2).any(|axis| {
+                (same(a[axis], bounds.min[axis]) && same(b[axis], bounds.min[axis]))
+                    || (same(a[axis], bounds.max[axis]) && same(b[axis], bounds.max[axis]))
+            })
+        };
+        for outline in scene.outlines() {
+            let world = outline.polyline(max_step);
+            let points: Vec<Vec2> = world.iter().map(|p| self.layout.at(*p)).collect();
+            let medium = scene.shapes().get(outline.shape).and_then(|s| s.medium());
+            let Some(medium) = medium else {
+                self.out.push(Primitive::Polyline {
+                    points,
+                    width: 4.0 * self.unit(),
+                    colour: palette::INK,
+                });
+                continue;
+            };
+            let index = scene
+                .media()
+                .get(medium)
+                .map_or(1.0, |m| m.index(REFERENCE_WAVELENGTH_NM));
+            for piece in convex_pieces(&points) {
+                self.out.push(Primitive::Polygon {
+                    points: piece,
+                    colour: medium_colour(&Palette::STANDARD, index),
+                });
+            }
+            let mut run: Vec<Vec2> = Vec::new();
+            for (pair, canvas) in world.windows(2).zip(points.windows(2)) {
+                if on_border(pair[0], pair[1]) {
+                    self.edge(std::mem::take(&mut run));
+                } else {
+                    if run.is_empty() {
+                        run.push(canvas[0]);
+                    }
+                    run.push(canvas[1]);
+                }
+            }
+            self.edge(run);
+        }
+    }
+
+    fn edge(&mut self, points: Vec<Vec2>) {
+        if points.len() > 1 {
+            self.out.push(Primitive::Polyline {
+                points,
+                width: 1.5 * self.unit(),
+                colour: palette::INK,
+            });
+        }
+    }
+
+    /// Every path as polylines in its wavelength's colour, split where its opacity changes.
+    /// When white light is dispersed, what every colour shares (a source ray up to its first
+    /// kernel call, and the reflection there) is drawn once, as white light: drawn colour by
+    /// colour, the last colour would hide the others.
+    fn rays(&mut self, trace: &Trace) {
+        let wavelengths = trace.counts.wavelengths.max(1);
+        let per_colour = (trace.counts.source_rays / wavelengths).max(1) as f32;
+        let width = (2.2 * self.unit() * (30.0 / per_colour).sqrt().min(1.0)).max(0.8);
+        let mut white = HashSet::new();
+        let mut last_colour = None;
+        for path in &trace.paths {
+            // Paths come colour after colour: look each colour up once.
+            let colour = match last_colour {
+                Some((traced, colour)) if traced == path.wavelength_nm => colour,
+                _ => ray_colour(path.wavelength_nm),
+            };
+            last_colour = Some((path.wavelength_nm, colour));
+            let mut segments = trace.segments.get(path.segments.clone()).unwrap_or(&[]);
+            if wavelengths > 1
+                && starts_colour_blind(trace, path)
+                && let Some((first, rest)) = segments.split_first()
+            {
+                let key = [first.from, first.to].map(|p| [p.x.to_bits(), p.y.to_bits()]);
+                if white.insert(key) {
+                    let points = vec![self.layout.at(first.from), self.layout.at(first.to)];
+                    let alpha = opacity(first.intensity);
+                    self.ray(points, palette::WHITE_LIGHT.with_alpha(alpha), width);
+                }
+                segments = rest;
+            }
+            let mut run: Vec<Vec2> = Vec::new();
+            let mut alpha = 0;
+            for s in segments {
+                let mean = s
+                    .intensity
+                    .map(|i| (i + s.intensity_end.unwrap_or(i)) * 0.5);
+                let a = opacity(mean);
+                let (from, to) = (self.layout.at(s.from), self.layout.at(s.to));
+                if a != alpha {
+                    self.ray(std::mem::take(&mut run), colour.with_alpha(alpha), width);
+                    alpha = a;
+                }
+                if run.is_empty() {
+                    run.push(from);
+                }
+                if run.last().is_some_and(|p| p.distance(to) >= MIN_STEP) {
+                    run.push(to);
+                }
+            }
+            self.ray(run, colour.with_alpha(alpha), width);
+        }
+    }
+
+    fn ray(&mut self, points: Vec<Vec2>, colour: Colour, width: f32) {
+        if points.len() > 1 {
+            self.out.push(Primitive::Polyline {
+                points,
+                width,
+                colour,
+            });
+        }
+    }
+
+    /// A small disc at each kernel call: light where the ray enters a shape, orange where it
+    /// leaves one (the outward normal points along the ray and the kernel turns it round),
+    /// purple at total internal reflection. At most one per marker-sized cell, so that a dense
+    /// scene shows where hits are without drawing thousands of discs on one spot.
+    fn hits(&mut self, trace: &Trace) {
+        let radius = self.layout.font * 0.25;
+        let cell = radius * 1.5;
+        let cells = (self.layout.canvas.size() / cell).ceil();
+        let (columns, rows) = (cells.x as usize, cells.y as usize);
+        let mut taken = vec![false; columns * rows];
+        for hit in &trace.hits {
+            let center = self.layout.at(hit.point);
+            // Off the canvas (only while a drag keeps an old layout) nothing would show.
+            if !self.layout.canvas.contains(center) {
+                continue;
+            }
+            let (column, row) = ((center.x / cell) as usize, (center.y / cell) as usize);
+            let Some(cell) = taken.get_mut(row.min(rows - 1) * columns + column.min(columns - 1))
+            else {
+                continue;
+            };
+            if std::mem::replace(cell, true) {
+                continue;
+            }
+            self.out.push(Primitive::Disc {
+                center,
+                radius,
+                fill: hit_colour(hit),
+                outline_width: self.unit(),
+                outline: palette::INK,
+            });
+        }
+    }
+
+    /// Each shape's medium named beside its handle, and the background's in the world's top-left
+    /// corner.
+    fn media_labels(&mut self, scene: &Scene, handles: &[SceneHandle]) {
+        let size = self.layout.font * 0.8;
+        let bounds = self.layout.bounds;
+        let top_left = self.layout.at(DVec2::new(bounds.min.x, bounds.max.y));
+        let corner = top_left.max(self.layout.drawing.min) + Vec2::splat(self.layout.font * 0.6);
+        let text = medium_text(scene, scene.background());
+        self.boxed_label(text, corner, (Align::Start, Align::Start), size);
+        for handle in handles {
+            let SceneHandleId::Shape(i) = handle.id else {
+                continue;
+            };
+            let text = scene
+                .shapes()
+                .get(i)
+                .and_then(|s| s.medium())
+                .map_or_else(|| "screen".to_owned(), |m| medium_text(scene, m));
+            let at = handle.center + Vec2::new(handle.radius * GRAB_SCALE + size * 0.3, 0.0);
+            self.boxed_label(text, at, (Align::Start, Align::Center), size);
+        }
+    }
+
+    /// The source as a filled disc with an arrow to its aim handle; each shape's handle as a
+    /// ring with a dot.
+    fn handles(&mut self, handles: &[SceneHandle]) {
+        let unit = self.unit();
+        let ring = |colour| Stroke {
+            width: 2.0 * unit,
+            colour,
+            dash: Dash::Solid,
+        };
+        let source = handles.iter().find(|h| h.id == SceneHandleId::Source);
+        if let (Some(source), Some(aim)) =
+            (source, handles.iter().find(|h| h.id == SceneHandleId::Aim))
+        {
+            Drawn::Arrow {
+                from: source.center,
+                to: aim.center,
+                stroke: Stroke {
+                    dash: Dash::Dashed,
+                    ..ring(palette::W)
+                },
+            }
+            .lower(&mut self.out);
+        }
+        for handle in handles {
+            let (fill, outline) = match handle.id {
+                SceneHandleId::Source => (palette::W, palette::INK),
+                SceneHandleId::Aim => (palette::BACKGROUND, palette::W),
+                SceneHandleId::Shape(_) => (palette::BACKGROUND, palette::INK),
+            };
+            Drawn::Disc {
+                center: handle.center,
+                radius: handle.radius,
+                fill,
+                outline: ring(outline),
+            }
+            .lower(&mut self.out);
+            if matches!(handle.id, SceneHandleId::Shape(_)) {
+                Drawn::Disc {
+                    center: handle.center,
+                    radius: handle.radius * 0.3,
+                    fill: palette::INK,
+                    outline: ring(palette::INK),
+                }
+                .lower(&mut self.out);
+            }
+        }
+    }
+
+    /// One line of the banner: pieces of text in their colours, side by side from the left,
+    /// shrunk as needed to fit the canvas's width.
+    fn row(&mut self, pieces: &[(String, Colour)], y: f32, size: f32) {
+        let margin = self.layout.font * 0.6;
+        let room = (self.layout.canvas.size().x - 2.0 * margin).max(1.0);
+        let width: f32 = pieces.iter().map(|(t, _)| self.measure(t, size).x).sum();
+        let size = if width > room {
+            size * room / width
+        } else {
+            size
+        };
+        let mut x = margin;
+        for (text, colour) in pieces {
+            let advance = self.measure(text, size).x;
+            self.out.push(Primitive::Text(Label {
+                text: text.clone(),
+                at: Vec2::new(x, y),
+                h: Align::Start,
+                v: Align::Center,
+                size,
+                colour: *colour,
+                background: None,
+            }));
+            x += advance;
+        }
+    }
+
+    /// The banner, drawn last so that nothing covers it: the title, the counts, the legend.
+    fn banner(&mut self, scene: &Scene, trace: &Trace) -> String {
+        let banner = self.layout.banner;
+        self.out.push(Primitive::Polygon {
+            points: banner.corners().to_vec(),
+            colour: palette::CALM,
+        });
+        let font = self.layout.font;
+        let line = banner.size().y / 3.0;
+        let top = banner.min.y;
+        self.row(
+            &[(scene.title().to_owned(), palette::INK)],
+            top + line * 0.55,
+            font * 1.05,
+        );
+        let counts = counts_text(&trace.counts);
+        let mut count_row = vec![(counts.clone(), palette::INK)];
+        if trace.counts.truncated {
+            count_row.push((
+                format!(" · stopped at {} segments", trace.segments.len()),
+                palette::ALARM,
+            ));
+        }
+        self.row(&count_row, top + line * 1.5, font * 0.85);
+        let legend = legend(scene, trace);
+        self.row(&legend, top + line * 2.4, font * 0.85);
+        format!("{}: {counts}", scene.title())
+    }
+}
+
+/// Whether the first segment of `path` is the same for every wavelength: a source ray's (it
+/// ends at its first kernel call), or a reflection's off a source ray's first kernel call
+/// (reflection does not depend on the index).
+fn starts_colour_blind(trace: &Trace, path: &Path) -> bool {
+    let Some(h) = path.parent_hit else {
+        return true;
+    };
+    let Some(parent) = trace.hits.get(h) else {
+        return false;
+    };
+    let first_of_its_path = h == 0 || trace.hits.get(h - 1).is_none_or(|p| p.path != parent.path);
+    first_of_its_path
+        && trace
+            .paths
+            .get(parent.path)
+            .is_some_and(|p| p.parent_hit.is_none())
+}
+
+/// The fill of a hit's marker.
+fn hit_colour(hit: &Hit) -> Colour {
+    match (hit.outcome, hit.side) {
+        (Outcome::TotalInternalReflection, _) => palette::CRITICAL,
+        (Outcome::Refracted, Side::Leaving) => palette::WARNING,
+        (Outcome::Refracted, Side::Entering) => palette::BACKGROUND,
+    }
+}
+
+/// The legend row: the colours traced, what opacity means, the kinds of hit marker shown.
+fn legend(scene: &Scene, trace: &Trace) -> Vec<(String, Colour)> {
+    let ink = palette::INK;
+    let mut pieces = vec![("colour: ".to_owned(), ink)];
+    let colours = scene.source().colours(scene.effects().dispersion);
+    match colours.as_slice() {
+        [None] => pieces.push((
+            format!("white light, traced at {REFERENCE_WAVELENGTH_NM} nm"),
+            palette::WHITE_LIGHT,
+        )),
+        _ => {
+            if colours.len() > 1 {
+                pieces.push(("white light, then ".to_owned(), palette::WHITE_LIGHT));
+            }
+            for nm in colours.iter().flatten() {
+                pieces.push((format!("{} ", number(*nm, 0)), wavelength_colour(*nm)));
+            }
+            pieces.push(("nm".to_owned(), ink));
+        }
+    }
+    if scene.effects().intensities() {
+        pieces.push((" · opacity: intensity".to_owned(), ink));
+    }
+    let kinds = [
+        (palette::BACKGROUND, "entering"),
+        (palette::WARNING, "leaving (N turned round)"),
+        (palette::CRITICAL, "total internal reflection"),
+    ];
+    let mut first = true;
+    for (fill, words) in kinds {
+        if trace.hits.iter().any(|h| hit_colour(h) == fill) {
+            let lead = if first { " · hits: " } else { ", " };
+            first = false;
+            pieces.push((lead.to_owned(), ink));
+            let colour = if fill == palette::BACKGROUND {
+                ink
+            } else {
+                Palette::STANDARD.text_shade(fill)
+            };
+            pieces.push((words.to_owned(), colour));
+        }
+    }
+    pieces
+}
+
+impl ScenePicture {
+    /// The picture of `scene` traced as `trace`, laid out by `layout` (normally
+    /// `SceneLayout::new(trace.bounds, size)`; an editor keeps the layout of the start of a
+    /// drag until it ends, so that the world does not move under the pointer).
+    #[must_use]
+    pub fn new(scene: &Scene, trace: &Trace, layout: &SceneLayout) -> Self {
+        let mut b = Builder {
+            layout,
+            face: Typeface::egui_default().ok(),
+            out: Vec::with_capacity(trace.segments.len() + trace.hits.len() / 4 + 64),
+        };
+        let handles = layout.handles(scene);
+        b.shapes(scene);
+        b.rays(trace);
+        b.hits(trace);
+        b.media_labels(scene, &handles);
+        b.handles(&handles);
+        let summary = b.banner(scene, trace);
+        Self {
+            primitives: b.out,
+            handles,
+            summary,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn traced(name: &str) -> (Scene, Trace) {
+        let scene = Scene::embedded(name).unwrap();
+        let trace = scene.trace();
+        (scene, trace)
+    }
+
+    fn texts(picture: &ScenePicture) -> Vec<&Label> {
+        picture
+            .primitives
+            .iter()
+            .filter_map(|p| match p {
+                Primitive::Text(l) => Some(l),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn rays_take_their_wavelengths_colour_and_faint_rays_are_translucent() {
+        let (scene, trace) = traced("droplet");
+        let layout = SceneLayout::new(trace.bounds, Vec2::new(1200.0, 800.0));
+        let picture = ScenePicture::new(&scene, &trace, &layout);
+        let lines: Vec<Colour> = picture
+            .primitives
+            .iter()
+            .filter_map(|p| match p {
+                Primitive::Polyline { colour, .. } => Some(*colour),
+                _ => None,
+            })
+            .collect();
+        for nm in [400.0, 550.0, 700.0] {
+            let c = wavelength_colour(nm);
+            assert!(
+                lines.iter().any(|l| (l.r, l.g, l.b) == (c.r, c.g, c.b)),
+                "no ray at {nm} nm"
+            );
+        }
+        assert!(lines.iter().any(|l| l.a < 128), "reflections are faint");
+        assert!(lines.iter().any(|l| l.a > 200), "source rays are strong");
+        let legend: String = texts(&picture).iter().map(|l| l.text.as_str()).collect();
+        assert!(
+            legend.contains("400 450 500 550 600 650 700 nm"),
+            "{legend}"
+        );
+        assert!(legend.contains("leaving (N turned round)"), "{legend}");
+        assert!(picture.summary.contains("kernel calls"));
+    }
+
+    #[test]
+    fn dispersed_white_light_is_white_until_it_first_refracts() {
+        let (scene, trace) = traced("dispersing-prism");
+        let layout = SceneLayout::new(trace.bounds, Vec2::new(1200.0, 800.0));
+        let picture = ScenePicture::new(&scene, &trace, &layout);
+        let source = layout.at(scene.source().origin);
+        let from_source: Vec<Colour> = picture
+            .primitives
+            .iter()
+            .filter_map(|p| match p {
+                Primitive::Polyline { points, colour, .. } if points[0] == source => Some(*colour),
+                _ => None,
+            })
+            .collect();
+        // Once in white, and (besides the aim arrow) in no other colour.
+        let white = from_source.iter().filter(|c| **c == palette::WHITE_LIGHT);
+        assert_eq!(white.count(), 1);
+        assert!(
+            from_source
+                .iter()
+                .all(|c| [palette::WHITE_LIGHT, palette::W].contains(c)),
+            "{from_source:?}"
+        );
+    }
+
+    #[test]
+    fn handles_move_the_source_aim_it_and_move_shapes() {
+        let (mut scene, trace) = traced("droplet");
+        let layout = SceneLayout::new(trace.bounds, Vec2::new(1000.0, 700.0));
+        let handles = layout.handles(&scene);
+        assert_eq!(handles.len(), 2 + scene.shapes().len());
+        assert_eq!(handles[2].center, layout.at(DVec2::ZERO));
+        let p = layout.at(DVec2::new(-2.0, 1.0));
+        layout.drag(&mut scene, SceneHandleId::Source, p).unwrap();
+        assert!(scene.source().origin.distance(DVec2::new(-2.0, 1.0)) < 1e-5);
+        let p = layout.at(DVec2::new(-2.0, 2.0));
+        layout.drag(&mut scene, SceneHandleId::Aim, p).unwrap();
+        assert!(scene.source().direction.distance(DVec2::Y) < 1e-5);
+        let p = layout.at(DVec2::new(0.5, 0.0));
+        layout.drag(&mut scene, SceneHandleId::Shape(0), p).unwrap();
+        assert!(scene.shapes()[0].anchor().distance(DVec2::new(0.5, 0.0)) < 1e-5);
+        let origin = layout.at(scene.source().origin);
+        let before = scene.clone();
+        assert!(layout.drag(&mut scene, SceneHandleId::Aim, origin).is_err());
+        assert!(
+            layout
+                .drag(&mut scene, SceneHandleId::Shape(9), origin)
+                .is_err()
+        );
+        assert_eq!(scene, before);
+        assert_eq!(
+            SceneHandleId::Shape(0).label(&scene),
+            "Shape 1 handle (water)"
+        );
+    }
+
+    #[test]
+    fn shapes_sharing_an_anchor_get_handles_apart_that_move_them_alike() {
+        let (mut scene, trace) = traced("fibre");
+        let layout = SceneLayout::new(trace.bounds, Vec2::new(1000.0, 700.0));
+        let handles = layout.handles(&scene);
+        let (cladding, core) = (handles[2], handles[3]);
+        assert_eq!(cladding.center, layout.at(scene.shapes()[0].anchor()));
+        assert!(!cladding.grab_area().overlaps(&core.grab_area()));
+        let anchor = scene.shapes()[1].anchor();
+        let p = core.center + Vec2::new(50.0, 0.0);
+        layout.drag(&mut scene, SceneHandleId::Shape(1), p).unwrap();
+        let moved = scene.shapes()[1].anchor() - anchor;
+        assert!((moved - DVec2::new(50.0 / f64::from(layout.view.scale), 0.0)).length() < 1e-5);
+    }
+
+    #[test]
+    fn a_click_picks_the_nearest_hit_only_when_close() {
+        let (_, trace) = traced("droplet");
+        let layout = SceneLayout::new(trace.bounds, Vec2::new(1000.0, 700.0));
+        let hit = trace.hits.iter().find(|h| h.side == Side::Leaving).unwrap();
+        let p = layout.at(hit.point) + Vec2::new(2.0, 0.0);
+        let picked = layout.hit_near(&trace, p).unwrap();
+        assert!(layout.at(picked.point).distance(p) <= layout.pick_radius());
+        assert!(layout.hit_near(&trace, Vec2::new(5.0, 690.0)).is_none());
+    }
+
+    #[test]
+    fn every_scene_draws_with_every_label_inside_the_canvas() {
+        let face = Typeface::egui_default().unwrap();
+        for info in refraction_scene::catalogue() {
+            let (scene, trace) = traced(info.name);
+            for size in [Vec2::new(640.0, 360.0), Vec2::new(1920.0, 1080.0)] {
+                let layout = SceneLayout::new(trace.bounds, size);
+                let picture = ScenePicture::new(&scene, &trace, &layout);
+                assert!(picture.primitives.len() > 5, "{}", info.name);
+                for l in texts(&picture) {
+                    let extent = face.measure(&l.text, l.size);
+                    let min = l.at - extent * Vec2::new(l.h.fraction(), l.v.fraction());
+                    let inside =
+                        layout.canvas.contains(min) && layout.canvas.contains(min + extent);
+                    assert!(inside, "{}: {l:?} is cut off at {size}", info.name);
+                    assert!(l.text.chars().all(|c| c == '\n' || face.covers(c)), "{l:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn opacity_follows_intensity_in_coarse_steps() {
+        assert_eq!(opacity(None), 255);
+        assert_eq!(opacity(Some(1.0)), 255);
+        assert_eq!(opacity(Some(0.0)), opacity(Some(f64::NAN)));
+        assert!(opacity(Some(0.04)) < 128);
+        assert_eq!(opacity(Some(0.96)), opacity(Some(0.97)));
+    }
+}

@@ -1,0 +1,344 @@
+//! The diagram to pixels off screen: a PNG of [`Diagram::primitives`] drawn with tiny-skia,
+//! labels in egui's own font ([`text`]), written atomically.
+
+pub mod atomic;
+pub mod text;
+
+use std::fmt;
+use std::path::Path;
+
+use glam::Vec2;
+use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Transform};
+
+use crate::atomic::write_atomically;
+use refraction_diagram::font::Typeface;
+use refraction_diagram::geometry::Colour;
+use refraction_diagram::{Diagram, ExplorerState, Overlay, Primitive, SceneLayout, ScenePicture};
+use refraction_scene::Scene;
+
+/// The export size when none is given.
+pub const DEFAULT_SIZE: (u32, u32) = (1920, 1080);
+
+/// The smallest and largest accepted width or height, in pixels.
+pub const SIZE_LIMITS: (u32, u32) = (64, 8192);
+
+/// Why a PNG could not be made or written.
+#[derive(Debug)]
+pub enum RenderError {
+    /// The width or height is outside [`SIZE_LIMITS`].
+    BadSize {
+        /// Requested width.
+        width: u32,
+        /// Requested height.
+        height: u32,
+    },
+    /// The embedded font could not be read.
+    Font(String),
+    /// PNG encoding failed.
+    Encode(String),
+    /// The file could not be written.
+    Write(std::io::Error),
+}
+
+impl fmt::Display for RenderError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (low, high) = SIZE_LIMITS;
+        match self {
+            Self::BadSize { width, height } => write!(
+                f,
+                "the image size {width}×{height} is not allowed: width and height must each be \
+                 {low} to {high} pixels"
+            ),
+            Self::Font(message) | Self::Encode(message) => f.write_str(message),
+            Self::Write(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for RenderError {}
+
+fn paint(colour: Colour) -> Paint<'static> {
+    let mut paint = Paint {
+        anti_alias: true,
+        ..Paint::default()
+    };
+    paint.set_color_rgba8(colour.r, colour.g, colour.b, colour.a);
+    paint
+}
+
+fn path(points: &[Vec2], closed: bool) -> Option<tiny_skia::Path> {
+    let (first, rest) = points.split_first()?;
+    let mut path = PathBuilder::new();
+    path.move_to(first.x, first.y);
+    for p in rest {
+        path.line_to(p.x, p.y);
+    }
+    if closed {
+        path.close();
+    }
+    path.finish()
+}
+
+fn stroke(pixmap: &mut Pixmap, path: &tiny_skia::Path, width: f32, colour: Colour) {
+    let stroke = tiny_skia::Stroke {
+        width,
+        line_cap: LineCap::Round,
+        line_join: LineJoin::Round,
+        ..tiny_skia::Stroke::default()
+    };
+    pixmap.stroke_path(path, &paint(colour), &stroke, Transform::identity(), None);
+}
+
+fn fill(pixmap: &mut Pixmap, path: &tiny_skia::Path, colour: Colour) {
+    let rule = FillRule::Winding;
+    pixmap.fill_path(path, &paint(colour), rule, Transform::identity(), None);
+}
+
+/// Draws one primitive.
+fn draw(pixmap: &mut Pixmap, face: &Typeface, primitive: &Primitive) {
+    match primitive {
+        Primitive::Polygon { points, colour } => {
+            if let Some(path) = path(points, true) {
+                fill(pixmap, &path, *colour);
+            }
+        }
+        Primitive::Polyline {
+            points,
+            width,
+            colour,
+        } => {
+            if let Some(path) = path(points, false) {
+                stroke(pixmap, &path, *width, *colour);
+            }
+        }
+        Primitive::Disc {
+            center,
+            radius,
+            fill: inside,
+            outline_width,
+            outline,
+        } => {
+            if let Some(path) = PathBuilder::from_circle(center.x, center.y, *radius) {
+                fill(pixmap, &path, *inside);
+                stroke(pixmap, &path, *outline_width, *outline);
+            }
+        }
+        Primitive::Text(label) => {
+            let size = face.measure(&label.text, label.size);
+            let top_left = label.at - size * Vec2::new(label.h.fraction(), label.v.fraction());
+            if let Some(background) = label.background {
+                let pad = Vec2::splat(label.size * 0.2);
+                let corners = [
+                    top_left - pad,
+                    Vec2::new(top_left.x + size.x + pad.x, top_left.y - pad.y),
+                    top_left + size + pad,
+                    Vec2::new(top_left.x - pad.x, top_left.y + size.y + pad.y),
+                ];
+                if let Some(path) = path(&corners, true) {
+                    fill(pixmap, &path, background);
+                }
+            }
+            if let Some(path) = text::outline(face, &label.text, top_left, label.size) {
+                fill(pixmap, &path, label.colour);
+            }
+        }
+    }
+}
+
+/// A `width` × `height` pixmap with `primitives` drawn on it in order.
+///
+/// # Errors
+/// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
+pub fn draw_primitives(
+    width: u32,
+    height: u32,
+    primitives: impl FnOnce(Vec2, &Typeface) -> Vec<Primitive>,
+) -> Result<Pixmap, RenderError> {
+    let (low, high) = SIZE_LIMITS;
+    let bad_size = RenderError::BadSize { width, height };
+    if !(low..=high).contains(&width) || !(low..=high).contains(&height) {
+        return Err(bad_size);
+    }
+    let mut pixmap = Pixmap::new(width, height).ok_or(bad_size)?;
+    let face = Typeface::egui_default().map_err(RenderError::Font)?;
+    for primitive in primitives(Vec2::new(width as f32, height as f32), &face) {
+        draw(&mut pixmap, &face, &primitive);
+    }
+    Ok(pixmap)
+}
+
+/// The diagram of `state` with `overlay` drawn on a `width` × `height` pixmap.
+///
+/// # Errors
+/// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
+pub fn render(
+    state: &ExplorerState,
+    overlay: &Overlay,
+    width: u32,
+    height: u32,
+) -> Result<Pixmap, RenderError> {
+    draw_primitives(width, height, |size, _| {
+        Diagram::with_overlay(state, size, overlay).primitives()
+    })
+}
+
+/// A pixmap as PNG bytes.
+///
+/// # Errors
+/// The encoder failed.
+pub fn encode(pixmap: &Pixmap) -> Result<Vec<u8>, RenderError> {
+    pixmap
+        .encode_png()
+        .map_err(|e| RenderError::Encode(format!("cannot encode the PNG: {e}")))
+}
+
+/// The diagram of `state` with `overlay` as PNG bytes.
+///
+/// # Errors
+/// As [`render`], or a failed encoding.
+pub fn png(
+    state: &ExplorerState,
+    overlay: &Overlay,
+    width: u32,
+    height: u32,
+) -> Result<Vec<u8>, RenderError> {
+    encode(&render(state, overlay, width, height)?)
+}
+
+/// Writes a pixmap as a PNG file at `path`, atomically.
+///
+/// # Errors
+/// A failed encoding, or the file cannot be written (the message names it).
+pub fn write_png(pixmap: &Pixmap, path: &Path) -> Result<(), RenderError> {
+    write_atomically(path, &encode(pixmap)?).map_err(RenderError::Write)
+}
+
+/// Writes the diagram of `state` with `overlay` as a PNG file at `path`, atomically.
+///
+/// # Errors
+/// As [`png`], or the file cannot be written (the message names it).
+pub fn export(
+    state: &ExplorerState,
+    overlay: &Overlay,
+    (width, height): (u32, u32),
+    path: &Path,
+) -> Result<(), RenderError> {
+    write_png(&render(state, overlay, width, height)?, path)
+}
+
+/// Writes the plot of a `bench` report as a PNG file at `path`, atomically.
+///
+/// # Errors
+/// As [`draw_primitives`], or the file cannot be written (the message names it).
+pub fn export_accuracy_plot(
+    report: &refraction_bench::Report,
+    width: u32,
+    height: u32,
+    path: &Path,
+) -> Result<(), RenderError> {
+    let pixmap = draw_primitives(width, height, |size, face| {
+        refraction_diagram::accuracy_plot::primitives(report, size, face)
+    })?;
+    write_png(&pixmap, path)
+}
+
+/// `scene`, traced, drawn on a `width` × `height` pixmap as the explorer's Scenes view shows
+/// it.
+///
+/// # Errors
+/// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
+pub fn render_scene(scene: &Scene, width: u32, height: u32) -> Result<Pixmap, RenderError> {
+    let trace = scene.trace();
+    draw_primitives(width, height, |size, _| {
+        ScenePicture::new(scene, &trace, &SceneLayout::new(trace.bounds, size)).primitives
+    })
+}
+
+/// Writes `scene`, traced, as a PNG file at `path`, atomically.
+///
+/// # Errors
+/// As [`render_scene`], a failed encoding, or the file cannot be written (the message names
+/// it).
+pub fn export_scene(
+    scene: &Scene,
+    width: u32,
+    height: u32,
+    path: &Path,
+) -> Result<(), RenderError> {
+    write_png(&render_scene(scene, width, height)?, path)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use refraction_diagram::palette;
+
+    #[test]
+    fn the_png_decodes_at_the_requested_size_and_t_is_drawn_in_its_colour() {
+        let state = ExplorerState::default();
+        let bytes = png(&state, &Overlay::default(), 1920, 1080).unwrap();
+        let decoded = Pixmap::decode_png(&bytes).unwrap();
+        assert_eq!((decoded.width(), decoded.height()), (1920, 1080));
+        let layout = refraction_diagram::Layout::new(Vec2::new(1920.0, 1080.0));
+        let t = state.plane().project(state.refraction().t().unwrap());
+        let mut on_t = 0;
+        // From past the θt label to before the arrowhead.
+        for i in 45..=85 {
+            let world = t * (f64::from(i) / 100.0);
+            let p = layout.view.to_canvas(world);
+            let pixel = decoded
+                .pixel(p.x.round() as u32, p.y.round() as u32)
+                .unwrap();
+            let c = palette::T;
+            if (pixel.red(), pixel.green(), pixel.blue()) == (c.r, c.g, c.b) {
+                on_t += 1;
+            }
+        }
+        assert!(
+            on_t >= 39,
+            "only {on_t} of 41 pixels along T have T's colour"
+        );
+    }
+
+    #[test]
+    fn every_built_in_scene_renders_with_its_rays_in_their_colours() {
+        for info in refraction_scene::catalogue() {
+            let scene = Scene::embedded(info.name).unwrap();
+            let pixmap = render_scene(&scene, 800, 500).unwrap();
+            assert_eq!((pixmap.width(), pixmap.height()), (800, 500));
+            let colours: Vec<_> = scene
+                .source()
+                .colours(scene.effects().dispersion)
+                .into_iter()
+                .map(refraction_diagram::spectrum::ray_colour)
+                .collect();
+            // Rays are translucent where the scene computes intensities: count pixels near a
+            // ray colour rather than equal to it.
+            let near = |p: &tiny_skia::PremultipliedColorU8, c: &Colour| {
+                let d = |x: u8, y: u8| i32::from(x).abs_diff(i32::from(y));
+                d(p.red(), c.r) + d(p.green(), c.g) + d(p.blue(), c.b) < 40
+            };
+            let on_rays = pixmap
+                .pixels()
+                .iter()
+                .filter(|p| colours.iter().any(|c| near(p, c)))
+                .count();
+            assert!(on_rays > 100, "{}: {on_rays} ray pixels", info.name);
+        }
+    }
+
+    #[test]
+    fn bad_sizes_and_paths_are_errors_with_clear_messages() {
+        let state = ExplorerState::default();
+        let err = png(&state, &Overlay::default(), 0, 1080)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.contains("0×1080") && err.contains("64 to 8192"),
+            "{err}"
+        );
+        let path = Path::new("/nonexistent-folder/x.png");
+        let err = export(&state, &Overlay::default(), (640, 360), path).unwrap_err();
+        assert!(err.to_string().contains("/nonexistent-folder/x.png"));
+    }
+}

@@ -1,0 +1,270 @@
+//! Scenes: 2D arrangements of shapes and media that a ray, a beam or a fan crosses interface
+//! after interface, one kernel call per hit, computing only the effects the scene asks for.
+//!
+//! - [`Scene`]: a loaded scene ([`Scene::load`], [`Scene::embedded`], [`Scene::from_toml`]),
+//!   its setters for an editor, and [`Scene::trace`].
+//! - [`Trace`]: segments, paths, hits and the [`Counts`] of what was computed.
+//! - [`catalogue`]: the scenes built into the binary (from `assets/scenes/`).
+//! - [`Report`]: the JSON of the `trace` command.
+//!
+//! The file format is described in the repository README (section *The file format*).
+
+mod bounds;
+mod effects;
+mod embedded;
+mod format;
+mod fresnel;
+mod medium;
+mod outline;
+mod report;
+mod shape;
+mod source;
+mod trace;
+mod write;
+
+use std::fmt;
+
+use glam::DVec2;
+
+pub use bounds::Bounds;
+pub use effects::Effects;
+pub use embedded::{DEFAULT_SCENE, SceneInfo, catalogue};
+pub use format::{LoadError, Position};
+pub use fresnel::Fresnel;
+pub use medium::{Dispersion, Medium, REFERENCE_WAVELENGTH_NM, WHITE_WAVELENGTHS_NM};
+pub use outline::{Outline, Piece};
+pub use report::Report;
+pub use shape::{Crossing, Lens, Shape, T_MIN};
+pub use source::{Colour, Light, Source, SourceKind, traced_wavelength};
+pub use trace::{Counts, End, Hit, MAX_SEGMENTS, Outcome, Path, Segment, Side, Trace};
+
+/// A scene ready to trace: media, shapes, a source and the effects it asks for.
+///
+/// Built only by loading a file, so every number in it has been checked; the setters keep it
+/// that way.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    name: String,
+    title: String,
+    description: String,
+    media: Vec<Medium>,
+    background: usize,
+    shapes: Vec<Shape>,
+    source: Source,
+    effects: Effects,
+    view: Option<Bounds>,
+}
+
+/// Why an edit of a scene was refused (the scene is left as it was).
+#[derive(Clone, Debug, PartialEq)]
+pub enum EditError {
+    /// A coordinate is NaN or infinite.
+    NotFinite,
+    /// A direction is the zero vector.
+    NoDirection,
+    /// No shape has this position in the list.
+    NoSuchShape(usize),
+    /// A ray count outside 1 ..= [`Source::MAX_RAYS`].
+    RayCount(usize),
+    /// Effects that cannot be traced (see [`Effects::check`]).
+    Effects(String),
+}
+
+impl fmt::Display for EditError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NotFinite => f.write_str("every coordinate must be a finite number"),
+            Self::NoDirection => f.write_str("a direction must not be the zero vector"),
+            Self::NoSuchShape(i) => write!(f, "the scene has no shape {i}"),
+            Self::RayCount(n) => write!(
+                f,
+                "{n} rays: a source has from 1 to {} rays",
+                Source::MAX_RAYS
+            ),
+            Self::Effects(message) => f.write_str(message),
+        }
+    }
+}
+
+impl std::error::Error for EditError {}
+
+fn finite(v: DVec2) -> Result<DVec2, EditError> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(EditError::NotFinite)
+    }
+}
+
+impl Scene {
+    /// The embedded scene's name, or the file's name without its extension.
+    #[must_use]
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The title the file gives.
+    #[must_use]
+    pub fn title(&self) -> &str {
+        &self.title
+    }
+
+    /// The description the file gives (may be empty).
+    #[must_use]
+    pub fn description(&self) -> &str {
+        &self.description
+    }
+
+    /// Every medium; shapes, segments and hits refer to them by position.
+    #[must_use]
+    pub fn media(&self) -> &[Medium] {
+        &self.media
+    }
+
+    /// The medium outside every shape (position in [`Self::media`]).
+    #[must_use]
+    pub fn background(&self) -> usize {
+        self.background
+    }
+
+    /// The shapes; where regions overlap, the later one is on top and its medium counts.
+    #[must_use]
+    pub fn shapes(&self) -> &[Shape] {
+        &self.shapes
+    }
+
+    /// The source.
+    #[must_use]
+    pub fn source(&self) -> &Source {
+        &self.source
+    }
+
+    /// The effects the tracer computes.
+    #[must_use]
+    pub fn effects(&self) -> &Effects {
+        &self.effects
+    }
+
+    /// The world rectangle: the file's `[view]`, else the shapes and the source with a margin.
+    #[must_use]
+    pub fn bounds(&self) -> Bounds {
+        self.view.unwrap_or_else(|| {
+            self.source
+                .rays()
+                .map(|(origin, _)| Bounds::point(origin))
+                .chain(self.shapes.iter().filter_map(Shape::extent))
+                .fold(Bounds::point(self.source.origin), Bounds::union)
+                .padded(0.15, 0.5)
+        })
+    }
+
+    /// The outline of every shape, a line's half-plane cut to [`Self::bounds`].
+    #[must_use]
+    pub fn outlines(&self) -> Vec<Outline> {
+        let bounds = self.bounds();
+        self.shapes
+            .iter()
+            .enumerate()
+            .map(|(i, shape)| Outline {
+                shape: i,
+                medium: shape.medium().map(|m| self.media[m].name.clone()),
+                closed: shape.medium().is_some(),
+                pieces: shape.pieces(bounds),
+            })
+            .collect()
+    }
+
+    /// The medium at `p`: that of the topmost region containing it, or the background.
+    /// `on_boundary` = (shape, inside) decides that shape's side for a point on its boundary.
+    #[must_use]
+    pub fn medium_where(&self, p: DVec2, on_boundary: Option<(usize, bool)>) -> usize {
+        self.shapes
+            .iter()
+            .enumerate()
+            .rev()
+            .find_map(|(i, shape)| {
+                let medium = shape.medium()?;
+                let inside = match on_boundary {
+                    Some((hit, inside)) if hit == i => inside,
+                    _ => shape.contains(p),
+                };
+                inside.then_some(medium)
+            })
+            .unwrap_or(self.background)
+    }
+
+    /// The first boundary the ray `origin + t·direction` (unit `direction`) crosses at
+    /// t > [`T_MIN`]: the shape's position in [`Self::shapes`] and the crossing.
+    #[must_use]
+    pub fn first_crossing(&self, origin: DVec2, direction: DVec2) -> Option<(usize, Crossing)> {
+        self.shapes
+            .iter()
+            .enumerate()
+            .filter_map(|(i, shape)| shape.first_crossing(origin, direction).map(|c| (i, c)))
+            .min_by(|a, b| a.1.t.total_cmp(&b.1.t))
+    }
+
+    /// Moves the source to start at `origin`.
+    ///
+    /// # Errors
+    /// [`EditError::NotFinite`].
+    pub fn set_source_origin(&mut self, origin: DVec2) -> Result<(), EditError> {
+        self.source.origin = finite(origin)?;
+        Ok(())
+    }
+
+    /// Points the source along `direction` (any non-zero length).
+    ///
+    /// # Errors
+    /// [`EditError::NotFinite`] or [`EditError::NoDirection`].
+    pub fn set_source_direction(&mut self, direction: DVec2) -> Result<(), EditError> {
+        let unit = finite(direction)?
+            .try_normalize()
+            .ok_or(EditError::NoDirection)?;
+        self.source.direction = unit;
+        Ok(())
+    }
+
+    /// Sets how many rays a beam or fan has (a single ray keeps one).
+    ///
+    /// # Errors
+    /// [`EditError::RayCount`] outside 1 ..= [`Source::MAX_RAYS`].
+    pub fn set_ray_count(&mut self, rays: usize) -> Result<(), EditError> {
+        if !(1..=Source::MAX_RAYS).contains(&rays) {
+            return Err(EditError::RayCount(rays));
+        }
+        if self.source.kind != SourceKind::Ray {
+            self.source.rays = rays;
+        }
+        Ok(())
+    }
+
+    /// Moves shape `index` by `delta` world units.
+    ///
+    /// # Errors
+    /// [`EditError::NoSuchShape`] or [`EditError::NotFinite`] (also when the move would take
+    /// a coordinate beyond the finite numbers).
+    pub fn move_shape(&mut self, index: usize, delta: DVec2) -> Result<(), EditError> {
+        let delta = finite(delta)?;
+        let shape = self
+            .shapes
+            .get(index)
+            .ok_or(EditError::NoSuchShape(index))?;
+        let mut moved = shape.clone();
+        moved.translate(delta);
+        finite(moved.anchor())?;
+        self.shapes[index] = moved;
+        Ok(())
+    }
+
+    /// Replaces the effects, e.g. with [`Effects::everything`] to see what leaving nothing out
+    /// costs.
+    ///
+    /// # Errors
+    /// [`EditError::Effects`] when [`Effects::check`] refuses them.
+    pub fn set_effects(&mut self, effects: Effects) -> Result<(), EditError> {
+        effects.check().map_err(EditError::Effects)?;
+        self.effects = effects;
+        Ok(())
+    }
+}

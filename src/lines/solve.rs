@@ -1,0 +1,368 @@
+//! The `solve` command's contract: JSON Lines in, one JSON line out per non-empty input line.
+//!
+//! Input object: `w`, `n` (arrays of exactly 3 numbers), `mu_i`, `mu_t` (numbers), optional
+//! `convention` (`"along_ray"`, the default, or `"toward_origin"`) and `precision` (`"f64"`, the
+//! default, or `"f32"`). Other fields are ignored. A line that cannot be solved is answered with
+//! `{"line": K, "error": "..."}` and the run goes on.
+
+use std::io::{self, BufRead, Write};
+
+use serde::Serialize;
+use serde_json::{Map, Value};
+
+use refraction_kernel::{Convention, Incidence, Real, Refraction, Vector3, refract};
+
+/// The floating-point precision a problem is solved in.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Precision {
+    /// Single precision (`f32`, glam `Vec3`).
+    F32,
+    /// Double precision (`f64`, glam `DVec3`).
+    #[default]
+    F64,
+}
+
+impl Precision {
+    /// The name used in JSON: `"f32"` or `"f64"`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::F32 => "f32",
+            Self::F64 => "f64",
+        }
+    }
+}
+
+/// One refraction problem as read from a JSON line (numbers as written, in f64).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Request {
+    /// The incoming vector W.
+    pub w: [f64; 3],
+    /// The surface normal N.
+    pub n: [f64; 3],
+    /// Index of the medium the ray travels in.
+    pub mu_i: f64,
+    /// Index of the medium the ray enters.
+    pub mu_t: f64,
+    /// Which way W points.
+    pub convention: Convention,
+    /// The precision to solve in.
+    pub precision: Precision,
+}
+
+fn kind_of(value: &Value) -> &'static str {
+    match value {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}
+
+fn field<'a>(object: &'a Map<String, Value>, name: &str) -> Result<&'a Value, String> {
+    object
+        .get(name)
+        .ok_or_else(|| format!("missing field `{name}`"))
+}
+
+fn number(value: &Value, name: &str) -> Result<f64, String> {
+    value
+        .as_f64()
+        .ok_or_else(|| format!("`{name}` must be a number, got {}", kind_of(value)))
+}
+
+fn vector(object: &Map<String, Value>, name: &str) -> Result<[f64; 3], String> {
+    let value = field(object, name)?;
+    let items = value.as_array().ok_or_else(|| {
+        format!(
+            "`{name}` must be an array of 3 numbers, got {}",
+            kind_of(value)
+        )
+    })?;
+    if items.len() != 3 {
+        return Err(format!(
+            "`{name}` must be an array of exactly 3 numbers, got {} element{}",
+            items.len(),
+            if items.len() == 1 { "" } else { "s" }
+        ));
+    }
+    let mut out = [0.0; 3];
+    for (i, item) in items.iter().enumerate() {
+        out[i] = number(item, &format!("{name}[{i}]"))?;
+    }
+    Ok(out)
+}
+
+fn optional_name<'a>(
+    object: &'a Map<String, Value>,
+    name: &str,
+) -> Result<Option<&'a str>, String> {
+    match object.get(name) {
+        None | Some(Value::Null) => Ok(None),
+        Some(Value::String(s)) => Ok(Some(s)),
+        Some(other) => Err(format!("`{name}` must be a string, got {}", kind_of(other))),
+    }
+}
+
+/// Strips serde_json's " at line 1 column C" (always line 1 here) in favour of the column alone.
+pub(crate) fn json_error(error: &serde_json::Error) -> String {
+    let text = error.to_string();
+    let message = text
+        .rfind(" at line ")
+        .map_or(text.as_str(), |i| &text[..i]);
+    format!("malformed JSON at column {}: {message}", error.column())
+}
+
+impl Request {
+    /// Reads a request from a parsed JSON value.
+    ///
+    /// # Errors
+    /// A message naming the field that is missing, ill-typed or unknown.
+    pub fn from_value(value: &Value) -> Result<Self, String> {
+        let object = value.as_object().ok_or_else(|| {
+            format!(
+                "expected a JSON object with fields w, n, mu_i, mu_t; got {}",
+                kind_of(value)
+            )
+        })?;
+        let convention = match optional_name(object, "convention")? {
+            None => Convention::default(),
+            Some(name) => Convention::from_name(name).ok_or_else(|| {
+                format!(
+                    "unknown convention \"{name}\": expected \"along_ray\" (W is the direction \
+                     of travel) or \"toward_origin\" (W points back to the ray's origin)"
+                )
+            })?,
+        };
+        let precision = match optional_name(object, "precision")? {
+            None => Precision::default(),
+            Some("f64") => Precision::F64,
+            Some("f32") => Precision::F32,
+            Some(name) => {
+                return Err(format!(
+                    "unknown precision \"{name}\": expected \"f64\" or \"f32\""
+                ));
+            }
+        };
+        Ok(Self {
+            w: vector(object, "w")?,
+            n: vector(object, "n")?,
+            mu_i: number(field(object, "mu_i")?, "mu_i")?,
+            mu_t: number(field(object, "mu_t")?, "mu_t")?,
+            convention,
+            precision,
+        })
+    }
+
+    /// Parses one JSON line.
+    ///
+    /// # Errors
+    /// Malformed JSON (with its column), or a message from [`Request::from_value`].
+    pub fn parse(line: &str) -> Result<Self, String> {
+        let value: Value = serde_json::from_str(line).map_err(|e| json_error(&e))?;
+        Self::from_value(&value)
+    }
+
+    /// The request as one `solve` input line. Numbers are written in their shortest form that
+    /// reads back to the same bits, so the line reproduces the problem exactly anywhere.
+    #[must_use]
+    pub fn to_json_line(&self) -> String {
+        serde_json::json!({
+            "w": self.w,
+            "n": self.n,
+            "mu_i": self.mu_i,
+            "mu_t": self.mu_t,
+            "convention": self.convention.name(),
+            "precision": self.precision.name(),
+        })
+        .to_string()
+    }
+
+    /// The problem in precision `S`.
+    ///
+    /// # Errors
+    /// A number that is finite as written but overflows `S`.
+    pub fn incidence<S: Real>(&self) -> Result<Incidence<S>, String> {
+        let convert = |value: f64, name: String| {
+            let converted = S::from_f64(value);
+            if value.is_finite() && !converted.is_finite() {
+                Err(format!("{name} = {value:e} is too large for {}", S::NAME))
+            } else {
+                Ok(converted)
+            }
+        };
+        let vec = |v: [f64; 3], name: &str| -> Result<S::Vec3, String> {
+            Ok(S::Vec3::new(
+                convert(v[0], format!("{name}[0]"))?,
+                convert(v[1], format!("{name}[1]"))?,
+                convert(v[2], format!("{name}[2]"))?,
+            ))
+        };
+        Ok(Incidence {
+            w: vec(self.w, "w")?,
+            n: vec(self.n, "n")?,
+            mu_i: convert(self.mu_i, "mu_i".into())?,
+            mu_t: convert(self.mu_t, "mu_t".into())?,
+            convention: self.convention,
+        })
+    }
+}
+
+/// One candidate in the JSON answer.
+#[derive(Serialize)]
+struct CandidateAnswer<S> {
+    a: S,
+    b: S,
+    t: [S; 3],
+    chosen: bool,
+    rejected_because: Option<&'static str>,
+    rule: Option<&'static str>,
+}
+
+/// The JSON answer to one request.
+#[derive(Serialize)]
+struct Answer<S> {
+    t: Option<[S; 3]>,
+    tir: bool,
+    reflected: [S; 3],
+    a: Option<S>,
+    b: Option<S>,
+    k: S,
+    cos_i: S,
+    cos_t: Option<S>,
+    normal_flipped: bool,
+    warnings: Vec<String>,
+    candidates: Vec<CandidateAnswer<S>>,
+    precision: &'static str,
+}
+
+impl<S: Real> From<&Refraction<S>> for Answer<S> {
+    fn from(r: &Refraction<S>) -> Self {
+        Self {
+            t: r.t().map(Vector3::to_array),
+            tir: r.is_tir(),
+            reflected: r.reflected.to_array(),
+            a: r.transmission.map(|t| t.a),
+            b: r.transmission.map(|t| t.b),
+            k: r.k,
+            cos_i: r.cos_i,
+            cos_t: r.transmission.map(|t| t.cos_t),
+            normal_flipped: r.normal_flipped,
+            warnings: r.warnings.iter().map(ToString::to_string).collect(),
+            candidates: r
+                .candidates
+                .iter()
+                .map(|c| CandidateAnswer {
+                    a: c.a,
+                    b: c.b,
+                    t: c.t.to_array(),
+                    chosen: c.is_chosen(),
+                    rejected_because: c.rejection.map(|r| r.name()),
+                    rule: c.rejection.map(|r| r.rule()),
+                })
+                .collect(),
+            precision: S::NAME,
+        }
+    }
+}
+
+fn answer_in<S: Real + Serialize>(request: &Request) -> Result<String, String> {
+    let refraction = refract(&request.incidence::<S>()?).map_err(|e| e.to_string())?;
+    serde_json::to_string(&Answer::from(&refraction)).map_err(|e| e.to_string())
+}
+
+/// The JSON answer (without newline) to one input line, or the message for its error line.
+///
+/// # Errors
+/// Why the line cannot be solved, naming the offending field or value.
+pub fn answer(line: &str) -> Result<String, String> {
+    let request = Request::parse(line)?;
+    match request.precision {
+        Precision::F32 => answer_in::<f32>(&request),
+        Precision::F64 => answer_in::<f64>(&request),
+    }
+}
+
+/// Answers every non-empty line of `input` on `output` (see [`crate::lines::answer_lines`]).
+/// Returns whether every line was solved.
+///
+/// # Errors
+/// Reading `input` or writing `output` failed.
+pub fn run(input: impl BufRead, output: impl Write) -> io::Result<bool> {
+    crate::lines::answer_lines(input, output, answer)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn error_of(line: &str) -> String {
+        answer(line).unwrap_err()
+    }
+
+    #[test]
+    fn every_kind_of_bad_line_names_what_is_wrong() {
+        let good = r#""w":[0.6,-0.8,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5"#;
+        assert!(error_of("{").starts_with("malformed JSON at column 1"));
+        assert!(error_of("[1,2]").contains("got an array"));
+        assert_eq!(error_of(r#"{"w":[1,0,0]}"#), "missing field `n`");
+        assert_eq!(
+            error_of(r#"{"w":[1,0],"n":[0,1,0],"mu_i":1,"mu_t":1}"#),
+            "`w` must be an array of exactly 3 numbers, got 2 elements"
+        );
+        assert_eq!(
+            error_of(r#"{"w":[1,"x",0],"n":[0,1,0],"mu_i":1,"mu_t":1}"#),
+            "`w[1]` must be a number, got a string"
+        );
+        assert_eq!(
+            error_of(r#"{"w":[0,0,0],"n":[0,1,0],"mu_i":1,"mu_t":1}"#),
+            "w is the zero vector, which has no direction"
+        );
+        assert!(
+            error_of(&format!(r#"{{{good},"convention":"up"}}"#)).starts_with("unknown convention")
+        );
+        assert!(
+            error_of(&format!(r#"{{{good},"precision":"f16"}}"#)).starts_with("unknown precision")
+        );
+        assert!(
+            error_of(r#"{"w":[1,0,0],"n":[0,1,0],"mu_i":0,"mu_t":1}"#).starts_with("mu_i is 0")
+        );
+        assert_eq!(
+            error_of(r#"{"w":[1e39,0,0],"n":[0,1,0],"mu_i":1,"mu_t":1,"precision":"f32"}"#),
+            "w[0] = 1e39 is too large for f32"
+        );
+    }
+
+    #[test]
+    fn a_request_round_trips_through_its_json_line_bit_for_bit() {
+        let request = Request {
+            w: [0.1, -1.0 / 3.0, 1e-300],
+            n: [f64::MIN_POSITIVE, 1.0, -0.0],
+            mu_i: 1.000_293,
+            mu_t: std::f64::consts::E,
+            convention: Convention::TowardOrigin,
+            precision: Precision::F32,
+        };
+        let back = Request::parse(&request.to_json_line()).unwrap();
+        assert_eq!(back, request);
+        assert_eq!(back.n[2].to_bits(), (-0.0_f64).to_bits());
+    }
+
+    #[test]
+    fn run_answers_every_line_in_order_and_skips_blank_ones() {
+        let input = b"{\"w\":[0,-1,0],\"n\":[0,1,0],\"mu_i\":1,\"mu_t\":1.5}\n\nnot json\n\xff\n";
+        let mut out = Vec::new();
+        assert!(!run(&input[..], &mut out).unwrap());
+        let lines: Vec<Value> = String::from_utf8(out)
+            .unwrap()
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect();
+        assert_eq!(lines.len(), 3);
+        assert_eq!(lines[0]["tir"], false);
+        assert_eq!(lines[1]["line"], 3);
+        assert_eq!(lines[2]["line"], 4);
+    }
+}

@@ -1,0 +1,107 @@
+//! The explorer's state as a JSON file, in the field names of the `solve` command: `w`, `n`,
+//! `mu_i`, `mu_t` and optional `convention` (`precision` is accepted and ignored: the explorer
+//! works in f64). The same line is the "share" string that reproduces a state elsewhere.
+
+use std::path::Path;
+
+use glam::DVec3;
+
+use crate::lines::solve::{Precision, Request};
+use refraction_diagram::ExplorerState;
+
+/// Reads a state from JSON text.
+///
+/// # Errors
+/// Malformed JSON, a missing or ill-typed field, or input the kernel refuses; the message names
+/// what was wrong.
+pub fn parse(text: &str) -> Result<ExplorerState, String> {
+    let request = Request::parse(text.trim())?;
+    ExplorerState::new(
+        DVec3::from_array(request.w),
+        DVec3::from_array(request.n),
+        request.mu_i,
+        request.mu_t,
+        request.convention,
+    )
+    .map_err(|e| e.to_string())
+}
+
+/// Reads a state from a JSON file.
+///
+/// # Errors
+/// The file cannot be read, or [`parse`] refuses it; the message names the file.
+pub fn load(path: &Path) -> Result<ExplorerState, String> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read state file {}: {e}", path.display()))?;
+    parse(&text).map_err(|e| format!("state file {}: {e}", path.display()))
+}
+
+/// The state as a `solve` request (in f64, the explorer's precision).
+#[must_use]
+pub fn request(state: &ExplorerState) -> Request {
+    Request {
+        w: state.w().to_array(),
+        n: state.n().to_array(),
+        mu_i: state.mu_i(),
+        mu_t: state.mu_t(),
+        convention: state.convention(),
+        precision: Precision::F64,
+    }
+}
+
+/// The state as one line of JSON that [`parse`] (and `solve`) read back bit for bit: numbers
+/// are written in their shortest form that reads back to the same bits.
+#[must_use]
+pub fn to_json(state: &ExplorerState) -> String {
+    request(state).to_json_line()
+}
+
+/// Writes the state to `path` as one line of JSON, atomically: a failed write leaves no
+/// half-written file.
+///
+/// # Errors
+/// The file cannot be written; the message names it.
+pub fn save(state: &ExplorerState, path: &Path) -> Result<(), String> {
+    let text = to_json(state) + "\n";
+    refraction_render::atomic::write_atomically(path, text.as_bytes()).map_err(|e| e.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use refraction_kernel::Convention;
+
+    #[test]
+    fn states_round_trip_and_bad_files_are_named() {
+        let mut state = ExplorerState::default();
+        state.set_convention(Convention::TowardOrigin);
+        assert_eq!(parse(&to_json(&state)).unwrap(), state);
+        assert_eq!(parse(r#"{"w":[1,0,0]}"#).unwrap_err(), "missing field `n`");
+        let err = parse(r#"{"w":[1,-1,0],"n":[0,1,0],"mu_i":-1,"mu_t":1}"#).unwrap_err();
+        assert!(err.starts_with("mu_i is -1"), "{err}");
+        let err = load(Path::new("/nonexistent/state.json")).unwrap_err();
+        assert!(err.starts_with("cannot read state file /nonexistent/state.json"));
+        let err = save(&state, Path::new("/nonexistent/state.json")).unwrap_err();
+        assert!(err.contains("/nonexistent/state.json"), "{err}");
+    }
+
+    #[test]
+    fn a_saved_file_opens_to_the_same_bits() {
+        let w = glam::DVec3::new(0.1, -1.0 / 3.0, 1e-300);
+        let state = ExplorerState::new(
+            w,
+            glam::DVec3::Y,
+            1.000_293,
+            std::f64::consts::E,
+            Convention::TowardOrigin,
+        )
+        .unwrap();
+        let path =
+            std::env::temp_dir().join(format!("state-file-test-{}.json", std::process::id()));
+        save(&state, &path).unwrap();
+        let back = load(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(back, state);
+        assert_eq!(back.w().z.to_bits(), state.w().z.to_bits());
+    }
+}
