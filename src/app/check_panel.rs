@@ -11,8 +11,9 @@ use crate::lines::check::{self, Match, Verdict};
 use crate::lines::solve::{Precision, Request};
 use crate::lines::state_file;
 use refraction_diagram::ExplorerState;
+use refraction_diagram::numbers::vector;
 use refraction_diagram::overlay::StudentRay;
-use refraction_diagram::palette::{self, vector};
+use refraction_diagram::palette;
 
 /// A T that was checked, with the case it was checked against.
 #[derive(Clone, Debug, PartialEq)]

@@ -6,7 +6,8 @@ use egui_plot::{HLine, Line, Plot, Points};
 
 use super::paint::color;
 use refraction_diagram::equations::equations;
-use refraction_diagram::palette::{self, number, vector};
+use refraction_diagram::numbers::{number, vector};
+use refraction_diagram::palette;
 use refraction_diagram::quadratic::Quadratic;
 use refraction_diagram::table::rows;
 use refraction_kernel::Refraction;

@@ -12,7 +12,8 @@ use std::path::PathBuf;
 use glam::{DVec2, Vec2};
 
 use super::paint::{color, paint};
-use refraction_diagram::palette::{self, number};
+use refraction_diagram::numbers::number;
+use refraction_diagram::palette;
 use refraction_diagram::shapes::{Align, Label};
 use refraction_diagram::{ExplorerState, Primitive, SceneLayout, ScenePicture};
 use refraction_render::atomic::write_atomically;
@@ -71,7 +72,7 @@ fn hit_text(scene: &Scene, hit: &Hit) -> String {
         name(hit.to_medium),
         number(hit.mu_i, 4),
         number(hit.mu_t, 4),
-        number(traced_wavelength(hit.wavelength_nm), 1)
+        number(traced_wavelength(hit.light), 1)
     )
 }
 

@@ -9,7 +9,7 @@ use super::Primitive;
 use super::font::Typeface;
 use super::geometry::{Colour, Rect};
 use super::palette;
-use super::shapes::{Align, Dash, Label, Shape, Stroke, lower_all};
+use super::shapes::{Align, Dash, Figure, Label, Stroke, lower_all};
 use refraction_bench::{Report, Row};
 
 /// The default kernel's documented bound, drawn as a reference line: 32·ε·κ.
@@ -119,8 +119,8 @@ impl Metrics {
     }
 }
 
-fn text(text: String, at: Vec2, (h, v): (Align, Align), size: f32, colour: Colour) -> Shape {
-    Shape::Text(Label {
+fn text(text: String, at: Vec2, (h, v): (Align, Align), size: f32, colour: Colour) -> Figure {
+    Figure::Text(Label {
         text,
         at,
         h,
@@ -161,7 +161,7 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
         colour: palette::GUIDE.with_alpha(90),
         dash: Dash::Solid,
     };
-    let mut shapes = vec![Shape::Fill {
+    let mut shapes = vec![Figure::Fill {
         points: vec![
             Vec2::ZERO,
             Vec2::new(size.x, 0.0),
@@ -172,7 +172,7 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
     }];
     for e in x_axis.decades() {
         let x = at(10f64.powi(e), FLOOR).x;
-        shapes.push(Shape::Line {
+        shapes.push(Figure::Line {
             points: vec![Vec2::new(x, m.plot.min.y), Vec2::new(x, m.plot.max.y)],
             stroke: grid,
         });
@@ -187,7 +187,7 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
     }
     for e in y_axis.decades() {
         let y = at(10f64.powi(x_axis.low as i32), 10f64.powi(e)).y;
-        shapes.push(Shape::Line {
+        shapes.push(Figure::Line {
             points: vec![Vec2::new(m.plot.min.x, y), Vec2::new(m.plot.max.x, y)],
             stroke: grid,
         });
@@ -201,7 +201,7 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
         ));
     }
     let bound_y = at(1.0, BOUND).y;
-    shapes.push(Shape::Line {
+    shapes.push(Figure::Line {
         points: vec![
             Vec2::new(m.plot.min.x, bound_y),
             Vec2::new(m.plot.max.x, bound_y),
@@ -219,7 +219,7 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
         m.text * 0.9,
         palette::ALARM,
     ));
-    shapes.push(Shape::Line {
+    shapes.push(Figure::Line {
         points: vec![
             Vec2::new(m.plot.min.x, m.plot.min.y),
             Vec2::new(m.plot.min.x, m.plot.max.y),
@@ -268,7 +268,7 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
     for (row, p) in report.rows.iter().zip(&points) {
         let colour = variant_colour(row.variant);
         let filled = row.precision == "f64";
-        shapes.push(Shape::Disc {
+        shapes.push(Figure::Disc {
             center: *p,
             radius,
             fill: if filled { colour } else { palette::BACKGROUND },

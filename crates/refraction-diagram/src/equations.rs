@@ -4,7 +4,7 @@
 
 use refraction_kernel::{Convention, Refraction, seed};
 
-use super::palette::{number, vector};
+use super::numbers::{number, vector};
 
 /// One equation of the source, as written there and with numbers.
 #[derive(Clone, Debug, PartialEq)]

@@ -10,14 +10,14 @@ use super::overlay::PanZoom;
 
 /// The world↔canvas map of the drawing area.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct View {
+pub struct Viewport {
     /// The canvas position of the hit point.
     pub origin: Vec2,
     /// Pixels per world unit (the length of W, N and T on screen).
     pub scale: f32,
 }
 
-impl View {
+impl Viewport {
     /// The canvas point of a world point.
     #[must_use]
     pub fn to_canvas(&self, world: DVec2) -> Vec2 {
@@ -114,7 +114,7 @@ pub struct Layout {
     /// The index scale.
     pub scale: IndexScale,
     /// The world↔canvas map.
-    pub view: View,
+    pub view: Viewport,
     /// The label font size in pixels; strokes and handles scale with it.
     pub font: f32,
 }
@@ -140,7 +140,7 @@ impl Layout {
             top: banner.max.y + font * 2.5,
             bottom: size.y - font * 2.5,
         };
-        let view = View {
+        let view = Viewport {
             origin: drawing.center(),
             scale: drawing.size().min_element() * 0.36,
         };
@@ -191,11 +191,11 @@ mod tests {
     #[test]
     fn a_fitted_view_shows_the_whole_world_rectangle_centred() {
         let rect = Rect::from_min_size(Vec2::new(0.0, 100.0), Vec2::new(800.0, 400.0));
-        let view = View::fitted(DVec2::new(-4.0, -1.0), DVec2::new(4.0, 3.0), &rect);
+        let view = Viewport::fitted(DVec2::new(-4.0, -1.0), DVec2::new(4.0, 3.0), &rect);
         assert_eq!(view.scale, 100.0);
         assert_eq!(view.to_canvas(DVec2::new(0.0, 1.0)), rect.center());
         assert_eq!(view.to_canvas(DVec2::new(-4.0, 3.0)), Vec2::new(0.0, 100.0));
-        let flat = View::fitted(DVec2::ONE, DVec2::ONE, &rect);
+        let flat = Viewport::fitted(DVec2::ONE, DVec2::ONE, &rect);
         assert_eq!(flat.scale, 1.0);
         assert_eq!(flat.to_canvas(DVec2::ONE), rect.center());
     }

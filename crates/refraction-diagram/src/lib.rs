@@ -21,6 +21,7 @@ pub mod font;
 pub mod geometry;
 pub mod layout;
 pub mod model;
+pub mod numbers;
 pub mod overlay;
 pub mod palette;
 pub mod picture;

@@ -1,5 +1,5 @@
 //! The interface diagram for one state: media, surface, rays, candidates, angles, banner and
-//! index scale, as [`Shape`]s on a canvas of a given size, plus the draggable handles.
+//! index scale, as [`Figure`]s on a canvas of a given size, plus the draggable handles.
 
 use glam::{DVec2, DVec3, Vec2};
 
@@ -7,9 +7,10 @@ use super::font::Typeface;
 use super::geometry::{Colour, Rect, arc, clip_rect_to_half_plane, clip_segment};
 use super::layout::Layout;
 use super::model::{ExplorerState, HandleId, INDEX_RANGE, MATERIALS, material_of};
+use super::numbers::number;
 use super::overlay::{Overlay, Part};
-use super::palette::{Palette, number};
-use super::shapes::{Align, Dash, Label, Primitive, Shape, Stroke, lower_all};
+use super::palette::Palette;
+use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke, lower_all};
 use refraction_kernel::{Convention, Refraction, Rejection, seed};
 
 /// A draggable point on the canvas.
@@ -29,7 +30,7 @@ pub struct Diagram {
     /// Where things go.
     pub layout: Layout,
     /// What is drawn, back to front.
-    pub shapes: Vec<Shape>,
+    pub shapes: Vec<Figure>,
     /// The handles, in [`HandleId::ALL`] order.
     pub handles: Vec<Handle>,
     /// The banner's text: what the picture says in words, for screen readers.
@@ -69,13 +70,13 @@ pub fn medium_colour(palette: &Palette, index: f64) -> Colour {
 }
 
 /// Builds the shapes, with the world→canvas map at hand.
-struct Builder<'a> {
+struct DiagramBuilder<'a> {
     layout: &'a Layout,
     state: &'a ExplorerState,
     overlay: &'a Overlay,
     palette: Palette,
     face: Option<Typeface>,
-    shapes: Vec<Shape>,
+    shapes: Vec<Figure>,
     /// Labels wait here, with their rank, to be placed last and on top.
     labels: Vec<(u8, Label)>,
     /// The placement rank of labels added next: lower ranks are placed first and keep their
@@ -83,7 +84,7 @@ struct Builder<'a> {
     rank: u8,
 }
 
-impl Builder<'_> {
+impl DiagramBuilder<'_> {
     fn font(&self) -> f32 {
         self.layout.font
     }
@@ -132,7 +133,7 @@ impl Builder<'_> {
     /// Places the waiting labels, by rank, on top of everything else. A label anchored in the
     /// drawing area is kept inside it (clear of the banner and the index scale) and moved
     /// aside, a step at a time, until it overlaps no handle and no label placed before it.
-    fn finish(mut self, handles: &[Handle]) -> Vec<Shape> {
+    fn finish(mut self, handles: &[Handle]) -> Vec<Figure> {
         let mut labels = std::mem::take(&mut self.labels);
         labels.sort_by_key(|(rank, _)| *rank);
         let drawing = self.layout.drawing;
@@ -164,7 +165,7 @@ impl Builder<'_> {
                 label.at = at;
                 taken.push(rect);
             }
-            self.shapes.push(Shape::Text(label));
+            self.shapes.push(Figure::Text(label));
         }
         self.shapes
     }
@@ -173,7 +174,7 @@ impl Builder<'_> {
     /// label beyond its tip.
     fn ray(&mut self, d: DVec2, length: f64, stroke: Stroke, text: &str, size: f32) {
         let tip = self.at(d * length);
-        self.shapes.push(Shape::Arrow {
+        self.shapes.push(Figure::Arrow {
             from: self.at(DVec2::ZERO),
             to: tip,
             stroke,
@@ -192,11 +193,11 @@ impl Builder<'_> {
     fn halo(&mut self, part: Part, points: Vec<Vec2>) {
         if self.overlay.highlights(part) {
             let stroke = self.stroke(13.0, self.palette.highlight, Dash::Solid);
-            self.shapes.push(Shape::Line { points, stroke });
+            self.shapes.push(Figure::Line { points, stroke });
         }
     }
 
-    /// [`Builder::ray`] for a part a walk-through step may highlight.
+    /// [`DiagramBuilder::ray`] for a part a walk-through step may highlight.
     fn part_ray(&mut self, part: Part, d: DVec2, length: f64, stroke: Stroke, text: &str) {
         let size = match part {
             Part::T => 1.1,
@@ -227,7 +228,7 @@ impl Builder<'_> {
     /// A straight line between world points, clipped to the drawing area.
     fn segment(&mut self, a: DVec2, b: DVec2, stroke: Stroke) {
         if let Some((a, b)) = clip_segment(self.at(a), self.at(b), &self.layout.drawing) {
-            self.shapes.push(Shape::Line {
+            self.shapes.push(Figure::Line {
                 points: vec![a, b],
                 stroke,
             });
@@ -245,7 +246,7 @@ impl Builder<'_> {
             (-1.0, "μt", self.state.mu_t()),
         ] {
             let points = clip_rect_to_half_plane(&drawing, origin, facing * side);
-            self.shapes.push(Shape::Fill {
+            self.shapes.push(Figure::Fill {
                 points,
                 colour: medium_colour(&self.palette, index),
             });
@@ -311,7 +312,7 @@ impl Builder<'_> {
         );
         self.halo(part, points.clone());
         let stroke = self.stroke(1.5, colour, Dash::Solid);
-        self.shapes.push(Shape::Line { points, stroke });
+        self.shapes.push(Figure::Line { points, stroke });
         let middle = (from + to).normalize_or(from);
         let away = view.direction(middle);
         let at = self.at(middle * ARC_RADIUS) + away * (self.font() * 0.5);
@@ -402,7 +403,7 @@ impl Builder<'_> {
         } else {
             (self.palette.calm, self.palette.ink)
         };
-        self.shapes.push(Shape::Fill {
+        self.shapes.push(Figure::Fill {
             points: rect.corners().to_vec(),
             colour: fill,
         });
@@ -427,7 +428,7 @@ impl Builder<'_> {
             }
         };
         let at = Vec2::new(rect.min.x + self.font() * 0.6, rect.center().y);
-        self.shapes.push(Shape::Text(Label {
+        self.shapes.push(Figure::Text(Label {
             text: text.clone(),
             at,
             h: Align::Start,
@@ -444,7 +445,7 @@ impl Builder<'_> {
         let scale = self.layout.scale;
         let font = self.font();
         let line = self.stroke(1.5, self.palette.guide, Dash::Solid);
-        self.shapes.push(Shape::Line {
+        self.shapes.push(Figure::Line {
             points: vec![
                 Vec2::new(scale.x, scale.top),
                 Vec2::new(scale.x, scale.bottom),
@@ -461,7 +462,7 @@ impl Builder<'_> {
             let y = scale.y_of(f64::from(tenth) / 10.0);
             let long = tenth % 5 == 0;
             let half = if long { 0.5 } else { 0.25 } * font;
-            self.shapes.push(Shape::Line {
+            self.shapes.push(Figure::Line {
                 points: vec![Vec2::new(scale.x - half, y), Vec2::new(scale.x + half, y)],
                 stroke: line,
             });
@@ -482,13 +483,13 @@ impl Builder<'_> {
         .map(|(id, side, index, text)| {
             let center = Vec2::new(scale.x + side * font * 0.8, scale.y_of(index));
             let radius = font * 0.75;
-            self.shapes.push(Shape::Disc {
+            self.shapes.push(Figure::Disc {
                 center,
                 radius,
                 fill: medium_colour(&self.palette, index),
                 outline: self.stroke(2.0, self.palette.ink, Dash::Solid),
             });
-            self.shapes.push(Shape::Text(Label {
+            self.shapes.push(Figure::Text(Label {
                 text: text.into(),
                 at: center,
                 h: Align::Center,
@@ -505,7 +506,7 @@ impl Builder<'_> {
     fn tip_handle(&mut self, id: HandleId, d: DVec2, colour: Colour) -> Handle {
         let center = self.at(d);
         let radius = self.font() * 0.6;
-        self.shapes.push(Shape::Disc {
+        self.shapes.push(Figure::Disc {
             center,
             radius,
             fill: self.palette.background,
@@ -529,7 +530,7 @@ impl Diagram {
     pub fn with_overlay(state: &ExplorerState, size: Vec2, overlay: &Overlay) -> Self {
         let layout = Layout::new(size).panned(overlay.pan_zoom);
         let palette = overlay.palette;
-        let mut b = Builder {
+        let mut b = DiagramBuilder {
             layout: &layout,
             state,
             overlay,
@@ -537,7 +538,7 @@ impl Diagram {
             face: Typeface::egui_default().ok(),
             labels: Vec::new(),
             rank: 5,
-            shapes: vec![Shape::Fill {
+            shapes: vec![Figure::Fill {
                 points: layout.canvas.corners().to_vec(),
                 colour: palette.background,
             }],
@@ -571,7 +572,7 @@ impl Diagram {
                 palette.text_shade(palette.incoming),
             );
         }
-        b.shapes.push(Shape::Arrow {
+        b.shapes.push(Figure::Arrow {
             from: b.at(source),
             to: b.at(source * 0.45),
             stroke: incoming,
@@ -661,7 +662,7 @@ mod tests {
             .shapes
             .iter()
             .filter_map(|s| match s {
-                Shape::Arrow { to, stroke, .. } => Some((*to, *stroke)),
+                Figure::Arrow { to, stroke, .. } => Some((*to, *stroke)),
                 _ => None,
             })
             .collect()
@@ -672,7 +673,7 @@ mod tests {
             .shapes
             .iter()
             .filter_map(|s| match s {
-                Shape::Text(l) => Some(l.text.as_str()),
+                Figure::Text(l) => Some(l.text.as_str()),
                 _ => None,
             })
             .collect()
@@ -773,7 +774,7 @@ mod tests {
         let halos = |d: &Diagram| {
             d.shapes
                 .iter()
-                .filter(|s| matches!(s, Shape::Line { stroke, .. } if stroke.colour == palette::HIGHLIGHT))
+                .filter(|s| matches!(s, Figure::Line { stroke, .. } if stroke.colour == palette::HIGHLIGHT))
                 .count()
         };
         assert_eq!(halos(&diagram), 4, "T and the three ghosts");
@@ -803,7 +804,7 @@ mod tests {
         };
         let diagram = Diagram::with_overlay(&state, size, &dark);
         assert!(
-            matches!(&diagram.shapes[0], Shape::Fill { colour, .. } if *colour == dark.palette.background)
+            matches!(&diagram.shapes[0], Figure::Fill { colour, .. } if *colour == dark.palette.background)
         );
         assert!(texts(&diagram).contains(&"incoming ray"));
         let reflected = arrows(&diagram)
@@ -839,7 +840,7 @@ mod tests {
                 let diagram = Diagram::new(&state, size);
                 let canvas = diagram.layout.canvas;
                 for shape in &diagram.shapes {
-                    if let Shape::Text(l) = shape {
+                    if let Figure::Text(l) = shape {
                         let extent = face.measure(&l.text, l.size);
                         let min = l.at - extent * Vec2::new(l.h.fraction(), l.v.fraction());
                         let inside = canvas.contains(min) && canvas.contains(min + extent);

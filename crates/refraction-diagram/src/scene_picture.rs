@@ -10,13 +10,15 @@ use glam::{DVec2, Vec2};
 
 use super::font::Typeface;
 use super::geometry::{Colour, Rect, convex_pieces};
-use super::layout::{View, font_size};
-use super::palette::{self, Palette, number};
+use super::layout::{Viewport, font_size};
+use super::numbers::number;
+use super::palette::{self, Palette};
 use super::picture::{GRAB_SCALE, medium_colour};
-use super::shapes::{Align, Dash, Label, Primitive, Shape as Drawn, Stroke};
+use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke};
 use super::spectrum::{ray_colour, wavelength_colour};
 use refraction_scene::{
-    Bounds, Counts, EditError, Hit, Outcome, Path, REFERENCE_WAVELENGTH_NM, Scene, Side, Trace,
+    Bounds, Counts, EditError, Hit, Light, Outcome, Path, REFERENCE_WAVELENGTH_NM, Scene, Side,
+    Trace,
 };
 
 /// Ray points closer than this many pixels to the previous one are left out: they change
@@ -84,7 +86,7 @@ pub struct SceneLayout {
     /// The area the world is shown in.
     pub drawing: Rect,
     /// The world↔canvas map, fitted to the world rectangle.
-    pub view: View,
+    pub view: Viewport,
     /// The world rectangle it was fitted to.
     pub bounds: Bounds,
     /// The label font size in pixels; strokes, markers and handles scale with it.
@@ -113,7 +115,7 @@ impl SceneLayout {
             canvas,
             banner,
             drawing,
-            view: View::fitted(bounds.min, bounds.max, &inner),
+            view: Viewport::fitted(bounds.min, bounds.max, &inner),
             bounds,
             font,
         }
@@ -292,13 +294,13 @@ fn counts_text(c: &Counts) -> String {
 }
 
 /// Builds the primitives, with the layout at hand.
-struct Builder<'a> {
+struct ScenePictureBuilder<'a> {
     layout: &'a SceneLayout,
     face: Option<Typeface>,
     out: Vec<Primitive>,
 }
 
-impl Builder<'_> {
+impl ScenePictureBuilder<'_> {
     fn unit(&self) -> f32 {
         self.layout.unit()
     }
@@ -417,10 +419,10 @@ impl Builder<'_> {
         for path in &trace.paths {
             // Paths come colour after colour: look each colour up once.
             let colour = match last_colour {
-                Some((traced, colour)) if traced == path.wavelength_nm => colour,
-                _ => ray_colour(path.wavelength_nm),
+                Some((traced, colour)) if traced == path.light => colour,
+                _ => ray_colour(path.light),
             };
-            last_colour = Some((path.wavelength_nm, colour));
+            last_colour = Some((path.light, colour));
             let mut segments = trace.segments.get(path.segments.clone()).unwrap_or(&[]);
             if wavelengths > 1
                 && starts_colour_blind(trace, path)
@@ -537,7 +539,7 @@ impl Builder<'_> {
         if let (Some(source), Some(aim)) =
             (source, handles.iter().find(|h| h.id == SceneHandleId::Aim))
         {
-            Drawn::Arrow {
+            Figure::Arrow {
                 from: source.center,
                 to: aim.center,
                 stroke: Stroke {
@@ -553,7 +555,7 @@ impl Builder<'_> {
                 SceneHandleId::Aim => (palette::BACKGROUND, palette::W),
                 SceneHandleId::Shape(_) => (palette::BACKGROUND, palette::INK),
             };
-            Drawn::Disc {
+            Figure::Disc {
                 center: handle.center,
                 radius: handle.radius,
                 fill,
@@ -561,7 +563,7 @@ impl Builder<'_> {
             }
             .lower(&mut self.out);
             if matches!(handle.id, SceneHandleId::Shape(_)) {
-                Drawn::Disc {
+                Figure::Disc {
                     center: handle.center,
                     radius: handle.radius * 0.3,
                     fill: palette::INK,
@@ -662,7 +664,7 @@ fn legend(scene: &Scene, trace: &Trace) -> Vec<(String, Colour)> {
     let mut pieces = vec![("colour: ".to_owned(), ink)];
     let colours = scene.source().colours(scene.effects().dispersion);
     match colours.as_slice() {
-        [None] => pieces.push((
+        [Light::White] => pieces.push((
             format!("white light, traced at {REFERENCE_WAVELENGTH_NM} nm"),
             palette::WHITE_LIGHT,
         )),
@@ -670,8 +672,8 @@ fn legend(scene: &Scene, trace: &Trace) -> Vec<(String, Colour)> {
             if colours.len() > 1 {
                 pieces.push(("white light, then ".to_owned(), palette::WHITE_LIGHT));
             }
-            for nm in colours.iter().flatten() {
-                pieces.push((format!("{} ", number(*nm, 0)), wavelength_colour(*nm)));
+            for nm in colours.iter().filter_map(|light| light.wavelength_nm()) {
+                pieces.push((format!("{} ", number(nm, 0)), wavelength_colour(nm)));
             }
             pieces.push(("nm".to_owned(), ink));
         }
@@ -707,7 +709,7 @@ impl ScenePicture {
     /// drag until it ends, so that the world does not move under the pointer).
     #[must_use]
     pub fn new(scene: &Scene, trace: &Trace, layout: &SceneLayout) -> Self {
-        let mut b = Builder {
+        let mut b = ScenePictureBuilder {
             layout,
             face: Typeface::egui_default().ok(),
             out: Vec::with_capacity(trace.segments.len() + trace.hits.len() / 4 + 64),

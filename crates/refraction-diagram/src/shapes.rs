@@ -111,7 +111,7 @@ pub struct Label {
 
 /// One thing the diagram draws.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Shape {
+pub enum Figure {
     /// A filled convex polygon.
     Fill {
         /// Its corners in order.
@@ -196,7 +196,7 @@ fn polylines(points: &[Vec2], stroke: &Stroke, out: &mut Vec<Primitive>) {
     }
 }
 
-impl Shape {
+impl Figure {
     /// The arrowhead length for a shaft `width` pixels wide.
     #[must_use]
     pub fn head_length(width: f32) -> f32 {
@@ -243,7 +243,7 @@ impl Shape {
 
 /// The primitives of `shapes`, in drawing order.
 #[must_use]
-pub fn lower_all(shapes: &[Shape]) -> Vec<Primitive> {
+pub fn lower_all(shapes: &[Figure]) -> Vec<Primitive> {
     let mut out = Vec::new();
     for shape in shapes {
         shape.lower(&mut out);
@@ -262,7 +262,7 @@ mod tests {
             colour: Colour::hex(0x123456),
             dash: Dash::Dashed,
         };
-        let arrow = Shape::Arrow {
+        let arrow = Figure::Arrow {
             from: Vec2::ZERO,
             to: Vec2::new(200.0, 0.0),
             stroke,
@@ -273,7 +273,7 @@ mod tests {
             .partition(|p| matches!(p, Primitive::Polygon { .. }));
         assert_eq!(polygons.len(), 1);
         assert!(lines.len() > 5);
-        let solid = Shape::Arrow {
+        let solid = Figure::Arrow {
             from: Vec2::ZERO,
             to: Vec2::ZERO,
             stroke: Stroke {

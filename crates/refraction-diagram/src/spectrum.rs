@@ -52,10 +52,12 @@ pub fn wavelength_colour(nm: f64) -> Colour {
     }
 }
 
-/// The colour a ray of this traced colour is drawn in.
+/// The colour a ray of this traced light is drawn in.
 #[must_use]
-pub fn ray_colour(colour: refraction_scene::Colour) -> Colour {
-    colour.map_or(palette::WHITE_LIGHT, wavelength_colour)
+pub fn ray_colour(light: refraction_scene::Light) -> Colour {
+    light
+        .wavelength_nm()
+        .map_or(palette::WHITE_LIGHT, wavelength_colour)
 }
 
 #[cfg(test)]
@@ -72,7 +74,10 @@ mod tests {
         assert!(red.r > 200 && red.g == 0 && red.b == 0);
         assert_eq!(wavelength_colour(200.0), wavelength_colour(380.0));
         assert_eq!(wavelength_colour(f64::NAN), palette::WHITE_LIGHT);
-        assert_eq!(ray_colour(None), palette::WHITE_LIGHT);
+        assert_eq!(
+            ray_colour(refraction_scene::Light::White),
+            palette::WHITE_LIGHT
+        );
     }
 
     #[test]

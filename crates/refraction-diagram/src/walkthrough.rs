@@ -3,8 +3,8 @@
 //! parts of the diagram it is about ([`Focus`]). Every number is the kernel's.
 
 use super::equations::{Equation, equations};
+use super::numbers::number;
 use super::overlay::Focus;
-use super::palette::number;
 use refraction_kernel::{Convention, Refraction};
 
 /// One step of the walk-through.

@@ -137,7 +137,7 @@ fn asking_for_every_effect_computes_more() {
     assert_eq!(dispersed.counts.kernel_calls, 14);
     assert_eq!(once.counts.wavelengths, 1);
     assert_eq!(once.counts.kernel_calls, 2);
-    assert_eq!(once.paths[0].wavelength_nm, None);
+    assert_eq!(once.paths[0].light.wavelength_nm(), None);
 }
 
 #[test]

@@ -35,7 +35,7 @@ pub use medium::{Dispersion, Medium, REFERENCE_WAVELENGTH_NM, WHITE_WAVELENGTHS_
 pub use outline::{Outline, Piece};
 pub use report::Report;
 pub use shape::{Crossing, Lens, Shape, T_MIN};
-pub use source::{Colour, Light, Source, SourceKind, traced_wavelength};
+pub use source::{Light, Source, SourceKind, traced_wavelength};
 pub use trace::{Counts, End, Hit, MAX_SEGMENTS, Outcome, Path, Segment, Side, Trace};
 
 /// A scene ready to trace: media, shapes, a source and the effects it asks for.

@@ -4,13 +4,15 @@
 use glam::DVec2;
 use serde::Serialize;
 
-use super::{Bounds, Colour, Counts, Effects, End, Hit, Outline, Scene, Trace};
+use super::source::serialize_wavelength;
+use super::{Bounds, Counts, Effects, End, Hit, Light, Outline, Scene, Trace};
 
 /// One path as the report shows it: points rather than segments, media by name.
 #[derive(Debug, Serialize)]
 pub struct PathReport<'a> {
     /// The wavelength traced in nm, or `null` for white light traced once.
-    pub wavelength_nm: Colour,
+    #[serde(rename = "wavelength_nm", serialize_with = "serialize_wavelength")]
+    pub light: Light,
     /// The hit it was reflected off (position in `hits`), or `null` for a source ray.
     pub parent_hit: Option<usize>,
     /// Partial reflections between it and the source.
@@ -67,7 +69,7 @@ impl<'a> Report<'a> {
             .map(|path| {
                 let segments = &trace.segments[path.segments.clone()];
                 PathReport {
-                    wavelength_nm: path.wavelength_nm,
+                    light: path.light,
                     parent_hit: path.parent_hit,
                     reflections: path.reflections,
                     end: path.end,

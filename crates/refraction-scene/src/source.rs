@@ -47,14 +47,34 @@ pub struct Source {
     pub light: Light,
 }
 
-/// The wavelength of one traced colour: `None` is white light traced once at
-/// [`REFERENCE_WAVELENGTH_NM`].
-pub type Colour = Option<f64>;
+impl Light {
+    /// The wavelength in nm, or `None` for white light.
+    #[must_use]
+    pub fn wavelength_nm(self) -> Option<f64> {
+        match self {
+            Self::Wavelength(nm) => Some(nm),
+            Self::White => None,
+        }
+    }
+}
 
-/// The vacuum wavelength in nm at which a [`Colour`] is traced.
+/// The vacuum wavelength in nm at which light is traced: white light traced once is traced
+/// at [`REFERENCE_WAVELENGTH_NM`].
 #[must_use]
-pub fn traced_wavelength(colour: Colour) -> f64 {
-    colour.unwrap_or(REFERENCE_WAVELENGTH_NM)
+pub fn traced_wavelength(light: Light) -> f64 {
+    light.wavelength_nm().unwrap_or(REFERENCE_WAVELENGTH_NM)
+}
+
+/// Serializes traced light as its wavelength in nm, or `null` for white light traced once: the
+/// `wavelength_nm` of the `trace` command's JSON.
+///
+/// # Errors
+/// The serializer's.
+pub(crate) fn serialize_wavelength<S: serde::Serializer>(
+    light: &Light,
+    serializer: S,
+) -> Result<S::Ok, S::Error> {
+    light.wavelength_nm().serialize(serializer)
 }
 
 impl Source {
@@ -63,11 +83,14 @@ impl Source {
 
     /// The colours to trace: one unless the light is white and dispersion is asked for.
     #[must_use]
-    pub fn colours(&self, dispersion: bool) -> Vec<Colour> {
+    pub fn colours(&self, dispersion: bool) -> Vec<Light> {
         match self.light {
-            Light::Wavelength(nm) => vec![Some(nm)],
-            Light::White if dispersion => WHITE_WAVELENGTHS_NM.iter().copied().map(Some).collect(),
-            Light::White => vec![None],
+            Light::White if dispersion => WHITE_WAVELENGTHS_NM
+                .iter()
+                .copied()
+                .map(Light::Wavelength)
+                .collect(),
+            light => vec![light],
         }
     }
 
@@ -153,7 +176,7 @@ mod tests {
     #[test]
     fn white_light_is_one_colour_unless_dispersion_is_asked_for() {
         let s = source(SourceKind::Ray, 1);
-        assert_eq!(s.colours(false), vec![None]);
+        assert_eq!(s.colours(false), vec![Light::White]);
         assert_eq!(s.colours(true).len(), WHITE_WAVELENGTHS_NM.len());
     }
 }

@@ -10,7 +10,7 @@ use serde::Serialize;
 use super::Scene;
 use super::bounds::Bounds;
 use super::fresnel::Fresnel;
-use super::source::{Colour, traced_wavelength};
+use super::source::{Light, serialize_wavelength, traced_wavelength};
 use refraction_kernel::{Convention, Incidence, stable};
 
 /// The most segments one trace records; past it the trace stops and says so
@@ -114,8 +114,9 @@ pub struct Hit {
     pub shape: usize,
     /// The path that reached it (position in [`Trace::paths`]).
     pub path: usize,
-    /// The wavelength traced.
-    pub wavelength_nm: Colour,
+    /// The light traced: one wavelength, or white light traced once.
+    #[serde(rename = "wavelength_nm", serialize_with = "serialize_wavelength")]
+    pub light: Light,
     /// Refracted or totally internally reflected.
     pub outcome: Outcome,
     /// The Fresnel intensities, when the scene asks for them.
@@ -149,8 +150,9 @@ pub struct Segment {
     pub path: usize,
     /// The medium it crosses (position in [`Scene::media`]).
     pub medium: usize,
-    /// The wavelength traced.
-    pub wavelength_nm: Colour,
+    /// The light traced: one wavelength, or white light traced once.
+    #[serde(rename = "wavelength_nm", serialize_with = "serialize_wavelength")]
+    pub light: Light,
     /// The intensity at `from` as a fraction of the source ray's, when intensities are traced.
     pub intensity: Option<f64>,
     /// The intensity at `to` (less than at `from` in an absorbing medium).
@@ -177,8 +179,9 @@ pub enum End {
 /// following refraction and total internal reflection.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Path {
-    /// The wavelength traced.
-    pub wavelength_nm: Colour,
+    /// The light traced: one wavelength, or white light traced once.
+    #[serde(rename = "wavelength_nm", serialize_with = "serialize_wavelength")]
+    pub light: Light,
     /// Its segments: a range of [`Trace::segments`].
     pub segments: Range<usize>,
     /// The hit it was reflected off (position in [`Trace::hits`]), or `None` for a source ray.
@@ -333,7 +336,7 @@ impl Tracer<'_> {
     }
 
     /// Records a segment, attenuating the intensity in an absorbing medium when asked to.
-    fn segment(&mut self, from: DVec2, to: DVec2, medium: usize, colour: Colour, ray: &mut Ray) {
+    fn segment(&mut self, from: DVec2, to: DVec2, medium: usize, colour: Light, ray: &mut Ray) {
         let effects = self.scene.effects();
         let start = ray.intensity;
         let absorption = self.scene.media()[medium].absorption;
@@ -350,7 +353,7 @@ impl Tracer<'_> {
             to,
             path: self.path,
             medium,
-            wavelength_nm: colour,
+            light: colour,
             intensity: start.map(Intensity::total),
             intensity_end: ray.intensity.map(Intensity::total),
         });
@@ -361,7 +364,7 @@ impl Tracer<'_> {
     }
 
     /// Follows one ray to its end, queueing the reflections it spawns.
-    fn follow(&mut self, mut ray: Ray, colour: Colour, indices: &[f64]) {
+    fn follow(&mut self, mut ray: Ray, colour: Light, indices: &[f64]) {
         let scene = self.scene;
         let first_segment = self.trace.segments.len();
         self.path = self.trace.paths.len();
@@ -415,7 +418,7 @@ impl Tracer<'_> {
                 side,
                 shape,
                 path: self.path,
-                wavelength_nm: colour,
+                light: colour,
                 outcome: Outcome::Refracted,
                 fresnel: None,
             };
@@ -424,7 +427,7 @@ impl Tracer<'_> {
             }
         };
         self.trace.paths.push(Path {
-            wavelength_nm: colour,
+            light: colour,
             segments: first_segment..self.trace.segments.len(),
             parent_hit: ray.parent_hit,
             reflections: ray.reflections,

@@ -44,7 +44,7 @@ fn a_slab_shifts_the_ray_sideways_but_not_its_direction() {
         let d_in = direction(&trace, path, 0);
         let d_out = last_direction(&trace, path);
         assert!((d_in - d_out).length() < 1e-12, "{d_in} vs {d_out}");
-        let wavelength = traced_wavelength(path.wavelength_nm);
+        let wavelength = traced_wavelength(path.light);
         let n_air = slab.media()[slab.background()].index(wavelength);
         let n_glass = slab.media()[glass].index(wavelength);
         // The faces are x = ±1 (thickness 2), normals ±x.
@@ -135,7 +135,7 @@ fn the_droplet_reaches_the_primary_rainbow_angle_for_each_wavelength() {
             continue;
         }
         let deviation = degrees_between(DVec2::X, last_direction(&trace, path));
-        let key = traced_wavelength(path.wavelength_nm).to_bits();
+        let key = traced_wavelength(path.light).to_bits();
         let min = minima.entry(key).or_insert(f64::INFINITY);
         *min = min.min(deviation);
     }
@@ -212,7 +212,7 @@ fn the_lens_brings_paraxial_rays_to_the_lensmakers_focus() {
     let trace = lens.trace();
     assert_eq!(trace.counts.kernel_calls, 2);
     let glass = lens.media().iter().position(|m| m.name == "bk7").unwrap();
-    let wavelength = traced_wavelength(trace.paths[0].wavelength_nm);
+    let wavelength = traced_wavelength(trace.paths[0].light);
     let n =
         lens.media()[glass].index(wavelength) / lens.media()[lens.background()].index(wavelength);
     // Lensmaker's equation for a thick lens, R1 = 4, R2 = −4, d = 1; back vertex at x = 0.5.
