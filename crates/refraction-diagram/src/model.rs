@@ -99,6 +99,7 @@ impl Plane {
     /// parallel to N any plane through N would do; the one closest to the xy plane is used.
     #[must_use]
     pub fn containing(w: DVec3, n: DVec3) -> Self {
+        let (w, n) = (scaled(w), scaled(n));
         let normal = n
             .cross(w)
             .try_normalize()
@@ -320,7 +321,7 @@ impl ExplorerState {
         let Some(direction) = direction.try_normalize() else {
             return;
         };
-        let lifted = |v: DVec3| self.plane.lift(direction) * v.length();
+        let lifted = |v: DVec3| self.plane.lift(direction) * length(v);
         let (w, n) = match handle {
             HandleId::W => (lifted(self.w), self.n),
             HandleId::N => (self.w, lifted(self.n)),
@@ -338,7 +339,7 @@ impl ExplorerState {
             HandleId::N => self.n,
             HandleId::MuI | HandleId::MuT => return DVec2::X,
         };
-        self.plane.project(v).normalize_or(DVec2::X)
+        self.plane.project(scaled(v)).normalize_or(DVec2::X)
     }
 
     /// Turns W or N counter-clockwise in the diagram by `degrees`.
@@ -374,6 +375,29 @@ impl ExplorerState {
         let toward_source = DVec2::from_angle(angle).rotate(normal);
         let sign = self.convention.travel_sign::<f64>();
         self.point(HandleId::W, -toward_source * sign);
+    }
+}
+
+/// `v` divided by its largest component's magnitude (`v` itself when that is 0 or not finite):
+/// the same direction with components in [−1, 1], so that squaring them for a cross product or
+/// a length neither overflows (|v| above about 1e154) nor underflows (below about 1e−154), as
+/// the kernel does before it normalises.
+fn scaled(v: DVec3) -> DVec3 {
+    let largest = v.abs().max_element();
+    if largest > 0.0 && largest.is_finite() {
+        v / largest
+    } else {
+        v
+    }
+}
+
+/// |v| without overflow or underflow in the squares (see [`scaled`]).
+fn length(v: DVec3) -> f64 {
+    let largest = v.abs().max_element();
+    if largest > 0.0 && largest.is_finite() {
+        (v / largest).length() * largest
+    } else {
+        v.length()
     }
 }
 
@@ -461,5 +485,23 @@ mod tests {
             turned.refraction().is_tir()
         };
         assert_ne!(tir_after(1.0), tir_after(-1.0));
+    }
+
+    #[test]
+    fn huge_and_tiny_vectors_are_drawn_in_their_own_direction() {
+        for scale in [1e300, 1e-300, 1e160, 1e-160] {
+            let w = DVec3::new(0.6, -0.8, 0.0) * scale;
+            let state = ExplorerState::new(w, DVec3::Y * scale, 1.0, 1.5, Convention::AlongRay)
+                .expect("a valid state");
+            let drawn = state.direction(HandleId::W);
+            assert!(
+                (drawn - DVec2::new(0.6, -0.8)).length() < 1e-12,
+                "{scale:e}: {drawn}"
+            );
+            assert!(
+                (state.direction(HandleId::N) - DVec2::Y).length() < 1e-12,
+                "{scale:e}"
+            );
+        }
     }
 }

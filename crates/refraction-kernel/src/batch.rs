@@ -8,7 +8,7 @@
 //! multiplied by a mask), so no NaN reaches its output or its neighbours.
 
 use super::real::{Real, Vector3};
-use super::stable::{discriminant, facing, normal_weight};
+use super::stable::{cos_incidence, discriminant, facing, tangential, transmitted_direction};
 
 /// Rays as structure-of-arrays: unit travel directions, unit normals (either side), μ = μ_i/μ_t.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -129,12 +129,13 @@ impl<S: Real> Transmissions<S> {
 #[inline(always)]
 fn lane<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> (S::Vec3, bool) {
     let n = facing::<S>(d, n);
-    let cos_i = -d.dot(n);
+    let cos_i = cos_incidence::<S>(d, n);
     let one_minus_mu2 = (S::ONE - mu) * (S::ONE + mu);
-    let k = discriminant(d, n, cos_i, mu, one_minus_mu2);
+    let along = tangential::<S>(d, n, cos_i);
+    let k = discriminant(along, cos_i, mu, one_minus_mu2);
     let tir = k < S::ZERO;
     let cos_t = k.max(S::ZERO).sqrt();
-    let t = d * mu + n * normal_weight(mu, cos_i, cos_t, one_minus_mu2);
+    let t = transmitted_direction(along, n, mu, cos_t);
     let t = if mu == S::ONE { d } else { t };
     let zero = S::Vec3::new(S::ZERO, S::ZERO, S::ZERO);
     (

@@ -7,24 +7,33 @@
 //! - equal or near-equal indices at grazing incidence: 1 − cos²θi is fine, but μ² − 1 and
 //!   μ²cos²θi cancel. Here k = (μ·cosθi)² + (1 − μ)(1 + μ), where 1 − μ is exact (Sterbenz);
 //! - large μ near normal incidence: 1 − cos²θi loses all its digits and μ² amplifies the loss.
-//!   When cos²θi > ½, sin²θi comes from |n × d|² instead, and k = 1 − μ²·sin²θi.
+//!   When cos²θi > ½, sin²θi comes from the tangential part |d + cosθi·n|² instead, and
+//!   k = 1 − μ²·sin²θi.
 //!
-//! The b root μ·cosθi − cosθt cancels as μ → 1; multiplied by its conjugate it becomes
-//! b = −(1 − μ)(1 + μ)/(μ·cosθi + cosθt), which has no cancellation and is 0 exactly at μ = 1.
+//! T itself is built as μ·(d + cosθi·n) − cosθt·n, the same vector as the source's μ·d + b·n
+//! (b = μ·cosθi − cosθt, eq. 20–22 of Section 2, see `docs/derivation.md`) but without its two
+//! terms of size μ cancelling when μ is large: T is unit length up to a few roundings for every
+//! accepted μ (up to 1/ε² either way), where μ·d + b·n would return a zero or a long vector
+//! from μ ≈ 1/ε. The weight b that the full answer reports is computed in its cancellation-free
+//! form −(1 − μ)(1 + μ)/(μ·cosθi + cosθt), which is 0 exactly at μ = 1.
 //! No fused multiply-add is needed for the error bound: where the sum in the grazing branch
 //! cancels (μ > 1 near the critical angle) the problem's own condition number dominates, and
 //! `f32::mul_add` without the `fma` target feature is a slow library call.
 //!
-//! Error bound (checked against a double-double oracle in `tests/kernel_accuracy.rs`): for unit
-//! `d`, `n` the angle between the returned T and the exact one is at most 32·ε·κ with κ from
-//! [`super::condition_number`]; T is exact when μ = 1.
+//! Error bound (checked against a double-double oracle in the `refraction-bench` crate's
+//! `tests/kernel_accuracy.rs`): for unit `d`, `n` the angle between the returned T and the exact
+//! one is at most 32·ε·κ with κ from [`super::condition_number`]; |T| is within a few ε of 1;
+//! T is exact when μ = 1. At grazing incidence, where |d·n| is below a few ε, which side of the
+//! surface `n` lies on is decided by the sign of the rounded d·n: the problem is ill-posed there
+//! (a rounding of the input moves the ray to the other side), so T may come out on either side.
 
 use super::real::{Real, Vector3};
 
 /// The transmitted ray of [`refract_facing`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Transmitted<S: Real> {
-    /// The refracted direction of travel T = μ·d + b·n (unit length up to rounding).
+    /// The refracted direction of travel T = μ·d + b·n, built as μ·(d + cosθi·n) − cosθt·n
+    /// (unit length up to a few roundings).
     pub t: S::Vec3,
     /// cosθt = √k ≥ 0.
     pub cos_t: S,
@@ -44,22 +53,48 @@ pub struct Facing<S: Real> {
     pub transmitted: Option<Transmitted<S>>,
 }
 
-/// k = 1 − μ²(1 − cos²θi) without cancellation: from |n × d|² near normal incidence, from
-/// (μ·cosθi)² + (1 − μ)(1 + μ) otherwise. Shared with the batch kernel so both round alike.
+/// cosθi = −d·n for a facing unit normal, kept within [0, 1]: rounding can take the dot product
+/// of two unit vectors a little past ±1, and a cosine outside [0, 1] would give NaN angles.
 #[inline(always)]
-pub(crate) fn discriminant<S: Real>(
-    d: S::Vec3,
-    n: S::Vec3,
-    cos_i: S,
-    mu: S,
-    one_minus_mu2: S,
-) -> S {
+pub(crate) fn cos_incidence<S: Real>(d: S::Vec3, n: S::Vec3) -> S {
+    (-d.dot(n)).max(S::ZERO).min(S::ONE)
+}
+
+/// The part of `d` along the surface, d + cosθi·n (of length sinθi), from which T =
+/// μ·(d + cosθi·n) − cosθt·n is built. Large μ multiplies its errors, so it is made orthogonal
+/// to `n` once more: after d + cosθi·n its component along `n` is a few ε (the rounding of
+/// cosθi), after the second projection a few ε·sinθi, which μ·sinθi ≤ 1 keeps below a few ε
+/// in T. Its error along the surface (a few ε) is the problem's own: κ grows like μ.
+#[inline(always)]
+pub(crate) fn tangential<S: Real>(d: S::Vec3, n: S::Vec3, cos_i: S) -> S::Vec3 {
+    let along = d + n * cos_i;
+    along - n * along.dot(n)
+}
+
+/// k = 1 − μ²(1 − cos²θi) without cancellation: near normal incidence from μ²|d + cosθi·n|²
+/// (the same tangential part T is built from, so that |T|² = μ²|d + cosθi·n|² + k = 1 up to a
+/// few roundings however large μ is), otherwise from (μ·cosθi)² + (1 − μ)(1 + μ). Shared with
+/// the batch kernel so both round alike.
+#[inline(always)]
+pub(crate) fn discriminant<S: Real>(along: S::Vec3, cos_i: S, mu: S, one_minus_mu2: S) -> S {
     if cos_i * cos_i > S::HALF {
-        S::ONE - mu * mu * n.cross(d).length_squared()
+        S::ONE - mu * mu * along.length_squared()
     } else {
         let mc = mu * cos_i;
         mc * mc + one_minus_mu2
     }
+}
+
+/// T = μ·(d + cosθi·n) − cosθt·n from the tangential part: unit length up to a few roundings
+/// for every accepted μ.
+#[inline(always)]
+pub(crate) fn transmitted_direction<S: Real>(
+    along: S::Vec3,
+    n: S::Vec3,
+    mu: S,
+    cos_t: S,
+) -> S::Vec3 {
+    along * mu - n * cos_t
 }
 
 /// b = μ·cosθi − cosθt in its cancellation-free form −(1 − μ²)/(μ·cosθi + cosθt).
@@ -75,7 +110,7 @@ pub(crate) fn normal_weight<S: Real>(mu: S, cos_i: S, cos_t: S, one_minus_mu2: S
 #[inline]
 #[must_use]
 pub fn refract_facing<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Facing<S> {
-    let cos_i = -d.dot(n);
+    let cos_i = cos_incidence::<S>(d, n);
     if mu == S::ONE {
         return Facing {
             cos_i,
@@ -88,14 +123,14 @@ pub fn refract_facing<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Facing<S> {
         };
     }
     let one_minus_mu2 = (S::ONE - mu) * (S::ONE + mu);
-    let k = discriminant(d, n, cos_i, mu, one_minus_mu2);
+    let along = tangential::<S>(d, n, cos_i);
+    let k = discriminant(along, cos_i, mu, one_minus_mu2);
     let transmitted = (k >= S::ZERO).then(|| {
         let cos_t = k.sqrt();
-        let b = normal_weight(mu, cos_i, cos_t, one_minus_mu2);
         Transmitted {
-            t: d * mu + n * b,
+            t: transmitted_direction(along, n, mu, cos_t),
             cos_t,
-            b,
+            b: normal_weight(mu, cos_i, cos_t, one_minus_mu2),
         }
     });
     Facing {
