@@ -312,6 +312,8 @@ impl ExplorerState {
 
     /// Turns N around (an outward normal where the ray leaves the medium: the classic bug).
     pub fn flip_normal(&mut self) {
+        // −N is as valid as N (the kernel checks finiteness and length, which a sign keeps),
+        // so the kernel cannot refuse this.
         let _ = self.update(self.w, -self.n, self.mu_i, self.mu_t, self.convention);
     }
 
@@ -327,6 +329,9 @@ impl ExplorerState {
             HandleId::N => (self.w, lifted(self.n)),
             HandleId::MuI | HandleId::MuT => return,
         };
+        // A turned vector the kernel refuses (one so long or short that its length overflows
+        // or vanishes on the way) leaves the last good state, as every refused edit does: the
+        // handle does not follow the pointer there.
         let _ = self.update(w, n, self.mu_i, self.mu_t, self.convention);
     }
 
