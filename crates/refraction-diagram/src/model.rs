@@ -389,7 +389,8 @@ impl ExplorerState {
 /// the kernel does before it normalises.
 fn scaled(v: DVec3) -> DVec3 {
     let largest = v.abs().max_element();
-    if largest > 0.0 && largest.is_finite() {
+    // Only outside a safe range, so that ordinary vectors keep their bits.
+    if largest.is_finite() && !(1e-100..=1e100).contains(&largest) && largest > 0.0 {
         v / largest
     } else {
         v
