@@ -383,28 +383,28 @@ impl ExplorerState {
     }
 }
 
-/// `v` divided by its largest component's magnitude (`v` itself when that is 0 or not finite):
-/// the same direction with components in [−1, 1], so that squaring them for a cross product or
-/// a length neither overflows (|v| above about 1e154) nor underflows (below about 1e−154), as
-/// the kernel does before it normalises.
-fn scaled(v: DVec3) -> DVec3 {
+/// What `v` is divided by before its components are squared (for a cross product or a
+/// length): its largest component's magnitude when that lies outside 1e−100..1e100, where the
+/// squares would overflow or underflow (|v| above about 1e154 or below about 1e−154), else 1,
+/// so that ordinary vectors keep their bits. The kernel scales the same way before it
+/// normalises.
+fn scale_of(v: DVec3) -> f64 {
     let largest = v.abs().max_element();
-    // Only outside a safe range, so that ordinary vectors keep their bits.
-    if largest.is_finite() && !(1e-100..=1e100).contains(&largest) && largest > 0.0 {
-        v / largest
+    if largest.is_finite() && largest > 0.0 && !(1e-100..=1e100).contains(&largest) {
+        largest
     } else {
-        v
+        1.0
     }
 }
 
-/// |v| without overflow or underflow in the squares (see [`scaled`]).
+/// `v` in the same direction with components safe to square (see [`scale_of`]).
+fn scaled(v: DVec3) -> DVec3 {
+    v / scale_of(v)
+}
+
+/// |v| without overflow or underflow in the squares (see [`scale_of`]).
 fn length(v: DVec3) -> f64 {
-    let largest = v.abs().max_element();
-    if largest > 0.0 && largest.is_finite() {
-        (v / largest).length() * largest
-    } else {
-        v.length()
-    }
+    scaled(v).length() * scale_of(v)
 }
 
 #[cfg(test)]
