@@ -126,7 +126,16 @@ fn temporary_in(folder: &Path) -> io::Result<tempfile::NamedTempFile> {
     builder.prefix(".refraction-").suffix(".tmp");
     #[cfg(unix)]
     builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
-    builder.tempfile_in(folder)
+    builder.tempfile_in(folder).map_err(|e| {
+        // The temporary crate ends its message with ` at path "RANDOM NAME"`, which would only
+        // confuse: name the folder instead. (Its error keeps no other way to the OS's words.)
+        let text = e.to_string();
+        let why = text
+            .rfind(" at path ")
+            .map_or(text.as_str(), |i| &text[..i]);
+        let folder = folder.display();
+        io::Error::new(e.kind(), format!("no file can be made in {folder}: {why}"))
+    })
 }
 
 /// Writes `path` through a temporary file that `write` fills, renamed over it at the end. The

@@ -10,6 +10,7 @@
 //! The file format is described in the repository README (section *The file format*).
 
 mod bounds;
+mod capped;
 mod effects;
 mod embedded;
 mod format;
@@ -27,6 +28,7 @@ use std::fmt;
 use glam::DVec2;
 
 pub use bounds::Bounds;
+pub use capped::{MAX_SCENE_FILE_BYTES, read_capped};
 pub use effects::Effects;
 pub use embedded::{DEFAULT_SCENE, SceneInfo, catalogue};
 pub use format::{LoadError, Position};
