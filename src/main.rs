@@ -1,5 +1,9 @@
 //! The `refraction-explorer` command: the explorer window by default, subcommands for scripts.
 
+// `println!` and `eprintln!` panic when a stream cannot be written: every write goes through
+// `commands::output` and its error sets the exit status.
+#![deny(clippy::print_stdout, clippy::print_stderr)]
+
 mod commands;
 
 use std::path::PathBuf;
@@ -48,7 +52,8 @@ enum Command {
         /// Print one JSON document instead of the table.
         #[arg(long)]
         json: bool,
-        /// Also draw error against time per variant (log scales) into this PNG file.
+        /// Also draw error against time per variant (log scales) into this PNG file (checked
+        /// before the measurement starts).
         #[arg(long, value_name = "FILE.png")]
         plot: Option<PathBuf>,
     },
@@ -73,7 +78,7 @@ enum Command {
         /// A scene to trace and draw instead of the single interface: a built-in scene's name
         /// (see `trace --list`) or the path of a scene file (TOML).
         scene: Option<String>,
-        /// The PNG file to write (replaced atomically).
+        /// The PNG file to write (replaced atomically), or - for standard output.
         #[arg(long, value_name = "FILE.png")]
         out: PathBuf,
         /// Width in pixels.
@@ -89,8 +94,35 @@ enum Command {
     },
 }
 
+/// The parsed command line, or the exit status after clap's help, version or usage error was
+/// printed (2 if even that could not be written).
+fn parse() -> Result<Cli, ExitCode> {
+    Cli::try_parse().map_err(|e| match e.print() {
+        Ok(()) => ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2)),
+        Err(_) => ExitCode::from(2),
+    })
+}
+
+/// The name of a subcommand whose product is its stdout, which must not be closed.
+fn writes_stdout(command: &Command) -> Option<&'static str> {
+    match command {
+        Command::Solve => Some("solve"),
+        Command::Check { .. } => Some("check"),
+        Command::Bench { .. } => Some("bench"),
+        Command::Trace { .. } => Some("trace"),
+        Command::Render { .. } => None,
+    }
+}
+
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match parse() {
+        Ok(cli) => cli,
+        Err(status) => return status,
+    };
+    let refused = cli.command.as_ref().and_then(writes_stdout);
+    if let Some(status) = refused.and_then(commands::refuse_closed_stdout) {
+        return status;
+    }
     match cli.command {
         Some(Command::Solve) => commands::lines::solve(),
         Some(Command::Check { file }) => commands::lines::check(file.as_deref()),

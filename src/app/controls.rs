@@ -184,9 +184,13 @@ impl Controls {
                 ..overlay.clone()
             };
             self.export_status = Some(
-                refraction_render::export(state, &overlay, self.export_size, &path)
-                    .map(|()| format!("wrote {}", path.display()))
-                    .map_err(|e| e.to_string()),
+                refraction_render::format::ImageFormat::for_path(&path)
+                    .map_err(|e| e.to_string())
+                    .and_then(|_| {
+                        refraction_render::export(state, &overlay, self.export_size, &path)
+                            .map_err(|e| e.to_string())
+                    })
+                    .map(|()| format!("wrote {}", path.display())),
             );
         }
         status(ui, self.export_status.as_ref());

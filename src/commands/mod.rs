@@ -1,26 +1,50 @@
 //! The subcommands' bodies: each reads its input, calls the library and turns the outcome into
 //! output and an exit status. A failure prints one line naming the command and exits non-zero.
+//! Nothing here prints with `println!` or `eprintln!`, which panic when the stream cannot be
+//! written: every write goes through [`output`] and a failed one sets the exit status.
 
 pub mod bench;
 pub mod lines;
+pub mod output;
 pub mod render;
 pub mod trace;
 
 use std::io::ErrorKind;
 use std::process::ExitCode;
 
-/// Prints `refraction-explorer COMMAND: MESSAGE` on stderr and returns exit status 2.
+/// The exit status when stdout is a closed pipe (`| head`): the output was cut short, so not
+/// 0, and no message (the reader chose to stop). 141 is what a shell reports for a program
+/// killed by SIGPIPE, as `cat` or `grep` would be.
+pub const CLOSED_PIPE: u8 = 141;
+
+/// Prints `refraction-explorer COMMAND: MESSAGE` on stderr, with characters that would act on
+/// a terminal escaped (see [`output::printable`]), and returns exit status 2.
 pub fn fail(command: &str, message: &dyn std::fmt::Display) -> ExitCode {
     let space = if command.is_empty() { "" } else { " " };
-    eprintln!("refraction-explorer{space}{command}: {message}");
+    let line = format!("refraction-explorer{space}{command}: {message}");
+    // The exit status says it failed even when stderr cannot say why.
+    let _ = output::to_stderr(&output::printable(&line));
     ExitCode::from(2)
 }
 
-/// The exit status for an output error: a closed pipe (`| head`) is not a failure.
+/// The exit status for a failed write to stdout: [`CLOSED_PIPE`] quietly for a closed pipe,
+/// otherwise the error on stderr and status 2.
 pub fn output_error(command: &str, error: &std::io::Error) -> ExitCode {
     if error.kind() == ErrorKind::BrokenPipe {
-        ExitCode::SUCCESS
+        ExitCode::from(CLOSED_PIPE)
     } else {
-        fail(command, error)
+        fail(command, &format!("cannot write the output: {error}"))
     }
+}
+
+/// Refuses to run `command`, whose product is its stdout, when stdout was closed (`>&-`):
+/// everything written would be lost.
+pub fn refuse_closed_stdout(command: &str) -> Option<ExitCode> {
+    output::stdout_closed().then(|| {
+        fail(
+            command,
+            &"standard output is closed, so the output would be lost: redirect it to a file, \
+              or to /dev/null to discard it",
+        )
+    })
 }

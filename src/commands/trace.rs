@@ -5,20 +5,25 @@ use std::process::ExitCode;
 
 use refraction_scene::{Report, Scene, catalogue};
 
+use super::output::{printable, to_stderr};
 use super::output_error;
 
-/// Runs `trace`: the scene's summary or JSON on stdout, or the load error on stderr.
+/// Runs `trace`: the scene's summary or JSON on stdout, or the load error on stderr. Titles and
+/// names from a scene file are printed with control characters escaped (in JSON, serde
+/// escapes them).
 pub fn run(scene: &str, json: bool, list: bool) -> ExitCode {
     let mut out = io::stdout().lock();
     let written = if list {
         catalogue()
             .iter()
-            .try_for_each(|info| writeln!(out, "{:<20}{}", info.name, info.title))
+            .try_for_each(|info| writeln!(out, "{:<20}{}", info.name, printable(&info.title)))
     } else {
         let scene = match Scene::load(scene) {
             Ok(scene) => scene,
             Err(e) => {
-                eprintln!("refraction-explorer trace: {e}");
+                let message = format!("refraction-explorer trace: {e}");
+                // Exit status 1 says it failed even when stderr cannot say why.
+                let _ = to_stderr(&printable(&message));
                 return ExitCode::from(1);
             }
         };
@@ -31,11 +36,13 @@ pub fn run(scene: &str, json: bool, list: bool) -> ExitCode {
             writeln!(
                 out,
                 "{} ({})\n{}",
-                scene.title(),
-                scene.name(),
+                printable(scene.title()),
+                printable(scene.name()),
                 traced.counts
             )
         }
     };
-    written.map_or_else(|e| output_error("trace", &e), |()| ExitCode::SUCCESS)
+    written
+        .and_then(|()| out.flush())
+        .map_or_else(|e| output_error("trace", &e), |()| ExitCode::SUCCESS)
 }

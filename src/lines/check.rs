@@ -1,9 +1,10 @@
 //! "Check my T": which of the four candidates a student's refracted ray is, and the sign choice
 //! or convention mix-up that produces it, in words a student understands.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
+use crate::lines::fields;
 use crate::lines::solve::{Precision, Request};
 use refraction_kernel::{Incidence, Real, Rejection, Vector3, refract};
 
@@ -329,14 +330,25 @@ struct Answer<'a> {
 /// # Errors
 /// Malformed JSON, or a missing or ill-typed field; the message names it.
 pub fn parse_line(line: &str) -> Result<(Request, [f64; 3]), String> {
-    let value: Value =
-        serde_json::from_str(line).map_err(|e| crate::lines::solve::json_error(&e))?;
-    let request = Request::from_value(&value)?;
-    let yours = value
-        .get("t_yours")
+    let fields = fields::read::<Given>(line)?;
+    let request = Request::from_fields(&fields)?;
+    let yours = fields
+        .extra
+        .0
         .ok_or_else(|| "missing field `t_yours` (the T your code produced)".to_owned())
-        .and_then(vector_from_json)?;
+        .and_then(|value| vector_from_json(&value))?;
     Ok((request, yours))
+}
+
+/// `t_yours` as given, `null` included (`None` only when the field is absent). It is the one
+/// field read whole: [`vector_from_json`] needs the value.
+#[derive(Default)]
+struct Given(Option<Value>);
+
+impl<'de> Deserialize<'de> for Given {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        Value::deserialize(deserializer).map(|value| Self(Some(value)))
+    }
 }
 
 /// Answers one line of the `check` command: the `solve` fields plus `t_yours`.

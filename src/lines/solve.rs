@@ -5,11 +5,13 @@
 //! default, or `"f32"`). Other fields are ignored. A line that cannot be solved is answered with
 //! `{"line": K, "error": "..."}` and the run goes on.
 
-use std::io::{self, BufRead, Write};
+use std::io::{BufRead, Write};
 
 use serde::Serialize;
-use serde_json::{Map, Value};
+use serde::de::IgnoredAny;
+use serde_json::Value;
 
+use crate::lines::fields::{self, Field, Fields};
 use refraction_kernel::{Convention, Incidence, Real, Refraction, Vector3, refract};
 
 /// The floating-point precision a problem is solved in.
@@ -50,42 +52,33 @@ pub struct Request {
     pub precision: Precision,
 }
 
-fn kind_of(value: &Value) -> &'static str {
-    match value {
-        Value::Null => "null",
-        Value::Bool(_) => "a boolean",
-        Value::Number(_) => "a number",
-        Value::String(_) => "a string",
-        Value::Array(_) => "an array",
-        Value::Object(_) => "an object",
+fn missing(name: &str) -> String {
+    format!("missing field `{name}`")
+}
+
+fn number(field: &Field, name: &str) -> Result<f64, String> {
+    match field {
+        Field::Number(x) => Ok(*x),
+        Field::Absent => Err(missing(name)),
+        other => Err(format!("`{name}` must be a number, got {}", other.kind())),
     }
 }
 
-fn field<'a>(object: &'a Map<String, Value>, name: &str) -> Result<&'a Value, String> {
-    object
-        .get(name)
-        .ok_or_else(|| format!("missing field `{name}`"))
-}
-
-fn number(value: &Value, name: &str) -> Result<f64, String> {
-    value
-        .as_f64()
-        .ok_or_else(|| format!("`{name}` must be a number, got {}", kind_of(value)))
-}
-
-fn vector(object: &Map<String, Value>, name: &str) -> Result<[f64; 3], String> {
-    let value = field(object, name)?;
-    let items = value.as_array().ok_or_else(|| {
-        format!(
-            "`{name}` must be an array of 3 numbers, got {}",
-            kind_of(value)
-        )
-    })?;
-    if items.len() != 3 {
+fn vector(field: &Field, name: &str) -> Result<[f64; 3], String> {
+    let (items, len) = match field {
+        Field::Array { items, len } => (items, *len),
+        Field::Absent => return Err(missing(name)),
+        other => {
+            return Err(format!(
+                "`{name}` must be an array of 3 numbers, got {}",
+                other.kind()
+            ));
+        }
+    };
+    if len != 3 {
         return Err(format!(
-            "`{name}` must be an array of exactly 3 numbers, got {} element{}",
-            items.len(),
-            if items.len() == 1 { "" } else { "s" }
+            "`{name}` must be an array of exactly 3 numbers, got {len} element{}",
+            if len == 1 { "" } else { "s" }
         ));
     }
     let mut out = [0.0; 3];
@@ -95,39 +88,28 @@ fn vector(object: &Map<String, Value>, name: &str) -> Result<[f64; 3], String> {
     Ok(out)
 }
 
-fn optional_name<'a>(
-    object: &'a Map<String, Value>,
-    name: &str,
-) -> Result<Option<&'a str>, String> {
-    match object.get(name) {
-        None | Some(Value::Null) => Ok(None),
-        Some(Value::String(s)) => Ok(Some(s)),
-        Some(other) => Err(format!("`{name}` must be a string, got {}", kind_of(other))),
+fn optional_name<'a>(field: &'a Field, name: &str) -> Result<Option<&'a str>, String> {
+    match field {
+        Field::Absent | Field::Null => Ok(None),
+        Field::Text(s) => Ok(Some(s)),
+        other => Err(format!("`{name}` must be a string, got {}", other.kind())),
     }
-}
-
-/// Strips serde_json's " at line 1 column C" (always line 1 here) in favour of the column alone.
-pub(crate) fn json_error(error: &serde_json::Error) -> String {
-    let text = error.to_string();
-    let message = text
-        .rfind(" at line ")
-        .map_or(text.as_str(), |i| &text[..i]);
-    format!("malformed JSON at column {}: {message}", error.column())
 }
 
 impl Request {
     /// Reads a request from a parsed JSON value.
     ///
     /// # Errors
-    /// A message naming the field that is missing, ill-typed or unknown.
+    /// A message naming the field that is missing or ill-typed.
     pub fn from_value(value: &Value) -> Result<Self, String> {
-        let object = value.as_object().ok_or_else(|| {
-            format!(
-                "expected a JSON object with fields w, n, mu_i, mu_t; got {}",
-                kind_of(value)
-            )
-        })?;
-        let convention = match optional_name(object, "convention")? {
+        Self::from_fields(&fields::from_value::<IgnoredAny>(value)?)
+    }
+
+    /// The request in fields read from a line, checked in a fixed order (convention,
+    /// precision, w, n, mu_i, mu_t) so that a line with several problems always names the same
+    /// one.
+    pub(crate) fn from_fields<X>(fields: &Fields<X>) -> Result<Self, String> {
+        let convention = match optional_name(&fields.convention, "convention")? {
             None => Convention::default(),
             Some(name) => Convention::from_name(name).ok_or_else(|| {
                 format!(
@@ -136,7 +118,7 @@ impl Request {
                 )
             })?,
         };
-        let precision = match optional_name(object, "precision")? {
+        let precision = match optional_name(&fields.precision, "precision")? {
             None => Precision::default(),
             Some("f64") => Precision::F64,
             Some("f32") => Precision::F32,
@@ -147,22 +129,23 @@ impl Request {
             }
         };
         Ok(Self {
-            w: vector(object, "w")?,
-            n: vector(object, "n")?,
-            mu_i: number(field(object, "mu_i")?, "mu_i")?,
-            mu_t: number(field(object, "mu_t")?, "mu_t")?,
+            w: vector(&fields.w, "w")?,
+            n: vector(&fields.n, "n")?,
+            mu_i: number(&fields.mu_i, "mu_i")?,
+            mu_t: number(&fields.mu_t, "mu_t")?,
             convention,
             precision,
         })
     }
 
-    /// Parses one JSON line.
+    /// Parses one JSON line (or a whole state file: JSON may span lines). Unknown fields are
+    /// skipped without being built.
     ///
     /// # Errors
-    /// Malformed JSON (with its column), or a message from [`Request::from_value`].
+    /// Malformed JSON (with its column, and its line when there are several), or a message
+    /// naming the field that is missing or ill-typed.
     pub fn parse(line: &str) -> Result<Self, String> {
-        let value: Value = serde_json::from_str(line).map_err(|e| json_error(&e))?;
-        Self::from_value(&value)
+        Self::from_fields(&fields::read::<IgnoredAny>(line)?)
     }
 
     /// The request as one `solve` input line. Numbers are written in their shortest form that
@@ -290,7 +273,7 @@ pub fn answer(line: &str) -> Result<String, String> {
 ///
 /// # Errors
 /// Reading `input` or writing `output` failed.
-pub fn run(input: impl BufRead, output: impl Write) -> io::Result<bool> {
+pub fn run(input: impl BufRead, output: impl Write) -> Result<bool, crate::lines::LinesError> {
     crate::lines::answer_lines(input, output, answer)
 }
 

@@ -15,7 +15,9 @@ use refraction_diagram::ExplorerState;
 /// Malformed JSON, a missing or ill-typed field, or input the kernel refuses; the message names
 /// what was wrong.
 pub fn parse(text: &str) -> Result<ExplorerState, String> {
-    let request = Request::parse(text.trim())?;
+    // Not trimmed: JSON allows the white space around it, and a leading blank line would shift
+    // the line numbers of malformed JSON.
+    let request = Request::parse(text)?;
     ExplorerState::new(
         DVec3::from_array(request.w),
         DVec3::from_array(request.n),
@@ -26,12 +28,16 @@ pub fn parse(text: &str) -> Result<ExplorerState, String> {
     .map_err(|e| e.to_string())
 }
 
-/// Reads a state from a JSON file.
+/// The largest state file [`load`] reads: 1 MiB (a state is one line of about 150 bytes).
+pub const MAX_STATE_FILE_BYTES: u64 = 1 << 20;
+
+/// Reads a state from a JSON file of at most [`MAX_STATE_FILE_BYTES`].
 ///
 /// # Errors
-/// The file cannot be read, or [`parse`] refuses it; the message names the file.
+/// The file cannot be read or is too long, or [`parse`] refuses it; the message names the file
+/// (and malformed JSON its line and column).
 pub fn load(path: &Path) -> Result<ExplorerState, String> {
-    let text = std::fs::read_to_string(path)
+    let text = refraction_scene::read_capped(path, MAX_STATE_FILE_BYTES, "a state file")
         .map_err(|e| format!("cannot read state file {}: {e}", path.display()))?;
     parse(&text).map_err(|e| format!("state file {}: {e}", path.display()))
 }
@@ -83,6 +89,32 @@ mod tests {
         assert!(err.starts_with("cannot read state file /nonexistent/state.json"));
         let err = save(&state, Path::new("/nonexistent/state.json")).unwrap_err();
         assert!(err.contains("/nonexistent/state.json"), "{err}");
+    }
+
+    #[test]
+    fn a_multi_line_file_names_line_and_column_and_a_huge_one_is_refused() {
+        let folder = std::env::temp_dir().join(format!("state-file-lines-{}", std::process::id()));
+        std::fs::create_dir_all(&folder).unwrap();
+        let path = folder.join("state.json");
+        std::fs::write(
+            &path,
+            "\n{\n  \"w\": [0.6, -0.8, 0],\n  \"n\": [0, 1 0],\n  \"mu_i\": 1, \"mu_t\": 1.5\n}\n",
+        )
+        .unwrap();
+        let err = load(&path).unwrap_err();
+        assert!(
+            err.contains("state.json: malformed JSON at line 4, column 14"),
+            "{err}"
+        );
+        std::fs::write(&path, " ".repeat(2 << 20)).unwrap();
+        let err = load(&path).unwrap_err();
+        assert!(
+            err.contains("state.json") && err.contains("larger than 1 MiB"),
+            "{err}"
+        );
+        let err = load(&folder).unwrap_err();
+        assert!(err.contains(&folder.display().to_string()), "{err}");
+        std::fs::remove_dir_all(&folder).unwrap();
     }
 
     #[test]

@@ -2,6 +2,7 @@
 //! labels in egui's own font ([`text`]), written atomically.
 
 pub mod atomic;
+pub mod format;
 pub mod text;
 
 use std::path::Path;
@@ -136,6 +137,20 @@ fn draw(pixmap: &mut Pixmap, face: &Typeface, primitive: &Primitive) {
     }
 }
 
+/// Checks a width and height against [`SIZE_LIMITS`], so that a command can refuse a bad size
+/// before it traces or draws anything.
+///
+/// # Errors
+/// [`RenderError::BadSize`] when either is outside the limits.
+pub fn check_size(width: u32, height: u32) -> Result<(), RenderError> {
+    let (low, high) = SIZE_LIMITS;
+    if (low..=high).contains(&width) && (low..=high).contains(&height) {
+        Ok(())
+    } else {
+        Err(RenderError::BadSize { width, height })
+    }
+}
+
 /// A `width` × `height` pixmap with `primitives` drawn on it in order.
 ///
 /// # Errors
@@ -145,12 +160,8 @@ pub fn draw_primitives(
     height: u32,
     primitives: impl FnOnce(Vec2, &Typeface) -> Vec<Primitive>,
 ) -> Result<Pixmap, RenderError> {
-    let (low, high) = SIZE_LIMITS;
-    let bad_size = RenderError::BadSize { width, height };
-    if !(low..=high).contains(&width) || !(low..=high).contains(&height) {
-        return Err(bad_size);
-    }
-    let mut pixmap = Pixmap::new(width, height).ok_or(bad_size)?;
+    check_size(width, height)?;
+    let mut pixmap = Pixmap::new(width, height).ok_or(RenderError::BadSize { width, height })?;
     let face = Typeface::egui_default()?;
     for primitive in primitives(Vec2::new(width as f32, height as f32), &face) {
         draw(&mut pixmap, &face, &primitive);

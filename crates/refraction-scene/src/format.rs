@@ -579,23 +579,31 @@ impl Scene {
         Self::from_toml(text, &format!("{name} (built in)"), name)
     }
 
-    /// An embedded scene by name, or else a scene file by path.
+    /// An embedded scene by name, or else a scene file by path (at most
+    /// [`crate::MAX_SCENE_FILE_BYTES`] long).
     ///
     /// # Errors
-    /// The file cannot be read or fails to load.
+    /// The file cannot be read, is too long, or fails to load.
     pub fn load(name_or_path: &str) -> Result<Self, LoadError> {
         if embedded::text(name_or_path).is_some() {
             return Self::embedded(name_or_path);
         }
         let path = std::path::Path::new(name_or_path);
-        let text = std::fs::read_to_string(path).map_err(|e| LoadError {
-            file: name_or_path.to_owned(),
-            position: None,
-            message: format!(
-                "cannot read: {e} (expected a scene file or one of {})",
-                embedded::names().join(", ")
-            ),
-        })?;
+        let text =
+            crate::read_capped(path, crate::MAX_SCENE_FILE_BYTES, "a scene file").map_err(|e| {
+                LoadError {
+                    file: name_or_path.to_owned(),
+                    position: None,
+                    message: if e.kind() == std::io::ErrorKind::FileTooLarge {
+                        format!("cannot read: {e}")
+                    } else {
+                        format!(
+                            "cannot read: {e} (expected a scene file or one of {})",
+                            embedded::names().join(", ")
+                        )
+                    },
+                }
+            })?;
         let name = path.file_stem().map_or_else(
             || name_or_path.to_owned(),
             |s| s.to_string_lossy().into_owned(),

@@ -10,6 +10,7 @@
 //! The file format is described in the repository README (section *The file format*).
 
 mod bounds;
+mod capped;
 mod effects;
 mod embedded;
 mod format;
@@ -26,6 +27,7 @@ use glam::DVec2;
 
 pub use bounds::Bounds;
 pub use effects::{Effects, EffectsError};
+pub use capped::{MAX_SCENE_FILE_BYTES, read_capped};
 pub use embedded::{DEFAULT_SCENE, SceneInfo, catalogue};
 pub use format::{LoadError, Position};
 pub use fresnel::Fresnel;

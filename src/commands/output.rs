@@ -1,0 +1,90 @@
+//! Writing to stdout and stderr without panicking (`println!` and `eprintln!` panic when the
+//! stream cannot be written), and text from files made safe to print on a terminal.
+
+use std::borrow::Cow;
+use std::fmt::Write as _;
+use std::io::{self, Write};
+
+/// Whether `c` would act on a terminal rather than show: a control character (ESC, BEL, a
+/// newline, ...), or a bidirectional override that reorders the text after it.
+fn acts(c: char) -> bool {
+    c.is_control() || matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
+}
+
+/// `text` with every character that would act on a terminal escaped as Rust writes it
+/// (`\u{1b}`, `\n`, `\t`), so that a scene title, a medium name or a path from a file cannot
+/// move the cursor, ring the bell, recolour the terminal or break a one-line message.
+pub fn printable(text: &str) -> Cow<'_, str> {
+    if !text.chars().any(acts) {
+        return Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len() + 8);
+    for c in text.chars() {
+        if acts(c) {
+            // Writing into a String cannot fail.
+            let _ = write!(out, "{}", c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    Cow::Owned(out)
+}
+
+/// Writes `bytes` to stdout and flushes it.
+///
+/// # Errors
+/// Stdout cannot be written (full disk, closed pipe).
+pub fn to_stdout(bytes: &[u8]) -> io::Result<()> {
+    let mut out = io::stdout().lock();
+    out.write_all(bytes)?;
+    out.flush()
+}
+
+/// Writes `text` and a newline to stderr.
+///
+/// # Errors
+/// Stderr cannot be written.
+pub fn to_stderr(text: &str) -> io::Result<()> {
+    let mut err = io::stderr().lock();
+    err.write_all(text.as_bytes())?;
+    err.write_all(b"\n")?;
+    err.flush()
+}
+
+/// Whether stdout was closed when the program started (`>&-`). The Rust runtime opens
+/// `/dev/null` read-write in place of a closed standard descriptor, so a write to it would
+/// succeed and the output be lost; a shell's `>/dev/null` opens it write-only.
+#[cfg(unix)]
+pub fn stdout_closed() -> bool {
+    use rustix::fs::{FileType, OFlags};
+    use std::os::unix::fs::MetadataExt;
+    let stdout = io::stdout();
+    let read_write =
+        rustix::fs::fcntl_getfl(&stdout).is_ok_and(|flags| flags & OFlags::RWMODE == OFlags::RDWR);
+    let null = std::fs::metadata("/dev/null").map(|m| m.rdev());
+    read_write
+        && rustix::fs::fstat(&stdout).is_ok_and(|s| {
+            FileType::from_raw_mode(s.st_mode) == FileType::CharacterDevice
+                && null.is_ok_and(|rdev| rdev == s.st_rdev)
+        })
+}
+
+/// Whether stdout was closed when the program started: not detectable here.
+#[cfg(not(unix))]
+pub fn stdout_closed() -> bool {
+    false
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn control_characters_are_escaped_and_the_rest_kept() {
+        assert_eq!(printable("Prism — 60° (n = 1.5)"), "Prism — 60° (n = 1.5)");
+        assert_eq!(
+            printable("a\u{1b}[31mred\u{7}\nline\u{202e}"),
+            "a\\u{1b}[31mred\\u{7}\\nline\\u{202e}"
+        );
+    }
+}

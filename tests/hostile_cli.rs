@@ -1,0 +1,363 @@
+//! The commands under careless or hostile use: unwritable and closed streams, an over-long
+//! line, huge files, control characters from files, bad output paths found before the work.
+
+use std::fs::{self, File};
+use std::io::{BufRead, BufReader, Write};
+use std::os::unix::fs::FileTypeExt;
+use std::path::PathBuf;
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+const BIN: &str = env!("CARGO_BIN_EXE_refraction-explorer");
+const GOOD: &str = r#"{"w":[0.6,-0.8,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5}"#;
+/// The exit status of a closed pipe (see `commands::CLOSED_PIPE`).
+const CLOSED_PIPE: i32 = 141;
+
+fn folder(name: &str) -> PathBuf {
+    let folder = std::env::temp_dir().join(format!("hostile-cli-{}-{name}", std::process::id()));
+    fs::create_dir_all(&folder).unwrap();
+    folder
+}
+
+fn dev_full() -> Stdio {
+    Stdio::from(File::options().write(true).open("/dev/full").unwrap())
+}
+
+/// Runs the binary with `args` and `stdin`, stdout and stderr captured.
+fn run(args: &[&str], stdin: &str) -> Output {
+    let mut child = Command::new(BIN)
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut input = child.stdin.take().unwrap();
+    let text = stdin.to_owned();
+    let writer = std::thread::spawn(move || input.write_all(text.as_bytes()));
+    let output = child.wait_with_output().unwrap();
+    writer.join().unwrap().unwrap();
+    output
+}
+
+/// Runs `sh -c 'exec BIN ARGS >&-'`: the binary with stdout closed.
+fn with_stdout_closed(args: &str, stdin: &str) -> Output {
+    let mut child = Command::new("sh")
+        .arg("-c")
+        .arg(format!("exec '{BIN}' {args} >&-"))
+        .stdin(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut input = child.stdin.take().unwrap();
+    // The command may refuse to run before reading: a closed pipe here is expected.
+    let _ = input.write_all(stdin.as_bytes());
+    drop(input);
+    child.wait_with_output().unwrap()
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+#[test]
+fn solve_and_trace_refuse_a_closed_stdout_and_report_a_full_one() {
+    for (args, stdin) in [("solve", GOOD), ("trace --json", ""), ("check", "")] {
+        let output = with_stdout_closed(args, stdin);
+        assert_eq!(output.status.code(), Some(2), "{args}: {output:?}");
+        assert!(
+            stderr(&output).contains("standard output is closed"),
+            "{args}"
+        );
+    }
+    let lines = file_with_lines("full", 3);
+    let output = Command::new(BIN)
+        .arg("solve")
+        .stdin(Stdio::from(File::open(&lines).unwrap()))
+        .stdout(dev_full())
+        .stderr(Stdio::piped())
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    assert!(
+        stderr(&output).contains("No space left on device"),
+        "{output:?}"
+    );
+    let help = Command::new(BIN).arg("--help").stdout(dev_full()).status();
+    assert_eq!(help.unwrap().code(), Some(2));
+    fs::remove_dir_all(lines.parent().unwrap()).unwrap();
+}
+
+/// A file of `count` `check` lines, all of them wrong (T on the wrong side).
+fn file_with_lines(name: &str, count: usize) -> PathBuf {
+    let path = folder(name).join("lines.jsonl");
+    let line = r#"{"w":[0.6,-0.8,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5,"t_yours":[0.4,0.9165,0]}"#;
+    fs::write(&path, format!("{line}\n").repeat(count)).unwrap();
+    path
+}
+
+#[test]
+fn check_and_trace_with_stderr_full_exit_non_zero_without_panicking() {
+    let lines = file_with_lines("stderr-full", 2);
+    let check = Command::new(BIN)
+        .arg("check")
+        .arg(&lines)
+        .stdout(Stdio::null())
+        .stderr(dev_full())
+        .status()
+        .unwrap();
+    assert_eq!(check.code(), Some(2), "the summary could not be written");
+    let trace = Command::new(BIN)
+        .args(["trace", "no-such-scene"])
+        .stderr(dev_full())
+        .status()
+        .unwrap();
+    assert_eq!(trace.code(), Some(1));
+    fs::remove_dir_all(lines.parent().unwrap()).unwrap();
+}
+
+#[test]
+fn a_closed_pipe_after_some_output_is_not_success() {
+    let lines = file_with_lines("pipe", 20_000);
+    for command in ["check", "solve"] {
+        let mut child = Command::new(BIN)
+            .arg(command)
+            .stdin(Stdio::from(File::open(&lines).unwrap()))
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        // As `| head -1` does: read one line, then close the pipe.
+        let mut first = String::new();
+        BufReader::new(child.stdout.take().unwrap())
+            .read_line(&mut first)
+            .unwrap();
+        assert!(first.starts_with('{'), "{first}");
+        let output = child.wait_with_output().unwrap();
+        assert_eq!(output.status.code(), Some(CLOSED_PIPE), "{command}");
+        assert!(!stderr(&output).contains("panicked"), "{command}");
+    }
+    fs::remove_dir_all(lines.parent().unwrap()).unwrap();
+}
+
+#[test]
+fn check_of_a_directory_names_it() {
+    let folder = folder("directory");
+    let output = run(&["check", folder.to_str().unwrap()], "");
+    assert_eq!(output.status.code(), Some(2));
+    let message = stderr(&output);
+    assert!(
+        message.contains(&format!("cannot read {}", folder.display())),
+        "{message}"
+    );
+    fs::remove_dir_all(&folder).unwrap();
+}
+
+/// The peak resident memory of process `pid` in KiB (`VmHWM`).
+fn peak_memory_kib(pid: u32) -> u64 {
+    let status = fs::read_to_string(format!("/proc/{pid}/status")).unwrap();
+    let line = status.lines().find(|l| l.starts_with("VmHWM:")).unwrap();
+    line.split_whitespace().nth(1).unwrap().parse().unwrap()
+}
+
+#[test]
+fn an_over_long_line_is_answered_without_growing_memory_and_the_next_one_solved() {
+    let mut child = Command::new(BIN)
+        .arg("solve")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut input = child.stdin.take().unwrap();
+    let output = BufReader::new(child.stdout.take().unwrap());
+    let (lines, answers) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        for line in output.lines() {
+            // The test may have stopped listening: nothing to do then.
+            let _ = lines.send(line.unwrap());
+        }
+    });
+    // 64 MiB of an ignored array and no newline, as a generator that never ends would send.
+    input.write_all(&GOOD.as_bytes()[..GOOD.len() - 1]).unwrap();
+    input.write_all(br#","junk":["#).unwrap();
+    let chunk = "0,".repeat(1 << 19);
+    for _ in 0..64 {
+        input.write_all(chunk.as_bytes()).unwrap();
+    }
+    // The error is written as soon as the line passes the cap, before its end.
+    let first = answers
+        .recv_timeout(Duration::from_secs(30))
+        .expect("an answer while the line is still coming");
+    assert!(first.contains("line 1 is longer than 1 MiB"), "{first}");
+    let peak = peak_memory_kib(child.id());
+    input
+        .write_all(format!("0]}}\n{GOOD}\n").as_bytes())
+        .unwrap();
+    drop(input);
+    assert_eq!(child.wait().unwrap().code(), Some(1));
+    let rest: Vec<String> = answers.iter().collect();
+    assert!(
+        rest.len() == 1 && rest[0].starts_with(r#"{"t":"#),
+        "{rest:?}"
+    );
+    assert!(
+        peak < 48 * 1024,
+        "peak memory {peak} KiB after a 64 MiB line"
+    );
+}
+
+#[test]
+fn trace_escapes_control_characters_from_files() {
+    let folder = folder("escapes");
+    let scene = folder.join("evil.toml");
+    fs::write(
+        &scene,
+        "title = \"Evil\\u001B[31mred\\u0007\\nline\"\n[source]\nkind = \"ray\"\n\
+         origin = [0, 0]\ndirection = [1, 0]\n",
+    )
+    .unwrap();
+    let output = run(&["trace", scene.to_str().unwrap()], "");
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        text.starts_with("Evil\\u{1b}[31mred\\u{7}\\nline (evil)\n"),
+        "{text}"
+    );
+    let missing = folder.join("no\u{1b}[2Jfile.toml");
+    let output = run(&["trace", missing.to_str().unwrap()], "");
+    let message = stderr(&output);
+    assert!(!message.contains('\u{1b}') && message.contains("no\\u{1b}[2Jfile.toml"));
+    assert_eq!(message.lines().count(), 1, "{message}");
+    fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn huge_scene_and_state_files_are_refused_naming_them() {
+    let folder = folder("huge");
+    let scene = folder.join("huge.toml");
+    fs::write(&scene, format!("# {}\n", "x".repeat(2 << 20))).unwrap();
+    let output = run(&["trace", scene.to_str().unwrap()], "");
+    let message = stderr(&output);
+    assert!(
+        message.contains("huge.toml") && message.contains("larger than 1 MiB"),
+        "{message}"
+    );
+    let out = folder.join("x.png");
+    let output = run(
+        &[
+            "render",
+            "--out",
+            out.to_str().unwrap(),
+            "--state",
+            "/dev/zero",
+        ],
+        "",
+    );
+    let message = stderr(&output);
+    assert!(
+        message.contains("/dev/zero") && message.contains("larger than 1 MiB"),
+        "{message}"
+    );
+    fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn render_writes_to_stdout_with_a_dash_and_refuses_other_formats() {
+    let output = run(
+        &["render", "--out", "-", "--width", "320", "--height", "200"],
+        "",
+    );
+    assert!(output.status.success(), "{output:?}");
+    let png = tiny_skia::Pixmap::decode_png(&output.stdout).unwrap();
+    assert_eq!((png.width(), png.height()), (320, 200));
+    assert!(!PathBuf::from("-").exists());
+    let folder = folder("formats");
+    let jpg = folder.join("x.JPG");
+    let output = run(&["render", "--out", jpg.to_str().unwrap()], "");
+    assert_eq!(output.status.code(), Some(2));
+    assert!(
+        stderr(&output).contains("it writes PNG (.png)"),
+        "{output:?}"
+    );
+    assert_eq!(fs::read_dir(&folder).unwrap().count(), 0);
+    fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn render_checks_the_output_path_and_size_before_loading_or_tracing() {
+    let output = run(
+        &[
+            "render",
+            "no-such-scene",
+            "--out",
+            "/nonexistent-folder/x.png",
+        ],
+        "",
+    );
+    let message = stderr(&output);
+    assert!(
+        message.contains("/nonexistent-folder") && !message.contains("no-such-scene"),
+        "{message}"
+    );
+    let output = run(
+        &["render", "no-such-scene", "--out", "-", "--width", "9"],
+        "",
+    );
+    assert!(stderr(&output).contains("9×1080"), "{output:?}");
+}
+
+#[test]
+fn render_writes_into_a_fifo_and_refuses_a_link_to_a_file() {
+    let folder = folder("special");
+    let fifo = folder.join("pipe");
+    assert!(
+        Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap()
+            .success()
+    );
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || fs::read(fifo).unwrap())
+    };
+    let output = run(&["render", "--out", fifo.to_str().unwrap()], "");
+    assert!(output.status.success(), "{output:?}");
+    assert!(fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo());
+    assert!(tiny_skia::Pixmap::decode_png(&reader.join().unwrap()).is_ok());
+    let target = folder.join("target.png");
+    fs::write(&target, b"old").unwrap();
+    let link = folder.join("link.png");
+    std::os::unix::fs::symlink(&target, &link).unwrap();
+    let output = run(&["render", "--out", link.to_str().unwrap()], "");
+    assert_eq!(output.status.code(), Some(2));
+    assert!(stderr(&output).contains("symbolic link"), "{output:?}");
+    assert_eq!(fs::read(&target).unwrap(), b"old");
+    fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn bench_finds_a_bad_plot_path_before_measuring() {
+    let started = Instant::now();
+    let output = run(&["bench", "--plot", "/nonexistent-folder/plot.png"], "");
+    // The full measurement takes minutes in a test build; the check takes milliseconds.
+    assert!(started.elapsed() < Duration::from_secs(10), "{output:?}");
+    assert_eq!(output.status.code(), Some(2));
+    assert!(
+        stderr(&output).contains("/nonexistent-folder"),
+        "{output:?}"
+    );
+    let output = run(&["bench", "--plot", "plot.gif"], "");
+    assert!(stderr(&output).contains("`.gif`"), "{output:?}");
+}
+
+#[test]
+fn bench_to_a_full_disk_exits_non_zero_without_panicking() {
+    let output = Command::new(BIN)
+        .args(["bench", "--quick"])
+        .stdout(dev_full())
+        .stderr(Stdio::piped())
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2), "{output:?}");
+    assert!(stderr(&output).contains("No space left on device"));
+}
