@@ -10,6 +10,7 @@
 //! The file format is described in the repository README (section *The file format*).
 
 mod bounds;
+mod bvh;
 mod effects;
 mod embedded;
 mod format;
@@ -36,7 +37,10 @@ pub use outline::{Outline, Piece};
 pub use report::Report;
 pub use shape::{Crossing, Lens, Shape, T_MIN};
 pub use source::{Light, Source, SourceKind, traced_wavelength};
-pub use trace::{Counts, End, Hit, MAX_SEGMENTS, Outcome, Path, Segment, Side, Trace};
+pub use trace::{
+    Budget, Counts, End, Hit, MAX_SEGMENTS, MAX_TESTS, Outcome, Path, Progress, Segment, Side,
+    Stop, Trace,
+};
 
 /// A scene ready to trace: media, shapes, a source and the effects it asks for.
 ///
