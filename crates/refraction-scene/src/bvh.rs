@@ -16,6 +16,7 @@ use glam::DVec2;
 use super::Scene;
 use super::bounds::{Bounds, padding};
 use super::shape::{Crossing, Shape, T_MIN, crosses_rightward};
+use super::trace::MAX_TESTS;
 
 /// The most pieces in a leaf.
 const LEAF: usize = 4;
@@ -363,6 +364,105 @@ impl<'a> Bvh<'a> {
     }
 }
 
+/// The sign of the turn a → b → c: 1 counter-clockwise, −1 clockwise, 0 in a line.
+fn turn(a: DVec2, b: DVec2, c: DVec2) -> i8 {
+    let cross = (b - a).perp_dot(c - a);
+    if cross > 0.0 {
+        1
+    } else if cross < 0.0 {
+        -1
+    } else {
+        0
+    }
+}
+
+/// Whether `p`, in line with `a` and `b`, lies within their box (so on the segment).
+fn on_segment(a: DVec2, b: DVec2, p: DVec2) -> bool {
+    a.min(b).cmple(p).all() && p.cmple(a.max(b)).all()
+}
+
+/// Whether the segments a–b and c–d have a point in common.
+fn segments_meet(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> bool {
+    let (t1, t2) = (turn(a, b, c), turn(a, b, d));
+    let (t3, t4) = (turn(c, d, a), turn(c, d, b));
+    (t1 != t2 && t3 != t4)
+        || (t1 == 0 && on_segment(a, b, c))
+        || (t2 == 0 && on_segment(a, b, d))
+        || (t3 == 0 && on_segment(c, d, a))
+        || (t4 == 0 && on_segment(c, d, b))
+}
+
+/// Whether edges `i` < `j` of the closed polygon `points` meet anywhere but at the vertex that
+/// neighbouring edges share (where they meet only if they fold back along each other).
+fn edges_meet(points: &[DVec2], i: usize, j: usize) -> bool {
+    let n = points.len();
+    let edge = |k: usize| (points[k], points[(k + 1) % n]);
+    let ((a, b), (c, d)) = (edge(i), edge(j));
+    let fold = |shared: DVec2, one: DVec2, other: DVec2| {
+        turn(shared, one, other) == 0 && (one - shared).dot(other - shared) > 0.0
+    };
+    if j == i + 1 {
+        fold(b, a, d)
+    } else if i == 0 && j == n - 1 {
+        fold(a, b, c)
+    } else {
+        segments_meet(a, b, c, d)
+    }
+}
+
+/// The first pair of edges (i, j), i < j, j as small as can be, at which the closed polygon
+/// `points` crosses or touches itself, if it does: edge k runs from point k to the next. Each
+/// edge is tested only against the edges whose boxes overlap its own.
+///
+/// # Errors
+/// The number of tests made, when it passes [`MAX_TESTS`] before an answer (edges whose boxes
+/// overlap by the thousand).
+pub(crate) fn first_self_crossing(points: &[DVec2]) -> Result<Option<(usize, usize)>, u64> {
+    let n = points.len();
+    let items: Vec<Item> = (0..n)
+        .map(|piece| {
+            let (a, b) = (points[piece], points[(piece + 1) % n]);
+            Item {
+                shape: 0,
+                piece,
+                bounds: Bounds {
+                    min: a.min(b),
+                    max: a.max(b),
+                },
+            }
+        })
+        .collect();
+    let tree = Tree::new(items.clone());
+    let (mut stack, mut tests) = (Vec::new(), 0);
+    for (j, edge) in items.iter().enumerate() {
+        let overlaps =
+            |b: &Bounds| b.min.cmple(edge.bounds.max).all() && edge.bounds.min.cmple(b.max).all();
+        let mut found = None;
+        tree.visit(
+            &mut stack,
+            &mut tests,
+            &mut found,
+            |found, node| (found.is_none() && overlaps(&node.bounds)).then_some(false),
+            |found, item| {
+                if found.is_none()
+                    && item.piece < j
+                    && overlaps(&item.bounds)
+                    && edges_meet(points, item.piece, j)
+                {
+                    *found = Some((item.piece, j));
+                }
+            },
+        );
+        if found.is_some() {
+            return Ok(found);
+        }
+        if tests > MAX_TESTS {
+            return Err(MAX_TESTS);
+        }
+    }
+    Ok(None)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -496,6 +596,39 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn a_polygon_that_crosses_or_folds_onto_itself_is_found() {
+        let at = |xy: &[(f64, f64)]| {
+            xy.iter()
+                .map(|&(x, y)| DVec2::new(x, y))
+                .collect::<Vec<_>>()
+        };
+        let square = at(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]);
+        assert_eq!(first_self_crossing(&square), Ok(None));
+        let bow_tie = at(&[(0.0, 0.0), (1.0, 1.0), (1.0, 0.0), (0.0, 1.0)]);
+        assert_eq!(first_self_crossing(&bow_tie), Ok(Some((0, 2))));
+        // Two squares touching at a corner: a figure of eight through (1, 1).
+        let touching = at(&[
+            (0.0, 0.0),
+            (1.0, 0.0),
+            (1.0, 1.0),
+            (2.0, 1.0),
+            (2.0, 2.0),
+            (1.0, 2.0),
+            (1.0, 1.0),
+            (0.0, 1.0),
+        ]);
+        assert!(first_self_crossing(&touching).unwrap().is_some());
+        // A spike folding back along its own edge.
+        let spike = at(&[(0.0, 0.0), (2.0, 0.0), (1.0, 0.0), (1.0, 1.0)]);
+        assert_eq!(first_self_crossing(&spike), Ok(Some((0, 1))));
+        let n = 20_000;
+        let round: Vec<DVec2> = (0..n)
+            .map(|k| DVec2::from_angle(std::f64::consts::TAU * f64::from(k) / f64::from(n)))
+            .collect();
+        assert_eq!(first_self_crossing(&round), Ok(None));
     }
 
     #[test]

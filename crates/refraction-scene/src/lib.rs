@@ -20,6 +20,7 @@ mod outline;
 mod report;
 mod shape;
 mod source;
+mod spec;
 mod trace;
 mod write;
 
@@ -30,7 +31,7 @@ use glam::DVec2;
 pub use bounds::Bounds;
 pub use effects::Effects;
 pub use embedded::{DEFAULT_SCENE, SceneInfo, catalogue};
-pub use format::{LoadError, Position};
+pub use format::{LoadError, MAX_COORDINATE, MAX_POINTS, MAX_SHAPES, MIN_SIZE, Position};
 pub use fresnel::Fresnel;
 pub use medium::{Dispersion, Medium, REFERENCE_WAVELENGTH_NM, WHITE_WAVELENGTHS_NM};
 pub use outline::{Outline, Piece};
@@ -64,6 +65,8 @@ pub struct Scene {
 pub enum EditError {
     /// A coordinate is NaN or infinite.
     NotFinite,
+    /// A coordinate would lie beyond ±[`MAX_COORDINATE`].
+    OutOfRange,
     /// A direction is the zero vector.
     NoDirection,
     /// No shape has this position in the list.
@@ -78,6 +81,11 @@ impl fmt::Display for EditError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::NotFinite => f.write_str("every coordinate must be a finite number"),
+            Self::OutOfRange => write!(
+                f,
+                "every coordinate must lie within ±{MAX_COORDINATE} (the range a scene file \
+                 may use)"
+            ),
             Self::NoDirection => f.write_str("a direction must not be the zero vector"),
             Self::NoSuchShape(i) => write!(f, "the scene has no shape {i}"),
             Self::RayCount(n) => write!(
@@ -97,6 +105,15 @@ fn finite(v: DVec2) -> Result<DVec2, EditError> {
         Ok(v)
     } else {
         Err(EditError::NotFinite)
+    }
+}
+
+/// `v` if it is a position a scene file could give.
+fn in_range(v: DVec2) -> Result<DVec2, EditError> {
+    if finite(v)?.abs().max_element() <= MAX_COORDINATE {
+        Ok(v)
+    } else {
+        Err(EditError::OutOfRange)
     }
 }
 
@@ -211,9 +228,9 @@ impl Scene {
     /// Moves the source to start at `origin`.
     ///
     /// # Errors
-    /// [`EditError::NotFinite`].
+    /// [`EditError::NotFinite`], or [`EditError::OutOfRange`] beyond ±[`MAX_COORDINATE`].
     pub fn set_source_origin(&mut self, origin: DVec2) -> Result<(), EditError> {
-        self.source.origin = finite(origin)?;
+        self.source.origin = in_range(origin)?;
         Ok(())
     }
 
@@ -222,7 +239,9 @@ impl Scene {
     /// # Errors
     /// [`EditError::NotFinite`] or [`EditError::NoDirection`].
     pub fn set_source_direction(&mut self, direction: DVec2) -> Result<(), EditError> {
-        let unit = finite(direction)?
+        let d = finite(direction)?;
+        // Scaled by its largest component first, so that no length over- or underflows.
+        let unit = (d / d.abs().max_element())
             .try_normalize()
             .ok_or(EditError::NoDirection)?;
         self.source.direction = unit;
@@ -246,8 +265,8 @@ impl Scene {
     /// Moves shape `index` by `delta` world units.
     ///
     /// # Errors
-    /// [`EditError::NoSuchShape`] or [`EditError::NotFinite`] (also when the move would take
-    /// a coordinate beyond the finite numbers).
+    /// [`EditError::NoSuchShape`], [`EditError::NotFinite`], or [`EditError::OutOfRange`] when
+    /// the move would take a coordinate beyond ±[`MAX_COORDINATE`].
     pub fn move_shape(&mut self, index: usize, delta: DVec2) -> Result<(), EditError> {
         let delta = finite(delta)?;
         let shape = self
@@ -256,7 +275,10 @@ impl Scene {
             .ok_or(EditError::NoSuchShape(index))?;
         let mut moved = shape.clone();
         moved.translate(delta);
-        finite(moved.anchor())?;
+        // The delta and the shape are finite, so the moved shape is finite or infinite, never NaN.
+        if moved.reach() > MAX_COORDINATE {
+            return Err(EditError::OutOfRange);
+        }
         self.shapes[index] = moved;
         Ok(())
     }

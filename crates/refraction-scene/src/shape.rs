@@ -209,7 +209,8 @@ fn lens_crossing(
         for t in roots.into_iter().filter(|&t| ahead(t)) {
             let p = origin + t * direction;
             if p.distance_squared(other) <= other_radius * other_radius * (1.0 + 1e-12) {
-                best = nearer(best, t, || (p - center) / radius);
+                // Normalised: a hit point's rounding, over a small radius, would leave it off unit.
+                best = nearer(best, t, || ((p - center) / radius).normalize_or_zero());
             }
         }
     }
@@ -319,7 +320,8 @@ impl Shape {
                 let t = roots.into_iter().find(|&t| ahead(t))?;
                 Some(Crossing {
                     t,
-                    normal: (origin + t * direction - *center) / *radius,
+                    // Normalised: a hit point's rounding, over a small radius, would leave it off unit.
+                    normal: ((origin + t * direction - *center) / *radius).normalize_or_zero(),
                 })
             }
             Self::Polygon { points, .. } => {
@@ -367,6 +369,22 @@ impl Shape {
             Self::Polygon { points, .. } => {
                 points.iter().copied().sum::<DVec2>() / points.len().max(1) as f64
             }
+        }
+    }
+
+    /// The largest absolute coordinate of the points that place the shape (as a scene file
+    /// gives them: a line's point, a segment's ends, a centre, a polygon's points).
+    pub(crate) fn reach(&self) -> f64 {
+        let reach = |p: &DVec2| p.abs().max_element();
+        match self {
+            Self::Line { point, .. } => reach(point),
+            Self::Segment { from, to } => reach(from).max(reach(to)),
+            Self::Circle { center, .. }
+            | Self::Lens {
+                lens: Lens { center, .. },
+                ..
+            } => reach(center),
+            Self::Polygon { points, .. } => points.iter().map(reach).fold(0.0, f64::max),
         }
     }
 
