@@ -193,14 +193,8 @@ fn a_droplet_at_the_edge_of_the_range_traces_as_at_the_origin() {
 
 #[test]
 fn a_runaway_trace_stops_at_its_budget_and_says_why() {
-    let deep = Scene::embedded("droplet")
-        .unwrap()
-        .to_toml()
-        .unwrap()
-        .replace("max_depth = 6", "max_depth = 1000")
-        .replace("min_intensity = 0.01", "min_intensity = 0.0");
-    let mut scene = load(&deep);
-    scene.set_ray_count(1000).unwrap();
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/deep-droplet.toml");
+    let scene = Scene::load(path).unwrap_or_else(|e| panic!("{e}"));
     let trace = traced(&scene, SMALL);
     assert!(trace.counts.truncated);
     assert_eq!(trace.counts.stopped, Some(Stop::Segments(SMALL.segments)));
