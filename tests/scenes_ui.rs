@@ -148,3 +148,69 @@ fn an_edited_scene_saves_and_opens_again_and_a_corrupt_file_changes_nothing() {
     );
     std::fs::remove_dir_all(&folder).unwrap();
 }
+
+/// Steps the window until no trace runs in the background (at most a minute).
+fn until_traced(h: &mut Harness<'static, Explorer>) {
+    let start = std::time::Instant::now();
+    while h.state().scenes().tracing().is_some() {
+        assert!(
+            start.elapsed().as_secs() < 60,
+            "the background trace never ended"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        h.step();
+    }
+    h.run();
+}
+
+#[test]
+fn a_huge_trace_runs_in_the_background_with_progress_and_cancel() {
+    // A mirror box that reflects every ray a thousand times, beside three thousand lines that
+    // every ray must be tested against at every step (a line has no box to skip): a trace that
+    // runs to its full work budget, which the window must not wait for.
+    let lines = "[[shapes]]\nline = { point = [50, 0], normal = [1, 0], medium = \"vacuum\" }\n";
+    let text = format!(
+        "title = \"Mirror box\"\n[media.glass]\nindex = 1.5\n{}[[shapes]]\n\
+         polygon = {{ points = [[0, 0], [1, 0], [1, 1], [0, 1]], medium = \"glass\" }}\n\
+         [source]\nkind = \"fan\"\norigin = [-1, 0.5]\ndirection = [1, 0.1]\nrays = 1000\n\
+         spread_deg = 30\n[effects]\npartial_reflection = true\nmax_depth = 1000\n",
+        lines.repeat(3000)
+    );
+    let mut explorer = Explorer::new(ExplorerState::default());
+    explorer.open_scene(Scene::from_toml(&text, "box.toml", "box").unwrap());
+    assert!(
+        explorer.scenes().tracing().is_some(),
+        "traced in the background"
+    );
+    let mut h = harness(explorer);
+    assert!(
+        h.state().scenes().trace().segments.is_empty(),
+        "nothing finished yet"
+    );
+    assert!(h.query_by_label_contains("tracing…").is_some());
+    h.get_by_label("Cancel").click();
+    h.run();
+    until_traced(&mut h);
+    let counts = h.state().scenes().trace().counts;
+    assert_eq!(counts.stopped, Some(refraction_scene::Stop::Cancelled));
+    assert!(h.query_by_label_contains("was cancelled").is_some());
+}
+
+#[test]
+fn a_runaway_droplet_stops_at_what_the_screen_can_show_and_says_so() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/crates/refraction-scene/tests/data/deep-droplet.toml"
+    );
+    let scene = Scene::load(path).unwrap_or_else(|e| panic!("{e}"));
+    let mut explorer = Explorer::new(ExplorerState::default());
+    explorer.open_scene(scene);
+    let mut h = harness(explorer);
+    until_traced(&mut h);
+    let trace = h.state().scenes().trace();
+    assert_eq!(trace.segments.len(), 200_000);
+    assert!(
+        h.query_by_label_contains("budget of 200000 segments")
+            .is_some()
+    );
+}

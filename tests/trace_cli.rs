@@ -77,7 +77,8 @@ fn a_broken_file_is_one_line_naming_file_line_and_column() {
     let message = stderr(&output);
     assert_eq!(message.lines().count(), 1, "{message}");
     assert!(
-        message.contains("broken.toml:6:1: a circle's `radius` is -1"),
+        // At the value itself (line 7, column 38), not at the [[shapes]] header above it.
+        message.contains("broken.toml:7:38: a circle's `radius` is -1"),
         "{message}"
     );
 }
@@ -91,4 +92,24 @@ fn an_unknown_scene_lists_the_built_in_ones() {
         message.contains("rainbow: cannot read") && message.contains("droplet"),
         "{message}"
     );
+}
+
+#[test]
+fn a_trace_that_stops_at_its_budget_says_why() {
+    // The JSON's `counts.stopped` is tested on a small budget in the scene crate: here the
+    // default budget, which one million segments of JSON would make slow to read back.
+    let scene = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/crates/refraction-scene/tests/data/deep-droplet.toml"
+    );
+    let output = trace(&[scene]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        text.contains("the trace stopped at its budget of 1000000 segments"),
+        "{text}"
+    );
+    let finished: Value = serde_json::from_slice(&trace(&["droplet", "--json"]).stdout).unwrap();
+    assert!(finished["counts"]["stopped"].is_null());
+    assert_eq!(finished["counts"]["truncated"], false);
 }

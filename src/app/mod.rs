@@ -15,6 +15,7 @@ pub mod history;
 mod paint;
 pub mod presentation;
 mod readouts;
+mod retrace;
 mod scenes;
 pub mod snippets;
 mod tools;

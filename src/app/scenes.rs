@@ -4,14 +4,16 @@
 
 use egui::emath::RectTransform;
 use egui::{
-    CentralPanel, ComboBox, CursorIcon, Painter, Panel, Pos2, Rect, Response, RichText, Role,
-    Sense, Slider, SliderClamping, TextEdit, Ui, WidgetInfo,
+    CentralPanel, ComboBox, CursorIcon, Painter, Panel, Pos2, ProgressBar, Rect, Response, RichText, Role, Sense,
+    Slider, SliderClamping, TextEdit, Ui, WidgetInfo,
 };
 use std::path::PathBuf;
+use std::time::Duration;
 
 use glam::{DVec2, Vec2};
 
 use super::paint::{color, paint};
+use super::retrace::{Retracer, empty};
 use refraction_diagram::numbers::number;
 use refraction_diagram::palette;
 use refraction_diagram::shapes::{Align, Label};
@@ -30,13 +32,16 @@ pub const DEFAULT_SCENE_PATH: &str = "scene.toml";
 
 /// The Scenes view's state: the scene as edited, its trace, and what the canvas remembers
 /// between frames.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Debug)]
 pub struct ScenesView {
     catalogue: Vec<SceneInfo>,
     /// The scene as loaded, for *Reset*.
     original: Scene,
     scene: Scene,
+    /// The last finished trace (of the scene as edited, or of an earlier edit while a bigger
+    /// trace runs in the background).
     trace: Trace,
+    retracer: Retracer,
     /// The layout at the start of the drag under way: a scene without a `[view]` is fitted to
     /// its source and shapes, and refitting while dragging would move the world under the
     /// pointer.
@@ -86,12 +91,14 @@ impl ScenesView {
     /// The view showing `scene`, traced.
     #[must_use]
     pub fn new(scene: Scene) -> Self {
-        let trace = scene.trace();
+        let (mut retracer, mut trace) = (Retracer::default(), empty(&scene));
+        retracer.retrace(&scene, &mut trace);
         Self {
             catalogue: catalogue(),
             original: scene.clone(),
             scene,
             trace,
+            retracer,
             drag_layout: None,
             error: None,
             drawn: None,
@@ -106,10 +113,17 @@ impl ScenesView {
         &self.scene
     }
 
-    /// Its trace.
+    /// Its last finished trace (a bigger one may be running in the background: see
+    /// [`Self::tracing`]).
     #[must_use]
     pub fn trace(&self) -> &Trace {
         &self.trace
+    }
+
+    /// How far the trace running in the background has got (0 to 1), or `None` when none is.
+    #[must_use]
+    pub fn tracing(&self) -> Option<f64> {
+        self.retracer.progress()
     }
 
     /// Where the world point `world` was drawn in the last frame, in screen points (`None`
@@ -128,7 +142,7 @@ impl ScenesView {
         self.scene = scene;
         self.error = None;
         self.drag_layout = None;
-        self.scene.retrace(&mut self.trace);
+        self.retracer.retrace(&self.scene, &mut self.trace);
     }
 
     /// Writes the scene as edited to the scene file in the path field, atomically.
@@ -167,7 +181,7 @@ impl ScenesView {
         if scene.name() == self.original.name() {
             self.scene = scene;
             self.error = None;
-            self.scene.retrace(&mut self.trace);
+            self.retracer.retrace(&self.scene, &mut self.trace);
         } else {
             self.open(scene);
         }
@@ -178,7 +192,7 @@ impl ScenesView {
         match edit(&mut self.scene) {
             Ok(()) => {
                 self.error = None;
-                self.scene.retrace(&mut self.trace);
+                self.retracer.retrace(&self.scene, &mut self.trace);
             }
             Err(e) => self.error = Some(e.to_string()),
         }
@@ -187,7 +201,14 @@ impl ScenesView {
     /// Shows the view in `ui`: the controls strip, then the canvas. Returns the single-interface
     /// problem of the hit point clicked, if one was.
     pub fn show(&mut self, ui: &mut Ui) -> Option<ExplorerState> {
-        Panel::top("scene controls").show(ui, |ui| self.controls(ui));
+        if let Some(done) = self.retracer.poll() {
+            let shown = std::mem::replace(&mut self.trace, done);
+            self.retracer.recycle(shown);
+        }
+        Panel::top("scene controls").show(ui, |ui| {
+            self.controls(ui);
+            self.trace_status(ui);
+        });
         CentralPanel::no_frame()
             .show(ui, |ui| self.canvas(ui))
             .inner
@@ -260,6 +281,37 @@ impl ScenesView {
         );
         if let Some(error) = &self.error {
             ui.label(RichText::new(format!("⚠ {error}")).color(color(palette::ALARM)));
+        }
+    }
+
+    /// While a trace runs in the background: its progress and *Cancel*; and why the trace shown
+    /// stopped early, if it did.
+    fn trace_status(&mut self, ui: &mut Ui) {
+        if let Some(done) = self.retracer.progress() {
+            // Wake up to show the progress, and the trace once it is done.
+            ui.ctx().request_repaint_after(Duration::from_millis(50));
+            ui.horizontal(|ui| {
+                let text = format!(
+                    "tracing… {:.0} % (the last finished trace is shown)",
+                    done * 100.0
+                );
+                // A fraction from 0 to 1: f32 holds it to far better than a pixel.
+                ui.add(
+                    ProgressBar::new(done as f32)
+                        .desired_width(320.0)
+                        .text(text),
+                );
+                if ui
+                    .button("Cancel")
+                    .on_hover_text("stop tracing and show what was traced so far")
+                    .clicked()
+                {
+                    self.retracer.cancel();
+                }
+            });
+        }
+        if let Some(stop) = self.trace.counts.stopped {
+            ui.label(RichText::new(format!("⚠ {stop}")).color(color(palette::ALARM)));
         }
     }
 

@@ -4,7 +4,7 @@
 //! [`Primitive`]s directly (no dashes to lower), because a scene of a thousand rays is rebuilt
 //! on every frame of a drag.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use glam::{DVec2, Vec2};
 
@@ -141,7 +141,9 @@ impl SceneLayout {
 
     /// The handles of `scene`: the source, its aim, then each shape's anchor. A shape handle
     /// that would cover an earlier handle (a fibre's core and cladding share their centre) is
-    /// moved down until it is clear.
+    /// moved down until it is clear; one that finds no clear place before the bottom of the
+    /// canvas is left out, so that a scene of thousands of shapes gets as many handles as the
+    /// canvas has room for, found in about one look each.
     #[must_use]
     pub fn handles(&self, scene: &Scene) -> Vec<SceneHandle> {
         let source = scene.source();
@@ -161,16 +163,36 @@ impl SceneLayout {
                 radius: small,
             },
         ];
+        // Far enough apart for the two lines of a medium label beside each.
+        let step = self.font * 2.4;
+        // The handles by cell of a grid `step` wide: any handle nearer than `step` is in one of
+        // the nine cells around.
+        let cell = |p: Vec2| ((p.x / step).floor() as i64, (p.y / step).floor() as i64);
+        let mut grid: HashMap<(i64, i64), Vec<Vec2>> = HashMap::new();
+        for h in &handles {
+            grid.entry(cell(h.center)).or_default().push(h.center);
+        }
+        let crowded = |grid: &HashMap<(i64, i64), Vec<Vec2>>, p: Vec2| {
+            let (x, y) = cell(p);
+            (x - 1..=x + 1)
+                .flat_map(|cx| (y - 1..=y + 1).map(move |cy| (cx, cy)))
+                .filter_map(|c| grid.get(&c))
+                .flatten()
+                .any(|q| q.distance(p) < step * 0.99)
+        };
+        // Enough moves to go down the whole canvas; more would only pile handles below it.
+        let most_moves = (self.canvas.size().y / step).ceil() as usize + 1;
         for (i, shape) in scene.shapes().iter().enumerate() {
             let mut center = self.at(shape.anchor());
-            // Far enough apart for the two lines of a medium label beside each.
-            let step = self.font * 2.4;
-            while handles
-                .iter()
-                .any(|h| h.center.distance(center) < step * 0.99)
-            {
+            let mut moves = 0;
+            while moves <= most_moves && crowded(&grid, center) {
                 center.y += step;
+                moves += 1;
             }
+            if moves > most_moves || (moves > 0 && center.y > self.canvas.max.y) {
+                continue;
+            }
+            grid.entry(cell(center)).or_default().push(center);
             handles.push(SceneHandle {
                 id: SceneHandleId::Shape(i),
                 center,
@@ -850,6 +872,29 @@ mod tests {
         layout.drag(&mut scene, SceneHandleId::Shape(1), p).unwrap();
         let moved = scene.shapes()[1].anchor() - anchor;
         assert!((moved - DVec2::new(50.0 / f64::from(layout.view.scale), 0.0)).length() < 1e-5);
+    }
+
+    #[test]
+    fn thousands_of_shapes_on_one_spot_get_the_handles_the_canvas_has_room_for() {
+        let circle = "[[shapes]]\ncircle = { center = [0, 0], radius = 1, medium = \"vacuum\" }\n";
+        let text = format!(
+            "title = \"t\"\n{}[source]\nkind = \"ray\"\norigin = [-2, 0]\ndirection = [1, 0]\n",
+            circle.repeat(5000)
+        );
+        let scene = Scene::from_toml(&text, "x.toml", "x").unwrap();
+        let layout = SceneLayout::new(scene.bounds(), Vec2::new(1000.0, 700.0));
+        let handles = layout.handles(&scene);
+        let shape_handles = handles.len() - 2;
+        assert!(shape_handles > 3 && shape_handles < 40, "{shape_handles}");
+        for (i, a) in handles.iter().enumerate() {
+            assert!(layout.canvas.contains(a.center) || i < 2, "{a:?}");
+            for b in &handles[..i] {
+                assert!(
+                    a.center.distance(b.center) >= layout.font * 2.3,
+                    "{a:?} {b:?}"
+                );
+            }
+        }
     }
 
     #[test]

@@ -173,10 +173,18 @@ fn an_editor_can_move_things_retrace_and_pick_a_hit() {
         droplet.move_shape(5, DVec2::ONE),
         Err(EditError::NoSuchShape(5))
     );
-    assert_eq!(droplet.move_shape(0, DVec2::new(f64::MAX, 0.0)), Ok(()));
+    // Within the range a scene file may use, and no farther (coordinates beyond it once gave
+    // null points in the JSON).
+    let far = DVec2::new(refraction_scene::MAX_COORDINATE, 0.0);
+    assert_eq!(droplet.move_shape(0, far), Ok(()));
+    assert_eq!(droplet.move_shape(0, far), Err(EditError::OutOfRange));
     assert_eq!(
-        droplet.move_shape(0, DVec2::new(f64::MAX, 0.0)),
+        droplet.move_shape(0, DVec2::new(f64::INFINITY, 0.0)),
         Err(EditError::NotFinite)
+    );
+    assert_eq!(
+        droplet.set_source_origin(DVec2::new(-1.7e308, 0.0)),
+        Err(EditError::OutOfRange)
     );
     assert_eq!(
         droplet.set_source_origin(DVec2::new(f64::NAN, 0.0)),

@@ -26,6 +26,17 @@ fn size_text(bytes: u64) -> String {
 /// The file cannot be opened or read, is longer than `limit` (kind
 /// [`io::ErrorKind::FileTooLarge`], the message giving the limit), or is not UTF-8.
 pub fn read_capped(path: &Path, limit: u64, what: &str) -> io::Result<String> {
+    let bytes = read_capped_bytes(path, limit, what)?;
+    String::from_utf8(bytes).map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))
+}
+
+/// The bytes of the file at `path`, as [`read_capped`] reads them but without asking for UTF-8,
+/// for a reader that reports where the first byte that is not UTF-8 lies.
+///
+/// # Errors
+/// The file cannot be opened or read, or is longer than `limit` (kind
+/// [`io::ErrorKind::FileTooLarge`], the message giving the limit).
+pub fn read_capped_bytes(path: &Path, limit: u64, what: &str) -> io::Result<Vec<u8>> {
     let file = std::fs::File::open(path)?;
     let mut bytes = Vec::new();
     file.take(limit.saturating_add(1)).read_to_end(&mut bytes)?;
@@ -38,7 +49,7 @@ pub fn read_capped(path: &Path, limit: u64, what: &str) -> io::Result<String> {
             ),
         ));
     }
-    String::from_utf8(bytes).map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))
+    Ok(bytes)
 }
 
 #[cfg(test)]

@@ -1,11 +1,10 @@
 //! The effects a scene asks the tracer to compute, and when to stop tracing.
 
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
 /// What the tracer computes besides refraction (which the media always imply). Each flag left
 /// off is work the tracer does not do; [`super::Counts`] shows it.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Effects {
     /// Spawn a reflected ray at every refracting hit (without it, rays reflect only on total
     /// internal reflection).

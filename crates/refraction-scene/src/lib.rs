@@ -11,6 +11,7 @@
 
 mod bounds;
 mod capped;
+mod bvh;
 mod effects;
 mod embedded;
 mod format;
@@ -20,6 +21,7 @@ mod outline;
 mod report;
 mod shape;
 mod source;
+mod spec;
 mod trace;
 mod write;
 
@@ -27,16 +29,19 @@ use glam::DVec2;
 
 pub use bounds::Bounds;
 pub use effects::{Effects, EffectsError};
-pub use capped::{MAX_SCENE_FILE_BYTES, read_capped};
+pub use capped::{MAX_SCENE_FILE_BYTES, read_capped, read_capped_bytes};
 pub use embedded::{DEFAULT_SCENE, SceneInfo, catalogue};
-pub use format::{LoadError, Position};
+pub use format::{LoadError, MAX_COORDINATE, MAX_POINTS, MAX_SHAPES, MIN_SIZE, Position};
 pub use fresnel::Fresnel;
 pub use medium::{Dispersion, Medium, REFERENCE_WAVELENGTH_NM, WHITE_WAVELENGTHS_NM};
 pub use outline::{Outline, Piece};
 pub use report::Report;
 pub use shape::{Crossing, Lens, Shape, T_MIN};
 pub use source::{Light, Source, SourceKind, traced_wavelength};
-pub use trace::{Counts, End, Hit, MAX_SEGMENTS, Outcome, Path, Segment, Side, Trace};
+pub use trace::{
+    Budget, Counts, End, Hit, MAX_SEGMENTS, MAX_TESTS, Outcome, Path, Progress, Segment, Side,
+    Stop, Trace,
+};
 pub use write::WriteError;
 
 /// A scene ready to trace: media, shapes, a source and the effects it asks for.
@@ -62,6 +67,11 @@ pub enum EditError {
     /// A coordinate is NaN or infinite.
     #[error("every coordinate must be a finite number")]
     NotFinite,
+    /// A coordinate would lie beyond ±[`MAX_COORDINATE`].
+    #[error(
+        "every coordinate must lie within ±{MAX_COORDINATE} (the range a scene file may use)"
+    )]
+    OutOfRange,
     /// A direction is the zero vector.
     #[error("a direction must not be the zero vector")]
     NoDirection,
@@ -81,6 +91,15 @@ fn finite(v: DVec2) -> Result<DVec2, EditError> {
         Ok(v)
     } else {
         Err(EditError::NotFinite)
+    }
+}
+
+/// `v` if it is a position a scene file could give.
+fn in_range(v: DVec2) -> Result<DVec2, EditError> {
+    if finite(v)?.abs().max_element() <= MAX_COORDINATE {
+        Ok(v)
+    } else {
+        Err(EditError::OutOfRange)
     }
 }
 
@@ -195,9 +214,9 @@ impl Scene {
     /// Moves the source to start at `origin`.
     ///
     /// # Errors
-    /// [`EditError::NotFinite`].
+    /// [`EditError::NotFinite`], or [`EditError::OutOfRange`] beyond ±[`MAX_COORDINATE`].
     pub fn set_source_origin(&mut self, origin: DVec2) -> Result<(), EditError> {
-        self.source.origin = finite(origin)?;
+        self.source.origin = in_range(origin)?;
         Ok(())
     }
 
@@ -206,7 +225,9 @@ impl Scene {
     /// # Errors
     /// [`EditError::NotFinite`] or [`EditError::NoDirection`].
     pub fn set_source_direction(&mut self, direction: DVec2) -> Result<(), EditError> {
-        let unit = finite(direction)?
+        let d = finite(direction)?;
+        // Scaled by its largest component first, so that no length over- or underflows.
+        let unit = (d / d.abs().max_element())
             .try_normalize()
             .ok_or(EditError::NoDirection)?;
         self.source.direction = unit;
@@ -230,8 +251,8 @@ impl Scene {
     /// Moves shape `index` by `delta` world units.
     ///
     /// # Errors
-    /// [`EditError::NoSuchShape`] or [`EditError::NotFinite`] (also when the move would take
-    /// a coordinate beyond the finite numbers).
+    /// [`EditError::NoSuchShape`], [`EditError::NotFinite`], or [`EditError::OutOfRange`] when
+    /// the move would take a coordinate beyond ±[`MAX_COORDINATE`].
     pub fn move_shape(&mut self, index: usize, delta: DVec2) -> Result<(), EditError> {
         let delta = finite(delta)?;
         let shape = self
@@ -240,7 +261,10 @@ impl Scene {
             .ok_or(EditError::NoSuchShape(index))?;
         let mut moved = shape.clone();
         moved.translate(delta);
-        finite(moved.anchor())?;
+        // The delta and the shape are finite, so the moved shape is finite or infinite, never NaN.
+        if moved.reach() > MAX_COORDINATE {
+            return Err(EditError::OutOfRange);
+        }
         self.shapes[index] = moved;
         Ok(())
     }

@@ -109,14 +109,34 @@ pub struct Outline {
 
 impl Outline {
     /// The boundary as one polyline with chords no longer than `max_step` world units; a closed
-    /// outline's last point equals its first.
+    /// outline's last point equals its first. Corners closer than half of `max_step` to the last
+    /// point kept are left out (the last one stays): a step is what a picture can show, so a
+    /// polygon of 200,000 vertices comes out with as many points as its picture has room for.
     #[must_use]
     pub fn polyline(&self, max_step: f64) -> Vec<DVec2> {
         let mut points = Vec::new();
         for piece in &self.pieces {
             piece.flatten_into(max_step, &mut points);
         }
-        points
+        let min_step = max_step / 2.0;
+        let Some(&last) = points.last() else {
+            return points;
+        };
+        let mut kept: Vec<DVec2> = Vec::with_capacity(points.len());
+        for p in points {
+            if kept.last().is_none_or(|k| k.distance(p) >= min_step) {
+                kept.push(p);
+            }
+        }
+        if kept.last() != Some(&last) {
+            // The end is kept exactly, so that a closed outline still closes: it replaces the
+            // point before it when that one is too close.
+            if kept.len() > 1 && kept.last().is_some_and(|k| k.distance(last) < min_step) {
+                kept.pop();
+            }
+            kept.push(last);
+        }
+        kept
     }
 }
 
@@ -142,6 +162,36 @@ mod tests {
         assert!(points.last().unwrap().distance(-DVec2::Y) < 1e-12);
         assert!(points.iter().all(|p| p.x <= 1e-12));
         assert!(points.len() >= 32);
+    }
+
+    #[test]
+    fn a_polygon_of_many_vertices_keeps_as_many_as_its_step_can_show() {
+        let n = 200_000;
+        let corners: Vec<DVec2> = (0..=n)
+            .map(|k| DVec2::from_angle(TAU * f64::from(k % n) / f64::from(n)) * 10.0)
+            .collect();
+        let outline = Outline {
+            shape: 0,
+            medium: None,
+            closed: true,
+            pieces: corners
+                .windows(2)
+                .map(|w| Piece::Segment {
+                    from: w[0],
+                    to: w[1],
+                })
+                .collect(),
+        };
+        let points = outline.polyline(0.04);
+        // A perimeter of 62.8 at one point per 0.02 or more.
+        assert!(points.len() <= 3200, "{}", points.len());
+        assert!(points.len() > 1000, "{}", points.len());
+        assert_eq!(points.first(), points.last(), "still closed");
+        assert!(
+            points
+                .windows(2)
+                .all(|w| w[0].distance(w[1]) >= 0.02 - 1e-12)
+        );
     }
 
     #[test]

@@ -39,6 +39,31 @@ impl Lens {
         ]
     }
 
+    /// The smallest rectangle holding the lens: its rim, its two vertices on the axis, and the
+    /// top and bottom of a surface that bulges past the rim (a surface more than half a circle,
+    /// when the thickness is near twice a radius).
+    #[must_use]
+    pub fn extent(&self) -> Bounds {
+        let half = DVec2::new(self.thickness / 2.0, 0.0);
+        let circles = self.circles();
+        let bulges = circles
+            .iter()
+            .enumerate()
+            .flat_map(|(i, &(center, radius))| {
+                let (other, other_radius) = circles[1 - i];
+                [DVec2::Y, -DVec2::Y]
+                    .map(|up| center + up * radius)
+                    .into_iter()
+                    .filter(move |p| p.distance(other) < other_radius)
+            });
+        self.rim()
+            .into_iter()
+            .chain([self.center - half, self.center + half])
+            .chain(bulges)
+            .map(Bounds::point)
+            .fold(Bounds::point(self.center), Bounds::union)
+    }
+
     /// The top and bottom rim, where the two surfaces meet.
     #[must_use]
     pub fn rim(&self) -> [DVec2; 2] {
@@ -158,6 +183,46 @@ fn nearer(best: Option<Crossing>, t: f64, normal: impl FnOnce() -> DVec2) -> Opt
     }
 }
 
+/// The square that holds a disc.
+fn disc_box(center: DVec2, radius: f64) -> Bounds {
+    Bounds {
+        min: center - DVec2::splat(radius),
+        max: center + DVec2::splat(radius),
+    }
+}
+
+/// The nearest crossing of a lens's two surfaces that `ahead` accepts: a point on one circle
+/// that lies in the other disc.
+fn lens_crossing(
+    lens: &Lens,
+    origin: DVec2,
+    direction: DVec2,
+    ahead: impl Fn(f64) -> bool,
+) -> Option<Crossing> {
+    let circles = lens.circles();
+    let mut best = None;
+    for (i, &(center, radius)) in circles.iter().enumerate() {
+        let (other, other_radius) = circles[1 - i];
+        let Some(roots) = circle_roots(center, radius, origin, direction) else {
+            continue;
+        };
+        for t in roots.into_iter().filter(|&t| ahead(t)) {
+            let p = origin + t * direction;
+            if p.distance_squared(other) <= other_radius * other_radius * (1.0 + 1e-12) {
+                // Normalised: a hit point's rounding, over a small radius, would leave it off unit.
+                best = nearer(best, t, || ((p - center) / radius).normalize_or_zero());
+            }
+        }
+    }
+    best
+}
+
+/// Whether the edge `a → b` crosses the half-line from `p` towards +x: one step of the
+/// even-odd point-in-polygon test.
+pub(crate) fn crosses_rightward(a: DVec2, b: DVec2, p: DVec2) -> bool {
+    (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)
+}
+
 impl Shape {
     /// The medium inside, or `None` for a screen.
     #[must_use]
@@ -172,52 +237,103 @@ impl Shape {
     }
 
     /// The first crossing of the ray `origin + t·direction` (unit `direction`) with the
-    /// boundary at t > [`T_MIN`].
+    /// boundary at t > [`T_MIN`]: the nearest crossing of any of its pieces (the first piece
+    /// wins a tie).
     #[must_use]
     pub fn first_crossing(&self, origin: DVec2, direction: DVec2) -> Option<Crossing> {
+        (0..self.piece_count()).fold(None, |best, piece| {
+            self.piece_crossing(piece, origin, direction)
+                .map_or(best, |c| nearer(best, c.t, || c.normal))
+        })
+    }
+
+    /// How many pieces the tracer tests one by one: a polygon's edges, or the whole shape.
+    pub(crate) fn piece_count(&self) -> usize {
+        match self {
+            Self::Polygon { points, .. } => points.len(),
+            _ => 1,
+        }
+    }
+
+    /// A polygon's edge `i`: from vertex `i` to the next.
+    fn edge(points: &[DVec2], i: usize) -> (DVec2, DVec2) {
+        (points[i], points[(i + 1) % points.len()])
+    }
+
+    /// The box that holds piece `piece` (for a lens, a box that holds it: the overlap of its
+    /// discs' boxes), or `None` for a line, which has no end.
+    pub(crate) fn piece_bounds(&self, piece: usize) -> Option<Bounds> {
+        let segment = |a: DVec2, b: DVec2| Bounds {
+            min: a.min(b),
+            max: a.max(b),
+        };
+        match self {
+            Self::Line { .. } => None,
+            Self::Segment { from, to } => Some(segment(*from, *to)),
+            Self::Circle { center, radius, .. } => Some(disc_box(*center, *radius)),
+            Self::Polygon { points, .. } => {
+                let (a, b) = Self::edge(points, piece);
+                Some(segment(a, b))
+            }
+            Self::Lens { lens, .. } => {
+                let [(c1, r1), (c2, r2)] = lens.circles();
+                let (one, two) = (disc_box(c1, r1), disc_box(c2, r2));
+                Some(Bounds {
+                    min: one.min.max(two.min),
+                    max: one.max.min(two.max),
+                })
+            }
+        }
+    }
+
+    /// The first crossing of piece `piece` (see [`Self::piece_count`]) at t > [`T_MIN`] that
+    /// lies in the piece's box (grown by a margin far wider than rounding; see `bounds`).
+    pub(crate) fn piece_crossing(
+        &self,
+        piece: usize,
+        origin: DVec2,
+        direction: DVec2,
+    ) -> Option<Crossing> {
+        let ahead = |t: f64| {
+            t > T_MIN
+                && self
+                    .piece_bounds(piece)
+                    .is_none_or(|b| b.admits(origin, direction, t))
+        };
         match self {
             Self::Line { point, normal, .. } => {
                 let denominator = direction.dot(*normal);
                 let t = (*point - origin).dot(*normal) / denominator;
                 (t > T_MIN && t.is_finite()).then_some(Crossing { t, normal: *normal })
             }
-            Self::Segment { from, to } => segment_t(*from, *to, origin, direction).map(|t| {
-                let n = edge_normal(*from, *to);
-                Crossing {
-                    t,
-                    normal: if n.dot(direction) > 0.0 { -n } else { n },
-                }
-            }),
+            Self::Segment { from, to } => segment_t(*from, *to, origin, direction)
+                .filter(|&t| ahead(t))
+                .map(|t| {
+                    let n = edge_normal(*from, *to);
+                    Crossing {
+                        t,
+                        normal: if n.dot(direction) > 0.0 { -n } else { n },
+                    }
+                }),
             Self::Circle { center, radius, .. } => {
                 let roots = circle_roots(*center, *radius, origin, direction)?;
-                let t = roots.into_iter().find(|&t| t > T_MIN)?;
+                let t = roots.into_iter().find(|&t| ahead(t))?;
                 Some(Crossing {
                     t,
-                    normal: (origin + t * direction - *center) / *radius,
+                    // Normalised: a hit point's rounding, over a small radius, would leave it off unit.
+                    normal: ((origin + t * direction - *center) / *radius).normalize_or_zero(),
                 })
             }
-            Self::Polygon { points, .. } => edges(points).fold(None, |best, (a, b)| {
+            Self::Polygon { points, .. } => {
+                let (a, b) = Self::edge(points, piece);
                 segment_t(a, b, origin, direction)
-                    .map_or(best, |t| nearer(best, t, || edge_normal(a, b)))
-            }),
-            Self::Lens { lens, .. } => {
-                let circles = lens.circles();
-                let mut best = None;
-                for (i, &(center, radius)) in circles.iter().enumerate() {
-                    let (other, other_radius) = circles[1 - i];
-                    let Some(roots) = circle_roots(center, radius, origin, direction) else {
-                        continue;
-                    };
-                    for t in roots.into_iter().filter(|&t| t > T_MIN) {
-                        let p = origin + t * direction;
-                        if p.distance_squared(other) <= other_radius * other_radius * (1.0 + 1e-12)
-                        {
-                            best = nearer(best, t, || (p - center) / radius);
-                        }
-                    }
-                }
-                best
+                    .filter(|&t| ahead(t))
+                    .map(|t| Crossing {
+                        t,
+                        normal: edge_normal(a, b),
+                    })
             }
+            Self::Lens { lens, .. } => lens_crossing(lens, origin, direction, ahead),
         }
     }
 
@@ -228,11 +344,9 @@ impl Shape {
             Self::Line { point, normal, .. } => (p - *point).dot(*normal) < 0.0,
             Self::Segment { .. } => false,
             Self::Circle { center, radius, .. } => p.distance_squared(*center) < radius * radius,
-            Self::Polygon { points, .. } => edges(points).fold(false, |inside, (a, b)| {
-                let crosses = (a.y > p.y) != (b.y > p.y)
-                    && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-                inside != crosses
-            }),
+            Self::Polygon { points, .. } => {
+                edges(points).fold(false, |inside, (a, b)| inside != crosses_rightward(a, b, p))
+            }
             Self::Lens { lens, .. } => lens
                 .circles()
                 .iter()
@@ -255,6 +369,22 @@ impl Shape {
             Self::Polygon { points, .. } => {
                 points.iter().copied().sum::<DVec2>() / points.len().max(1) as f64
             }
+        }
+    }
+
+    /// The largest absolute coordinate of the points that place the shape (as a scene file
+    /// gives them: a line's point, a segment's ends, a centre, a polygon's points).
+    pub(crate) fn reach(&self) -> f64 {
+        let reach = |p: &DVec2| p.abs().max_element();
+        match self {
+            Self::Line { point, .. } => reach(point),
+            Self::Segment { from, to } => reach(from).max(reach(to)),
+            Self::Circle { center, .. }
+            | Self::Lens {
+                lens: Lens { center, .. },
+                ..
+            } => reach(center),
+            Self::Polygon { points, .. } => points.iter().map(reach).fold(0.0, f64::max),
         }
     }
 
@@ -292,16 +422,7 @@ impl Shape {
                 .iter()
                 .map(|&p| Bounds::point(p))
                 .reduce(Bounds::union),
-            Self::Lens { lens, .. } => {
-                let [top, bottom] = lens.rim();
-                let half = DVec2::new(lens.thickness / 2.0, 0.0);
-                Some(
-                    Bounds::point(top)
-                        .union(Bounds::point(bottom))
-                        .union(Bounds::point(lens.center - half))
-                        .union(Bounds::point(lens.center + half)),
-                )
-            }
+            Self::Lens { lens, .. } => Some(lens.extent()),
         }
     }
 

@@ -106,15 +106,21 @@ impl Source {
         all
     }
 
-    /// The start and unit direction of each ray.
+    /// The start and unit direction of each ray. A full circle (a fan of 360°) has its rays
+    /// 360°/n apart, so that its first and last rays do not coincide.
     pub fn rays(&self) -> impl Iterator<Item = (DVec2, DVec2)> + '_ {
-        let last = self.rays.saturating_sub(1).max(1) as f64;
+        let full_circle = self.kind == SourceKind::Fan && self.spread_deg >= 360.0;
+        let steps = if full_circle {
+            self.rays.max(1)
+        } else {
+            self.rays.saturating_sub(1).max(1)
+        } as f64;
         (0..self.rays).map(move |i| {
             // −½ … +½ across the beam or fan; the middle for a single ray.
             let spread = if self.rays == 1 {
                 0.0
             } else {
-                i as f64 / last - 0.5
+                i as f64 / steps - 0.5
             };
             match self.kind {
                 SourceKind::Ray => (self.origin, self.direction),
@@ -171,6 +177,18 @@ mod tests {
             source(SourceKind::Fan, 1).rays().next().unwrap().1,
             DVec2::X
         );
+    }
+
+    #[test]
+    fn a_full_circle_fan_traces_each_direction_once() {
+        let mut fan = source(SourceKind::Fan, 4);
+        fan.spread_deg = 360.0;
+        let directions: Vec<DVec2> = fan.rays().map(|(_, d)| d).collect();
+        assert_eq!(directions.len(), 4);
+        for (i, a) in directions.iter().enumerate() {
+            let next = directions[(i + 1) % 4];
+            assert!((a.dot(next)).abs() < 1e-12, "90° apart: {directions:?}");
+        }
     }
 
     #[test]

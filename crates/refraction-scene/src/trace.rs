@@ -3,12 +3,14 @@
 
 use std::fmt;
 use std::ops::Range;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use glam::{DVec2, DVec3};
 use serde::Serialize;
 
 use super::Scene;
 use super::bounds::Bounds;
+use super::bvh::Bvh;
 use super::fresnel::Fresnel;
 use super::source::{Light, serialize_wavelength, traced_wavelength};
 use refraction_kernel::{Convention, Incidence, stable};
@@ -16,6 +18,106 @@ use refraction_kernel::{Convention, Incidence, stable};
 /// The most segments one trace records; past it the trace stops and says so
 /// ([`Counts::truncated`]), so that no scene can exhaust memory.
 pub const MAX_SEGMENTS: usize = 1_000_000;
+
+/// The most intersection tests one trace makes (a ray or a point against a bounding box or a
+/// shape's piece, in finding crossings and the media at hits); past it the trace stops and
+/// says so ([`Counts::truncated`]), so that no scene can keep the tracer busy for long (about
+/// a second at this many on one core).
+pub const MAX_TESTS: u64 = 100_000_000;
+
+/// The work one trace may do before it stops: [`Budget::DEFAULT`] for [`Scene::trace`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Budget {
+    /// The most segments recorded ([`MAX_SEGMENTS`] by default).
+    pub segments: usize,
+    /// The most intersection tests made ([`MAX_TESTS`] by default).
+    pub tests: u64,
+}
+
+impl Budget {
+    /// [`MAX_SEGMENTS`] segments and [`MAX_TESTS`] tests.
+    pub const DEFAULT: Self = Self {
+        segments: MAX_SEGMENTS,
+        tests: MAX_TESTS,
+    };
+}
+
+impl Default for Budget {
+    fn default() -> Self {
+        Self::DEFAULT
+    }
+}
+
+/// Why a trace stopped before every ray was followed to its end.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stop {
+    /// It recorded its budget of segments.
+    Segments(usize),
+    /// It made its budget of intersection tests.
+    Tests(u64),
+    /// It was cancelled ([`Progress::cancel`]).
+    Cancelled,
+}
+
+impl fmt::Display for Stop {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Segments(n) => write!(
+                f,
+                "the trace stopped at its budget of {n} segments: the rays not yet followed are \
+                 left out (fewer rays, a lower max_depth or a higher min_intensity trace fully)"
+            ),
+            Self::Tests(n) => write!(
+                f,
+                "the trace stopped at its budget of {n} intersection tests: the rays not yet \
+                 followed are left out (fewer rays, shapes or reflections trace fully)"
+            ),
+            Self::Cancelled => f.write_str("the trace was cancelled before it finished"),
+        }
+    }
+}
+
+impl Serialize for Stop {
+    /// As its message: the `stopped` of the `trace` command's counts.
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_str(self)
+    }
+}
+
+/// What a trace on another thread shares with the one waiting for it: how far it has got and
+/// whether it should stop. All of it is atomic, so a `&Progress` may be read and cancelled from
+/// any thread while the trace runs.
+#[derive(Debug, Default)]
+pub struct Progress {
+    cancelled: AtomicBool,
+    rays_done: AtomicUsize,
+    rays_total: AtomicUsize,
+}
+
+impl Progress {
+    /// Asks the trace to stop at its next segment ([`Stop::Cancelled`]).
+    pub fn cancel(&self) {
+        self.cancelled.store(true, Ordering::Relaxed);
+    }
+
+    /// Whether [`Self::cancel`] was called.
+    #[must_use]
+    pub fn is_cancelled(&self) -> bool {
+        self.cancelled.load(Ordering::Relaxed)
+    }
+
+    /// The fraction of source rays (over all colours) followed to their end so far, 0 to 1.
+    #[must_use]
+    pub fn fraction(&self) -> f64 {
+        let total = self.rays_total.load(Ordering::Relaxed);
+        let done = self.rays_done.load(Ordering::Relaxed);
+        if total == 0 {
+            0.0
+        } else {
+            (done as f64 / total as f64).min(1.0)
+        }
+    }
+}
 
 /// What the tracer computed: the measure of the work each effect costs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
@@ -40,8 +142,10 @@ pub struct Counts {
     pub segments: usize,
     /// Paths recorded: source rays and spawned reflections.
     pub paths: usize,
-    /// Whether the trace stopped at [`MAX_SEGMENTS`].
+    /// Whether the trace stopped before it finished (see [`Self::stopped`]).
     pub truncated: bool,
+    /// Why it stopped before it finished, if it did: its message in the JSON, `null` otherwise.
+    pub stopped: Option<Stop>,
 }
 
 impl fmt::Display for Counts {
@@ -64,8 +168,8 @@ impl fmt::Display for Counts {
         for (name, count) in rows {
             writeln!(f, "{name:<28}{count}")?;
         }
-        if self.truncated {
-            writeln!(f, "stopped at {MAX_SEGMENTS} segments")?;
+        if let Some(stop) = self.stopped {
+            writeln!(f, "{stop}")?;
         }
         Ok(())
     }
@@ -171,7 +275,7 @@ pub enum End {
     MaxDepth,
     /// Its intensity fell below the scene's minimum.
     Faint,
-    /// The trace reached [`MAX_SEGMENTS`].
+    /// The trace stopped here, at its [`Budget`] or cancelled ([`Counts::stopped`]).
     Truncated,
 }
 
@@ -268,6 +372,9 @@ struct Ray {
 struct Tracer<'a> {
     scene: &'a Scene,
     trace: &'a mut Trace,
+    bvh: Bvh<'a>,
+    budget: Budget,
+    progress: &'a Progress,
     pending: Vec<Ray>,
     /// The position in [`Trace::paths`] of the path being followed.
     path: usize,
@@ -292,6 +399,12 @@ impl Scene {
     /// what an editor calls on every drag, where allocating afresh would cost more than the
     /// tracing itself.
     pub fn retrace(&self, trace: &mut Trace) {
+        self.retrace_within(trace, Budget::DEFAULT, &Progress::default());
+    }
+
+    /// [`Self::retrace`] within `budget`, reporting to `progress` and stopping when it is
+    /// cancelled: what a trace on another thread calls.
+    pub fn retrace_within(&self, trace: &mut Trace, budget: Budget, progress: &Progress) {
         trace.bounds = self.bounds();
         trace.segments.clear();
         trace.paths.clear();
@@ -300,6 +413,9 @@ impl Scene {
         Tracer {
             scene: self,
             trace,
+            bvh: Bvh::new(self),
+            budget,
+            progress,
             pending: Vec::new(),
             path: 0,
         }
@@ -311,7 +427,11 @@ impl Tracer<'_> {
     fn run(&mut self) {
         let scene = self.scene;
         let effects = scene.effects();
-        for colour in scene.source().colours(effects.dispersion) {
+        let colours = scene.source().colours(effects.dispersion);
+        self.progress
+            .rays_total
+            .store(colours.len() * scene.source().rays, Ordering::Relaxed);
+        for colour in colours {
             self.trace.counts.wavelengths += 1;
             let wavelength = traced_wavelength(colour);
             let indices: Vec<f64> = scene.media().iter().map(|m| m.index(wavelength)).collect();
@@ -328,6 +448,7 @@ impl Tracer<'_> {
                 while let Some(ray) = self.pending.pop() {
                     self.follow(ray, colour, &indices);
                 }
+                self.progress.rays_done.fetch_add(1, Ordering::Relaxed);
                 if self.trace.counts.truncated {
                     return;
                 }
@@ -359,6 +480,19 @@ impl Tracer<'_> {
         });
     }
 
+    /// Why the trace must stop before its next segment, if it must.
+    fn over_budget(&self) -> Option<Stop> {
+        if self.trace.segments.len() >= self.budget.segments {
+            Some(Stop::Segments(self.budget.segments))
+        } else if self.bvh.tests() >= self.budget.tests {
+            Some(Stop::Tests(self.budget.tests))
+        } else if self.progress.is_cancelled() {
+            Some(Stop::Cancelled)
+        } else {
+            None
+        }
+    }
+
     fn is_faint(&self, intensity: Option<Intensity>) -> bool {
         intensity.is_some_and(|i| i.total() < self.scene.effects().min_intensity)
     }
@@ -368,14 +502,15 @@ impl Tracer<'_> {
         let scene = self.scene;
         let first_segment = self.trace.segments.len();
         self.path = self.trace.paths.len();
-        let mut medium = scene.medium_where(ray.origin, None);
+        let mut medium = self.bvh.medium_where(scene, ray.origin, None);
         let end = loop {
-            if self.trace.segments.len() >= MAX_SEGMENTS {
+            if let Some(stop) = self.over_budget() {
                 self.trace.counts.truncated = true;
+                self.trace.counts.stopped = Some(stop);
                 break End::Truncated;
             }
             let (origin, d) = (ray.origin, ray.direction);
-            let Some((shape, crossing)) = scene.first_crossing(origin, d) else {
+            let Some((shape, crossing)) = self.bvh.first_crossing(origin, d) else {
                 let to = origin + d * self.trace.bounds.exit(origin, d);
                 self.segment(origin, to, medium, colour, &mut ray);
                 break End::Escaped;
@@ -391,8 +526,8 @@ impl Tracer<'_> {
                 Side::Leaving
             };
             let entering = side == Side::Entering;
-            let before = scene.medium_where(x, Some((shape, !entering)));
-            let after = scene.medium_where(x, Some((shape, entering)));
+            let before = self.bvh.medium_where(scene, x, Some((shape, !entering)));
+            let after = self.bvh.medium_where(scene, x, Some((shape, entering)));
             self.segment(origin, x, before, colour, &mut ray);
             ray.origin = x;
             medium = after;

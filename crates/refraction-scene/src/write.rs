@@ -4,42 +4,60 @@
 
 use toml::Spanned;
 
-use super::format::{
-    CauchySpec, MediumSpec, SceneFile, SellmeierSpec, ShapeSpec, SourceSpec, ViewSpec,
+use super::spec::{
+    CauchySpec, CircleSpec, EffectsSpec, LensSpec, LineSpec, MediumSpec, Pair, PolygonSpec,
+    SceneFile, SegmentSpec, SellmeierSpec, ShapeTable, SourceSpec, ViewSpec,
 };
-use super::{Dispersion, Light, Medium, Scene, Shape, SourceKind};
+use super::{Dispersion, Effects, Light, Medium, Scene, Shape, SourceKind};
+use glam::DVec2;
 
 /// A value with no place in a file: written values carry no span.
 fn unplaced<T>(value: T) -> Spanned<T> {
     Spanned::new(0..0, value)
 }
 
+fn pair(v: DVec2) -> Spanned<Pair> {
+    unplaced(Pair(v.to_array()))
+}
+
 fn medium_spec(medium: &Medium) -> MediumSpec {
     let (index, cauchy, sellmeier) = match &medium.dispersion {
-        Dispersion::Constant(n) => (Some(*n), None, None),
+        Dispersion::Constant(n) => (Some(unplaced(*n)), None, None),
         Dispersion::Cauchy { a, b, c } => (
             None,
-            Some(CauchySpec {
+            Some(unplaced(CauchySpec {
                 a: *a,
                 b: *b,
                 c: *c,
-            }),
+            })),
             None,
         ),
         Dispersion::Sellmeier { b, c } => (
             None,
             None,
-            Some(SellmeierSpec {
+            Some(unplaced(SellmeierSpec {
                 b: b.clone(),
                 c: c.clone(),
-            }),
+            })),
         ),
     };
     MediumSpec {
         index,
         cauchy,
         sellmeier,
-        absorption: medium.absorption,
+        absorption: Some(unplaced(medium.absorption)),
+    }
+}
+
+/// Every effect written out, so that the file says what is traced.
+fn effects_spec(e: &Effects) -> EffectsSpec {
+    EffectsSpec {
+        partial_reflection: Some(e.partial_reflection),
+        fresnel: Some(e.fresnel),
+        dispersion: Some(e.dispersion),
+        absorption: Some(e.absorption),
+        max_depth: Some(unplaced(e.max_depth)),
+        min_intensity: Some(unplaced(e.min_intensity)),
     }
 }
 
@@ -53,39 +71,54 @@ impl Scene {
         )
     }
 
-    fn shape_spec(&self, shape: &Shape) -> ShapeSpec {
+    fn shape_spec(&self, shape: &Shape) -> ShapeTable {
         match shape {
             Shape::Line {
                 point,
                 normal,
                 medium,
-            } => ShapeSpec::Line {
-                point: point.to_array(),
-                normal: normal.to_array(),
-                medium: self.medium_name(*medium),
+            } => ShapeTable {
+                line: Some(unplaced(LineSpec {
+                    point: pair(*point),
+                    normal: pair(*normal),
+                    medium: self.medium_name(*medium),
+                })),
+                ..ShapeTable::default()
             },
-            Shape::Segment { from, to } => ShapeSpec::Segment {
-                from: from.to_array(),
-                to: to.to_array(),
+            Shape::Segment { from, to } => ShapeTable {
+                segment: Some(unplaced(SegmentSpec {
+                    from: pair(*from),
+                    to: pair(*to),
+                })),
+                ..ShapeTable::default()
             },
             Shape::Circle {
                 center,
                 radius,
                 medium,
-            } => ShapeSpec::Circle {
-                center: center.to_array(),
-                radius: *radius,
-                medium: self.medium_name(*medium),
+            } => ShapeTable {
+                circle: Some(unplaced(CircleSpec {
+                    center: pair(*center),
+                    radius: unplaced(*radius),
+                    medium: self.medium_name(*medium),
+                })),
+                ..ShapeTable::default()
             },
-            Shape::Polygon { points, medium } => ShapeSpec::Polygon {
-                points: points.iter().map(|p| p.to_array()).collect(),
-                medium: self.medium_name(*medium),
+            Shape::Polygon { points, medium } => ShapeTable {
+                polygon: Some(unplaced(PolygonSpec {
+                    points: unplaced(points.iter().map(|p| pair(*p)).collect()),
+                    medium: self.medium_name(*medium),
+                })),
+                ..ShapeTable::default()
             },
-            Shape::Lens { lens, medium } => ShapeSpec::Lens {
-                center: lens.center.to_array(),
-                thickness: lens.thickness,
-                radii: lens.radii,
-                medium: self.medium_name(*medium),
+            Shape::Lens { lens, medium } => ShapeTable {
+                lens: Some(unplaced(LensSpec {
+                    center: pair(lens.center),
+                    thickness: unplaced(lens.thickness),
+                    radii: unplaced(Pair(lens.radii)),
+                    medium: self.medium_name(*medium),
+                })),
+                ..ShapeTable::default()
             },
         }
     }
@@ -94,13 +127,13 @@ impl Scene {
         let s = &self.source;
         SourceSpec {
             kind: s.kind,
-            origin: s.origin.to_array(),
-            direction: s.direction.to_array(),
-            rays: (s.kind != SourceKind::Ray).then_some(s.rays),
-            width: (s.kind == SourceKind::Beam).then_some(s.width),
-            spread_deg: (s.kind == SourceKind::Fan).then_some(s.spread_deg),
+            origin: pair(s.origin),
+            direction: pair(s.direction),
+            rays: (s.kind != SourceKind::Ray).then(|| unplaced(s.rays)),
+            width: (s.kind == SourceKind::Beam).then(|| unplaced(s.width)),
+            spread_deg: (s.kind == SourceKind::Fan).then(|| unplaced(s.spread_deg)),
             wavelength_nm: match s.light {
-                Light::Wavelength(nm) => Some(nm),
+                Light::Wavelength(nm) => Some(unplaced(nm)),
                 Light::White => None,
             },
             white: s.light == Light::White,
@@ -132,11 +165,11 @@ impl Scene {
                 .map(|s| unplaced(self.shape_spec(s)))
                 .collect(),
             source: unplaced(self.source_spec()),
-            effects: Some(unplaced(self.effects)),
+            effects: Some(unplaced(effects_spec(&self.effects))),
             view: self.view.map(|v| {
                 unplaced(ViewSpec {
-                    min: v.min.to_array(),
-                    max: v.max.to_array(),
+                    min: pair(v.min),
+                    max: pair(v.max),
                 })
             }),
         };
