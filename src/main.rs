@@ -35,9 +35,27 @@ enum Command {
     /// Answers each line with "ok", "matches" (chosen, wrong_side, wrong_bend, reversed,
     /// total_internal_reflection or null) and "explanation"; a summary of the mistakes goes to
     /// stderr. Exit status 0 when every line is ok, 1 otherwise.
+    ///
+    /// With --api, each line is the call your code made in that API's own terms (glsl:
+    /// {"I","N","eta","result"}; pbrt: {"wi","n","eta","returned","wt"}; rtiow:
+    /// {"uv","n","etai_over_etat","refracted"}; mitsuba: {"wi","n","eta","wo"}), with optional
+    /// truth "from", "to", "travel", "entering"; the answer adds "api_result" and "mistakes".
     Check {
         /// JSON Lines file to read (stdin when absent).
         file: Option<PathBuf>,
+        /// Check calls of this API: glsl (or hlsl, wgsl, glm, glam), pbrt, rtiow, mitsuba.
+        #[arg(long, value_name = "NAME", value_parser = commands::lines::parse_api)]
+        api: Option<refraction_kernel::api::Api>,
+        /// The index inside the object: with --outside, "entering" gives "from" and "to".
+        #[arg(long, value_name = "X", requires_all = ["api", "outside"])]
+        inside: Option<f64>,
+        /// The index outside the object.
+        #[arg(long, value_name = "Y", requires_all = ["api", "inside"])]
+        outside: Option<f64>,
+        /// The precision your code computes in, unless a line says (default: f32 for glsl,
+        /// pbrt and mitsuba, f64 for rtiow).
+        #[arg(long, value_name = "f32|f64", requires = "api", value_parser = commands::lines::parse_precision)]
+        precision: Option<refraction_explorer::lines::solve::Precision>,
     },
     /// Measure what accuracy costs in time: every kernel variant at f32 and f64, timed on
     /// this machine and compared with a double-double oracle.
@@ -93,7 +111,24 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Some(Command::Solve) => commands::lines::solve(),
-        Some(Command::Check { file }) => commands::lines::check(file.as_deref()),
+        Some(Command::Check {
+            file, api: None, ..
+        }) => commands::lines::check(file.as_deref()),
+        Some(Command::Check {
+            file,
+            api: Some(api),
+            inside,
+            outside,
+            precision,
+        }) => commands::lines::check_api(
+            file.as_deref(),
+            &refraction_explorer::lines::api_check::Options {
+                api,
+                inside,
+                outside,
+                precision,
+            },
+        ),
         Some(Command::Bench { quick, json, plot }) => {
             commands::bench::run(quick, json, plot.as_deref())
         }

@@ -5,8 +5,11 @@ use std::io::{self, BufRead};
 use std::path::Path;
 use std::process::ExitCode;
 
+use refraction_explorer::lines::api_check::{Options, Session};
 use refraction_explorer::lines::check::{self, Match};
+use refraction_explorer::lines::solve::Precision;
 use refraction_explorer::lines::{self as jsonl, solve as solver};
+use refraction_kernel::api::Api;
 
 use super::{fail, output_error};
 
@@ -19,14 +22,68 @@ pub fn solve() -> ExitCode {
     }
 }
 
+/// Reads `--api NAME`.
+///
+/// # Errors
+/// An unknown name; the message lists the known ones.
+pub fn parse_api(name: &str) -> Result<Api, String> {
+    Api::from_name(name).ok_or_else(|| {
+        format!("unknown API \"{name}\": expected glsl (or hlsl, wgsl, glm, glam), pbrt, rtiow or mitsuba")
+    })
+}
+
+/// Reads `--precision f32|f64`.
+///
+/// # Errors
+/// Anything else.
+pub fn parse_precision(name: &str) -> Result<Precision, String> {
+    match name {
+        "f32" | "float" => Ok(Precision::F32),
+        "f64" | "double" => Ok(Precision::F64),
+        _ => Err(format!("unknown precision \"{name}\": expected f32 or f64")),
+    }
+}
+
+/// `file`, or stdin when absent.
+fn open_input(file: Option<&Path>) -> Result<Box<dyn BufRead>, ExitCode> {
+    match file {
+        None => Ok(Box::new(io::stdin().lock())),
+        Some(path) => match std::fs::File::open(path) {
+            Ok(f) => Ok(Box::new(io::BufReader::new(f))),
+            Err(e) => Err(fail(
+                "check",
+                &format!("cannot read {}: {e}", path.display()),
+            )),
+        },
+    }
+}
+
+/// Runs `check --api` on `file` or stdin, with a tally of the mistakes on stderr.
+pub fn check_api(file: Option<&Path>, options: &Options) -> ExitCode {
+    let input = match open_input(file) {
+        Ok(input) => input,
+        Err(code) => return code,
+    };
+    let mut session = Session::new(*options);
+    let result = jsonl::answer_lines(input, io::stdout().lock(), |line| session.answer(line));
+    match result {
+        Ok(answered) => {
+            eprintln!("check: {}", session.tally.summary());
+            if answered && session.all_ok() {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::from(1)
+            }
+        }
+        Err(e) => output_error("check", &e),
+    }
+}
+
 /// Runs `check` on `file` or stdin, with a tally of the mistakes on stderr.
 pub fn check(file: Option<&Path>) -> ExitCode {
-    let input: Box<dyn BufRead> = match file {
-        None => Box::new(io::stdin().lock()),
-        Some(path) => match std::fs::File::open(path) {
-            Ok(f) => Box::new(io::BufReader::new(f)),
-            Err(e) => return fail("check", &format!("cannot read {}: {e}", path.display())),
-        },
+    let input = match open_input(file) {
+        Ok(input) => input,
+        Err(code) => return code,
     };
     let mut tally: BTreeMap<&'static str, usize> = BTreeMap::new();
     let mut all_ok = true;

@@ -2,9 +2,11 @@
 //! file (one `solve` line). [`answer_lines`] is the loop both commands share: one answer per
 //! non-empty input line, in order, streaming, with bad lines answered rather than fatal.
 
+pub mod api_check;
 pub mod check;
 pub mod solve;
 pub mod state_file;
+pub mod vector_text;
 
 use std::io::{self, BufRead, Write};
 

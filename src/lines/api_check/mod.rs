@@ -1,0 +1,161 @@
+//! `check --api NAME`: a student's call checked in their own API's conventions. Each line
+//! carries the API's own argument names and what came back (see [`fields`]), with optional
+//! truth (`from`, `to`, `travel`, `entering`); the answer says whether the call is right, which
+//! mistakes explain what came back ([`Code`]), what the API returns for these arguments and the
+//! physically right T.
+//!
+//! The diagnosis tries every combination of the argument mistakes (`eta_inverted`,
+//! `incident_reversed`, `normal_not_facing`, `not_unit_input`) against the API's contract and
+//! the truth, keeps the fewest that fit (all of them when several fit equally, the likeliest
+//! first), and compares what came back with what the API returns for the arguments as logged
+//! (`not_the_api_result`, `missed_tir`), within the rounding of the logged digits.
+//!
+//! For the explorer: [`Record::from_texts`] reads the API's fields from text, [`Call::from_record`]
+//! makes the call, [`diagnose`] judges it; [`fields::names`] gives each API's field names.
+
+pub mod call;
+pub mod code;
+pub mod diagnose;
+mod explain;
+pub mod fields;
+pub mod readings;
+pub mod record;
+pub mod result;
+
+use std::collections::BTreeMap;
+
+use serde::Serialize;
+
+pub use call::{Call, Options};
+pub use code::Code;
+pub use diagnose::{Diagnosis, diagnose};
+pub use record::Record;
+
+use crate::lines::check::{self, Match};
+
+/// The JSON answer for one call.
+#[derive(Serialize)]
+struct Answer<'a> {
+    #[serde(flatten)]
+    verdict: check::Answer<'a>,
+    api_result: &'a serde_json::Value,
+    mistakes: Vec<&'static str>,
+    alternatives: Vec<Vec<&'static str>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    path: Option<&'a str>,
+}
+
+/// The answer line for a judged call.
+#[must_use]
+pub fn answer_line(call: &Call, diagnosis: &Diagnosis) -> String {
+    let names = |codes: &[Code]| codes.iter().map(|c| c.name()).collect::<Vec<_>>();
+    let answer = Answer {
+        verdict: check::Answer {
+            ok: diagnosis.ok,
+            matches: diagnosis.matches.map(Match::name),
+            explanation: &diagnosis.explanation,
+            t: diagnosis.t,
+        },
+        api_result: &diagnosis.api_result,
+        mistakes: names(&diagnosis.mistakes),
+        alternatives: diagnosis.alternatives.iter().map(|a| names(a)).collect(),
+        path: call.path.as_deref(),
+    };
+    // Serialising this struct of plain fields cannot fail; a map key is never non-string.
+    serde_json::to_string(&answer).unwrap_or_default()
+}
+
+/// Judges one record.
+///
+/// # Errors
+/// The record is not a complete call (see [`Call::from_record`]) or does not fit the precision.
+pub fn check_record(record: &Record, options: &Options) -> Result<(Call, Diagnosis), String> {
+    let call = Call::from_record(record, options)?;
+    let diagnosis = diagnose(&call)?;
+    Ok((call, diagnosis))
+}
+
+/// Counts of verdicts by mistake, for the summary on stderr.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Tally {
+    counts: BTreeMap<&'static str, usize>,
+}
+
+impl Tally {
+    /// Counts one more `kind`.
+    pub fn add(&mut self, kind: &'static str) {
+        *self.counts.entry(kind).or_default() += 1;
+    }
+
+    /// Counts a verdict: `ok`, or each mistake of its likeliest explanation (`unexplained`
+    /// when none fits).
+    pub fn add_verdict(&mut self, diagnosis: &Diagnosis) {
+        match diagnosis.alternatives.first() {
+            _ if diagnosis.ok => self.add("ok"),
+            Some(codes) => codes.iter().for_each(|c| self.add(c.name())),
+            None => self.add("unexplained"),
+        }
+    }
+
+    /// `2 ok, 1 eta_inverted, ...`.
+    #[must_use]
+    pub fn summary(&self) -> String {
+        let parts: Vec<String> = self
+            .counts
+            .iter()
+            .map(|(k, n)| format!("{n} {k}"))
+            .collect();
+        parts.join(", ")
+    }
+}
+
+/// One run of `check --api`: lines in, answer lines out, the tally kept.
+#[derive(Debug)]
+pub struct Session {
+    options: Options,
+    /// The verdicts so far.
+    pub tally: Tally,
+    all_ok: bool,
+}
+
+impl Session {
+    /// A run for `options`.
+    #[must_use]
+    pub fn new(options: Options) -> Self {
+        Self {
+            options,
+            tally: Tally::default(),
+            all_ok: true,
+        }
+    }
+
+    /// Answers one JSON line.
+    ///
+    /// # Errors
+    /// Why the line cannot be judged; the loop answers it with `{"line", "error"}`.
+    pub fn answer(&mut self, line: &str) -> Result<String, String> {
+        let judged = Record::from_json_line(self.options.api, line)
+            .and_then(|record| check_record(&record, &self.options));
+        match judged {
+            Ok((call, diagnosis)) => {
+                self.tally.add_verdict(&diagnosis);
+                self.all_ok &= diagnosis.ok;
+                Ok(answer_line(&call, &diagnosis))
+            }
+            Err(e) => {
+                self.tally.add("unreadable");
+                self.all_ok = false;
+                Err(e)
+            }
+        }
+    }
+
+    /// Whether every line so far was right.
+    #[must_use]
+    pub fn all_ok(&self) -> bool {
+        self.all_ok
+    }
+}
+
+#[cfg(test)]
+mod tests;

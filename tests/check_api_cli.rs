@@ -1,0 +1,97 @@
+//! `check --api` end to end: answers in the API's terms, the tally of mistakes by code on
+//! stderr, the exit status, and `check` without `--api` untouched.
+
+use std::process::{Command, Output};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use serde_json::Value;
+
+/// Runs the binary with `args` on a file holding `input`.
+pub fn run(args: &[&str], input: &str) -> Output {
+    static RUNS: AtomicUsize = AtomicUsize::new(0);
+    let name = format!(
+        "api-{}-{}.log",
+        std::process::id(),
+        RUNS.fetch_add(1, Ordering::Relaxed)
+    );
+    let path = std::env::temp_dir().join(name);
+    std::fs::write(&path, input).unwrap();
+    let output = Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
+        .args(args)
+        .arg(&path)
+        .output()
+        .unwrap();
+    std::fs::remove_file(&path).unwrap();
+    output
+}
+
+fn answers(output: &Output) -> Vec<Value> {
+    String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
+#[test]
+fn glsl_lines_are_answered_with_the_api_result_and_a_tally_by_code() {
+    let input = [
+        // Right: air into glass at 40 degrees.
+        r#"{"I":[0.642788,-0.766044,0],"N":[0,1,0],"eta":0.666667,"result":[0.428525,-0.90353,0],"from":1,"to":1.5}"#,
+        // eta upside down, as GLSL computes it.
+        r#"{"I":[0.3,-0.953939,0],"N":[0,1,0],"eta":1.5,"result":"vec3(0.45, -0.893029, 0)","from":1,"to":1.5}"#,
+        // Past the critical angle: GLSL returns zero, the code normalised it.
+        r#"{"I":[0.8,0.6,0],"N":[0,-1,0],"eta":1.5,"result":[null,null,null]}"#,
+        r#"{"I":[1,0,0]}"#,
+    ]
+    .join("\n");
+    let output = run(&["check", "--api", "hlsl"], &input);
+    assert_eq!(output.status.code(), Some(1));
+    let a = answers(&output);
+    assert_eq!(a.len(), 4);
+    assert_eq!(
+        (a[0]["ok"].clone(), a[0]["mistakes"].clone()),
+        (true.into(), serde_json::json!([]))
+    );
+    assert_eq!(a[1]["mistakes"], serde_json::json!(["eta_inverted"]));
+    assert_eq!(a[1]["api_result"].as_array().unwrap().len(), 3);
+    assert_eq!(a[2]["mistakes"], serde_json::json!(["missed_tir"]));
+    assert_eq!(a[2]["api_result"], serde_json::json!([0.0, 0.0, 0.0]));
+    assert_eq!(a[3]["line"], 4);
+    assert!(
+        a[3]["error"]
+            .as_str()
+            .unwrap()
+            .contains("missing field `N`")
+    );
+    let tally = String::from_utf8_lossy(&output.stderr);
+    for part in ["1 ok", "1 eta_inverted", "1 missed_tir", "1 unreadable"] {
+        assert!(tally.contains(part), "{tally}");
+    }
+}
+
+#[test]
+fn a_right_pbrt_call_exits_zero_and_bad_names_are_refused() {
+    let line = r#"{"wi":[-0.642788,0.766044,0],"n":[0,1,0],"eta":1.5,"returned":true,"wt":[0.428525,-0.90353,0],"entering":true}"#;
+    let output = run(
+        &[
+            "check",
+            "--api",
+            "pbrt",
+            "--inside",
+            "1.5",
+            "--outside",
+            "1",
+        ],
+        line,
+    );
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stdout)
+    );
+    let refused = run(&["check", "--api", "optix"], "");
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("expected glsl"));
+    let lonely = run(&["check", "--api", "pbrt", "--inside", "1.5"], "");
+    assert_eq!(lonely.status.code(), Some(2));
+}
