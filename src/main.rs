@@ -56,6 +56,16 @@ enum Command {
         /// pbrt and mitsuba, f64 for rtiow).
         #[arg(long, value_name = "f32|f64", requires = "api", value_parser = commands::lines::parse_precision)]
         precision: Option<refraction_explorer::lines::solve::Precision>,
+        /// Read printf-style log lines: each {field} takes a number or a vector as programs
+        /// print it, {_} anything; lines that do not match are skipped and counted.
+        #[arg(long, value_name = "PATTERN", requires = "api", conflicts_with = "csv")]
+        pattern: Option<String>,
+        /// Read CSV with a header line naming the fields.
+        #[arg(long, requires = "api")]
+        csv: bool,
+        /// With --pattern, answer a line that does not match with an error instead of skipping it.
+        #[arg(long, requires = "pattern")]
+        strict: bool,
     },
     /// Measure what accuracy costs in time: every kernel variant at f32 and f64, timed on
     /// this machine and compared with a double-double oracle.
@@ -120,6 +130,9 @@ fn main() -> ExitCode {
             inside,
             outside,
             precision,
+            pattern,
+            csv,
+            strict,
         }) => commands::lines::check_api(
             file.as_deref(),
             &refraction_explorer::lines::api_check::Options {
@@ -127,6 +140,11 @@ fn main() -> ExitCode {
                 inside,
                 outside,
                 precision,
+            },
+            &commands::lines::Reading {
+                pattern: pattern.as_deref(),
+                csv,
+                strict,
             },
         ),
         Some(Command::Bench { quick, json, plot }) => {

@@ -95,3 +95,70 @@ fn a_right_pbrt_call_exits_zero_and_bad_names_are_refused() {
     let lonely = run(&["check", "--api", "pbrt", "--inside", "1.5"], "");
     assert_eq!(lonely.status.code(), Some(2));
 }
+
+const RTIOW_LOG: &str = "render start\n\
+LOG 0.642788 -0.766044 0 | 0 1 0 | 0.666667 | 0.428525 -0.90353 0 | 1\n\
+sky hit\n\
+LOG vec3(0.642788, -0.766044, 0) | vec3(0, 1, 0) | 1.5 | vec3(0.964182, -0.265242, 0) | true\n";
+
+const RTIOW_PATTERN: &str = "LOG {uv} | {n} | {etai_over_etat} | {refracted} | {entering}";
+
+#[test]
+fn a_printf_log_is_read_with_a_pattern_and_its_other_lines_skipped() {
+    let args = [
+        "check",
+        "--api",
+        "rtiow",
+        "--inside",
+        "1.5",
+        "--outside",
+        "1",
+        "--pattern",
+        RTIOW_PATTERN,
+    ];
+    let output = run(&args, RTIOW_LOG);
+    let a = answers(&output);
+    assert_eq!(a.len(), 2, "{a:?}");
+    assert_eq!(a[0]["ok"], true);
+    assert_eq!(a[1]["mistakes"], serde_json::json!(["eta_inverted"]));
+    let tally = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        tally.contains("2 skipped (not matching the pattern)"),
+        "{tally}"
+    );
+    let strict = run(&[&args[..], &["--strict"]].concat(), RTIOW_LOG);
+    let a = answers(&strict);
+    assert_eq!(a.len(), 4);
+    assert_eq!(a[0]["line"], 1);
+    assert!(
+        a[0]["error"]
+            .as_str()
+            .unwrap()
+            .contains("does not match the pattern")
+    );
+    assert_eq!(strict.status.code(), Some(1));
+    let bad = run(&["check", "--api", "rtiow", "--pattern", "LOG {I}"], "");
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("unknown field {I}"));
+}
+
+#[test]
+fn a_csv_log_is_read_by_its_header() {
+    let csv = "step,I.x,I.y,I.z,N,eta,result,from,to\n\
+               1,0.642788,-0.766044,0,\"0, 1, 0\",0.666667,\"0.428525, -0.90353, 0\",1,1.5\n\
+               2,0.642788,-0.766044,0,\"0, -1, 0\",0.666667,\"0.428525, 0.90353, 0\",1,1.5\n";
+    let output = run(&["check", "--api", "glsl", "--csv"], csv);
+    let a = answers(&output);
+    assert_eq!(a.len(), 2, "{a:?}");
+    assert_eq!(a[0]["ok"], true, "{}", a[0]);
+    assert_eq!(a[1]["mistakes"][0], "normal_not_facing", "{}", a[1]);
+    let headless = run(&["check", "--api", "glsl", "--csv"], "I,eta\n1 2 3,1.5\n");
+    let a = answers(&headless);
+    assert!(a[0]["error"].as_str().unwrap().contains("no column `N`"));
+    assert!(
+        a[1]["error"]
+            .as_str()
+            .unwrap()
+            .contains("no usable CSV header")
+    );
+}

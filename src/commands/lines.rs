@@ -5,7 +5,7 @@ use std::io::{self, BufRead};
 use std::path::Path;
 use std::process::ExitCode;
 
-use refraction_explorer::lines::api_check::{Options, Session};
+use refraction_explorer::lines::api_check::{Format, Options, Pattern, Session};
 use refraction_explorer::lines::check::{self, Match};
 use refraction_explorer::lines::solve::Precision;
 use refraction_explorer::lines::{self as jsonl, solve as solver};
@@ -58,13 +58,31 @@ fn open_input(file: Option<&Path>) -> Result<Box<dyn BufRead>, ExitCode> {
     }
 }
 
+/// How `check --api` reads its lines.
+pub struct Reading<'a> {
+    /// `--pattern`.
+    pub pattern: Option<&'a str>,
+    /// `--csv`.
+    pub csv: bool,
+    /// `--strict`.
+    pub strict: bool,
+}
+
 /// Runs `check --api` on `file` or stdin, with a tally of the mistakes on stderr.
-pub fn check_api(file: Option<&Path>, options: &Options) -> ExitCode {
+pub fn check_api(file: Option<&Path>, options: &Options, reading: &Reading<'_>) -> ExitCode {
+    let format = match (reading.pattern, reading.csv) {
+        (Some(text), _) => match Pattern::parse(options.api, text) {
+            Ok(pattern) => Format::Pattern(pattern),
+            Err(e) => return fail("check", &e),
+        },
+        (None, true) => Format::Csv,
+        (None, false) => Format::JsonLines,
+    };
     let input = match open_input(file) {
         Ok(input) => input,
         Err(code) => return code,
     };
-    let mut session = Session::new(*options);
+    let mut session = Session::new(*options, format, reading.strict);
     let result = jsonl::answer_lines(input, io::stdout().lock(), |line| session.answer(line));
     match result {
         Ok(answered) => {

@@ -19,7 +19,9 @@ pub fn error_line(line: usize, message: &str) -> String {
 /// Writes `answer(line)` for every non-empty line of `input` to `output`, one line at a time
 /// (nothing is held beyond the current line). A line that `answer` rejects, or that is not
 /// UTF-8, is answered with `{"line": K, "error": "..."}` (K counts every input line from 1) and
-/// the run goes on. Returns whether every line was answered without error.
+/// the run goes on. An empty answer writes nothing (a log line that is not a call, a CSV
+/// header); an answer may hold several lines. Returns whether every line was answered without
+/// error.
 ///
 /// # Errors
 /// Reading `input` or writing `output` failed.
@@ -49,7 +51,9 @@ pub fn answer_lines(
             all_answered = false;
             error_line(number, &message)
         });
-        writeln!(output, "{text}")?;
+        if !text.is_empty() {
+            writeln!(output, "{text}")?;
+        }
     }
     output.flush()?;
     Ok(all_answered)

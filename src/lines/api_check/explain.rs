@@ -394,13 +394,21 @@ fn unexplained(ctx: &Context<'_>) -> String {
     }
 }
 
+/// `text` with its first letter in upper case.
+fn capitalised(text: &str) -> String {
+    let mut chars = text.chars();
+    chars.next().map_or_else(String::new, |first| {
+        first.to_uppercase().chain(chars).collect()
+    })
+}
+
 /// The explanation of one verdict.
 #[must_use]
 pub fn explanation(ctx: &Context<'_>) -> String {
     let Some(best) = ctx.readings.first() else {
         let mut text = unexplained(ctx);
         if let Some((code, looks)) = ctx.finding {
-            text = format!("{text} {}", result_sentence(ctx, code, looks));
+            text = format!("{text} {}", capitalised(&result_sentence(ctx, code, looks)));
         }
         return text;
     };
@@ -413,6 +421,9 @@ pub fn explanation(ctx: &Context<'_>) -> String {
         sentences.push(result_sentence(ctx, code, looks));
     }
     sentences.extend(ties_sentence(ctx));
+    for sentence in &mut sentences {
+        *sentence = capitalised(sentence);
+    }
     if sentences.is_empty() {
         let right = match ctx.seen {
             Seen::Nothing(what) => format!(

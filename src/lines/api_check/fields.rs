@@ -85,13 +85,10 @@ pub fn all(api: Api) -> Vec<(&'static str, Kind)> {
     fields
 }
 
-/// The kind of field `name` for `api`, or `None` when `api`'s lines have no such field.
+/// Field `name` of `api`'s lines with its kind, or `None` when they have no such field.
 #[must_use]
-pub fn kind(api: Api, name: &str) -> Option<Kind> {
-    all(api)
-        .into_iter()
-        .find(|(field, _)| *field == name)
-        .map(|(_, kind)| kind)
+pub fn find(api: Api, name: &str) -> Option<(&'static str, Kind)> {
+    all(api).into_iter().find(|(field, _)| *field == name)
 }
 
 /// The field names of `api`, for messages: `I, N, eta, result, from, to, ...`.

@@ -15,9 +15,11 @@
 
 pub mod call;
 pub mod code;
+pub mod csv;
 pub mod diagnose;
 mod explain;
 pub mod fields;
+pub mod pattern;
 pub mod readings;
 pub mod record;
 pub mod result;
@@ -29,6 +31,7 @@ use serde::Serialize;
 pub use call::{Call, Options};
 pub use code::Code;
 pub use diagnose::{Diagnosis, diagnose};
+pub use pattern::Pattern;
 pub use record::Record;
 
 use crate::lines::check::{self, Match};
@@ -109,33 +112,84 @@ impl Tally {
     }
 }
 
+/// How the lines are written.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Format {
+    /// One JSON object per line (the default).
+    JsonLines,
+    /// printf-style lines read with a `--pattern`.
+    Pattern(Pattern),
+    /// CSV with a header line naming the fields.
+    Csv,
+}
+
+/// The tally's name for log lines that did not match the pattern.
+const SKIPPED: &str = "skipped (not matching the pattern)";
+
 /// One run of `check --api`: lines in, answer lines out, the tally kept.
 #[derive(Debug)]
 pub struct Session {
     options: Options,
+    format: Format,
+    strict: bool,
+    header: Option<Result<csv::Header, String>>,
     /// The verdicts so far.
     pub tally: Tally,
     all_ok: bool,
 }
 
 impl Session {
-    /// A run for `options`.
+    /// A run for `options` reading lines in `format`; with `strict`, a line that does not match
+    /// the pattern is an error instead of skipped.
     #[must_use]
-    pub fn new(options: Options) -> Self {
+    pub fn new(options: Options, format: Format, strict: bool) -> Self {
         Self {
             options,
+            format,
+            strict,
+            header: None,
             tally: Tally::default(),
             all_ok: true,
         }
     }
 
-    /// Answers one JSON line.
+    /// The record on one line, or `None` for a line that carries none (a CSV header, a log
+    /// line the pattern does not match).
+    fn record(&mut self, line: &str) -> Result<Option<Record>, String> {
+        let api = self.options.api;
+        match &self.format {
+            Format::JsonLines => Record::from_json_line(api, line).map(Some),
+            Format::Pattern(pattern) => match pattern.capture(line) {
+                Some(texts) => Record::from_texts(api, texts).map(Some),
+                None if self.strict => Err("the line does not match the pattern".to_owned()),
+                None => {
+                    self.tally.add(SKIPPED);
+                    Ok(None)
+                }
+            },
+            Format::Csv => match &self.header {
+                None => {
+                    let header = csv::Header::parse(api, line);
+                    let reply = header.as_ref().map(|_| None).map_err(Clone::clone);
+                    self.header = Some(header);
+                    reply
+                }
+                Some(Ok(header)) => header.record(line).map(Some),
+                Some(Err(e)) => Err(format!("no usable CSV header: {e}")),
+            },
+        }
+    }
+
+    /// Answers one line: a JSON answer, or nothing for a line without a call.
     ///
     /// # Errors
     /// Why the line cannot be judged; the loop answers it with `{"line", "error"}`.
     pub fn answer(&mut self, line: &str) -> Result<String, String> {
-        let judged = Record::from_json_line(self.options.api, line)
-            .and_then(|record| check_record(&record, &self.options));
+        let judged = match self.record(line) {
+            Ok(None) => return Ok(String::new()),
+            Ok(Some(record)) => check_record(&record, &self.options),
+            Err(e) => Err(e),
+        };
         match judged {
             Ok((call, diagnosis)) => {
                 self.tally.add_verdict(&diagnosis);

@@ -46,7 +46,10 @@ fn is_null_text(text: &str) -> bool {
 }
 
 /// Reads `text` as a value of `kind`, with its significant digits.
-fn from_text(kind: Kind, name: &str, text: &str) -> Result<(Value, u32), String> {
+///
+/// # Errors
+/// The text is not a value of that kind; the message names the field.
+pub fn from_text(kind: Kind, name: &str, text: &str) -> Result<(Value, u32), String> {
     let text = text.trim();
     let wrap = |e: String| format!("`{name}`: {e}");
     match kind {
@@ -168,10 +171,8 @@ impl Record {
     ) -> Result<Self, String> {
         let mut record = Self::default();
         for (name, text) in texts {
-            let (field, kind) = fields::all(api)
-                .into_iter()
-                .find(|(field, _)| *field == name)
-                .ok_or_else(|| format!("unknown field `{name}`"))?;
+            let (field, kind) =
+                fields::find(api, name).ok_or_else(|| format!("unknown field `{name}`"))?;
             record.push(field, from_text(kind, name, text)?);
         }
         Ok(record)

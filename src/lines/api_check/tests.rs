@@ -6,7 +6,7 @@ use refraction_kernel::api::{Api, Args, Returned};
 use serde_json::{Value, json};
 
 use super::fields::names;
-use super::{Code, Options, Session};
+use super::{Code, Format, Options, Session};
 
 fn wide(v: Vec3) -> [f64; 3] {
     v.as_dvec3().to_array()
@@ -62,7 +62,9 @@ fn options(api: Api) -> Options {
 }
 
 fn answer(api: Api, text: &str) -> Value {
-    let reply = Session::new(options(api)).answer(text).unwrap();
+    let reply = Session::new(options(api), Format::JsonLines, false)
+        .answer(text)
+        .unwrap();
     serde_json::from_str(&reply).unwrap()
 }
 
