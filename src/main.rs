@@ -66,6 +66,10 @@ enum Command {
         /// With --pattern, answer a line that does not match with an error instead of skipping it.
         #[arg(long, requires = "pattern")]
         strict: bool,
+        /// Consecutive lines with the same "path" are one ray's hits: after each path, a
+        /// summary line {"path","hits","first_wrong","exit_ok","explanation"}.
+        #[arg(long, requires = "api")]
+        paths: bool,
     },
     /// Measure what accuracy costs in time: every kernel variant at f32 and f64, timed on
     /// this machine and compared with a double-double oracle.
@@ -133,6 +137,7 @@ fn main() -> ExitCode {
             pattern,
             csv,
             strict,
+            paths,
         }) => commands::lines::check_api(
             file.as_deref(),
             &refraction_explorer::lines::api_check::Options {
@@ -145,6 +150,7 @@ fn main() -> ExitCode {
                 pattern: pattern.as_deref(),
                 csv,
                 strict,
+                paths,
             },
         ),
         Some(Command::Bench { quick, json, plot }) => {

@@ -1,7 +1,7 @@
 //! `solve` and `check`: JSON Lines in, one answer per line out.
 
 use std::collections::BTreeMap;
-use std::io::{self, BufRead};
+use std::io::{self, BufRead, Write};
 use std::path::Path;
 use std::process::ExitCode;
 
@@ -66,6 +66,8 @@ pub struct Reading<'a> {
     pub csv: bool,
     /// `--strict`.
     pub strict: bool,
+    /// `--paths`.
+    pub paths: bool,
 }
 
 /// Runs `check --api` on `file` or stdin, with a tally of the mistakes on stderr.
@@ -82,8 +84,16 @@ pub fn check_api(file: Option<&Path>, options: &Options, reading: &Reading<'_>) 
         Ok(input) => input,
         Err(code) => return code,
     };
-    let mut session = Session::new(*options, format, reading.strict);
-    let result = jsonl::answer_lines(input, io::stdout().lock(), |line| session.answer(line));
+    let mut session = Session::new(*options, format, reading.strict, reading.paths);
+    let mut output = io::stdout().lock();
+    let result =
+        jsonl::answer_lines(input, &mut output, |line| session.answer(line)).and_then(|answered| {
+            if let Some(summary) = session.finish() {
+                writeln!(output, "{summary}")?;
+                output.flush()?;
+            }
+            Ok(answered)
+        });
     match result {
         Ok(answered) => {
             eprintln!("check: {}", session.tally.summary());

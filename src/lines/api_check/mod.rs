@@ -19,6 +19,7 @@ pub mod csv;
 pub mod diagnose;
 mod explain;
 pub mod fields;
+pub mod paths;
 pub mod pattern;
 pub mod readings;
 pub mod record;
@@ -133,6 +134,7 @@ pub struct Session {
     format: Format,
     strict: bool,
     header: Option<Result<csv::Header, String>>,
+    paths: Option<paths::Paths>,
     /// The verdicts so far.
     pub tally: Tally,
     all_ok: bool,
@@ -140,14 +142,15 @@ pub struct Session {
 
 impl Session {
     /// A run for `options` reading lines in `format`; with `strict`, a line that does not match
-    /// the pattern is an error instead of skipped.
+    /// the pattern is an error instead of skipped; with `paths`, a summary follows each path.
     #[must_use]
-    pub fn new(options: Options, format: Format, strict: bool) -> Self {
+    pub fn new(options: Options, format: Format, strict: bool, paths: bool) -> Self {
         Self {
             options,
             format,
             strict,
             header: None,
+            paths: paths.then(paths::Paths::new),
             tally: Tally::default(),
             all_ok: true,
         }
@@ -190,11 +193,16 @@ impl Session {
             Ok(Some(record)) => check_record(&record, &self.options),
             Err(e) => Err(e),
         };
-        match judged {
-            Ok((call, diagnosis)) => {
+        let ended = match (&judged, &mut self.paths) {
+            (Ok((call, diagnosis)), Some(paths)) => paths.hit(call, diagnosis),
+            _ => Ok(None),
+        };
+        match judged.and_then(|judged| ended.map(|ended| (judged, ended))) {
+            Ok(((call, diagnosis), ended)) => {
                 self.tally.add_verdict(&diagnosis);
                 self.all_ok &= diagnosis.ok;
-                Ok(answer_line(&call, &diagnosis))
+                let text = answer_line(&call, &diagnosis);
+                Ok(ended.map_or(text.clone(), |summary| format!("{summary}\n{text}")))
             }
             Err(e) => {
                 self.tally.add("unreadable");
@@ -204,10 +212,15 @@ impl Session {
         }
     }
 
-    /// Whether every line so far was right.
+    /// The summary of the last path (with `--paths`), once the input has ended.
+    pub fn finish(&mut self) -> Option<String> {
+        self.paths.as_mut().and_then(paths::Paths::finish)
+    }
+
+    /// Whether every line so far was right and every path finished left right.
     #[must_use]
     pub fn all_ok(&self) -> bool {
-        self.all_ok
+        self.all_ok && self.paths.as_ref().is_none_or(|p| p.all_exit_ok)
     }
 }
 

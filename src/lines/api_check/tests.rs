@@ -62,7 +62,7 @@ fn options(api: Api) -> Options {
 }
 
 fn answer(api: Api, text: &str) -> Value {
-    let reply = Session::new(options(api), Format::JsonLines, false)
+    let reply = Session::new(options(api), Format::JsonLines, false, false)
         .answer(text)
         .unwrap();
     serde_json::from_str(&reply).unwrap()
@@ -354,4 +354,150 @@ fn six_logged_digits_are_compared_at_that_precision() {
     // Off in the fourth digit: not what refract returns.
     let text = text.replace("0.428525", "0.4287");
     assert_eq!(mistakes(&answer(Api::Rtiow, &text)), ["not_the_api_result"]);
+}
+
+/// One GLSL call of a traced path: what a tracer logs at a hit.
+fn path_line(hit: (DVec3, DVec3, f64, DVec3), entering: bool, point: DVec3) -> String {
+    let (i, n, eta, result) = hit;
+    json!({"I": i.to_array(), "N": n.to_array(), "eta": eta, "result": result.to_array(),
+           "entering": entering, "path": "ray", "point": point.to_array(), "precision": "f64"})
+    .to_string()
+}
+
+fn summaries(lines: &[String]) -> Vec<Value> {
+    let mut session = Session::new(options(Api::Glsl), Format::JsonLines, false, true);
+    let mut out: Vec<Value> = Vec::new();
+    for line in lines {
+        let reply = session.answer(line).unwrap();
+        out.extend(
+            reply
+                .lines()
+                .map(|l| serde_json::from_str::<Value>(l).unwrap()),
+        );
+    }
+    out.extend(session.finish().map(|l| serde_json::from_str(&l).unwrap()));
+    out.into_iter()
+        .filter(|v| v.get("exit_ok").is_some())
+        .collect()
+}
+
+fn glsl(i: DVec3, n: DVec3, eta: f64) -> (DVec3, DVec3, f64, DVec3) {
+    (
+        i,
+        n,
+        eta,
+        refraction_kernel::api::glsl::refract::<f64>(i, n, eta),
+    )
+}
+
+#[test]
+fn an_inverted_eta_at_both_faces_of_a_slab_cancels() {
+    let a = 30_f64.to_radians();
+    let d = DVec3::new(a.sin(), -a.cos(), 0.0);
+    let first = glsl(d, DVec3::Y, 1.5);
+    let inside = first.3;
+    let second = glsl(inside, DVec3::Y, 1.0 / 1.5);
+    let lines = [
+        path_line(first, true, DVec3::ZERO),
+        path_line(second, false, inside * (-1.0 / inside.y)),
+    ];
+    let s = &summaries(&lines)[0];
+    assert_eq!(
+        (s["hits"].clone(), s["first_wrong"].clone()),
+        (json!(2), json!(1)),
+        "{s}"
+    );
+    assert_eq!(s["exit_ok"], true, "{s}");
+    let explanation = s["explanation"].as_str().unwrap();
+    assert!(
+        explanation.contains("cancel") && explanation.contains("logged surfaces"),
+        "{s}"
+    );
+}
+
+/// A unit sphere at the origin entered at its top, (0, 1, 0), at `degrees` from the normal:
+/// the right first call, an outward normal where the ray first tries to leave (so it stays
+/// inside, mirrored), and eta upside down where it finally leaves. Returns the logged hits and
+/// the signed angle between where the ray leaves and where it should.
+fn sphere_path(degrees: f64) -> (Vec<String>, f64) {
+    let a = degrees.to_radians();
+    let d = DVec3::new(a.sin(), -a.cos(), 0.0);
+    let next = |p: DVec3, t: DVec3| p + t * (-2.0 * p.dot(t) / t.length_squared());
+    let p1 = DVec3::Y;
+    let h1 = glsl(d, p1, 1.0 / 1.5);
+    let p2 = next(p1, h1.3);
+    let h2 = glsl(h1.3, p2, 1.5);
+    let p3 = next(p2, h2.3);
+    let h3 = glsl(h2.3, -p3, 1.0 / 1.5);
+    let right_inside = h1.3;
+    let right = refraction_kernel::api::glsl::refract::<f64>(right_inside, -p2, 1.5);
+    let off = right.x * h3.3.y - right.y * h3.3.x;
+    let lines = vec![
+        path_line(h1, true, p1),
+        path_line(h2, false, p2),
+        path_line(h3, false, p3),
+    ];
+    (lines, off.atan2(right.dot(h3.3)))
+}
+
+#[test]
+fn two_wrong_calls_can_cancel_on_a_sphere() {
+    // Where the mistakes cancel exactly, found by bisection between 70 and 76 degrees.
+    let (mut low, mut high) = (70.0, 76.0);
+    assert!(sphere_path(low).1 * sphere_path(high).1 < 0.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (low + high);
+        if sphere_path(mid).1 * sphere_path(low).1 > 0.0 {
+            low = mid;
+        } else {
+            high = mid;
+        }
+    }
+    let s = &summaries(&sphere_path(low).0)[0];
+    assert_eq!(
+        (s["hits"].clone(), s["first_wrong"].clone()),
+        (json!(3), json!(2)),
+        "{s}"
+    );
+    assert_eq!(s["exit_ok"], true, "{s}");
+    let explanation = s["explanation"].as_str().unwrap();
+    assert!(
+        explanation.contains("Hits 2, 3 are wrong") && explanation.contains("sphere"),
+        "{s}"
+    );
+    // The same mistakes elsewhere on the sphere do not cancel.
+    let s = &summaries(&sphere_path(50.0).0)[0];
+    assert_eq!(s["exit_ok"], false, "{s}");
+    assert!(
+        s["explanation"]
+            .as_str()
+            .unwrap()
+            .contains("The first wrong call is hit 2")
+    );
+}
+
+#[test]
+fn each_path_gets_its_summary_and_a_hit_without_path_is_refused() {
+    let (d, n, mu) = situation(true);
+    let args = Api::Glsl.arguments(d, n, mu);
+    let hit = |path: &str| {
+        let mut result = returned(Api::Glsl, args);
+        result.push(("path", json!(path)));
+        line(Api::Glsl, args, result, json!({"precision": "f32"}))
+    };
+    let all = summaries(&[hit("a"), hit("b"), hit("b")]);
+    assert_eq!(all.len(), 2);
+    assert_eq!(
+        (all[0]["path"].clone(), all[1]["hits"].clone()),
+        (json!("a"), json!(2))
+    );
+    assert_eq!(all[1]["first_wrong"], Value::Null);
+    let mut session = Session::new(options(Api::Glsl), Format::JsonLines, false, true);
+    let lone = line(Api::Glsl, args, returned(Api::Glsl, args), json!({}));
+    assert!(
+        session
+            .answer(&lone)
+            .unwrap_err()
+            .contains("missing field `path`")
+    );
 }
