@@ -394,12 +394,10 @@ fn unexplained(ctx: &Context<'_>) -> String {
     }
 }
 
-/// `text` with its first letter in upper case.
+/// `text` with a leading "the" capitalised (the API names and functions keep their case).
 fn capitalised(text: &str) -> String {
-    let mut chars = text.chars();
-    chars.next().map_or_else(String::new, |first| {
-        first.to_uppercase().chain(chars).collect()
-    })
+    text.strip_prefix("the ")
+        .map_or_else(|| text.to_owned(), |rest| format!("The {rest}"))
 }
 
 /// The explanation of one verdict.

@@ -8,7 +8,7 @@
 
 use glam::DVec3;
 use refraction_kernel::stable;
-use serde_json::json;
+use serde::Serialize;
 
 use super::call::Call;
 use super::code::Code;
@@ -21,6 +21,16 @@ const MAX_KEPT: usize = 4096;
 
 /// How far (relative to the radius) logged points may be from one sphere.
 const SPHERE_FIT: f64 = 1e-4;
+
+/// The summary line of one path.
+#[derive(Serialize)]
+struct Summary<'a> {
+    path: &'a str,
+    hits: usize,
+    first_wrong: Option<usize>,
+    exit_ok: bool,
+    explanation: &'a str,
+}
 
 /// One hit as the retrace needs it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -153,14 +163,15 @@ impl Path {
         let off = angle(self.outgoing, right);
         let exit_ok = self.outgoing.is_finite() && off <= MATCH_ANGLE;
         let explanation = self.explanation(exit_ok, off, &how);
-        let line = json!({
-            "path": self.id,
-            "hits": self.hits,
-            "first_wrong": self.wrong.first().map(|w| w.0),
-            "exit_ok": exit_ok,
-            "explanation": explanation,
-        });
-        (line.to_string(), exit_ok)
+        let line = Summary {
+            path: &self.id,
+            hits: self.hits,
+            first_wrong: self.wrong.first().map(|w| w.0),
+            exit_ok,
+            explanation: &explanation,
+        };
+        // A struct of plain fields always serialises.
+        (serde_json::to_string(&line).unwrap_or_default(), exit_ok)
     }
 
     fn explanation(&self, exit_ok: bool, off: f64, how: &str) -> String {
