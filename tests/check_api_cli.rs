@@ -1,36 +1,9 @@
 //! `check --api` end to end: answers in the API's terms, the tally of mistakes by code on
-//! stderr, the exit status, and `check` without `--api` untouched.
+//! stderr, the exit status, `--pattern` with `--strict`, and CSV.
 
-use std::process::{Command, Output};
-use std::sync::atomic::{AtomicUsize, Ordering};
+mod cli;
 
-use serde_json::Value;
-
-/// Runs the binary with `args` on a file holding `input`.
-pub fn run(args: &[&str], input: &str) -> Output {
-    static RUNS: AtomicUsize = AtomicUsize::new(0);
-    let name = format!(
-        "api-{}-{}.log",
-        std::process::id(),
-        RUNS.fetch_add(1, Ordering::Relaxed)
-    );
-    let path = std::env::temp_dir().join(name);
-    std::fs::write(&path, input).unwrap();
-    let output = Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
-        .args(args)
-        .arg(&path)
-        .output()
-        .unwrap();
-    std::fs::remove_file(&path).unwrap();
-    output
-}
-
-fn answers(output: &Output) -> Vec<Value> {
-    String::from_utf8_lossy(&output.stdout)
-        .lines()
-        .map(|l| serde_json::from_str(l).unwrap())
-        .collect()
-}
+use cli::{answers, run};
 
 #[test]
 fn glsl_lines_are_answered_with_the_api_result_and_a_tally_by_code() {

@@ -3,8 +3,9 @@
 //! three injected bugs, a printf log of every refract call, and `check --api rtiow --pattern`
 //! naming each bug on every line it touches.
 
-use std::process::Command;
+mod cli;
 
+use cli::{answers, run};
 use glam::DVec3;
 use refraction_kernel::api::rtiow;
 use serde_json::Value;
@@ -102,10 +103,8 @@ fn check(bug: Bug) -> (Vec<Value>, String, Option<i32>) {
             trace(ray, aim, bug, &mut log);
         }
     }
-    let path = std::env::temp_dir().join(format!("rtiow-{}-{bug:?}.log", std::process::id()));
-    std::fs::write(&path, &log).unwrap();
-    let output = Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
-        .args([
+    let output = run(
+        &[
             "check",
             "--api",
             "rtiow",
@@ -114,22 +113,13 @@ fn check(bug: Bug) -> (Vec<Value>, String, Option<i32>) {
             "--outside",
             "1",
             "--paths",
-        ])
-        .args(["--pattern", PATTERN])
-        .arg(&path)
-        .output()
-        .unwrap();
-    std::fs::remove_file(&path).unwrap();
-    let answers = String::from_utf8(output.stdout)
-        .unwrap()
-        .lines()
-        .map(|l| serde_json::from_str(l).unwrap())
-        .collect();
-    (
-        answers,
-        String::from_utf8(output.stderr).unwrap(),
-        output.status.code(),
-    )
+            "--pattern",
+            PATTERN,
+        ],
+        &log,
+    );
+    let tally = String::from_utf8(output.stderr.clone()).unwrap();
+    (answers(&output), tally, output.status.code())
 }
 
 fn calls(answers: &[Value]) -> Vec<&Value> {
