@@ -11,7 +11,7 @@
 //! (`not_the_api_result`, `missed_tir`), within the rounding of the logged digits.
 //!
 //! For the explorer: [`Record::from_texts`] reads the API's fields from text, [`Call::from_record`]
-//! makes the call, [`diagnose`] judges it; [`fields::names`] gives each API's field names.
+//! makes the call, [`diagnose()`] judges it; [`fields::names`] gives each API's field names.
 
 pub mod call;
 pub mod code;

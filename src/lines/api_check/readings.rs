@@ -68,7 +68,7 @@ impl Tolerance {
 /// One reading of the arguments: the mistakes it assumes and the call without them.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Reading {
-    /// The argument mistakes assumed, in [`ARGUMENT_MISTAKES`] order.
+    /// The argument mistakes assumed: eta, incident, normal, unit, in that order.
     pub codes: Vec<Code>,
     /// The arguments with those mistakes undone: the right call.
     pub args: Args<f64>,
