@@ -39,9 +39,41 @@ enum Command {
     /// Answers each line with "ok", "matches" (chosen, wrong_side, wrong_bend, reversed,
     /// total_internal_reflection or null) and "explanation"; a summary of the mistakes goes to
     /// stderr. Exit status 0 when every line is ok, 1 otherwise.
+    ///
+    /// With --api, each line is the call your code made in that API's own terms (glsl:
+    /// {"I","N","eta","result"}; pbrt: {"wi","n","eta","returned","wt"}; rtiow:
+    /// {"uv","n","etai_over_etat","refracted"}; mitsuba: {"wi","n","eta","wo"}), with optional
+    /// truth "from", "to", "travel", "entering"; the answer adds "api_result" and "mistakes".
     Check {
         /// JSON Lines file to read (stdin when absent).
         file: Option<PathBuf>,
+        /// Check calls of this API: glsl (or hlsl, wgsl, glm, glam), pbrt, rtiow, mitsuba.
+        #[arg(long, value_name = "NAME", value_parser = commands::lines::parse_api)]
+        api: Option<refraction_kernel::api::Api>,
+        /// The index inside the object: with --outside, "entering" gives "from" and "to".
+        #[arg(long, value_name = "X", requires_all = ["api", "outside"])]
+        inside: Option<f64>,
+        /// The index outside the object.
+        #[arg(long, value_name = "Y", requires_all = ["api", "inside"])]
+        outside: Option<f64>,
+        /// The precision your code computes in, unless a line says (default: f32 for glsl,
+        /// pbrt and mitsuba, f64 for rtiow).
+        #[arg(long, value_name = "f32|f64", requires = "api", value_parser = commands::lines::parse_precision)]
+        precision: Option<refraction_explorer::lines::solve::Precision>,
+        /// Read printf-style log lines: each {field} takes a number or a vector as programs
+        /// print it, {_} anything; lines that do not match are skipped and counted.
+        #[arg(long, value_name = "PATTERN", requires = "api", conflicts_with = "csv")]
+        pattern: Option<String>,
+        /// Read CSV with a header line naming the fields.
+        #[arg(long, requires = "api")]
+        csv: bool,
+        /// With --pattern, answer a line that does not match with an error instead of skipping it.
+        #[arg(long, requires = "pattern")]
+        strict: bool,
+        /// Consecutive lines with the same "path" are one ray's hits: after each path, a
+        /// summary line {"path","hits","first_wrong","exit_ok","explanation"}.
+        #[arg(long, requires = "api")]
+        paths: bool,
     },
     /// Measure what accuracy costs in time: every kernel variant at f32 and f64, timed on
     /// this machine and compared with a double-double oracle.
@@ -125,7 +157,34 @@ fn main() -> ExitCode {
     }
     match cli.command {
         Some(Command::Solve) => commands::lines::solve(),
-        Some(Command::Check { file }) => commands::lines::check(file.as_deref()),
+        Some(Command::Check {
+            file, api: None, ..
+        }) => commands::lines::check(file.as_deref()),
+        Some(Command::Check {
+            file,
+            api: Some(api),
+            inside,
+            outside,
+            precision,
+            pattern,
+            csv,
+            strict,
+            paths,
+        }) => commands::lines::check_api(
+            file.as_deref(),
+            &refraction_explorer::lines::api_check::Options {
+                api,
+                inside,
+                outside,
+                precision,
+            },
+            &commands::lines::Reading {
+                pattern: pattern.as_deref(),
+                csv,
+                strict,
+                paths,
+            },
+        ),
         Some(Command::Bench { quick, json, plot }) => {
             commands::bench::run(quick, json, plot.as_deref())
         }

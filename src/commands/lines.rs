@@ -1,12 +1,15 @@
 //! `solve` and `check`: JSON Lines in, one answer per line out.
 
 use std::collections::BTreeMap;
-use std::io::{self, BufRead};
+use std::io::{self, BufRead, Write};
 use std::path::Path;
 use std::process::ExitCode;
 
+use refraction_explorer::lines::api_check::{Format, Options, Pattern, Session};
 use refraction_explorer::lines::check::{self, Match};
+use refraction_explorer::lines::solve::Precision;
 use refraction_explorer::lines::{self as jsonl, LinesError, solve as solver};
+use refraction_kernel::api::Api;
 
 use super::{fail, output, output_error};
 
@@ -27,14 +30,102 @@ pub fn solve() -> ExitCode {
     }
 }
 
+/// Reads `--api NAME`.
+///
+/// # Errors
+/// An unknown name; the message lists the known ones.
+pub fn parse_api(name: &str) -> Result<Api, String> {
+    Api::from_name(name).ok_or_else(|| {
+        format!("unknown API \"{name}\": expected glsl (or hlsl, wgsl, glm, glam), pbrt, rtiow or mitsuba")
+    })
+}
+
+/// Reads `--precision f32|f64`.
+///
+/// # Errors
+/// Anything else.
+pub fn parse_precision(name: &str) -> Result<Precision, String> {
+    match name {
+        "f32" | "float" => Ok(Precision::F32),
+        "f64" | "double" => Ok(Precision::F64),
+        _ => Err(format!("unknown precision \"{name}\": expected f32 or f64")),
+    }
+}
+
+/// `file`, or stdin when absent, with the name a message gives it.
+fn open_input(file: Option<&Path>) -> Result<(Box<dyn BufRead>, String), ExitCode> {
+    match file {
+        None => Ok((Box::new(io::stdin().lock()), "standard input".to_owned())),
+        Some(path) => match std::fs::File::open(path) {
+            Ok(f) => Ok((Box::new(io::BufReader::new(f)), path.display().to_string())),
+            Err(e) => Err(fail(
+                "check",
+                &format!("cannot read {}: {e}", path.display()),
+            )),
+        },
+    }
+}
+
+/// How `check --api` reads its lines.
+pub struct Reading<'a> {
+    /// `--pattern`.
+    pub pattern: Option<&'a str>,
+    /// `--csv`.
+    pub csv: bool,
+    /// `--strict`.
+    pub strict: bool,
+    /// `--paths`.
+    pub paths: bool,
+}
+
+/// Runs `check --api` on `file` or stdin, with a tally of the mistakes on stderr.
+pub fn check_api(file: Option<&Path>, options: &Options, reading: &Reading<'_>) -> ExitCode {
+    let format = match (reading.pattern, reading.csv) {
+        (Some(text), _) => match Pattern::parse(options.api, text) {
+            Ok(pattern) => Format::Pattern(pattern),
+            Err(e) => return fail("check", &e),
+        },
+        (None, true) => Format::Csv,
+        (None, false) => Format::JsonLines,
+    };
+    let (input, name) = match open_input(file) {
+        Ok(input) => input,
+        Err(code) => return code,
+    };
+    let mut session = Session::new(*options, format, reading.strict, reading.paths);
+    let mut output = io::stdout().lock();
+    let result =
+        jsonl::answer_lines(input, &mut output, |line| session.answer(line)).and_then(|answered| {
+            if let Some(summary) = session.finish() {
+                writeln!(output, "{summary}").map_err(LinesError::Write)?;
+                output.flush().map_err(LinesError::Write)?;
+            }
+            Ok(answered)
+        });
+    match result {
+        Ok(answered) => finished(&session.tally.summary(), answered && session.all_ok()),
+        Err(e) => stopped("check", &name, &e),
+    }
+}
+
+/// The exit status of a `check` run that read all its input: the tally goes to stderr (losing
+/// it is a failure, status 2), then status 0 if `all_ok` and 1 if not.
+fn finished(tally: &str, all_ok: bool) -> ExitCode {
+    if output::to_stderr(&format!("check: {tally}")).is_err() {
+        // The tally is part of check's output: losing it is a failure.
+        ExitCode::from(2)
+    } else if all_ok {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
+
 /// Runs `check` on `file` or stdin, with a tally of the mistakes on stderr.
 pub fn check(file: Option<&Path>) -> ExitCode {
-    let (input, name): (Box<dyn BufRead>, String) = match file {
-        None => (Box::new(io::stdin().lock()), "standard input".to_owned()),
-        Some(path) => match std::fs::File::open(path) {
-            Ok(f) => (Box::new(io::BufReader::new(f)), path.display().to_string()),
-            Err(e) => return fail("check", &format!("cannot read {}: {e}", path.display())),
-        },
+    let (input, name) = match open_input(file) {
+        Ok(input) => input,
+        Err(code) => return code,
     };
     let mut tally: BTreeMap<&'static str, usize> = BTreeMap::new();
     let mut all_ok = true;
@@ -58,14 +149,7 @@ pub fn check(file: Option<&Path>) -> ExitCode {
     match result {
         Ok(answered) => {
             let summary: Vec<String> = tally.iter().map(|(k, n)| format!("{n} {k}")).collect();
-            if output::to_stderr(&format!("check: {}", summary.join(", "))).is_err() {
-                // The summary is part of check's output: losing it is a failure.
-                ExitCode::from(2)
-            } else if answered && all_ok {
-                ExitCode::SUCCESS
-            } else {
-                ExitCode::from(1)
-            }
+            finished(&summary.join(", "), answered && all_ok)
         }
         Err(e) => stopped("check", &name, &e),
     }

@@ -6,6 +6,7 @@ use serde_json::Value;
 
 use crate::lines::fields;
 use crate::lines::solve::{Precision, Request};
+use crate::lines::vector_text;
 use refraction_kernel::{Incidence, Real, Rejection, Vector3, refract};
 
 /// Largest angle (radians) between a student's T and a candidate for them to count as the same
@@ -74,8 +75,9 @@ fn explain(rejection: Rejection) -> &'static str {
     }
 }
 
+/// The angle between two vectors of any finite length (a T of length 1e201 or 4e-320 too).
 fn angle(a: glam::DVec3, b: glam::DVec3) -> f64 {
-    a.cross(b).length().atan2(a.dot(b))
+    vector_text::angle(a, b)
 }
 
 fn wide<S: Real>(v: S::Vec3) -> glam::DVec3 {
@@ -147,7 +149,7 @@ fn refracted<S: Real>(
     r: &refraction_kernel::Refraction<S>,
     yours: glam::DVec3,
 ) -> Judgement {
-    let length = yours.length();
+    let length = vector_text::length(yours);
     if length == 0.0 {
         return (
             false,
@@ -159,8 +161,9 @@ fn refracted<S: Real>(
     }
     let unit_note = ((length - 1.0).abs() > LENGTH_TOLERANCE).then(|| {
         format!(
-            " Also, your T has length {length:.4}, not 1: normalise W and N before refracting \
-             (the formula assumes unit vectors) or T after."
+            " Also, your T has length {}, not 1: normalise W and N before refracting \
+             (the formula assumes unit vectors) or T after.",
+            vector_text::short(length)
         )
     });
     let nearest = r
@@ -219,12 +222,13 @@ fn diagnose_unmatched<S: Real>(
             .to_owned();
     }
     let plane = wide::<S>(r.travel).cross(wide::<S>(r.facing_normal));
-    let out_of_plane = yours.normalize().dot(plane).abs();
+    let out_of_plane = vector_text::unit(yours).dot(plane).abs();
     if plane.length() > 1e-9 && out_of_plane > MATCH_ANGLE * plane.length() {
         return format!(
             "Your T leaves the plane of incidence (the plane of W and N) by {:.3} rad: T must be \
              a combination a*W + b*N of the two.",
-            (out_of_plane / plane.length()).asin()
+            // Rounding can put the ratio just above 1 for a T normal to the plane.
+            (out_of_plane / plane.length()).min(1.0).asin()
         );
     }
     let off = r.t().map_or(f64::NAN, |t| angle(yours, wide::<S>(t)));
@@ -247,43 +251,13 @@ pub fn check(request: &Request, yours: [f64; 3]) -> Result<Verdict, String> {
 }
 
 /// Reads a 3-vector written the way programs print them: `0.1, -0.9, 0`, `[0.1,-0.9,0]`,
-/// `(0.1 -0.9 0)`, `vec3(0.1, -0.9, 0.0)`, `Vec3(0.1, -0.9, 0.0)`, with `nan` and `inf` allowed.
+/// `(0.1 -0.9 0)`, `vec3(0.1, -0.9, 0.0)`, `Vec3 { x: 0.1, y: -0.9, z: 0.0 }`, with `nan`,
+/// `inf` and `f` suffixes allowed (see [`vector_text`]).
 ///
 /// # Errors
 /// A message saying what was found instead of three numbers.
 pub fn parse_vector(text: &str) -> Result<[f64; 3], String> {
-    let trimmed = text.trim();
-    let body = trimmed
-        .find(['(', '['])
-        .filter(|&open| {
-            trimmed[..open]
-                .chars()
-                .all(|c| c.is_alphanumeric() || c == ':' || c == '_')
-        })
-        .map_or(trimmed, |open| &trimmed[open + 1..]);
-    let body = body.trim_end().trim_end_matches([')', ']', ';']);
-    let numbers: Vec<&str> = body
-        .split(|c: char| c == ',' || c.is_whitespace())
-        .filter(|s| !s.is_empty())
-        .collect();
-    if numbers.len() != 3 {
-        return Err(format!(
-            "expected 3 numbers such as `0.1, -0.9, 0` or `vec3(0.1, -0.9, 0.0)`, found {} in \
-             \"{trimmed}\"",
-            numbers.len()
-        ));
-    }
-    let mut out = [0.0; 3];
-    for (slot, word) in out.iter_mut().zip(&numbers) {
-        let cleaned = word
-            .trim_end_matches(['f', 'F'])
-            .trim_end_matches("_f32")
-            .trim_end_matches("_f64");
-        *slot = cleaned
-            .parse::<f64>()
-            .map_err(|_| format!("\"{word}\" is not a number (in \"{trimmed}\")"))?;
-    }
-    Ok(out)
+    vector_text::parse_vector(text).map(|v| v.value)
 }
 
 /// Reads the student's T from a JSON value: an array of 3 numbers (`null` entries count as NaN,
@@ -316,13 +290,14 @@ pub fn vector_from_json(value: &Value) -> Result<[f64; 3], String> {
     }
 }
 
-/// The JSON answer of the `check` command for one verdict.
+/// The JSON answer of the `check` command for one verdict (also the first fields of a
+/// `check --api` answer).
 #[derive(Serialize)]
-struct Answer<'a> {
-    ok: bool,
-    matches: Option<&'static str>,
-    explanation: &'a str,
-    t: Option<[f64; 3]>,
+pub(crate) struct Answer<'a> {
+    pub(crate) ok: bool,
+    pub(crate) matches: Option<&'static str>,
+    pub(crate) explanation: &'a str,
+    pub(crate) t: Option<[f64; 3]>,
 }
 
 /// Reads one line of the `check` command: the `solve` fields plus `t_yours`.
@@ -391,5 +366,62 @@ mod tests {
                 .unwrap_err()
                 .contains("\"x\" is not a number")
         );
+    }
+
+    fn along_ray(yours: [f64; 3]) -> Verdict {
+        let request = Request {
+            w: [0.6, -0.8, 0.0],
+            n: [0.0, 1.0, 0.0],
+            mu_i: 1.0,
+            mu_t: 1.5,
+            convention: refraction_kernel::Convention::AlongRay,
+            precision: Precision::F64,
+        };
+        check(&request, yours).unwrap()
+    }
+
+    #[test]
+    fn vectors_of_any_length_are_judged_by_direction() {
+        assert_eq!(parse_vector("inf, 0, 0"), Ok([f64::INFINITY, 0.0, 0.0]));
+        let right = glam::DVec3::from_array(along_ray([0.4, -0.9, 0.0]).correct.unwrap());
+        // 6e-6 rad off and 1e201 long: near the refracted ray, not 90 degrees from it.
+        let off = (right + glam::DVec3::new(right.y, -right.x, 0.0) * 6e-6) * 1e201;
+        let verdict = along_ray(off.to_array());
+        assert_eq!(
+            verdict.matches,
+            Some(Match::Chosen),
+            "{}",
+            verdict.explanation
+        );
+        assert!(
+            verdict.explanation.contains("length 1e201"),
+            "{}",
+            verdict.explanation
+        );
+        let tiny = along_ray((right * 4e-320).to_array());
+        assert_eq!(tiny.matches, Some(Match::Chosen), "{}", tiny.explanation);
+        assert!(!tiny.explanation.contains("zero vector"));
+    }
+
+    #[test]
+    fn a_t_normal_to_the_plane_of_incidence_has_a_finite_angle() {
+        for k in 1..400 {
+            let angle = f64::from(k) * 0.22_f64.to_radians();
+            let (w, n) = ([angle.sin(), -angle.cos(), 0.0], [0.0, 1.0, 0.0]);
+            let request = Request {
+                w,
+                n,
+                mu_i: 1.0,
+                mu_t: 1.33,
+                convention: refraction_kernel::Convention::AlongRay,
+                precision: Precision::F64,
+            };
+            let verdict = check(&request, [0.0, 0.0, 1.0 + f64::from(k) * 1e-3]).unwrap();
+            assert!(
+                !verdict.explanation.contains("NaN"),
+                "{}",
+                verdict.explanation
+            );
+        }
     }
 }

@@ -2,10 +2,12 @@
 //! file (one `solve` line). [`answer_lines`] is the loop both commands share: one answer per
 //! non-empty input line, in order, streaming, with bad lines answered rather than fatal.
 
+pub mod api_check;
 pub mod check;
 mod fields;
 pub mod solve;
 pub mod state_file;
+pub mod vector_text;
 
 use std::io::{self, BufRead, Read, Write};
 
@@ -71,7 +73,9 @@ fn too_long(number: usize) -> String {
 /// that `answer` rejects, that is not UTF-8 or that is too long is answered with
 /// `{"line": K, "error": "..."}` (K counts every input line from 1) and the run goes on; a
 /// too-long line is answered as soon as it passes the limit, and the rest of it is read past
-/// without being kept. Returns whether every line was answered without error.
+/// without being kept. An empty answer writes nothing (a log line that is not a call, a CSV
+/// header); an answer may hold several lines. Returns whether every line was answered without
+/// error.
 ///
 /// # Errors
 /// Reading `input` or writing `output` failed.
@@ -102,7 +106,9 @@ pub fn answer_lines(
             all_answered = false;
             error_line(number, &message)
         });
-        writeln!(output, "{text}").map_err(LinesError::Write)?;
+        if !text.is_empty() {
+            writeln!(output, "{text}").map_err(LinesError::Write)?;
+        }
         if matches!(next, Next::TooLong) {
             // Say so before reading on: the rest of the line may be long or endless.
             output.flush().map_err(LinesError::Write)?;

@@ -10,6 +10,8 @@
 //! - [`seed`]: the source's formula taken literally, to show what it loses.
 //! - [`trig`], [`batch`] and [`Variant`]: the variants the `bench` command compares.
 //! - [`candidates`](candidates()) and [`Checks`]: the four sign choices and the laws they break.
+//! - [`api`]: what GLSL, pbrt-v4, Ray Tracing in One Weekend and Mitsuba 3 return for a
+//!   `refract` call, bit for bit, and what their arguments mean here.
 //!
 //! # Examples
 //!
@@ -45,6 +47,7 @@
 //! # Ok::<(), refraction_kernel::InputError>(())
 //! ```
 
+pub mod api;
 pub mod batch;
 mod candidates;
 mod checks;

@@ -45,6 +45,17 @@ pub trait Real:
     /// Whether the value is neither infinite nor NaN.
     #[must_use]
     fn is_finite(self) -> bool;
+    /// Whether the value is NaN.
+    #[must_use]
+    fn is_nan(self) -> bool;
+    /// Whether the sign bit is set (true for −0.0 and for NaN with the sign bit set).
+    #[must_use]
+    fn is_sign_negative(self) -> bool;
+    /// `self · a + b` with one rounding (a true fused multiply-add, in software where the CPU
+    /// has none): what C's `fma` and Rust's `mul_add` compute. The API adapters need it to
+    /// reproduce pbrt-v4 and Mitsuba 3 bit for bit.
+    #[must_use]
+    fn mul_add(self, a: Self, b: Self) -> Self;
     /// The nearest value of this precision to `x` (may overflow to ±∞).
     #[must_use]
     fn from_f64(x: f64) -> Self;
@@ -130,6 +141,18 @@ macro_rules! impl_real {
             #[inline]
             fn is_finite(self) -> bool {
                 <$s>::is_finite(self)
+            }
+            #[inline]
+            fn is_nan(self) -> bool {
+                <$s>::is_nan(self)
+            }
+            #[inline]
+            fn is_sign_negative(self) -> bool {
+                <$s>::is_sign_negative(self)
+            }
+            #[inline]
+            fn mul_add(self, a: Self, b: Self) -> Self {
+                <$s>::mul_add(self, a, b)
             }
             #[inline]
             #[allow(clippy::cast_possible_truncation, trivial_numeric_casts)]

@@ -1,0 +1,503 @@
+//! For each API and each mistake code, calls whose verdict must name it; and the two defects of
+//! the old `check` that issue 11 reports.
+
+use glam::{DVec3, Vec3};
+use refraction_kernel::api::{Api, Args, Returned};
+use serde_json::{Value, json};
+
+use super::fields::names;
+use super::{Code, Format, Options, Session};
+
+fn wide(v: Vec3) -> [f64; 3] {
+    v.as_dvec3().to_array()
+}
+
+/// What the API returns for `args` in the student's usual precision, as the line's result
+/// fields.
+fn returned(api: Api, args: Args<f64>) -> Vec<(&'static str, Value)> {
+    let args32 = Args {
+        incident: args.incident.as_vec3(),
+        normal: args.normal.as_vec3(),
+        eta: args.eta as f32,
+    };
+    match api {
+        Api::Rtiow => match api.call(args) {
+            Returned::Rtiow(a) => vec![("refracted", json!(a.refracted.to_array()))],
+            _ => unreachable!(),
+        },
+        _ => match api.call(args32) {
+            Returned::Glsl(v) => vec![("result", json!(wide(v)))],
+            Returned::Pbrt(r) => vec![
+                ("returned", json!(r.is_some())),
+                ("wt", r.map_or(Value::Null, |r| json!(wide(r.wt)))),
+            ],
+            Returned::Mitsuba(a) => vec![("wo", json!(wide(a.wo)))],
+            Returned::Rtiow(_) => unreachable!(),
+        },
+    }
+}
+
+fn line(api: Api, args: Args<f64>, result: Vec<(&'static str, Value)>, truth: Value) -> String {
+    let n = names(api);
+    let mut object = json!({
+        n.incident: args.incident.to_array(),
+        n.normal: args.normal.to_array(),
+        n.eta: args.eta,
+    });
+    for (name, value) in result {
+        object[name] = value;
+    }
+    for (name, value) in truth.as_object().unwrap() {
+        object[name] = value.clone();
+    }
+    object.to_string()
+}
+
+fn options(api: Api) -> Options {
+    Options {
+        inside: Some(1.5),
+        outside: Some(1.0),
+        ..Options::new(api)
+    }
+}
+
+fn answer(api: Api, text: &str) -> Value {
+    let reply = Session::new(options(api), Format::JsonLines, false, false)
+        .answer(text)
+        .unwrap();
+    serde_json::from_str(&reply).unwrap()
+}
+
+fn mistakes(answer: &Value) -> Vec<String> {
+    answer["mistakes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|m| m.as_str().unwrap().to_owned())
+        .collect()
+}
+
+/// A ray entering glass from air at 40° (leaving at 20° when `entering` is false).
+fn situation(entering: bool) -> (DVec3, DVec3, f64) {
+    let (angle, mu) = if entering {
+        (40_f64, 1.0 / 1.5)
+    } else {
+        (20.0, 1.5)
+    };
+    let a = angle.to_radians();
+    let d = DVec3::new(a.sin(), -a.cos(), 0.3).normalize();
+    (d, DVec3::Y, mu)
+}
+
+/// The usual right call: for pbrt and Mitsuba the outward normal with the material's eta.
+fn usual(api: Api, entering: bool) -> Args<f64> {
+    let (d, n, mu) = situation(entering);
+    let args = api.arguments(d, n, mu);
+    match api {
+        Api::Pbrt | Api::Mitsuba if !entering => Args {
+            normal: -n,
+            eta: 1.5,
+            ..args
+        },
+        _ => args,
+    }
+}
+
+/// The line carrying the usual right call with `mistake` made, and what the API returns for it.
+fn injected(api: Api, entering: bool, mistake: impl Fn(Args<f64>) -> Args<f64>) -> String {
+    let (d, _, _) = situation(entering);
+    let args = mistake(usual(api, entering));
+    let truth = json!({"entering": entering, "travel": d.to_array()});
+    line(api, args, returned(api, args), truth)
+}
+
+#[test]
+fn right_calls_are_ok_in_every_api() {
+    for api in Api::ALL {
+        for entering in [true, false] {
+            let a = answer(api, &injected(api, entering, |args| args));
+            assert_eq!(a["ok"], true, "{api:?} {a}");
+            assert_eq!(a["mistakes"], json!([]), "{api:?}");
+            assert_eq!(a["matches"], "chosen", "{api:?}");
+        }
+    }
+}
+
+#[test]
+fn each_argument_mistake_is_named_in_every_api() {
+    type Inject = fn(Args<f64>) -> Args<f64>;
+    let cases: [(Code, Inject); 4] = [
+        (Code::EtaInverted, |a| Args {
+            eta: 1.0 / a.eta,
+            ..a
+        }),
+        (Code::IncidentReversed, |a| Args {
+            incident: -a.incident,
+            ..a
+        }),
+        (Code::NormalNotFacing, |a| Args {
+            normal: -a.normal,
+            ..a
+        }),
+        (Code::NotUnitInput, |a| Args {
+            incident: a.incident * 1.2,
+            ..a
+        }),
+    ];
+    for api in Api::ALL {
+        for (code, inject) in cases {
+            for entering in [true, false] {
+                let a = answer(api, &injected(api, entering, inject));
+                assert_eq!(a["ok"], false, "{api:?} {code:?} {a}");
+                assert_eq!(mistakes(&a)[0], code.name(), "{api:?} {code:?} {a}");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_wrong_result_and_a_missed_tir_are_named_in_every_api() {
+    for api in Api::ALL {
+        let (d, n, mu) = situation(true);
+        let args = api.arguments(d, n, mu);
+        let right = api.call(args).transmitted().unwrap();
+        let other_root = right - n * (2.0 * right.dot(n));
+        let result = match api {
+            Api::Pbrt => vec![
+                ("returned", json!(true)),
+                ("wt", json!(other_root.to_array())),
+            ],
+            _ => vec![(names(api).result, json!(other_root.to_array()))],
+        };
+        let a = answer(api, &line(api, args, result, json!({"entering": true})));
+        assert_eq!(mistakes(&a), ["not_the_api_result"], "{api:?} {a}");
+        assert!(
+            a["explanation"]
+                .as_str()
+                .unwrap()
+                .contains("the other root"),
+            "{a}"
+        );
+
+        // Glass to air at 60°: past the critical angle.
+        let up = DVec3::new(60_f64.to_radians().sin(), 60_f64.to_radians().cos(), 0.0);
+        let args = api.arguments(up, -DVec3::Y, 1.5);
+        let formula = api.call(args).formula().unwrap_or(up);
+        let result = match api {
+            Api::Glsl => vec![("result", json!([null, null, null]))],
+            Api::Pbrt => vec![("returned", json!(true)), ("wt", json!(up.to_array()))],
+            _ => vec![(names(api).result, json!(formula.to_array()))],
+        };
+        let a = answer(api, &line(api, args, result, json!({"entering": false})));
+        assert_eq!(mistakes(&a), ["missed_tir"], "{api:?} {a}");
+        assert_eq!(a["t"], Value::Null);
+        // Saying so is right.
+        let a = answer(api, &injected_tir(api, args));
+        assert_eq!(a["ok"], true, "{api:?} {a}");
+    }
+}
+
+/// A call past the critical angle answered as the API answers it: the book's caller reflects,
+/// Mitsuba samples no transmission.
+fn injected_tir(api: Api, args: Args<f64>) -> String {
+    let result = match api {
+        Api::Rtiow => {
+            let reflected =
+                refraction_kernel::api::rtiow::reflect::<f64>(args.incident, args.normal);
+            vec![("refracted", json!(reflected.to_array()))]
+        }
+        Api::Mitsuba => vec![("wo", Value::Null)],
+        Api::Glsl | Api::Pbrt => returned(api, args),
+    };
+    line(api, args, result, json!({"entering": false}))
+}
+
+#[test]
+fn glsl_explains_eta_in_its_own_words() {
+    let (d, n, _) = situation(true);
+    let args = Api::Glsl.arguments(d, n, 1.5);
+    let text = line(
+        Api::Glsl,
+        args,
+        returned(Api::Glsl, args),
+        json!({"entering": true}),
+    );
+    let a = answer(Api::Glsl, &text);
+    assert_eq!(mistakes(&a), ["eta_inverted"]);
+    let explanation = a["explanation"].as_str().unwrap();
+    assert!(
+        explanation.contains("GLSL's eta is n_from/n_to")
+            && explanation.contains("you passed 1.5 for a ray entering the object")
+            && explanation.contains("pass 1/1.5 = 0.666667"),
+        "{explanation}"
+    );
+}
+
+#[test]
+fn ties_are_listed_with_the_field_that_tells_them_apart() {
+    let (d, n, mu) = situation(true);
+    let args = Args {
+        incident: -d,
+        ..Api::Glsl.arguments(d, n, mu)
+    };
+    let a = answer(
+        Api::Glsl,
+        &line(Api::Glsl, args, returned(Api::Glsl, args), json!({})),
+    );
+    assert_eq!(
+        mistakes(&a),
+        ["normal_not_facing", "incident_reversed"],
+        "{a}"
+    );
+    assert_eq!(
+        a["alternatives"],
+        json!([["normal_not_facing"], ["incident_reversed"]])
+    );
+    assert!(
+        a["explanation"]
+            .as_str()
+            .unwrap()
+            .contains("Give travel to tell them apart")
+    );
+    // pbrt: an inward normal and an inverted eta give the same call; entering says which.
+    let args = Args {
+        normal: -n,
+        ..Api::Pbrt.arguments(d, n, mu)
+    };
+    let text = line(
+        Api::Pbrt,
+        args,
+        returned(Api::Pbrt, args),
+        json!({"from": 1, "to": 1.5}),
+    );
+    let a = answer(Api::Pbrt, &text);
+    assert_eq!(
+        a["alternatives"],
+        json!([
+            ["incident_reversed"],
+            ["eta_inverted"],
+            ["normal_not_facing"]
+        ]),
+        "{a}"
+    );
+    let explanation = a["explanation"].as_str().unwrap();
+    assert!(
+        explanation.contains("Give travel and entering to tell them apart"),
+        "{a}"
+    );
+}
+
+/// Issue 11: a flipped square-root sign was blamed on "an outward normal" although the normal
+/// faced the ray.
+#[test]
+fn a_flipped_square_root_is_not_blamed_on_the_normal() {
+    let (d, n, mu) = situation(false);
+    let args = Api::Rtiow.arguments(d, n, mu);
+    let right = refraction_kernel::api::rtiow::refract::<f64>(args.incident, args.normal, args.eta);
+    let flipped = right - n * (2.0 * right.dot(n));
+    let result = vec![("refracted", json!(flipped.to_array()))];
+    let a = answer(
+        Api::Rtiow,
+        &line(Api::Rtiow, args, result, json!({"entering": false})),
+    );
+    assert_eq!(mistakes(&a), ["not_the_api_result"], "{a}");
+    let explanation = a["explanation"].as_str().unwrap();
+    assert!(
+        explanation.contains("square root's sign flipped"),
+        "{explanation}"
+    );
+    assert!(!explanation.contains("outward"), "{explanation}");
+}
+
+/// Issue 11: an inverted-ratio build (`ri = front_face ? ir : 1/ir`) was judged half right
+/// when fed the ratio the code passed; with `entering` every such call is named.
+#[test]
+fn an_inverted_ratio_build_is_wrong_on_every_hit() {
+    for entering in [true, false] {
+        for degrees in [5.0, 25.0, 40.0, 70.0] {
+            let a = degrees_f64(degrees);
+            let d = DVec3::new(a.sin(), -a.cos(), 0.0);
+            let ri = if entering { 1.5 } else { 1.0 / 1.5 };
+            let args = Args {
+                incident: d,
+                normal: DVec3::Y,
+                eta: ri,
+            };
+            let answer = refraction_kernel::api::rtiow::answer::<f64>(d, DVec3::Y, ri);
+            let result = if answer.cannot_refract {
+                refraction_kernel::api::rtiow::reflect::<f64>(d, DVec3::Y)
+            } else {
+                answer.refracted
+            };
+            let text = line(
+                Api::Rtiow,
+                args,
+                vec![("refracted", json!(result.to_array()))],
+                json!({"entering": entering}),
+            );
+            let verdict = self::answer(Api::Rtiow, &text);
+            assert_eq!(verdict["ok"], false, "{entering} {degrees} {verdict}");
+            assert_eq!(mistakes(&verdict)[0], "eta_inverted", "{verdict}");
+        }
+    }
+}
+
+fn degrees_f64(degrees: f64) -> f64 {
+    degrees.to_radians()
+}
+
+#[test]
+fn six_logged_digits_are_compared_at_that_precision() {
+    let text = r#"{"uv":[0.642788,-0.766044,0],"n":[0,1,0],"etai_over_etat":0.666667,"refracted":[0.428525,-0.90353,0],"entering":1}"#;
+    let a = answer(Api::Rtiow, text);
+    assert_eq!(a["ok"], true, "{a}");
+    // Off in the fourth digit: not what refract returns.
+    let text = text.replace("0.428525", "0.4287");
+    assert_eq!(mistakes(&answer(Api::Rtiow, &text)), ["not_the_api_result"]);
+}
+
+/// One GLSL call of a traced path: what a tracer logs at a hit.
+fn path_line(hit: (DVec3, DVec3, f64, DVec3), entering: bool, point: DVec3) -> String {
+    let (i, n, eta, result) = hit;
+    json!({"I": i.to_array(), "N": n.to_array(), "eta": eta, "result": result.to_array(),
+           "entering": entering, "path": "ray", "point": point.to_array(), "precision": "f64"})
+    .to_string()
+}
+
+fn summaries(lines: &[String]) -> Vec<Value> {
+    let mut session = Session::new(options(Api::Glsl), Format::JsonLines, false, true);
+    let mut out: Vec<Value> = Vec::new();
+    for line in lines {
+        let reply = session.answer(line).unwrap();
+        out.extend(
+            reply
+                .lines()
+                .map(|l| serde_json::from_str::<Value>(l).unwrap()),
+        );
+    }
+    out.extend(session.finish().map(|l| serde_json::from_str(&l).unwrap()));
+    out.into_iter()
+        .filter(|v| v.get("exit_ok").is_some())
+        .collect()
+}
+
+fn glsl(i: DVec3, n: DVec3, eta: f64) -> (DVec3, DVec3, f64, DVec3) {
+    (
+        i,
+        n,
+        eta,
+        refraction_kernel::api::glsl::refract::<f64>(i, n, eta),
+    )
+}
+
+#[test]
+fn an_inverted_eta_at_both_faces_of_a_slab_cancels() {
+    let a = 30_f64.to_radians();
+    let d = DVec3::new(a.sin(), -a.cos(), 0.0);
+    let first = glsl(d, DVec3::Y, 1.5);
+    let inside = first.3;
+    let second = glsl(inside, DVec3::Y, 1.0 / 1.5);
+    let lines = [
+        path_line(first, true, DVec3::ZERO),
+        path_line(second, false, inside * (-1.0 / inside.y)),
+    ];
+    let s = &summaries(&lines)[0];
+    assert_eq!(
+        (s["hits"].clone(), s["first_wrong"].clone()),
+        (json!(2), json!(1)),
+        "{s}"
+    );
+    assert_eq!(s["exit_ok"], true, "{s}");
+    let explanation = s["explanation"].as_str().unwrap();
+    assert!(
+        explanation.contains("cancel") && explanation.contains("logged surfaces"),
+        "{s}"
+    );
+}
+
+/// A unit sphere at the origin entered at its top, (0, 1, 0), at `degrees` from the normal:
+/// the right first call, an outward normal where the ray first tries to leave (so it stays
+/// inside, mirrored), and eta upside down where it finally leaves. Returns the logged hits and
+/// the signed angle between where the ray leaves and where it should.
+fn sphere_path(degrees: f64) -> (Vec<String>, f64) {
+    let a = degrees.to_radians();
+    let d = DVec3::new(a.sin(), -a.cos(), 0.0);
+    let next = |p: DVec3, t: DVec3| p + t * (-2.0 * p.dot(t) / t.length_squared());
+    let p1 = DVec3::Y;
+    let h1 = glsl(d, p1, 1.0 / 1.5);
+    let p2 = next(p1, h1.3);
+    let h2 = glsl(h1.3, p2, 1.5);
+    let p3 = next(p2, h2.3);
+    let h3 = glsl(h2.3, -p3, 1.0 / 1.5);
+    let right_inside = h1.3;
+    let right = refraction_kernel::api::glsl::refract::<f64>(right_inside, -p2, 1.5);
+    let off = right.x * h3.3.y - right.y * h3.3.x;
+    let lines = vec![
+        path_line(h1, true, p1),
+        path_line(h2, false, p2),
+        path_line(h3, false, p3),
+    ];
+    (lines, off.atan2(right.dot(h3.3)))
+}
+
+#[test]
+fn two_wrong_calls_can_cancel_on_a_sphere() {
+    // Where the mistakes cancel exactly, found by bisection between 70 and 76 degrees.
+    let (mut low, mut high) = (70.0, 76.0);
+    assert!(sphere_path(low).1 * sphere_path(high).1 < 0.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (low + high);
+        if sphere_path(mid).1 * sphere_path(low).1 > 0.0 {
+            low = mid;
+        } else {
+            high = mid;
+        }
+    }
+    let s = &summaries(&sphere_path(low).0)[0];
+    assert_eq!(
+        (s["hits"].clone(), s["first_wrong"].clone()),
+        (json!(3), json!(2)),
+        "{s}"
+    );
+    assert_eq!(s["exit_ok"], true, "{s}");
+    let explanation = s["explanation"].as_str().unwrap();
+    assert!(
+        explanation.contains("Hits 2, 3 are wrong") && explanation.contains("sphere"),
+        "{s}"
+    );
+    // The same mistakes elsewhere on the sphere do not cancel.
+    let s = &summaries(&sphere_path(50.0).0)[0];
+    assert_eq!(s["exit_ok"], false, "{s}");
+    assert!(
+        s["explanation"]
+            .as_str()
+            .unwrap()
+            .contains("The first wrong call is hit 2")
+    );
+}
+
+#[test]
+fn each_path_gets_its_summary_and_a_hit_without_path_is_refused() {
+    let (d, n, mu) = situation(true);
+    let args = Api::Glsl.arguments(d, n, mu);
+    let hit = |path: &str| {
+        let mut result = returned(Api::Glsl, args);
+        result.push(("path", json!(path)));
+        line(Api::Glsl, args, result, json!({"precision": "f32"}))
+    };
+    let all = summaries(&[hit("a"), hit("b"), hit("b")]);
+    assert_eq!(all.len(), 2);
+    assert_eq!(
+        (all[0]["path"].clone(), all[1]["hits"].clone()),
+        (json!("a"), json!(2))
+    );
+    assert_eq!(all[1]["first_wrong"], Value::Null);
+    let mut session = Session::new(options(Api::Glsl), Format::JsonLines, false, true);
+    let lone = line(Api::Glsl, args, returned(Api::Glsl, args), json!({}));
+    assert!(
+        session
+            .answer(&lone)
+            .unwrap_err()
+            .contains("missing field `path`")
+    );
+}

@@ -1,0 +1,33 @@
+//! Running the command on a file, for the `check --api` tests.
+
+use std::process::{Command, Output};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use serde_json::Value;
+
+/// Runs the binary with `args` on a file holding `input`.
+pub fn run(args: &[&str], input: &str) -> Output {
+    static RUNS: AtomicUsize = AtomicUsize::new(0);
+    let name = format!(
+        "api-{}-{}.log",
+        std::process::id(),
+        RUNS.fetch_add(1, Ordering::Relaxed)
+    );
+    let path = std::env::temp_dir().join(name);
+    std::fs::write(&path, input).unwrap();
+    let output = Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
+        .args(args)
+        .arg(&path)
+        .output()
+        .unwrap();
+    std::fs::remove_file(&path).unwrap();
+    output
+}
+
+/// The JSON lines the command wrote.
+pub fn answers(output: &Output) -> Vec<Value> {
+    String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
