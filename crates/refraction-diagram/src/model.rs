@@ -99,7 +99,7 @@ impl Lesson {
     #[must_use]
     pub fn state(self) -> ExplorerState {
         let (mu_i, mu_t, degrees, n) = match self {
-            Self::AirToGlass => (AIR, GLASS, 40.0, DVec3::Y),
+            Self::AirToGlass => return ExplorerState::default(),
             Self::BeyondCritical => (GLASS, AIR, 45.0, DVec3::Y),
             Self::NormalIncidence => (AIR, GLASS, 0.0, DVec3::Y),
             Self::Brewster => (AIR, GLASS, (GLASS / AIR).atan().to_degrees(), DVec3::Y),
@@ -228,7 +228,10 @@ impl Default for ExplorerState {
     /// W at 40° from the normal, from air into glass, in Section 2's convention
     /// ([`Lesson::AirToGlass`]).
     fn default() -> Self {
-        Lesson::AirToGlass.state()
+        let angle = 40_f64.to_radians();
+        let w = DVec3::new(angle.sin(), -angle.cos(), 0.0);
+        Self::new(w, DVec3::Y, AIR, GLASS, Convention::AlongRay)
+            .unwrap_or_else(|_| unreachable!("the default incidence is valid"))
     }
 }
 

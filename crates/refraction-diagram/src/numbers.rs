@@ -31,7 +31,12 @@ pub fn significant(x: f64, digits: usize) -> String {
         let text = format!("{x:.*e}", digits - 1);
         return text.replace('-', "−");
     }
-    let decimals = (digits as f64 - 1.0 - magnitude).max(0.0) as usize;
+    let mut decimals = (digits as f64 - 1.0 - magnitude).max(0.0) as usize;
+    // 0.99999 rounds up to the next decade (1.0000): one decimal fewer.
+    let rounded: f64 = format!("{:.decimals$}", x.abs()).parse().unwrap_or(0.0);
+    if rounded >= 10f64.powf(magnitude + 1.0) && decimals > 0 {
+        decimals -= 1;
+    }
     let text = number(x, decimals);
     let exact = format!("{x:.decimals$}").parse::<f64>() == Ok(x);
     if exact && text.contains('.') {
