@@ -9,7 +9,9 @@ mod commands;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand};
+use clap::{Parser, Subcommand, ValueEnum};
+use refraction_diagram::palette::Theme;
+use refraction_explorer::app::View;
 use refraction_scene::DEFAULT_SCENE;
 
 /// Makes refraction visible: a trig-free refraction kernel, its four sign candidates, and an
@@ -23,6 +25,59 @@ struct Cli {
     /// the explorer reopens where it was last closed.
     #[arg(long, value_name = "FILE.json")]
     state: Option<PathBuf>,
+    /// Open the explorer in presentation mode: full screen, everything larger, the side panels
+    /// closed (F11 leaves it).
+    #[arg(long)]
+    present: bool,
+    /// The explorer's view to open on (default: the one shown when it was last closed, or
+    /// `one` with --state).
+    #[arg(long, value_enum, value_name = "VIEW")]
+    view: Option<ViewName>,
+    /// The explorer's theme (default: the one chosen last time).
+    #[arg(long, value_enum, value_name = "NAME")]
+    theme: Option<ThemeName>,
+}
+
+/// The views as the command line names them.
+#[derive(Clone, Copy, ValueEnum)]
+enum ViewName {
+    /// One interface: drag W, N and μ.
+    One,
+    /// A traced scene.
+    Scenes,
+    /// Accuracy against time.
+    Accuracy,
+}
+
+impl From<ViewName> for View {
+    fn from(name: ViewName) -> Self {
+        match name {
+            ViewName::One => Self::Interface,
+            ViewName::Scenes => Self::Scenes,
+            ViewName::Accuracy => Self::Accuracy,
+        }
+    }
+}
+
+/// The themes as the command line names them.
+#[derive(Clone, Copy, ValueEnum)]
+enum ThemeName {
+    /// Soft media shading on white.
+    Standard,
+    /// Black on white, for a bright room.
+    HighContrastLight,
+    /// White on black, for a dark room.
+    HighContrastDark,
+}
+
+impl From<ThemeName> for Theme {
+    fn from(name: ThemeName) -> Self {
+        match name {
+            ThemeName::Standard => Self::Standard,
+            ThemeName::HighContrastLight => Self::HighContrastLight,
+            ThemeName::HighContrastDark => Self::HighContrastDark,
+        }
+    }
 }
 
 #[derive(Subcommand)]
@@ -196,6 +251,11 @@ fn main() -> ExitCode {
             height,
             state,
         }) => commands::render::run(scene.as_deref(), &out, width, height, state.as_deref()),
-        None => commands::render::explorer(cli.state.as_deref()),
+        None => commands::render::explorer(&commands::render::Window {
+            state: cli.state,
+            present: cli.present,
+            view: cli.view.map(View::from),
+            theme: cli.theme.map(Theme::from),
+        }),
     }
 }

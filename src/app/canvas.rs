@@ -95,10 +95,36 @@ fn pan_and_zoom(ui: &Ui, response: &egui::Response, overlay: &mut Overlay) {
     }
 }
 
-/// Shows the diagram of `state` with `overlay` filling the available space, editing `state` by
-/// drag and keyboard and the overlay's view by pan and zoom.
+/// The line under the diagram: how to use the handles, or the keys of the one selected.
+fn hint(focused: Option<HandleId>) -> &'static str {
+    match focused {
+        Some(HandleId::W | HandleId::N) => {
+            "←/→ turn by 1° (Shift: 0.1°) · +/− μt · Tab: next handle · drag to move"
+        }
+        Some(HandleId::MuI | HandleId::MuT) => {
+            "↑/↓ or +/− change the index by 0.01 (Shift: 0.001) · Tab: next handle"
+        }
+        None => "Drag W, N or a μ marker; click one (or the diagram) to use the arrow keys",
+    }
+}
+
+/// Where a drag of a handle that started at `press` (with the handle's centre at `center`)
+/// puts the handle when the pointer is at `pointer`: the handle keeps its offset from the
+/// pointer, so that starting a drag a few pixels off its centre does not make it jump.
+fn dragged_to(center: Pos2, press: Pos2, pointer: Pos2) -> Pos2 {
+    pointer + (center - press)
+}
+
+/// Shows the diagram of `state` with `overlay` filling the available space (less a line for
+/// the keys), editing `state` by drag and keyboard and the overlay's view by pan and zoom.
+///
+/// A press and release within egui's click distance is a click, not a drag: it changes
+/// nothing and selects the handle (or, on the background, the W handle) for the arrow keys.
 pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
-    let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click_and_drag());
+    let line = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
+    let size = ui.available_size() - EguiVec2::new(0.0, line);
+    let (response, painter) =
+        ui.allocate_painter(size.max(EguiVec2::splat(1.0)), Sense::click_and_drag());
     pan_and_zoom(ui, &response, overlay);
     let size = response.rect.size();
     let to_screen = RectTransform::from_to(Rect::from_min_size(Pos2::ZERO, size), response.rect);
@@ -106,6 +132,15 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
     let canvas_size = Vec2::new(size.x, size.y);
     let before = Diagram::with_overlay(state, canvas_size, overlay);
     let mut focused = None;
+    let w_id = response.id.with(HandleId::W);
+    if response.clicked()
+        && !before
+            .handles
+            .iter()
+            .any(|h| ui.memory(|m| m.has_focus(response.id.with(h.id))))
+    {
+        ui.memory_mut(|m| m.request_focus(w_id));
+    }
     for handle in &before.handles {
         let area = Diagram::grab_area(handle);
         let rect = Rect::from_min_max(
@@ -113,13 +148,24 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
             to_screen.transform_pos(Pos2::new(area.max.x, area.max.y)),
         );
         let id = response.id.with(handle.id);
-        let grab = ui.interact(rect, id, Sense::drag());
+        let grab = ui.interact(rect, id, Sense::click_and_drag());
         let value = handle_value(state, handle.id);
         grab.widget_info(|| WidgetInfo::slider(true, value, handle.id.label()));
-        if let Some(pointer) = grab.interact_pointer_pos().filter(|_| grab.dragged()) {
-            let p = from_screen.transform_pos(pointer);
-            before.drag(state, handle.id, Vec2::new(p.x, p.y));
+        if grab.clicked() || grab.drag_started() {
             grab.request_focus();
+        }
+        let press = ui.input(|i| i.pointer.press_origin());
+        if let (Some(pointer), Some(press)) = (grab.interact_pointer_pos(), press)
+            && grab.dragged()
+        {
+            let center = to_screen.transform_pos(Pos2::new(handle.center.x, handle.center.y));
+            let start = ui.data_mut(|d| *d.get_temp_mut_or(id, center));
+            let p = from_screen.transform_pos(dragged_to(start, press, pointer));
+            before.drag(state, handle.id, Vec2::new(p.x, p.y));
+        } else {
+            // Where the handle is when the next drag starts.
+            let center = to_screen.transform_pos(Pos2::new(handle.center.x, handle.center.y));
+            ui.data_mut(|d| d.insert_temp(id, center));
         }
         if grab.hovered() || grab.dragged() {
             ui.ctx().set_cursor_icon(CursorIcon::Grab);
@@ -140,16 +186,26 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
     response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &after.summary));
     if let Some(handle) = after.handles.iter().find(|h| Some(h.id) == focused) {
         let center = to_screen.transform_pos(Pos2::new(handle.center.x, handle.center.y));
-        let ink = color(overlay.palette.ink);
-        let ring = Stroke::new(2.0, ink);
+        let ring = Stroke::new(2.0, color(overlay.palette.ink));
         painter.circle_stroke(center, handle.radius * 1.7, ring);
-        let hint = "arrow keys: turn or move by 1° or 0.01 (Shift: a tenth), +/− index, Tab: next";
-        painter.text(
-            response.rect.left_bottom() + EguiVec2::new(8.0, -6.0),
-            egui::Align2::LEFT_BOTTOM,
-            hint,
-            egui::FontId::proportional(12.0),
-            ink,
+    }
+    ui.label(egui::RichText::new(hint(focused)).weak());
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_drag_keeps_the_handle_where_it_was_grabbed() {
+        let center = Pos2::new(100.0, 100.0);
+        let press = Pos2::new(103.0, 99.0);
+        assert_eq!(dragged_to(center, press, press), center);
+        assert_eq!(
+            dragged_to(center, press, Pos2::new(113.0, 89.0)),
+            Pos2::new(110.0, 90.0)
         );
+        assert!(hint(None).contains("click"));
+        assert!(hint(Some(HandleId::MuT)).contains("index"));
     }
 }

@@ -8,12 +8,15 @@ use egui::{ComboBox, DragValue, Slider, SliderClamping, Ui};
 use super::typed::{TypedField, format_vector, parse_number, parse_vector, short, status};
 use refraction_diagram::model::{INDEX_RANGE, MATERIALS, material_of};
 use refraction_diagram::overlay::PanZoom;
-use refraction_diagram::{ExplorerState, HandleId, Overlay};
+use refraction_diagram::{ExplorerState, HandleId, Lesson, Overlay};
 use refraction_kernel::Convention;
 
 /// What the controls keep between frames.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Controls {
+    /// The lesson last started, which *Reset* goes back to.
+    lesson: Lesson,
+    theta_i: TypedField,
     mu_i: TypedField,
     mu_t: TypedField,
     w: TypedField,
@@ -26,6 +29,8 @@ pub struct Controls {
 impl Default for Controls {
     fn default() -> Self {
         Self {
+            lesson: Lesson::AirToGlass,
+            theta_i: TypedField::default(),
             mu_i: TypedField::default(),
             mu_t: TypedField::default(),
             w: TypedField::default(),
@@ -100,8 +105,46 @@ fn index_controls(
 }
 
 impl Controls {
+    /// The lesson presets, *Reset*, and θi typed in degrees.
+    fn lesson(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
+        ui.heading("Lesson");
+        ui.horizontal_wrapped(|ui| {
+            ComboBox::from_label("Lesson preset")
+                .selected_text(self.lesson.label())
+                .show_ui(ui, |ui| {
+                    for lesson in Lesson::ALL {
+                        if ui
+                            .selectable_label(self.lesson == lesson, lesson.label())
+                            .clicked()
+                        {
+                            self.lesson = lesson;
+                            *state = lesson.state();
+                        }
+                    }
+                });
+            if ui
+                .button("Reset")
+                .on_hover_text("Back to the start of the lesson chosen")
+                .clicked()
+            {
+                *state = self.lesson.state();
+            }
+        });
+        let current = short((state.incidence_degrees() * 1e4).round() / 1e4);
+        if let Some(text) = self.theta_i.show(ui, "θi (degrees)", current, 90.0) {
+            let outcome = parse_number(&text, "θi").and_then(|degrees| {
+                state
+                    .set_incidence_degrees(degrees)
+                    .map_err(|e| e.to_string())
+            });
+            self.theta_i.settle(outcome);
+        }
+    }
+
     /// Shows the controls, editing `state`; the PNG export draws `overlay` too.
     pub fn show(&mut self, ui: &mut Ui, state: &mut ExplorerState, overlay: &Overlay) {
+        self.lesson(ui, state);
+        ui.separator();
         ui.heading("Convention");
         let mut convention = state.convention();
         ui.radio_value(

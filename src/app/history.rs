@@ -8,6 +8,7 @@
 use egui::{Button, Key, KeyboardShortcut, Modifiers, Ui};
 
 use refraction_diagram::ExplorerState;
+use refraction_diagram::numbers::significant;
 use refraction_scene::Scene;
 
 /// How many steps back the history reaches; older ones are forgotten.
@@ -28,6 +29,94 @@ impl Snapshot {
     #[must_use]
     pub fn holds(&self, interface: &ExplorerState, scene: &Scene) -> bool {
         self.interface == *interface && self.scene == *scene
+    }
+}
+
+/// What one undo or redo changed, in words and by view.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Change {
+    /// E.g. `Undid μt 1.5 → 1.333`.
+    pub words: String,
+    /// Whether the single interface changed.
+    pub in_interface: bool,
+    /// Whether the Scenes view's scene changed.
+    pub in_scene: bool,
+}
+
+/// The angle of W from the normal, in degrees, for a message.
+fn incidence_degrees(state: &ExplorerState) -> String {
+    significant(
+        state
+            .refraction()
+            .cos_i
+            .clamp(-1.0, 1.0)
+            .acos()
+            .to_degrees(),
+        3,
+    )
+}
+
+/// What changed from `from` to `to` in the single interface, one phrase per part.
+fn interface_changes(from: &ExplorerState, to: &ExplorerState) -> Vec<String> {
+    let mut parts = Vec::new();
+    if from.convention() != to.convention() {
+        parts.push(format!(
+            "the convention (Section {} → {})",
+            from.convention().section(),
+            to.convention().section()
+        ));
+    }
+    for (symbol, a, b) in [
+        ("μi", from.mu_i(), to.mu_i()),
+        ("μt", from.mu_t(), to.mu_t()),
+    ] {
+        if a != b {
+            parts.push(format!(
+                "{symbol} {} → {}",
+                significant(a, 4),
+                significant(b, 4)
+            ));
+        }
+    }
+    if from.n() != to.n() && from.n() != -to.n() {
+        parts.push("N turned".to_owned());
+    } else if from.n() == -to.n() {
+        parts.push("N flipped".to_owned());
+    }
+    if from.w() != to.w() && from.convention() == to.convention() {
+        parts.push(format!(
+            "θi {}° → {}°",
+            incidence_degrees(from),
+            incidence_degrees(to)
+        ));
+    }
+    parts
+}
+
+/// What moving from `from` to `to` by `travel` changed, in words.
+#[must_use]
+pub fn describe(travel: Travel, from: &Snapshot, to: &Snapshot) -> Change {
+    let mut parts = interface_changes(&from.interface, &to.interface);
+    let in_interface = from.interface != to.interface;
+    let in_scene = from.scene != to.scene;
+    if in_scene {
+        parts.push(if from.scene.name() == to.scene.name() {
+            format!("the edit of {}", to.scene.title())
+        } else {
+            format!("the scene ({} → {})", from.scene.title(), to.scene.title())
+        });
+    }
+    if parts.is_empty() && in_interface {
+        parts.push("W or N typed".to_owned());
+    }
+    let verb = match travel {
+        Travel::Undo => "Undid",
+        Travel::Redo => "Redid",
+    };
+    Change {
+        words: format!("{verb} {}", parts.join(", ")),
+        in_interface,
+        in_scene,
     }
 }
 
@@ -171,6 +260,35 @@ mod tests {
         assert_eq!(history.redo_steps(), 0);
         assert_eq!(history.travel(Travel::Redo), None);
         assert_eq!(history.travel(Travel::Undo), Some(2));
+    }
+
+    #[test]
+    fn an_undo_says_what_it_changed_and_where() {
+        let start = Snapshot {
+            interface: ExplorerState::default(),
+            scene: Scene::embedded("droplet").unwrap(),
+        };
+        let mut edited = start.clone();
+        edited.interface.set_mu_t(1.333).unwrap();
+        edited.interface.flip_normal();
+        let change = describe(Travel::Undo, &edited, &start);
+        assert_eq!(change.words, "Undid μt 1.333 → 1.5, N flipped");
+        assert!(change.in_interface && !change.in_scene);
+        let mut scene = start.clone();
+        scene.scene = Scene::embedded("slab").unwrap();
+        let change = describe(Travel::Redo, &start, &scene);
+        assert!(
+            change.words.starts_with("Redid the scene ("),
+            "{}",
+            change.words
+        );
+        assert!(change.in_scene && !change.in_interface);
+        let mut turned = start.clone();
+        turned
+            .interface
+            .rotate(refraction_diagram::HandleId::W, 10.0);
+        let words = describe(Travel::Undo, &turned, &start).words;
+        assert_eq!(words, "Undid θi 50° → 40°");
     }
 
     #[test]

@@ -13,6 +13,7 @@ mod controls;
 mod files_panel;
 pub mod history;
 mod paint;
+pub mod panels;
 pub mod presentation;
 mod readouts;
 mod retrace;
@@ -22,13 +23,15 @@ mod tools;
 mod typed;
 pub mod walkthrough;
 
-use egui::{Panel, ScrollArea, Ui};
+use egui::{Panel, RichText, ScrollArea, Ui};
 
 use crate::lines::state_file;
 use accuracy::AccuracyView;
 use controls::Controls;
 use history::{History, Snapshot};
+use panels::{CONTROLS, NUMBERS, Panels};
 use presentation::Presentation;
+use refraction_diagram::palette::Theme;
 use refraction_diagram::{ExplorerState, Overlay};
 use refraction_scene::Scene;
 pub use scenes::ScenesView;
@@ -37,14 +40,14 @@ use tools::Tools;
 /// The window title.
 pub const TITLE: &str = "Refraction explorer";
 
-/// The narrowest window (in points) that keeps the controls panel in presentation mode.
-const PRESENTATION_CONTROLS_WIDTH: f32 = 1000.0;
-
 /// Where eframe keeps the last state between runs.
 const STORAGE_KEY: &str = "explorer_state";
 
 /// Where eframe keeps the theme and palette between runs.
 const LOOK_KEY: &str = "explorer_look";
+
+/// Where eframe keeps the view shown and the Scenes view's scene between runs.
+const VIEW_KEY: &str = "explorer_view";
 
 /// The explorer's views, chosen in the bar at the top of the window.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -71,6 +74,37 @@ impl View {
             Self::Accuracy => "Accuracy vs time",
         }
     }
+
+    /// The view's name on the command line (`--view`) and in the saved settings.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Interface => "one",
+            Self::Scenes => "scenes",
+            Self::Accuracy => "accuracy",
+        }
+    }
+
+    /// The view named `name` ([`View::name`]).
+    #[must_use]
+    pub fn named(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|v| v.name() == name)
+    }
+}
+
+/// How the window opens: what the command line asked for. What it leaves out comes from the
+/// last run (the state, the view and its scene, the theme) or the defaults.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Launch {
+    /// The single-interface problem to open on (`--state`); it also shows One interface
+    /// unless `view` says otherwise.
+    pub state: Option<ExplorerState>,
+    /// Start in presentation mode (`--present`).
+    pub present: bool,
+    /// The view to show (`--view`).
+    pub view: Option<View>,
+    /// The theme (`--theme`).
+    pub theme: Option<Theme>,
 }
 
 /// The whole explorer: the state being explored, the view shown, each view's own memory,
@@ -85,6 +119,9 @@ pub struct Explorer {
     presentation: Presentation,
     tools: Tools,
     scenes: ScenesView,
+    panels: Panels,
+    /// What the last undo or redo did, in words.
+    travelled: Option<String>,
 }
 
 impl Explorer {
@@ -104,6 +141,70 @@ impl Explorer {
             scenes,
             presentation: Presentation::default(),
             tools: Tools::default(),
+            panels: Panels::default(),
+            travelled: None,
+        }
+    }
+
+    /// An explorer as the command line asked for it, over what the last run left (`saved`
+    /// reads a value eframe kept, by key).
+    #[must_use]
+    pub fn launched(launch: Launch, saved: impl Fn(&str) -> Option<String>) -> Self {
+        let restored = || saved(STORAGE_KEY).and_then(|json| state_file::parse(&json).ok());
+        let from_state_file = launch.state.is_some();
+        let mut explorer = Self::new(launch.state.or_else(restored).unwrap_or_default());
+        if let Some(look) = saved(LOOK_KEY) {
+            explorer.presentation.restore_look(&look);
+        }
+        if let Some(view) = saved(VIEW_KEY) {
+            explorer.restore_view(&view);
+        }
+        if from_state_file {
+            explorer.view = View::Interface;
+        }
+        if let Some(view) = launch.view {
+            explorer.view = view;
+        }
+        if let Some(theme) = launch.theme {
+            explorer.presentation.theme = theme;
+        }
+        explorer.presentation.on = launch.present;
+        explorer
+    }
+
+    /// The view shown and the Scenes view's scene as edited, as JSON text for the next run.
+    #[must_use]
+    pub fn saved_view(&self) -> String {
+        let scene = self.scenes.scene();
+        serde_json::json!({
+            "view": self.view.name(),
+            "scene_name": scene.name(),
+            "scene": scene.to_toml().ok(),
+        })
+        .to_string()
+    }
+
+    /// Takes back what [`Explorer::saved_view`] wrote; what cannot be read is left as it is.
+    pub fn restore_view(&mut self, text: &str) {
+        let Ok(saved) = serde_json::from_str::<serde_json::Value>(text) else {
+            return;
+        };
+        if let Some(view) = saved["view"].as_str().and_then(View::named) {
+            self.view = view;
+        }
+        let name = saved["scene_name"].as_str().unwrap_or_default();
+        if let Some(Ok(scene)) = saved["scene"]
+            .as_str()
+            .map(|toml| Scene::from_toml(toml, "the last run's scene", name))
+        {
+            // A built-in scene edited last time keeps its file's version for *Reset*.
+            let base = Scene::embedded(name).unwrap_or_else(|_| scene.clone());
+            self.scenes = ScenesView::new(base);
+            self.scenes.restore(scene);
+            self.history = History::new(Snapshot {
+                interface: self.state.clone(),
+                scene: self.scenes.scene().clone(),
+            });
         }
     }
 
@@ -159,24 +260,7 @@ impl Explorer {
     pub fn show(&mut self, ui: &mut Ui) {
         self.presentation.apply(ui.ctx());
         self.tools.walk.animate(ui.ctx(), &mut self.state);
-        Panel::top("views").show(ui, |ui| {
-            ui.horizontal_wrapped(|ui| {
-                for view in View::ALL {
-                    ui.selectable_value(&mut self.view, view, view.label());
-                }
-                ui.separator();
-                if let Some(travel) = history::controls(ui, &self.history)
-                    && let Some(snapshot) = self.history.travel(travel)
-                {
-                    self.state = snapshot.interface;
-                    self.scenes.restore(snapshot.scene);
-                }
-                ui.separator();
-                self.presentation.controls(ui);
-                ui.separator();
-                self.tools.bar(ui);
-            });
-        });
+        Panel::top("views").show(ui, |ui| self.bar(ui));
         match self.view {
             View::Interface => self.show_interface(ui),
             View::Scenes => {
@@ -204,39 +288,71 @@ impl Explorer {
         }
     }
 
+    /// The bar at the top: views, undo and redo (and what the last one did), presentation,
+    /// the tools.
+    fn bar(&mut self, ui: &mut Ui) {
+        ui.horizontal_wrapped(|ui| {
+            for view in View::ALL {
+                ui.selectable_value(&mut self.view, view, view.label());
+            }
+            ui.separator();
+            if let Some(travel) = history::controls(ui, &self.history) {
+                self.travel(travel);
+            }
+            ui.separator();
+            self.presentation.controls(ui);
+            ui.separator();
+            self.tools.bar(ui);
+            if let Some(done) = &self.travelled {
+                ui.separator();
+                ui.label(RichText::new(done).weak());
+            }
+        });
+    }
+
+    /// Undoes or redoes one step and says what it changed; a step that changed the view not
+    /// shown switches to it, so that the class sees what was undone.
+    fn travel(&mut self, travel: history::Travel) {
+        let before = Snapshot {
+            interface: self.state.clone(),
+            scene: self.scenes.scene().clone(),
+        };
+        let Some(snapshot) = self.history.travel(travel) else {
+            return;
+        };
+        let change = history::describe(travel, &before, &snapshot);
+        let other = match (change.in_scene, change.in_interface, self.view) {
+            (true, false, View::Interface | View::Accuracy) => Some(View::Scenes),
+            (false, true, View::Scenes | View::Accuracy) => Some(View::Interface),
+            _ => None,
+        };
+        self.travelled = Some(match other {
+            Some(view) => {
+                self.view = view;
+                format!("{} (in {})", change.words, view.label())
+            }
+            None => change.words,
+        });
+        self.state = snapshot.interface;
+        self.scenes.restore(snapshot.scene);
+    }
+
     /// The single-interface view: controls, diagram, the kernel's numbers, the open tool.
     fn show_interface(&mut self, ui: &mut Ui) {
-        // First, so that the tool spans the whole width under the three columns.
-        self.tools.panel(ui, &mut self.state);
+        let presenting = self.presentation.on;
+        self.panels.keys(ui, presenting);
+        // First, so that the tool has the window's full height beside (or width under) the
+        // panels.
+        self.tools.panel(ui, &mut self.state, presenting);
         let mut overlay = self.overlay();
-        // Zoomed for presentation the window is narrow in points: the diagram keeps at least
-        // half of it, and on a small projector (1280×720 is 800 points wide zoomed) the
-        // controls give way altogether; the handles and keys still edit everything.
-        let width = ui.available_width();
-        let controls_fit = !self.presentation.on || width >= PRESENTATION_CONTROLS_WIDTH;
-        if controls_fit {
-            Panel::left("controls")
-                .default_size(290.0)
-                .max_size(width * 0.25)
-                .resizable(true)
-                .show(ui, |ui| {
-                    ScrollArea::vertical().show(ui, |ui| {
-                        self.controls.show(ui, &mut self.state, &overlay);
-                    });
-                });
-        }
-        Panel::right("readouts")
-            .default_size(440.0)
-            .max_size(width * 0.38)
-            .resizable(true)
-            .show(ui, |ui| {
-                // Both ways: narrowed for presentation, the table scrolls instead of clipping.
-                ScrollArea::both().show(ui, |ui| {
-                    readouts::show(ui, self.state.refraction());
-                });
-            });
-        egui::CentralPanel::no_frame()
-            .show(ui, |ui| canvas::show(ui, &mut self.state, &mut overlay));
+        let (state, controls) = (&mut self.state, &mut self.controls);
+        self.panels.show(ui, &CONTROLS, presenting, |ui| {
+            controls.show(ui, state, &overlay);
+        });
+        self.panels.show(ui, &NUMBERS, presenting, |ui| {
+            readouts::show(ui, state.refraction(), &overlay.palette);
+        });
+        egui::CentralPanel::no_frame().show(ui, |ui| canvas::show(ui, state, &mut overlay));
         self.presentation.pan_zoom = overlay.pan_zoom;
     }
 }
@@ -249,20 +365,22 @@ impl eframe::App for Explorer {
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         storage.set_string(STORAGE_KEY, state_file::to_json(&self.state));
         storage.set_string(LOOK_KEY, self.presentation.look());
+        storage.set_string(VIEW_KEY, self.saved_view());
     }
 }
 
-/// Opens the explorer window on `state` (or, when `state` is `None`, on the state of the last
-/// run, falling back to the default) and returns when it is closed.
+/// Opens the explorer window as `launch` asks (what it leaves out comes from the last run)
+/// and returns when it is closed.
 ///
 /// # Errors
 /// The window could not be created (no display, no OpenGL).
-pub fn run(state: Option<ExplorerState>) -> Result<(), eframe::Error> {
+pub fn run(launch: Launch) -> Result<(), eframe::Error> {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title(TITLE)
             .with_inner_size([1200.0, 680.0])
-            .with_min_inner_size([900.0, 560.0]),
+            .with_min_inner_size([900.0, 560.0])
+            .with_fullscreen(launch.present),
         multisampling: 0,
         ..eframe::NativeOptions::default()
     };
@@ -271,17 +389,8 @@ pub fn run(state: Option<ExplorerState>) -> Result<(), eframe::Error> {
         options,
         Box::new(move |cc| {
             cc.egui_ctx.set_theme(egui::Theme::Light);
-            let state = state.unwrap_or_else(|| {
-                cc.storage
-                    .and_then(|s| s.get_string(STORAGE_KEY))
-                    .and_then(|json| state_file::parse(&json).ok())
-                    .unwrap_or_default()
-            });
-            let mut explorer = Explorer::new(state);
-            if let Some(look) = cc.storage.and_then(|s| s.get_string(LOOK_KEY)) {
-                explorer.presentation.restore_look(&look);
-            }
-            Ok(Box::new(explorer))
+            let saved = |key: &str| cc.storage.and_then(|s| s.get_string(key));
+            Ok(Box::new(Explorer::launched(launch, saved)))
         }),
     )
 }

@@ -2,13 +2,34 @@
 //! lines), the high-contrast themes, the colour-blind-safe palette, and the diagram's pan and
 //! zoom.
 
-use egui::{Color32, ComboBox, Context, Key, KeyboardShortcut, Modifiers, Ui, ViewportCommand};
+use egui::{
+    Color32, ComboBox, Context, FontFamily, FontId, Key, KeyboardShortcut, Modifiers, TextStyle,
+    Ui, ViewportCommand,
+};
 
 use refraction_diagram::overlay::PanZoom;
 use refraction_diagram::palette::{Palette, Theme};
 
-/// The UI zoom in presentation mode.
+/// The UI zoom in presentation mode: the smallest text, 13 points, is then 20.8 pixels.
 pub const ZOOM: f32 = 1.6;
+
+/// The smallest text anywhere in the window, in points (pixels at zoom 1).
+pub const SMALLEST_TEXT: f32 = 13.0;
+
+/// The window's text sizes in points: nothing under [`SMALLEST_TEXT`], so that at zoom 1 every
+/// word reads at a glance and in presentation ([`ZOOM`]) every word is at least 20 pixels.
+#[must_use]
+pub fn text_styles() -> std::collections::BTreeMap<TextStyle, FontId> {
+    use FontFamily::{Monospace, Proportional};
+    [
+        (TextStyle::Small, FontId::new(SMALLEST_TEXT, Proportional)),
+        (TextStyle::Body, FontId::new(14.0, Proportional)),
+        (TextStyle::Button, FontId::new(14.0, Proportional)),
+        (TextStyle::Heading, FontId::new(20.0, Proportional)),
+        (TextStyle::Monospace, FontId::new(14.0, Monospace)),
+    ]
+    .into()
+}
 
 /// What was last applied to the egui context, so that it is changed only when asked.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -80,6 +101,9 @@ impl Presentation {
         }
         if before.map(|b| b.theme) != Some(self.theme) {
             ctx.set_visuals(visuals(self.theme));
+        }
+        if before.is_none() {
+            ctx.all_styles_mut(|style| style.text_styles = text_styles());
         }
     }
 

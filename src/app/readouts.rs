@@ -1,15 +1,15 @@
 //! The right panel: the discriminant k, the quadratic in b, the candidates table, the source's
 //! equations with numbers, and the kernel's warnings. Every number is the kernel's.
 
-use egui::{Color32, Grid, RichText, Sense, Stroke, Ui, Vec2};
+use egui::{Grid, RichText, Sense, Stroke, Ui, Vec2};
 use egui_plot::{HLine, Line, Plot, Points};
 
 use super::paint::color;
 use refraction_diagram::equations::equations;
 use refraction_diagram::numbers::{number, vector};
-use refraction_diagram::palette;
+use refraction_diagram::palette::Palette;
 use refraction_diagram::quadratic::Quadratic;
-use refraction_diagram::table::rows;
+use refraction_diagram::table::{CandidateRow, rows};
 use refraction_kernel::Refraction;
 
 /// The mark for a passed (✔) or failed (✖) check.
@@ -19,7 +19,7 @@ fn mark(passed: bool) -> &'static str {
 
 /// k as a number and as a bar signed about zero (k ranges over 1 − μ² … 1; the bar shows
 /// −1 … 1 and saturates beyond).
-fn discriminant(ui: &mut Ui, r: &Refraction<f64>) {
+fn discriminant(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     let verdict = if r.k < 0.0 {
         "< 0: total internal reflection"
     } else {
@@ -32,21 +32,18 @@ fn discriminant(ui: &mut Ui, r: &Refraction<f64>) {
     let (response, painter) =
         ui.allocate_painter(Vec2::new(ui.available_width(), 18.0), Sense::hover());
     let rect = response.rect;
-    painter.rect_filled(rect, 2.0, Color32::from_gray(230));
+    painter.rect_filled(rect, 2.0, color(palette.calm));
     let zero = rect.center().x;
     let end = zero + (r.k.clamp(-1.0, 1.0) as f32) * rect.width() * 0.5;
-    let fill = if r.k < 0.0 {
-        palette::ALARM
-    } else {
-        palette::N
-    };
+    let fill = if r.k < 0.0 { palette.alarm } else { palette.n };
     let bar = egui::Rect::from_x_y_ranges(zero.min(end)..=zero.max(end), rect.y_range());
     painter.rect_filled(bar, 0.0, color(fill));
-    painter.vline(zero, rect.y_range(), Stroke::new(2.0, color(palette::INK)));
+    painter.vline(zero, rect.y_range(), Stroke::new(2.0, color(palette.ink)));
 }
 
-/// The source's eq. 20 in b, with the kernel's two roots.
-fn quadratic(ui: &mut Ui, r: &Refraction<f64>) {
+/// The source's eq. 20 in b, with the kernel's two roots. The plot is fitted afresh every
+/// frame to both roots (or the vertex, on total internal reflection).
+fn quadratic(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     let q = Quadratic::of(r);
     ui.label(format!(
         "Eq. {}.20, the quadratic in b: b² + 2a·wn·b + a² − 1 = 0 with a = {}, wn = {}",
@@ -64,6 +61,7 @@ fn quadratic(ui: &mut Ui, r: &Refraction<f64>) {
             values.join(", ")
         )
     };
+    let ((x0, x1), (y0, y1)) = q.window();
     Plot::new("quadratic in b")
         .height(150.0)
         .allow_drag(false)
@@ -71,75 +69,110 @@ fn quadratic(ui: &mut Ui, r: &Refraction<f64>) {
         .allow_scroll(false)
         .allow_boxed_zoom(false)
         .allow_double_click_reset(false)
-        .default_x_bounds(q.vertex() - 1.6, q.vertex() + 1.6)
-        .default_y_bounds(-1.1, 1.6)
+        .default_x_bounds(x0, x1)
+        .default_y_bounds(y0, y1)
+        .reset()
         .show(ui, |plot| {
-            plot.hline(HLine::new("zero", 0.0).color(color(palette::GUIDE)));
+            plot.hline(HLine::new("zero", 0.0).color(color(palette.guide)));
             plot.line(
-                Line::new("f(b)", q.samples(1.6, 161))
-                    .color(color(palette::T))
+                Line::new("f(b)", q.samples((x1 - x0) * 0.5, 161))
+                    .color(color(palette.t))
                     .width(2.0),
             );
             plot.points(
                 Points::new("roots", roots)
                     .radius(5.0)
-                    .color(color(palette::WARNING)),
+                    .color(color(palette.warning)),
             );
         });
     ui.label(caption);
 }
 
+/// The narrowest panel, in body-text heights, that shows the candidates as a table; a
+/// narrower one (presentation) shows each candidate as a short block instead of cutting the
+/// table off.
+const TABLE_WIDTH_IN_LINES: f32 = 30.0;
+
 /// The four candidates with their checks.
-fn candidates(ui: &mut Ui, r: &Refraction<f64>) {
+fn candidates(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     let rows = rows(r);
     if rows.is_empty() {
         ui.label(
             RichText::new("No candidates: k < 0, so b has no real roots and no T exists.")
-                .color(color(palette::ALARM)),
+                .color(color(palette.alarm)),
         );
         return;
     }
-    Grid::new("candidates")
-        .striped(true)
-        .spacing([5.0, 3.0])
-        .show(ui, |ui| {
-            for heading in ["candidate", "a", "b", "T", "|T|=1", "eq.10", "side", "bend"] {
-                ui.label(RichText::new(heading).strong());
+    let line = ui.text_style_height(&egui::TextStyle::Body);
+    let as_table = ui.available_width() >= line * TABLE_WIDTH_IN_LINES;
+    let checks = ["|T|=1", "eq.10", "side", "bend"];
+    let role_text = |row: &CandidateRow| {
+        let role = RichText::new(row.role);
+        if row.rule.is_none() {
+            role.strong().color(color(palette.t))
+        } else {
+            role
+        }
+    };
+    let marks = |ui: &mut Ui, row: &CandidateRow, named: bool| {
+        let passed = [
+            row.unit,
+            row.squared_snell,
+            row.correct_side,
+            row.tangential,
+        ];
+        for (passed, name) in passed.into_iter().zip(checks) {
+            let ink = if passed { palette.n } else { palette.alarm };
+            ui.label(RichText::new(mark(passed)).color(color(ink)));
+            if named {
+                ui.label(name);
             }
-            ui.end_row();
-            for row in rows {
-                let role = RichText::new(row.role);
-                let role = if row.rule.is_none() {
-                    role.strong().color(color(palette::T))
-                } else {
-                    role
-                };
-                let response = ui.label(role);
+        }
+    };
+    if as_table {
+        Grid::new("candidates")
+            .striped(true)
+            .spacing([6.0, 3.0])
+            .show(ui, |ui| {
+                for heading in ["candidate", "a", "b", "T"].into_iter().chain(checks) {
+                    ui.label(RichText::new(heading).strong());
+                }
+                ui.end_row();
+                for row in &rows {
+                    let response = ui.label(role_text(row));
+                    if let Some(rule) = row.rule {
+                        response.on_hover_text(rule);
+                    }
+                    ui.label(number(row.a, 3));
+                    ui.label(number(row.b, 3));
+                    ui.label(RichText::new(vector(row.t, 2)).monospace());
+                    marks(ui, row, false);
+                    ui.end_row();
+                }
+            });
+    } else {
+        for row in &rows {
+            ui.horizontal_wrapped(|ui| {
+                let response = ui.label(role_text(row));
                 if let Some(rule) = row.rule {
                     response.on_hover_text(rule);
                 }
-                ui.label(number(row.a, 3));
-                ui.label(number(row.b, 3));
-                ui.label(RichText::new(vector(row.t, 2)).small());
-                for passed in [
-                    row.unit,
-                    row.squared_snell,
-                    row.correct_side,
-                    row.tangential,
-                ] {
-                    let ink = if passed { palette::N } else { palette::ALARM };
-                    ui.label(RichText::new(mark(passed)).color(color(ink)));
-                }
-                ui.end_row();
-            }
-        });
+                marks(ui, row, true);
+            });
+            ui.label(
+                RichText::new(format!(
+                    "a = {}  b = {}  T = {}",
+                    number(row.a, 3),
+                    number(row.b, 3),
+                    vector(row.t, 2)
+                ))
+                .monospace(),
+            );
+        }
+    }
     ui.label(
-        RichText::new(
-            "All four are unit length and satisfy squared Snell (eq. 10): squaring cannot tell \
-             them apart. Only the side and the bend (the \
-             source's μ = 1 argument) pick T.",
-        )
-        .small(),
+        "All four are unit length and satisfy squared Snell (eq. 10): squaring cannot tell \
+         them apart. Only the side and the bend (the source's μ = 1 argument) pick T.",
     );
 }
 
@@ -147,31 +180,33 @@ fn candidates(ui: &mut Ui, r: &Refraction<f64>) {
 fn source_equations(ui: &mut Ui, r: &Refraction<f64>) {
     for eq in equations(r) {
         ui.label(RichText::new(format!("({})  {}", eq.number, eq.formula)).strong());
-        ui.label(RichText::new(eq.substituted).monospace().small());
+        ui.label(RichText::new(eq.substituted).monospace());
     }
 }
 
 /// The kernel's warnings, or a note that there are none.
-fn warnings(ui: &mut Ui, r: &Refraction<f64>) {
+fn warnings(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     if r.warnings.is_empty() {
         ui.label("No warnings: W and N are unit length and N faces the ray.");
     }
     for warning in &r.warnings {
-        ui.label(RichText::new(format!("⚠ {warning}")).color(color(palette::WARNING)));
+        ui.label(
+            RichText::new(format!("⚠ {warning}")).color(color(palette.text_shade(palette.warning))),
+        );
     }
 }
 
-/// Shows every readout for `r`.
-pub fn show(ui: &mut Ui, r: &Refraction<f64>) {
-    discriminant(ui, r);
+/// Shows every readout for `r`, in the colours of `palette` (the diagram's theme).
+pub fn show(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
+    discriminant(ui, r, palette);
     ui.separator();
-    quadratic(ui, r);
+    quadratic(ui, r, palette);
     ui.separator();
     ui.heading("The four candidates");
-    candidates(ui, r);
+    candidates(ui, r, palette);
     ui.separator();
     ui.heading("Kernel warnings");
-    warnings(ui, r);
+    warnings(ui, r, palette);
     ui.separator();
     ui.heading(format!(
         "Source equations, Section {}",

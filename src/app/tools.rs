@@ -9,7 +9,10 @@ use super::walkthrough::WalkThrough;
 use refraction_diagram::overlay::StudentRay;
 use refraction_diagram::{ExplorerState, Focus};
 
-/// The tool shown under the diagram.
+/// The most of the window's width a tool takes in presentation.
+pub const PRESENTATION_TOOL_SHARE: f32 = 0.34;
+
+/// The tool shown beside the diagram.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Tool {
     /// Check a student's T.
@@ -68,26 +71,38 @@ impl Tools {
         }
     }
 
-    /// The open tool in a panel at the bottom of `ui`.
-    pub fn panel(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
+    /// The open tool in a panel: under the diagram at the desk; beside it in presentation,
+    /// where the window is wide for its height and a strip across the bottom would squeeze
+    /// the diagram into a letterbox.
+    pub fn panel(&mut self, ui: &mut Ui, state: &mut ExplorerState, presenting: bool) {
         let Some(tool) = self.open else {
             return;
         };
-        // A panel only grows to what its scroll area was given last frame: each tool asks for
-        // the height its verdict or step needs (at most 45 % of the window), and can be
-        // dragged taller.
-        let limit = ui.ctx().content_rect().height() * 0.45;
-        let height = tool.height().min(limit);
-        Panel::bottom(tool.label())
-            .resizable(true)
-            .size_range(height..=limit.max(height))
-            .show(ui, |ui| {
-                ScrollArea::vertical().show(ui, |ui| match tool {
-                    Tool::Check => self.check.show(ui, state),
-                    Tool::WalkThrough => self.walk.show(ui, state),
-                    Tool::Files => self.files.show(ui, state),
-                });
+        let window = ui.ctx().content_rect();
+        let panel = if presenting {
+            // At most a third of the width: the diagram keeps half the window (tested).
+            let limit = window.width() * PRESENTATION_TOOL_SHARE;
+            Panel::right(format!("{} (presentation)", tool.label()))
+                .resizable(true)
+                .default_size(limit)
+                .size_range(limit * 0.5..=limit)
+        } else {
+            // A panel only grows to what its scroll area was given last frame: each tool asks
+            // for the height its verdict or step needs (at most 45 % of the window), and can
+            // be dragged taller.
+            let limit = window.height() * 0.45;
+            let height = tool.height().min(limit);
+            Panel::bottom(tool.label())
+                .resizable(true)
+                .size_range(height..=limit.max(height))
+        };
+        panel.show(ui, |ui| {
+            ScrollArea::vertical().show(ui, |ui| match tool {
+                Tool::Check => self.check.show(ui, state),
+                Tool::WalkThrough => self.walk.show(ui, state),
+                Tool::Files => self.files.show(ui, state),
             });
+        });
     }
 
     /// What the walk-through highlights, while it is open.

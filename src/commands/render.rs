@@ -2,11 +2,12 @@
 //! explorer in a window.
 
 use std::io::{self, IsTerminal};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use refraction_diagram::palette::Theme;
 use refraction_diagram::{ExplorerState, Overlay};
-use refraction_explorer::app;
+use refraction_explorer::app::{self, Launch, View};
 use refraction_explorer::lines::state_file;
 use refraction_render::{self as render, atomic, format::ImageFormat};
 use refraction_scene::Scene;
@@ -110,13 +111,33 @@ pub fn run(
     }
 }
 
-/// Opens the explorer window, on the state in `state` if given.
-pub fn explorer(state: Option<&Path>) -> ExitCode {
-    match state
+/// What the command line asked of the window.
+pub struct Window {
+    /// The state file to open on.
+    pub state: Option<PathBuf>,
+    /// Start in presentation mode.
+    pub present: bool,
+    /// The view to show.
+    pub view: Option<View>,
+    /// The theme.
+    pub theme: Option<Theme>,
+}
+
+/// Opens the explorer window as `window` asks; a state file that cannot be read is refused
+/// before any window opens.
+pub fn explorer(window: &Window) -> ExitCode {
+    let launch = window
+        .state
+        .as_deref()
         .map(state_file::load)
         .transpose()
-        .and_then(|s| app::run(s).map_err(|e| e.to_string()))
-    {
+        .map(|state| Launch {
+            state,
+            present: window.present,
+            view: window.view,
+            theme: window.theme,
+        });
+    match launch.and_then(|launch| app::run(launch).map_err(|e| e.to_string())) {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => fail("", &message),
     }

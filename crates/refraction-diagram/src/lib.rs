@@ -33,7 +33,7 @@ pub mod table;
 pub mod walkthrough;
 
 pub use layout::Layout;
-pub use model::{ExplorerState, HandleId};
+pub use model::{ExplorerState, HandleId, Lesson};
 pub use overlay::{Focus, Overlay};
 pub use picture::{Diagram, Handle};
 pub use scene_picture::{SceneHandle, SceneHandleId, SceneLayout, ScenePicture};

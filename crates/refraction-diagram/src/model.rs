@@ -48,6 +48,75 @@ pub fn material_of(index: f64) -> Option<Material> {
     MATERIALS.into_iter().find(|m| m.index == index)
 }
 
+/// A typed angle of incidence the explorer cannot show.
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+pub enum AngleError {
+    /// Not a number in [0°, 90°).
+    #[error("θi must be at least 0° and less than 90°, got {0}°")]
+    OutOfRange(f64),
+}
+
+/// The lessons a teacher starts from, each one click away.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Lesson {
+    /// From air into glass at 40°: the ordinary case.
+    AirToGlass,
+    /// From glass into air at 45°, beyond the critical angle (41.8°): total internal reflection.
+    BeyondCritical,
+    /// Straight down the normal: nothing bends.
+    NormalIncidence,
+    /// From air into glass at Brewster's angle (tan θB = μt/μi): reflected and refracted rays
+    /// at right angles.
+    Brewster,
+    /// A ray leaving a water droplet at 40°, with the droplet's outward normal: the normal the
+    /// kernel must turn round, and the wrong T of the source's formula beside it.
+    DropletExit,
+}
+
+impl Lesson {
+    /// Every lesson, in the order of the menu.
+    pub const ALL: [Self; 5] = [
+        Self::AirToGlass,
+        Self::BeyondCritical,
+        Self::NormalIncidence,
+        Self::Brewster,
+        Self::DropletExit,
+    ];
+
+    /// Its name in the menu (also its accessible name).
+    #[must_use]
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::AirToGlass => "Air → glass, 40°",
+            Self::BeyondCritical => "Glass → air beyond θc",
+            Self::NormalIncidence => "Normal incidence",
+            Self::Brewster => "Brewster's angle",
+            Self::DropletExit => "A droplet's exit",
+        }
+    }
+
+    /// The state the lesson starts from, in Section 2's convention.
+    #[must_use]
+    pub fn state(self) -> ExplorerState {
+        let (mu_i, mu_t, degrees, n) = match self {
+            Self::AirToGlass => return ExplorerState::default(),
+            Self::BeyondCritical => (GLASS, AIR, 45.0, DVec3::Y),
+            Self::NormalIncidence => (AIR, GLASS, 0.0, DVec3::Y),
+            Self::Brewster => (AIR, GLASS, (GLASS / AIR).atan().to_degrees(), DVec3::Y),
+            Self::DropletExit => (WATER, AIR, 40.0, DVec3::NEG_Y),
+        };
+        let angle = f64::to_radians(degrees);
+        let w = DVec3::new(angle.sin(), -angle.cos(), 0.0);
+        ExplorerState::new(w, n, mu_i, mu_t, Convention::AlongRay)
+            .unwrap_or_else(|_| unreachable!("every lesson's incidence is valid (tested)"))
+    }
+}
+
+/// The presets' indices, by name.
+const AIR: f64 = MATERIALS[1].index;
+const WATER: f64 = MATERIALS[2].index;
+const GLASS: f64 = MATERIALS[3].index;
+
 /// The draggable things on the canvas.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum HandleId {
@@ -156,11 +225,12 @@ pub struct ExplorerState {
 }
 
 impl Default for ExplorerState {
-    /// W at 40° from the normal, from air into glass, in Section 2's convention.
+    /// W at 40° from the normal, from air into glass, in Section 2's convention
+    /// ([`Lesson::AirToGlass`]).
     fn default() -> Self {
         let angle = 40_f64.to_radians();
         let w = DVec3::new(angle.sin(), -angle.cos(), 0.0);
-        Self::new(w, DVec3::Y, 1.000293, 1.5, Convention::AlongRay)
+        Self::new(w, DVec3::Y, AIR, GLASS, Convention::AlongRay)
             .unwrap_or_else(|_| unreachable!("the default incidence is valid"))
     }
 }
@@ -359,15 +429,27 @@ impl ExplorerState {
         (self.mu_i > self.mu_t).then(|| (self.mu_t / self.mu_i).asin())
     }
 
-    /// Turns W so that the ray meets the surface at the critical angle, on the side it comes
-    /// from now. Does nothing without a critical angle.
+    /// The angle of incidence θi in degrees, between the ray coming in and the normal facing it.
+    #[must_use]
+    pub fn incidence_degrees(&self) -> f64 {
+        self.refraction.cos_i.clamp(-1.0, 1.0).acos().to_degrees()
+    }
+
+    /// Turns W so that the ray meets the surface at `degrees` from the normal, coming from the
+    /// side it comes from now; N, the indices and the convention stay.
     ///
-    /// The angle is a nanoradian short of θc: exactly at θc rounding decides between total
-    /// reflection and a grazing T, and the class should see T lying along the surface.
-    pub fn snap_to_critical_angle(&mut self) {
-        let Some(critical) = self.critical_angle() else {
-            return;
-        };
+    /// # Errors
+    /// [`AngleError::OutOfRange`] unless 0 ≤ `degrees` < 90; the state is unchanged.
+    pub fn set_incidence_degrees(&mut self, degrees: f64) -> Result<(), AngleError> {
+        if !(0.0..90.0).contains(&degrees) {
+            return Err(AngleError::OutOfRange(degrees));
+        }
+        self.set_incidence(degrees.to_radians());
+        Ok(())
+    }
+
+    /// Turns W to `angle` radians from the facing normal, on the side the ray comes from.
+    fn set_incidence(&mut self, angle: f64) {
         let r = &self.refraction;
         let toward_source = self.plane.project(-r.travel);
         let normal = self.plane.project(r.facing_normal).normalize_or(DVec2::Y);
@@ -376,10 +458,20 @@ impl ExplorerState {
         } else {
             1.0
         };
-        let angle = side * (critical - 1e-9);
-        let toward_source = DVec2::from_angle(angle).rotate(normal);
+        let toward_source = DVec2::from_angle(side * angle).rotate(normal);
         let sign = self.convention.travel_sign::<f64>();
         self.point(HandleId::W, -toward_source * sign);
+    }
+
+    /// Turns W so that the ray meets the surface at the critical angle, on the side it comes
+    /// from now. Does nothing without a critical angle.
+    ///
+    /// The angle is a nanoradian short of θc: exactly at θc rounding decides between total
+    /// reflection and a grazing T, and the class should see T lying along the surface.
+    pub fn snap_to_critical_angle(&mut self) {
+        if let Some(critical) = self.critical_angle() {
+            self.set_incidence(critical - 1e-9);
+        }
     }
 }
 
@@ -491,6 +583,45 @@ mod tests {
             turned.refraction().is_tir()
         };
         assert_ne!(tir_after(1.0), tir_after(-1.0));
+    }
+
+    #[test]
+    fn every_lesson_shows_what_it_is_named_for() {
+        let states = Lesson::ALL.map(Lesson::state);
+        let [glass, beyond, normal, brewster, droplet] = &states;
+        assert_eq!(glass, &ExplorerState::default());
+        assert!(beyond.refraction().is_tir());
+        assert!(beyond.critical_angle().unwrap().to_degrees() < 45.0);
+        assert!((normal.refraction().cos_i - 1.0).abs() < 1e-15);
+        let t = normal.refraction().t().unwrap();
+        assert!((t - normal.w()).length() < 1e-12, "nothing bends");
+        // At Brewster's angle the reflected and refracted rays are perpendicular.
+        let r = brewster.refraction();
+        assert!(r.reflected.dot(r.t().unwrap()).abs() < 1e-12);
+        assert!(droplet.refraction().normal_flipped && !droplet.refraction().is_tir());
+        assert_eq!(droplet.mu_i(), 1.333);
+        for (lesson, state) in Lesson::ALL.iter().zip(&states) {
+            assert!(!lesson.label().is_empty() && state.refraction().warnings.len() <= 1);
+        }
+    }
+
+    #[test]
+    fn typed_incidence_turns_w_on_its_side_and_bad_angles_change_nothing() {
+        let mut state = ExplorerState::default();
+        state.set_incidence_degrees(25.0).unwrap();
+        assert!((state.incidence_degrees() - 25.0).abs() < 1e-9);
+        assert!(state.w().x > 0.0, "still coming from the left");
+        state.set_convention(Convention::TowardOrigin);
+        state.set_incidence_degrees(60.0).unwrap();
+        assert!((state.incidence_degrees() - 60.0).abs() < 1e-9);
+        let before = state.clone();
+        for bad in [-1.0, 90.0, f64::NAN, 400.0] {
+            assert!(state.set_incidence_degrees(bad).is_err());
+            assert_eq!(state, before);
+        }
+        let mut flipped = Lesson::DropletExit.state();
+        flipped.set_incidence_degrees(10.0).unwrap();
+        assert!((flipped.incidence_degrees() - 10.0).abs() < 1e-9);
     }
 
     #[test]

@@ -16,6 +16,36 @@ pub fn number(x: f64, decimals: usize) -> String {
     }
 }
 
+/// `x` with at most `digits` significant digits (at least 1), for labels: a true minus sign,
+/// no "−0", and no trailing zeros when they would only repeat an exact value (`1.5`, not
+/// `1.500`); a value that was rounded keeps them (`1.000` for 1.000293), so the label does not
+/// claim an exact 1. Very large or small magnitudes are written as `1.234e-5`.
+#[must_use]
+pub fn significant(x: f64, digits: usize) -> String {
+    let digits = digits.max(1);
+    if !x.is_finite() || x == 0.0 {
+        return number(x, 0);
+    }
+    let magnitude = x.abs().log10().floor();
+    if !(-3.0..4.0).contains(&magnitude) {
+        let text = format!("{x:.*e}", digits - 1);
+        return text.replace('-', "−");
+    }
+    let mut decimals = (digits as f64 - 1.0 - magnitude).max(0.0) as usize;
+    // 0.99999 rounds up to the next decade (1.0000): one decimal fewer.
+    let rounded: f64 = format!("{:.decimals$}", x.abs()).parse().unwrap_or(0.0);
+    if rounded >= 10f64.powf(magnitude + 1.0) && decimals > 0 {
+        decimals -= 1;
+    }
+    let text = number(x, decimals);
+    let exact = format!("{x:.decimals$}").parse::<f64>() == Ok(x);
+    if exact && text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_owned()
+    } else {
+        text
+    }
+}
+
 /// A 3D vector as `(x, y, z)` with [`number`]s.
 #[must_use]
 pub fn vector(v: glam::DVec3, decimals: usize) -> String {
@@ -41,5 +71,31 @@ mod tests {
             "(0.0, −1.0, 0.5)"
         );
         assert_eq!(number(f64::NAN, 2), "NaN");
+    }
+
+    #[test]
+    fn labels_get_at_most_four_significant_digits() {
+        assert_eq!(significant(1.3573907540770769, 4), "1.357");
+        assert_eq!(significant(9.999904099540156e-1, 4), "1.000");
+        assert_eq!(significant(1.000293, 4), "1.000");
+        assert_eq!(significant(1.5, 4), "1.5");
+        assert_eq!(significant(2.417, 4), "2.417");
+        assert_eq!(significant(-0.39258, 4), "−0.3926");
+        assert_eq!(significant(587.56, 4), "587.6");
+        assert_eq!(significant(0.0, 4), "0");
+        assert_eq!(significant(-1.0e-9, 4), "−1.000e−9");
+        assert_eq!(significant(123456.0, 4), "1.235e5");
+        for x in [1.0 / 3.0, 12.345678, -0.000123456, 98765.4321] {
+            let text = significant(x, 4);
+            let digits = text
+                .split('e')
+                .next()
+                .unwrap()
+                .chars()
+                .filter(char::is_ascii_digit)
+                .skip_while(|c| *c == '0')
+                .count();
+            assert!(digits <= 4, "{x}: {text}");
+        }
     }
 }

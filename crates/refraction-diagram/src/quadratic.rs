@@ -44,6 +44,23 @@ impl Quadratic {
         -self.a * self.wn
     }
 
+    /// The b and value ranges to plot: both roots (or, with none, the vertex) and the
+    /// parabola's minimum with room around them, and the zero line always in view.
+    #[must_use]
+    pub fn window(&self) -> ((f64, f64), (f64, f64)) {
+        let vertex = self.vertex();
+        let (low, high) = self
+            .roots
+            .iter()
+            .fold((vertex, vertex), |(lo, hi), b| (lo.min(*b), hi.max(*b)));
+        let half = ((high - low) * 0.5 + 0.6).max(1.0);
+        let middle = (low + high) * 0.5;
+        let bottom = self.value(vertex).min(0.0);
+        let top = self.value(middle + half).max(0.5);
+        let room = (top - bottom) * 0.08;
+        ((middle - half, middle + half), (bottom - room, top + room))
+    }
+
     /// `count` points (b, value) evenly over vertex ± `half_width`.
     #[must_use]
     pub fn samples(&self, half_width: f64, count: usize) -> Vec<[f64; 2]> {
@@ -61,6 +78,35 @@ impl Quadratic {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_window_shows_both_roots_or_the_vertex() {
+        use glam::DVec3;
+        use refraction_kernel::{Convention, Incidence, refract};
+        for (n, mu_i, mu_t) in [
+            (DVec3::Y, 1.0, 1.5),
+            (DVec3::NEG_Y, 1.0, 1.5),
+            (DVec3::Y, 1.5, 1.0),
+            (DVec3::Y, 1.0, 2.417),
+        ] {
+            let w = DVec3::new(0.7, -0.7, 0.0);
+            let r = refract(&Incidence {
+                w,
+                n,
+                mu_i,
+                mu_t,
+                convention: Convention::AlongRay,
+            })
+            .unwrap();
+            let q = Quadratic::of(&r);
+            let ((x0, x1), (y0, y1)) = q.window();
+            for b in q.roots.iter().chain([&q.vertex()]) {
+                assert!(x0 < *b && *b < x1, "{b} outside {x0}..{x1}");
+            }
+            let v = q.value(q.vertex());
+            assert!(y0 < v.min(0.0) && y1 > 0.0, "{y0}..{y1}");
+        }
+    }
     use crate::{ExplorerState, HandleId};
     use refraction_kernel::Convention;
 

@@ -1,0 +1,177 @@
+//! The single-interface view's side panels (controls on the left, the kernel's numbers on the
+//! right): each collapses to a narrow strip and reopens with its key or the strip's button.
+//!
+//! Presentation keeps its own panels: their own open/closed switches (both start closed, so
+//! the diagram owns the projector) and their own egui ids, so that the narrow widths of a
+//! zoomed window are never written over the widths the user chose for the desk, which egui
+//! keeps between runs under the desk panels' ids.
+
+use egui::{Button, Key, Panel, RichText, Role, ScrollArea, Ui, WidgetInfo};
+
+/// The width of a collapsed panel's strip, in points.
+pub const STRIP_WIDTH: f32 = 30.0;
+
+/// One side panel: where it sits, its name, its key and its sizes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SidePanel {
+    /// Its egui id at the desk (presentation adds a suffix).
+    pub id: &'static str,
+    /// What it holds, for the strip's button (also its accessible name).
+    pub name: &'static str,
+    /// The key that opens and closes it.
+    pub key: Key,
+    /// Whether it sits on the left.
+    pub left: bool,
+    /// Its first width, in points.
+    pub default_width: f32,
+    /// The most of the window's width it may take, at the desk and in presentation.
+    pub max_share: (f32, f32),
+}
+
+/// The controls panel (F2).
+pub const CONTROLS: SidePanel = SidePanel {
+    id: "controls",
+    name: "controls",
+    key: Key::F2,
+    left: true,
+    default_width: 290.0,
+    max_share: (0.25, 0.3),
+};
+
+/// The numbers panel (F3): k, the quadratic in b, the candidates, the equations.
+pub const NUMBERS: SidePanel = SidePanel {
+    id: "readouts",
+    name: "numbers",
+    key: Key::F3,
+    left: false,
+    default_width: 440.0,
+    max_share: (0.38, 0.35),
+};
+
+/// Which side panels are open in one mode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Open {
+    /// The controls panel.
+    pub controls: bool,
+    /// The numbers panel.
+    pub numbers: bool,
+}
+
+impl Open {
+    fn of(&mut self, panel: &SidePanel) -> &mut bool {
+        if panel.left {
+            &mut self.controls
+        } else {
+            &mut self.numbers
+        }
+    }
+}
+
+/// The side panels' switches, at the desk and in presentation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Panels {
+    /// At the desk: both open at first.
+    pub desk: Open,
+    /// In presentation: both closed at first.
+    pub presenting: Open,
+}
+
+impl Default for Panels {
+    fn default() -> Self {
+        Self {
+            desk: Open {
+                controls: true,
+                numbers: true,
+            },
+            presenting: Open {
+                controls: false,
+                numbers: false,
+            },
+        }
+    }
+}
+
+impl Panels {
+    /// The switches of the mode shown.
+    pub fn mode(&mut self, presenting: bool) -> &mut Open {
+        if presenting {
+            &mut self.presenting
+        } else {
+            &mut self.desk
+        }
+    }
+
+    /// Toggles the panels whose keys were pressed (unless a text field has the keyboard).
+    pub fn keys(&mut self, ui: &Ui, presenting: bool) {
+        if ui.ctx().text_edit_focused() {
+            return;
+        }
+        let open = self.mode(presenting);
+        for panel in [CONTROLS, NUMBERS] {
+            if ui.input(|i| i.key_pressed(panel.key)) {
+                let shown = open.of(&panel);
+                *shown = !*shown;
+            }
+        }
+    }
+
+    /// Shows `panel` at the side of `ui`: its contents in a vertical scroll area when open,
+    /// else a strip with a button that opens it.
+    pub fn show(
+        &mut self,
+        ui: &mut Ui,
+        panel: &SidePanel,
+        presenting: bool,
+        contents: impl FnOnce(&mut Ui),
+    ) {
+        let shown = self.mode(presenting).of(panel);
+        let id = if presenting {
+            format!("{} (presentation)", panel.id)
+        } else {
+            panel.id.to_owned()
+        };
+        let side = |id: String| {
+            if panel.left {
+                Panel::left(id)
+            } else {
+                Panel::right(id)
+            }
+        };
+        let key = panel.key.name();
+        if !*shown {
+            side(format!("{id} strip"))
+                .exact_size(STRIP_WIDTH)
+                .resizable(false)
+                .show(ui, |ui| {
+                    let arrow = if panel.left { "⏵" } else { "⏴" };
+                    let name = format!("Show the {} ({key})", panel.name);
+                    let open = ui.add(Button::new(RichText::new(arrow).strong()));
+                    open.widget_info(|| WidgetInfo::labeled(Role::Button, true, &name));
+                    if open.on_hover_text(&name).clicked() {
+                        *shown = true;
+                    }
+                });
+            return;
+        }
+        let width = ui.available_width();
+        let share = if presenting {
+            panel.max_share.1
+        } else {
+            panel.max_share.0
+        };
+        let max = (width * share).max(STRIP_WIDTH * 4.0);
+        side(id)
+            .default_size(panel.default_width.min(max))
+            .max_size(max)
+            .resizable(true)
+            .show(ui, |ui| {
+                let arrow = if panel.left { "⏴" } else { "⏵" };
+                let hide =
+                    ui.add(Button::new(format!("{arrow} Hide the {} ({key})", panel.name)).small());
+                if hide.clicked() {
+                    *shown = false;
+                }
+                ScrollArea::vertical().show(ui, contents);
+            });
+    }
+}
