@@ -10,6 +10,8 @@
 //! - [`seed`]: the source's formula taken literally, to show what it loses.
 //! - [`trig`], [`batch`] and [`Variant`]: the variants the `bench` command compares.
 //! - [`candidates`](candidates()) and [`Checks`]: the four sign choices and the laws they break.
+//! - [`Fresnel`]: how much of the light is reflected and transmitted, for s and p polarisation,
+//!   from the kernel's own cosines.
 //!
 //! # Examples
 //!
@@ -48,6 +50,7 @@
 pub mod batch;
 mod candidates;
 mod checks;
+mod fresnel;
 mod input;
 mod real;
 mod refraction;
@@ -58,6 +61,7 @@ mod variants;
 
 pub use candidates::{Candidate, Rejection, candidates};
 pub use checks::{Checks, condition_number};
+pub use fresnel::Fresnel;
 pub use input::{
     Convention, Incidence, IndexName, InputError, UNIT_LENGTH_TOLERANCE, VectorName, Warning,
 };
