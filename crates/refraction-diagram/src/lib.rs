@@ -13,11 +13,13 @@
 //! - [`shapes`], [`geometry`], [`palette`], [`font`]: its vocabulary;
 //! - [`table`], [`equations`], [`quadratic`]: the numbers shown beside it;
 //! - [`accuracy_plot`]: the `bench` report as error against time;
+//! - [`fresnel_plot`]: reflectance and transmittance against the angle of incidence;
 //! - [`walkthrough`]: the source's derivation step by step with the live numbers.
 
 pub mod accuracy_plot;
 pub mod equations;
 pub mod font;
+pub mod fresnel_plot;
 pub mod geometry;
 pub mod layout;
 pub mod model;
