@@ -2,6 +2,7 @@
 //! labels in egui's own font ([`text`]), written atomically.
 
 pub mod atomic;
+pub mod svg;
 pub mod text;
 
 use std::fmt;
@@ -14,7 +15,7 @@ use crate::atomic::write_atomically;
 use refraction_diagram::font::Typeface;
 use refraction_diagram::geometry::Colour;
 use refraction_diagram::{Diagram, ExplorerState, Overlay, Primitive, SceneLayout, ScenePicture};
-use refraction_scene::Scene;
+use refraction_scene::{Scene, Trace};
 
 /// The export size when none is given.
 pub const DEFAULT_SIZE: (u32, u32) = (1920, 1080);
@@ -145,6 +146,20 @@ fn draw(pixmap: &mut Pixmap, face: &Typeface, primitive: &Primitive) {
     }
 }
 
+/// Checks a width and height against [`SIZE_LIMITS`], so that a command can refuse a bad size
+/// before it traces or draws anything.
+///
+/// # Errors
+/// [`RenderError::BadSize`] when either is outside the limits.
+pub fn check_size(width: u32, height: u32) -> Result<(), RenderError> {
+    let (low, high) = SIZE_LIMITS;
+    if (low..=high).contains(&width) && (low..=high).contains(&height) {
+        Ok(())
+    } else {
+        Err(RenderError::BadSize { width, height })
+    }
+}
+
 /// A `width` × `height` pixmap with `primitives` drawn on it in order.
 ///
 /// # Errors
@@ -154,17 +169,30 @@ pub fn draw_primitives(
     height: u32,
     primitives: impl FnOnce(Vec2, &Typeface) -> Vec<Primitive>,
 ) -> Result<Pixmap, RenderError> {
-    let (low, high) = SIZE_LIMITS;
-    let bad_size = RenderError::BadSize { width, height };
-    if !(low..=high).contains(&width) || !(low..=high).contains(&height) {
-        return Err(bad_size);
-    }
-    let mut pixmap = Pixmap::new(width, height).ok_or(bad_size)?;
+    check_size(width, height)?;
+    let mut pixmap = Pixmap::new(width, height).ok_or(RenderError::BadSize { width, height })?;
     let face = Typeface::egui_default().map_err(RenderError::Font)?;
     for primitive in primitives(Vec2::new(width as f32, height as f32), &face) {
         draw(&mut pixmap, &face, &primitive);
     }
     Ok(pixmap)
+}
+
+/// The primitives of the diagram of `state` with `overlay`, for a canvas size: what the PNG
+/// and the SVG both draw.
+fn interface<'a>(
+    state: &'a ExplorerState,
+    overlay: &'a Overlay,
+) -> impl FnOnce(Vec2, &Typeface) -> Vec<Primitive> + 'a {
+    |size, _| Diagram::with_overlay(state, size, overlay).primitives()
+}
+
+/// The primitives of `scene` traced as `trace`, for a canvas size.
+fn traced<'a>(
+    scene: &'a Scene,
+    trace: &'a Trace,
+) -> impl FnOnce(Vec2, &Typeface) -> Vec<Primitive> + 'a {
+    |size, _| ScenePicture::new(scene, trace, &SceneLayout::new(trace.bounds, size)).primitives
 }
 
 /// The diagram of `state` with `overlay` drawn on a `width` × `height` pixmap.
@@ -177,9 +205,20 @@ pub fn render(
     width: u32,
     height: u32,
 ) -> Result<Pixmap, RenderError> {
-    draw_primitives(width, height, |size, _| {
-        Diagram::with_overlay(state, size, overlay).primitives()
-    })
+    draw_primitives(width, height, interface(state, overlay))
+}
+
+/// The diagram of `state` with `overlay` as a `width` × `height` SVG document ([`svg`]).
+///
+/// # Errors
+/// As [`render`].
+pub fn interface_svg(
+    state: &ExplorerState,
+    overlay: &Overlay,
+    width: u32,
+    height: u32,
+) -> Result<String, RenderError> {
+    svg::document(width, height, interface(state, overlay))
 }
 
 /// A pixmap as PNG bytes.
@@ -248,10 +287,25 @@ pub fn export_accuracy_plot(
 /// # Errors
 /// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
 pub fn render_scene(scene: &Scene, width: u32, height: u32) -> Result<Pixmap, RenderError> {
-    let trace = scene.trace();
-    draw_primitives(width, height, |size, _| {
-        ScenePicture::new(scene, &trace, &SceneLayout::new(trace.bounds, size)).primitives
-    })
+    check_size(width, height)?;
+    draw_primitives(width, height, traced(scene, &scene.trace()))
+}
+
+/// `scene`, traced, as a `width` × `height` SVG document, as [`render_scene`] draws it.
+///
+/// # Errors
+/// As [`render_scene`].
+pub fn scene_svg(scene: &Scene, width: u32, height: u32) -> Result<String, RenderError> {
+    check_size(width, height)?;
+    svg::document(width, height, traced(scene, &scene.trace()))
+}
+
+/// Writes an SVG document at `path`, atomically.
+///
+/// # Errors
+/// The file cannot be written (the message names it).
+pub fn write_svg(document: &str, path: &Path) -> Result<(), RenderError> {
+    write_atomically(path, document.as_bytes()).map_err(RenderError::Write)
 }
 
 /// Writes `scene`, traced, as a PNG file at `path`, atomically.
