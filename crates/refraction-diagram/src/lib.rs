@@ -13,10 +13,13 @@
 //! - [`shapes`], [`geometry`], [`palette`], [`font`]: its vocabulary;
 //! - [`table`], [`equations`], [`quadratic`]: the numbers shown beside it;
 //! - [`accuracy_plot`]: the `bench` report as error against time;
+//! - [`animation`]: the frames of the animations exported for slides;
 //! - [`fresnel_plot`]: reflectance and transmittance against the angle of incidence;
-//! - [`walkthrough`]: the source's derivation step by step with the live numbers.
+//! - [`walkthrough`]: the source's derivation step by step with the live numbers;
+//! - [`wavefronts`]: why it bends: the fronts λ/μ apart, their speeds, Huygens's construction.
 
 pub mod accuracy_plot;
+pub mod animation;
 pub mod equations;
 pub mod font;
 pub mod fresnel_plot;
@@ -33,6 +36,7 @@ pub mod shapes;
 pub mod spectrum;
 pub mod table;
 pub mod walkthrough;
+pub mod wavefronts;
 
 pub use layout::Layout;
 pub use model::{ExplorerState, HandleId};

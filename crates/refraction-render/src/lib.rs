@@ -1,6 +1,8 @@
-//! The diagram to pixels off screen: a PNG of [`Diagram::primitives`] drawn with tiny-skia,
-//! labels in egui's own font ([`text`]), written atomically.
+//! The diagram off screen: a PNG of [`Diagram::primitives`] drawn with tiny-skia, labels in
+//! egui's own font ([`text`]); the same primitives as SVG ([`svg`]); animations as GIF
+//! ([`animation`]); every file written atomically ([`atomic`]).
 
+pub mod animation;
 pub mod atomic;
 pub mod svg;
 pub mod text;
@@ -23,7 +25,7 @@ pub const DEFAULT_SIZE: (u32, u32) = (1920, 1080);
 /// The smallest and largest accepted width or height, in pixels.
 pub const SIZE_LIMITS: (u32, u32) = (64, 8192);
 
-/// Why a PNG could not be made or written.
+/// Why an image could not be made or written.
 #[derive(Debug)]
 pub enum RenderError {
     /// The width or height is outside [`SIZE_LIMITS`].
@@ -35,10 +37,14 @@ pub enum RenderError {
     },
     /// The embedded font could not be read.
     Font(String),
-    /// PNG encoding failed.
+    /// PNG or GIF encoding failed.
     Encode(String),
     /// The file could not be written.
     Write(std::io::Error),
+    /// An animation's frames or rate are outside their limits (the message says which).
+    BadAnimation(String),
+    /// The work was cancelled before it was done; nothing was written.
+    Cancelled,
 }
 
 impl fmt::Display for RenderError {
@@ -50,8 +56,11 @@ impl fmt::Display for RenderError {
                 "the image size {width}×{height} is not allowed: width and height must each be \
                  {low} to {high} pixels"
             ),
-            Self::Font(message) | Self::Encode(message) => f.write_str(message),
+            Self::Font(message) | Self::Encode(message) | Self::BadAnimation(message) => {
+                f.write_str(message)
+            }
             Self::Write(e) => write!(f, "{e}"),
+            Self::Cancelled => f.write_str("cancelled: nothing was written"),
         }
     }
 }
