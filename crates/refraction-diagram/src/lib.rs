@@ -15,6 +15,7 @@
 //! - [`accuracy_plot`]: the `bench` report as error against time;
 //! - [`animation`]: the frames of the animations exported for slides;
 //! - [`fresnel_plot`]: reflectance and transmittance against the angle of incidence;
+//! - [`intensities`]: the share of the light each ray carries, for s, p or unpolarised light;
 //! - [`walkthrough`]: the source's derivation step by step with the live numbers;
 //! - [`wavefronts`]: why it bends: the fronts λ/μ apart, their speeds, Huygens's construction.
 
@@ -24,6 +25,7 @@ pub mod equations;
 pub mod font;
 pub mod fresnel_plot;
 pub mod geometry;
+pub mod intensities;
 pub mod layout;
 pub mod model;
 pub mod numbers;

@@ -265,8 +265,8 @@ impl Painter<'_> {
                 self.line(h.a, q, halo);
                 self.line(h.a, q, self.stroke(2.2, self.palette.t, Dash::Solid));
                 self.line(h.b, q, ink);
-                "Huygens: while the front travels v_i·Δt to A,\nthe wavelet from B grows \
-                 to v_t·Δt;\nthe new front is the tangent from A"
+                "Huygens: while the front travels vi·Δt to A,\nthe wavelet from B grows \
+                 to vt·Δt;\nthe new front is the tangent from A"
             }
             None => {
                 "Huygens: the wavelet from B outgrows BA,\nno tangent from A: total internal \
