@@ -175,7 +175,7 @@ pub(crate) fn for_each_ray<S: Real>(
 
 #[inline(always)]
 fn transmit_lanes<S: Real>(rays: &RayBatch<S>, out: &mut Transmissions<S>) {
-    for_each_ray(rays, out, |i| i, lane);
+    for_each_ray(rays, out, |i| i, |d, n, mu| lane(d, n, mu));
 }
 
 #[cfg(target_arch = "x86_64")]

@@ -107,6 +107,8 @@ pub trait Vector3<S>:
     fn glam_refract(self, normal: Self, eta: S) -> Self;
 }
 
+// Every method is `#[inline]`: the kernel's generic code is instantiated in the crates that
+// call it, and without the attribute these one-line methods could not be inlined there.
 macro_rules! impl_real {
     ($s:ty, $v:ty, $name:literal) => {
         impl Real for $s {
@@ -117,62 +119,80 @@ macro_rules! impl_real {
             const HALF: Self = 0.5;
             const EPSILON: Self = <$s>::EPSILON;
             const NAME: &'static str = $name;
+            #[inline]
             fn sqrt(self) -> Self {
                 <$s>::sqrt(self)
             }
+            #[inline]
             fn abs(self) -> Self {
                 <$s>::abs(self)
             }
+            #[inline]
             fn is_finite(self) -> bool {
                 <$s>::is_finite(self)
             }
+            #[inline]
             #[allow(clippy::cast_possible_truncation, trivial_numeric_casts)]
             fn from_f64(x: f64) -> Self {
                 x as $s
             }
+            #[inline]
             #[allow(trivial_numeric_casts)]
             fn to_f64(self) -> f64 {
                 f64::from(self)
             }
+            #[inline]
             fn max(self, other: Self) -> Self {
                 <$s>::max(self, other)
             }
+            #[inline]
             fn min(self, other: Self) -> Self {
                 <$s>::min(self, other)
             }
+            #[inline]
             fn acos(self) -> Self {
                 <$s>::acos(self)
             }
+            #[inline]
             fn asin(self) -> Self {
                 <$s>::asin(self)
             }
+            #[inline]
             fn sin_cos(self) -> (Self, Self) {
                 <$s>::sin_cos(self)
             }
         }
 
         impl Vector3<$s> for $v {
+            #[inline]
             fn new(x: $s, y: $s, z: $s) -> Self {
                 <$v>::new(x, y, z)
             }
+            #[inline]
             fn to_array(self) -> [$s; 3] {
                 <$v>::to_array(&self)
             }
+            #[inline]
             fn dot(self, other: Self) -> $s {
                 <$v>::dot(self, other)
             }
+            #[inline]
             fn cross(self, other: Self) -> Self {
                 <$v>::cross(self, other)
             }
+            #[inline]
             fn length_squared(self) -> $s {
                 <$v>::length_squared(self)
             }
+            #[inline]
             fn length(self) -> $s {
                 <$v>::length(self)
             }
+            #[inline]
             fn div_scalar(self, s: $s) -> Self {
                 self / s
             }
+            #[inline]
             fn glam_refract(self, normal: Self, eta: $s) -> Self {
                 <$v>::refract(self, normal, eta)
             }

@@ -53,11 +53,12 @@ pub struct Facing<S: Real> {
     pub transmitted: Option<Transmitted<S>>,
 }
 
-/// cosθi = −d·n for a facing unit normal, kept within [0, 1]: rounding can take the dot product
-/// of two unit vectors a little past ±1, and a cosine outside [0, 1] would give NaN angles.
+/// cosθi = −d·n for a facing unit normal (d·n ≤ 0, so never below 0), kept at most 1: rounding
+/// can take the dot product of two unit vectors a little past ±1, and a cosine above 1 would
+/// give NaN angles.
 #[inline(always)]
 pub(crate) fn cos_incidence<S: Real>(d: S::Vec3, n: S::Vec3) -> S {
-    (-d.dot(n)).max(S::ZERO).min(S::ONE)
+    (-d.dot(n)).min(S::ONE)
 }
 
 /// The part of `d` along the surface, d + cosθi·n (of length sinθi), from which T =

@@ -90,7 +90,7 @@ fn straight_rgba(pixmap: &Pixmap) -> Vec<u8> {
 }
 
 fn encoding(e: &gif::EncodingError) -> RenderError {
-    RenderError::Encode(format!("cannot encode the GIF: {e}"))
+    RenderError::EncodeGif(e.to_string())
 }
 
 /// The animation of `spec` from `start`, drawn with `overlay`, as GIF bytes. `progress` is told

@@ -7,14 +7,13 @@ pub mod atomic;
 pub mod svg;
 pub mod text;
 
-use std::fmt;
 use std::path::Path;
 
 use glam::Vec2;
 use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Transform};
 
 use crate::atomic::write_atomically;
-use refraction_diagram::font::Typeface;
+use refraction_diagram::font::{FontError, Typeface};
 use refraction_diagram::geometry::Colour;
 use refraction_diagram::{Diagram, ExplorerState, Overlay, Primitive, SceneLayout, ScenePicture};
 use refraction_scene::{Scene, Trace};
@@ -26,9 +25,15 @@ pub const DEFAULT_SIZE: (u32, u32) = (1920, 1080);
 pub const SIZE_LIMITS: (u32, u32) = (64, 8192);
 
 /// Why an image could not be made or written.
-#[derive(Debug)]
+#[derive(Debug, thiserror::Error)]
 pub enum RenderError {
     /// The width or height is outside [`SIZE_LIMITS`].
+    #[error(
+        "the image size {width}×{height} is not allowed: width and height must each be {} to {} \
+         pixels",
+        SIZE_LIMITS.0,
+        SIZE_LIMITS.1
+    )]
     BadSize {
         /// Requested width.
         width: u32,
@@ -36,36 +41,24 @@ pub enum RenderError {
         height: u32,
     },
     /// The embedded font could not be read.
-    Font(String),
-    /// PNG or GIF encoding failed.
+    #[error(transparent)]
+    Font(#[from] FontError),
+    /// PNG encoding failed; the encoder's message.
+    #[error("cannot encode the PNG: {0}")]
     Encode(String),
     /// The file could not be written.
+    #[error(transparent)]
     Write(std::io::Error),
+    /// GIF encoding failed; the encoder's message.
+    #[error("cannot encode the GIF: {0}")]
+    EncodeGif(String),
     /// An animation's frames or rate are outside their limits (the message says which).
+    #[error("{0}")]
     BadAnimation(String),
     /// The work was cancelled before it was done; nothing was written.
+    #[error("cancelled: nothing was written")]
     Cancelled,
 }
-
-impl fmt::Display for RenderError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let (low, high) = SIZE_LIMITS;
-        match self {
-            Self::BadSize { width, height } => write!(
-                f,
-                "the image size {width}×{height} is not allowed: width and height must each be \
-                 {low} to {high} pixels"
-            ),
-            Self::Font(message) | Self::Encode(message) | Self::BadAnimation(message) => {
-                f.write_str(message)
-            }
-            Self::Write(e) => write!(f, "{e}"),
-            Self::Cancelled => f.write_str("cancelled: nothing was written"),
-        }
-    }
-}
-
-impl std::error::Error for RenderError {}
 
 fn paint(colour: Colour) -> Paint<'static> {
     let mut paint = Paint {
@@ -180,7 +173,7 @@ pub fn draw_primitives(
 ) -> Result<Pixmap, RenderError> {
     check_size(width, height)?;
     let mut pixmap = Pixmap::new(width, height).ok_or(RenderError::BadSize { width, height })?;
-    let face = Typeface::egui_default().map_err(RenderError::Font)?;
+    let face = Typeface::egui_default()?;
     for primitive in primitives(Vec2::new(width as f32, height as f32), &face) {
         draw(&mut pixmap, &face, &primitive);
     }
@@ -237,7 +230,7 @@ pub fn interface_svg(
 pub fn encode(pixmap: &Pixmap) -> Result<Vec<u8>, RenderError> {
     pixmap
         .encode_png()
-        .map_err(|e| RenderError::Encode(format!("cannot encode the PNG: {e}")))
+        .map_err(|e| RenderError::Encode(e.to_string()))
 }
 
 /// The diagram of `state` with `overlay` as PNG bytes.
@@ -403,5 +396,18 @@ mod tests {
         let path = Path::new("/nonexistent-folder/x.png");
         let err = export(&state, &Overlay::default(), (640, 360), path).unwrap_err();
         assert!(err.to_string().contains("/nonexistent-folder/x.png"));
+    }
+
+    #[test]
+    fn a_bad_size_says_the_size_and_the_limits_in_one_sentence() {
+        let err = RenderError::BadSize {
+            width: 20,
+            height: 9000,
+        };
+        assert_eq!(
+            err.to_string(),
+            "the image size 20×9000 is not allowed: width and height must each be 64 to 8192 \
+             pixels"
+        );
     }
 }

@@ -228,7 +228,7 @@ pub fn document(
     primitives: impl FnOnce(Vec2, &Typeface) -> Vec<Primitive>,
 ) -> Result<String, RenderError> {
     check_size(width, height)?;
-    let face = Typeface::egui_default().map_err(RenderError::Font)?;
+    let face = Typeface::egui_default()?;
     let primitives = primitives(Vec2::new(width as f32, height as f32), &face);
     let mut out = format!(
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" \
