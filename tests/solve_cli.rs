@@ -152,3 +152,41 @@ fn many_lines_stream_in_order() {
     let xs: Vec<f64> = lines.iter().map(|l| l["t"][0].as_f64().unwrap()).collect();
     assert!(xs.windows(2).all(|p| p[0] < p[1]), "answers out of order");
 }
+
+#[test]
+fn fresnel_fractions_and_special_angles_in_both_precisions() {
+    // W at Brewster's angle from air into glass (tanθi = 1.5; W need not be unit), then glass
+    // to air at 30° (below the critical angle) and at 45° (beyond it).
+    let input = [
+        r#"{"w":[1.5,-1,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5}"#,
+        r#"{"w":[1.5,-1,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5,"precision":"f32"}"#,
+        r#"{"w":[0.5,-0.8660254037844386,0],"n":[0,1,0],"mu_i":1.5,"mu_t":1}"#,
+        r#"{"w":[1,-1,0],"n":[0,1,0],"mu_i":1.5,"mu_t":1}"#,
+    ]
+    .join("\n");
+    let (code, lines) = solve(&input);
+    assert_eq!(code, 0);
+    let share = |line: &Value, name: &str| line["fresnel"][name].as_f64().unwrap();
+    for brewster in &lines[..2] {
+        assert!(share(brewster, "r_p") < 1e-12, "{brewster}");
+        assert!((share(brewster, "r_s") - 0.1479).abs() < 1e-4, "{brewster}");
+        let angle = brewster["brewster_deg"].as_f64().unwrap();
+        assert!((angle - 1.5_f64.atan().to_degrees()).abs() < 1e-4);
+        assert!(brewster["critical_deg"].is_null());
+    }
+    for line in &lines[2..] {
+        for (r, t) in [("r_s", "t_s"), ("r_p", "t_p")] {
+            assert!(
+                (share(line, r) + share(line, t) - 1.0).abs() < 1e-15,
+                "{line}"
+            );
+        }
+        let critical = line["critical_deg"].as_f64().unwrap();
+        assert!((critical - (1.0_f64 / 1.5).asin().to_degrees()).abs() < 1e-12);
+    }
+    assert!(share(&lines[2], "t_s") > 0.8 && lines[2]["tir"] == false);
+    assert_eq!(
+        (share(&lines[3], "r_s"), share(&lines[3], "t_p")),
+        (1.0, 0.0)
+    );
+}

@@ -12,7 +12,8 @@ use serde::de::IgnoredAny;
 use serde_json::Value;
 
 use crate::lines::fields::{self, Field, Fields};
-use refraction_kernel::{Convention, Incidence, Real, Refraction, Vector3, refract};
+use refraction_diagram::fresnel_plot::SpecialAngles;
+use refraction_kernel::{Convention, Fresnel, Incidence, Real, Refraction, Vector3, refract};
 
 /// The floating-point precision a problem is solved in.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -204,6 +205,26 @@ struct CandidateAnswer<S> {
     rule: Option<&'static str>,
 }
 
+/// The Fresnel power fractions in the JSON answer.
+#[derive(Serialize)]
+struct FresnelAnswer<S> {
+    r_s: S,
+    r_p: S,
+    t_s: S,
+    t_p: S,
+}
+
+impl<S: Real> From<Fresnel<S>> for FresnelAnswer<S> {
+    fn from(f: Fresnel<S>) -> Self {
+        Self {
+            r_s: f.rs,
+            r_p: f.rp,
+            t_s: f.ts,
+            t_p: f.tp,
+        }
+    }
+}
+
 /// The JSON answer to one request.
 #[derive(Serialize)]
 struct Answer<S> {
@@ -218,11 +239,15 @@ struct Answer<S> {
     normal_flipped: bool,
     warnings: Vec<String>,
     candidates: Vec<CandidateAnswer<S>>,
+    fresnel: FresnelAnswer<S>,
+    brewster_deg: Option<S>,
+    critical_deg: Option<S>,
     precision: &'static str,
 }
 
 impl<S: Real> From<&Refraction<S>> for Answer<S> {
     fn from(r: &Refraction<S>) -> Self {
+        let angles = SpecialAngles::for_ratio(r.mu.to_f64());
         Self {
             t: r.t().map(Vector3::to_array),
             tir: r.is_tir(),
@@ -246,6 +271,9 @@ impl<S: Real> From<&Refraction<S>> for Answer<S> {
                     rule: c.rejection.map(|r| r.rule()),
                 })
                 .collect(),
+            fresnel: Fresnel::of(r).into(),
+            brewster_deg: angles.brewster_deg.map(S::from_f64),
+            critical_deg: angles.critical_deg.map(S::from_f64),
             precision: S::NAME,
         }
     }
@@ -331,6 +359,40 @@ mod tests {
         let back = Request::parse(&request.to_json_line()).unwrap();
         assert_eq!(back, request);
         assert_eq!(back.n[2].to_bits(), (-0.0_f64).to_bits());
+    }
+
+    #[test]
+    fn answers_carry_the_fresnel_fractions_and_the_angles_that_matter() {
+        let into_glass: Value = serde_json::from_str(
+            &answer(r#"{"w":[0,-1,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5}"#).unwrap(),
+        )
+        .unwrap();
+        let f = &into_glass["fresnel"];
+        for (r, t) in [("r_s", "t_s"), ("r_p", "t_p")] {
+            let (r, t) = (f[r].as_f64().unwrap(), f[t].as_f64().unwrap());
+            assert!(
+                (r - 0.04).abs() < 1e-15 && (r + t - 1.0).abs() < 1e-15,
+                "{f}"
+            );
+        }
+        let brewster = into_glass["brewster_deg"].as_f64().unwrap();
+        assert!((brewster - 56.31).abs() < 1e-2);
+        assert!(into_glass["critical_deg"].is_null());
+        // Out of glass past the critical angle, in f32: all reflected.
+        let tir: Value = serde_json::from_str(
+            &answer(r#"{"w":[0.8,-0.6,0],"n":[0,1,0],"mu_i":1.5,"mu_t":1,"precision":"f32"}"#)
+                .unwrap(),
+        )
+        .unwrap();
+        assert_eq!(tir["fresnel"]["r_p"], 1.0);
+        assert_eq!(tir["fresnel"]["t_s"], 0.0);
+        assert!((tir["critical_deg"].as_f64().unwrap() - 41.81).abs() < 1e-2);
+        let same: Value = serde_json::from_str(
+            &answer(r#"{"w":[0.8,-0.6,0],"n":[0,1,0],"mu_i":1.5,"mu_t":1.5}"#).unwrap(),
+        )
+        .unwrap();
+        assert!(same["brewster_deg"].is_null() && same["critical_deg"].is_null());
+        assert_eq!(same["fresnel"]["t_p"], 1.0);
     }
 
     #[test]

@@ -39,6 +39,101 @@ impl Exact {
     pub fn is_tir(&self) -> bool {
         self.t.is_none()
     }
+
+    /// The exact Fresnel fractions of this refraction (all reflected on total internal
+    /// reflection).
+    #[must_use]
+    pub fn fresnel(&self) -> ExactFresnel {
+        if self.is_tir() {
+            ExactFresnel::TOTAL_REFLECTION
+        } else {
+            fresnel_of(self.mu, self.cos_i, self.cos_t)
+        }
+    }
+}
+
+/// The exact Fresnel fractions for μ and cosθi in double-double (cosθt from Snell's law; all
+/// reflected on total internal reflection): for measuring how sensitive the fractions are to
+/// their input. `cos_i` must be in [0, 1], `mu` > 0.
+#[must_use]
+pub fn fresnel_at(mu: TwoFloat, cos_i: TwoFloat) -> ExactFresnel {
+    let k = discriminant(mu, cos_i);
+    if k < 0.0 {
+        ExactFresnel::TOTAL_REFLECTION
+    } else {
+        fresnel_of(mu, cos_i, k.sqrt())
+    }
+}
+
+/// The Fresnel power fractions in double-double, for s and p polarisation.
+#[derive(Clone, Copy, Debug)]
+pub struct ExactFresnel {
+    /// Reflectance R_s.
+    pub rs: TwoFloat,
+    /// Reflectance R_p.
+    pub rp: TwoFloat,
+    /// Transmittance T_s.
+    pub ts: TwoFloat,
+    /// Transmittance T_p.
+    pub tp: TwoFloat,
+}
+
+impl ExactFresnel {
+    /// Total internal reflection: everything reflected.
+    const TOTAL_REFLECTION: Self = Self {
+        rs: TwoFloat::from_f64(1.0),
+        rp: TwoFloat::from_f64(1.0),
+        ts: TwoFloat::from_f64(0.0),
+        tp: TwoFloat::from_f64(0.0),
+    };
+
+    /// The four fractions in the order R_s, R_p, T_s, T_p.
+    #[must_use]
+    pub fn to_array(&self) -> [TwoFloat; 4] {
+        [self.rs, self.rp, self.ts, self.tp]
+    }
+}
+
+/// The textbook Fresnel fractions, R = ((x − y)/(x + y))² and T = 4xy/(x + y)² with
+/// (x, y) = (μ·cosθi, cosθt) for s and (cosθi, μ·cosθt) for p, evaluated in double-double
+/// from `mu`, `cos_i` and `cos_t` taken as exact. The literal form is the point: with some 32
+/// digits its cancellations cost the oracle nothing an f64 can see. μ = 1 reflects nothing;
+/// otherwise the cosines must be ≥ 0 and not both zero.
+#[must_use]
+pub fn fresnel(mu: f64, cos_i: f64, cos_t: f64) -> ExactFresnel {
+    fresnel_of(
+        TwoFloat::from(mu),
+        TwoFloat::from(cos_i),
+        TwoFloat::from(cos_t),
+    )
+}
+
+fn fresnel_of(mu: TwoFloat, cos_i: TwoFloat, cos_t: TwoFloat) -> ExactFresnel {
+    if mu == 1.0 {
+        // Equal indices: no interface, nothing reflected (also at grazing incidence, where
+        // both admittances vanish).
+        return ExactFresnel {
+            rs: TwoFloat::from(0.0),
+            rp: TwoFloat::from(0.0),
+            ts: TwoFloat::from(1.0),
+            tp: TwoFloat::from(1.0),
+        };
+    }
+    let split = |x: TwoFloat, y: TwoFloat| {
+        let inverse = reciprocal(x + y);
+        let r = (x - y) * inverse;
+        (r * r, x * y * inverse * inverse * 4.0)
+    };
+    let (rs, ts) = split(mu * cos_i, cos_t);
+    let (rp, tp) = split(cos_i, mu * cos_t);
+    ExactFresnel { rs, rp, ts, tp }
+}
+
+/// 1/x for x > 0, to double-double accuracy: one Newton step from the f64 estimate (see
+/// [`reciprocal_sqrt`] for why the oracle never divides by a double-double).
+fn reciprocal(x: TwoFloat) -> TwoFloat {
+    let r = TwoFloat::from(1.0 / x.hi());
+    r + r * (TwoFloat::from(1.0) - x * r)
 }
 
 fn dd(v: [f64; 3]) -> Vec3DD {
@@ -76,6 +171,11 @@ fn unit(v: &Vec3DD) -> Vec3DD {
     scale(&scaled, reciprocal_sqrt(dot(&scaled, &scaled)))
 }
 
+/// k = 1 − μ²(1 − cos²θi), arranged so that μ = 1 gives cos²θi ≥ 0 exactly.
+fn discriminant(mu: TwoFloat, cos_i: TwoFloat) -> TwoFloat {
+    mu * mu * cos_i * cos_i + (TwoFloat::from(1.0) - mu) * (TwoFloat::from(1.0) + mu)
+}
+
 /// The exact refraction of `w` at `n` with indices `mu_i`, `mu_t` in `convention`, the normal
 /// turned to face the incoming ray. Inputs must be valid for the kernel (finite, non-zero
 /// vectors, indices > 0).
@@ -111,8 +211,7 @@ pub fn refract_facing(
     let n = unit(&dd(n));
     let mu = TwoFloat::new_div(mu_i, mu_t);
     let cos_i = -dot(&d, &n);
-    // k = 1 − μ²(1 − cos²θi), arranged so that μ = 1 gives cos²θi ≥ 0 exactly.
-    let k = mu * mu * cos_i * cos_i + (TwoFloat::from(1.0) - mu) * (TwoFloat::from(1.0) + mu);
+    let k = discriminant(mu, cos_i);
     if k < 0.0 {
         return Exact {
             t: None,
@@ -170,6 +269,29 @@ mod tests {
         let err = angular_error([1.0, 1e-9, 0.0], &exact);
         assert!((err - 1e-9).abs() < 1e-20);
         assert_eq!(angular_error([0.0; 3], &exact), f64::INFINITY);
+    }
+
+    #[test]
+    fn fresnel_at_normal_incidence_and_brewster() {
+        let f = fresnel(1.0 / 1.5, 1.0, 1.0);
+        let four_percent = TwoFloat::new_div(1.0, 25.0);
+        // μ = 1/1.5 is rounded, so 0.04 holds to f64 accuracy, not beyond.
+        assert!((f.rs - four_percent).abs() < 1e-16 && (f.rp - four_percent).abs() < 1e-16);
+        assert!((f.rs + f.ts - 1.0).abs() < 1e-30);
+        let exact = refract(
+            [1.5, -1.0, 0.0],
+            [0.0, 1.0, 0.0],
+            1.0,
+            1.5,
+            Convention::AlongRay,
+        );
+        assert!(exact.fresnel().rp.hi() < 1e-30);
+    }
+
+    #[test]
+    fn reciprocal_is_accurate_to_double_double() {
+        let x = TwoFloat::from(3.0) + TwoFloat::from(1e-20);
+        assert!((reciprocal(x) * x - 1.0).abs() < 1e-30);
     }
 
     #[test]

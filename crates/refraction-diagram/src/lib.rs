@@ -13,12 +13,19 @@
 //! - [`shapes`], [`geometry`], [`palette`], [`font`]: its vocabulary;
 //! - [`table`], [`equations`], [`quadratic`]: the numbers shown beside it;
 //! - [`accuracy_plot`]: the `bench` report as error against time;
-//! - [`walkthrough`]: the source's derivation step by step with the live numbers.
+//! - [`animation`]: the frames of the animations exported for slides;
+//! - [`fresnel_plot`]: reflectance and transmittance against the angle of incidence;
+//! - [`intensities`]: the share of the light each ray carries, for s, p or unpolarised light;
+//! - [`walkthrough`]: the source's derivation step by step with the live numbers;
+//! - [`wavefronts`]: why it bends: the fronts λ/μ apart, their speeds, Huygens's construction.
 
 pub mod accuracy_plot;
+pub mod animation;
 pub mod equations;
 pub mod font;
+pub mod fresnel_plot;
 pub mod geometry;
+pub mod intensities;
 pub mod layout;
 pub mod model;
 pub mod numbers;
@@ -31,6 +38,7 @@ pub mod shapes;
 pub mod spectrum;
 pub mod table;
 pub mod walkthrough;
+pub mod wavefronts;
 
 pub use layout::Layout;
 pub use model::{ExplorerState, HandleId, Lesson};

@@ -12,6 +12,8 @@
 //! - [`candidates`](candidates()) and [`Checks`]: the four sign choices and the laws they break.
 //! - [`api`]: what GLSL, pbrt-v4, Ray Tracing in One Weekend and Mitsuba 3 return for a
 //!   `refract` call, bit for bit, and what their arguments mean here.
+//! - [`Fresnel`]: how much of the light is reflected and transmitted, for s and p polarisation,
+//!   from the kernel's own cosines.
 //!
 //! # Examples
 //!
@@ -51,6 +53,7 @@ pub mod api;
 pub mod batch;
 mod candidates;
 mod checks;
+mod fresnel;
 mod input;
 mod real;
 mod refraction;
@@ -61,6 +64,7 @@ mod variants;
 
 pub use candidates::{Candidate, Rejection, candidates};
 pub use checks::{Checks, condition_number};
+pub use fresnel::Fresnel;
 pub use input::{
     Convention, Incidence, IndexName, InputError, UNIT_LENGTH_TOLERANCE, VectorName, Warning,
 };

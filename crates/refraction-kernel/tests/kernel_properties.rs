@@ -3,7 +3,7 @@
 use glam::{DQuat, DVec3};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
-use refraction_kernel::{Convention, Incidence, Real, Refraction, Vector3, refract};
+use refraction_kernel::{Convention, Fresnel, Incidence, Real, Refraction, Vector3, refract};
 
 fn unit_vector() -> impl Strategy<Value = DVec3> {
     prop::array::uniform3(-1.0..1.0_f64)
@@ -132,6 +132,40 @@ fn rotation_equivariant<S: Real>(
     Ok(())
 }
 
+/// Energy is conserved, every share is in [0, 1], s light is reflected at least as much as p
+/// (|r_p| = |r_s|·|cos(θi + θt)/cos(θi − θt)|), and the light going back the way it came is
+/// transmitted in the same share (reciprocity: T₁₂(θi) = T₂₁(θt)), checked away from grazing.
+fn fresnel_laws<S: Real>(w: DVec3, n: DVec3, mu_i: f64, mu_t: f64) -> Result<(), TestCaseError> {
+    let forward = solve::<S>(w, n, mu_i, mu_t, Convention::AlongRay);
+    let f = Fresnel::of(&forward);
+    let eps = S::EPSILON.to_f64();
+    for (r, t) in [(f.rs, f.ts), (f.rp, f.tp)] {
+        let (r, t) = (r.to_f64(), t.to_f64());
+        prop_assert!(
+            (0.0..=1.0).contains(&r) && (0.0..=1.0).contains(&t),
+            "{f:?}"
+        );
+        prop_assert!((r + t - 1.0).abs() <= eps, "{f:?}");
+    }
+    prop_assert!(f.rp.to_f64() <= f.rs.to_f64() + 8.0 * eps, "{f:?}");
+    // Reciprocity away from grazing on either side: the reversed ray's cosines carry the
+    // forward T's error, which the shares amplify by their slope, unbounded as either cosine
+    // goes to 0 (the critical angle seen from the other side).
+    let Some(tr) = forward.transmission else {
+        return Ok(());
+    };
+    if forward.cos_i.to_f64() < 0.1 || tr.cos_t.to_f64() < 0.1 {
+        return Ok(());
+    }
+    let back = solve::<S>(-wide::<S>(tr.t), n, mu_t, mu_i, Convention::AlongRay);
+    let b = Fresnel::of(&back);
+    let tol = 256.0 * eps * forward.condition_number() * back.condition_number();
+    for (x, y) in [(f.ts, b.ts), (f.tp, b.tp)] {
+        prop_assert!((x.to_f64() - y.to_f64()).abs() <= tol, "{f:?} back {b:?}");
+    }
+    Ok(())
+}
+
 fn rotation() -> impl Strategy<Value = DQuat> {
     prop::array::uniform4(-1.0..1.0_f64)
         .prop_filter("not degenerate", |v| {
@@ -161,6 +195,10 @@ macro_rules! properties_at {
                 #[test]
                 fn tir_exactly_past_the_critical_angle(w in unit_vector(), n in unit_vector(), mu_i in index(), mu_t in index()) {
                     tir_iff_past_critical::<$s>(w, n, mu_i, mu_t)?;
+                }
+                #[test]
+                fn fresnel_conserves_energy_and_is_reciprocal(w in unit_vector(), n in unit_vector(), mu_i in index(), mu_t in index()) {
+                    fresnel_laws::<$s>(w, n, mu_i, mu_t)?;
                 }
                 #[test]
                 fn rotating_the_inputs_rotates_t(w in unit_vector(), n in unit_vector(), mu_i in 1.0..2.5_f64, mu_t in 1.0..2.5_f64, q in rotation()) {

@@ -1,8 +1,11 @@
-//! The diagram to pixels off screen: a PNG of [`Diagram::primitives`] drawn with tiny-skia,
-//! labels in egui's own font ([`text`]), written atomically.
+//! The diagram off screen: a PNG of [`Diagram::primitives`] drawn with tiny-skia, labels in
+//! egui's own font ([`text`]); the same primitives as SVG ([`svg`]); animations as GIF
+//! ([`animation`]); every file written atomically ([`atomic`]).
 
+pub mod animation;
 pub mod atomic;
 pub mod format;
+pub mod svg;
 pub mod text;
 
 use std::path::Path;
@@ -14,7 +17,7 @@ use crate::atomic::write_atomically;
 use refraction_diagram::font::{FontError, Typeface};
 use refraction_diagram::geometry::Colour;
 use refraction_diagram::{Diagram, ExplorerState, Overlay, Primitive, SceneLayout, ScenePicture};
-use refraction_scene::Scene;
+use refraction_scene::{Scene, Trace};
 
 /// The export size when none is given.
 pub const DEFAULT_SIZE: (u32, u32) = (1920, 1080);
@@ -22,7 +25,7 @@ pub const DEFAULT_SIZE: (u32, u32) = (1920, 1080);
 /// The smallest and largest accepted width or height, in pixels.
 pub const SIZE_LIMITS: (u32, u32) = (64, 8192);
 
-/// Why a PNG could not be made or written.
+/// Why an image could not be made or written.
 #[derive(Debug, thiserror::Error)]
 pub enum RenderError {
     /// The width or height is outside [`SIZE_LIMITS`].
@@ -47,6 +50,15 @@ pub enum RenderError {
     /// The file could not be written.
     #[error(transparent)]
     Write(std::io::Error),
+    /// GIF encoding failed; the encoder's message.
+    #[error("cannot encode the GIF: {0}")]
+    EncodeGif(String),
+    /// An animation's frames or rate are outside their limits (the message says which).
+    #[error("{0}")]
+    BadAnimation(String),
+    /// The work was cancelled before it was done; nothing was written.
+    #[error("cancelled: nothing was written")]
+    Cancelled,
 }
 
 fn paint(colour: Colour) -> Paint<'static> {
@@ -169,6 +181,23 @@ pub fn draw_primitives(
     Ok(pixmap)
 }
 
+/// The primitives of the diagram of `state` with `overlay`, for a canvas size: what the PNG
+/// and the SVG both draw.
+fn interface<'a>(
+    state: &'a ExplorerState,
+    overlay: &'a Overlay,
+) -> impl FnOnce(Vec2, &Typeface) -> Vec<Primitive> + 'a {
+    |size, _| Diagram::with_overlay(state, size, overlay).primitives()
+}
+
+/// The primitives of `scene` traced as `trace`, for a canvas size.
+fn traced<'a>(
+    scene: &'a Scene,
+    trace: &'a Trace,
+) -> impl FnOnce(Vec2, &Typeface) -> Vec<Primitive> + 'a {
+    |size, _| ScenePicture::new(scene, trace, &SceneLayout::new(trace.bounds, size)).primitives
+}
+
 /// The diagram of `state` with `overlay` drawn on a `width` × `height` pixmap.
 ///
 /// # Errors
@@ -179,9 +208,20 @@ pub fn render(
     width: u32,
     height: u32,
 ) -> Result<Pixmap, RenderError> {
-    draw_primitives(width, height, |size, _| {
-        Diagram::with_overlay(state, size, overlay).primitives()
-    })
+    draw_primitives(width, height, interface(state, overlay))
+}
+
+/// The diagram of `state` with `overlay` as a `width` × `height` SVG document ([`svg`]).
+///
+/// # Errors
+/// As [`render`].
+pub fn interface_svg(
+    state: &ExplorerState,
+    overlay: &Overlay,
+    width: u32,
+    height: u32,
+) -> Result<String, RenderError> {
+    svg::document(width, height, interface(state, overlay))
 }
 
 /// A pixmap as PNG bytes.
@@ -250,10 +290,25 @@ pub fn export_accuracy_plot(
 /// # Errors
 /// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
 pub fn render_scene(scene: &Scene, width: u32, height: u32) -> Result<Pixmap, RenderError> {
-    let trace = scene.trace();
-    draw_primitives(width, height, |size, _| {
-        ScenePicture::new(scene, &trace, &SceneLayout::new(trace.bounds, size)).primitives
-    })
+    check_size(width, height)?;
+    draw_primitives(width, height, traced(scene, &scene.trace()))
+}
+
+/// `scene`, traced, as a `width` × `height` SVG document, as [`render_scene`] draws it.
+///
+/// # Errors
+/// As [`render_scene`].
+pub fn scene_svg(scene: &Scene, width: u32, height: u32) -> Result<String, RenderError> {
+    check_size(width, height)?;
+    svg::document(width, height, traced(scene, &scene.trace()))
+}
+
+/// Writes an SVG document at `path`, atomically.
+///
+/// # Errors
+/// The file cannot be written (the message names it).
+pub fn write_svg(document: &str, path: &Path) -> Result<(), RenderError> {
+    write_atomically(path, document.as_bytes()).map_err(RenderError::Write)
 }
 
 /// Writes `scene`, traced, as a PNG file at `path`, atomically.

@@ -1,63 +1,11 @@
-//! Fresnel reflectance and transmittance for s and p polarisation, from the cosines the kernel
-//! has already computed: no trigonometry.
-
-use serde::Serialize;
+//! Fresnel reflectance and transmittance for s and p polarisation at a scene's hits: the
+//! kernel's [`refraction_kernel::Fresnel`] at the tracer's precision, from the cosines the
+//! kernel has already computed (no trigonometry, one implementation for the whole project).
 
 /// The fractions of the incident intensity reflected and transmitted at one interface, for
 /// light polarised perpendicular (s) and parallel (p) to the plane of incidence. In 2D every
 /// interface shares the plane of the scene, so s and p stay meaningful from hit to hit.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Fresnel {
-    /// Reflectance R_s.
-    pub rs: f64,
-    /// Reflectance R_p.
-    pub rp: f64,
-    /// Transmittance T_s = 1 − R_s.
-    pub ts: f64,
-    /// Transmittance T_p = 1 − R_p.
-    pub tp: f64,
-}
-
-/// (R, T) for the two optical admittances of one polarisation, each ≥ 0:
-/// R = ((a − b)/(a + b))², T = 4ab/(a + b)²; R + T = 1 identically, and each keeps its digits
-/// where the other is near 1.
-fn split(a: f64, b: f64) -> (f64, f64) {
-    let sum = a + b;
-    if sum > 0.0 {
-        let r = (a - b) / sum;
-        (r * r, 4.0 * a * b / (sum * sum))
-    } else {
-        // Grazing incidence at the critical angle: everything is reflected.
-        (1.0, 0.0)
-    }
-}
-
-impl Fresnel {
-    /// The Fresnel intensities for μ = μ_i/μ_t and the kernel's cosθi, cosθt (both in [0, 1]).
-    ///
-    /// r_s = (μ·cosθi − cosθt)/(μ·cosθi + cosθt) and r_p = (cosθi − μ·cosθt)/(cosθi + μ·cosθt):
-    /// the textbook amplitudes divided through by μ_t.
-    #[must_use]
-    pub fn new(mu: f64, cos_i: f64, cos_t: f64) -> Self {
-        let (rs, ts) = split(mu * cos_i, cos_t);
-        let (rp, tp) = split(cos_i, mu * cos_t);
-        Self { rs, rp, ts, tp }
-    }
-
-    /// Total internal reflection: everything reflected.
-    pub const TOTAL_REFLECTION: Self = Self {
-        rs: 1.0,
-        rp: 1.0,
-        ts: 0.0,
-        tp: 0.0,
-    };
-
-    /// The reflectance of unpolarised light: (R_s + R_p)/2.
-    #[must_use]
-    pub fn reflectance(&self) -> f64 {
-        (self.rs + self.rp) / 2.0
-    }
-}
+pub type Fresnel = refraction_kernel::Fresnel<f64>;
 
 #[cfg(test)]
 mod tests {

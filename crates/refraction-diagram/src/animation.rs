@@ -1,0 +1,235 @@
+//! Animations for a slide: the frames of the μ → 1 morph, of a sweep of the angle of incidence
+//! through the critical angle, and of the moving wavefronts, each as the state (and the
+//! wavefront phase) of one frame, drawn like any other diagram.
+
+use glam::{DVec2, Vec2};
+
+use super::model::{ExplorerState, HandleId};
+use super::overlay::Overlay;
+use super::picture::Diagram;
+use super::shapes::{Figure, Primitive, lower_all};
+use super::wavefronts::{self, WaveOptions};
+
+/// The frames an animation has when none are asked for.
+pub const DEFAULT_FRAMES: usize = 36;
+/// The frames per second when none are asked for.
+pub const DEFAULT_FPS: u32 = 12;
+
+/// The largest angle of incidence the sweep reaches, in degrees: grazing, but not so exactly
+/// that rounding decides which side the ray is on.
+const SWEEP_END_DEG: f64 = 89.5;
+
+/// Smoothstep: starts and ends gently, so the class sees both ends of a morph.
+#[must_use]
+pub fn ease(s: f32) -> f32 {
+    let s = if s.is_nan() { 0.0 } else { s.clamp(0.0, 1.0) };
+    s * s * (3.0 - 2.0 * s)
+}
+
+/// An animation the `render --animate` command and *Export animation* write.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Animation {
+    /// μ_t moves to μ_i, so that μ → 1 and T turns into W: why the source picks its signs.
+    Mu,
+    /// W swings from normal incidence to grazing; from the denser medium, so that total
+    /// internal reflection appears on the way, at the critical angle.
+    Sweep,
+    /// The wavefronts move at c/μ in each medium, one period, looping.
+    Wavefronts,
+}
+
+impl Animation {
+    /// Every animation, in the order of the menus.
+    pub const ALL: [Self; 3] = [Self::Mu, Self::Sweep, Self::Wavefronts];
+
+    /// The name used on the command line.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Mu => "mu",
+            Self::Sweep => "sweep",
+            Self::Wavefronts => "wavefronts",
+        }
+    }
+
+    /// The animation of a command-line name.
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|a| a.name() == name)
+    }
+
+    /// What it shows, for a menu.
+    #[must_use]
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Mu => "μ → 1: T turns into W",
+            Self::Sweep => "Sweep θi to grazing: total internal reflection appears",
+            Self::Wavefronts => "Moving wavefronts",
+        }
+    }
+
+    /// Frame `index` of `count` (at least 1) starting from `start`.
+    #[must_use]
+    pub fn frame(self, start: &ExplorerState, index: usize, count: usize) -> Frame {
+        let last = count.max(2) - 1;
+        let s = index.min(last) as f64 / last as f64;
+        match self {
+            Self::Mu => {
+                let mut state = start.clone();
+                let eased = f64::from(ease(s as f32));
+                let mu_t = start.mu_t() + (start.mu_i() - start.mu_t()) * eased;
+                // Between two accepted indices every index is accepted.
+                let _ = state.set_mu_t(if index >= last { start.mu_i() } else { mu_t });
+                Frame { state, waves: None }
+            }
+            Self::Sweep => Frame {
+                state: swept(start, s * SWEEP_END_DEG),
+                waves: None,
+            },
+            Self::Wavefronts => Frame {
+                state: start.clone(),
+                waves: Some(WaveOptions {
+                    // `count` frames over one period: the frame after the last is the first.
+                    phase: index as f64 / count.max(1) as f64,
+                    huygens: false,
+                }),
+            },
+        }
+    }
+}
+
+/// `start` with the ray from the denser of its two media, meeting the surface at `degrees`
+/// from the normal on the side it comes from now.
+fn swept(start: &ExplorerState, degrees: f64) -> ExplorerState {
+    let mut state = start.clone();
+    let (dense, thin) = if start.mu_i() >= start.mu_t() {
+        (start.mu_i(), start.mu_t())
+    } else {
+        (start.mu_t(), start.mu_i())
+    };
+    // Both were accepted as they are; swapping them keeps them acceptable.
+    let _ = state.set_mu_i(dense);
+    let _ = state.set_mu_t(thin);
+    let r = state.refraction();
+    let toward_source = state.plane().project(-r.travel);
+    let normal = state
+        .plane()
+        .project(r.facing_normal)
+        .normalize_or(DVec2::Y);
+    let side = if normal.perp_dot(toward_source) < 0.0 {
+        -1.0
+    } else {
+        1.0
+    };
+    let toward_source = DVec2::from_angle(side * degrees.to_radians()).rotate(normal);
+    let sign = state.convention().travel_sign::<f64>();
+    state.point(HandleId::W, -toward_source * sign);
+    state
+}
+
+/// One frame: the state drawn and, for the wavefronts, where they are.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Frame {
+    /// The state of this frame.
+    pub state: ExplorerState,
+    /// The wavefronts drawn, if any.
+    pub waves: Option<WaveOptions>,
+}
+
+impl Frame {
+    /// The frame drawn on a canvas of `size` with `overlay`, back to front: the diagram with
+    /// the wavefronts (if any) over the media and under everything else.
+    #[must_use]
+    pub fn primitives(&self, size: Vec2, overlay: &Overlay) -> Vec<Primitive> {
+        let diagram = Diagram::with_overlay(&self.state, size, overlay);
+        let Some(options) = self.waves else {
+            return diagram.primitives();
+        };
+        let layer = wavefronts::layer(&self.state, &diagram.layout, &overlay.palette, &options);
+        // The background and the two media come first (see `Diagram::with_overlay`).
+        let media_end = diagram
+            .shapes
+            .iter()
+            .take(3)
+            .take_while(|s| matches!(s, Figure::Fill { .. }))
+            .count();
+        let mut shapes = diagram.shapes;
+        let labels = layer.labels.into_iter().map(Figure::Text);
+        let tail = shapes.split_off(media_end);
+        shapes.extend(layer.shapes);
+        shapes.extend(tail);
+        shapes.extend(labels);
+        lower_all(&shapes)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip_and_unknown_ones_are_refused() {
+        for a in Animation::ALL {
+            assert_eq!(Animation::from_name(a.name()), Some(a));
+        }
+        assert_eq!(Animation::from_name("spin"), None);
+    }
+
+    #[test]
+    fn the_mu_morph_ends_at_mu_one_with_t_equal_to_w() {
+        let start = ExplorerState::default();
+        assert_ne!(start.mu_i(), start.mu_t());
+        let last = Animation::Mu.frame(&start, 23, 24).state;
+        assert_eq!(last.refraction().mu, 1.0);
+        assert_eq!(last.refraction().t(), Some(last.refraction().travel));
+        let first = Animation::Mu.frame(&start, 0, 24).state;
+        assert_eq!(first.mu_t(), start.mu_t());
+    }
+
+    #[test]
+    fn the_sweep_goes_from_normal_incidence_through_the_critical_angle_to_grazing() {
+        let start = ExplorerState::default();
+        let frames: Vec<_> = (0..24)
+            .map(|i| Animation::Sweep.frame(&start, i, 24).state)
+            .collect();
+        let cos_i: Vec<f64> = frames.iter().map(|s| s.refraction().cos_i).collect();
+        assert!((cos_i[0] - 1.0).abs() < 1e-12);
+        assert!(cos_i[23] < 0.01);
+        assert!(cos_i.windows(2).all(|w| w[1] < w[0]), "{cos_i:?}");
+        assert!(!frames[0].refraction().is_tir() && frames[23].refraction().is_tir());
+        assert!(frames.iter().all(|s| s.mu_i() > s.mu_t()));
+    }
+
+    #[test]
+    fn wavefront_frames_loop_over_one_period_and_draw_more_than_the_diagram() {
+        let start = ExplorerState::default();
+        let phases: Vec<f64> = (0..4)
+            .map(|i| {
+                Animation::Wavefronts
+                    .frame(&start, i, 4)
+                    .waves
+                    .unwrap()
+                    .phase
+            })
+            .collect();
+        assert_eq!(phases, [0.0, 0.25, 0.5, 0.75]);
+        let frame = Animation::Wavefronts.frame(&start, 1, 4);
+        let size = Vec2::new(800.0, 600.0);
+        let plain = Diagram::new(&frame.state, size).primitives();
+        let with_waves = frame.primitives(size, &Overlay::default());
+        assert!(with_waves.len() > plain.len() + 10);
+        // The background still comes first, the handles (the diagram's last discs) stay last
+        // but for the fronts' labels.
+        assert_eq!(with_waves[0], plain[0]);
+        let last_disc =
+            |p: &[Primitive]| p.iter().rposition(|x| matches!(x, Primitive::Disc { .. }));
+        let (plain_disc, waves_disc) =
+            (last_disc(&plain).unwrap(), last_disc(&with_waves).unwrap());
+        assert_eq!(with_waves[waves_disc], plain[plain_disc]);
+        assert!(
+            with_waves[waves_disc + 1..]
+                .iter()
+                .all(|p| matches!(p, Primitive::Text(_)))
+        );
+    }
+}

@@ -1,0 +1,185 @@
+//! Animations as GIF files for slides: the frames of [`refraction_diagram::animation`] drawn as
+//! the PNG is, each reduced to its own 256-colour palette, looping.
+
+use std::path::Path;
+
+use gif::{Encoder, Frame, Repeat};
+use tiny_skia::Pixmap;
+
+use refraction_diagram::animation::{Animation, DEFAULT_FPS, DEFAULT_FRAMES};
+use refraction_diagram::{ExplorerState, Overlay};
+
+use crate::atomic::write_atomically;
+use crate::{RenderError, check_size, draw_primitives};
+
+/// The fewest and the most frames an animation may have.
+pub const FRAME_LIMITS: (usize, usize) = (2, 600);
+
+/// The slowest and the fastest frame rate, frames per second: GIF counts time in hundredths
+/// of a second, and viewers slow anything faster than 50 down to 10.
+pub const FPS_LIMITS: (u32, u32) = (1, 50);
+
+/// The colour reduction's speed, 1 (best) to 30 (fastest): 10 is the `gif` crate's
+/// compromise, and the diagram's flat colours lose nothing visible at it.
+const QUANTISATION_SPEED: i32 = 10;
+
+/// What to animate, how long and how large.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AnimationSpec {
+    /// Which animation.
+    pub animation: Animation,
+    /// How many frames (within [`FRAME_LIMITS`]).
+    pub frames: usize,
+    /// Frames per second (within [`FPS_LIMITS`]).
+    pub fps: u32,
+    /// Width and height in pixels (within [`crate::SIZE_LIMITS`]).
+    pub size: (u32, u32),
+}
+
+impl AnimationSpec {
+    /// `animation` with the default frames and rate at `size`.
+    #[must_use]
+    pub fn new(animation: Animation, size: (u32, u32)) -> Self {
+        Self {
+            animation,
+            frames: DEFAULT_FRAMES,
+            fps: DEFAULT_FPS,
+            size,
+        }
+    }
+
+    /// Checks the frames, rate and size before any frame is drawn.
+    ///
+    /// # Errors
+    /// [`RenderError::BadAnimation`] or [`RenderError::BadSize`], naming the value and the limits.
+    pub fn check(&self) -> Result<(), RenderError> {
+        let (fewest, most) = FRAME_LIMITS;
+        if !(fewest..=most).contains(&self.frames) {
+            return Err(RenderError::BadAnimation(format!(
+                "{} frames is not allowed: an animation has {fewest} to {most} frames",
+                self.frames
+            )));
+        }
+        let (slowest, fastest) = FPS_LIMITS;
+        if !(slowest..=fastest).contains(&self.fps) {
+            return Err(RenderError::BadAnimation(format!(
+                "{} frames per second is not allowed: GIF plays {slowest} to {fastest}",
+                self.fps
+            )));
+        }
+        check_size(self.size.0, self.size.1)
+    }
+
+    /// How long each frame shows, in the hundredths of a second GIF counts in.
+    #[must_use]
+    pub fn delay(&self) -> u16 {
+        (100.0 / f64::from(self.fps.max(1))).round() as u16
+    }
+}
+
+/// A pixmap's pixels as straight (not premultiplied) RGBA, as the GIF encoder takes them.
+fn straight_rgba(pixmap: &Pixmap) -> Vec<u8> {
+    pixmap
+        .pixels()
+        .iter()
+        .flat_map(|p| {
+            let c = p.demultiply();
+            [c.red(), c.green(), c.blue(), c.alpha()]
+        })
+        .collect()
+}
+
+fn encoding(e: &gif::EncodingError) -> RenderError {
+    RenderError::EncodeGif(e.to_string())
+}
+
+/// The animation of `spec` from `start`, drawn with `overlay`, as GIF bytes. `progress` is told
+/// (frames done, frames in all) after each frame and stops the work by returning false.
+///
+/// # Errors
+/// A bad spec ([`AnimationSpec::check`]), an unreadable font, a failed encoding, or
+/// [`RenderError::Cancelled`] when `progress` said stop.
+pub fn gif(
+    start: &ExplorerState,
+    overlay: &Overlay,
+    spec: &AnimationSpec,
+    mut progress: impl FnMut(usize, usize) -> bool,
+) -> Result<Vec<u8>, RenderError> {
+    spec.check()?;
+    let (width, height) = spec.size;
+    // Both fit: SIZE_LIMITS stop at 8192.
+    let (w16, h16) = (width as u16, height as u16);
+    let mut bytes = Vec::new();
+    {
+        let mut encoder = Encoder::new(&mut bytes, w16, h16, &[]).map_err(|e| encoding(&e))?;
+        encoder
+            .set_repeat(Repeat::Infinite)
+            .map_err(|e| encoding(&e))?;
+        for index in 0..spec.frames {
+            let frame = spec.animation.frame(start, index, spec.frames);
+            let pixmap = draw_primitives(width, height, |size, _| frame.primitives(size, overlay))?;
+            let mut rgba = straight_rgba(&pixmap);
+            let mut gif_frame = Frame::from_rgba_speed(w16, h16, &mut rgba, QUANTISATION_SPEED);
+            gif_frame.delay = spec.delay();
+            encoder.write_frame(&gif_frame).map_err(|e| encoding(&e))?;
+            if !progress(index + 1, spec.frames) {
+                return Err(RenderError::Cancelled);
+            }
+        }
+    }
+    Ok(bytes)
+}
+
+/// Writes the animation of `spec` from `start` as a GIF file at `path`, atomically; nothing is
+/// written when `progress` cancels.
+///
+/// # Errors
+/// As [`gif`], or the file cannot be written (the message names it).
+pub fn export_gif(
+    start: &ExplorerState,
+    overlay: &Overlay,
+    spec: &AnimationSpec,
+    path: &Path,
+    progress: impl FnMut(usize, usize) -> bool,
+) -> Result<(), RenderError> {
+    let bytes = gif(start, overlay, spec, progress)?;
+    write_atomically(path, &bytes).map_err(RenderError::Write)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bad_frames_and_rates_are_refused_by_value() {
+        let mut spec = AnimationSpec::new(Animation::Mu, (320, 180));
+        spec.frames = 1;
+        assert!(spec.check().unwrap_err().to_string().contains("1 frames"));
+        spec.frames = 24;
+        spec.fps = 0;
+        assert!(spec.check().unwrap_err().to_string().contains("1 to 50"));
+        spec.fps = 12;
+        assert_eq!(spec.delay(), 8);
+        assert!(spec.check().is_ok());
+    }
+
+    #[test]
+    fn cancelling_stops_after_the_frame_it_was_told_of() {
+        let spec = AnimationSpec {
+            frames: 5,
+            ..AnimationSpec::new(Animation::Sweep, (96, 64))
+        };
+        let mut told = Vec::new();
+        let result = gif(
+            &ExplorerState::default(),
+            &Overlay::default(),
+            &spec,
+            |done, all| {
+                told.push((done, all));
+                done < 2
+            },
+        );
+        assert!(matches!(result, Err(RenderError::Cancelled)));
+        assert_eq!(told, [(1, 5), (2, 5)]);
+    }
+}

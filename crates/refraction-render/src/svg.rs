@@ -1,0 +1,310 @@
+//! The diagram as SVG, for slides: the same [`Primitive`]s the PNG draws, as editable vector
+//! shapes and text.
+//!
+//! Fills and strokes become `<path>`s and `<circle>`s with the PNG's colours (opacity as
+//! `fill-opacity`/`stroke-opacity`), widths, round caps and joins. Dashes are already cut into
+//! pieces by the diagram ([`refraction_diagram::shapes::Dash`]), so the pieces of one dashed
+//! line (consecutive polylines of one width and colour) become the subpaths of one `<path>`:
+//! one object to recolour in a slide, with the PNG's dash pattern exactly. Labels become
+//! `<text>` in the PNG's font (egui's Ubuntu Light) and size, one `<tspan>` per line at the
+//! baselines the PNG uses, kerning and ligatures off because the PNG places glyphs by their
+//! advance widths alone; their background boxes are paths behind them.
+
+use glam::Vec2;
+
+use refraction_diagram::Primitive;
+use refraction_diagram::font::Typeface;
+use refraction_diagram::geometry::Colour;
+use refraction_diagram::shapes::Label;
+
+use crate::{RenderError, check_size};
+
+/// The font the labels ask for: the PNG's (Ubuntu Light, named both ways font tables name
+/// it), then any sans-serif where it is not installed.
+pub const FONT_FAMILY: &str = "'Ubuntu Light', Ubuntu, sans-serif";
+
+/// The weight of Ubuntu Light.
+const FONT_WEIGHT: u16 = 300;
+
+/// Glyphs placed by their advance widths alone, as the PNG places them.
+const TYPESETTING: &str = r#"font-kerning="none" font-variant-ligatures="none""#;
+
+/// Appends one element and a line break.
+fn element(out: &mut String, text: &str) {
+    out.push_str(text);
+    out.push('\n');
+}
+
+/// A coordinate or length with at most two decimals (a hundredth of a pixel), trimmed.
+fn number(x: f32) -> String {
+    trimmed(x, 2)
+}
+
+/// `attribute="#rrggbb"` and, when translucent, its opacity attribute.
+fn paint(attribute: &str, colour: Colour) -> String {
+    let mut out = format!(
+        r##"{attribute}="#{:02x}{:02x}{:02x}""##,
+        colour.r, colour.g, colour.b
+    );
+    if colour.a < 255 {
+        let opacity = f32::from(colour.a) / 255.0;
+        out.push_str(&format!(
+            r#" {attribute}-opacity="{}""#,
+            trimmed(opacity, 3)
+        ));
+    }
+    out
+}
+
+/// `x` with at most `decimals` decimals, trailing zeros dropped, and no "-0".
+fn trimmed(x: f32, decimals: usize) -> String {
+    let text = format!("{x:.decimals$}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".to_owned()
+    } else {
+        text.to_owned()
+    }
+}
+
+/// Text escaped for XML character data and attribute values.
+fn escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for ch in text.chars() {
+        match ch {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            _ => out.push(ch),
+        }
+    }
+    out
+}
+
+/// Appends `M x y L x y …` (and `Z` when closed) to `d`; false, appending nothing, for no
+/// points or a non-finite one (which tiny-skia would not draw either).
+fn subpath(d: &mut String, points: &[Vec2], closed: bool) -> bool {
+    if points.is_empty() || !points.iter().all(|p| p.is_finite()) {
+        return false;
+    }
+    for (i, p) in points.iter().enumerate() {
+        let command = if i == 0 { 'M' } else { 'L' };
+        if !d.is_empty() {
+            d.push(' ');
+        }
+        d.push_str(&format!("{command}{} {}", number(p.x), number(p.y)));
+    }
+    if closed {
+        d.push_str(" Z");
+    }
+    true
+}
+
+/// The stroke attributes of a polyline or an outline.
+fn stroke(width: f32, colour: Colour) -> String {
+    format!(
+        r#"fill="none" {} stroke-width="{}" stroke-linecap="round" stroke-linejoin="round""#,
+        paint("stroke", colour),
+        number(width)
+    )
+}
+
+/// Writes one label: its background box as a path, then the text, one tspan per line.
+fn text(out: &mut String, face: &Typeface, label: &Label) {
+    let size = face.measure(&label.text, label.size);
+    let top_left = label.at - size * Vec2::new(label.h.fraction(), label.v.fraction());
+    if !top_left.is_finite() {
+        return;
+    }
+    if let Some(background) = label.background {
+        let pad = Vec2::splat(label.size * 0.2);
+        let (min, max) = (top_left - pad, top_left + size + pad);
+        let corners = [min, Vec2::new(max.x, min.y), max, Vec2::new(min.x, max.y)];
+        let mut d = String::new();
+        subpath(&mut d, &corners, true);
+        element(
+            out,
+            &format!(r#"<path d="{d}" {}/>"#, paint("fill", background)),
+        );
+    }
+    let font = format!(
+        r#"font-family="{FONT_FAMILY}" font-weight="{FONT_WEIGHT}" font-size="{}""#,
+        number(label.size)
+    );
+    out.push_str(&format!(
+        r#"<text xml:space="preserve" {font} {TYPESETTING} {}>"#,
+        paint("fill", label.colour)
+    ));
+    let (ascent, line_height) = (face.ascent(label.size), face.line_height(label.size));
+    for (row, line) in label.text.lines().enumerate() {
+        let baseline = top_left.y + ascent + row as f32 * line_height;
+        out.push_str(&format!(
+            r#"<tspan x="{}" y="{}">{}</tspan>"#,
+            number(top_left.x),
+            number(baseline),
+            escape(line)
+        ));
+    }
+    out.push_str("</text>\n");
+}
+
+/// Writes the element that starts at `primitives[start]` (a run of polylines of one width and
+/// colour becomes one path); returns where the next element starts.
+fn draw_group(out: &mut String, face: &Typeface, primitives: &[Primitive], start: usize) -> usize {
+    match &primitives[start] {
+        Primitive::Polygon { points, colour } => {
+            let mut d = String::new();
+            if subpath(&mut d, points, true) {
+                element(
+                    out,
+                    &format!(r#"<path d="{d}" {}/>"#, paint("fill", *colour)),
+                );
+            }
+            start + 1
+        }
+        Primitive::Polyline { width, colour, .. } => {
+            let mut d = String::new();
+            let mut end = start;
+            while let Some(Primitive::Polyline {
+                points,
+                width: w,
+                colour: c,
+            }) = primitives.get(end)
+            {
+                if w != width || c != colour {
+                    break;
+                }
+                subpath(&mut d, points, false);
+                end += 1;
+            }
+            if !d.is_empty() {
+                element(
+                    out,
+                    &format!(r#"<path d="{d}" {}/>"#, stroke(*width, *colour)),
+                );
+            }
+            end
+        }
+        Primitive::Disc {
+            center,
+            radius,
+            fill,
+            outline_width,
+            outline,
+        } => {
+            if center.is_finite() && radius.is_finite() && *radius > 0.0 {
+                element(
+                    out,
+                    &format!(
+                        r#"<circle cx="{}" cy="{}" r="{}" {} {} stroke-width="{}"/>"#,
+                        number(center.x),
+                        number(center.y),
+                        number(*radius),
+                        paint("fill", *fill),
+                        paint("stroke", *outline),
+                        number(*outline_width)
+                    ),
+                );
+            }
+            start + 1
+        }
+        Primitive::Text(label) => {
+            text(out, face, label);
+            start + 1
+        }
+    }
+}
+
+/// A `width` × `height` SVG document of `primitives`, in drawing order, as [`crate::draw_primitives`]
+/// draws them into pixels.
+///
+/// # Errors
+/// A size outside [`crate::SIZE_LIMITS`], or an unreadable embedded font.
+pub fn document(
+    width: u32,
+    height: u32,
+    primitives: impl FnOnce(Vec2, &Typeface) -> Vec<Primitive>,
+) -> Result<String, RenderError> {
+    check_size(width, height)?;
+    let face = Typeface::egui_default()?;
+    let primitives = primitives(Vec2::new(width as f32, height as f32), &face);
+    let mut out = format!(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" \
+         width=\"{width}\" height=\"{height}\" viewBox=\"0 0 {width} {height}\">\n"
+    );
+    let mut next = 0;
+    while next < primitives.len() {
+        next = draw_group(&mut out, &face, &primitives, next);
+    }
+    out.push_str("</svg>\n");
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use refraction_diagram::shapes::Align;
+
+    fn label(text: &str) -> Label {
+        Label {
+            text: text.to_owned(),
+            at: Vec2::new(10.0, 20.0),
+            h: Align::Start,
+            v: Align::Start,
+            size: 16.0,
+            colour: Colour::hex(0x112233).with_alpha(128),
+            background: Some(Colour::hex(0xffffff)),
+        }
+    }
+
+    #[test]
+    fn numbers_are_short_and_never_negative_zero() {
+        assert_eq!(number(1.0), "1");
+        assert_eq!(number(-0.001), "0");
+        assert_eq!(number(2.345_67), "2.35");
+        assert_eq!(number(-12.5), "-12.5");
+    }
+
+    #[test]
+    fn the_pieces_of_one_dashed_line_are_one_path_and_text_is_escaped() {
+        let colour = Colour::hex(0x0072b2);
+        let piece = |x: f32| Primitive::Polyline {
+            points: vec![Vec2::new(x, 0.0), Vec2::new(x + 5.0, 0.0)],
+            width: 2.0,
+            colour,
+        };
+        let doc = document(64, 64, |_, _| {
+            vec![
+                piece(0.0),
+                piece(10.0),
+                piece(20.0),
+                Primitive::Polyline {
+                    points: vec![Vec2::ZERO, Vec2::new(f32::NAN, 1.0)],
+                    width: 3.0,
+                    colour,
+                },
+                Primitive::Text(label("a < b & \"c\"\nsecond")),
+            ]
+        })
+        .unwrap();
+        assert_eq!(doc.matches("<path d=\"M0 0 L5 0 M10 0").count(), 1, "{doc}");
+        assert!(!doc.contains("NaN"), "{doc}");
+        assert!(
+            doc.contains(">a &lt; b &amp; &quot;c&quot;</tspan><tspan"),
+            "{doc}"
+        );
+        assert!(
+            doc.contains(r##"fill="#112233" fill-opacity="0.502""##),
+            "{doc}"
+        );
+        assert_eq!(doc.matches("<tspan").count(), 2);
+    }
+
+    #[test]
+    fn a_bad_size_is_refused_as_for_the_png() {
+        let err = document(10, 64, |_, _| Vec::new()).unwrap_err().to_string();
+        assert!(err.contains("10×64"), "{err}");
+    }
+}
