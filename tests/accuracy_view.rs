@@ -2,23 +2,16 @@
 //! the window keeps drawing frames, then the verdict, plot and table appear. No time is
 //! asserted; the test only waits (up to a generous limit) for the measurement to finish.
 
+mod common;
+
 use std::time::{Duration, Instant};
 
-use egui::Vec2;
-use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use refraction_diagram::ExplorerState;
-use refraction_explorer::app::Explorer;
 
 #[test]
 fn measuring_shows_progress_then_the_verdict() {
-    let mut h = Harness::builder()
-        .with_size(Vec2::new(1280.0, 760.0))
-        .build_ui_state(
-            |ui, app: &mut Explorer| app.show(ui),
-            Explorer::new(ExplorerState::default()),
-        );
-    h.run();
+    let mut h = common::harness(ExplorerState::default());
     h.get_by_label("Accuracy vs time").click();
     h.run();
     h.get_by_label("Quick run (a few seconds)").click();

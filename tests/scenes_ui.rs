@@ -3,6 +3,7 @@
 
 mod common;
 
+use common::{drag, harness_for, press_move_release};
 use egui::{Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -10,42 +11,15 @@ use refraction_diagram::ExplorerState;
 use refraction_explorer::app::{Explorer, View};
 use refraction_scene::{Scene, Side};
 
-fn harness(explorer: Explorer) -> Harness<'static, Explorer> {
-    let mut harness = Harness::builder()
-        .with_size(Vec2::new(1280.0, 760.0))
-        .with_theme(egui::Theme::Light)
-        .build_ui_state(|ui, app: &mut Explorer| app.show(ui), explorer);
-    harness.run();
-    harness
-}
-
 fn droplet() -> Harness<'static, Explorer> {
     let mut explorer = Explorer::new(ExplorerState::default());
     explorer.open_scene(Scene::embedded("droplet").unwrap());
-    harness(explorer)
-}
-
-/// Presses the pointer at `path`'s first point, moves it through the rest and releases it at
-/// the last: a click when the path is one point, a drag otherwise.
-fn press_move_release(harness: &mut Harness<'_, Explorer>, path: &[Pos2]) {
-    let (Some(&first), Some(&last)) = (path.first(), path.last()) else {
-        return;
-    };
-    harness.hover_at(first);
-    harness.run();
-    harness.drag_at(first);
-    harness.run();
-    for &p in &path[1..] {
-        harness.hover_at(p);
-        harness.run();
-    }
-    harness.drop_at(last);
-    harness.run();
+    harness_for(explorer)
 }
 
 #[test]
 fn the_bar_switches_to_scenes_and_the_picker_opens_a_scene() {
-    let mut h = harness(Explorer::new(ExplorerState::default()));
+    let mut h = harness_for(Explorer::new(ExplorerState::default()));
     h.get_by_label("Scenes").click();
     h.run();
     assert_eq!(h.state().view(), View::Scenes);
@@ -68,10 +42,7 @@ fn dragging_the_source_retraces_the_scene() {
     let first = h.state().scenes().trace().segments[0];
     let from = h.get_by_label("Source handle").rect().center();
     let to = from + Vec2::new(0.0, 40.0);
-    let path: Vec<Pos2> = (0..=4)
-        .map(|step| from + (to - from) * (step as f32 / 4.0))
-        .collect();
-    press_move_release(&mut h, &path);
+    drag(&mut h, from, to);
     let scenes = h.state().scenes();
     let moved = scenes.scene().source().origin;
     assert!(moved.y < origin.y - 0.1, "{origin} → {moved}");

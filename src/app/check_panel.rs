@@ -49,6 +49,9 @@ fn match_words(verdict: &Verdict) -> &'static str {
     }
 }
 
+/// How a whole `check` JSON line (an object) starts, which separate fields never do.
+const JSON_LINE_START: char = '{';
+
 /// Reads a number typed into the field named `name`.
 fn number(text: &str, name: &str) -> Result<f64, String> {
     text.trim()
@@ -81,7 +84,7 @@ impl CheckPanel {
     /// The case and the student's T from the fields: a whole JSON line in "Your T", or the
     /// separate fields with the explorer's convention.
     fn read(&self, state: &ExplorerState) -> Result<(Request, [f64; 3]), String> {
-        if self.yours.trim_start().starts_with('{') {
+        if self.yours.trim_start().starts_with(JSON_LINE_START) {
             return check::parse_line(self.yours.trim());
         }
         let request = Request {

@@ -37,6 +37,18 @@ impl Default for Controls {
     }
 }
 
+/// Sets the index of `handle`, named `symbol` in the error if the kernel refuses it.
+fn set_index(
+    state: &mut ExplorerState,
+    handle: HandleId,
+    symbol: &str,
+    index: f64,
+) -> Result<(), String> {
+    state
+        .set_index(handle, index)
+        .map_err(|e| format!("{symbol}: {e}"))
+}
+
 /// The slider, typed value and preset of one index.
 fn index_controls(
     ui: &mut Ui,
@@ -56,8 +68,10 @@ fn index_controls(
     let slider = Slider::new(&mut index, low..=high)
         .text(symbol)
         .clamping(SliderClamping::Never);
+    // The slider's number box takes any value typed into it: a refused one shows its error in
+    // the field below, as a refused typed value does.
     if ui.add(slider).changed() {
-        let _ = state.set_index(handle, index);
+        field.settle(set_index(state, handle, symbol, index));
     }
     let typed = field.show(
         ui,
@@ -66,11 +80,8 @@ fn index_controls(
         90.0,
     );
     if let Some(text) = typed {
-        let outcome = parse_number(&text, symbol).and_then(|value| {
-            state
-                .set_index(handle, value)
-                .map_err(|e| format!("{symbol}: {e}"))
-        });
+        let outcome =
+            parse_number(&text, symbol).and_then(|value| set_index(state, handle, symbol, value));
         field.settle(outcome);
     }
     let current = material_of(state.index(handle)).map_or("custom", |m| m.name);
@@ -80,8 +91,8 @@ fn index_controls(
             for m in MATERIALS {
                 let text = format!("{} ({})", m.name, m.index);
                 if ui.selectable_label(current == m.name, text).clicked() {
-                    let _ = state.set_index(handle, m.index);
-                    field.error = None;
+                    // A preset is refused only beside an extreme typed other index.
+                    field.settle(set_index(state, handle, symbol, m.index));
                 }
             }
             ui.label("custom: type a value above");

@@ -4,8 +4,8 @@
 
 use egui::emath::RectTransform;
 use egui::{
-    CentralPanel, ComboBox, CursorIcon, Panel, Pos2, Rect, RichText, Role, Sense, Slider,
-    SliderClamping, TextEdit, Ui, WidgetInfo,
+    CentralPanel, ComboBox, CursorIcon, Painter, Panel, Pos2, Rect, Response, RichText, Role,
+    Sense, Slider, SliderClamping, TextEdit, Ui, WidgetInfo,
 };
 use std::path::PathBuf;
 
@@ -57,6 +57,12 @@ impl Default for ScenesView {
             .unwrap_or_else(|e| unreachable!("the built-in scenes load (tested): {e}"));
         Self::new(scene)
     }
+}
+
+/// The canvas point (pixels from the canvas's corner) under the screen point `p`.
+fn canvas_point(to_screen: &RectTransform, p: Pos2) -> Vec2 {
+    let p = to_screen.inverse().transform_pos(p);
+    Vec2::new(p.x, p.y)
 }
 
 /// What the overlay beside a hovered hit says.
@@ -131,6 +137,7 @@ impl ScenesView {
         self.file_status = Some(
             self.scene
                 .to_toml()
+                .map_err(|e| e.to_string())
                 .and_then(|text| {
                     write_atomically(&path, text.as_bytes()).map_err(|e| e.to_string())
                 })
@@ -262,41 +269,13 @@ impl ScenesView {
         let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click());
         let rect = response.rect;
         let to_screen = RectTransform::from_to(Rect::from_min_size(Pos2::ZERO, rect.size()), rect);
-        let from_screen = to_screen.inverse();
-        let canvas_point = |p: Pos2| {
-            let p = from_screen.transform_pos(p);
-            Vec2::new(p.x, p.y)
-        };
         let layout = self.drag_layout.unwrap_or_else(|| {
             SceneLayout::new(self.trace.bounds, Vec2::new(rect.width(), rect.height()))
         });
-        let mut dragging = false;
-        // A handle may sit on a hit point (a line's anchor where the ray meets it): a click on
-        // it, without a drag, still picks the hit.
         let mut clicked_at = response
             .interact_pointer_pos()
             .filter(|_| response.clicked());
-        for handle in layout.handles(&self.scene) {
-            let area = handle.grab_area();
-            let grab_rect = Rect::from_min_max(
-                to_screen.transform_pos(Pos2::new(area.min.x, area.min.y)),
-                to_screen.transform_pos(Pos2::new(area.max.x, area.max.y)),
-            );
-            let id = response.id.with(handle.id);
-            let grab = ui.interact(grab_rect, id, Sense::click_and_drag());
-            if grab.clicked() {
-                clicked_at = grab.interact_pointer_pos();
-            }
-            let label = handle.id.label(&self.scene);
-            grab.widget_info(|| WidgetInfo::labeled(Role::Button, true, &label));
-            if let Some(pointer) = grab.interact_pointer_pos().filter(|_| grab.dragged()) {
-                dragging = true;
-                self.edit(|scene| layout.drag(scene, handle.id, canvas_point(pointer)));
-            }
-            if grab.hovered() || grab.dragged() {
-                ui.ctx().set_cursor_icon(CursorIcon::Grab);
-            }
-        }
+        let dragging = self.handles(ui, &response, &to_screen, &layout, &mut clicked_at);
         self.drag_layout = dragging.then_some(layout);
         self.drawn = Some((rect, layout));
         let picture = ScenePicture::new(&self.scene, &self.trace, &layout);
@@ -304,35 +283,12 @@ impl ScenesView {
         response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &picture.summary));
         let hovered = response
             .hover_pos()
-            .and_then(|p| layout.hit_near(&self.trace, canvas_point(p)));
+            .and_then(|p| layout.hit_near(&self.trace, canvas_point(&to_screen, p)));
         if let Some(hit) = hovered {
-            let center = layout.at(hit.point);
-            let ring = egui::Stroke::new(2.0, color(palette::INK));
-            painter.circle_stroke(
-                to_screen.transform_pos(Pos2::new(center.x, center.y)),
-                layout.pick_radius(),
-                ring,
-            );
-            let size = layout.font * 0.8;
-            // Beside the hit, on the side with more room.
-            let side = if center.x < layout.canvas.center().x {
-                1.0
-            } else {
-                -1.0
-            };
-            let label = Label {
-                text: hit_text(&self.scene, hit),
-                at: center + Vec2::new(side * (layout.pick_radius() + size * 0.5), 0.0),
-                h: Align::away(side),
-                v: Align::Center,
-                size,
-                colour: palette::INK,
-                background: Some(palette::BACKGROUND),
-            };
-            paint(&painter, &to_screen, &[Primitive::Text(label)]);
-            ui.ctx().set_cursor_icon(CursorIcon::PointingHand);
+            self.show_hit(ui, &painter, &to_screen, &layout, hit);
         }
-        let clicked = clicked_at.and_then(|p| layout.hit_near(&self.trace, canvas_point(p)))?;
+        let clicked =
+            clicked_at.and_then(|p| layout.hit_near(&self.trace, canvas_point(&to_screen, p)))?;
         let problem = clicked.incidence();
         ExplorerState::new(
             problem.w,
@@ -343,5 +299,79 @@ impl ScenesView {
         )
         .map_err(|e| self.error = Some(e.to_string()))
         .ok()
+    }
+
+    /// One draggable, named widget per handle of `layout`; a drag edits the scene (and
+    /// retraces it). Returns whether a handle is being dragged. A handle may sit on a hit point
+    /// (a line's anchor where the ray meets it): a click on it, without a drag, replaces
+    /// `clicked_at`, so that it still picks the hit.
+    fn handles(
+        &mut self,
+        ui: &Ui,
+        canvas: &Response,
+        to_screen: &RectTransform,
+        layout: &SceneLayout,
+        clicked_at: &mut Option<Pos2>,
+    ) -> bool {
+        let mut dragging = false;
+        for handle in layout.handles(&self.scene) {
+            let area = handle.grab_area();
+            let grab_rect = Rect::from_min_max(
+                to_screen.transform_pos(Pos2::new(area.min.x, area.min.y)),
+                to_screen.transform_pos(Pos2::new(area.max.x, area.max.y)),
+            );
+            let id = canvas.id.with(handle.id);
+            let grab = ui.interact(grab_rect, id, Sense::click_and_drag());
+            if grab.clicked() {
+                *clicked_at = grab.interact_pointer_pos();
+            }
+            let label = handle.id.label(&self.scene);
+            grab.widget_info(|| WidgetInfo::labeled(Role::Button, true, &label));
+            if let Some(pointer) = grab.interact_pointer_pos().filter(|_| grab.dragged()) {
+                dragging = true;
+                let at = canvas_point(to_screen, pointer);
+                self.edit(|scene| layout.drag(scene, handle.id, at));
+            }
+            if grab.hovered() || grab.dragged() {
+                ui.ctx().set_cursor_icon(CursorIcon::Grab);
+            }
+        }
+        dragging
+    }
+
+    /// A ring around the hit under the pointer and what happens there, beside it on the side
+    /// with more room.
+    fn show_hit(
+        &self,
+        ui: &Ui,
+        painter: &Painter,
+        to_screen: &RectTransform,
+        layout: &SceneLayout,
+        hit: &Hit,
+    ) {
+        let center = layout.at(hit.point);
+        let ring = egui::Stroke::new(2.0, color(palette::INK));
+        painter.circle_stroke(
+            to_screen.transform_pos(Pos2::new(center.x, center.y)),
+            layout.pick_radius(),
+            ring,
+        );
+        let size = layout.font * 0.8;
+        let side = if center.x < layout.canvas.center().x {
+            1.0
+        } else {
+            -1.0
+        };
+        let label = Label {
+            text: hit_text(&self.scene, hit),
+            at: center + Vec2::new(side * (layout.pick_radius() + size * 0.5), 0.0),
+            h: Align::away(side),
+            v: Align::Center,
+            size,
+            colour: palette::INK,
+            background: Some(palette::BACKGROUND),
+        };
+        paint(painter, to_screen, &[Primitive::Text(label)]);
+        ui.ctx().set_cursor_icon(CursorIcon::PointingHand);
     }
 }

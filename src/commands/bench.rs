@@ -19,6 +19,8 @@ pub fn run(quick: bool, json: bool, plot: Option<&Path>) -> ExitCode {
     let report = refraction_bench::run(&config, &mut |fraction| {
         if show_progress {
             eprint!("\rmeasuring... {:3.0}%", fraction * 100.0);
+            // Progress on a terminal only: if stderr cannot be flushed the line shows late or
+            // not at all, and the measurement and its report are still right.
             let _ = io::stderr().flush();
         }
     });

@@ -83,54 +83,78 @@ fn wide<S: Real>(v: S::Vec3) -> glam::DVec3 {
 
 fn verdict_in<S: Real>(incidence: &Incidence<S>, yours: [f64; 3]) -> Result<Verdict, String> {
     let r = refract(incidence).map_err(|e| e.to_string())?;
-    let correct = r.t().map(|t| wide::<S>(t).to_array());
-    let verdict = |ok, matches, explanation: String| Verdict {
+    let (ok, matches, explanation) = if yours.iter().any(|c| !c.is_finite()) {
+        (false, None, not_finite(r.is_tir()).to_owned())
+    } else if r.is_tir() {
+        totally_reflected::<S>(&r, glam::DVec3::from_array(yours))
+    } else {
+        refracted::<S>(incidence, &r, glam::DVec3::from_array(yours))
+    };
+    Ok(Verdict {
         ok,
         matches,
         explanation,
-        correct,
-    };
-    if yours.iter().any(|c| !c.is_finite()) {
-        let why = if r.is_tir() {
-            "Your T has NaN or infinite components. This ray is totally internally reflected \
-             (k < 0): your code took the square root of a negative k instead of checking k first."
-        } else {
-            "Your T has NaN or infinite components although this ray refracts normally (k >= 0): \
-             look for a division by zero or an un-initialised vector."
-        };
-        return Ok(verdict(false, None, why.to_owned()));
+        correct: r.t().map(|t| wide::<S>(t).to_array()),
+    })
+}
+
+/// A verdict before the correct T is added: whether the T is right, what it matches, and why.
+type Judgement = (bool, Option<Match>, String);
+
+/// Why a T with NaN or infinite components is wrong, for a ray that is totally internally
+/// reflected (`tir`) or not.
+fn not_finite(tir: bool) -> &'static str {
+    if tir {
+        "Your T has NaN or infinite components. This ray is totally internally reflected \
+         (k < 0): your code took the square root of a negative k instead of checking k first."
+    } else {
+        "Your T has NaN or infinite components although this ray refracts normally (k >= 0): \
+         look for a division by zero or an un-initialised vector."
     }
-    let yours = glam::DVec3::from_array(yours);
+}
+
+/// A finite T for a totally internally reflected ray: right when it is the reflection or zero.
+fn totally_reflected<S: Real>(
+    r: &refraction_kernel::Refraction<S>,
+    yours: glam::DVec3,
+) -> Judgement {
+    let reflected = wide::<S>(r.reflected);
+    if yours.length() == 0.0 || angle(yours, reflected) <= MATCH_ANGLE {
+        return (
+            true,
+            Some(Match::TotalInternalReflection),
+            "Right: this ray is totally internally reflected (k < 0) and your code returned \
+             the reflection (or the zero vector GLSL uses to say so)."
+                .to_owned(),
+        );
+    }
+    (
+        false,
+        None,
+        format!(
+            "This ray is totally internally reflected (k = {:.4} < 0): there is no refracted \
+             ray, but your code returned one. Check k before taking its square root.",
+            r.k.to_f64()
+        ),
+    )
+}
+
+/// A finite T for a ray that refracts: the candidate it matches or why it matches none, with a
+/// note when it is not unit length.
+fn refracted<S: Real>(
+    incidence: &Incidence<S>,
+    r: &refraction_kernel::Refraction<S>,
+    yours: glam::DVec3,
+) -> Judgement {
     let length = yours.length();
-    if r.is_tir() {
-        let reflected = wide::<S>(r.reflected);
-        if length == 0.0 || angle(yours, reflected) <= MATCH_ANGLE {
-            return Ok(verdict(
-                true,
-                Some(Match::TotalInternalReflection),
-                "Right: this ray is totally internally reflected (k < 0) and your code returned \
-                 the reflection (or the zero vector GLSL uses to say so)."
-                    .to_owned(),
-            ));
-        }
-        return Ok(verdict(
-            false,
-            None,
-            format!(
-                "This ray is totally internally reflected (k = {:.4} < 0): there is no refracted \
-                 ray, but your code returned one. Check k before taking its square root.",
-                r.k.to_f64()
-            ),
-        ));
-    }
     if length == 0.0 {
-        return Ok(verdict(
+        return (
             false,
             None,
             "Your T is the zero vector, which GLSL returns for total internal reflection, but \
              this ray refracts (k >= 0). Check the sign of k and the index ratio."
                 .to_owned(),
-        ));
+        );
     }
     let unit_note = ((length - 1.0).abs() > LENGTH_TOLERANCE).then(|| {
         format!(
@@ -143,35 +167,36 @@ fn verdict_in<S: Real>(incidence: &Incidence<S>, yours: [f64; 3]) -> Result<Verd
         .iter()
         .map(|c| (c, angle(yours, wide::<S>(c.t))))
         .min_by(|a, b| a.1.total_cmp(&b.1));
-    if let Some((candidate, off)) = nearest.filter(|(_, off)| *off <= MATCH_ANGLE) {
-        let (ok, matches, text) = match candidate.rejection {
-            None if unit_note.is_some() => (
-                false,
-                Match::Chosen,
-                format!("Your T points along the refracted ray (within {off:.1e} rad)."),
-            ),
-            None => (
-                true,
-                Match::Chosen,
-                format!("Right: your T is the refracted ray (within {off:.1e} rad)."),
-            ),
-            Some(rejection) => (
-                false,
-                Match::Rejected(rejection),
-                explain(rejection).to_owned(),
-            ),
-        };
-        return Ok(verdict(
-            ok,
-            Some(matches),
-            text + unit_note.as_deref().unwrap_or(""),
-        ));
+    let (ok, matches, text) = match nearest.filter(|(_, off)| *off <= MATCH_ANGLE) {
+        Some((candidate, off)) => {
+            let (ok, matches, text) = matched(candidate.rejection, off, unit_note.is_some());
+            (ok, Some(matches), text)
+        }
+        None => (false, None, diagnose_unmatched::<S>(incidence, r, yours)),
+    };
+    (ok, matches, text + unit_note.as_deref().unwrap_or(""))
+}
+
+/// The verdict on a T within [`MATCH_ANGLE`] (`off` radians) of the candidate that breaks
+/// `rejection` (`None`: the refracted ray), and that is or is not unit length.
+fn matched(rejection: Option<Rejection>, off: f64, not_unit: bool) -> (bool, Match, String) {
+    match rejection {
+        None if not_unit => (
+            false,
+            Match::Chosen,
+            format!("Your T points along the refracted ray (within {off:.1e} rad)."),
+        ),
+        None => (
+            true,
+            Match::Chosen,
+            format!("Right: your T is the refracted ray (within {off:.1e} rad)."),
+        ),
+        Some(rejection) => (
+            false,
+            Match::Rejected(rejection),
+            explain(rejection).to_owned(),
+        ),
     }
-    Ok(verdict(
-        false,
-        None,
-        diagnose_unmatched::<S>(incidence, &r, yours) + unit_note.as_deref().unwrap_or(""),
-    ))
 }
 
 /// Why a T that matches no candidate is wrong: a swapped index ratio, a T outside the plane of

@@ -148,19 +148,7 @@ pub fn axes(report: &Report) -> (LogAxis, LogAxis) {
 /// The report's plot on a canvas of `size` pixels, as primitives for any backend.
 #[must_use]
 pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive> {
-    let m = Metrics::new(size);
-    let (x_axis, y_axis) = axes(report);
-    let at = |ns: f64, err: f64| {
-        Vec2::new(
-            m.plot.min.x + (m.plot.max.x - m.plot.min.x) * x_axis.fraction(ns) as f32,
-            m.plot.max.y - (m.plot.max.y - m.plot.min.y) * y_axis.fraction(err.max(FLOOR)) as f32,
-        )
-    };
-    let grid = Stroke {
-        width: 1.0,
-        colour: palette::GUIDE.with_alpha(90),
-        dash: Dash::Solid,
-    };
+    let plot = Plot::new(report, size);
     let mut shapes = vec![Figure::Fill {
         points: vec![
             Vec2::ZERO,
@@ -170,139 +158,191 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
         ],
         colour: palette::BACKGROUND,
     }];
-    for e in x_axis.decades() {
-        let x = at(10f64.powi(e), FLOOR).x;
-        shapes.push(Figure::Line {
-            points: vec![Vec2::new(x, m.plot.min.y), Vec2::new(x, m.plot.max.y)],
-            stroke: grid,
-        });
-        let below = Vec2::new(x, m.plot.max.y + m.text * 0.4);
-        shapes.push(text(
-            decade_label(e),
-            below,
-            (Align::Center, Align::Start),
-            m.text,
-            palette::INK,
-        ));
-    }
-    for e in y_axis.decades() {
-        let y = at(10f64.powi(x_axis.low as i32), 10f64.powi(e)).y;
-        shapes.push(Figure::Line {
-            points: vec![Vec2::new(m.plot.min.x, y), Vec2::new(m.plot.max.x, y)],
-            stroke: grid,
-        });
-        let left = Vec2::new(m.plot.min.x - m.text * 0.5, y);
-        shapes.push(text(
-            decade_label(e),
-            left,
-            (Align::End, Align::Center),
-            m.text,
-            palette::INK,
-        ));
-    }
-    let bound_y = at(1.0, BOUND).y;
-    shapes.push(Figure::Line {
-        points: vec![
-            Vec2::new(m.plot.min.x, bound_y),
-            Vec2::new(m.plot.max.x, bound_y),
-        ],
-        stroke: Stroke {
-            width: 1.5,
-            colour: palette::ALARM,
-            dash: Dash::Dashed,
-        },
-    });
-    shapes.push(text(
-        "the default kernel's bound, 32 ε·κ".to_owned(),
-        Vec2::new(m.plot.max.x, bound_y - m.text * 0.3),
-        (Align::End, Align::End),
-        m.text * 0.9,
-        palette::ALARM,
-    ));
-    shapes.push(Figure::Line {
-        points: vec![
-            Vec2::new(m.plot.min.x, m.plot.min.y),
-            Vec2::new(m.plot.min.x, m.plot.max.y),
-            Vec2::new(m.plot.max.x, m.plot.max.y),
-        ],
-        stroke: Stroke {
-            width: 1.5,
-            colour: palette::INK,
-            dash: Dash::Solid,
-        },
-    });
-    let titles = [
-        (
-            "Accuracy against time on this machine".to_owned(),
-            Vec2::new(size.x / 2.0, m.text * 1.0),
-            (Align::Center, Align::Start),
-            m.title,
-        ),
-        (
-            "largest hard-set error, in ε·κ (log)".to_owned(),
-            Vec2::new(m.plot.min.x, m.plot.min.y - m.text * 0.6),
-            (Align::Start, Align::End),
-            m.text,
-        ),
-        (
-            "time per ray, ns (log)".to_owned(),
-            Vec2::new((m.plot.min.x + m.plot.max.x) / 2.0, size.y - m.text * 1.2),
-            (Align::Center, Align::End),
-            m.text,
-        ),
-    ];
-    for (words, anchor, align, size) in titles {
-        shapes.push(text(words, anchor, align, size, palette::INK));
-    }
-    let radius = m.text * 0.45;
-    let points: Vec<Vec2> = report
-        .rows
-        .iter()
-        .map(|row| at(row.ns_per_ray, row.max_err_hard_eps_kappa))
-        .collect();
-    // Labels go right of their marker, moved down until they cover no marker and no label.
-    let mut taken: Vec<Rect> = points
-        .iter()
-        .map(|p| Rect::from_min_size(*p - Vec2::splat(radius), Vec2::splat(2.0 * radius)))
-        .collect();
-    for (row, p) in report.rows.iter().zip(&points) {
-        let colour = variant_colour(row.variant);
-        let filled = row.precision == "f64";
-        shapes.push(Figure::Disc {
-            center: *p,
-            radius,
-            fill: if filled { colour } else { palette::BACKGROUND },
-            outline: Stroke {
-                width: 2.0,
-                colour,
-                dash: Dash::Solid,
-            },
-        });
-        let label = point_label(row);
-        let extent = face.measure(&label, m.text);
-        let mut corner = *p + Vec2::new(m.text * 0.8, -extent.y / 2.0);
-        let mut rect = Rect::from_min_size(corner, extent);
-        while taken.iter().any(|t| t.overlaps(&rect)) {
-            corner.y += extent.y * 0.5;
-            rect = Rect::from_min_size(corner, extent);
-        }
-        taken.push(rect);
-        shapes.push(text(
-            label,
-            corner,
-            (Align::Start, Align::Start),
-            m.text,
-            palette::Palette::STANDARD.text_shade(colour),
-        ));
-    }
+    shapes.extend(plot.grid());
+    shapes.extend(plot.bound());
+    shapes.push(plot.frame());
+    shapes.extend(plot.titles(size));
+    shapes.extend(plot.markers(report, face));
     shapes.push(text(
         format!("{}    hollow: f32, filled: f64", report.verdict()),
-        Vec2::new(size.x / 2.0, m.text * 1.2 + m.title * 1.3),
+        Vec2::new(size.x / 2.0, plot.m.text * 1.2 + plot.m.title * 1.3),
         (Align::Center, Align::Start),
-        m.text * 0.9,
+        plot.m.text * 0.9,
         palette::INK,
     ));
     lower_all(&shapes)
+}
+
+/// The plot's area on the canvas and its two axes: where a time and an error are drawn.
+struct Plot {
+    m: Metrics,
+    x: LogAxis,
+    y: LogAxis,
+}
+
+impl Plot {
+    fn new(report: &Report, size: Vec2) -> Self {
+        let (x, y) = axes(report);
+        Self {
+            m: Metrics::new(size),
+            x,
+            y,
+        }
+    }
+
+    /// The canvas point of `ns` per ray and an error of `err` ε·κ (at least [`FLOOR`]).
+    fn at(&self, ns: f64, err: f64) -> Vec2 {
+        let plot = &self.m.plot;
+        Vec2::new(
+            plot.min.x + (plot.max.x - plot.min.x) * self.x.fraction(ns) as f32,
+            plot.max.y - (plot.max.y - plot.min.y) * self.y.fraction(err.max(FLOOR)) as f32,
+        )
+    }
+
+    /// A line and a label at every decade: times below the plot, errors left of it.
+    fn grid(&self) -> Vec<Figure> {
+        let (plot, size) = (&self.m.plot, self.m.text);
+        let stroke = Stroke {
+            width: 1.0,
+            colour: palette::GUIDE.with_alpha(90),
+            dash: Dash::Solid,
+        };
+        let mut shapes = Vec::new();
+        for e in self.x.decades() {
+            let x = self.at(10f64.powi(e), FLOOR).x;
+            shapes.push(Figure::Line {
+                points: vec![Vec2::new(x, plot.min.y), Vec2::new(x, plot.max.y)],
+                stroke,
+            });
+            let below = Vec2::new(x, plot.max.y + size * 0.4);
+            let align = (Align::Center, Align::Start);
+            shapes.push(text(decade_label(e), below, align, size, palette::INK));
+        }
+        for e in self.y.decades() {
+            let y = self.at(10f64.powi(self.x.low as i32), 10f64.powi(e)).y;
+            shapes.push(Figure::Line {
+                points: vec![Vec2::new(plot.min.x, y), Vec2::new(plot.max.x, y)],
+                stroke,
+            });
+            let left = Vec2::new(plot.min.x - size * 0.5, y);
+            let align = (Align::End, Align::Center);
+            shapes.push(text(decade_label(e), left, align, size, palette::INK));
+        }
+        shapes
+    }
+
+    /// The [`BOUND`] as a dashed line across the plot, and its label.
+    fn bound(&self) -> [Figure; 2] {
+        let (plot, size) = (&self.m.plot, self.m.text);
+        let y = self.at(1.0, BOUND).y;
+        [
+            Figure::Line {
+                points: vec![Vec2::new(plot.min.x, y), Vec2::new(plot.max.x, y)],
+                stroke: Stroke {
+                    width: 1.5,
+                    colour: palette::ALARM,
+                    dash: Dash::Dashed,
+                },
+            },
+            text(
+                "the default kernel's bound, 32 ε·κ".to_owned(),
+                Vec2::new(plot.max.x, y - size * 0.3),
+                (Align::End, Align::End),
+                size * 0.9,
+                palette::ALARM,
+            ),
+        ]
+    }
+
+    /// The two axes' lines: left and bottom.
+    fn frame(&self) -> Figure {
+        let plot = &self.m.plot;
+        Figure::Line {
+            points: vec![
+                Vec2::new(plot.min.x, plot.min.y),
+                Vec2::new(plot.min.x, plot.max.y),
+                Vec2::new(plot.max.x, plot.max.y),
+            ],
+            stroke: Stroke {
+                width: 1.5,
+                colour: palette::INK,
+                dash: Dash::Solid,
+            },
+        }
+    }
+
+    /// The plot's title and the two axes' names, on a canvas of `size`.
+    fn titles(&self, size: Vec2) -> impl Iterator<Item = Figure> {
+        let (small, title, plot) = (self.m.text, self.m.title, self.m.plot);
+        [
+            (
+                "Accuracy against time on this machine",
+                Vec2::new(size.x / 2.0, small * 1.0),
+                (Align::Center, Align::Start),
+                title,
+            ),
+            (
+                "largest hard-set error, in ε·κ (log)",
+                Vec2::new(plot.min.x, plot.min.y - small * 0.6),
+                (Align::Start, Align::End),
+                small,
+            ),
+            (
+                "time per ray, ns (log)",
+                Vec2::new((plot.min.x + plot.max.x) / 2.0, size.y - small * 1.2),
+                (Align::Center, Align::End),
+                small,
+            ),
+        ]
+        .into_iter()
+        .map(|(words, anchor, align, size)| {
+            text(words.to_owned(), anchor, align, size, palette::INK)
+        })
+    }
+
+    /// One marker a row (hollow for f32, filled for f64) with its label to the right, moved
+    /// down until it covers no marker and no other label.
+    fn markers(&self, report: &Report, face: &Typeface) -> Vec<Figure> {
+        let size = self.m.text;
+        let radius = size * 0.45;
+        let points: Vec<Vec2> = report
+            .rows
+            .iter()
+            .map(|row| self.at(row.ns_per_ray, row.max_err_hard_eps_kappa))
+            .collect();
+        let mut taken: Vec<Rect> = points
+            .iter()
+            .map(|p| Rect::from_min_size(*p - Vec2::splat(radius), Vec2::splat(2.0 * radius)))
+            .collect();
+        let mut shapes = Vec::new();
+        for (row, p) in report.rows.iter().zip(&points) {
+            let colour = variant_colour(row.variant);
+            let filled = row.precision == "f64";
+            shapes.push(Figure::Disc {
+                center: *p,
+                radius,
+                fill: if filled { colour } else { palette::BACKGROUND },
+                outline: Stroke {
+                    width: 2.0,
+                    colour,
+                    dash: Dash::Solid,
+                },
+            });
+            let label = point_label(row);
+            let extent = face.measure(&label, size);
+            let mut corner = *p + Vec2::new(size * 0.8, -extent.y / 2.0);
+            let mut rect = Rect::from_min_size(corner, extent);
+            while taken.iter().any(|t| t.overlaps(&rect)) {
+                corner.y += extent.y * 0.5;
+                rect = Rect::from_min_size(corner, extent);
+            }
+            taken.push(rect);
+            let shade = palette::Palette::STANDARD.text_shade(colour);
+            let align = (Align::Start, Align::Start);
+            shapes.push(text(label, corner, align, size, shade));
+        }
+        shapes
+    }
 }
 
 #[cfg(test)]

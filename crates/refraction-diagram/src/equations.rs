@@ -17,26 +17,66 @@ pub struct Equation {
     pub substituted: String,
 }
 
+/// What the source's two sections write differently among the key equations: Section 1 has W
+/// point back toward the origin, Section 2 along the ray, and the signs of a and b follow.
+struct Wording {
+    /// Eq. 18's conclusion: which root for a the section takes, and why.
+    chosen_a: &'static str,
+    /// Eq. 21: the two roots for b.
+    roots_of_b: &'static str,
+    /// Eq. 22: the root for b the section chooses.
+    chosen_b: &'static str,
+}
+
+const TOWARD_ORIGIN: Wording = Wording {
+    chosen_a: "W points away from T, so the source takes a = −μ",
+    roots_of_b: "b = μ·wn ± √(μ²wn² − μ² + 1)",
+    chosen_b: "b = μ·wn − √(μ²wn² − μ² + 1)",
+};
+
+const ALONG_RAY: Wording = Wording {
+    chosen_a: "W points along T, so the source takes a = +μ",
+    roots_of_b: "b = −μ·wn ± √(μ²wn² − μ² + 1)",
+    chosen_b: "b = −μ·wn − √(μ²wn² − μ² + 1)",
+};
+
+/// `x` as every equation prints it: four decimals.
+pub(crate) fn n(x: f64) -> String {
+    number(x, 4)
+}
+
+/// The a the source chooses in `r`'s convention: −μ or +μ.
+pub(crate) fn chosen_a(r: &Refraction<f64>) -> f64 {
+    r.convention.travel_sign::<f64>() * r.mu
+}
+
 /// The six key equations for `r`.
 #[must_use]
 pub fn equations(r: &Refraction<f64>) -> Vec<Equation> {
-    let section = r.convention.section();
-    let (mu, wn, k) = (r.mu, r.wn(), r.k);
-    let a = r.convention.travel_sign::<f64>() * mu;
-    let n = |x: f64| number(x, 4);
-    let (chosen_a, formula_21, formula_22) = match r.convention {
-        Convention::TowardOrigin => (
-            "W points away from T, so the source takes a = −μ",
-            "b = μ·wn ± √(μ²wn² − μ² + 1)",
-            "b = μ·wn − √(μ²wn² − μ² + 1)",
-        ),
-        Convention::AlongRay => (
-            "W points along T, so the source takes a = +μ",
-            "b = −μ·wn ± √(μ²wn² − μ² + 1)",
-            "b = −μ·wn − √(μ²wn² − μ² + 1)",
-        ),
+    let wording = match r.convention {
+        Convention::TowardOrigin => &TOWARD_ORIGIN,
+        Convention::AlongRay => &ALONG_RAY,
     };
-    let eq7 = match r.transmission {
+    [
+        (7, "T = a·W + b·N", decomposition(r)),
+        (12, "a² + 2ab·wn + b² = 1", unit_length(r)),
+        (17, "(wn² − 1)·μ² = a²·(wn² − 1)", squared_a(r)),
+        (18, "a = (μ, −μ)", roots_of_a(r, wording.chosen_a)),
+        (21, wording.roots_of_b, roots_of_b(r)),
+        (22, wording.chosen_b, choice_of_b(r)),
+    ]
+    .into_iter()
+    .map(|(number, formula, substituted)| Equation {
+        number: format!("{}.{number}", r.convention.section()),
+        formula,
+        substituted,
+    })
+    .collect()
+}
+
+/// Eq. 7 with the kernel's a and b.
+fn decomposition(r: &Refraction<f64>) -> String {
+    match r.transmission {
         Some(tr) => format!(
             "T = {}·{} + {}·{} = {}",
             n(tr.a),
@@ -46,8 +86,13 @@ pub fn equations(r: &Refraction<f64>) -> Vec<Equation> {
             vector(tr.t, 4)
         ),
         None => "no real (a, b): there is no refracted ray".to_owned(),
-    };
-    let eq12 = match r.transmission {
+    }
+}
+
+/// Eq. 12: T's length from the kernel's a and b.
+fn unit_length(r: &Refraction<f64>) -> String {
+    let wn = r.wn();
+    match r.transmission {
         Some(tr) => format!(
             "{}² + 2·{}·{}·{} + {}² = {}",
             n(tr.a),
@@ -58,56 +103,65 @@ pub fn equations(r: &Refraction<f64>) -> Vec<Equation> {
             n(tr.a * tr.a + 2.0 * tr.a * tr.b * wn + tr.b * tr.b)
         ),
         None => "no real b satisfies it together with eq. 10".to_owned(),
-    };
+    }
+}
+
+/// Eq. 17: eq. 12 substituted into eq. 10 leaves a² = μ².
+fn squared_a(r: &Refraction<f64>) -> String {
+    let (mu, wn) = (r.mu, r.wn());
     let wn2_minus_1 = wn * wn - 1.0;
-    let eq17 = format!(
+    format!(
         "({}² − 1)·{}² = {} = a²·({}), so a² = {}",
         n(wn),
         n(mu),
         n(wn2_minus_1 * mu * mu),
         n(wn2_minus_1),
         n(mu * mu)
-    );
-    let eq18 = format!("a = ±{}; {chosen_a} = {}", n(mu), n(a));
-    let eq21 = if r.is_tir() {
-        format!(
+    )
+}
+
+/// Eq. 18: the two roots for a and the one the source takes.
+fn roots_of_a(r: &Refraction<f64>, chosen: &str) -> String {
+    format!("a = ±{}; {chosen} = {}", n(r.mu), n(chosen_a(r)))
+}
+
+/// Eq. 21: the two roots for b, or why there are none.
+fn roots_of_b(r: &Refraction<f64>) -> String {
+    if r.is_tir() {
+        return format!(
             "√({}) of a negative number: no real b (total internal reflection)",
-            n(k)
-        )
-    } else {
-        let roots: Vec<String> = r
-            .candidates
-            .iter()
-            .filter(|c| c.a == a)
-            .map(|c| n(c.b))
-            .collect();
-        format!("b = {} ± √{} = {}", n(-a * wn), n(k), roots.join(" or "))
-    };
-    let eq22 = match (seed::weights(r.w, r.n, mu, r.convention), r.transmission) {
+            n(r.k)
+        );
+    }
+    let a = chosen_a(r);
+    let roots: Vec<String> = r
+        .candidates
+        .iter()
+        .filter(|c| c.a == a)
+        .map(|c| n(c.b))
+        .collect();
+    format!(
+        "b = {} ± √{} = {}",
+        n(-a * r.wn()),
+        n(r.k),
+        roots.join(" or ")
+    )
+}
+
+/// Eq. 22: the source's root for b, taken literally; with a flipped normal, how it goes wrong.
+fn choice_of_b(r: &Refraction<f64>) -> String {
+    match (seed::weights(r.w, r.n, r.mu, r.convention), r.transmission) {
         (Some((_, b)), Some(tr)) if r.normal_flipped => format!(
             "with N as given b = {}: the wrong root, T goes back (the outward-normal bug); \
              the kernel uses −N and gets b = {} for N",
             n(b),
             n(tr.b)
         ),
-        (Some((_, b)), Some(_)) => format!("b = {} − √{} = {}", n(-a * wn), n(k), n(b)),
+        (Some((_, b)), Some(_)) => {
+            format!("b = {} − √{} = {}", n(-chosen_a(r) * r.wn()), n(r.k), n(b))
+        }
         _ => "no real root to choose".to_owned(),
-    };
-    [
-        (7, "T = a·W + b·N", eq7),
-        (12, "a² + 2ab·wn + b² = 1", eq12),
-        (17, "(wn² − 1)·μ² = a²·(wn² − 1)", eq17),
-        (18, "a = (μ, −μ)", eq18),
-        (21, formula_21, eq21),
-        (22, formula_22, eq22),
-    ]
-    .into_iter()
-    .map(|(number, formula, substituted)| Equation {
-        number: format!("{section}.{number}"),
-        formula,
-        substituted,
-    })
-    .collect()
+    }
 }
 
 #[cfg(test)]

@@ -6,7 +6,13 @@
 use glam::Vec2;
 use skrifa::instance::{LocationRef, Size};
 use skrifa::outline::{DrawSettings, OutlinePen};
+use skrifa::raw::ReadError;
 use skrifa::{FontRef, GlyphId, MetadataProvider};
+
+/// The embedded font could not be read: a broken build, never bad input.
+#[derive(Debug, thiserror::Error)]
+#[error("cannot read the embedded font: {0}")]
+pub struct FontError(ReadError);
 
 /// A font at hand for measuring and outlining labels.
 pub struct Typeface {
@@ -61,10 +67,10 @@ impl Typeface {
     ///
     /// # Errors
     /// The embedded font cannot be read (a broken build).
-    pub fn egui_default() -> Result<Self, String> {
+    pub fn egui_default() -> Result<Self, FontError> {
         FontRef::new(epaint_default_fonts::UBUNTU_LIGHT)
             .map(|font| Self { font })
-            .map_err(|e| format!("cannot read the embedded font: {e}"))
+            .map_err(FontError)
     }
 
     fn glyph(&self, ch: char) -> GlyphId {
@@ -132,6 +138,8 @@ impl Typeface {
                 let id = self.glyph(ch);
                 if let Some(glyph) = outlines.get(id) {
                     let settings = DrawSettings::unhinted(Size::new(size), LocationRef::default());
+                    // A glyph whose outline cannot be drawn (a broken glyph in the font) is
+                    // left out, as documented: the rest of the label still reads.
                     let _ = glyph.draw(settings, &mut placed);
                 }
                 placed.x += metrics.advance_width(id).unwrap_or(0.0);
@@ -166,6 +174,16 @@ mod tests {
             self.lowest = self.lowest.max(y);
         }
         fn close(&mut self) {}
+    }
+
+    #[test]
+    fn an_unreadable_font_says_so() {
+        let broken = FontRef::new(&[0; 4]).map(|_| ()).map_err(FontError);
+        let message = broken.unwrap_err().to_string();
+        assert!(
+            message.starts_with("cannot read the embedded font: "),
+            "{message}"
+        );
     }
 
     #[test]

@@ -1,10 +1,10 @@
 //! What the explorer draws, computed from an [`ExplorerState`] and the kernel's answer for it,
 //! or from a traced scene: shapes with colours, widths, dash patterns and anchored labels, in
-//! canvas pixels. No egui and no tiny-skia here: the screen ([`crate::app`]) and the PNG
-//! ([`crate::render`]) both draw [`Diagram::primitives`] and [`ScenePicture::primitives`], so
+//! canvas pixels. No egui and no tiny-skia here: the screen (the explorer's window) and the PNG
+//! (`refraction-render`) both draw [`Diagram::primitives`] and [`ScenePicture::primitives`], so
 //! what a teacher exports is what the class saw.
 //!
-//! - [`state`]: the state and the edits a user makes;
+//! - [`model`]: the state and the edits a user makes;
 //! - [`layout`]: where things go on a canvas of a given size;
 //! - [`overlay`]: what is drawn over the state: palette, pan and zoom, a student's T, the
 //!   walk-through's highlights;

@@ -312,6 +312,8 @@ impl ExplorerState {
 
     /// Turns N around (an outward normal where the ray leaves the medium: the classic bug).
     pub fn flip_normal(&mut self) {
+        // −N is as valid as N (the kernel checks finiteness and length, which a sign keeps),
+        // so the kernel cannot refuse this.
         let _ = self.update(self.w, -self.n, self.mu_i, self.mu_t, self.convention);
     }
 
@@ -327,6 +329,9 @@ impl ExplorerState {
             HandleId::N => (self.w, lifted(self.n)),
             HandleId::MuI | HandleId::MuT => return,
         };
+        // A turned vector the kernel refuses (one so long or short that its length overflows
+        // or vanishes on the way) leaves the last good state, as every refused edit does: the
+        // handle does not follow the pointer there.
         let _ = self.update(w, n, self.mu_i, self.mu_t, self.convention);
     }
 
@@ -384,7 +389,8 @@ impl ExplorerState {
 /// the kernel does before it normalises.
 fn scaled(v: DVec3) -> DVec3 {
     let largest = v.abs().max_element();
-    if largest > 0.0 && largest.is_finite() {
+    // Only outside a safe range, so that ordinary vectors keep their bits.
+    if largest.is_finite() && !(1e-100..=1e100).contains(&largest) && largest > 0.0 {
         v / largest
     } else {
         v

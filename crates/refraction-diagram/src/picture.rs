@@ -78,10 +78,29 @@ struct DiagramBuilder<'a> {
     face: Option<Typeface>,
     shapes: Vec<Figure>,
     /// Labels wait here, with their rank, to be placed last and on top.
-    labels: Vec<(u8, Label)>,
-    /// The placement rank of labels added next: lower ranks are placed first and keep their
-    /// spot; later ones move aside.
-    rank: u8,
+    labels: Vec<(Rank, Label)>,
+    /// The rank of the labels added next.
+    rank: Rank,
+}
+
+/// The order in which the diagram's labels are placed, first to last: a label placed earlier
+/// keeps its spot and one placed later that would cover it moves aside. So the vectors the
+/// diagram is about are never pushed off their tips by the annotations around them, and the
+/// media's names, placed last, give way to everything.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Rank {
+    /// W, N, T, the student's T and the index scale.
+    Vectors,
+    /// The angles θi and θt and the incoming and reflected rays.
+    Rays,
+    /// The outward-normal bug: −N and the wrong T of the source's formula.
+    Bug,
+    /// The three rejected candidates.
+    Candidates,
+    /// The construction: the critical angle and T's decomposition into a·W and b·N.
+    Construction,
+    /// The two media's names and indices, in the corners.
+    Media,
 }
 
 impl DiagramBuilder<'_> {
@@ -502,6 +521,76 @@ impl DiagramBuilder<'_> {
         })
     }
 
+    /// The angle of incidence and the incoming ray from the source to the hit point, with an
+    /// arrowhead on the way.
+    fn incoming(&mut self, r: &Refraction<f64>, normal: DVec2, toward_source: DVec2) {
+        let palette = self.palette;
+        self.angle(
+            Part::AngleI,
+            (normal, toward_source),
+            format!("θi = {}°", number(r.cos_i.acos().to_degrees(), 1)),
+            palette.incoming,
+        );
+        let incoming = self.stroke(2.0, palette.incoming, palette.incoming_dash);
+        let source = toward_source * INCOMING_LENGTH;
+        self.halo(Part::Incoming, vec![self.at(source), self.at(DVec2::ZERO)]);
+        self.segment(source, DVec2::ZERO, incoming);
+        if palette.label_incoming {
+            let at = self.at(source);
+            let away = self.layout.view.direction(toward_source);
+            let anchor = (Align::away(away.x), Align::away(away.y));
+            let colour = palette.text_shade(palette.incoming);
+            self.label_coloured("incoming ray", at, anchor, 0.8, colour);
+        }
+        self.shapes.push(Figure::Arrow {
+            from: self.at(source),
+            to: self.at(source * 0.45),
+            stroke: incoming,
+        });
+    }
+
+    /// The angle of refraction and a thin reflected ray, or under total internal reflection
+    /// a bold one that carries all the light.
+    fn outgoing(&mut self, r: &Refraction<f64>, normal: DVec2) {
+        let palette = self.palette;
+        let reflected = self.flat(r.reflected);
+        match r.transmission {
+            Some(tr) => {
+                let t = self.flat(tr.t);
+                let theta_t = number(tr.cos_t.clamp(-1.0, 1.0).acos().to_degrees(), 1);
+                let text = format!("θt = {theta_t}°");
+                self.angle(Part::AngleT, (-normal, t), text, palette.t);
+                let thin = self.stroke(1.6, palette.reflected, palette.reflected_dash);
+                self.ray(reflected, 0.7, thin, "reflected", 0.8);
+            }
+            None => {
+                let bold = self.stroke(4.5, palette.reflected, palette.reflected_dash);
+                self.ray(reflected, 1.0, bold, "reflected ray (all the light)", 1.0);
+            }
+        }
+    }
+
+    /// W, N and (unless totally reflected) T; returns the diagram directions of W and N, where
+    /// their handles go.
+    fn vectors(&mut self, r: &Refraction<f64>) -> [DVec2; 2] {
+        let palette = self.palette;
+        let w_text = match self.state.convention() {
+            Convention::AlongRay => "W (along the ray)",
+            Convention::TowardOrigin => "W (toward the origin)",
+        };
+        let w_dir = self.state.direction(HandleId::W);
+        let n_dir = self.state.direction(HandleId::N);
+        let w_stroke = self.stroke(3.0, palette.w, Dash::Solid);
+        self.part_ray(Part::W, w_dir, 1.0, w_stroke, w_text);
+        let n_stroke = self.stroke(3.0, palette.n, Dash::Solid);
+        self.part_ray(Part::N, n_dir, 1.0, n_stroke, "N");
+        if let Some(tr) = r.transmission {
+            let t_stroke = self.stroke(4.5, palette.t, Dash::Solid);
+            self.part_ray(Part::T, self.flat(tr.t), 1.0, t_stroke, "T");
+        }
+        [w_dir, n_dir]
+    }
+
     /// A round handle at a tip.
     fn tip_handle(&mut self, id: HandleId, d: DVec2, colour: Colour) -> Handle {
         let center = self.at(d);
@@ -537,7 +626,7 @@ impl Diagram {
             palette,
             face: Typeface::egui_default().ok(),
             labels: Vec::new(),
-            rank: 5,
+            rank: Rank::Media,
             shapes: vec![Figure::Fill {
                 points: layout.canvas.corners().to_vec(),
                 colour: palette.background,
@@ -547,73 +636,20 @@ impl Diagram {
         let normal = b.flat(r.facing_normal);
         let toward_source = b.flat(-r.travel);
         b.media(normal);
-        b.rank = 4;
+        b.rank = Rank::Construction;
         b.guides(normal, toward_source);
-        b.rank = 1;
-        b.angle(
-            Part::AngleI,
-            (normal, toward_source),
-            format!("θi = {}°", number(r.cos_i.acos().to_degrees(), 1)),
-            b.palette.incoming,
-        );
-        let incoming = b.stroke(2.0, palette.incoming, palette.incoming_dash);
-        let source = toward_source * INCOMING_LENGTH;
-        b.halo(Part::Incoming, vec![b.at(source), b.at(DVec2::ZERO)]);
-        b.segment(source, DVec2::ZERO, incoming);
-        if palette.label_incoming {
-            let at = b.at(source);
-            let away = b.layout.view.direction(toward_source);
-            let anchor = (Align::away(away.x), Align::away(away.y));
-            b.label_coloured(
-                "incoming ray",
-                at,
-                anchor,
-                0.8,
-                palette.text_shade(palette.incoming),
-            );
-        }
-        b.shapes.push(Figure::Arrow {
-            from: b.at(source),
-            to: b.at(source * 0.45),
-            stroke: incoming,
-        });
-        b.rank = 3;
+        b.rank = Rank::Rays;
+        b.incoming(r, normal, toward_source);
+        b.rank = Rank::Candidates;
         b.candidates(r);
-        b.rank = 2;
+        b.rank = Rank::Bug;
         b.outward_normal_bug(r);
-        b.rank = 4;
+        b.rank = Rank::Construction;
         b.decomposition(r);
-        b.rank = 1;
-        let reflected = b.flat(r.reflected);
-        match r.transmission {
-            Some(tr) => {
-                let t = b.flat(tr.t);
-                let theta_t = number(tr.cos_t.clamp(-1.0, 1.0).acos().to_degrees(), 1);
-                let text = format!("θt = {theta_t}°");
-                b.angle(Part::AngleT, (-normal, t), text, palette.t);
-                let thin = b.stroke(1.6, palette.reflected, palette.reflected_dash);
-                b.ray(reflected, 0.7, thin, "reflected", 0.8);
-            }
-            None => {
-                let bold = b.stroke(4.5, palette.reflected, palette.reflected_dash);
-                b.ray(reflected, 1.0, bold, "reflected ray (all the light)", 1.0);
-            }
-        }
-        let w_text = match state.convention() {
-            Convention::AlongRay => "W (along the ray)",
-            Convention::TowardOrigin => "W (toward the origin)",
-        };
-        b.rank = 0;
-        let w_dir = state.direction(HandleId::W);
-        let n_dir = state.direction(HandleId::N);
-        let w_stroke = b.stroke(3.0, palette.w, Dash::Solid);
-        b.part_ray(Part::W, w_dir, 1.0, w_stroke, w_text);
-        let n_stroke = b.stroke(3.0, palette.n, Dash::Solid);
-        b.part_ray(Part::N, n_dir, 1.0, n_stroke, "N");
-        if let Some(tr) = r.transmission {
-            let t_stroke = b.stroke(4.5, palette.t, Dash::Solid);
-            b.part_ray(Part::T, b.flat(tr.t), 1.0, t_stroke, "T");
-        }
+        b.rank = Rank::Rays;
+        b.outgoing(r, normal);
+        b.rank = Rank::Vectors;
+        let [w_dir, n_dir] = b.vectors(r);
         b.student();
         let summary = b.banner(r);
         let [mu_i, mu_t] = b.index_scale();
@@ -646,6 +682,9 @@ impl Diagram {
         match handle {
             HandleId::W | HandleId::N => state.point(handle, self.layout.view.to_world(p)),
             HandleId::MuI | HandleId::MuT => {
+                // The scale only gives indices in INDEX_RANGE; the kernel refuses one only when
+                // the other, typed, index puts the ratio out of range, and then the marker
+                // stays at the last good state, as every refused edit does.
                 let _ = state.set_index(handle, self.layout.scale.index_at(p.y));
             }
         }

@@ -2,8 +2,7 @@
 //! numbering, the current numbers substituted, what the step argues in plain words, and the
 //! parts of the diagram it is about ([`Focus`]). Every number is the kernel's.
 
-use super::equations::{Equation, equations};
-use super::numbers::number;
+use super::equations::{Equation, chosen_a, equations, n};
 use super::overlay::Focus;
 use refraction_kernel::{Convention, Refraction};
 
@@ -20,6 +19,154 @@ pub struct Step {
     pub focus: Focus,
 }
 
+/// What a step argues: the same words for every case, or words with the case's numbers in.
+enum Explanation {
+    Fixed(&'static str),
+    Live(fn(&Refraction<f64>) -> String),
+}
+
+/// One step as the source takes it, before any numbers.
+struct Description {
+    title: &'static str,
+    /// The equations the step cites, by their number within the section.
+    cites: &'static [u8],
+    explanation: Explanation,
+    focus: Focus,
+}
+
+/// The source's eight steps, in its order.
+const STEPS: [Description; 8] = [
+    Description {
+        title: "Snell's law",
+        cites: &[4],
+        explanation: Explanation::Fixed(
+            "The ray bends so that μi·sinθi = μt·sinθt; with μ = μi/μt, the sine of the angle \
+             in the new medium is μ times the old one.",
+        ),
+        focus: Focus::Angles,
+    },
+    Description {
+        title: "Square it, and use cosines",
+        cites: &[6],
+        explanation: Explanation::Fixed(
+            "Squaring lets the cosines (dot products) replace the sines, but it also lets in \
+             false solutions: a solution and its signed opposite both satisfy it.",
+        ),
+        focus: Focus::Angles,
+    },
+    Description {
+        title: "T as a·W + b·N",
+        cites: &[7, 8],
+        explanation: Explanation::Live(decomposition),
+        focus: Focus::Decomposition,
+    },
+    Description {
+        title: "The two squared constraints",
+        cites: &[10, 12],
+        explanation: Explanation::Fixed(
+            "Squared Snell (eq. 10) and unit length (eq. 12) are two quadratics in a and b. \
+             Four pairs (a, b) satisfy both: T and the three ghosts. Nothing in them tells the \
+             four apart.",
+        ),
+        focus: Focus::SquaredConstraints,
+    },
+    Description {
+        title: "The two roots for a",
+        cites: &[17, 18],
+        explanation: Explanation::Fixed(
+            "Substituting eq. 12 into eq. 10 leaves a² = μ²: a = +μ or a = −μ. The other sign \
+             mirrors T across the normal: it bends the wrong way.",
+        ),
+        focus: Focus::RootsOfA,
+    },
+    Description {
+        title: "Choosing a: the limit μ = 1",
+        cites: &[19],
+        explanation: Explanation::Live(choice_of_a),
+        focus: Focus::ChoiceOfA,
+    },
+    Description {
+        title: "The two roots for b",
+        cites: &[20, 21],
+        explanation: Explanation::Fixed(
+            "With a fixed, eq. 12 is a quadratic in b with the roots −a·wn ± √k (k = μ²wn² − μ² \
+             + 1). The other root mirrors T across the surface, back into the medium the ray \
+             came from. k < 0 means no real root: total internal reflection.",
+        ),
+        focus: Focus::RootsOfB,
+    },
+    Description {
+        title: "Choosing b",
+        cites: &[22],
+        explanation: Explanation::Live(choice_of_b),
+        focus: Focus::ChoiceOfB,
+    },
+];
+
+/// What the source's two sections write differently in the steps beyond the key equations.
+struct Wording {
+    /// Eq. 8: cosθi from wn.
+    cos_i: &'static str,
+    /// The direction of travel in terms of W.
+    travel: &'static str,
+    /// Eq. 19: the a the section takes.
+    a: &'static str,
+    /// Eq. 20: eq. 12 with that a.
+    quadratic_in_b: &'static str,
+    /// What the section's text gets wrong, if anything.
+    typo: &'static str,
+}
+
+const TOWARD_ORIGIN: Wording = Wording {
+    cos_i: "cosθi = wn",
+    travel: "−W",
+    a: "a = −μ",
+    quadratic_in_b: "μ² − 2μ·b·wn + b² = 1",
+    typo: "",
+};
+
+const ALONG_RAY: Wording = Wording {
+    cos_i: "cosθi = −wn",
+    travel: "W",
+    a: "a = μ",
+    quadratic_in_b: "μ² + 2μ·b·wn + b² = 1",
+    typo: " (Section 2's text then says \"once we decide upon using the a = −μ solution\": it \
+           means a = +μ, the one it chose.)",
+};
+
+fn wording(convention: Convention) -> &'static Wording {
+    match convention {
+        Convention::TowardOrigin => &TOWARD_ORIGIN,
+        Convention::AlongRay => &ALONG_RAY,
+    }
+}
+
+/// Every step for the refraction `r`, in the source's order.
+#[must_use]
+pub fn steps(r: &Refraction<f64>) -> Vec<Step> {
+    let mut all = equations(r);
+    all.extend(other_equations(r));
+    STEPS
+        .iter()
+        .map(|step| Step {
+            title: step.title,
+            equations: step
+                .cites
+                .iter()
+                .filter_map(|&cited| {
+                    let number = format!("{}.{cited}", r.convention.section());
+                    all.iter().find(|e| e.number == number).cloned()
+                })
+                .collect(),
+            explanation: match step.explanation {
+                Explanation::Fixed(text) => text.to_owned(),
+                Explanation::Live(text) => text(r),
+            },
+            focus: step.focus,
+        })
+        .collect()
+}
+
 /// An equation of the source that the key-equation list does not carry.
 fn equation(r: &Refraction<f64>, number: u8, formula: &'static str, values: String) -> Equation {
     Equation {
@@ -29,165 +176,106 @@ fn equation(r: &Refraction<f64>, number: u8, formula: &'static str, values: Stri
     }
 }
 
-/// Every step for the refraction `r`, in the source's order.
-#[must_use]
-pub fn steps(r: &Refraction<f64>) -> Vec<Step> {
-    let n = |x: f64| number(x, 4);
-    let [eq7, eq12, eq17, eq18, eq21, eq22] = <[Equation; 6]>::try_from(equations(r))
-        .unwrap_or_else(|_| unreachable!("equations() lists six equations"));
-    let (mu, wn, cos_i) = (r.mu, r.wn(), r.cos_i);
-    let sin_i = (1.0 - cos_i * cos_i).max(0.0).sqrt();
-    let sin_t = mu * sin_i;
-    let snell = if sin_t > 1.0 {
+/// The equations the steps cite beyond the six key ones: 4, 6, 8, 10, 19 and 20.
+fn other_equations(r: &Refraction<f64>) -> [Equation; 6] {
+    let wording = wording(r.convention);
+    let a = chosen_a(r);
+    let wn = r.wn();
+    [
+        equation(r, 4, "sin(θi)·μ = sin(θt)", snell(r)),
+        equation(r, 6, "(1 − cos²θi)·μ² = 1 − cos²θt", squared(r)),
+        equation(
+            r,
+            8,
+            wording.cos_i,
+            format!("wn = W·N = {}, cosθi = {}", n(wn), n(r.cos_i)),
+        ),
+        equation(r, 10, "(1 − wn²)·μ² = 1 − (−a·wn − b)²", squared_snell(r)),
+        equation(r, 19, wording.a, format!("a = {}", n(a))),
+        equation(
+            r,
+            20,
+            wording.quadratic_in_b,
+            format!("b² + {}·b + {} = 0", n(2.0 * a * wn), n(a * a - 1.0)),
+        ),
+    ]
+}
+
+/// sinθi, from the kernel's cosθi.
+fn sin_i(r: &Refraction<f64>) -> f64 {
+    (1.0 - r.cos_i * r.cos_i).max(0.0).sqrt()
+}
+
+/// Eq. 4: sinθt from Snell's law, or why there is no θt.
+fn snell(r: &Refraction<f64>) -> String {
+    let sin_i = sin_i(r);
+    let sin_t = r.mu * sin_i;
+    let given = format!("μ = μi/μt = {}; sinθi = {}", n(r.mu), n(sin_i));
+    if sin_t > 1.0 {
         format!(
-            "μ = μi/μt = {}; sinθi = {}, so sinθt would be {} > 1: no angle θt exists",
-            n(mu),
-            n(sin_i),
+            "{given}, so sinθt would be {} > 1: no angle θt exists",
             n(sin_t)
         )
     } else {
-        format!(
-            "μ = μi/μt = {}; sinθi = {}, so sinθt = {}",
-            n(mu),
-            n(sin_i),
-            n(sin_t)
-        )
-    };
-    let squared = format!(
+        format!("{given}, so sinθt = {}", n(sin_t))
+    }
+}
+
+/// Eq. 6: squared Snell in cosines.
+fn squared(r: &Refraction<f64>) -> String {
+    let (cos_i, mu) = (r.cos_i, r.mu);
+    format!(
         "(1 − {}²)·{}² = {} = 1 − cos²θt",
         n(cos_i),
         n(mu),
         n((1.0 - cos_i * cos_i) * mu * mu)
-    );
-    let (cos_i_formula, travel) = match r.convention {
-        Convention::TowardOrigin => ("cosθi = wn", "−W"),
-        Convention::AlongRay => ("cosθi = −wn", "W"),
-    };
-    let eq8 = equation(
-        r,
-        8,
-        cos_i_formula,
-        format!("wn = W·N = {}, cosθi = {}", n(wn), n(cos_i)),
-    );
-    let eq10 = match r.transmission {
+    )
+}
+
+/// Eq. 10 checked with the kernel's a and b.
+fn squared_snell(r: &Refraction<f64>) -> String {
+    match r.transmission {
         Some(tr) => {
-            let lhs = (1.0 - wn * wn) * mu * mu;
+            let wn = r.wn();
+            let lhs = (1.0 - wn * wn) * r.mu * r.mu;
             let rhs = 1.0 - (-tr.a * wn - tr.b).powi(2);
-            equation(
-                r,
-                10,
-                "(1 − wn²)·μ² = 1 − (−a·wn − b)²",
-                format!("{} = {} with the chosen (a, b)", n(lhs), n(rhs)),
-            )
+            format!("{} = {} with the chosen (a, b)", n(lhs), n(rhs))
         }
-        None => equation(
-            r,
-            10,
-            "(1 − wn²)·μ² = 1 − (−a·wn − b)²",
-            "no real (a, b) satisfies it with eq. 12".to_owned(),
-        ),
-    };
-    let a = r.convention.travel_sign::<f64>() * mu;
-    let eq19 = match r.convention {
-        Convention::TowardOrigin => equation(r, 19, "a = −μ", format!("a = {}", n(a))),
-        Convention::AlongRay => equation(r, 19, "a = μ", format!("a = {}", n(a))),
-    };
-    let eq20 = equation(
-        r,
-        20,
-        match r.convention {
-            Convention::TowardOrigin => "μ² − 2μ·b·wn + b² = 1",
-            Convention::AlongRay => "μ² + 2μ·b·wn + b² = 1",
-        },
-        format!("b² + {}·b + {} = 0", n(2.0 * a * wn), n(a * a - 1.0)),
-    );
-    let typo = match r.convention {
-        Convention::AlongRay => {
-            " (Section 2's text then says \"once we decide upon using the a = −μ solution\": \
-             it means a = +μ, the one it chose.)"
-        }
-        Convention::TowardOrigin => "",
-    };
-    let choice_of_b = if r.normal_flipped {
+        None => "no real (a, b) satisfies it with eq. 12".to_owned(),
+    }
+}
+
+/// Step 3's words: the direction of travel depends on the convention.
+fn decomposition(r: &Refraction<f64>) -> String {
+    let travel = wording(r.convention).travel;
+    format!(
+        "T lies in the plane of W and N, so it is a·W + b·N; the cosines become dot products \
+         with wn = W·N, and cosθt = −a·wn − b. The ray travels along {travel}."
+    )
+}
+
+/// Step 6's words: the limit μ = 1 picks the a that keeps the direction of travel.
+fn choice_of_a(r: &Refraction<f64>) -> String {
+    let Wording { travel, typo, .. } = wording(r.convention);
+    format!(
+        "When μ = 1 nothing bends, so T must be the direction of travel, {travel}. Only a = {} \
+         gives that; the other sign would give the mirror image. Press \"Animate μ to 1\" to \
+         watch T converge to {travel} and the ghosts not.{typo}",
+        if chosen_a(r) < 0.0 { "−μ" } else { "+μ" }
+    )
+}
+
+/// Step 8's words: with an outward normal the source's root is the wrong side.
+fn choice_of_b(r: &Refraction<f64>) -> String {
+    if r.normal_flipped {
         "The root with −√k goes to b = 0 at μ = 1, so T becomes the incoming ray. But here N \
          points along the ray (an outward normal where the ray leaves the medium): with N as \
          given that root is the wrong side. The kernel turns N around first."
     } else {
         "Of the two roots only the one with −√k becomes b = 0 at μ = 1, when T must be the \
          incoming ray unchanged; the other sends T back across the surface."
-    };
-    vec![
-        Step {
-            title: "Snell's law",
-            equations: vec![equation(r, 4, "sin(θi)·μ = sin(θt)", snell)],
-            explanation: "The ray bends so that μi·sinθi = μt·sinθt; with μ = μi/μt, the sine of \
-                          the angle in the new medium is μ times the old one."
-                .to_owned(),
-            focus: Focus::Angles,
-        },
-        Step {
-            title: "Square it, and use cosines",
-            equations: vec![equation(r, 6, "(1 − cos²θi)·μ² = 1 − cos²θt", squared)],
-            explanation: "Squaring lets the cosines (dot products) replace the sines, but it \
-                          also lets in false solutions: a solution and its signed opposite \
-                          both satisfy it."
-                .to_owned(),
-            focus: Focus::Angles,
-        },
-        Step {
-            title: "T as a·W + b·N",
-            equations: vec![eq7, eq8],
-            explanation: format!(
-                "T lies in the plane of W and N, so it is a·W + b·N; the cosines become dot \
-                 products with wn = W·N, and cosθt = −a·wn − b. The ray travels along {travel}."
-            ),
-            focus: Focus::Decomposition,
-        },
-        Step {
-            title: "The two squared constraints",
-            equations: vec![eq10, eq12],
-            explanation: "Squared Snell (eq. 10) and unit length (eq. 12) are two quadratics in \
-                          a and b. Four pairs (a, b) satisfy both: T and the three ghosts. \
-                          Nothing in them tells the four apart."
-                .to_owned(),
-            focus: Focus::SquaredConstraints,
-        },
-        Step {
-            title: "The two roots for a",
-            equations: vec![eq17, eq18],
-            explanation: "Substituting eq. 12 into eq. 10 leaves a² = μ²: a = +μ or a = −μ. \
-                          The other sign mirrors T across the normal: it bends the wrong way."
-                .to_owned(),
-            focus: Focus::RootsOfA,
-        },
-        Step {
-            title: "Choosing a: the limit μ = 1",
-            equations: vec![eq19],
-            explanation: format!(
-                "When μ = 1 nothing bends, so T must be the direction of travel, {travel}. Only \
-                 a = {} gives that; the other sign would give the mirror image. Press \
-                 \"Animate μ to 1\" to watch T converge to {travel} and the ghosts not.{typo}",
-                if a < 0.0 { "−μ" } else { "+μ" }
-            ),
-            focus: Focus::ChoiceOfA,
-        },
-        Step {
-            title: "The two roots for b",
-            equations: vec![eq20, eq21],
-            explanation: "With a fixed, eq. 12 is a quadratic in b with the roots −a·wn ± √k \
-                          (k = μ²wn² − μ² + 1). The other root mirrors T across the surface, \
-                          back into the medium the ray came from. k < 0 means no real root: \
-                          total internal reflection."
-                .to_owned(),
-            focus: Focus::RootsOfB,
-        },
-        Step {
-            title: "Choosing b",
-            equations: vec![eq22],
-            explanation: choice_of_b.to_owned(),
-            focus: Focus::ChoiceOfB,
-        },
-    ]
+    }
+    .to_owned()
 }
 
 #[cfg(test)]

@@ -30,6 +30,8 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> io::Result<()> {
         fs::rename(&temporary, path)
     })();
     if result.is_err() {
+        // The write's own error is the one to report; a temporary that cannot be removed
+        // either (or was never created) changes nothing at `path`.
         let _ = fs::remove_file(&temporary);
     }
     result.map_err(|e| io::Error::new(e.kind(), format!("cannot write {}: {e}", path.display())))

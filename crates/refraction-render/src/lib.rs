@@ -4,14 +4,13 @@
 pub mod atomic;
 pub mod text;
 
-use std::fmt;
 use std::path::Path;
 
 use glam::Vec2;
 use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Transform};
 
 use crate::atomic::write_atomically;
-use refraction_diagram::font::Typeface;
+use refraction_diagram::font::{FontError, Typeface};
 use refraction_diagram::geometry::Colour;
 use refraction_diagram::{Diagram, ExplorerState, Overlay, Primitive, SceneLayout, ScenePicture};
 use refraction_scene::Scene;
@@ -23,9 +22,15 @@ pub const DEFAULT_SIZE: (u32, u32) = (1920, 1080);
 pub const SIZE_LIMITS: (u32, u32) = (64, 8192);
 
 /// Why a PNG could not be made or written.
-#[derive(Debug)]
+#[derive(Debug, thiserror::Error)]
 pub enum RenderError {
     /// The width or height is outside [`SIZE_LIMITS`].
+    #[error(
+        "the image size {width}×{height} is not allowed: width and height must each be {} to {} \
+         pixels",
+        SIZE_LIMITS.0,
+        SIZE_LIMITS.1
+    )]
     BadSize {
         /// Requested width.
         width: u32,
@@ -33,29 +38,15 @@ pub enum RenderError {
         height: u32,
     },
     /// The embedded font could not be read.
-    Font(String),
-    /// PNG encoding failed.
+    #[error(transparent)]
+    Font(#[from] FontError),
+    /// PNG encoding failed; the encoder's message.
+    #[error("cannot encode the PNG: {0}")]
     Encode(String),
     /// The file could not be written.
+    #[error(transparent)]
     Write(std::io::Error),
 }
-
-impl fmt::Display for RenderError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let (low, high) = SIZE_LIMITS;
-        match self {
-            Self::BadSize { width, height } => write!(
-                f,
-                "the image size {width}×{height} is not allowed: width and height must each be \
-                 {low} to {high} pixels"
-            ),
-            Self::Font(message) | Self::Encode(message) => f.write_str(message),
-            Self::Write(e) => write!(f, "{e}"),
-        }
-    }
-}
-
-impl std::error::Error for RenderError {}
 
 fn paint(colour: Colour) -> Paint<'static> {
     let mut paint = Paint {
@@ -160,7 +151,7 @@ pub fn draw_primitives(
         return Err(bad_size);
     }
     let mut pixmap = Pixmap::new(width, height).ok_or(bad_size)?;
-    let face = Typeface::egui_default().map_err(RenderError::Font)?;
+    let face = Typeface::egui_default()?;
     for primitive in primitives(Vec2::new(width as f32, height as f32), &face) {
         draw(&mut pixmap, &face, &primitive);
     }
@@ -189,7 +180,7 @@ pub fn render(
 pub fn encode(pixmap: &Pixmap) -> Result<Vec<u8>, RenderError> {
     pixmap
         .encode_png()
-        .map_err(|e| RenderError::Encode(format!("cannot encode the PNG: {e}")))
+        .map_err(|e| RenderError::Encode(e.to_string()))
 }
 
 /// The diagram of `state` with `overlay` as PNG bytes.
@@ -340,5 +331,18 @@ mod tests {
         let path = Path::new("/nonexistent-folder/x.png");
         let err = export(&state, &Overlay::default(), (640, 360), path).unwrap_err();
         assert!(err.to_string().contains("/nonexistent-folder/x.png"));
+    }
+
+    #[test]
+    fn a_bad_size_says_the_size_and_the_limits_in_one_sentence() {
+        let err = RenderError::BadSize {
+            width: 20,
+            height: 9000,
+        };
+        assert_eq!(
+            err.to_string(),
+            "the image size 20×9000 is not allowed: width and height must each be 64 to 8192 \
+             pixels"
+        );
     }
 }

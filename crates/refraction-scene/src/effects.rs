@@ -63,20 +63,27 @@ impl Effects {
     ///
     /// # Errors
     /// `max_depth` above [`Self::MAX_DEPTH_LIMIT`] or `min_intensity` outside [0, 1].
-    pub fn check(&self) -> Result<(), String> {
+    pub fn check(&self) -> Result<(), EffectsError> {
         if self.max_depth > Self::MAX_DEPTH_LIMIT {
-            return Err(format!(
-                "max_depth is {}: at most {} hits per ray are traced",
-                self.max_depth,
-                Self::MAX_DEPTH_LIMIT
-            ));
+            return Err(EffectsError::MaxDepth(self.max_depth));
         }
         if !(0.0..=1.0).contains(&self.min_intensity) {
-            return Err(format!(
-                "min_intensity is {}: expected a fraction from 0 to 1",
-                self.min_intensity
-            ));
+            return Err(EffectsError::MinIntensity(self.min_intensity));
         }
         Ok(())
     }
+}
+
+/// Why a scene's effects cannot be traced ([`Effects::check`]).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum EffectsError {
+    /// `max_depth` is above [`Effects::MAX_DEPTH_LIMIT`]; the value asked for.
+    #[error(
+        "max_depth is {0}: at most {limit} hits per ray are traced",
+        limit = Effects::MAX_DEPTH_LIMIT
+    )]
+    MaxDepth(u32),
+    /// `min_intensity` is not a fraction from 0 to 1; the value asked for.
+    #[error("min_intensity is {0}: expected a fraction from 0 to 1")]
+    MinIntensity(f64),
 }

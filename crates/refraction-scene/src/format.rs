@@ -3,7 +3,6 @@
 //! and column, and what was expected.
 
 use std::collections::BTreeMap;
-use std::fmt;
 use std::ops::Range;
 
 use glam::DVec2;
@@ -44,7 +43,8 @@ impl Position {
 }
 
 /// Why a scene could not be loaded.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{file}{}: {message}", place(.position))]
 pub struct LoadError {
     /// The file's path, or the embedded scene's name.
     pub file: String,
@@ -54,18 +54,12 @@ pub struct LoadError {
     pub message: String,
 }
 
-impl fmt::Display for LoadError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.position {
-            Some(Position { line, column }) => {
-                write!(f, "{}:{line}:{column}: {}", self.file, self.message)
-            }
-            None => write!(f, "{}: {}", self.file, self.message),
-        }
-    }
+/// A position as it follows the file's name in a message: `:line:column`, or nothing.
+fn place(position: &Option<Position>) -> String {
+    position.map_or_else(String::new, |Position { line, column }| {
+        format!(":{line}:{column}")
+    })
 }
-
-impl std::error::Error for LoadError {}
 
 /// A problem at a place in the file: a byte range and a message.
 struct Invalid {
@@ -532,7 +526,7 @@ fn build(file: SceneFile, name: &str) -> Result<Scene, Invalid> {
         Some(effects) => {
             let e = *effects.get_ref();
             if let Err(message) = e.check() {
-                return invalid(effects.span(), message);
+                return invalid(effects.span(), message.to_string());
             }
             e
         }

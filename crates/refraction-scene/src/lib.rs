@@ -22,12 +22,10 @@ mod source;
 mod trace;
 mod write;
 
-use std::fmt;
-
 use glam::DVec2;
 
 pub use bounds::Bounds;
-pub use effects::Effects;
+pub use effects::{Effects, EffectsError};
 pub use embedded::{DEFAULT_SCENE, SceneInfo, catalogue};
 pub use format::{LoadError, Position};
 pub use fresnel::Fresnel;
@@ -37,6 +35,7 @@ pub use report::Report;
 pub use shape::{Crossing, Lens, Shape, T_MIN};
 pub use source::{Light, Source, SourceKind, traced_wavelength};
 pub use trace::{Counts, End, Hit, MAX_SEGMENTS, Outcome, Path, Segment, Side, Trace};
+pub use write::WriteError;
 
 /// A scene ready to trace: media, shapes, a source and the effects it asks for.
 ///
@@ -56,37 +55,24 @@ pub struct Scene {
 }
 
 /// Why an edit of a scene was refused (the scene is left as it was).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum EditError {
     /// A coordinate is NaN or infinite.
+    #[error("every coordinate must be a finite number")]
     NotFinite,
     /// A direction is the zero vector.
+    #[error("a direction must not be the zero vector")]
     NoDirection,
     /// No shape has this position in the list.
+    #[error("the scene has no shape {0}")]
     NoSuchShape(usize),
     /// A ray count outside 1 ..= [`Source::MAX_RAYS`].
+    #[error("{0} rays: a source has from 1 to {max} rays", max = Source::MAX_RAYS)]
     RayCount(usize),
     /// Effects that cannot be traced (see [`Effects::check`]).
-    Effects(String),
+    #[error(transparent)]
+    Effects(#[from] EffectsError),
 }
-
-impl fmt::Display for EditError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Self::NotFinite => f.write_str("every coordinate must be a finite number"),
-            Self::NoDirection => f.write_str("a direction must not be the zero vector"),
-            Self::NoSuchShape(i) => write!(f, "the scene has no shape {i}"),
-            Self::RayCount(n) => write!(
-                f,
-                "{n} rays: a source has from 1 to {} rays",
-                Source::MAX_RAYS
-            ),
-            Self::Effects(message) => f.write_str(message),
-        }
-    }
-}
-
-impl std::error::Error for EditError {}
 
 fn finite(v: DVec2) -> Result<DVec2, EditError> {
     if v.is_finite() {
@@ -263,7 +249,7 @@ impl Scene {
     /// # Errors
     /// [`EditError::Effects`] when [`Effects::check`] refuses them.
     pub fn set_effects(&mut self, effects: Effects) -> Result<(), EditError> {
-        effects.check().map_err(EditError::Effects)?;
+        effects.check()?;
         self.effects = effects;
         Ok(())
     }

@@ -111,7 +111,7 @@ impl Scene {
     ///
     /// # Errors
     /// The TOML writer refused a value (it accepts every scene that loaded).
-    pub fn to_toml(&self) -> Result<String, String> {
+    pub fn to_toml(&self) -> Result<String, WriteError> {
         // The built-in vacuum comes first when a file defines none: leave it implicit so that
         // the media keep their order when read back.
         let implicit_vacuum = self.media.first().is_some_and(|m| *m == Medium::vacuum());
@@ -140,9 +140,14 @@ impl Scene {
                 })
             }),
         };
-        toml::to_string(&file).map_err(|e| format!("cannot write the scene as TOML: {e}"))
+        toml::to_string(&file).map_err(WriteError)
     }
 }
+
+/// The TOML writer refused a scene ([`Scene::to_toml`]); it accepts every scene that loaded.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("cannot write the scene as TOML: {0}")]
+pub struct WriteError(toml::ser::Error);
 
 #[cfg(test)]
 mod tests {
