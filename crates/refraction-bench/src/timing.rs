@@ -4,7 +4,7 @@
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-use refraction_kernel::batch::{LANES, RayBatch, Transmissions};
+use refraction_kernel::batch::{RayBatch, Transmissions};
 use refraction_kernel::{Real, Variant};
 
 /// How long one timing sample should run: long enough to dwarf the clock's resolution.
@@ -76,12 +76,14 @@ pub struct Streaming {
 fn move_bytes(rays: &RayBatch<f32>, out: &mut Transmissions<f32>) {
     let (answers, tir) = out.blocks_mut();
     for ((block, answer), flags) in rays.blocks().iter().zip(answers).zip(tir) {
-        for ((t, d), n) in answer.t.iter_mut().zip(&block.d).zip(&block.n) {
-            for (((t, d), n), mu) in t.iter_mut().zip(d).zip(n).zip(&block.mu) {
-                *t = d + n * mu;
-            }
+        let ([dx, dy, dz], [nx, ny, nz], mu) = (&block.d, &block.n, &block.mu);
+        let [tx, ty, tz] = &mut answer.t;
+        for (j, flag) in flags.iter_mut().enumerate() {
+            tx[j] = dx[j] + nx[j] * mu[j];
+            ty[j] = dy[j] + ny[j] * mu[j];
+            tz[j] = dz[j] + nz[j] * mu[j];
+            *flag = false;
         }
-        *flags = [false; LANES];
     }
 }
 
