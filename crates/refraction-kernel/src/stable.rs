@@ -74,7 +74,8 @@ pub(crate) fn tangential<S: Real>(d: S::Vec3, n: S::Vec3) -> S::Vec3 {
     n.cross(d.cross(n))
 }
 
-/// k = 1 − μ²(1 − cos²θi) without cancellation, from `scaled` = μ·(the tangential part): near
+/// k = 1 − μ²(1 − cos²θi) without cancellation, from `scaled` = μ·(the tangential part) and
+/// `cos_i` = ±cosθi (only its square is used, and it need not be clamped to 1 either): near
 /// normal incidence 1 − |scaled|², so that |T|² = |scaled|² + k = 1 up to a few roundings
 /// however large μ is (sin²θi from d × n alone would not do: its component along `n`, a few ε
 /// whatever sinθi, is not in the tangential part, and μ² multiplies its square); otherwise
@@ -158,7 +159,8 @@ pub fn transmit<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Option<S::Vec3> {
 /// The pieces of T for a normal on either side, computed without turning it to face the ray:
 /// every quantity is the one [`refract_facing`] computes for the turned normal n′ = ±n, to the
 /// bit, because negation is exact. With dn = d·n (d·n′ = −|dn|):
-/// - cosθi = min(|dn|, 1);
+/// - cosθi = min(|dn|, 1), but the discriminant only uses cos²θi (to choose its branch) and
+///   (μ·cosθi)² where cos²θi ≤ ½, both the same bits for dn itself, so dn is passed as is;
 /// - the tangential part n′ × (d × n′) = n × (d × n);
 /// - cosθt·n′ = n·s with s = cosθt when n faces d (dn ≤ 0, n′ = n) and −cosθt otherwise.
 ///
@@ -181,13 +183,12 @@ impl<S: Real> Unturned<S> {
     #[inline(always)]
     pub(crate) fn new(d: S::Vec3, n: S::Vec3, mu: S) -> Self {
         let dn = d.dot(n);
-        let cos_i = dn.abs().min(S::ONE);
         let scaled = tangential::<S>(d, n) * mu;
         let one_minus_mu2 = (S::ONE - mu) * (S::ONE + mu);
         Self {
             scaled,
             n,
-            k: discriminant(scaled, cos_i, mu, one_minus_mu2),
+            k: discriminant(scaled, dn, mu, one_minus_mu2),
             away: dn > S::ZERO,
         }
     }
