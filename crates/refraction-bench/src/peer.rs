@@ -55,6 +55,12 @@ pub struct Packed {
     len: usize,
 }
 
+/// `n` or `−n` per lane, whichever faces `d` (d·n ≤ 0), as the `glam` row turns it.
+fn facing(d: Vec3x8, n: Vec3x8) -> Vec3x8 {
+    let away = d.dot(n).cmp_gt(f32x8::splat(0.0));
+    Vec3x8::blend(away, -n, n)
+}
+
 /// Eight lanes of a block's row, from lane `start`.
 fn eight(row: &[f32; LANES], start: usize) -> f32x8 {
     let mut lanes = [0.0; WIDTH];
@@ -104,11 +110,24 @@ impl Packed {
 
     /// Refracts every pack, keeping the answers: the timed pass.
     pub fn transmit_all(&mut self) {
-        let zero = f32x8::splat(0.0);
         for (t, (d, n, eta)) in self.out.iter_mut().zip(&self.packs) {
-            let away = d.dot(*n).cmp_gt(zero);
-            let facing = Vec3x8::blend(away, -*n, *n);
-            *t = d.refracted(facing, *eta);
+            *t = d.refracted(facing(*d, *n), *eta);
+        }
+    }
+
+    /// Turns every packed normal to face its ray, once, for [`Packed::transmit_all_facing`].
+    pub fn turn_normals(&mut self) {
+        for (d, n, _) in &mut self.packs {
+            *n = facing(*d, *n);
+        }
+    }
+
+    /// [`Packed::transmit_all`] without turning the normals, which must face the rays already
+    /// ([`Packed::turn_normals`]): ultraviolet's own loop alone, as fast as it gets when the
+    /// caller knows which side of the surface each ray is on.
+    pub fn transmit_all_facing(&mut self) {
+        for (t, (d, n, eta)) in self.out.iter_mut().zip(&self.packs) {
+            *t = d.refracted(*n, *eta);
         }
     }
 
@@ -170,5 +189,13 @@ mod tests {
             }
         }
         assert!(reflected > 0, "the rays include total internal reflection");
+        let mut turned = Packed::new(&rays);
+        turned.turn_normals();
+        turned.transmit_all_facing();
+        assert_eq!(
+            turned.transmissions(),
+            out,
+            "turning first gives the same answers"
+        );
     }
 }
