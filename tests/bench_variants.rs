@@ -83,28 +83,31 @@ fn bench_json_quick_reports_every_row_and_plots_them() {
     assert_eq!((image.width(), image.height()), (1600, 1000));
     let report: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
     let rows = report["rows"].as_array().unwrap();
-    assert_eq!(rows.len(), 2 * Variant::ALL.len());
-    for variant in Variant::ALL {
-        for precision in ["f32", "f64"] {
-            let row = rows
-                .iter()
-                .find(|r| r["variant"] == variant.name() && r["precision"] == precision)
-                .unwrap_or_else(|| panic!("no row for {variant:?} {precision}"));
-            for field in [
-                "ns_per_ray",
-                "max_err_random",
-                "median_err_random",
-                "max_err_hard",
-                "median_err_hard",
-                "max_err_hard_eps_kappa",
-            ] {
-                assert!(
-                    row[field].as_f64().is_some_and(f64::is_finite),
-                    "{field} in {row}"
-                );
-            }
-            assert!(row["tir_mismatches"].is_u64());
+    // Every variant at both precisions, and the ultraviolet row (new with issue 14: the SIMD
+    // peer, f32 only, timed in the same run).
+    assert_eq!(rows.len(), 2 * Variant::ALL.len() + 1);
+    let kernel_rows = Variant::ALL
+        .into_iter()
+        .flat_map(|v| [(v.name(), "f32"), (v.name(), "f64")]);
+    for (variant, precision) in kernel_rows.chain([("ultraviolet", "f32")]) {
+        let row = rows
+            .iter()
+            .find(|r| r["variant"] == variant && r["precision"] == precision)
+            .unwrap_or_else(|| panic!("no row for {variant} {precision}"));
+        for field in [
+            "ns_per_ray",
+            "max_err_random",
+            "median_err_random",
+            "max_err_hard",
+            "median_err_hard",
+            "max_err_hard_eps_kappa",
+        ] {
+            assert!(
+                row[field].as_f64().is_some_and(f64::is_finite),
+                "{field} in {row}"
+            );
         }
+        assert!(row["tir_mismatches"].is_u64());
     }
     assert!(report["rays"].as_u64().unwrap() > 0);
     assert!(!report["cpu"].as_str().unwrap().is_empty());

@@ -1,15 +1,15 @@
-//! Criterion benches of every refraction variant at both precisions, plus ultraviolet's
-//! `Vec3x8::refracted` as the SIMD peer, on the same in-cache random rays that the `bench`
-//! command times. Regressions show here in review; the README quotes the `bench` command's
+//! Criterion benches of every refraction variant at both precisions, and the batch kernel against
+//! ultraviolet's `Vec3x8::refracted` (the SIMD peer), on the same in-cache random rays that the
+//! `bench` command times. Regressions show here in review; the README quotes the `bench` command's
 //! figures.
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use refraction_bench::accuracy::prepare;
+use refraction_bench::peer::Packed;
 use refraction_bench::sets;
-use refraction_kernel::batch::{RayBatch, Transmissions};
+use refraction_kernel::batch::{Build, RayBatch, Transmissions, transmit_batch_with};
 use refraction_kernel::{Real, Variant};
 use std::hint::black_box;
-use ultraviolet::{Vec3x8, f32x8};
 
 const RAYS: usize = 4096;
 
@@ -30,31 +30,34 @@ fn variants_at<S: Real>(c: &mut Criterion) {
     group.finish();
 }
 
-/// ultraviolet's 8-wide GLSL refraction on the same rays, packed eight at a time.
-fn ultraviolet_peer(c: &mut Criterion) {
+/// The regression group of issue 14: the batch kernel against ultraviolet's 8-wide GLSL
+/// refraction (normal turned to face the ray, as in the `bench` command) on the same rays, packed
+/// eight at a time outside the timed loop. Batch should take at most ultraviolet's time; each
+/// build of the batch loop and ultraviolet without the normal turn are there for comparison.
+fn batch_against_ultraviolet(c: &mut Criterion) {
     let rays = rays::<f32>();
-    let ([dx, dy, dz], [nx, ny, nz], mu) = rays.columns();
-    let pack =
-        |column: &[f32], i: usize| f32x8::from(<[f32; 8]>::try_from(&column[i..i + 8]).unwrap());
-    let lanes: Vec<(Vec3x8, Vec3x8, f32x8)> = (0..RAYS / 8)
-        .map(|chunk| {
-            let i = chunk * 8;
-            (
-                Vec3x8::new(pack(dx, i), pack(dy, i), pack(dz, i)),
-                Vec3x8::new(pack(nx, i), pack(ny, i), pack(nz, i)),
-                pack(mu, i),
-            )
-        })
-        .collect();
-    let mut out = vec![Vec3x8::zero(); lanes.len()];
-    let mut group = c.benchmark_group("refract_f32");
+    let mut out = Transmissions::for_batch(&rays);
+    let mut packed = Packed::new(&rays);
+    let mut group = c.benchmark_group("batch_vs_ultraviolet_f32");
     group.throughput(Throughput::Elements(RAYS as u64));
-    group.bench_function(BenchmarkId::from_parameter("ultraviolet_vec3x8"), |b| {
-        b.iter(|| {
-            for (t, (d, n, eta)) in out.iter_mut().zip(black_box(&lanes)) {
-                *t = d.refracted(*n, *eta);
-            }
+    group.bench_function(BenchmarkId::from_parameter("batch"), |b| {
+        b.iter(|| Variant::Batch.transmit_all(black_box(&rays), &mut out));
+    });
+    // Each build of the loop this CPU runs (the widest is what `batch` uses), for the README's
+    // comparison of AVX2 and AVX-512.
+    for build in Build::ALL.into_iter().filter(|b| b.is_available()) {
+        let id = BenchmarkId::new("batch", build.name());
+        group.bench_function(id, |b| {
+            b.iter(|| transmit_batch_with(build, black_box(&rays), &mut out));
         });
+    }
+    group.bench_function(BenchmarkId::from_parameter("ultraviolet"), |b| {
+        b.iter(|| black_box(&mut packed).transmit_all());
+    });
+    // ultraviolet's loop alone, the normals turned beforehand (not timed): its best case.
+    packed.turn_normals();
+    group.bench_function(BenchmarkId::from_parameter("ultraviolet_facing"), |b| {
+        b.iter(|| black_box(&mut packed).transmit_all_facing());
     });
     group.finish();
 }
@@ -63,6 +66,6 @@ criterion_group!(
     benches,
     variants_at::<f32>,
     variants_at::<f64>,
-    ultraviolet_peer
+    batch_against_ultraviolet
 );
 criterion_main!(benches);

@@ -82,6 +82,16 @@ pub struct Errors {
 pub fn errors<S: Real>(variant: Variant, prepared: &Prepared<S>) -> Errors {
     let mut out = Transmissions::for_batch(&prepared.rays);
     variant.transmit_all(&prepared.rays, &mut out);
+    errors_of(&out, prepared)
+}
+
+/// Compares answers `out` to the rays of `prepared` (one per ray, in order; a peer's, say) with
+/// the oracle's.
+///
+/// # Panics
+/// If `out` has fewer answers than `prepared` has rays.
+#[must_use]
+pub fn errors_of<S: Real>(out: &Transmissions<S>, prepared: &Prepared<S>) -> Errors {
     let eps = S::EPSILON.to_f64();
     let mut angles = Vec::with_capacity(out.len());
     let mut max_eps_kappa = 0.0_f64;

@@ -4,15 +4,45 @@
 
 pub mod accuracy;
 pub mod oracle;
+pub mod peer;
 pub mod sets;
 pub mod timing;
 
 use serde::Serialize;
 
-use accuracy::{Errors, Prepared, errors, prepare};
-use refraction_kernel::batch::RayBatch;
+use accuracy::{Prepared, errors_of, prepare};
+use refraction_kernel::batch::{Build, RayBatch, Transmissions};
 use refraction_kernel::{Real, Variant};
-use timing::{Streaming, ns_per_ray, streaming};
+use timing::{Pass, Streaming, medians_ns_per_ray, streaming, variant_pass};
+
+/// What a row of the report measures: a kernel [`Variant`], or a peer library
+/// ([`peer::Ultraviolet`]) run on the same rays.
+pub trait Subject<S: Real> {
+    /// The name in reports and JSON.
+    fn name(&self) -> &'static str;
+
+    /// A pass over `rays` to time; any repacking the subject needs happens here, before it.
+    fn pass<'a>(&self, rays: &'a RayBatch<S>) -> Pass<'a>;
+
+    /// The answers for `rays`, one per ray in order.
+    fn answers(&self, rays: &RayBatch<S>) -> Transmissions<S>;
+}
+
+impl<S: Real> Subject<S> for Variant {
+    fn name(&self) -> &'static str {
+        Variant::name(*self)
+    }
+
+    fn pass<'a>(&self, rays: &'a RayBatch<S>) -> Pass<'a> {
+        variant_pass(*self, rays)
+    }
+
+    fn answers(&self, rays: &RayBatch<S>) -> Transmissions<S> {
+        let mut out = Transmissions::for_batch(rays);
+        self.transmit_all(rays, &mut out);
+        out
+    }
+}
 
 /// How much work a run does.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -116,7 +146,7 @@ impl Report {
     #[must_use]
     pub fn table(&self) -> String {
         let mut text = format!(
-            "{:<7} {:<4} {:>8} {:>11} {:>10} {:>10} {:>10} {:>10} {:>11} {:>5}\n",
+            "{:<11} {:<4} {:>8} {:>11} {:>10} {:>10} {:>10} {:>10} {:>11} {:>5}\n",
             "variant",
             "prec",
             "ns/ray",
@@ -130,7 +160,7 @@ impl Report {
         );
         for r in &self.rows {
             text.push_str(&format!(
-                "{:<7} {:<4} {:>8.2} {:>11.3e} {:>10.2e} {:>10.2e} {:>10.2e} {:>10.2e} {:>11.1} {:>5}\n",
+                "{:<11} {:<4} {:>8.2} {:>11.3e} {:>10.2e} {:>10.2e} {:>10.2e} {:>10.2e} {:>11.1} {:>5}\n",
                 r.variant,
                 r.precision,
                 r.ns_per_ray,
@@ -180,6 +210,7 @@ pub fn cpu_description() -> String {
     for (name, present) in [
         ("avx2", std::arch::is_x86_feature_detected!("avx2")),
         ("fma", std::arch::is_x86_feature_detected!("fma")),
+        ("avx512", Build::Avx512.is_available()),
     ] {
         if present {
             features.push(name);
@@ -188,10 +219,13 @@ pub fn cpu_description() -> String {
     format!("{model}, {threads} threads, {}", features.join("+"))
 }
 
+/// The rows of `subjects` at precision `S`: all timed in one interleaved measurement (so that
+/// their ratios hold however busy the machine is), then measured against the oracle.
 fn rows_at<S: Real>(
     config: &Config,
     random: &Prepared<S>,
     hard: &Prepared<S>,
+    subjects: &[&dyn Subject<S>],
     step: &mut dyn FnMut(),
 ) -> Vec<Row> {
     let mut timing_rays = RayBatch::new();
@@ -199,15 +233,18 @@ fn rows_at<S: Real>(
         let (d, n, mu) = random.rays.get(i);
         timing_rays.push(d, n, mu);
     }
-    Variant::ALL
-        .into_iter()
-        .map(|variant| {
-            let ns = ns_per_ray(variant, &timing_rays, config.samples);
-            let (on_random, on_hard): (Errors, Errors) =
-                (errors(variant, random), errors(variant, hard));
+    let mut passes: Vec<Pass<'_>> = subjects.iter().map(|s| s.pass(&timing_rays)).collect();
+    let times = medians_ns_per_ray(timing_rays.len(), config.samples, &mut passes);
+    drop(passes);
+    subjects
+        .iter()
+        .zip(times)
+        .map(|(subject, ns)| {
+            let on_random = errors_of(&subject.answers(&random.rays), random);
+            let on_hard = errors_of(&subject.answers(&hard.rays), hard);
             step();
             Row {
-                variant: variant.name(),
+                variant: subject.name(),
                 precision: S::NAME,
                 ns_per_ray: ns,
                 rays_per_second: 1e9 / ns,
@@ -236,14 +273,23 @@ pub fn run(config: &Config, progress: &mut dyn FnMut(f64)) -> Report {
     let hard32 = prepare::<f32>(&hard_set, &mut |_| {});
     let random64 = prepare::<f64>(&random_set, &mut |f| progress(0.2 + 0.2 * f));
     let hard64 = prepare::<f64>(&hard_set, &mut |_| {});
-    let per_row = 0.5 / (2 * Variant::ALL.len()) as f64;
+    let mut subjects32: Vec<&dyn Subject<f32>> = Variant::ALL
+        .iter()
+        .map(|v| v as &dyn Subject<f32>)
+        .collect();
+    subjects32.push(&peer::Ultraviolet);
+    let subjects64: Vec<&dyn Subject<f64>> = Variant::ALL
+        .iter()
+        .map(|v| v as &dyn Subject<f64>)
+        .collect();
+    let per_row = 0.5 / (subjects32.len() + subjects64.len()) as f64;
     let mut done = 0.4;
     let mut step = || {
         done += per_row;
         progress(done);
     };
-    let mut rows = rows_at(config, &random32, &hard32, &mut step);
-    rows.extend(rows_at(config, &random64, &hard64, &mut step));
+    let mut rows = rows_at(config, &random32, &hard32, &subjects32, &mut step);
+    rows.extend(rows_at(config, &random64, &hard64, &subjects64, &mut step));
     let mut streaming_rays = RayBatch::<f32>::new();
     for i in 0..config.streaming_rays {
         let (d, n, mu) = random32.rays.get(i % random32.rays.len());

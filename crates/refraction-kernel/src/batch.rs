@@ -1,21 +1,57 @@
-//! The default kernel over many rays at once: structure-of-arrays in, structure-of-arrays out,
-//! written branch-free so that the compiler vectorises it, with an AVX2 build of the same loop
-//! chosen at run time on x86-64 CPUs that have it.
+//! The default kernel over many rays at once, written branch-free so that the compiler
+//! vectorises it, with AVX-512 and AVX2 builds of the same loop chosen at run time on x86-64
+//! CPUs that have them.
 //!
 //! Every lane performs exactly the scalar kernel's operations (the shared pieces of
 //! [`super::stable`]), so each T is bit for bit the one [`super::stable::transmit`] returns. A
 //! lane in total internal reflection computes garbage that is then *selected* away (never
 //! multiplied by a mask), so no NaN reaches its output or its neighbours.
+//!
+//! The rays are stored in blocks of [`LANES`] (structure-of-arrays within a block, an array of
+//! blocks around them), each block a few whole cache lines. With one array per quantity (seven
+//! in, four out) the columns' addresses fell at nearly the same offset within a 4 KiB page
+//! wherever the allocator put them, so that eleven streams competed for the same few sets of
+//! the L1 cache, and the in-cache time per ray varied by a third from run to run. Blocks are one
+//! stream in and two out, aligned, and give the vectorised loop a fixed trip count of sixteen
+//! lanes: one 512-bit vector of f32, or two or four independent 256-bit ones, whose chains of
+//! arithmetic the processor overlaps.
 
 use super::real::{Real, Vector3};
-use super::stable::{cos_incidence, discriminant, facing, tangential, transmitted_direction};
+use super::stable::Unturned;
 
-/// Rays as structure-of-arrays: unit travel directions, unit normals (either side), μ = μ_i/μ_t.
+/// Rays per block (a power of two).
+pub const LANES: usize = 16;
+const _: () = assert!(LANES.is_power_of_two());
+
+/// [`LANES`] rays: unit travel directions (x, y and z rows), unit normals (either side), μ.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C, align(64))]
+pub struct RayBlock<S: Real> {
+    /// The travel directions' x, y and z components, one row each.
+    pub d: [[S; LANES]; 3],
+    /// The normals' x, y and z components, one row each.
+    pub n: [[S; LANES]; 3],
+    /// μ = μ_i/μ_t per ray.
+    pub mu: [S; LANES],
+}
+
+impl<S: Real> RayBlock<S> {
+    /// Lanes not yet filled hold a ray straight down through a flat surface at μ = 1, which
+    /// transmits unchanged: nothing unusual is computed for them.
+    fn padding() -> Self {
+        Self {
+            d: [[S::ZERO; LANES], [-S::ONE; LANES], [S::ZERO; LANES]],
+            n: [[S::ZERO; LANES], [S::ONE; LANES], [S::ZERO; LANES]],
+            mu: [S::ONE; LANES],
+        }
+    }
+}
+
+/// Rays in blocks of [`LANES`]: unit travel directions, unit normals (either side), μ.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct RayBatch<S: Real> {
-    d: [Vec<S>; 3],
-    n: [Vec<S>; 3],
-    mu: Vec<S>,
+    blocks: Vec<RayBlock<S>>,
+    len: usize,
 }
 
 impl<S: Real> RayBatch<S> {
@@ -23,178 +59,325 @@ impl<S: Real> RayBatch<S> {
     #[must_use]
     pub fn new() -> Self {
         Self {
-            d: [Vec::new(), Vec::new(), Vec::new()],
-            n: [Vec::new(), Vec::new(), Vec::new()],
-            mu: Vec::new(),
+            blocks: Vec::new(),
+            len: 0,
         }
     }
 
     /// Adds a ray: unit travel direction `d`, unit normal `n`, index ratio `mu` (as accepted by
     /// [`super::stable::refract_facing`]).
     pub fn push(&mut self, d: S::Vec3, n: S::Vec3, mu: S) {
-        for (column, value) in self.d.iter_mut().zip(d.to_array()) {
-            column.push(value);
+        let lane = self.len % LANES;
+        if lane == 0 {
+            self.blocks.push(RayBlock::padding());
         }
-        for (column, value) in self.n.iter_mut().zip(n.to_array()) {
-            column.push(value);
+        let block = self.blocks.last_mut().expect("a block was pushed above");
+        for (row, value) in block.d.iter_mut().zip(d.to_array()) {
+            row[lane] = value;
         }
-        self.mu.push(mu);
+        for (row, value) in block.n.iter_mut().zip(n.to_array()) {
+            row[lane] = value;
+        }
+        block.mu[lane] = mu;
+        self.len += 1;
     }
 
     /// The number of rays.
     #[must_use]
     pub fn len(&self) -> usize {
-        self.mu.len()
+        self.len
     }
 
     /// Whether the batch holds no ray.
     #[must_use]
     pub fn is_empty(&self) -> bool {
-        self.mu.is_empty()
+        self.len == 0
     }
 
-    /// The columns: d's x, y, z; n's x, y, z; μ. All have [`RayBatch::len`] elements.
+    /// The blocks: ray `i` is lane `i % LANES` of block `i / LANES`. The last block's lanes
+    /// from `len() % LANES` on (if that is not 0) are padding.
     #[must_use]
-    pub fn columns(&self) -> ([&[S]; 3], [&[S]; 3], &[S]) {
-        let [dx, dy, dz] = &self.d;
-        let [nx, ny, nz] = &self.n;
-        ([dx, dy, dz], [nx, ny, nz], &self.mu)
+    pub fn blocks(&self) -> &[RayBlock<S>] {
+        &self.blocks
     }
 
-    /// Ray `i`: (d, n, μ). Panics if `i >= len()`.
+    /// Ray `i`: (d, n, μ).
+    ///
+    /// # Panics
+    /// If `i >= len()`.
     #[must_use]
     pub fn get(&self, i: usize) -> (S::Vec3, S::Vec3, S) {
-        let [dx, dy, dz] = &self.d;
-        let [nx, ny, nz] = &self.n;
+        assert!(i < self.len, "ray {i} of a batch of {}", self.len);
+        let (block, lane) = (&self.blocks[i / LANES], i % LANES);
+        let [dx, dy, dz] = block.d.map(|row| row[lane]);
+        let [nx, ny, nz] = block.n.map(|row| row[lane]);
         (
-            S::Vec3::new(dx[i], dy[i], dz[i]),
-            S::Vec3::new(nx[i], ny[i], nz[i]),
-            self.mu[i],
+            S::Vec3::new(dx, dy, dz),
+            S::Vec3::new(nx, ny, nz),
+            block.mu[lane],
         )
     }
 }
 
-/// The results of a batch: T per ray (zero where totally internally reflected) and the TIR flags.
+/// The transmitted directions of one [`RayBlock`]: x, y and z rows (zero where totally
+/// internally reflected).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C, align(64))]
+pub struct TransmittedBlock<S: Real> {
+    /// T's x, y and z components, one row each.
+    pub t: [[S; LANES]; 3],
+}
+
+/// The results of a batch: T per ray (zero where totally internally reflected) and the TIR
+/// flags, in blocks of [`LANES`] like the rays.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Transmissions<S: Real> {
-    t: [Vec<S>; 3],
-    tir: Vec<bool>,
+    blocks: Vec<TransmittedBlock<S>>,
+    tir: Vec<[bool; LANES]>,
+    len: usize,
 }
 
 impl<S: Real> Transmissions<S> {
     /// Room for the results of `rays`, every ray marked as not yet computed (zero, not TIR).
     #[must_use]
     pub fn for_batch(rays: &RayBatch<S>) -> Self {
-        let zeros = vec![S::ZERO; rays.len()];
-        Self {
-            t: [zeros.clone(), zeros.clone(), zeros],
-            tir: vec![false; rays.len()],
-        }
+        Self::zeroed(rays.len())
+    }
+
+    /// Room for `len` results, each zero and not TIR: for answers computed elsewhere and
+    /// written with [`Transmissions::set`].
+    #[must_use]
+    pub fn zeroed(len: usize) -> Self {
+        let mut out = Self {
+            blocks: Vec::new(),
+            tir: Vec::new(),
+            len: 0,
+        };
+        out.resize(len);
+        out
     }
 
     /// The number of results.
     #[must_use]
     pub fn len(&self) -> usize {
-        self.tir.len()
+        self.len
     }
 
     /// Whether there are no results.
     #[must_use]
     pub fn is_empty(&self) -> bool {
-        self.tir.is_empty()
+        self.len == 0
     }
 
-    /// Result `i`: T, or `None` on total internal reflection. Panics if `i >= len()`.
+    /// Result `i`: T, or `None` on total internal reflection.
+    ///
+    /// # Panics
+    /// If `i >= len()`.
     #[must_use]
     pub fn get(&self, i: usize) -> Option<S::Vec3> {
-        let [tx, ty, tz] = &self.t;
-        (!self.tir[i]).then(|| S::Vec3::new(tx[i], ty[i], tz[i]))
+        assert!(i < self.len, "result {i} of {}", self.len);
+        let (block, lane) = (i / LANES, i % LANES);
+        let [x, y, z] = self.blocks[block].t.map(|row| row[lane]);
+        (!self.tir[block][lane]).then(|| S::Vec3::new(x, y, z))
     }
 
-    /// The columns to write: T's x, y, z and the TIR flags, [`Transmissions::len`] each.
-    pub fn columns_mut(&mut self) -> ([&mut [S]; 3], &mut [bool]) {
-        let [tx, ty, tz] = &mut self.t;
-        ([tx, ty, tz], &mut self.tir)
+    /// Sets result `i`: T, or `None` for total internal reflection (stored as zero).
+    ///
+    /// # Panics
+    /// If `i >= len()`.
+    pub fn set(&mut self, i: usize, t: Option<S::Vec3>) {
+        assert!(i < self.len, "result {i} of {}", self.len);
+        let (block, lane) = (i / LANES, i % LANES);
+        let values = t.map_or([S::ZERO; 3], Vector3::to_array);
+        for (row, value) in self.blocks[block].t.iter_mut().zip(values) {
+            row[lane] = value;
+        }
+        self.tir[block][lane] = t.is_none();
+    }
+
+    /// The blocks to write: T per [`RayBlock`] and its TIR flags, laid out like
+    /// [`RayBatch::blocks`].
+    pub fn blocks_mut(&mut self) -> (&mut [TransmittedBlock<S>], &mut [[bool; LANES]]) {
+        (&mut self.blocks, &mut self.tir)
     }
 
     fn resize(&mut self, len: usize) {
-        for column in &mut self.t {
-            column.resize(len, S::ZERO);
-        }
-        self.tir.resize(len, false);
+        let blocks = len.div_ceil(LANES);
+        let zero = TransmittedBlock {
+            t: [[S::ZERO; LANES]; 3],
+        };
+        self.blocks.resize(blocks, zero);
+        self.tir.resize(blocks, [false; LANES]);
+        self.len = len;
     }
 }
 
 /// One lane: [`super::stable::transmit`] without branches. Returns (T or zero, TIR).
 #[inline(always)]
 fn lane<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> (S::Vec3, bool) {
-    let n = facing::<S>(d, n);
-    let cos_i = cos_incidence::<S>(d, n);
-    let one_minus_mu2 = (S::ONE - mu) * (S::ONE + mu);
-    let along = tangential::<S>(d, n, cos_i);
-    let k = discriminant(along, cos_i, mu, one_minus_mu2);
-    let tir = k < S::ZERO;
-    let cos_t = k.max(S::ZERO).sqrt();
-    let t = transmitted_direction(along, n, mu, cos_t);
-    let t = if mu == S::ONE { d } else { t };
+    let unturned = Unturned::new(d, n, mu);
+    let equal = mu == S::ONE;
+    let tir = unturned.k < S::ZERO && !equal;
+    // A lane in total internal reflection takes the root of a negative k: its NaN is selected
+    // away below, like the whole T of a lane at μ = 1.
+    let t = unturned.direction(unturned.k.sqrt());
+    let t = if equal { d } else { t };
     let zero = S::Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+    (if tir { zero } else { t }, tir)
+}
+
+/// Lane `j` of `block`: (d, n, μ).
+#[inline(always)]
+fn ray_at<S: Real>(block: &RayBlock<S>, j: usize) -> (S::Vec3, S::Vec3, S) {
+    let [dx, dy, dz] = &block.d;
+    let [nx, ny, nz] = &block.n;
     (
-        if tir && mu != S::ONE { zero } else { t },
-        tir && mu != S::ONE,
+        S::Vec3::new(dx[j], dy[j], dz[j]),
+        S::Vec3::new(nx[j], ny[j], nz[j]),
+        block.mu[j],
     )
 }
 
-/// Runs `lane` on every ray of `rays`, writing `out` (which must have the same length): the
-/// loop shared by the batch kernel and the scalar variants, sliced so that no bounds check is
-/// left inside it. `index` sees every index before use: the identity lets the compiler
-/// vectorise across rays; `std::hint::black_box` keeps each ray a call of its own.
+/// Writes lane `j`'s answer.
+#[inline(always)]
+fn answer_at<S: Real>(
+    out: &mut TransmittedBlock<S>,
+    tir: &mut [bool; LANES],
+    j: usize,
+    (t, reflected): (S::Vec3, bool),
+) {
+    let [tx, ty, tz] = &mut out.t;
+    [tx[j], ty[j], tz[j]] = t.to_array();
+    tir[j] = reflected;
+}
+
+/// Runs `lane` on every lane of every block of `rays` one at a time (padding included: it is
+/// harmless), writing `out` (which must have as many blocks), as a ray tracer calls a scalar
+/// kernel: the loop of the scalar variants. `lane_index` sees every lane index before use;
+/// `std::hint::black_box` there keeps each ray a call of its own (the compiler would otherwise
+/// vectorise across rays).
 #[inline(always)]
 pub(crate) fn for_each_ray<S: Real>(
     rays: &RayBatch<S>,
     out: &mut Transmissions<S>,
-    index: impl Fn(usize) -> usize,
+    lane_index: impl Fn(usize) -> usize,
     lane: impl Fn(S::Vec3, S::Vec3, S) -> (S::Vec3, bool),
 ) {
-    let len = rays.len().min(out.len());
-    let [dx, dy, dz] = rays.d.each_ref().map(|c| &c[..len]);
-    let [nx, ny, nz] = rays.n.each_ref().map(|c| &c[..len]);
-    let mu = &rays.mu[..len];
-    let [tx, ty, tz] = out.t.each_mut().map(|c| &mut c[..len]);
-    let tir = &mut out.tir[..len];
-    for i in 0..len {
-        let i = index(i).min(len - 1);
-        let (t, reflected) = lane(
-            S::Vec3::new(dx[i], dy[i], dz[i]),
-            S::Vec3::new(nx[i], ny[i], nz[i]),
-            mu[i],
-        );
-        [tx[i], ty[i], tz[i]] = t.to_array();
-        tir[i] = reflected;
+    let blocks = out.blocks.iter_mut().zip(&mut out.tir);
+    for (block, (answers, tir)) in rays.blocks.iter().zip(blocks) {
+        for j in 0..LANES {
+            // LANES is a power of two: the mask keeps the index in range without a check.
+            let j = lane_index(j) & (LANES - 1);
+            let (d, n, mu) = ray_at(block, j);
+            answer_at(answers, tir, j, lane(d, n, mu));
+        }
     }
 }
 
+/// The batch kernel's loop: every lane of every block, padding included, with a fixed trip
+/// count of [`LANES`] that the compiler vectorises whole.
 #[inline(always)]
-fn transmit_lanes<S: Real>(rays: &RayBatch<S>, out: &mut Transmissions<S>) {
-    for_each_ray(rays, out, |i| i, |d, n, mu| lane(d, n, mu));
+fn transmit_blocks<S: Real>(rays: &RayBatch<S>, out: &mut Transmissions<S>) {
+    for_each_ray(rays, out, |j| j, lane);
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn transmit_lanes_avx2<S: Real>(rays: &RayBatch<S>, out: &mut Transmissions<S>) {
-    transmit_lanes(rays, out);
+fn transmit_blocks_avx2<S: Real>(rays: &RayBatch<S>, out: &mut Transmissions<S>) {
+    transmit_blocks(rays, out);
 }
 
-/// Refracts every ray of `rays` into `out` (resized to match), vectorised; each T equals
-/// [`super::stable::transmit`]'s bit for bit.
-pub fn transmit_batch<S: Real>(rays: &RayBatch<S>, out: &mut Transmissions<S>) {
-    out.resize(rays.len());
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU supports AVX2, as checked just above.
-        unsafe { transmit_lanes_avx2(rays, out) };
-        return;
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq")]
+fn transmit_blocks_avx512<S: Real>(rays: &RayBatch<S>, out: &mut Transmissions<S>) {
+    transmit_blocks(rays, out);
+}
+
+/// A build of the batch kernel's loop: the same arithmetic (so the same bits) compiled for one
+/// instruction set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Build {
+    /// For the target the crate is compiled for (SSE2 on plain x86-64): runs everywhere.
+    Portable,
+    /// 256-bit AVX2 vectors: eight f32 lanes (x86-64 CPUs that have it).
+    Avx2,
+    /// 512-bit AVX-512 (F, VL, BW, DQ) vectors: sixteen f32 lanes, one block per vector, with
+    /// mask registers for the selects (x86-64 CPUs that have it).
+    Avx512,
+}
+
+impl Build {
+    /// Every build, slowest first.
+    pub const ALL: [Self; 3] = [Self::Portable, Self::Avx2, Self::Avx512];
+
+    /// The short name used in reports: `"portable"`, `"avx2"`, `"avx512"`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Portable => "portable",
+            Self::Avx2 => "avx2",
+            Self::Avx512 => "avx512",
+        }
     }
-    transmit_lanes(rays, out);
+
+    /// Whether this CPU can run the build.
+    #[must_use]
+    pub fn is_available(self) -> bool {
+        match self {
+            Self::Portable => true,
+            #[cfg(target_arch = "x86_64")]
+            Self::Avx2 => std::arch::is_x86_feature_detected!("avx2"),
+            #[cfg(target_arch = "x86_64")]
+            Self::Avx512 => {
+                std::arch::is_x86_feature_detected!("avx512f")
+                    && std::arch::is_x86_feature_detected!("avx512vl")
+                    && std::arch::is_x86_feature_detected!("avx512bw")
+                    && std::arch::is_x86_feature_detected!("avx512dq")
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            Self::Avx2 | Self::Avx512 => false,
+        }
+    }
+
+    /// The widest build this CPU can run: the one [`transmit_batch`] uses.
+    #[must_use]
+    pub fn widest() -> Self {
+        Self::ALL
+            .into_iter()
+            .rev()
+            .find(|build| build.is_available())
+            .unwrap_or(Self::Portable)
+    }
+}
+
+/// Refracts every ray of `rays` into `out` (resized to match) with the widest build of the loop
+/// this CPU runs ([`Build::widest`]); each T equals [`super::stable::transmit`]'s bit for bit.
+pub fn transmit_batch<S: Real>(rays: &RayBatch<S>, out: &mut Transmissions<S>) {
+    transmit_batch_with(Build::widest(), rays, out);
+}
+
+/// [`transmit_batch`] with a chosen build, to compare them. Every build gives the same bits.
+///
+/// # Panics
+/// If `build` is not available on this CPU ([`Build::is_available`]).
+pub fn transmit_batch_with<S: Real>(build: Build, rays: &RayBatch<S>, out: &mut Transmissions<S>) {
+    assert!(
+        build.is_available(),
+        "the {} build needs a CPU that has it",
+        build.name()
+    );
+    out.resize(rays.len());
+    match build {
+        Build::Portable => transmit_blocks(rays, out),
+        // SAFETY: the CPU supports AVX2 (is_available, asserted above).
+        #[cfg(target_arch = "x86_64")]
+        Build::Avx2 => unsafe { transmit_blocks_avx2(rays, out) },
+        // SAFETY: the CPU supports these AVX-512 subsets (is_available, asserted above).
+        #[cfg(target_arch = "x86_64")]
+        Build::Avx512 => unsafe { transmit_blocks_avx512(rays, out) },
+        #[cfg(not(target_arch = "x86_64"))]
+        Build::Avx2 | Build::Avx512 => unreachable!("no x86-64 build is available here"),
+    }
 }
 
 #[cfg(test)]
@@ -227,5 +410,116 @@ mod tests {
         assert_eq!(out.get(1), None);
         assert_eq!(out.get(3), None);
         assert_eq!(out.get(4), Some(Vec3::X));
+    }
+
+    /// A point of the unit sphere from two numbers in [0, 1).
+    fn sphere(u: f64, v: f64) -> glam::DVec3 {
+        let z = 2.0 * u - 1.0;
+        let r = (1.0 - z * z).sqrt();
+        let phi = std::f64::consts::TAU * v;
+        glam::DVec3::new(r * phi.cos(), r * phi.sin(), z)
+    }
+
+    /// Rays of every kind, normals on both sides, from a low-discrepancy sequence: any angle,
+    /// within 1e-9 of normal incidence, grazing, μ from 1e-12 to 1e12 and exactly 1, TIR; the
+    /// count leaves the last block part-filled.
+    fn awkward<S: Real>() -> RayBatch<S> {
+        let frac = |x: f64| x - x.floor();
+        let to_s =
+            |v: glam::DVec3| S::Vec3::new(S::from_f64(v.x), S::from_f64(v.y), S::from_f64(v.z));
+        let mut rays = RayBatch::new();
+        for i in 0..(250 * LANES + 7) {
+            let x = i as f64;
+            let n = sphere(frac(x * 0.618_034), frac(x * 0.754_878));
+            let any = sphere(frac(x * 0.569_840), frac(x * 0.438_110));
+            let d = match i % 4 {
+                0 => (-n + any * 1e-9).normalize(),
+                1 => (any - n * any.dot(n) + n * 1e-9).normalize(),
+                _ => any,
+            };
+            let mu = if i % 7 == 0 {
+                1.0
+            } else {
+                10f64.powf(24.0 * frac(x * 0.381_966) - 12.0)
+            };
+            rays.push(to_s(d), to_s(n), S::from_f64(mu));
+        }
+        rays
+    }
+
+    fn bits<S: Real>(t: Option<S::Vec3>) -> Option<[u64; 3]> {
+        t.map(|t| t.to_array().map(|c| c.to_f64().to_bits()))
+    }
+
+    fn every_build_equals_transmit<S: Real>() {
+        let rays = awkward::<S>();
+        let builds = Build::ALL.into_iter().filter(|b| b.is_available());
+        for build in builds {
+            let name = build.name();
+            let mut out = Transmissions::for_batch(&rays);
+            transmit_batch_with(build, &rays, &mut out);
+            for i in 0..rays.len() {
+                let (d, n, mu) = rays.get(i);
+                let scalar = transmit(d, n, mu);
+                assert_eq!(
+                    bits::<S>(out.get(i)),
+                    bits::<S>(scalar),
+                    "{name} {} ray {i}",
+                    S::NAME
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn every_build_of_the_loop_equals_the_scalar_kernel_bit_for_bit() {
+        every_build_equals_transmit::<f32>();
+        every_build_equals_transmit::<f64>();
+    }
+
+    #[test]
+    fn rays_fill_blocks_lane_by_lane_and_read_back_as_pushed() {
+        let mut rays = RayBatch::<f64>::new();
+        for i in 0..(2 * LANES + 3) {
+            let x = i as f64;
+            rays.push(glam::DVec3::new(x, -1.0, 0.5), glam::DVec3::Z, 1.0 + x);
+        }
+        assert_eq!((rays.len(), rays.blocks().len()), (2 * LANES + 3, 3));
+        assert_eq!(rays.blocks()[1].d[0][2], (LANES + 2) as f64);
+        assert_eq!(rays.blocks()[2], {
+            let mut last = RayBlock::padding();
+            for j in 0..3 {
+                last.d[0][j] = (2 * LANES + j) as f64;
+                last.d[1][j] = -1.0;
+                last.d[2][j] = 0.5;
+                last.n[1][j] = 0.0;
+                last.n[2][j] = 1.0;
+                last.mu[j] = (2 * LANES + j + 1) as f64;
+            }
+            last
+        });
+        let (d, n, mu) = rays.get(LANES + 5);
+        assert_eq!(d, glam::DVec3::new((LANES + 5) as f64, -1.0, 0.5));
+        assert_eq!((n, mu), (glam::DVec3::Z, (LANES + 6) as f64));
+    }
+
+    #[test]
+    fn results_set_one_by_one_read_back() {
+        let mut out = Transmissions::<f32>::zeroed(LANES + 1);
+        out.set(LANES, Some(Vec3::X));
+        out.set(3, None);
+        assert_eq!(out.get(LANES), Some(Vec3::X));
+        assert_eq!(out.get(3), None);
+        assert_eq!(out.get(0), Some(Vec3::ZERO));
+    }
+
+    #[test]
+    #[should_panic(expected = "ray 3 of a batch of 3")]
+    fn a_ray_past_the_end_is_refused_though_its_lane_exists() {
+        let mut rays = RayBatch::<f32>::new();
+        for _ in 0..3 {
+            rays.push(Vec3::NEG_Y, Vec3::Y, 1.5);
+        }
+        assert!(rays.get(3).2 > 0.0, "not reached");
     }
 }

@@ -7,7 +7,7 @@
 //! - equal or near-equal indices at grazing incidence: 1 − cos²θi is fine, but μ² − 1 and
 //!   μ²cos²θi cancel. Here k = (μ·cosθi)² + (1 − μ)(1 + μ), where 1 − μ is exact (Sterbenz);
 //! - large μ near normal incidence: 1 − cos²θi loses all its digits and μ² amplifies the loss.
-//!   When cos²θi > ½, sin²θi comes from the tangential part |d + cosθi·n|² instead, and
+//!   When cos²θi > ½, sin²θi comes from the tangential part n × (d × n) instead, and
 //!   k = 1 − μ²·sin²θi.
 //!
 //! T itself is built as μ·(d + cosθi·n) − cosθt·n, the same vector as the source's μ·d + b·n
@@ -61,41 +61,40 @@ pub(crate) fn cos_incidence<S: Real>(d: S::Vec3, n: S::Vec3) -> S {
     (-d.dot(n)).min(S::ONE)
 }
 
-/// The part of `d` along the surface, d + cosθi·n (of length sinθi), from which T =
-/// μ·(d + cosθi·n) − cosθt·n is built. Large μ multiplies its errors, so it is made orthogonal
-/// to `n` once more: after d + cosθi·n its component along `n` is a few ε (the rounding of
-/// cosθi), after the second projection a few ε·sinθi, which μ·sinθi ≤ 1 keeps below a few ε
-/// in T. Its error along the surface (a few ε) is the problem's own: κ grows like μ.
+/// The part of `d` along the surface, n × (d × n) = d + cosθi·n for unit `n` (of length
+/// sinθi), from which T = μ·(d + cosθi·n) − cosθt·n is built. Large μ multiplies its errors
+/// along `n`: as a double cross product its component along `n` is a rounding of its own length
+/// (a few ε·sinθi), which μ·sinθi ≤ 1 keeps below a few ε in T, where d + cosθi·n leaves a few
+/// ε (the rounding of cosθi) that μ would multiply. Its error along the surface (a few ε) is
+/// the problem's own: κ grows like μ. It needs neither cosθi nor the side `n` is on (`−n` gives
+/// the same bits), so the processor starts on it at once: it is on the longest chain of
+/// operations in the batch kernel's lane, which bounds how fast that runs.
 #[inline(always)]
-pub(crate) fn tangential<S: Real>(d: S::Vec3, n: S::Vec3, cos_i: S) -> S::Vec3 {
-    let along = d + n * cos_i;
-    along - n * along.dot(n)
+pub(crate) fn tangential<S: Real>(d: S::Vec3, n: S::Vec3) -> S::Vec3 {
+    n.cross(d.cross(n))
 }
 
-/// k = 1 − μ²(1 − cos²θi) without cancellation: near normal incidence from μ²|d + cosθi·n|²
-/// (the same tangential part T is built from, so that |T|² = μ²|d + cosθi·n|² + k = 1 up to a
-/// few roundings however large μ is), otherwise from (μ·cosθi)² + (1 − μ)(1 + μ). Shared with
-/// the batch kernel so both round alike.
+/// k = 1 − μ²(1 − cos²θi) without cancellation, from `scaled` = μ·(the tangential part) and
+/// `cos_i` = ±cosθi (only its square is used, and it need not be clamped to 1 either): near
+/// normal incidence 1 − |scaled|², so that |T|² = |scaled|² + k = 1 up to a few roundings
+/// however large μ is (sin²θi from d × n alone would not do: its component along `n`, a few ε
+/// whatever sinθi, is not in the tangential part, and μ² multiplies its square); otherwise
+/// (μ·cosθi)² + (1 − μ)(1 + μ). Shared with the batch kernel so both round alike.
 #[inline(always)]
-pub(crate) fn discriminant<S: Real>(along: S::Vec3, cos_i: S, mu: S, one_minus_mu2: S) -> S {
+pub(crate) fn discriminant<S: Real>(scaled: S::Vec3, cos_i: S, mu: S, one_minus_mu2: S) -> S {
     if cos_i * cos_i > S::HALF {
-        S::ONE - mu * mu * along.length_squared()
+        S::ONE - scaled.length_squared()
     } else {
         let mc = mu * cos_i;
         mc * mc + one_minus_mu2
     }
 }
 
-/// T = μ·(d + cosθi·n) − cosθt·n from the tangential part: unit length up to a few roundings
-/// for every accepted μ.
+/// T = μ·(d + cosθi·n) − cosθt·n from `scaled` = μ·(the tangential part): unit length up to a
+/// few roundings for every accepted μ.
 #[inline(always)]
-pub(crate) fn transmitted_direction<S: Real>(
-    along: S::Vec3,
-    n: S::Vec3,
-    mu: S,
-    cos_t: S,
-) -> S::Vec3 {
-    along * mu - n * cos_t
+pub(crate) fn transmitted_direction<S: Real>(scaled: S::Vec3, n: S::Vec3, cos_t: S) -> S::Vec3 {
+    scaled - n * cos_t
 }
 
 /// b = μ·cosθi − cosθt in its cancellation-free form −(1 − μ²)/(μ·cosθi + cosθt).
@@ -124,12 +123,12 @@ pub fn refract_facing<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Facing<S> {
         };
     }
     let one_minus_mu2 = (S::ONE - mu) * (S::ONE + mu);
-    let along = tangential::<S>(d, n, cos_i);
-    let k = discriminant(along, cos_i, mu, one_minus_mu2);
+    let scaled = tangential::<S>(d, n) * mu;
+    let k = discriminant(scaled, cos_i, mu, one_minus_mu2);
     let transmitted = (k >= S::ZERO).then(|| {
         let cos_t = k.sqrt();
         Transmitted {
-            t: transmitted_direction(along, n, mu, cos_t),
+            t: transmitted_direction(scaled, n, cos_t),
             cos_t,
             b: normal_weight(mu, cos_i, cos_t, one_minus_mu2),
         }
@@ -144,12 +143,62 @@ pub fn refract_facing<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Facing<S> {
 /// The refracted direction of travel for a unit travel direction `d` and a unit normal `n` on
 /// either side of the surface, or `None` on total internal reflection: the fast path of the
 /// default kernel, with the error bound of this module. μ as in [`refract_facing`].
+///
+/// Its T is [`refract_facing`]'s for the normal turned to face `d`, bit for bit, without turning
+/// the normal (see [`Unturned`]).
 #[inline]
 #[must_use]
 pub fn transmit<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Option<S::Vec3> {
-    refract_facing(d, facing::<S>(d, n), mu)
-        .transmitted
-        .map(|t| t.t)
+    if mu == S::ONE {
+        return Some(d);
+    }
+    let unturned = Unturned::new(d, n, mu);
+    (unturned.k >= S::ZERO).then(|| unturned.direction(unturned.k.sqrt()))
+}
+
+/// The pieces of T for a normal on either side, computed without turning it to face the ray:
+/// every quantity is the one [`refract_facing`] computes for the turned normal n′ = ±n, to the
+/// bit, because negation is exact. With dn = d·n (d·n′ = −|dn|):
+/// - cosθi = min(|dn|, 1), but the discriminant only uses cos²θi (to choose its branch) and
+///   (μ·cosθi)² where cos²θi ≤ ½, both the same bits for dn itself, so dn is passed as is;
+/// - the tangential part n′ × (d × n′) = n × (d × n);
+/// - cosθt·n′ = n·s with s = cosθt when n faces d (dn ≤ 0, n′ = n) and −cosθt otherwise.
+///
+/// This saves the turned normal's three selects and the second dot product that finding
+/// cosθi from it takes, and shortens the chain of operations each ray waits on.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Unturned<S: Real> {
+    /// μ·(the tangential part).
+    scaled: S::Vec3,
+    n: S::Vec3,
+    /// The discriminant, as [`refract_facing`] finds it.
+    pub(crate) k: S,
+    /// Whether `n` points along the travel direction (dn > 0): the turned normal is −n.
+    away: bool,
+}
+
+impl<S: Real> Unturned<S> {
+    /// The pieces for unit `d` and `n` (either side) and μ ≠ 1 as accepted by
+    /// [`refract_facing`].
+    #[inline(always)]
+    pub(crate) fn new(d: S::Vec3, n: S::Vec3, mu: S) -> Self {
+        let dn = d.dot(n);
+        let scaled = tangential::<S>(d, n) * mu;
+        let one_minus_mu2 = (S::ONE - mu) * (S::ONE + mu);
+        Self {
+            scaled,
+            n,
+            k: discriminant(scaled, dn, mu, one_minus_mu2),
+            away: dn > S::ZERO,
+        }
+    }
+
+    /// T = μ·(d + cosθi·n′) − cosθt·n′ for cosθt = `cos_t` (√k).
+    #[inline(always)]
+    pub(crate) fn direction(&self, cos_t: S) -> S::Vec3 {
+        let signed = if self.away { -cos_t } else { cos_t };
+        transmitted_direction(self.scaled, self.n, signed)
+    }
 }
 
 /// `n` or `−n`, whichever faces the travel direction `d` (d·n ≤ 0).

@@ -3,7 +3,8 @@
 
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
-use refraction_kernel::{Convention, Incidence, Real, Refraction, Vector3, refract};
+use proptest::test_runner::TestCaseError;
+use refraction_kernel::{Convention, Incidence, Real, Refraction, Vector3, refract, stable};
 
 fn solve<S: Real>(w: S::Vec3, n: S::Vec3, mu_i: S, mu_t: S) -> Refraction<S> {
     refract(&Incidence {
@@ -75,8 +76,46 @@ fn unit_or_tir<S: Real>(w: DVec3, n: DVec3, mu: f64, inverse: bool) {
     }
 }
 
+/// The bits of T's components (widened exactly), so that −0 and +0 differ.
+fn bits<S: Real>(t: Option<S::Vec3>) -> Option<[u64; 3]> {
+    t.map(|t| t.to_array().map(|c| c.to_f64().to_bits()))
+}
+
+/// `stable::transmit`, which never turns the normal round, returns the full answer's T for the
+/// turned normal bit for bit: the batch kernel equals `transmit`, so all three agree.
+fn transmit_is_the_full_answer<S: Real>(
+    d: DVec3,
+    n: DVec3,
+    mu: f64,
+    inverse: bool,
+) -> Result<(), TestCaseError> {
+    let to_s = |v: DVec3| S::Vec3::new(S::from_f64(v.x), S::from_f64(v.y), S::from_f64(v.z));
+    let (d, n) = (to_s(d), to_s(n));
+    let mu = S::from_f64(if inverse { 1.0 / mu } else { mu });
+    let facing = if d.dot(n) > S::ZERO { -n } else { n };
+    let full = stable::refract_facing(d, facing, mu)
+        .transmitted
+        .map(|t| t.t);
+    prop_assert_eq!(bits::<S>(stable::transmit(d, n, mu)), bits::<S>(full));
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(512))]
+
+    #[test]
+    fn transmit_equals_the_full_answer_bit_for_bit(
+        n in unit_vector(), off in unit_vector(), spread_exp in -20.0..1.0_f64,
+        mu_exp in -1.0..31.0_f64, inverse in any::<bool>(), far in any::<bool>(),
+    ) {
+        // spread 10: any angle, the normal on the ray's side or not (`far`).
+        let d = near_normal(n, off, 10f64.powf(spread_exp));
+        let n = if far { -n } else { n };
+        let mu = 10f64.powf(mu_exp);
+        transmit_is_the_full_answer::<f64>(d, n, mu, inverse)?;
+        transmit_is_the_full_answer::<f32>(d, n, mu.min(1e13), inverse)?;
+        transmit_is_the_full_answer::<f32>(d, n, 1.0, inverse)?;
+    }
 
     #[test]
     fn every_accepted_ratio_gives_a_unit_t_in_f64(
