@@ -148,7 +148,7 @@ mod tests {
         );
         assert!(
             rust.contains(
-                "let expected = glam::DVec3::new(0.39999999999999997, -0.9165151389911679, 0.0)"
+                "let expected = glam::DVec3::new(0.39999999999999997, -0.9165151389911681, 0.0)"
             ),
             "{rust}"
         );
