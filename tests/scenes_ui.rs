@@ -182,7 +182,7 @@ fn a_huge_trace_runs_in_the_background_with_progress_and_cancel() {
         explorer.scenes().tracing().is_some(),
         "traced in the background"
     );
-    let mut h = harness(explorer);
+    let mut h = harness_for(explorer);
     assert!(
         h.state().scenes().trace().segments.is_empty(),
         "nothing finished yet"
@@ -205,7 +205,7 @@ fn a_runaway_droplet_stops_at_what_the_screen_can_show_and_says_so() {
     let scene = Scene::load(path).unwrap_or_else(|e| panic!("{e}"));
     let mut explorer = Explorer::new(ExplorerState::default());
     explorer.open_scene(scene);
-    let mut h = harness(explorer);
+    let mut h = harness_for(explorer);
     until_traced(&mut h);
     let trace = h.state().scenes().trace();
     assert_eq!(trace.segments.len(), 200_000);

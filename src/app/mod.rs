@@ -11,6 +11,7 @@ mod canvas;
 mod check_panel;
 mod controls;
 mod files_panel;
+mod fonts;
 pub mod history;
 mod paint;
 pub mod panels;
@@ -22,6 +23,8 @@ pub mod snippets;
 mod tools;
 mod typed;
 pub mod walkthrough;
+
+pub use fonts::install as install_fonts;
 
 use egui::{Panel, RichText, ScrollArea, Ui};
 
@@ -388,6 +391,7 @@ pub fn run(launch: Launch) -> Result<(), eframe::Error> {
         TITLE,
         options,
         Box::new(move |cc| {
+            install_fonts(&cc.egui_ctx);
             cc.egui_ctx.set_theme(egui::Theme::Light);
             let saved = |key: &str| cc.storage.and_then(|s| s.get_string(key));
             Ok(Box::new(Explorer::launched(launch, saved)))

@@ -93,6 +93,84 @@ fn quadratic(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
 /// table off.
 const TABLE_WIDTH_IN_LINES: f32 = 30.0;
 
+/// The names of the four checks, in the order of [`passes`].
+const CHECKS: [&str; 4] = ["|T|=1", "eq.10", "side", "bend"];
+
+/// Whether `row` passes each of [`CHECKS`].
+fn passes(row: &CandidateRow) -> [bool; 4] {
+    [
+        row.unit,
+        row.squared_snell,
+        row.correct_side,
+        row.tangential,
+    ]
+}
+
+/// The candidate's role, strong in T's colour for the chosen one, its rule on hover.
+fn role_label(ui: &mut Ui, row: &CandidateRow, palette: &Palette) {
+    let role = RichText::new(row.role);
+    let role = if row.rule.is_none() {
+        role.strong().color(color(palette.t))
+    } else {
+        role
+    };
+    let response = ui.label(role);
+    if let Some(rule) = row.rule {
+        response.on_hover_text(rule);
+    }
+}
+
+/// A mark per check, each followed by its name when `named`.
+fn marks(ui: &mut Ui, row: &CandidateRow, palette: &Palette, named: bool) {
+    for (passed, name) in passes(row).into_iter().zip(CHECKS) {
+        let ink = if passed { palette.n } else { palette.alarm };
+        ui.label(RichText::new(mark(passed)).color(color(ink)));
+        if named {
+            ui.label(name);
+        }
+    }
+}
+
+/// The candidates as a table: one row each, a column per coefficient and check.
+fn candidate_table(ui: &mut Ui, rows: &[CandidateRow], palette: &Palette) {
+    Grid::new("candidates")
+        .striped(true)
+        .spacing([6.0, 3.0])
+        .show(ui, |ui| {
+            for heading in ["candidate", "a", "b", "T"].into_iter().chain(CHECKS) {
+                ui.label(RichText::new(heading).strong());
+            }
+            ui.end_row();
+            for row in rows {
+                role_label(ui, row, palette);
+                ui.label(number(row.a, 3));
+                ui.label(number(row.b, 3));
+                ui.label(RichText::new(vector(row.t, 2)).monospace());
+                marks(ui, row, palette, false);
+                ui.end_row();
+            }
+        });
+}
+
+/// The candidates as short blocks, for a panel too narrow for the table.
+fn candidate_blocks(ui: &mut Ui, rows: &[CandidateRow], palette: &Palette) {
+    for row in rows {
+        ui.horizontal_wrapped(|ui| {
+            role_label(ui, row, palette);
+            marks(ui, row, palette, true);
+        });
+        ui.label(
+            RichText::new(format!(
+                "a = {}  b = {}  T = {}",
+                number(row.a, 3),
+                number(row.b, 3),
+                vector(row.t, 2)
+            ))
+            .monospace(),
+        );
+    }
+}
+
 /// The four candidates with their checks.
 fn candidates(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     let rows = rows(r);
@@ -104,71 +182,10 @@ fn candidates(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
         return;
     }
     let line = ui.text_style_height(&egui::TextStyle::Body);
-    let as_table = ui.available_width() >= line * TABLE_WIDTH_IN_LINES;
-    let checks = ["|T|=1", "eq.10", "side", "bend"];
-    let role_text = |row: &CandidateRow| {
-        let role = RichText::new(row.role);
-        if row.rule.is_none() {
-            role.strong().color(color(palette.t))
-        } else {
-            role
-        }
-    };
-    let marks = |ui: &mut Ui, row: &CandidateRow, named: bool| {
-        let passed = [
-            row.unit,
-            row.squared_snell,
-            row.correct_side,
-            row.tangential,
-        ];
-        for (passed, name) in passed.into_iter().zip(checks) {
-            let ink = if passed { palette.n } else { palette.alarm };
-            ui.label(RichText::new(mark(passed)).color(color(ink)));
-            if named {
-                ui.label(name);
-            }
-        }
-    };
-    if as_table {
-        Grid::new("candidates")
-            .striped(true)
-            .spacing([6.0, 3.0])
-            .show(ui, |ui| {
-                for heading in ["candidate", "a", "b", "T"].into_iter().chain(checks) {
-                    ui.label(RichText::new(heading).strong());
-                }
-                ui.end_row();
-                for row in &rows {
-                    let response = ui.label(role_text(row));
-                    if let Some(rule) = row.rule {
-                        response.on_hover_text(rule);
-                    }
-                    ui.label(number(row.a, 3));
-                    ui.label(number(row.b, 3));
-                    ui.label(RichText::new(vector(row.t, 2)).monospace());
-                    marks(ui, row, false);
-                    ui.end_row();
-                }
-            });
+    if ui.available_width() >= line * TABLE_WIDTH_IN_LINES {
+        candidate_table(ui, &rows, palette);
     } else {
-        for row in &rows {
-            ui.horizontal_wrapped(|ui| {
-                let response = ui.label(role_text(row));
-                if let Some(rule) = row.rule {
-                    response.on_hover_text(rule);
-                }
-                marks(ui, row, true);
-            });
-            ui.label(
-                RichText::new(format!(
-                    "a = {}  b = {}  T = {}",
-                    number(row.a, 3),
-                    number(row.b, 3),
-                    vector(row.t, 2)
-                ))
-                .monospace(),
-            );
-        }
+        candidate_blocks(ui, &rows, palette);
     }
     ui.label(
         "All four are unit length and satisfy squared Snell (eq. 10): squaring cannot tell \

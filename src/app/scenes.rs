@@ -4,8 +4,8 @@
 
 use egui::emath::RectTransform;
 use egui::{
-    CentralPanel, ComboBox, CursorIcon, Painter, Panel, Pos2, ProgressBar, Rect, Response, RichText, Role, Sense,
-    Slider, SliderClamping, TextEdit, Ui, WidgetInfo,
+    CentralPanel, ComboBox, CursorIcon, Painter, Panel, Pos2, ProgressBar, Rect, Response,
+    RichText, Role, Sense, Slider, SliderClamping, TextEdit, Ui, WidgetInfo,
 };
 use std::path::PathBuf;
 use std::time::Duration;

@@ -14,6 +14,7 @@ use refraction_explorer::app::Explorer;
 /// The window showing `explorer`, 1280 × 760 points in the light theme, after its first frame.
 pub fn harness_for(explorer: Explorer) -> Harness<'static, Explorer> {
     let mut harness = Harness::builder()
+        .with_context_setup(refraction_explorer::app::install_fonts)
         .with_size(Vec2::new(1280.0, 760.0))
         .with_theme(egui::Theme::Light)
         .build_ui_state(|ui, app: &mut Explorer| app.show(ui), explorer);

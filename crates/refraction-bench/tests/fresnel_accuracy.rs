@@ -29,8 +29,10 @@ const OWN_BOUND: f64 = 6.0;
 /// The end-to-end bound, in ε, is this plus [`SENSITIVITY_FACTOR`]·κ_F.
 const END_TO_END_BOUND: f64 = 4.0;
 /// How many ε of input error the kernel's μ and cosines carry, at most (the kernel's own
-/// accuracy test bounds them).
-const SENSITIVITY_FACTOR: f64 = 4.0;
+/// accuracy test bounds them). The worst seen is 4.4ε, in f32 just inside the critical angle at
+/// μ = 1e6, where the tangential part of W (n×(d×n), shared with the batch lane) carries the
+/// rounding of the two cross products.
+const SENSITIVITY_FACTOR: f64 = 5.0;
 
 /// Index pairs whose Brewster's angle is probed, from either side.
 const PAIRS: [(f64, f64); 5] = [

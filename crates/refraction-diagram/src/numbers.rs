@@ -38,7 +38,11 @@ pub fn significant(x: f64, digits: usize) -> String {
         decimals -= 1;
     }
     let text = number(x, decimals);
-    let exact = format!("{x:.decimals$}").parse::<f64>() == Ok(x);
+    // A value within a few ulps of its rounded text (40 reached by turning 50° by 10°) is that
+    // value: its trailing zeros would only claim digits it does not have.
+    let exact = format!("{x:.decimals$}")
+        .parse::<f64>()
+        .is_ok_and(|r| (r - x).abs() <= 4.0 * f64::EPSILON * x.abs());
     if exact && text.contains('.') {
         text.trim_end_matches('0').trim_end_matches('.').to_owned()
     } else {

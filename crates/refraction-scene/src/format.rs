@@ -589,11 +589,15 @@ fn effects(spec: &Spanned<EffectsSpec>) -> Result<Effects, Invalid> {
     // Each limit checked on its own, so that the message points at its value.
     if let Some(depth) = &e.max_depth {
         effects.max_depth = *depth.get_ref();
-        effects.check().or_else(|m| invalid(depth.span(), m))?;
+        effects
+            .check()
+            .or_else(|m| invalid(depth.span(), m.to_string()))?;
     }
     if let Some(min) = &e.min_intensity {
         effects.min_intensity = *min.get_ref();
-        effects.check().or_else(|m| invalid(min.span(), m))?;
+        effects
+            .check()
+            .or_else(|m| invalid(min.span(), m.to_string()))?;
     }
     Ok(effects)
 }

@@ -10,8 +10,8 @@
 //! The file format is described in the repository README (section *The file format*).
 
 mod bounds;
-mod capped;
 mod bvh;
+mod capped;
 mod effects;
 mod embedded;
 mod format;
@@ -28,8 +28,8 @@ mod write;
 use glam::DVec2;
 
 pub use bounds::Bounds;
-pub use effects::{Effects, EffectsError};
 pub use capped::{MAX_SCENE_FILE_BYTES, read_capped, read_capped_bytes};
+pub use effects::{Effects, EffectsError};
 pub use embedded::{DEFAULT_SCENE, SceneInfo, catalogue};
 pub use format::{LoadError, MAX_COORDINATE, MAX_POINTS, MAX_SHAPES, MIN_SIZE, Position};
 pub use fresnel::Fresnel;
@@ -68,9 +68,7 @@ pub enum EditError {
     #[error("every coordinate must be a finite number")]
     NotFinite,
     /// A coordinate would lie beyond ±[`MAX_COORDINATE`].
-    #[error(
-        "every coordinate must lie within ±{MAX_COORDINATE} (the range a scene file may use)"
-    )]
+    #[error("every coordinate must lie within ±{MAX_COORDINATE} (the range a scene file may use)")]
     OutOfRange,
     /// A direction is the zero vector.
     #[error("a direction must not be the zero vector")]

@@ -143,7 +143,7 @@ impl Record {
     /// Malformed JSON (with its column), not an object, or an ill-typed field.
     pub fn from_json_line(api: Api, line: &str) -> Result<Self, String> {
         let value: Json =
-            serde_json::from_str(line).map_err(|e| crate::lines::solve::json_error(&e))?;
+            serde_json::from_str(line).map_err(|e| crate::lines::fields::json_error(&e))?;
         let object = value.as_object().ok_or_else(|| {
             format!(
                 "expected a JSON object with the fields {}",
