@@ -160,25 +160,9 @@ enum Command {
         #[arg(long)]
         list: bool,
     },
-    /// Draw the explorer's diagram, or a traced scene, into a PNG file, without a window.
-    Render {
-        /// A scene to trace and draw instead of the single interface: a built-in scene's name
-        /// (see `trace --list`) or the path of a scene file (TOML).
-        scene: Option<String>,
-        /// The PNG file to write (replaced atomically), or - for standard output.
-        #[arg(long, value_name = "FILE.png")]
-        out: PathBuf,
-        /// Width in pixels.
-        #[arg(long, default_value_t = refraction_render::DEFAULT_SIZE.0)]
-        width: u32,
-        /// Height in pixels.
-        #[arg(long, default_value_t = refraction_render::DEFAULT_SIZE.1)]
-        height: u32,
-        /// The single-interface problem to draw, as JSON with the fields of `solve` (default: 40°
-        /// from air into glass); not with SCENE.
-        #[arg(long, value_name = "FILE.json")]
-        state: Option<PathBuf>,
-    },
+    /// Draw the explorer's diagram, or a traced scene, into a PNG or SVG file, or an animation
+    /// of the diagram into a GIF, without a window.
+    Render(commands::render::RenderArgs),
 }
 
 /// The parsed command line, or the exit status after clap's help, version or usage error was
@@ -197,7 +181,7 @@ fn writes_stdout(command: &Command) -> Option<&'static str> {
         Command::Check { .. } => Some("check"),
         Command::Bench { .. } => Some("bench"),
         Command::Trace { .. } => Some("trace"),
-        Command::Render { .. } => None,
+        Command::Render(_) => None,
     }
 }
 
@@ -244,13 +228,7 @@ fn main() -> ExitCode {
             commands::bench::run(quick, json, plot.as_deref())
         }
         Some(Command::Trace { scene, json, list }) => commands::trace::run(&scene, json, list),
-        Some(Command::Render {
-            scene,
-            out,
-            width,
-            height,
-            state,
-        }) => commands::render::run(scene.as_deref(), &out, width, height, state.as_deref()),
+        Some(Command::Render(args)) => commands::render::run(&args),
         None => commands::render::explorer(&commands::render::Window {
             state: cli.state,
             present: cli.present,

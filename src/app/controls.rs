@@ -1,5 +1,5 @@
 //! The left panel: convention, flipping N, the two indices (slider, typed value, preset), typed
-//! 3D W and N, the critical-angle snap and the PNG export.
+//! 3D W and N, the critical-angle snap and the picture export (PNG or SVG).
 
 use std::path::PathBuf;
 
@@ -201,10 +201,11 @@ impl Controls {
         self.export(ui, state, overlay);
     }
 
-    /// The PNG export: what the screen shows (palette, student's T, highlights) in the fitted
-    /// view, since the screen's pan is in its own pixels.
+    /// The picture export, PNG or SVG by the file's extension: what the screen shows (palette,
+    /// student's T, highlights, the physics switches) in the fitted view, since the screen's
+    /// pan is in its own pixels.
     fn export(&mut self, ui: &mut Ui, state: &ExplorerState, overlay: &Overlay) {
-        ui.heading("Export PNG");
+        ui.heading("Export picture");
         let (low, high) = refraction_render::SIZE_LIMITS;
         ui.horizontal(|ui| {
             let (width, height) = &mut self.export_size;
@@ -216,23 +217,19 @@ impl Controls {
                 .labelled_by(label.id);
         });
         ui.horizontal(|ui| {
-            let label = ui.label("File");
+            let label = ui.label("File (.png or .svg)");
             ui.add(egui::TextEdit::singleline(&mut self.export_path).desired_width(170.0))
                 .labelled_by(label.id);
         });
-        if ui.button("Export PNG").clicked() {
+        if ui.button("Export picture").clicked() {
             let path = PathBuf::from(self.export_path.trim());
             let overlay = Overlay {
                 pan_zoom: PanZoom::default(),
                 ..overlay.clone()
             };
             self.export_status = Some(
-                refraction_render::format::ImageFormat::for_path(&path)
+                refraction_render::export(state, &overlay, self.export_size, &path)
                     .map_err(|e| e.to_string())
-                    .and_then(|_| {
-                        refraction_render::export(state, &overlay, self.export_size, &path)
-                            .map_err(|e| e.to_string())
-                    })
                     .map(|()| format!("wrote {}", path.display())),
             );
         }

@@ -10,11 +10,14 @@ mod accuracy;
 mod canvas;
 mod check_panel;
 mod controls;
+mod export;
 mod files_panel;
 mod fonts;
+mod fresnel_panel;
 pub mod history;
 mod paint;
 pub mod panels;
+pub mod physics;
 pub mod presentation;
 mod readouts;
 mod retrace;
@@ -31,8 +34,10 @@ use egui::{Panel, RichText, ScrollArea, Ui};
 use crate::lines::state_file;
 use accuracy::AccuracyView;
 use controls::Controls;
+use export::AnimationExport;
 use history::{History, Snapshot};
 use panels::{CONTROLS, NUMBERS, Panels};
+use physics::Physics;
 use presentation::Presentation;
 use refraction_diagram::palette::Theme;
 use refraction_diagram::{ExplorerState, Overlay};
@@ -123,6 +128,8 @@ pub struct Explorer {
     tools: Tools,
     scenes: ScenesView,
     panels: Panels,
+    physics: Physics,
+    animation_export: AnimationExport,
     /// What the last undo or redo did, in words.
     travelled: Option<String>,
 }
@@ -145,6 +152,8 @@ impl Explorer {
             presentation: Presentation::default(),
             tools: Tools::default(),
             panels: Panels::default(),
+            physics: Physics::default(),
+            animation_export: AnimationExport::default(),
             travelled: None,
         }
     }
@@ -231,6 +240,8 @@ impl Explorer {
             pan_zoom: self.presentation.pan_zoom,
             student: self.tools.student(&self.state),
             focus: self.tools.focus(&self.state),
+            intensities: self.physics.intensities(),
+            waves: self.physics.waves(),
         }
     }
 
@@ -263,6 +274,7 @@ impl Explorer {
     pub fn show(&mut self, ui: &mut Ui) {
         self.presentation.apply(ui.ctx());
         self.tools.walk.animate(ui.ctx(), &mut self.state);
+        self.physics.animate(ui.ctx());
         Panel::top("views").show(ui, |ui| self.bar(ui));
         match self.view {
             View::Interface => self.show_interface(ui),
@@ -346,16 +358,24 @@ impl Explorer {
         self.panels.keys(ui, presenting);
         // First, so that the tool has the window's full height beside (or width under) the
         // panels.
-        self.tools.panel(ui, &mut self.state, presenting);
+        let palette = self.presentation.palette();
+        self.tools.panel(ui, &mut self.state, presenting, &palette);
         let mut overlay = self.overlay();
         let (state, controls) = (&mut self.state, &mut self.controls);
+        let animation_export = &mut self.animation_export;
         self.panels.show(ui, &CONTROLS, presenting, |ui| {
             controls.show(ui, state, &overlay);
+            ui.separator();
+            animation_export.show(ui, state, &overlay);
         });
         self.panels.show(ui, &NUMBERS, presenting, |ui| {
             readouts::show(ui, state.refraction(), &overlay.palette);
         });
-        egui::CentralPanel::no_frame().show(ui, |ui| canvas::show(ui, state, &mut overlay));
+        let physics = &mut self.physics;
+        egui::CentralPanel::no_frame().show(ui, |ui| {
+            physics.switches(ui);
+            canvas::show(ui, state, &mut overlay);
+        });
         self.presentation.pan_zoom = overlay.pan_zoom;
     }
 }

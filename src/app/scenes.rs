@@ -12,6 +12,7 @@ use std::time::Duration;
 
 use glam::{DVec2, Vec2};
 
+use super::export;
 use super::paint::{color, paint};
 use super::retrace::{Retracer, empty};
 use refraction_diagram::numbers::number;
@@ -29,6 +30,9 @@ const MAX_SLIDER_RAYS: usize = 1000;
 
 /// The scene file offered first.
 pub const DEFAULT_SCENE_PATH: &str = "scene.toml";
+
+/// The picture file offered first: SVG, so that a slide can edit the labels.
+pub const DEFAULT_PICTURE_PATH: &str = "scene.svg";
 
 /// The Scenes view's state: the scene as edited, its trace, and what the canvas remembers
 /// between frames.
@@ -53,6 +57,8 @@ pub struct ScenesView {
     path: String,
     /// What the last save or open said.
     file_status: Option<Result<String, String>>,
+    /// The picture file to export to (PNG or SVG by its extension).
+    picture_path: String,
 }
 
 impl Default for ScenesView {
@@ -104,6 +110,7 @@ impl ScenesView {
             drawn: None,
             path: DEFAULT_SCENE_PATH.to_owned(),
             file_status: None,
+            picture_path: DEFAULT_PICTURE_PATH.to_owned(),
         }
     }
 
@@ -261,6 +268,7 @@ impl ScenesView {
             {
                 self.save();
             }
+            ui.menu_button("Export picture", |ui| self.export_picture(ui));
             match &self.file_status {
                 Some(Ok(done)) => {
                     ui.label(done);
@@ -281,6 +289,19 @@ impl ScenesView {
         );
         if let Some(error) = &self.error {
             ui.label(RichText::new(format!("⚠ {error}")).color(color(palette::ALARM)));
+        }
+    }
+
+    /// The picture export's menu: the file (PNG or SVG by its extension) and *Export*.
+    fn export_picture(&mut self, ui: &mut Ui) {
+        let field = TextEdit::singleline(&mut self.picture_path).desired_width(220.0);
+        ui.add(field)
+            .labelled_by(ui.label("Picture file (.png or .svg)").id);
+        let (width, height) = refraction_render::DEFAULT_SIZE;
+        let text = format!("Export {width}×{height}");
+        if ui.button(text).clicked() {
+            let size = (width, height);
+            self.file_status = Some(export::scene_picture(&self.scene, size, &self.picture_path));
         }
     }
 

@@ -1,12 +1,14 @@
-//! The classroom tools under the diagram, one at a time: check my T, the walk-through, and
-//! save / open / share. Their switches sit in the top bar.
+//! The classroom tools under the diagram, one at a time: check my T, the walk-through,
+//! save / open / share, and the Fresnel plot. Their switches sit in the top bar.
 
 use egui::{Panel, ScrollArea, Ui};
 
 use super::check_panel::CheckPanel;
 use super::files_panel::FilesPanel;
+use super::fresnel_panel;
 use super::walkthrough::WalkThrough;
 use refraction_diagram::overlay::StudentRay;
+use refraction_diagram::palette::Palette;
 use refraction_diagram::{ExplorerState, Focus};
 
 /// The most of the window's width a tool takes in presentation.
@@ -21,11 +23,13 @@ pub enum Tool {
     WalkThrough,
     /// Save, open, share and copy.
     Files,
+    /// Reflectance and transmittance against θi, with the cursor at the diagram's θi.
+    Fresnel,
 }
 
 impl Tool {
     /// Every tool, in the order of the bar.
-    pub const ALL: [Self; 3] = [Self::Check, Self::WalkThrough, Self::Files];
+    pub const ALL: [Self; 4] = [Self::Check, Self::WalkThrough, Self::Files, Self::Fresnel];
 
     /// The switch's label (also its accessible name).
     #[must_use]
@@ -34,6 +38,7 @@ impl Tool {
             Self::Check => "✔ Check my T",
             Self::WalkThrough => "📖 Walk-through",
             Self::Files => "💾 Save, open, share",
+            Self::Fresnel => "Fresnel: R and T",
         }
     }
 
@@ -43,6 +48,7 @@ impl Tool {
             Self::Check => 170.0,
             Self::WalkThrough => 140.0,
             Self::Files => 150.0,
+            Self::Fresnel => 330.0,
         }
     }
 }
@@ -74,7 +80,13 @@ impl Tools {
     /// The open tool in a panel: under the diagram at the desk; beside it in presentation,
     /// where the window is wide for its height and a strip across the bottom would squeeze
     /// the diagram into a letterbox.
-    pub fn panel(&mut self, ui: &mut Ui, state: &mut ExplorerState, presenting: bool) {
+    pub fn panel(
+        &mut self,
+        ui: &mut Ui,
+        state: &mut ExplorerState,
+        presenting: bool,
+        palette: &Palette,
+    ) {
         let Some(tool) = self.open else {
             return;
         };
@@ -101,6 +113,7 @@ impl Tools {
                 Tool::Check => self.check.show(ui, state),
                 Tool::WalkThrough => self.walk.show(ui, state),
                 Tool::Files => self.files.show(ui, state),
+                Tool::Fresnel => fresnel_panel::show(ui, state, palette),
             });
         });
     }

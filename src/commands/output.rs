@@ -3,7 +3,7 @@
 
 use std::borrow::Cow;
 use std::fmt::Write as _;
-use std::io::{self, Write};
+use std::io::{self, IsTerminal, Write};
 
 /// Whether `c` would act on a terminal rather than show: a control character (ESC, BEL, a
 /// newline, ...), or a bidirectional override that reorders the text after it.
@@ -73,6 +73,44 @@ pub fn stdout_closed() -> bool {
 #[cfg(not(unix))]
 pub fn stdout_closed() -> bool {
     false
+}
+
+/// A progress line on stderr, `WHAT  42%`, drawn over itself, when stderr is a terminal (a
+/// log file gets no progress noise); the first failed write is kept, stops the line, and is
+/// reported by [`ProgressLine::finish`].
+pub struct ProgressLine {
+    what: &'static str,
+    shown: bool,
+    failed: Option<io::Error>,
+}
+
+impl ProgressLine {
+    /// A progress line for `what` (e.g. `measuring...`), shown if stderr is a terminal.
+    pub fn on_terminal(what: &'static str) -> Self {
+        Self {
+            what,
+            shown: io::stderr().is_terminal(),
+            failed: None,
+        }
+    }
+
+    /// Shows `fraction` (0 to 1) done.
+    pub fn update(&mut self, fraction: f64) {
+        if self.shown && self.failed.is_none() {
+            let mut err = io::stderr().lock();
+            let percent = (fraction * 100.0).clamp(0.0, 100.0);
+            let written = write!(err, "\r{} {percent:3.0}%", self.what).and_then(|()| err.flush());
+            self.failed = written.err();
+        }
+    }
+
+    /// Ends the progress line; the error of a failed write, if any.
+    pub fn finish(mut self) -> Option<io::Error> {
+        if self.shown && self.failed.is_none() {
+            self.failed = to_stderr("").err();
+        }
+        self.failed
+    }
 }
 
 #[cfg(test)]

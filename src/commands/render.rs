@@ -1,18 +1,70 @@
-//! `render` and the default command: the explorer's diagram or a traced scene as a PNG, or the
-//! explorer in a window.
+//! `render` and the default command: the explorer's diagram or a traced scene as a PNG or an
+//! SVG, an animation of the diagram as a GIF, or the explorer in a window.
 
 use std::io::{self, IsTerminal};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use refraction_diagram::animation::Animation;
 use refraction_diagram::palette::Theme;
 use refraction_diagram::{ExplorerState, Overlay};
 use refraction_explorer::app::{self, Launch, View};
 use refraction_explorer::lines::state_file;
+use refraction_render::animation::AnimationSpec;
 use refraction_render::{self as render, atomic, format::ImageFormat};
 use refraction_scene::Scene;
 
+use super::output::ProgressLine;
 use super::{fail, output, output_error};
+
+/// The still formats: what `render` without `--animate` and `bench --plot` write.
+pub const STILL: [ImageFormat; 2] = [ImageFormat::Png, ImageFormat::Svg];
+
+/// What `render` is asked for on the command line.
+#[derive(clap::Args)]
+pub struct RenderArgs {
+    /// A scene to trace and draw instead of the single interface: a built-in scene's name
+    /// (see `trace --list`) or the path of a scene file (TOML).
+    scene: Option<String>,
+    /// The file to write (replaced atomically), or - for standard output (PNG, or GIF with
+    /// --animate). Its extension picks the format: .png or .svg (labels as editable text) for
+    /// a picture, .gif for --animate.
+    #[arg(long, value_name = "FILE.png|FILE.svg|FILE.gif")]
+    out: PathBuf,
+    /// Width in pixels (64 to 8192).
+    #[arg(long, default_value_t = render::DEFAULT_SIZE.0)]
+    width: u32,
+    /// Height in pixels (64 to 8192).
+    #[arg(long, default_value_t = render::DEFAULT_SIZE.1)]
+    height: u32,
+    /// The single-interface problem to draw, as JSON with the fields of `solve` (default: 40°
+    /// from air into glass); not with SCENE.
+    #[arg(long, value_name = "FILE.json")]
+    state: Option<PathBuf>,
+    /// Write an animated GIF of the diagram instead: mu (μt moves to μi, T turns into W),
+    /// sweep (θi from normal incidence to grazing, from the denser medium, so that total
+    /// internal reflection appears) or wavefronts (the fronts moving at c/μ, looping); not
+    /// with SCENE.
+    #[arg(long, value_name = "mu|sweep|wavefronts", value_parser = parse_animation)]
+    animate: Option<Animation>,
+    /// The animation's frames (2 to 600; default 36).
+    #[arg(long, value_name = "N", requires = "animate")]
+    frames: Option<usize>,
+    /// The animation's frames per second (1 to 50; default 12).
+    #[arg(long, value_name = "F", requires = "animate")]
+    fps: Option<u32>,
+}
+
+/// The animation named `name` on the command line.
+fn parse_animation(name: &str) -> Result<Animation, String> {
+    Animation::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = Animation::ALL.iter().map(|a| a.name()).collect();
+        format!(
+            "no animation is called {name:?}: the animations are {}",
+            names.join(", ")
+        )
+    })
+}
 
 /// Where an image goes: a file, written by [`atomic::write_atomically`], or stdout (`-`).
 #[derive(Clone, Copy, Debug)]
@@ -23,16 +75,56 @@ pub enum Destination<'a> {
     Stdout,
 }
 
+/// The format `path` asks for, one of `formats`: by its extension, or the first of `formats`
+/// for a path without one (`-`, `/dev/stdout`).
+///
+/// # Errors
+/// An extension that names no format written, or one not among `formats`, in a sentence
+/// naming the path and what may be written there.
+pub fn format_of(
+    path: &Path,
+    option: &str,
+    formats: &[ImageFormat],
+) -> Result<ImageFormat, String> {
+    let format = match path.extension() {
+        None => formats.first().copied().unwrap_or(ImageFormat::Png),
+        Some(_) => ImageFormat::for_path(path).map_err(|e| e.to_string())?,
+    };
+    if formats.contains(&format) {
+        return Ok(format);
+    }
+    let allowed: Vec<String> = formats
+        .iter()
+        .map(|f| format!(".{}", f.extension()))
+        .collect();
+    let hint = if format == ImageFormat::Gif {
+        " (a GIF is written by render --animate mu|sweep|wavefronts)"
+    } else {
+        ""
+    };
+    Err(format!(
+        "{option} {}: {} is not written here; give a name ending in {}{hint}",
+        path.display(),
+        format.name(),
+        allowed.join(" or ")
+    ))
+}
+
 impl<'a> Destination<'a> {
-    /// Checks `path` as an image destination before any work is done: its extension names a
-    /// format written ([`ImageFormat::for_path`]); a file's folder exists and what is at the
-    /// path can be written ([`atomic::check_writable`]); `-` means stdout where
-    /// `stdout_allowed`, and stdout must then be neither a terminal nor closed.
+    /// Checks `path` as an image destination before any work is done: its format is one of
+    /// `formats` ([`format_of`]); a file's folder exists and what is at the path can be
+    /// written ([`atomic::check_writable`]); `-` means stdout where `stdout_allowed`, and
+    /// stdout must then be neither a terminal nor closed.
     ///
     /// # Errors
     /// What is wrong with the path, in a sentence naming it.
-    pub fn check(path: &'a Path, option: &str, stdout_allowed: bool) -> Result<Self, String> {
-        ImageFormat::for_path(path).map_err(|e| e.to_string())?;
+    pub fn check(
+        path: &'a Path,
+        option: &str,
+        stdout_allowed: bool,
+        formats: &[ImageFormat],
+    ) -> Result<Self, String> {
+        let format = format_of(path, option, formats)?;
         if path != Path::new("-") {
             atomic::check_writable(path).map_err(|e| e.to_string())?;
             return Ok(Self::File(path));
@@ -45,8 +137,10 @@ impl<'a> Destination<'a> {
         }
         if io::stdout().is_terminal() {
             return Err(format!(
-                "{option} - writes PNG bytes to standard output, which is a terminal: redirect it \
-                 (> file.png, | viewer) or give a file name"
+                "{option} - writes {} bytes to standard output, which is a terminal: redirect \
+                 it (> file.{}, | viewer) or give a file name",
+                format.name(),
+                format.extension()
             ));
         }
         if output::stdout_closed() {
@@ -70,15 +164,13 @@ fn initial_state(path: Option<&Path>) -> Result<ExplorerState, String> {
     path.map_or_else(|| Ok(ExplorerState::default()), state_file::load)
 }
 
-/// The PNG of `scene` traced, or else of the state in `state` (or the default). The size is
-/// checked before the scene is traced.
-fn png(
-    scene: Option<&str>,
-    (width, height): (u32, u32),
-    state: Option<&Path>,
-) -> Result<Vec<u8>, String> {
-    render::check_size(width, height).map_err(|e| e.to_string())?;
-    let pixmap = match (scene, state) {
+/// The picture asked for, as the bytes of a `format` file: `scene` traced, or else the state
+/// in `state` (or the default). The size is checked before the scene is traced.
+fn picture(args: &RenderArgs, format: ImageFormat) -> Result<Vec<u8>, String> {
+    let size = (args.width, args.height);
+    render::check_size(size.0, size.1).map_err(|e| e.to_string())?;
+    let out = args.out.as_path();
+    match (&args.scene, &args.state) {
         (Some(scene), Some(state)) => Err(format!(
             "give a SCENE ({scene}) or --state ({}), not both: --state is the single-interface \
              problem, SCENE a traced scene",
@@ -86,25 +178,55 @@ fn png(
         )),
         (Some(scene), None) => Scene::load(scene)
             .map_err(|e| e.to_string())
-            .and_then(|s| render::render_scene(&s, width, height).map_err(|e| e.to_string())),
-        (None, state) => initial_state(state).and_then(|s| {
-            render::render(&s, &Overlay::default(), width, height).map_err(|e| e.to_string())
+            .and_then(|s| render::scene_file(&s, format, size, out).map_err(|e| e.to_string())),
+        (None, state) => initial_state(state.as_deref()).and_then(|s| {
+            render::interface_file(&s, &Overlay::default(), format, size, out)
+                .map_err(|e| e.to_string())
         }),
-    }?;
-    render::encode(&pixmap).map_err(|e| e.to_string())
+    }
 }
 
-/// Draws `scene` traced, or else the state in `state` (or the default), into the PNG `out`
-/// (`-`: stdout). The output path and the size are checked before anything is traced or drawn.
-pub fn run(
-    scene: Option<&str>,
-    out: &Path,
-    width: u32,
-    height: u32,
-    state: Option<&Path>,
-) -> ExitCode {
-    let drawn = Destination::check(out, "--out", true)
-        .and_then(|to| png(scene, (width, height), state).map(|bytes| (to, bytes)));
+/// The animation asked for as GIF bytes, with a progress line on a terminal. The frames, rate
+/// and size are checked before the state file is read.
+fn animation(args: &RenderArgs, animation: Animation) -> Result<Vec<u8>, String> {
+    if let Some(scene) = &args.scene {
+        return Err(format!(
+            "--animate draws the single interface, not a scene ({scene}): give --state or nothing"
+        ));
+    }
+    let mut spec = AnimationSpec::new(animation, (args.width, args.height));
+    spec.frames = args.frames.unwrap_or(spec.frames);
+    spec.fps = args.fps.unwrap_or(spec.fps);
+    spec.check().map_err(|e| e.to_string())?;
+    let start = initial_state(args.state.as_deref())?;
+    let mut progress = ProgressLine::on_terminal("drawing frames...");
+    let drawn = render::animation::gif(&start, &Overlay::default(), &spec, |done, all| {
+        progress.update(done as f64 / all as f64);
+        true
+    });
+    let failed = progress.finish();
+    let bytes = drawn.map_err(|e| e.to_string())?;
+    match failed {
+        Some(e) => Err(format!("cannot write the progress to stderr: {e}")),
+        None => Ok(bytes),
+    }
+}
+
+/// Draws what `args` ask for into `--out` (`-`: stdout): a picture of the single interface or
+/// of a traced scene as PNG or SVG, or with `--animate` an animated GIF. The output path, the
+/// size and the animation's frames and rate are checked before anything is traced or drawn.
+pub fn run(args: &RenderArgs) -> ExitCode {
+    let formats: &[ImageFormat] = match args.animate {
+        Some(_) => &[ImageFormat::Gif],
+        None => &STILL,
+    };
+    let drawn = Destination::check(&args.out, "--out", true, formats).and_then(|to| {
+        let bytes = match args.animate {
+            Some(a) => animation(args, a),
+            None => format_of(&args.out, "--out", formats).and_then(|f| picture(args, f)),
+        };
+        bytes.map(|bytes| (to, bytes))
+    });
     match drawn {
         Ok((to, bytes)) => to.write("render", &bytes),
         Err(message) => fail("render", &message),

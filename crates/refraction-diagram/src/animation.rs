@@ -7,8 +7,8 @@ use glam::{DVec2, Vec2};
 use super::model::{ExplorerState, HandleId};
 use super::overlay::Overlay;
 use super::picture::Diagram;
-use super::shapes::{Figure, Primitive, lower_all};
-use super::wavefronts::{self, WaveOptions};
+use super::shapes::Primitive;
+use super::wavefronts::WaveOptions;
 
 /// The frames an animation has when none are asked for.
 pub const DEFAULT_FRAMES: usize = 36;
@@ -138,28 +138,15 @@ pub struct Frame {
 
 impl Frame {
     /// The frame drawn on a canvas of `size` with `overlay`, back to front: the diagram with
-    /// the wavefronts (if any) over the media and under everything else.
+    /// this frame's wavefronts (if any, else the overlay's) over the media and under
+    /// everything else.
     #[must_use]
     pub fn primitives(&self, size: Vec2, overlay: &Overlay) -> Vec<Primitive> {
-        let diagram = Diagram::with_overlay(&self.state, size, overlay);
-        let Some(options) = self.waves else {
-            return diagram.primitives();
+        let overlay = Overlay {
+            waves: self.waves.or(overlay.waves),
+            ..overlay.clone()
         };
-        let layer = wavefronts::layer(&self.state, &diagram.layout, &overlay.palette, &options);
-        // The background and the two media come first (see `Diagram::with_overlay`).
-        let media_end = diagram
-            .shapes
-            .iter()
-            .take(3)
-            .take_while(|s| matches!(s, Figure::Fill { .. }))
-            .count();
-        let mut shapes = diagram.shapes;
-        let labels = layer.labels.into_iter().map(Figure::Text);
-        let tail = shapes.split_off(media_end);
-        shapes.extend(layer.shapes);
-        shapes.extend(tail);
-        shapes.extend(labels);
-        lower_all(&shapes)
+        Diagram::with_overlay(&self.state, size, &overlay).primitives()
     }
 }
 

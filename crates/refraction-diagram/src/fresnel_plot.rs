@@ -175,8 +175,10 @@ impl PlotFrame {
     }
 }
 
-/// The style of each curve: colour, dash and width, so that they differ without colour too.
-fn curve_strokes(palette: &Palette, text: f32) -> [Stroke; 4] {
+/// The style of each curve, in the order of [`FresnelPlot::curves`], for text `text` pixels
+/// high: colour, dash and width, so that they differ without colour too.
+#[must_use]
+pub fn curve_strokes(palette: &Palette, text: f32) -> [Stroke; 4] {
     let width = (text / 7.0).max(2.0);
     [
         (palette.reflected, Dash::Solid, width),

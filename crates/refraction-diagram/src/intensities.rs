@@ -151,4 +151,73 @@ mod tests {
         );
         assert_eq!(stroke_for(full, f64::NAN), None);
     }
+
+    fn reflected_arrows(diagram: &crate::Diagram, colour: Colour) -> Vec<Stroke> {
+        diagram
+            .shapes
+            .iter()
+            .filter_map(|s| match s {
+                crate::shapes::Figure::Arrow { stroke, .. }
+                    if stroke.colour.r == colour.r
+                        && stroke.colour.g == colour.g
+                        && stroke.colour.b == colour.b =>
+                {
+                    Some(*stroke)
+                }
+                _ => None,
+            })
+            .collect()
+    }
+
+    fn texts(diagram: &crate::Diagram) -> Vec<String> {
+        diagram
+            .shapes
+            .iter()
+            .filter_map(|s| match s {
+                crate::shapes::Figure::Text(l) => Some(l.text.clone()),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_diagram_draws_the_shares_only_when_switched_on_and_p_light_vanishes_at_brewster() {
+        use crate::{Diagram, ExplorerState, Overlay};
+        let mut state = ExplorerState::default();
+        state
+            .set_vectors(DVec3::new(1.5, -1.0, 0.0), DVec3::Y)
+            .unwrap();
+        state.set_mu_i(1.0).unwrap();
+        let size = glam::Vec2::new(1000.0, 700.0);
+        let plain = Diagram::new(&state, size);
+        let colour = Overlay::default().palette.reflected;
+        assert_eq!(reflected_arrows(&plain, colour).len(), 1);
+        assert!(!texts(&plain).iter().any(|t| t.contains('%')));
+        let with = |polarisation| Overlay {
+            intensities: Some(polarisation),
+            ..Overlay::default()
+        };
+        let p = Diagram::with_overlay(&state, size, &with(Polarisation::P));
+        assert!(reflected_arrows(&p, colour).is_empty(), "no reflected ray");
+        let texts_p = texts(&p);
+        assert!(
+            texts_p
+                .iter()
+                .any(|t| t.contains("reflected (p light) 0.0 %")),
+            "{texts_p:?}"
+        );
+        assert!(texts_p.iter().any(|t| t.contains("T: transmitted 100.0 %")));
+        let s = Diagram::with_overlay(&state, size, &with(Polarisation::S));
+        let unpolarised = Diagram::with_overlay(&state, size, &with(Polarisation::Unpolarised));
+        let (rs, ru) = (
+            reflected_arrows(&s, colour)[0],
+            reflected_arrows(&unpolarised, colour)[0],
+        );
+        assert!(rs.width > ru.width && rs.colour.a >= ru.colour.a);
+        assert!(
+            texts(&s)
+                .iter()
+                .any(|t| t.contains("reflected (s light) 14.8 %"))
+        );
+    }
 }

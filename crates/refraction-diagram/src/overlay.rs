@@ -4,7 +4,9 @@
 
 use glam::{DVec3, Vec2};
 
+use super::intensities::Polarisation;
 use super::palette::Palette;
+use super::wavefronts::WaveOptions;
 use refraction_kernel::Rejection;
 
 /// The least and the most the diagram can be zoomed.
@@ -129,6 +131,12 @@ pub struct Overlay {
     pub student: Option<StudentRay>,
     /// What a walk-through step highlights.
     pub focus: Option<Focus>,
+    /// The *Intensities* switch: the reflected and transmitted rays drawn by their share of
+    /// this light, with percentages; `None` when off.
+    pub intensities: Option<Polarisation>,
+    /// The *Wavefronts* switch: the fronts (at their phase) and, if asked, Huygens's
+    /// construction; `None` when off.
+    pub waves: Option<WaveOptions>,
 }
 
 impl Default for Overlay {
@@ -138,6 +146,8 @@ impl Default for Overlay {
             pan_zoom: PanZoom::default(),
             student: None,
             focus: None,
+            intensities: None,
+            waves: None,
         }
     }
 }

@@ -5,12 +5,14 @@ use glam::{DVec2, DVec3, Vec2};
 
 use super::font::Typeface;
 use super::geometry::{Colour, Rect, arc, clip_rect_to_half_plane, clip_segment};
+use super::intensities::{Shares, stroke_for};
 use super::layout::Layout;
 use super::model::{ExplorerState, HandleId, INDEX_RANGE, MATERIALS, material_of};
 use super::numbers::number;
 use super::overlay::{Overlay, Part};
 use super::palette::Palette;
 use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke, lower_all};
+use super::wavefronts;
 use refraction_kernel::{Convention, Refraction, Rejection, seed};
 
 /// A draggable point on the canvas.
@@ -554,6 +556,17 @@ impl DiagramBuilder<'_> {
     fn outgoing(&mut self, r: &Refraction<f64>, normal: DVec2) {
         let palette = self.palette;
         let reflected = self.flat(r.reflected);
+        if let Some(shares) = self.overlay.intensities.map(|p| Shares::of(r, p)) {
+            if let Some(tr) = r.transmission {
+                let theta_t = number(tr.cos_t.clamp(-1.0, 1.0).acos().to_degrees(), 1);
+                let text = format!("θt = {theta_t}°");
+                self.angle(Part::AngleT, (-normal, self.flat(tr.t)), text, palette.t);
+            }
+            let full = self.stroke(3.0, palette.reflected, palette.reflected_dash);
+            let name = format!("reflected ({})", shares.polarisation.label());
+            self.shared_ray(reflected, full, &name, shares.reflected);
+            return;
+        }
         match r.transmission {
             Some(tr) => {
                 let t = self.flat(tr.t);
@@ -586,9 +599,47 @@ impl DiagramBuilder<'_> {
         self.part_ray(Part::N, n_dir, 1.0, n_stroke, "N");
         if let Some(tr) = r.transmission {
             let t_stroke = self.stroke(4.5, palette.t, Dash::Solid);
-            self.part_ray(Part::T, self.flat(tr.t), 1.0, t_stroke, "T");
+            let shares = self.overlay.intensities.map(|p| Shares::of(r, p));
+            // Under the *Intensities* switch T is as wide as its share, and says it.
+            let (t_stroke, text) = match shares {
+                Some(s) => (
+                    stroke_for(self.stroke(3.0, palette.t, Dash::Solid), s.transmitted)
+                        .unwrap_or(t_stroke),
+                    Shares::label("T: transmitted", s.transmitted),
+                ),
+                None => (t_stroke, "T".to_owned()),
+            };
+            self.part_ray(Part::T, self.flat(tr.t), 1.0, t_stroke, &text);
         }
         [w_dir, n_dir]
+    }
+
+    /// A ray drawn by its share of the light (the *Intensities* switch), labelled `name` and
+    /// its percentage; a share too small to see is not drawn, and its label says so where
+    /// the ray's tip would be (p light at Brewster's angle).
+    fn shared_ray(&mut self, d: DVec2, full: Stroke, name: &str, share: f64) {
+        let text = Shares::label(name, share);
+        match stroke_for(full, share) {
+            Some(stroke) => self.ray(d, 1.0, stroke, &text, 0.9),
+            None => {
+                let away = self.layout.view.direction(d);
+                let at = self.at(d * 0.7);
+                let anchor = (Align::away(away.x), Align::away(away.y));
+                let colour = self.palette.text_shade(full.colour);
+                let text = format!("{text}: no reflected ray");
+                self.label_coloured(text, at, anchor, 0.9, colour);
+            }
+        }
+    }
+
+    /// The *Wavefronts* layer over the media: the fronts and the construction under the rays,
+    /// their labels placed with the diagram's own.
+    fn waves(&mut self, options: &wavefronts::WaveOptions) {
+        let layer = wavefronts::layer(self.state, self.layout, &self.palette, options);
+        self.shapes.extend(layer.shapes);
+        let rank = self.rank;
+        self.labels
+            .extend(layer.labels.into_iter().map(|l| (rank, l)));
     }
 
     /// A round handle at a tip.
@@ -637,6 +688,9 @@ impl Diagram {
         let toward_source = b.flat(-r.travel);
         b.media(normal);
         b.rank = Rank::Construction;
+        if let Some(options) = overlay.waves {
+            b.waves(&options);
+        }
         b.guides(normal, toward_source);
         b.rank = Rank::Rays;
         b.incoming(r, normal, toward_source);

@@ -8,10 +8,14 @@ use std::path::Path;
 pub enum ImageFormat {
     /// Portable Network Graphics (`.png`).
     Png,
+    /// Scalable Vector Graphics (`.svg`): shapes as paths, labels as editable text.
+    Svg,
+    /// An animated GIF (`.gif`), written by the animations only.
+    Gif,
 }
 
 /// Every format written, in the order the messages list them.
-pub const FORMATS: [ImageFormat; 1] = [ImageFormat::Png];
+pub const FORMATS: [ImageFormat; 3] = [ImageFormat::Png, ImageFormat::Svg, ImageFormat::Gif];
 
 /// The extension of a path names no format this crate writes.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -40,6 +44,8 @@ impl ImageFormat {
     pub fn name(self) -> &'static str {
         match self {
             Self::Png => "PNG",
+            Self::Svg => "SVG",
+            Self::Gif => "GIF",
         }
     }
 
@@ -48,6 +54,8 @@ impl ImageFormat {
     pub fn extension(self) -> &'static str {
         match self {
             Self::Png => "png",
+            Self::Svg => "svg",
+            Self::Gif => "gif",
         }
     }
 
@@ -81,11 +89,14 @@ mod tests {
         for name in ["a.png", "a.PNG", "dir.x/a.Png", "a", "-", "/dev/stdout"] {
             assert_eq!(ImageFormat::for_path(Path::new(name)), Ok(ImageFormat::Png));
         }
+        for (name, format) in [("a.svg", ImageFormat::Svg), ("b.GIF", ImageFormat::Gif)] {
+            assert_eq!(ImageFormat::for_path(Path::new(name)), Ok(format));
+        }
         let err = ImageFormat::for_path(Path::new("out/x.jpg")).unwrap_err();
         assert_eq!(
             err.to_string(),
             "cannot write out/x.jpg: `.jpg` is not a format this program writes; it writes PNG \
-             (.png)"
+             (.png), SVG (.svg), GIF (.gif)"
         );
         assert!(ImageFormat::for_path(Path::new("x.")).is_err());
     }

@@ -14,6 +14,7 @@ use glam::Vec2;
 use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Transform};
 
 use crate::atomic::write_atomically;
+use crate::format::ImageFormat;
 use refraction_diagram::font::{FontError, Typeface};
 use refraction_diagram::geometry::Colour;
 use refraction_diagram::{Diagram, ExplorerState, Overlay, Primitive, SceneLayout, ScenePicture};
@@ -59,6 +60,15 @@ pub enum RenderError {
     /// The work was cancelled before it was done; nothing was written.
     #[error("cancelled: nothing was written")]
     Cancelled,
+    /// The path's extension names no format written.
+    #[error(transparent)]
+    Format(#[from] format::UnsupportedFormat),
+    /// A still picture was asked for in a format that holds only animations (GIF).
+    #[error(
+        "cannot write {0}: a GIF holds an animation here; write the picture as .png or .svg, \
+         or an animation (render --animate, Export animation) as .gif"
+    )]
+    NotStill(String),
 }
 
 fn paint(colour: Colour) -> Paint<'static> {
@@ -247,41 +257,89 @@ pub fn png(
     encode(&render(state, overlay, width, height)?)
 }
 
-/// Writes a pixmap as a PNG file at `path`, atomically.
+/// A still picture drawn by `primitives` at `width` × `height` as the bytes of a `format`
+/// file: PNG pixels or an SVG document.
 ///
 /// # Errors
-/// A failed encoding, or the file cannot be written (the message names it).
-pub fn write_png(pixmap: &Pixmap, path: &Path) -> Result<(), RenderError> {
-    write_atomically(path, &encode(pixmap)?).map_err(RenderError::Write)
+/// As [`draw_primitives`], a failed encoding, or [`RenderError::NotStill`] for GIF (`path`
+/// names the file in the message).
+pub fn still(
+    format: ImageFormat,
+    (width, height): (u32, u32),
+    path: &Path,
+    primitives: impl FnOnce(Vec2, &Typeface) -> Vec<Primitive>,
+) -> Result<Vec<u8>, RenderError> {
+    match format {
+        ImageFormat::Png => encode(&draw_primitives(width, height, primitives)?),
+        ImageFormat::Svg => svg::document(width, height, primitives).map(String::into_bytes),
+        ImageFormat::Gif => Err(RenderError::NotStill(path.display().to_string())),
+    }
 }
 
-/// Writes the diagram of `state` with `overlay` as a PNG file at `path`, atomically.
+/// The diagram of `state` with `overlay` as the bytes of a `format` file ([`still`]); `path`
+/// only names the file in a message.
 ///
 /// # Errors
-/// As [`png`], or the file cannot be written (the message names it).
+/// As [`still`].
+pub fn interface_file(
+    state: &ExplorerState,
+    overlay: &Overlay,
+    format: ImageFormat,
+    size: (u32, u32),
+    path: &Path,
+) -> Result<Vec<u8>, RenderError> {
+    still(format, size, path, interface(state, overlay))
+}
+
+/// `scene`, traced, as the bytes of a `format` file ([`still`]); `path` only names the file
+/// in a message. The size is checked before the scene is traced.
+///
+/// # Errors
+/// As [`still`].
+pub fn scene_file(
+    scene: &Scene,
+    format: ImageFormat,
+    (width, height): (u32, u32),
+    path: &Path,
+) -> Result<Vec<u8>, RenderError> {
+    check_size(width, height)?;
+    still(format, (width, height), path, traced(scene, &scene.trace()))
+}
+
+/// Writes the diagram of `state` with `overlay` at `path`, atomically, as PNG or SVG by the
+/// path's extension ([`ImageFormat::for_path`]).
+///
+/// # Errors
+/// An extension that names no still format, as [`png`] or [`interface_svg`], or the file
+/// cannot be written (the message names it).
 pub fn export(
     state: &ExplorerState,
     overlay: &Overlay,
-    (width, height): (u32, u32),
+    size: (u32, u32),
     path: &Path,
 ) -> Result<(), RenderError> {
-    write_png(&render(state, overlay, width, height)?, path)
+    let format = ImageFormat::for_path(path)?;
+    let bytes = interface_file(state, overlay, format, size, path)?;
+    write_atomically(path, &bytes).map_err(RenderError::Write)
 }
 
-/// Writes the plot of a `bench` report as a PNG file at `path`, atomically.
+/// Writes the plot of a `bench` report at `path`, atomically, as PNG or SVG by the path's
+/// extension.
 ///
 /// # Errors
-/// As [`draw_primitives`], or the file cannot be written (the message names it).
+/// As [`still`], an extension that names no still format, or the file cannot be written (the
+/// message names it).
 pub fn export_accuracy_plot(
     report: &refraction_bench::Report,
     width: u32,
     height: u32,
     path: &Path,
 ) -> Result<(), RenderError> {
-    let pixmap = draw_primitives(width, height, |size, face| {
+    let format = ImageFormat::for_path(path)?;
+    let bytes = still(format, (width, height), path, |size, face| {
         refraction_diagram::accuracy_plot::primitives(report, size, face)
     })?;
-    write_png(&pixmap, path)
+    write_atomically(path, &bytes).map_err(RenderError::Write)
 }
 
 /// `scene`, traced, drawn on a `width` × `height` pixmap as the explorer's Scenes view shows
@@ -303,26 +361,20 @@ pub fn scene_svg(scene: &Scene, width: u32, height: u32) -> Result<String, Rende
     svg::document(width, height, traced(scene, &scene.trace()))
 }
 
-/// Writes an SVG document at `path`, atomically.
+/// Writes `scene`, traced, at `path`, atomically, as PNG or SVG by the path's extension.
 ///
 /// # Errors
-/// The file cannot be written (the message names it).
-pub fn write_svg(document: &str, path: &Path) -> Result<(), RenderError> {
-    write_atomically(path, document.as_bytes()).map_err(RenderError::Write)
-}
-
-/// Writes `scene`, traced, as a PNG file at `path`, atomically.
-///
-/// # Errors
-/// As [`render_scene`], a failed encoding, or the file cannot be written (the message names
-/// it).
+/// As [`scene_file`], an extension that names no still format, or the file cannot be written
+/// (the message names it).
 pub fn export_scene(
     scene: &Scene,
     width: u32,
     height: u32,
     path: &Path,
 ) -> Result<(), RenderError> {
-    write_png(&render_scene(scene, width, height)?, path)
+    let format = ImageFormat::for_path(path)?;
+    let bytes = scene_file(scene, format, (width, height), path)?;
+    write_atomically(path, &bytes).map_err(RenderError::Write)
 }
 
 #[cfg(test)]

@@ -1,0 +1,174 @@
+//! The *Fresnel* tool beside the diagram: R_s, R_p, unpolarised R and T against θi from 0° to
+//! 90° for the current media ([`FresnelPlot`], the kernel's fractions), Brewster's and the
+//! critical angle marked and named, the current θi as a cursor that follows every drag of W,
+//! the values there, and the source of the formula in words.
+//!
+//! It is a tool beside the diagram rather than a view of its own because its cursor is the
+//! diagram's θi: the class watches R_p fall to zero while the teacher drags W to Brewster's
+//! angle, which a separate view would hide.
+
+use egui::{Grid, RichText, Ui};
+use egui_plot::{Line, LineStyle, Plot, PlotPoint, Text, VLine};
+
+use super::paint::color;
+use refraction_diagram::ExplorerState;
+use refraction_diagram::fresnel_plot::{FresnelPlot, SOURCE, curve_strokes, percent};
+use refraction_diagram::numbers::number;
+use refraction_diagram::palette::Palette;
+use refraction_diagram::shapes::{Dash, Stroke};
+
+/// The plot's least and most height, in points.
+const PLOT_HEIGHT: (f32, f32) = (150.0, 420.0);
+
+/// The egui line style of a diagram dash.
+fn style(dash: Dash) -> LineStyle {
+    match dash {
+        Dash::Solid => LineStyle::Solid,
+        Dash::Dotted | Dash::DashDot | Dash::DashDotDot => LineStyle::dotted_loose(),
+        Dash::Dashed | Dash::LongDash | Dash::LongDashDot => LineStyle::dashed_loose(),
+    }
+}
+
+/// The strokes of the four curves at the window's scale (widths in points).
+fn strokes(palette: &Palette) -> [Stroke; 4] {
+    // 14-point text gives 2-point lines, the unpolarised R thicker.
+    curve_strokes(palette, 14.0)
+}
+
+/// A marker line at `degrees` with its name at the top of the plot.
+fn marker(
+    plot: &mut egui_plot::PlotUi<'_>,
+    name: &str,
+    degrees: f64,
+    colour: egui::Color32,
+    dash: Dash,
+) {
+    plot.vline(
+        VLine::new(name, degrees)
+            .color(colour)
+            .width(2.0)
+            .style(style(dash)),
+    );
+    plot.text(
+        Text::new(
+            name,
+            PlotPoint::new(degrees, 1.04),
+            RichText::new(name).color(colour),
+        )
+        .anchor(egui::Align2::CENTER_BOTTOM),
+    );
+}
+
+/// The plot: the curves, the landmarks and the cursor.
+fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) {
+    let height = (ui.available_height() - 150.0).clamp(PLOT_HEIGHT.0, PLOT_HEIGHT.1);
+    let strokes = strokes(palette);
+    Plot::new("fresnel")
+        .height(height)
+        .allow_drag(false)
+        .allow_zoom(false)
+        .allow_scroll(false)
+        .allow_boxed_zoom(false)
+        .include_x(0.0)
+        .include_x(90.0)
+        .include_y(0.0)
+        .include_y(1.12)
+        .x_axis_label("angle of incidence θi (°)")
+        .y_axis_formatter(|mark, _| format!("{:.0} %", mark.value * 100.0))
+        .show(ui, |plot| {
+            for (curve, stroke) in model.curves.iter().zip(strokes) {
+                let points: Vec<[f64; 2]> = curve.points.iter().map(|&(x, y)| [x, y]).collect();
+                plot.line(
+                    Line::new(curve.name, points)
+                        .color(color(stroke.colour))
+                        .width(stroke.width)
+                        .style(style(stroke.dash)),
+                );
+            }
+            if let Some(b) = model.angles.brewster_deg {
+                let name = format!("θB {}°", number(b, 1));
+                marker(
+                    plot,
+                    &name,
+                    b,
+                    color(palette.text_shade(palette.n)),
+                    Dash::Dashed,
+                );
+            }
+            if let Some(c) = model.angles.critical_deg {
+                let name = format!("θc {}°", number(c, 1));
+                let shade = color(palette.text_shade(palette.critical));
+                marker(plot, &name, c, shade, Dash::DashDot);
+            }
+            let shade = color(palette.text_shade(palette.w));
+            plot.vline(
+                VLine::new("θi now", model.cursor_deg)
+                    .color(shade)
+                    .width(3.0),
+            );
+        });
+}
+
+/// A short sample of `stroke`, as the plot draws it, for the legend.
+fn sample(ui: &mut Ui, stroke: Stroke) {
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(32.0, 14.0), egui::Sense::hover());
+    let ends = [rect.left_center(), rect.right_center()];
+    let line = egui::Stroke::new(stroke.width, color(stroke.colour));
+    let shapes = match stroke.dash {
+        Dash::Solid => vec![egui::Shape::line_segment(ends, line)],
+        Dash::Dashed | Dash::LongDash | Dash::LongDashDot => {
+            egui::Shape::dashed_line(&ends, line, 7.0, 4.0)
+        }
+        Dash::Dotted | Dash::DashDot | Dash::DashDotDot => {
+            egui::Shape::dashed_line(&ends, line, 2.0, 4.0)
+        }
+    };
+    ui.painter().extend(shapes);
+}
+
+/// The legend with the values at the cursor.
+fn legend(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) {
+    let a = model.at_cursor;
+    let values = [a.rs, a.rp, a.reflectance(), a.transmittance()];
+    Grid::new("fresnel legend").num_columns(2).show(ui, |ui| {
+        for ((curve, stroke), value) in model.curves.iter().zip(strokes(palette)).zip(values) {
+            sample(ui, stroke);
+            ui.label(format!("{}: {}", curve.name, percent(value)));
+            ui.end_row();
+        }
+    });
+}
+
+/// The landmarks in words.
+fn landmarks(ui: &mut Ui, model: &FresnelPlot) {
+    ui.label(format!(
+        "At θi = {}°, from μi = {} into μt = {}.",
+        number(model.cursor_deg, 1),
+        model.mu_i,
+        model.mu_t
+    ));
+    match model.angles.brewster_deg {
+        Some(b) => ui.label(format!(
+            "Brewster's angle θB = {}°: no p light is reflected there (tan θB = μt/μi).",
+            number(b, 1)
+        )),
+        None => ui.label("Equal indices: no interface, nothing is reflected."),
+    };
+    match model.angles.critical_deg {
+        Some(c) => ui.label(format!(
+            "Critical angle θc = {}°: beyond it all the light is reflected (sin θc = μt/μi).",
+            number(c, 1)
+        )),
+        None => ui.label("No critical angle: the light goes into a medium of higher index."),
+    };
+}
+
+/// Shows the tool for `state` in `palette`.
+pub fn show(ui: &mut Ui, state: &ExplorerState, palette: &Palette) {
+    let model = FresnelPlot::of(state);
+    ui.label(RichText::new("How much light is reflected (Fresnel)").strong());
+    plot(ui, &model, palette);
+    legend(ui, &model, palette);
+    landmarks(ui, &model);
+    ui.label(RichText::new(SOURCE.replace('\n', " ")).small());
+}

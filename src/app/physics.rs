@@ -1,0 +1,132 @@
+//! The physics switches over the one-interface diagram: *Intensities* (the rays by their share
+//! of s, p or unpolarised light) and *Wavefronts* (the fronts λ/μ apart, moving at c/μ when
+//! asked, Huygens's construction highlighted when asked). Each effect is drawn only while its
+//! switch is on; the diagram model draws them ([`Overlay::intensities`], [`Overlay::waves`]), so
+//! the exports show them too.
+//!
+//! [`Overlay::intensities`]: refraction_diagram::Overlay::intensities
+//! [`Overlay::waves`]: refraction_diagram::Overlay::waves
+
+use egui::{ComboBox, Context, Ui};
+
+use refraction_diagram::intensities::Polarisation;
+use refraction_diagram::wavefronts::WaveOptions;
+
+/// How long the fronts take to move by one spacing, in seconds: slow enough to follow one.
+pub const WAVE_PERIOD_SECONDS: f64 = 2.0;
+
+/// The switches and the fronts' phase.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Physics {
+    /// The *Intensities* switch.
+    pub intensities: bool,
+    /// The light the shares are for.
+    pub polarisation: Polarisation,
+    /// The *Wavefronts* switch.
+    pub waves: bool,
+    /// Whether the fronts move.
+    pub moving: bool,
+    /// Whether Huygens's construction is drawn.
+    pub huygens: bool,
+    /// Where in one period the fronts are, 0 to 1.
+    phase: f64,
+}
+
+impl Physics {
+    /// The light the rays are drawn for, while *Intensities* is on.
+    #[must_use]
+    pub fn intensities(&self) -> Option<Polarisation> {
+        self.intensities.then_some(self.polarisation)
+    }
+
+    /// The fronts to draw, while *Wavefronts* is on.
+    #[must_use]
+    pub fn waves(&self) -> Option<WaveOptions> {
+        self.waves.then_some(WaveOptions {
+            phase: self.phase,
+            huygens: self.huygens,
+        })
+    }
+
+    /// Moves the fronts on by this frame's time while they move, and asks for the next frame.
+    pub fn animate(&mut self, ctx: &Context) {
+        if !(self.waves && self.moving) {
+            return;
+        }
+        let dt = f64::from(ctx.input(|i| i.stable_dt));
+        if dt.is_finite() && dt > 0.0 {
+            self.phase = (self.phase + dt / WAVE_PERIOD_SECONDS).rem_euclid(1.0);
+        }
+        ctx.request_repaint();
+    }
+
+    /// Whether something moves on its own, so that undo waits for it.
+    #[must_use]
+    pub fn animating(&self) -> bool {
+        self.waves && self.moving
+    }
+
+    /// The switches, in one row over the diagram; a switch's options show while it is on.
+    pub fn switches(&mut self, ui: &mut Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.toggle_value(&mut self.intensities, "Intensities")
+                .on_hover_text(
+                    "Draw the reflected and transmitted rays by their share of the light \
+                     (Fresnel), with percentages",
+                );
+            if self.intensities {
+                ComboBox::from_label("Light")
+                    .selected_text(self.polarisation.label())
+                    .show_ui(ui, |ui| {
+                        for p in Polarisation::ALL {
+                            ui.selectable_value(&mut self.polarisation, p, p.label());
+                        }
+                    });
+            }
+            ui.separator();
+            ui.toggle_value(&mut self.waves, "Wavefronts")
+                .on_hover_text(
+                    "Plane wavefronts λ/μ apart in each medium, moving at c/μ: why the ray bends",
+                );
+            if self.waves {
+                ui.checkbox(&mut self.moving, "Moving");
+                ui.checkbox(&mut self.huygens, "Huygens's construction")
+                    .on_hover_text(
+                        "Two points of one front and the wavelet grown in the time between them",
+                    );
+            }
+        });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_effect_is_drawn_only_while_its_switch_is_on_and_the_fronts_move_when_asked() {
+        let mut physics = Physics::default();
+        assert_eq!((physics.intensities(), physics.waves()), (None, None));
+        physics.polarisation = Polarisation::P;
+        physics.intensities = true;
+        assert_eq!(physics.intensities(), Some(Polarisation::P));
+        physics.waves = true;
+        let ctx = Context::default();
+        let frame = |physics: &mut Physics| {
+            let input = egui::RawInput {
+                predicted_dt: 0.5,
+                ..Default::default()
+            };
+            let mut output = ctx.run_ui(input, |ui| physics.animate(ui.ctx()));
+            output.textures_delta.clear();
+        };
+        frame(&mut physics);
+        assert_eq!(physics.waves().map(|w| w.phase), Some(0.0), "still fronts");
+        physics.moving = true;
+        frame(&mut physics);
+        frame(&mut physics);
+        let phase = physics.waves().unwrap().phase;
+        assert!(phase > 0.0 && phase < 1.0, "{phase}");
+        assert!(physics.animating());
+    }
+}
