@@ -25,11 +25,12 @@ use refraction_kernel::Convention;
 use refraction_scene::Scene;
 
 const SIZES: [(f32, f32); 2] = [(1280.0, 720.0), (1920.0, 1080.0)];
-const TOOLS: [Option<&str>; 4] = [
+const TOOLS: [Option<&str>; 5] = [
     None,
     Some("✔ Check my T"),
     Some("📖 Walk-through"),
     Some("💾 Save, open, share"),
+    Some("Fresnel R, T"),
 ];
 const THEMES: [&str; 3] = ["Standard", "High contrast light", "High contrast dark"];
 

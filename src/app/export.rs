@@ -158,7 +158,7 @@ impl AnimationExport {
     /// The controls: which animation, frames, rate, size and file; *Export animation*, or
     /// while it runs a progress bar and *Cancel*.
     pub fn show(&mut self, ui: &mut Ui, state: &ExplorerState, overlay: &Overlay) {
-        ui.heading("Export animation");
+        ui.heading("Animation for a slide");
         ComboBox::from_label("Animation")
             .selected_text(self.animation.label())
             .show_ui(ui, |ui| {
@@ -210,13 +210,12 @@ impl AnimationExport {
         });
         ui.horizontal(|ui| {
             let (low, high) = SIZE_LIMITS;
-            let label = ui.label("Animation size");
             let (width, height) = &mut self.size;
-            ui.add(DragValue::new(width).range(low..=high).suffix(" px"))
-                .labelled_by(label.id);
-            ui.label("×");
-            ui.add(DragValue::new(height).range(low..=high).suffix(" px"))
-                .labelled_by(label.id);
+            for (name, value) in [("GIF width", width), ("height", height)] {
+                let label = ui.label(name);
+                ui.add(DragValue::new(value).range(low..=high).suffix(" px"))
+                    .labelled_by(label.id);
+            }
         });
     }
 }

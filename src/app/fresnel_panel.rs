@@ -59,8 +59,13 @@ fn marker(
     );
 }
 
-/// The plot: the curves, the landmarks and the cursor.
-fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) {
+/// The largest θi a click on the plot sets, in degrees: grazing, but short of 90°, which no
+/// ray meets a surface at.
+const LARGEST_CLICKED_DEG: f64 = 89.9;
+
+/// The plot: the curves, the landmarks and the cursor. Returns the θi clicked or dragged to on
+/// it, if any.
+fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) -> Option<f64> {
     let height = (ui.available_height() - 150.0).clamp(PLOT_HEIGHT.0, PLOT_HEIGHT.1);
     let strokes = strokes(palette);
     Plot::new("fresnel")
@@ -76,6 +81,9 @@ fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) {
         .x_axis_label("angle of incidence θi (°)")
         .y_axis_formatter(|mark, _| format!("{:.0} %", mark.value * 100.0))
         .show(ui, |plot| {
+            let response = plot.response();
+            let pressed = response.clicked() || response.dragged();
+            let clicked = plot.pointer_coordinate().filter(|_| pressed);
             for (curve, stroke) in model.curves.iter().zip(strokes) {
                 let points: Vec<[f64; 2]> = curve.points.iter().map(|&(x, y)| [x, y]).collect();
                 plot.line(
@@ -106,7 +114,9 @@ fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) {
                     .color(shade)
                     .width(3.0),
             );
-        });
+            clicked.map(|p| p.x.clamp(0.0, LARGEST_CLICKED_DEG))
+        })
+        .inner
 }
 
 /// A short sample of `stroke`, as the plot draws it, for the legend.
@@ -163,11 +173,16 @@ fn landmarks(ui: &mut Ui, model: &FresnelPlot) {
     };
 }
 
-/// Shows the tool for `state` in `palette`.
-pub fn show(ui: &mut Ui, state: &ExplorerState, palette: &Palette) {
+/// Shows the tool for `state` in `palette`; a click or drag on the plot turns W to the θi
+/// under the pointer.
+pub fn show(ui: &mut Ui, state: &mut ExplorerState, palette: &Palette) {
     let model = FresnelPlot::of(state);
     ui.label(RichText::new("How much light is reflected (Fresnel)").strong());
-    plot(ui, &model, palette);
+    if let Some(degrees) = plot(ui, &model, palette) {
+        // Clamped to [0, 89.9]: within what the model accepts.
+        let _ = state.set_incidence_degrees(degrees);
+    }
+    ui.label(RichText::new("Click or drag on the plot to set θi.").weak());
     legend(ui, &model, palette);
     landmarks(ui, &model);
     ui.label(RichText::new(SOURCE.replace('\n', " ")).small());

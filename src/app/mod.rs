@@ -318,6 +318,10 @@ impl Explorer {
             self.presentation.controls(ui);
             ui.separator();
             self.tools.bar(ui);
+            if self.view == View::Interface {
+                ui.separator();
+                self.physics.switches(ui);
+            }
             if let Some(done) = &self.travelled {
                 ui.separator();
                 ui.label(RichText::new(done).weak());
@@ -371,11 +375,7 @@ impl Explorer {
         self.panels.show(ui, &NUMBERS, presenting, |ui| {
             readouts::show(ui, state.refraction(), &overlay.palette);
         });
-        let physics = &mut self.physics;
-        egui::CentralPanel::no_frame().show(ui, |ui| {
-            physics.switches(ui);
-            canvas::show(ui, state, &mut overlay);
-        });
+        egui::CentralPanel::no_frame().show(ui, |ui| canvas::show(ui, state, &mut overlay));
         self.presentation.pan_zoom = overlay.pan_zoom;
     }
 }

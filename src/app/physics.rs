@@ -1,4 +1,4 @@
-//! The physics switches over the one-interface diagram: *Intensities* (the rays by their share
+//! The physics switches of the one-interface diagram, in the top bar: *Intensities* (the rays by their share
 //! of s, p or unpolarised light) and *Wavefronts* (the fronts λ/μ apart, moving at c/μ when
 //! asked, Huygens's construction highlighted when asked). Each effect is drawn only while its
 //! switch is on; the diagram model draws them ([`Overlay::intensities`], [`Overlay::waves`]), so
@@ -66,36 +66,33 @@ impl Physics {
         self.waves && self.moving
     }
 
-    /// The switches, in one row over the diagram; a switch's options show while it is on.
+    /// The switches, for the top bar (a wrapping row); a switch's options show while it is on.
     pub fn switches(&mut self, ui: &mut Ui) {
-        ui.horizontal_wrapped(|ui| {
-            ui.toggle_value(&mut self.intensities, "Intensities")
+        ui.toggle_value(&mut self.intensities, "Intensities")
+            .on_hover_text(
+                "Draw the reflected and transmitted rays by their share of the light (Fresnel), \
+                 with percentages",
+            );
+        if self.intensities {
+            ComboBox::from_label("Light")
+                .selected_text(self.polarisation.label())
+                .show_ui(ui, |ui| {
+                    for p in Polarisation::ALL {
+                        ui.selectable_value(&mut self.polarisation, p, p.label());
+                    }
+                });
+        }
+        ui.toggle_value(&mut self.waves, "Wavefronts")
+            .on_hover_text(
+                "Plane wavefronts λ/μ apart in each medium, moving at c/μ: why the ray bends",
+            );
+        if self.waves {
+            ui.checkbox(&mut self.moving, "Moving");
+            ui.checkbox(&mut self.huygens, "Huygens's construction")
                 .on_hover_text(
-                    "Draw the reflected and transmitted rays by their share of the light \
-                     (Fresnel), with percentages",
+                    "Two points of one front and the wavelet grown in the time between them",
                 );
-            if self.intensities {
-                ComboBox::from_label("Light")
-                    .selected_text(self.polarisation.label())
-                    .show_ui(ui, |ui| {
-                        for p in Polarisation::ALL {
-                            ui.selectable_value(&mut self.polarisation, p, p.label());
-                        }
-                    });
-            }
-            ui.separator();
-            ui.toggle_value(&mut self.waves, "Wavefronts")
-                .on_hover_text(
-                    "Plane wavefronts λ/μ apart in each medium, moving at c/μ: why the ray bends",
-                );
-            if self.waves {
-                ui.checkbox(&mut self.moving, "Moving");
-                ui.checkbox(&mut self.huygens, "Huygens's construction")
-                    .on_hover_text(
-                        "Two points of one front and the wavelet grown in the time between them",
-                    );
-            }
-        });
+        }
     }
 }
 

@@ -103,8 +103,9 @@ pub fn format_of(
         ""
     };
     Err(format!(
-        "{option} {}: {} is not written here; give a name ending in {}{hint}",
+        "{option} {}: `.{}` ({}) is not written here; give a name ending in {}{hint}",
         path.display(),
+        format.extension(),
         format.name(),
         allowed.join(" or ")
     ))
