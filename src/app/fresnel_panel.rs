@@ -7,8 +7,8 @@
 //! diagram's θi: the class watches R_p fall to zero while the teacher drags W to Brewster's
 //! angle, which a separate view would hide.
 
-use egui::{Grid, RichText, Ui};
-use egui_plot::{Line, LineStyle, Plot, PlotPoint, Text, VLine};
+use egui::{RichText, Ui};
+use egui_plot::{Line, LineStyle, Plot, PlotPoint, Text, VLine, uniform_grid_spacer};
 
 use super::paint::color;
 use refraction_diagram::ExplorerState;
@@ -65,11 +65,10 @@ const LARGEST_CLICKED_DEG: f64 = 89.9;
 
 /// The plot: the curves, the landmarks and the cursor. Returns the θi clicked or dragged to on
 /// it, if any.
-fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) -> Option<f64> {
-    let height = (ui.available_height() - 150.0).clamp(PLOT_HEIGHT.0, PLOT_HEIGHT.1);
+fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette, height: f32) -> Option<f64> {
     let strokes = strokes(palette);
     Plot::new("fresnel")
-        .height(height)
+        .height(height.clamp(PLOT_HEIGHT.0, PLOT_HEIGHT.1))
         .allow_drag(false)
         .allow_zoom(false)
         .allow_scroll(false)
@@ -79,7 +78,16 @@ fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) -> Option<f64> {
         .include_y(0.0)
         .include_y(1.12)
         .x_axis_label("angle of incidence θi (°)")
-        .y_axis_formatter(|mark, _| format!("{:.0} %", mark.value * 100.0))
+        // Lines every 10°, labels at least every 30° however narrow the plot.
+        .x_grid_spacer(uniform_grid_spacer(|_| [10.0, 30.0, 90.0]))
+        // The room above 100 % holds the markers' names, not values.
+        .y_axis_formatter(|mark, _| {
+            if mark.value > 1.0 + 1e-9 {
+                String::new()
+            } else {
+                format!("{:.0} %", mark.value * 100.0)
+            }
+        })
         .show(ui, |plot| {
             let response = plot.response();
             let pressed = response.clicked() || response.dragged();
@@ -136,17 +144,17 @@ fn sample(ui: &mut Ui, stroke: Stroke) {
     ui.painter().extend(shapes);
 }
 
-/// The legend with the values at the cursor.
+/// The legend with the values at the cursor, one wrapping line per curve (the tool may be a
+/// narrow strip beside the diagram in presentation).
 fn legend(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) {
     let a = model.at_cursor;
     let values = [a.rs, a.rp, a.reflectance(), a.transmittance()];
-    Grid::new("fresnel legend").num_columns(2).show(ui, |ui| {
-        for ((curve, stroke), value) in model.curves.iter().zip(strokes(palette)).zip(values) {
+    for ((curve, stroke), value) in model.curves.iter().zip(strokes(palette)).zip(values) {
+        ui.horizontal(|ui| {
             sample(ui, stroke);
-            ui.label(format!("{}: {}", curve.name, percent(value)));
-            ui.end_row();
-        }
-    });
+            ui.add(egui::Label::new(format!("{}: {}", curve.name, percent(value))).wrap());
+        });
+    }
 }
 
 /// The landmarks in words.
@@ -173,17 +181,44 @@ fn landmarks(ui: &mut Ui, model: &FresnelPlot) {
     };
 }
 
+/// The legend, the landmarks in words and the source of the formula.
+fn words(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) {
+    ui.label(RichText::new("Click or drag on the plot to set θi.").weak());
+    legend(ui, model, palette);
+    landmarks(ui, model);
+    ui.label(RichText::new(SOURCE.replace('\n', " ")).small());
+}
+
+/// The least width, in points, at which the words go beside the plot rather than under it: a
+/// strip under the diagram at the desk is wide and low.
+const SIDE_BY_SIDE_WIDTH: f32 = 720.0;
+
 /// Shows the tool for `state` in `palette`; a click or drag on the plot turns W to the θi
 /// under the pointer.
 pub fn show(ui: &mut Ui, state: &mut ExplorerState, palette: &Palette) {
     let model = FresnelPlot::of(state);
     ui.label(RichText::new("How much light is reflected (Fresnel)").strong());
-    if let Some(degrees) = plot(ui, &model, palette) {
+    let clicked = if ui.available_width() >= SIDE_BY_SIDE_WIDTH {
+        ui.horizontal_top(|ui| {
+            let width = ui.available_width() * 0.58;
+            let height = ui.available_height() - 8.0;
+            let clicked = ui
+                .vertical(|ui| {
+                    ui.set_width(width);
+                    plot(ui, &model, palette, height)
+                })
+                .inner;
+            ui.vertical(|ui| words(ui, &model, palette));
+            clicked
+        })
+        .inner
+    } else {
+        let clicked = plot(ui, &model, palette, ui.available_height() - 150.0);
+        words(ui, &model, palette);
+        clicked
+    };
+    if let Some(degrees) = clicked {
         // Clamped to [0, 89.9]: within what the model accepts.
         let _ = state.set_incidence_degrees(degrees);
     }
-    ui.label(RichText::new("Click or drag on the plot to set θi.").weak());
-    legend(ui, &model, palette);
-    landmarks(ui, &model);
-    ui.label(RichText::new(SOURCE.replace('\n', " ")).small());
 }
