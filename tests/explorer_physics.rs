@@ -16,6 +16,7 @@ use refraction_diagram::{Diagram, ExplorerState};
 use refraction_explorer::app::Explorer;
 
 const FRESNEL: &str = "Fresnel R, T";
+const EFFECTS: &str = "Effects";
 
 /// From air into glass at Brewster's angle, tanθB = 1.5.
 fn at_brewster() -> ExplorerState {
@@ -109,13 +110,12 @@ fn at_brewsters_angle_p_light_reflects_nothing_and_only_with_intensities_on() {
     let mut h = harness(at_brewster());
     assert_eq!(h.state().overlay().intensities, None);
     assert!(!texts(&drawn(&h)).iter().any(|t| t.contains('%')));
+    click(&mut h, EFFECTS);
     click(&mut h, "Intensities");
     assert_eq!(
         h.state().overlay().intensities,
         Some(Polarisation::Unpolarised)
     );
-    h.get_by_role_and_label(Role::ComboBox, "Light").click();
-    h.run();
     click(&mut h, "p light");
     let overlay = h.state().overlay();
     assert_eq!(overlay.intensities, Some(Polarisation::P));
@@ -129,8 +129,6 @@ fn at_brewsters_angle_p_light_reflects_nothing_and_only_with_intensities_on() {
         "{labels:?}"
     );
     assert!(labels.iter().any(|t| t == "T: transmitted 100.0 %"));
-    h.get_by_role_and_label(Role::ComboBox, "Light").click();
-    h.run();
     click(&mut h, "s light");
     let labels = texts(&drawn(&h));
     assert!(
@@ -147,6 +145,7 @@ fn the_wavefronts_switch_draws_fronts_and_huygens_and_moves_them_when_asked() {
     let mut h = harness(ExplorerState::default());
     assert!(h.query_by_label("Moving").is_none(), "options show when on");
     let plain = drawn(&h).shapes.len();
+    click(&mut h, EFFECTS);
     click(&mut h, "Wavefronts");
     let waves = h.state().overlay().waves.unwrap();
     assert!(!waves.huygens);
@@ -176,8 +175,12 @@ fn the_wavefronts_switch_draws_fronts_and_huygens_and_moves_them_when_asked() {
 fn in_presentation_at_1280_by_720_the_tool_and_switches_leave_the_diagram_its_share() {
     let mut h = sized(Explorer::new(at_brewster()), (1280.0, 720.0));
     click(&mut h, "🖵 Presentation");
+    click(&mut h, EFFECTS);
     click(&mut h, "Intensities");
     click(&mut h, "Wavefronts");
+    h.key_press(egui::Key::Escape);
+    h.run();
+    assert!(h.query_by_label("Moving").is_none(), "the menu closed");
     for _ in 0..3 {
         h.run();
     }

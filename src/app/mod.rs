@@ -320,7 +320,7 @@ impl Explorer {
             self.tools.bar(ui);
             if self.view == View::Interface {
                 ui.separator();
-                self.physics.switches(ui);
+                self.physics.menu(ui);
             }
             if let Some(done) = &self.travelled {
                 ui.separator();

@@ -1,4 +1,4 @@
-//! The physics switches of the one-interface diagram, in the top bar: *Intensities* (the rays by their share
+//! The physics switches of the one-interface diagram, in the top bar's *Effects* menu: *Intensities* (the rays by their share
 //! of s, p or unpolarised light) and *Wavefronts* (the fronts λ/μ apart, moving at c/μ when
 //! asked, Huygens's construction highlighted when asked). Each effect is drawn only while its
 //! switch is on; the diagram model draws them ([`Overlay::intensities`], [`Overlay::waves`]), so
@@ -7,7 +7,8 @@
 //! [`Overlay::intensities`]: refraction_diagram::Overlay::intensities
 //! [`Overlay::waves`]: refraction_diagram::Overlay::waves
 
-use egui::{ComboBox, Context, Ui};
+use egui::containers::menu::{MenuButton, MenuConfig};
+use egui::{Button, Context, PopupCloseBehavior, Ui};
 
 use refraction_diagram::intensities::Polarisation;
 use refraction_diagram::wavefronts::WaveOptions;
@@ -66,22 +67,34 @@ impl Physics {
         self.waves && self.moving
     }
 
-    /// The switches, for the top bar (a wrapping row); a switch's options show while it is on.
-    pub fn switches(&mut self, ui: &mut Ui) {
+    /// The *Effects* menu for the top bar (one button, so that the bar keeps its rows on a
+    /// projector): the two switches, and each switch's options while it is on. The button
+    /// shows selected while an effect is on; the menu stays open until a click outside it.
+    pub fn menu(&mut self, ui: &mut Ui) {
+        let on = self.intensities || self.waves;
+        let button = Button::new("Effects").selected(on);
+        let config = MenuConfig::new().close_behavior(PopupCloseBehavior::CloseOnClickOutside);
+        let (response, _) = MenuButton::from_button(button)
+            .config(config)
+            .ui(ui, |ui| self.switches(ui));
+        response.on_hover_text("Intensities (Fresnel) and wavefronts over the diagram");
+    }
+
+    /// The switches and their options, one under the other.
+    fn switches(&mut self, ui: &mut Ui) {
         ui.toggle_value(&mut self.intensities, "Intensities")
             .on_hover_text(
                 "Draw the reflected and transmitted rays by their share of the light (Fresnel), \
                  with percentages",
             );
         if self.intensities {
-            ComboBox::from_label("Light")
-                .selected_text(self.polarisation.label())
-                .show_ui(ui, |ui| {
-                    for p in Polarisation::ALL {
-                        ui.selectable_value(&mut self.polarisation, p, p.label());
-                    }
-                });
+            ui.horizontal(|ui| {
+                for p in Polarisation::ALL {
+                    ui.radio_value(&mut self.polarisation, p, p.label());
+                }
+            });
         }
+        ui.separator();
         ui.toggle_value(&mut self.waves, "Wavefronts")
             .on_hover_text(
                 "Plane wavefronts λ/μ apart in each medium, moving at c/μ: why the ray bends",
