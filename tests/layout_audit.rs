@@ -30,8 +30,11 @@ const TOOLS: [Option<&str>; 5] = [
     Some("✔ Check my T"),
     Some("📖 Walk-through"),
     Some("💾 Save, open, share"),
-    Some("Fresnel R, T"),
+    Some(FRESNEL),
 ];
+
+/// The Fresnel tool's switch.
+const FRESNEL: &str = "Fresnel R, T";
 const THEMES: [&str; 3] = ["Standard", "High contrast light", "High contrast dark"];
 
 /// A small deterministic generator, so that a failure names a state that can be rerun.
@@ -119,6 +122,16 @@ fn set_up(h: &mut Harness<'_, Explorer>, present: bool, theme: &str, tool: Optio
     }
     if let Some(tool) = tool {
         click(h, tool);
+    }
+    // Beside the Fresnel tool, the effects it explains are on too: their labels and the
+    // diagram's share are audited with everything a physics lesson turns on.
+    if tool == Some(FRESNEL) {
+        click(h, "Effects");
+        for switch in ["Intensities", "Wavefronts", "Huygens's construction"] {
+            click(h, switch);
+        }
+        h.key_press(egui::Key::Escape);
+        h.run();
     }
     // A few more frames: panels settle their sizes over a frame or two.
     for _ in 0..3 {

@@ -3,7 +3,7 @@
 //! never freezes) with a progress bar and *Cancel*; and the Scenes view's picture export, PNG
 //! or SVG by the file's extension.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::thread::JoinHandle;
@@ -15,8 +15,10 @@ use super::typed::status;
 use refraction_diagram::animation::Animation;
 use refraction_diagram::overlay::PanZoom;
 use refraction_diagram::{ExplorerState, Overlay};
+use refraction_render::SIZE_LIMITS;
 use refraction_render::animation::{AnimationSpec, FPS_LIMITS, FRAME_LIMITS, export_gif};
-use refraction_render::{RenderError, SIZE_LIMITS};
+use refraction_render::atomic::check_writable;
+use refraction_render::format::ImageFormat;
 use refraction_scene::Scene;
 
 /// The size of an exported animation when none is chosen: a slide's width, small enough to
@@ -63,11 +65,14 @@ impl Default for AnimationExport {
     }
 }
 
-/// What the export thread's outcome says.
-fn outcome(result: Result<(), RenderError>, path: &std::path::Path) -> Result<String, String> {
-    match result {
-        Ok(()) => Ok(format!("wrote {}", path.display())),
-        Err(RenderError::Cancelled) => Err("cancelled: nothing was written".to_owned()),
+/// Checks `path` as the GIF to write: a `.gif` name (in any case) where a file can be written.
+fn check_gif_path(path: &Path) -> Result<(), String> {
+    match ImageFormat::for_path(path) {
+        Ok(ImageFormat::Gif) => check_writable(path).map_err(|e| e.to_string()),
+        Ok(_) => Err(format!(
+            "{}: an animation is written as a GIF; give a name ending in .gif",
+            path.display()
+        )),
         Err(e) => Err(e.to_string()),
     }
 }
@@ -86,19 +91,10 @@ impl AnimationExport {
             size: self.size,
         };
         let path = PathBuf::from(self.path.trim());
-        let checked = spec.check().map_err(|e| e.to_string()).and_then(|()| {
-            let gif = path
-                .extension()
-                .is_some_and(|e| e.eq_ignore_ascii_case("gif"));
-            if gif {
-                refraction_render::atomic::check_writable(&path).map_err(|e| e.to_string())
-            } else {
-                Err(format!(
-                    "{}: an animation is written as a GIF; give a name ending in .gif",
-                    path.display()
-                ))
-            }
-        });
+        let checked = spec
+            .check()
+            .map_err(|e| e.to_string())
+            .and_then(|()| check_gif_path(&path));
         if let Err(why) = checked {
             self.status = Some(Err(why));
             return;
@@ -120,7 +116,10 @@ impl AnimationExport {
                 !stop.load(Ordering::Relaxed)
             });
             ctx.request_repaint();
-            outcome(result, &path)
+            // A cancelled export says so in the error's words: nothing was written.
+            result
+                .map(|()| format!("wrote {}", path.display()))
+                .map_err(|e| e.to_string())
         });
         self.status = None;
         self.running = Some(Job {

@@ -42,6 +42,15 @@ impl Tool {
         }
     }
 
+    /// The most of the window's width the tool takes in presentation: the Fresnel plot reads
+    /// in a narrower strip, which leaves the diagram it explains more room.
+    fn presentation_share(self) -> f32 {
+        match self {
+            Self::Fresnel => PRESENTATION_TOOL_SHARE * 0.88,
+            _ => PRESENTATION_TOOL_SHARE,
+        }
+    }
+
     /// The panel's first height in points: what the tool shows without scrolling.
     fn height(self) -> f32 {
         match self {
@@ -93,7 +102,7 @@ impl Tools {
         let window = ui.ctx().content_rect();
         let panel = if presenting {
             // At most a third of the width: the diagram keeps half the window (tested).
-            let limit = window.width() * PRESENTATION_TOOL_SHARE;
+            let limit = window.width() * tool.presentation_share();
             Panel::right(format!("{} (presentation)", tool.label()))
                 .resizable(true)
                 .default_size(limit)

@@ -139,11 +139,16 @@ pub struct Frame {
 impl Frame {
     /// The frame drawn on a canvas of `size` with `overlay`, back to front: the diagram with
     /// this frame's wavefronts (if any, else the overlay's) over the media and under
-    /// everything else.
+    /// everything else; Huygens's construction is drawn when the overlay asks for it.
     #[must_use]
     pub fn primitives(&self, size: Vec2, overlay: &Overlay) -> Vec<Primitive> {
+        let huygens = overlay.waves.is_some_and(|w| w.huygens);
+        let waves = self.waves.map(|w| WaveOptions {
+            huygens: w.huygens || huygens,
+            ..w
+        });
         let overlay = Overlay {
-            waves: self.waves.or(overlay.waves),
+            waves: waves.or(overlay.waves),
             ..overlay.clone()
         };
         Diagram::with_overlay(&self.state, size, &overlay).primitives()
@@ -218,5 +223,27 @@ mod tests {
                 .iter()
                 .all(|p| matches!(p, Primitive::Text(_)))
         );
+    }
+
+    #[test]
+    fn a_wavefront_frame_draws_huygens_when_the_overlay_asks_and_not_otherwise() {
+        let frame = Animation::Wavefronts.frame(&ExplorerState::default(), 0, 4);
+        let size = Vec2::new(800.0, 600.0);
+        let huygens = |overlay: &Overlay| {
+            frame
+                .primitives(size, overlay)
+                .iter()
+                .filter(|p| matches!(p, Primitive::Text(l) if l.text.starts_with("Huygens")))
+                .count()
+        };
+        assert_eq!(huygens(&Overlay::default()), 0);
+        let asked = Overlay {
+            waves: Some(WaveOptions {
+                phase: 0.5,
+                huygens: true,
+            }),
+            ..Overlay::default()
+        };
+        assert_eq!(huygens(&asked), 1);
     }
 }

@@ -265,12 +265,11 @@ impl Painter<'_> {
                 self.line(h.a, q, halo);
                 self.line(h.a, q, self.stroke(2.2, self.palette.t, Dash::Solid));
                 self.line(h.b, q, ink);
-                "Huygens: while the front travels vi·Δt to A,\nthe wavelet from B grows \
-                 to vt·Δt;\nthe new front is the tangent from A"
+                "Huygens: the front reaches A Δt after B;\nB's wavelet grows vt·Δt, the new \
+                 front touches it"
             }
             None => {
-                "Huygens: the wavelet from B outgrows BA,\nno tangent from A: total internal \
-                 reflection"
+                "Huygens: B's wavelet outgrows BA:\nno tangent from A, total internal reflection"
             }
         };
         for (point, name) in [(h.b, "B"), (h.a, "A")] {
