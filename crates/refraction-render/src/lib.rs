@@ -452,6 +452,47 @@ mod tests {
     }
 
     #[test]
+    fn the_extension_picks_the_format_and_the_effects_switched_on_are_exported() {
+        use refraction_diagram::intensities::Polarisation;
+        use refraction_diagram::wavefronts::WaveOptions;
+        let state = ExplorerState::default();
+        let overlay = Overlay {
+            intensities: Some(Polarisation::P),
+            waves: Some(WaveOptions::default()),
+            ..Overlay::default()
+        };
+        let path = Path::new("slide.svg");
+        let svg = interface_file(&state, &overlay, ImageFormat::Svg, (640, 360), path).unwrap();
+        let svg = String::from_utf8(svg).unwrap();
+        assert!(svg.contains("T: transmitted"), "the shares are in the SVG");
+        assert!(
+            svg.contains("fronts λ/1.50 apart"),
+            "the wavefronts are in the SVG"
+        );
+        let plain = interface_file(
+            &state,
+            &Overlay::default(),
+            ImageFormat::Svg,
+            (640, 360),
+            path,
+        );
+        assert!(
+            !String::from_utf8(plain.unwrap())
+                .unwrap()
+                .contains("fronts")
+        );
+        let png = interface_file(&state, &overlay, ImageFormat::Png, (640, 360), path).unwrap();
+        assert!(Pixmap::decode_png(&png).is_ok());
+        let gif = Path::new("x.gif");
+        let err = interface_file(&state, &overlay, ImageFormat::Gif, (640, 360), gif);
+        assert!(
+            err.unwrap_err()
+                .to_string()
+                .contains("x.gif: a GIF holds an animation")
+        );
+    }
+
+    #[test]
     fn a_bad_size_says_the_size_and_the_limits_in_one_sentence() {
         let err = RenderError::BadSize {
             width: 20,
