@@ -280,7 +280,11 @@ impl Painter<'_> {
                 0.9,
             );
         }
-        let at = h.start + surface_normal * 0.15;
+        // Beyond A (clear of its name), just above the surface: the rays and ghosts leave the
+        // hit point steeply there, while the incoming side is crowded with W, θi and the
+        // candidates.
+        let along = (h.a - h.b).normalize_or(surface_normal.perp());
+        let at = h.a + along * 0.22 + surface_normal * 0.1;
         self.label(text.to_owned(), at, self.palette.ink, 0.8);
     }
 }
