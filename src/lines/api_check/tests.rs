@@ -537,3 +537,25 @@ fn a_long_csv_log_judged_on_many_threads_answers_as_one_thread_does() {
         "line numbers count the header too"
     );
 }
+
+#[test]
+fn an_api_result_that_overflows_is_told_in_words_not_as_nan() {
+    let line = r#"{"uv":[4e240,-1,0],"n":[0,1,0],"etai_over_etat":1.5,"refracted":[1,0,0]}"#;
+    let a = answer(Api::Rtiow, line);
+    let explanation = a["explanation"].as_str().unwrap();
+    assert!(
+        explanation.contains("not finite (NaN or infinite components)"),
+        "{explanation}"
+    );
+    let cleaned = explanation.replace("NaN or infinite", "");
+    assert!(
+        !cleaned.contains("NaN") && !cleaned.contains("inf"),
+        "{explanation}"
+    );
+    assert!(
+        a["mistakes"]
+            .as_array()
+            .unwrap()
+            .contains(&json!("not_unit_input"))
+    );
+}
