@@ -157,8 +157,13 @@ impl Session {
     }
 
     /// The record on one line, or `None` for a line that carries none (a CSV header, a log
-    /// line the pattern does not match).
-    fn record(&mut self, line: &str) -> Result<Option<Record>, String> {
+    /// line the pattern does not match, counted as skipped). The explorer's pasted logs read
+    /// their lines through it, so that they and the command agree.
+    ///
+    /// # Errors
+    /// The line is not a record of the API's fields (the message says why), a log line does
+    /// not match the pattern under `strict`, or the CSV header was unusable.
+    pub fn record(&mut self, line: &str) -> Result<Option<Record>, String> {
         let api = self.options.api;
         match &self.format {
             Format::JsonLines => Record::from_json_line(api, line).map(Some),
