@@ -580,9 +580,8 @@ impl DiagramBuilder<'_> {
         };
         // A student's API names the vectors its own way while their call is shown.
         let names = self.overlay.student.as_ref().and_then(|s| s.names.clone());
-        let (w_text, n_text) = names.map_or((own.to_owned(), "N".to_owned()), |n| {
-            (n.incident, n.normal)
-        });
+        let (w_text, n_text) =
+            names.map_or((own.to_owned(), "N".to_owned()), |n| (n.incident, n.normal));
         let w_dir = self.state.direction(HandleId::W);
         let n_dir = self.state.direction(HandleId::N);
         let w_stroke = self.stroke(3.0, palette.w, Dash::Solid);

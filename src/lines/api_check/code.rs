@@ -56,7 +56,9 @@ impl Code {
                 "the result is not what the API returns for these arguments: your own \
                  implementation differs"
             }
-            Self::MissedTir => "a direction (or NaN) where the API signals total internal reflection",
+            Self::MissedTir => {
+                "a direction (or NaN) where the API signals total internal reflection"
+            }
             Self::NotUnitInput => "the incident vector or the normal is not unit length",
         }
     }
