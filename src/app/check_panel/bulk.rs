@@ -2,7 +2,7 @@
 //! pattern, read by the same [`Session`] as `check --api`; a table of verdicts, one row per
 //! call (bad lines show their error), and a click on a row opens that call in the panel.
 
-use egui::{CollapsingHeader, Grid, RichText, ScrollArea, TextEdit, Ui};
+use egui::{CollapsingHeader, Grid, RichText, TextEdit, Ui};
 
 use super::field;
 use crate::app::paint::color;
@@ -127,26 +127,23 @@ impl Table {
         }
         ui.label(summary);
         let mut opened = None;
-        ScrollArea::vertical()
-            .id_salt("pasted verdicts")
-            .max_height(220.0)
+        // No scroll area of its own: the tool's panel scrolls, and a nested one would keep a
+        // row that is scrolled to (a click, the keyboard) out of view.
+        Grid::new("pasted verdicts grid")
+            .striped(true)
+            .num_columns(4)
             .show(ui, |ui| {
-                Grid::new("pasted verdicts grid")
-                    .striped(true)
-                    .num_columns(4)
-                    .show(ui, |ui| {
-                        for heading in ["line", "ok", "mistakes", "explanation"] {
-                            ui.label(RichText::new(heading).strong());
-                        }
-                        ui.end_row();
-                        for (index, row) in self.rows.iter().enumerate() {
-                            if row.show(ui, *selected == Some(index)) {
-                                *selected = Some(index);
-                                opened = row.verdict.as_ref().ok().map(|(r, _)| r.clone());
-                            }
-                            ui.end_row();
-                        }
-                    });
+                for heading in ["line", "ok", "mistakes", "explanation"] {
+                    ui.label(RichText::new(heading).strong());
+                }
+                ui.end_row();
+                for (index, row) in self.rows.iter().enumerate() {
+                    if row.show(ui, *selected == Some(index)) {
+                        *selected = Some(index);
+                        opened = row.verdict.as_ref().ok().map(|(r, _)| r.clone());
+                    }
+                    ui.end_row();
+                }
             });
         opened
     }

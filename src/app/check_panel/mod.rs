@@ -82,6 +82,8 @@ pub struct CheckPanel {
     bulk: bulk::Bulk,
     outcome: Option<Result<Checked, String>>,
     copied: Option<String>,
+    /// Scroll the verdict into view next frame: it is new.
+    reveal: bool,
 }
 
 /// What a verdict's match is called on the diagram and in the headline.
@@ -279,6 +281,7 @@ impl CheckPanel {
         }
         self.copied = None;
         self.outcome = Some(outcome);
+        self.reveal = true;
     }
 
     /// The verdict shown, if the explorer still shows the case it was made for.
@@ -303,8 +306,16 @@ impl CheckPanel {
         });
     }
 
-    /// The last verdict, or why the fields could not be checked.
+    /// The last verdict, or why the fields could not be checked; a new one is scrolled into
+    /// view (the panel is short at the desk and narrow in presentation).
     fn verdict(&mut self, ui: &mut Ui, state: &ExplorerState) {
+        let shown = ui.scope(|ui| self.verdict_ui(ui, state)).response;
+        if std::mem::take(&mut self.reveal) {
+            shown.scroll_to_me(Some(egui::Align::Min));
+        }
+    }
+
+    fn verdict_ui(&mut self, ui: &mut Ui, state: &ExplorerState) {
         let drawn = self.current(state).is_some();
         match &self.outcome {
             None => {}
