@@ -395,3 +395,43 @@ fn a_pasted_rtiow_log_gives_a_row_per_call_and_a_click_opens_one() {
             .is_some()
     );
 }
+
+#[test]
+fn the_panel_reads_at_13_px_and_leaves_the_diagram_its_room_at_1280_by_720() {
+    for present in [false, true] {
+        let mut h = Harness::builder()
+            .with_context_setup(refraction_explorer::app::install_fonts)
+            .with_size(egui::Vec2::new(1280.0, 720.0))
+            .with_theme(egui::Theme::Light)
+            .build_ui_state(
+                |ui, app: &mut Explorer| app.show(ui),
+                Explorer::new(ExplorerState::default()),
+            );
+        h.run();
+        if present {
+            click(&mut h, "🖵 Presentation");
+        }
+        click(&mut h, "✔ Check my T");
+        check_glsl(&mut h, &[("eta", "1.5"), ("result", "0.45, -0.893029, 0")]);
+        reach(&mut h, "📋 Paste log lines");
+        paste_log(
+            &mut h,
+            "I,N,eta,result\n\"0.6,-0.8,0\",\"0,1,0\",1.5,\"0,0,0\"\n1,2",
+        );
+        reach(&mut h, "Check the lines");
+        assert!(h.query_by_label("line 2").is_some());
+        let least = if present { 20.0 } else { 13.0 };
+        let window = h.ctx.content_rect();
+        let canvas = h.get_by_role(egui::Role::Image).rect();
+        let smallest = common::smallest_text_px(&h, canvas);
+        assert!(smallest >= least, "present {present}: {smallest} px");
+        let share = canvas.area() / window.area();
+        // In presentation the tool sits beside the diagram (the layout audit's 45 %); at the
+        // desk it takes at most 45 % of the height under it.
+        if present {
+            assert!(share >= 0.45, "the diagram has {share} of the window");
+        } else {
+            assert!(canvas.height() >= window.height() * 0.4, "{canvas:?}");
+        }
+    }
+}

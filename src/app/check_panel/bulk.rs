@@ -4,7 +4,7 @@
 
 use egui::{CollapsingHeader, Grid, RichText, TextEdit, Ui};
 
-use super::field;
+use super::{JSON_LINE_START, field};
 use crate::app::paint::color;
 use crate::app::typed::error_label;
 use crate::lines::api_check::{
@@ -53,13 +53,13 @@ pub struct Bulk {
 
 /// How the lines are written: by the pattern when one is given, else JSON Lines when the first
 /// line is an object, else CSV with that line as its header.
-fn format(api: Api, pattern: &str, text: &str) -> Result<(Format, &'static str), String> {
+fn how_written(api: Api, pattern: &str, text: &str) -> Result<(Format, &'static str), String> {
     if !pattern.trim().is_empty() {
         let pattern = Pattern::parse(api, pattern.trim())?;
         return Ok((Format::Pattern(pattern), "the pattern"));
     }
     let first = text.lines().find(|l| !l.trim().is_empty()).unwrap_or("");
-    if first.trim_start().starts_with('{') {
+    if first.trim_start().starts_with(JSON_LINE_START) {
         Ok((Format::JsonLines, "JSON Lines"))
     } else {
         Ok((Format::Csv, "CSV (the first line is the header)"))
@@ -68,7 +68,7 @@ fn format(api: Api, pattern: &str, text: &str) -> Result<(Format, &'static str),
 
 /// Judges every non-empty line of `text` (up to [`MAX_LINES`]) for `api`.
 fn judge(api: Api, pattern: &str, text: &str) -> Result<Table, String> {
-    let (format, read_as) = format(api, pattern, text)?;
+    let (format, read_as) = how_written(api, pattern, text)?;
     let options = Options::new(api);
     let mut session = Session::new(options, format, false, false);
     let lines: Vec<(usize, &str)> = text
