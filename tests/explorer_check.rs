@@ -277,7 +277,7 @@ fn a_glsl_call_with_eta_upside_down_is_named_drawn_in_glsls_convention_and_copie
     );
     assert!(h.query_by_label_contains("pass 1/1.5").is_some());
     assert!(
-        h.query_by_label_contains("glsl returns [0.45000001788139343")
+        h.query_by_label("GLSL returns (0.45, -0.893028, 0)")
             .is_some()
     );
     assert!(
@@ -325,6 +325,15 @@ fn a_glsl_call_with_eta_upside_down_is_named_drawn_in_glsls_convention_and_copie
     assert!((state.w() - DVec3::new(-0.6, 0.8, 0.0)).length() < 1e-12);
     let names = h.state().overlay().student.unwrap().names.unwrap();
     assert_eq!(names.incident, "wi (back toward the origin)");
+    assert!(
+        h.query_by_label("pbrt returns etap: 1.5, returned: true, wt: (0.4, -0.916515, 0)")
+            .is_some()
+    );
+    // Another API is another question: the verdict and its drawn vector go.
+    reach(&mut h, "RTIOW");
+    assert!(h.query_by_label_contains("Right: what pbrt-v4").is_none());
+    assert_eq!(h.state().overlay().student, None);
+    reach(&mut h, "pbrt");
     // A bad field says which, and the state stays.
     common::replace_text(&mut h, "eta", "-2");
     reach(&mut h, "Check");

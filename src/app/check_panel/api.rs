@@ -22,6 +22,7 @@ use refraction_diagram::model::INDEX_RANGE;
 use refraction_diagram::overlay::{StudentRay, VectorNames};
 use refraction_kernel::Convention;
 use refraction_kernel::api::{Api, Args};
+use serde_json::Value as Json;
 
 /// The truth fields the panel offers (the bookkeeping ones, `path`, `point` and `precision`,
 /// belong to logs).
@@ -29,6 +30,8 @@ const TRUTH: [&str; 4] = ["from", "to", "travel", "entering"];
 
 /// How an API's case is drawn and what its arguments mean, in the panel's words.
 struct Drawn {
+    /// The API's short name, as the selector shows it.
+    owner: &'static str,
     /// The explorer's convention that draws the API's incident vector as the API means it.
     convention: Convention,
     /// The label of the incident vector's arrow.
@@ -40,6 +43,7 @@ struct Drawn {
 fn drawn(api: Api) -> Drawn {
     match api {
         Api::Glsl => Drawn {
+            owner: "GLSL",
             convention: Convention::AlongRay,
             incident: "I (direction of travel)",
             about: "I is the direction the ray travels, drawn as W along the ray (Section 2). \
@@ -47,6 +51,7 @@ fn drawn(api: Api) -> Drawn {
                     vector means total internal reflection.",
         },
         Api::Pbrt => Drawn {
+            owner: "pbrt",
             convention: Convention::TowardOrigin,
             incident: "wi (back toward the origin)",
             about: "wi points back toward where the ray came from (−ray.d), drawn as W toward \
@@ -55,6 +60,7 @@ fn drawn(api: Api) -> Drawn {
                     (μt/μi with n facing wi). false means total internal reflection.",
         },
         Api::Rtiow => Drawn {
+            owner: "RTIOW",
             convention: Convention::AlongRay,
             incident: "uv (direction of travel)",
             about: "uv is the unit direction the ray travels, drawn as W along the ray \
@@ -62,6 +68,7 @@ fn drawn(api: Api) -> Drawn {
                     μi/μt. refract has no TIR test: the caller's cannot_refract reflects.",
         },
         Api::Mitsuba => Drawn {
+            owner: "Mitsuba",
             convention: Convention::TowardOrigin,
             incident: "wi (away from the surface)",
             about: "wi points away from the surface, back along the ray, drawn as W toward the \
@@ -89,6 +96,30 @@ fn value_text(value: &Value) -> String {
         Value::Flag(b) => b.to_string(),
         Value::Null => "null".to_owned(),
         Value::Label(text) => text.clone(),
+    }
+}
+
+/// The API's answer (`api_result`) for reading: vectors as `(x, y, z)` and numbers with six
+/// digits, an object's fields as `name: value`.
+fn readable(json: &Json) -> String {
+    match json {
+        Json::Number(x) => x.as_f64().map_or_else(|| x.to_string(), short),
+        Json::Array(items) => {
+            let numbers: Option<Vec<f64>> = items.iter().map(Json::as_f64).collect();
+            match numbers.as_deref() {
+                Some(&[x, y, z]) => short_vector([x, y, z]),
+                _ => format!(
+                    "[{}]",
+                    items.iter().map(readable).collect::<Vec<_>>().join(", ")
+                ),
+            }
+        }
+        Json::Object(fields) => fields
+            .iter()
+            .map(|(name, value)| format!("{name}: {}", readable(value)))
+            .collect::<Vec<_>>()
+            .join(", "),
+        other => other.to_string(),
     }
 }
 
@@ -124,8 +155,31 @@ pub struct Judged {
     diagnosis: Diagnosis,
     /// The right arguments for the ray, in the API's convention.
     right: Args<f64>,
-    /// The indices drawn, or why the case cannot be drawn.
-    drawn: Result<(f64, f64), String>,
+    /// The right call as the explorer's state, or why it cannot be drawn.
+    picture: Result<ExplorerState, String>,
+}
+
+/// The right call in `api`'s convention as the explorer's state, with μ = `mu` drawn by the
+/// truth's indices when they agree.
+fn picture(
+    api: Api,
+    right: Args<f64>,
+    mu: f64,
+    from_to: Option<(f64, f64)>,
+) -> Result<ExplorerState, String> {
+    let (low, high) = INDEX_RANGE;
+    let (mu_i, mu_t) = indices(from_to, mu);
+    if ![mu_i, mu_t].iter().all(|x| (low..=high).contains(x)) {
+        return Err(format!(
+            "μ = {} needs indices outside the explorer's {low}…{high}",
+            short(mu)
+        ));
+    }
+    let Args {
+        incident, normal, ..
+    } = right;
+    ExplorerState::new(incident, normal, mu_i, mu_t, drawn(api).convention)
+        .map_err(|e| e.to_string())
 }
 
 impl Judged {
@@ -137,32 +191,13 @@ impl Judged {
             m.normal
         };
         let right = call.api.arguments::<f64>(m.travel, facing, m.mu);
-        let (low, high) = INDEX_RANGE;
-        let (mu_i, mu_t) = indices(call.truth.from_to, m.mu);
-        let drawn = if [mu_i, mu_t].iter().all(|x| (low..=high).contains(x)) {
-            Ok((mu_i, mu_t))
-        } else {
-            Err(format!(
-                "μ = {} needs indices outside the explorer's {low}…{high}",
-                short(m.mu)
-            ))
-        };
+        let picture = picture(call.api, right, m.mu, call.truth.from_to);
         Self {
             call,
             diagnosis,
             right,
-            drawn,
+            picture,
         }
-    }
-
-    /// The right call as the explorer's state, in the API's convention.
-    fn picture(&self) -> Result<ExplorerState, String> {
-        let (mu_i, mu_t) = self.drawn.clone()?;
-        let convention = drawn(self.call.api).convention;
-        let Args {
-            incident, normal, ..
-        } = self.right;
-        ExplorerState::new(incident, normal, mu_i, mu_t, convention).map_err(|e| e.to_string())
     }
 
     /// The student's result with the API's names for the vectors.
@@ -220,15 +255,20 @@ impl Judged {
             ui.label(format!("• {}: {}", code.name(), code.meaning()));
         }
         ui.label(&d.explanation);
-        ui.label(RichText::new(format!("{} returns {}", api.name(), d.api_result)).monospace());
+        ui.label(format!(
+            "{} returns {}",
+            drawn(api).owner,
+            readable(&d.api_result)
+        ))
+        .on_hover_text(d.api_result.to_string());
         let right = d.t.map_or_else(
             || "There is no refracted ray: total internal reflection.".to_owned(),
             |t| format!("The right T = {}", short_vector(t)),
         );
         ui.label(right);
         let n = names(api);
-        let drawn = match &self.drawn {
-            Ok((mu_i, mu_t)) => format!(
+        let drawn = match &self.picture {
+            Ok(state) => format!(
                 "Drawn: the right call, {} = {}, {} = {}, {} = {} (μi = {}, μt = {}).",
                 n.incident,
                 short_vector(self.right.incident.to_array()),
@@ -236,8 +276,8 @@ impl Judged {
                 short_vector(self.right.normal.to_array()),
                 n.eta,
                 short(self.right.eta),
-                short(*mu_i),
-                short(*mu_t),
+                short(state.mu_i()),
+                short(state.mu_t()),
             ),
             Err(why) => format!("Not drawn: {why}."),
         };
@@ -312,7 +352,7 @@ impl ApiFields {
         let (call, diagnosis) = check_record(&record, &Options::new(api))?;
         let judged = Judged::new(call, diagnosis);
         Ok(Checked {
-            opened: judged.picture().ok(),
+            opened: judged.picture.clone().ok(),
             student: judged.student(),
             shown: Shown::Api(Box::new(judged)),
         })

@@ -296,14 +296,20 @@ impl CheckPanel {
         self.current(state).map(|c| c.student.clone())
     }
 
-    /// The selector of whose fields to read.
+    /// The selector of whose fields to read. Another choice is another question: the last
+    /// verdict (and the vector it drew) goes.
     fn selector(&mut self, ui: &mut Ui) {
+        let before = self.source;
         ui.horizontal_wrapped(|ui| {
             ui.label("Your code calls:");
             for (source, label) in SOURCES {
                 ui.selectable_value(&mut self.source, source, label);
             }
         });
+        if self.source != before {
+            self.outcome = None;
+            self.copied = None;
+        }
     }
 
     /// The last verdict, or why the fields could not be checked; a new one is scrolled into
