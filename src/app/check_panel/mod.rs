@@ -131,10 +131,23 @@ fn vector_field(text: &str, name: &str) -> Result<[f64; 3], String> {
 }
 
 /// A text field labelled `label`, at most `width` wide (less in a narrow panel); whether Enter
-/// was pressed in it.
+/// was pressed in it. In a wrapping row the label and its field start a new row together
+/// rather than be split across two.
 fn field(ui: &mut Ui, label: &str, text: &mut String, width: f32) -> bool {
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    let label_width = ui
+        .painter()
+        .layout_no_wrap(label.to_owned(), font, egui::Color32::PLACEHOLDER)
+        .size()
+        .x;
+    let gap = ui.spacing().item_spacing.x;
+    let width = width
+        .min(ui.max_rect().width() - label_width - gap)
+        .max(60.0);
+    if ui.available_width() < label_width + gap + width {
+        ui.end_row();
+    }
     let name = ui.label(label);
-    let width = width.min(ui.available_width().max(60.0));
     let response = ui
         .add(TextEdit::singleline(text).desired_width(width))
         .labelled_by(name.id);
@@ -345,7 +358,7 @@ impl CheckPanel {
             }
         }
         if let Some(text) = &self.copied {
-            ui.label(RichText::new(text).monospace().small());
+            ui.label(RichText::new(text).monospace());
         }
     }
 
