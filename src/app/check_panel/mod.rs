@@ -144,7 +144,7 @@ fn field(ui: &mut Ui, label: &str, text: &mut String, width: f32) -> bool {
     let width = width
         .min(ui.max_rect().width() - label_width - gap)
         .max(60.0);
-    if ui.available_width() < label_width + gap + width {
+    if ui.available_size_before_wrap().x < label_width + gap + width {
         ui.end_row();
     }
     let name = ui.label(label);
