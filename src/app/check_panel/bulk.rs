@@ -87,16 +87,20 @@ fn judge(api: Api, pattern: &str, text: &str) -> Result<Table, String> {
             }
             Err(e) => Err(e),
         };
-        match &verdict {
-            Ok((_, diagnosis)) => session.tally.add_verdict(diagnosis),
-            Err(_) => session.tally.add("unreadable"),
-        }
         rows.push(Row { line, verdict });
+    }
+    // The session counted the skipped lines; the verdicts are counted here, as `check` does.
+    let mut tally = session.tally().clone();
+    for row in &rows {
+        match &row.verdict {
+            Ok((_, diagnosis)) => tally.add_verdict(diagnosis),
+            Err(_) => tally.add("unreadable"),
+        }
     }
     Ok(Table {
         read_as,
         rows,
-        tally: session.tally,
+        tally,
         left_out,
     })
 }
