@@ -230,7 +230,10 @@ fn each_api_shows_its_own_fields_the_truth_and_its_convention() {
     ];
     for (api, fields, convention) in apis {
         click(&mut h, api);
-        for label in fields.iter().chain(&["from", "to", "travel", "entering"]) {
+        for label in fields
+            .iter()
+            .chain(&["precision", "from", "to", "travel", "entering"])
+        {
             assert!(has_field(&h, label), "{api}: no {label}");
         }
         assert!(!has_field(&h, "Your T"), "{api}: the own fields are hidden");
@@ -239,6 +242,13 @@ fn each_api_shows_its_own_fields_the_truth_and_its_convention() {
             "{api}: no convention {convention}"
         );
     }
+    // The precision the judge assumes is shown: the book computes in double, GLSL in float.
+    click(&mut h, "RTIOW");
+    let precision = h.get_by_role_and_label(egui::Role::TextInput, "precision");
+    assert_eq!(precision.value().unwrap(), "f64");
+    click(&mut h, "GLSL");
+    let precision = h.get_by_role_and_label(egui::Role::TextInput, "precision");
+    assert_eq!(precision.value().unwrap(), "f32");
     // pbrt's wi is filled from the current case back toward the origin, eta = μt/μi.
     click(&mut h, "pbrt");
     let w = h.state().state().w();

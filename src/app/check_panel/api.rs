@@ -24,9 +24,11 @@ use refraction_kernel::Convention;
 use refraction_kernel::api::{Api, Args};
 use serde_json::Value as Json;
 
-/// The truth fields the panel offers (the bookkeeping ones, `path`, `point` and `precision`,
-/// belong to logs).
+/// The truth fields the panel offers (`path` and `point` belong to logs of whole paths).
 const TRUTH: [&str; 4] = ["from", "to", "travel", "entering"];
+
+/// The precision the student's code computes in, shown with the call (it sets the tolerance).
+const PRECISION: &str = "precision";
 
 /// How an API's case is drawn and what its arguments mean, in the panel's words.
 struct Drawn {
@@ -128,7 +130,7 @@ fn shown_fields(api: Api) -> [Vec<(&'static str, Kind)>; 2] {
     let all = fields::all(api);
     let own = all
         .iter()
-        .filter(|(name, _)| !fields::COMMON.iter().any(|(c, _)| c == name))
+        .filter(|(name, _)| *name == PRECISION || !fields::COMMON.iter().any(|(c, _)| c == name))
         .copied()
         .collect();
     let truth = all
@@ -310,7 +312,7 @@ pub struct ApiFields {
 
 impl ApiFields {
     /// Fills `api`'s argument fields and the indices from the explorer's case, in the API's
-    /// convention; the result is left for the student to fill.
+    /// convention, and the API's usual precision; the result is left for the student to fill.
     fn take_case(&mut self, api: Api, state: &ExplorerState) {
         let r = state_file::request(state);
         let w = DVec3::from_array(r.w);
@@ -329,6 +331,7 @@ impl ApiFields {
             (names.eta, args.eta.to_string()),
             ("from", r.mu_i.to_string()),
             ("to", r.mu_t.to_string()),
+            (PRECISION, fields::usual_precision(api).name().to_owned()),
         ] {
             self.texts.insert((api, name), text);
         }
@@ -337,17 +340,26 @@ impl ApiFields {
     /// Fills `api`'s fields from a pasted line's record: its values, the rest emptied.
     pub fn fill_from(&mut self, api: Api, record: &Record) {
         for (name, _) in fields::all(api) {
-            let text = record.get(name).map(value_text).unwrap_or_default();
+            let text = match record.get(name) {
+                Some(value) => value_text(value),
+                // What the judge assumed, shown rather than left implicit.
+                None if name == PRECISION => fields::usual_precision(api).name().to_owned(),
+                None => String::new(),
+            };
             self.texts.insert((api, name), text);
         }
     }
 
-    /// Reads and judges `api`'s fields.
+    /// Reads and judges `api`'s fields (those the panel shows: a pasted line's `path` and
+    /// `point` are not kept).
     pub fn check(&self, api: Api) -> Result<Checked, String> {
-        let texts = fields::all(api).into_iter().filter_map(|(name, _)| {
-            let text = self.texts.get(&(api, name))?;
-            (!text.trim().is_empty()).then_some((name, text.as_str()))
-        });
+        let texts = shown_fields(api)
+            .into_iter()
+            .flatten()
+            .filter_map(|(name, _)| {
+                let text = self.texts.get(&(api, name))?;
+                (!text.trim().is_empty()).then_some((name, text.as_str()))
+            });
         let record = Record::from_texts(api, texts)?;
         let (call, diagnosis) = check_record(&record, &Options::new(api))?;
         let judged = Judged::new(call, diagnosis);
@@ -408,7 +420,7 @@ mod tests {
     fn every_api_shows_its_own_fields_and_the_truth() {
         let [own, truth] = shown_fields(Api::Pbrt);
         let own: Vec<&str> = own.iter().map(|(n, _)| *n).collect();
-        assert_eq!(own, ["wi", "n", "eta", "wt", "returned"]);
+        assert_eq!(own, ["wi", "n", "eta", "wt", "returned", "precision"]);
         let truth: Vec<&str> = truth.iter().map(|(n, _)| *n).collect();
         assert_eq!(truth, TRUTH);
     }
