@@ -148,35 +148,61 @@ struct Reader {
     header: std::sync::OnceLock<Result<csv::Header, String>>,
 }
 
+/// What one line holds before it is judged.
+enum Read {
+    /// The fields of a call, or why the line holds none that can be read.
+    Record(Result<Record, String>),
+    /// A log line the pattern does not match.
+    Unmatched,
+    /// A CSV line read before the header was known.
+    Deferred,
+}
+
 impl Reader {
-    /// Judges one line, or leaves it for [`Books::settle`] when it needs the run's state.
-    fn judge(&self, line: &str) -> Judged {
+    /// Reads one line's fields, as far as that can be done without the run's state.
+    fn read(&self, line: &str) -> Read {
         let api = self.options.api;
-        let record = match &self.format {
+        Read::Record(match &self.format {
             Format::JsonLines => Record::from_json_line(api, line),
             Format::Pattern(pattern) => match pattern.capture(line) {
                 Some(texts) => Record::from_texts(api, texts),
-                None => return Judged::Unmatched,
+                None => return Read::Unmatched,
             },
             Format::Csv => match self.header.get() {
-                None => return Judged::Deferred(line.to_owned()),
+                None => return Read::Deferred,
                 Some(Ok(header)) => header.record(line),
                 Some(Err(e)) => Err(format!("no usable CSV header: {e}")),
             },
-        };
-        Judged::Call(Box::new(
-            record.and_then(|record| check_record(&record, &self.options)),
-        ))
+        })
+    }
+
+    /// Judges one line, or leaves it for [`Books::settle`] when it needs the run's state.
+    fn judge(&self, line: &str) -> Judged {
+        match self.read(line) {
+            Read::Record(record) => Judged::Call(Box::new(
+                record.and_then(|record| check_record(&record, &self.options)),
+            )),
+            Read::Unmatched => Judged::Unmatched,
+            Read::Deferred => Judged::Deferred(line.to_owned()),
+        }
+    }
+
+    /// Takes `line` as the CSV header (called in order, while none is known); why it is
+    /// unusable, if it is.
+    fn take_header(&self, line: &str) -> Option<String> {
+        let header = csv::Header::parse(self.options.api, line);
+        let failed = header.as_ref().err().cloned();
+        // Only this thread sets the header, between chunks: it cannot be set already.
+        let _ = self.header.set(header);
+        failed
     }
 
     /// A CSV line read in order: the header if none is known yet, else a record to judge.
     fn judge_in_order(&self, line: &str) -> Option<Judged> {
         if self.header.get().is_none() {
-            let header = csv::Header::parse(self.options.api, line);
-            let failed = header.as_ref().err().cloned();
-            // Only this thread sets the header, between chunks: it cannot be set already.
-            let _ = self.header.set(header);
-            return failed.map(|e| Judged::Call(Box::new(Err(e))));
+            return self
+                .take_header(line)
+                .map(|e| Judged::Call(Box::new(Err(e))));
         }
         Some(self.judge(line))
     }
@@ -283,6 +309,27 @@ impl Session {
             |line| reader.judge(line),
             |judged| books.settle(reader, judged),
         )
+    }
+
+    /// The record on one line, read in order, for the explorer's pasted logs (so that they
+    /// and the command read lines alike): `None` for a line without a call (a CSV header; a log
+    /// line the pattern does not match, counted as skipped). The caller judges the record.
+    ///
+    /// # Errors
+    /// The line is not a record of the API's fields (the message says why), a log line does
+    /// not match the pattern under `strict`, or the CSV header is unusable.
+    pub fn record(&mut self, line: &str) -> Result<Option<Record>, String> {
+        match self.reader.read(line) {
+            Read::Record(record) => record.map(Some),
+            Read::Unmatched if self.reader.strict => {
+                Err("the line does not match the pattern".to_owned())
+            }
+            Read::Unmatched => {
+                self.books.tally.add(SKIPPED);
+                Ok(None)
+            }
+            Read::Deferred => self.reader.take_header(line).map_or(Ok(None), Err),
+        }
     }
 
     /// The summary of the last path (with `--paths`), once the input has ended.
