@@ -308,8 +308,9 @@ fn audit_scene(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>
     let face = Typeface::egui_default().unwrap();
     let rect = canvas_rect(h);
     let scenes = h.state().scenes();
-    let layout = SceneLayout::new(
-        scenes.trace().bounds,
+    let layout = SceneLayout::for_scene(
+        scenes.scene(),
+        scenes.trace(),
         GVec2::new(rect.width(), rect.height()),
     );
     let picture = ScenePicture::new(scenes.scene(), scenes.trace(), &layout);

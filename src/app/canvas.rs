@@ -7,7 +7,7 @@ use egui::{
 };
 use glam::Vec2;
 
-use super::paint::{color, paint};
+use super::paint::{color, hover_left_out, paint};
 use refraction_diagram::{Diagram, ExplorerState, HandleId, Overlay};
 
 /// Degrees per arrow-key press (Shift: a tenth of it).
@@ -183,6 +183,12 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
     }
     let after = Diagram::with_overlay(state, canvas_size, overlay);
     paint(&painter, &to_screen, &after.primitives());
+    hover_left_out(
+        &response,
+        &to_screen,
+        &after.left_out,
+        after.layout.font * 2.0,
+    );
     response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &after.summary));
     if let Some(handle) = after.handles.iter().find(|h| Some(h.id) == focused) {
         let center = to_screen.transform_pos(Pos2::new(handle.center.x, handle.center.y));

@@ -267,7 +267,7 @@ impl Explorer {
         match self.view {
             View::Interface => self.show_interface(ui),
             View::Scenes => {
-                if let Some(state) = self.scenes.show(ui) {
+                if let Some(state) = self.scenes.show(ui, &self.presentation.palette()) {
                     self.state = state;
                     self.view = View::Interface;
                 }

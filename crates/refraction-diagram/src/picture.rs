@@ -570,13 +570,11 @@ impl DiagramBuilder<'_> {
         let source = toward_source * INCOMING_LENGTH;
         self.halo(Part::Incoming, vec![self.at(source), self.at(DVec2::ZERO)]);
         self.segment(source, DVec2::ZERO, incoming);
-        if palette.label_incoming {
-            let at = self.at(source);
-            let away = self.layout.view.direction(toward_source);
-            let anchor = (Align::away(away.x), Align::away(away.y));
-            let colour = palette.text_shade(palette.incoming);
-            self.label_coloured("incoming ray", at, anchor, 0.8, colour);
-        }
+        let at = self.at(source);
+        let away = self.layout.view.direction(toward_source);
+        let anchor = (Align::away(away.x), Align::away(away.y));
+        let colour = palette.text_shade(palette.incoming);
+        self.label_coloured("incoming ray", at, anchor, 0.8, colour);
         self.shapes.push(Figure::Arrow {
             from: self.at(source),
             to: self.at(source * 0.45),

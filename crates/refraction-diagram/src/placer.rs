@@ -71,6 +71,16 @@ fn convex_overlaps(points: &[Vec2], r: &Rect) -> bool {
         .any(apart)
 }
 
+/// The box of a label whose text measures `extent`, anchored at `at`, with its margin.
+fn boxed(label: &Label, extent: Vec2, at: Vec2) -> Rect {
+    let pad = Vec2::splat(label.size * PAD);
+    let min = at - extent * Vec2::new(label.h.fraction(), label.v.fraction()) - pad;
+    Rect {
+        min,
+        max: min + extent + pad * 2.0,
+    }
+}
+
 /// How far, in steps of 0.6 of the label's size, a label may move from its anchor.
 const MOST_STEPS: usize = 12;
 
@@ -125,13 +135,7 @@ impl<'f> Placer<'f> {
     /// The box a label covers with its anchor at `at`: its text and the background's margin.
     #[must_use]
     pub fn text_box(&self, label: &Label, at: Vec2) -> Rect {
-        let extent = self.face.measure(&label.text, label.size);
-        let pad = Vec2::splat(label.size * PAD);
-        let min = at - extent * Vec2::new(label.h.fraction(), label.v.fraction()) - pad;
-        Rect {
-            min,
-            max: min + extent + pad * 2.0,
-        }
+        boxed(label, self.face.measure(&label.text, label.size), at)
     }
 
     fn free(&self, r: &Rect) -> bool {
@@ -146,15 +150,17 @@ impl<'f> Placer<'f> {
     /// No free spot within [`MOST_STEPS`] steps, or the label is larger than `bounds`.
     pub fn place(&mut self, mut label: Label, bounds: &Rect) -> Result<Label, Label> {
         let step = label.size * 0.6;
+        // Measured once: the text's extent does not depend on where it goes.
+        let extent = self.face.measure(&label.text, label.size);
         let offsets = std::iter::once(Vec2::ZERO)
             .chain((1..=MOST_STEPS).flat_map(|k| DIRECTIONS.map(|d| d * step * k as f32)));
         let spot = offsets.map(|offset| label.at + offset).find_map(|at| {
-            let r = self.text_box(&label, at);
+            let r = boxed(&label, extent, at);
             let shift = (bounds.min - r.min).max(Vec2::ZERO) + (bounds.max - r.max).min(Vec2::ZERO);
             // The box is measured again at the moved anchor, so that what is checked is
             // exactly what a reader of the label's anchor computes.
             let at = at + shift;
-            let moved = self.text_box(&label, at);
+            let moved = boxed(&label, extent, at);
             let inside = moved.min.cmpge(bounds.min).all() && moved.max.cmple(bounds.max).all();
             (inside && self.free(&moved)).then_some((at, moved))
         });
@@ -332,6 +338,7 @@ mod tests {
     }
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
         #[test]
         fn placed_labels_cover_no_obstacle_no_other_label_and_stay_inside(
             obstacles in prop::collection::vec(obstacle(), 0..25),
