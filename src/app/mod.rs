@@ -10,6 +10,7 @@ mod accuracy;
 mod canvas;
 mod check_panel;
 mod controls;
+mod file_dialog;
 mod files_panel;
 mod fonts;
 pub mod history;
