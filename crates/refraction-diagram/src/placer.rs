@@ -192,19 +192,24 @@ impl<'f> Placer<'f> {
 /// (a word wider than `width` gets a line of its own). Existing line breaks are kept.
 #[must_use]
 pub fn wrap(face: &Typeface, text: &str, size: f32, width: f32) -> String {
+    // Widths add up (the font is measured without kerning): each word is measured once.
+    let space = face.width(" ", size);
     let mut lines: Vec<String> = Vec::new();
     for paragraph in text.lines() {
         let mut line = String::new();
+        let mut line_width = 0.0;
         for word in paragraph.split(' ') {
-            let longer = if line.is_empty() {
-                word.to_owned()
-            } else {
-                format!("{line} {word}")
-            };
-            if !line.is_empty() && face.width(&longer, size) > width {
+            let word_width = face.width(word, size);
+            if !line.is_empty() && line_width + space + word_width > width {
                 lines.push(std::mem::replace(&mut line, word.to_owned()));
+                line_width = word_width;
             } else {
-                line = longer;
+                if !line.is_empty() {
+                    line.push(' ');
+                    line_width += space;
+                }
+                line.push_str(word);
+                line_width += word_width;
             }
         }
         lines.push(line);
