@@ -892,6 +892,41 @@ mod tests {
     }
 
     #[test]
+    fn no_two_rays_differ_by_colour_alone_in_any_palette() {
+        use crate::overlay::{Overlay, StudentRay};
+        use crate::palette::{Palette, Theme};
+        let mut state = ExplorerState::default();
+        state.flip_normal();
+        let wrong = state.refraction().candidates[1].t;
+        for theme in Theme::ALL {
+            for safe in [false, true] {
+                let palette = Palette::new(theme, safe);
+                let overlay = Overlay {
+                    palette,
+                    student: Some(StudentRay {
+                        t: wrong,
+                        label: "your T".to_owned(),
+                    }),
+                    ..Overlay::default()
+                };
+                let diagram = Diagram::with_overlay(&state, Vec2::new(1000.0, 700.0), &overlay);
+                // The rays: every arrow but the vectors W and N (and the bug's −N beside N),
+                // which are told apart by their labels and handles.
+                let rays: Vec<(Dash, u32)> = arrows(&diagram)
+                    .into_iter()
+                    .filter(|(_, s)| s.colour != palette.w && s.colour != palette.n)
+                    .map(|(_, s)| (s.dash, s.width.to_bits()))
+                    .collect();
+                assert!(rays.len() >= 7, "{rays:?}");
+                for (i, a) in rays.iter().enumerate() {
+                    assert!(!rays[i + 1..].contains(a), "{theme:?} {safe}: {a:?} twice");
+                }
+                assert!(texts(&diagram).contains(&"incoming ray"));
+            }
+        }
+    }
+
+    #[test]
     fn dragging_handles_moves_w_and_the_indices() {
         let mut state = ExplorerState::default();
         let diagram = Diagram::new(&state, Vec2::new(1000.0, 700.0));
