@@ -121,7 +121,9 @@ fn dragged_to(center: Pos2, press: Pos2, pointer: Pos2) -> Pos2 {
 /// A press and release within egui's click distance is a click, not a drag: it changes
 /// nothing and selects the handle (or, on the background, the W handle) for the arrow keys.
 pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
-    let line = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
+    // The hint's row (a label's row is as tall as a widget's) and the spacing above it.
+    let text = ui.text_style_height(&egui::TextStyle::Body);
+    let line = text.max(ui.spacing().interact_size.y) + 2.0 * ui.spacing().item_spacing.y;
     let size = ui.available_size() - EguiVec2::new(0.0, line);
     let (response, painter) =
         ui.allocate_painter(size.max(EguiVec2::splat(1.0)), Sense::click_and_drag());

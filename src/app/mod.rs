@@ -356,7 +356,11 @@ impl Explorer {
         self.panels.show(ui, &NUMBERS, presenting, |ui| {
             readouts::show(ui, state.refraction(), &overlay.palette);
         });
-        egui::CentralPanel::no_frame().show(ui, |ui| canvas::show(ui, state, &mut overlay));
+        // No margins (the diagram reaches the panels), but the panel's fill under the key hint.
+        let frame = egui::Frame::NONE.fill(ui.visuals().panel_fill);
+        egui::CentralPanel::no_frame()
+            .frame(frame)
+            .show(ui, |ui| canvas::show(ui, state, &mut overlay));
         self.presentation.pan_zoom = overlay.pan_zoom;
     }
 }

@@ -768,32 +768,42 @@ impl ScenePictureBuilder<'_> {
 
 /// The order to draw the paths of `trace` in: as traced for one colour; for several, by the
 /// source ray they come from (the k-th source ray of each colour together, with the
-/// reflections spawned from it), colour after colour within it.
+/// reflections spawned from it), and within one source ray its colours starting from the k-th
+/// (colour k mod n on top of ray k): the colours of one ray lie on one another until they
+/// spread, so a fixed order would put the same colour on top of every ray.
 fn interleaved(trace: &Trace) -> Box<dyn Iterator<Item = usize> + '_> {
-    if trace.counts.wavelengths <= 1 {
+    let colours = trace.counts.wavelengths;
+    if colours <= 1 {
         return Box::new(0..trace.paths.len());
     }
-    let mut rank = vec![0; trace.paths.len()];
-    let (mut count, mut light) = (0, None);
+    // (source ray, colour) of every path, a reflection's those of the path it came from.
+    let mut of = vec![(0, 0); trace.paths.len()];
+    let (mut ray, mut colour, mut light) = (0, 0, None);
     for (i, path) in trace.paths.iter().enumerate() {
-        rank[i] = match path.parent_hit {
+        of[i] = match path.parent_hit {
             None => {
                 if light != Some(path.light) {
-                    (count, light) = (0, Some(path.light));
+                    if light.is_some() {
+                        colour += 1;
+                    }
+                    (ray, light) = (0, Some(path.light));
                 }
-                count += 1;
-                count
+                ray += 1;
+                (ray, colour)
             }
             Some(h) => trace
                 .hits
                 .get(h)
-                .and_then(|hit| rank.get(hit.path).copied())
-                .unwrap_or(0),
+                .and_then(|hit| of.get(hit.path).copied())
+                .unwrap_or((0, 0)),
         };
     }
     let mut order: Vec<usize> = (0..trace.paths.len()).collect();
-    // Stable: within a source ray, colours (and a path's reflections) keep the traced order.
-    order.sort_by_key(|&i| rank[i]);
+    // Stable: a path's reflections keep the traced order after it.
+    order.sort_by_key(|&i| {
+        let (ray, colour) = of[i];
+        (ray, (colour + colours - ray % colours) % colours)
+    });
     Box::new(order.into_iter())
 }
 
@@ -984,6 +994,17 @@ mod tests {
         // The last fifth of the rays drawn (what lies on top) holds every colour traced.
         let top: HashSet<_> = colours[colours.len() * 4 / 5..].iter().collect();
         assert!(top.len() >= trace.counts.wavelengths, "{top:?}");
+        // And no colour is on top of every ray: the source rays, drawn in groups of one ray's
+        // colours, start their groups with every colour in turn.
+        let sources: Vec<usize> = interleaved(&trace)
+            .filter(|&i| trace.paths[i].parent_hit.is_none())
+            .collect();
+        let lasts: HashSet<String> = sources
+            .chunks(trace.counts.wavelengths)
+            .filter_map(|group| group.last())
+            .map(|&i| format!("{:?}", trace.paths[i].light))
+            .collect();
+        assert_eq!(lasts.len(), trace.counts.wavelengths, "{lasts:?}");
     }
 
     #[test]
