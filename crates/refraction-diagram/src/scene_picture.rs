@@ -776,20 +776,23 @@ fn interleaved(trace: &Trace) -> Box<dyn Iterator<Item = usize> + '_> {
     if colours <= 1 {
         return Box::new(0..trace.paths.len());
     }
-    // (source ray, colour) of every path, a reflection's those of the path it came from.
+    // (source ray, colour) of every path, a reflection's those of the path it came from: the
+    // colour is the light's place among the lights met, the ray how many source rays of that
+    // light came before (the tracer may list them colour after colour or ray after ray).
     let mut of = vec![(0, 0); trace.paths.len()];
-    let (mut ray, mut colour, mut light) = (0, 0, None);
+    let mut lights: Vec<(Light, usize)> = Vec::with_capacity(colours);
     for (i, path) in trace.paths.iter().enumerate() {
         of[i] = match path.parent_hit {
             None => {
-                if light != Some(path.light) {
-                    if light.is_some() {
-                        colour += 1;
-                    }
-                    (ray, light) = (0, Some(path.light));
-                }
-                ray += 1;
-                (ray, colour)
+                let colour = lights
+                    .iter()
+                    .position(|(light, _)| *light == path.light)
+                    .unwrap_or_else(|| {
+                        lights.push((path.light, 0));
+                        lights.len() - 1
+                    });
+                lights[colour].1 += 1;
+                (lights[colour].1, colour)
             }
             Some(h) => trace
                 .hits
@@ -999,6 +1002,13 @@ mod tests {
         let sources: Vec<usize> = interleaved(&trace)
             .filter(|&i| trace.paths[i].parent_hit.is_none())
             .collect();
+        for group in sources.chunks(trace.counts.wavelengths) {
+            let lights: HashSet<String> = group
+                .iter()
+                .map(|&i| format!("{:?}", trace.paths[i].light))
+                .collect();
+            assert_eq!(lights.len(), group.len(), "one ray's colours together");
+        }
         let lasts: HashSet<String> = sources
             .chunks(trace.counts.wavelengths)
             .filter_map(|group| group.last())
