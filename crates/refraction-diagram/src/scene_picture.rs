@@ -574,6 +574,14 @@ impl ScenePictureBuilder<'_> {
         let wavelengths = trace.counts.wavelengths.max(1);
         let per_colour = (trace.counts.source_rays / wavelengths).max(1) as f32;
         let width = (2.2 * self.unit() * (30.0 / per_colour).sqrt().min(1.0)).max(0.8);
+        // Dense dispersed light is drawn translucent, so that where many rays of every colour
+        // cross, the colours mix (as light adds up) instead of the last drawn hiding the rest.
+        let blend = if wavelengths > 1 {
+            (30.0 / per_colour).sqrt().clamp(0.2, 1.0)
+        } else {
+            1.0
+        };
+        let faded = |alpha: u8| (f32::from(alpha) * blend).round() as u8;
         let mut white = HashSet::new();
         let mut last_colour = None;
         for path in interleaved(trace).map(|i| &trace.paths[i]) {
@@ -602,7 +610,7 @@ impl ScenePictureBuilder<'_> {
                 let mean = s
                     .intensity
                     .map(|i| (i + s.intensity_end.unwrap_or(i)) * 0.5);
-                let a = opacity(mean);
+                let a = faded(opacity(mean));
                 let (from, to) = (self.layout.at(s.from), self.layout.at(s.to));
                 if a != alpha {
                     self.ray(std::mem::take(&mut run), colour.with_alpha(alpha), width);
