@@ -30,8 +30,8 @@ fn measuring_shows_progress_then_the_verdict() {
         h.step();
     }
     assert!(h.query_by_label_contains("measuring").is_none());
-    // Each variant and precision is named in the legend and in the table.
-    for row in ["stable f32", "batch f64", "trig f32"] {
+    // Each variant and precision is named in the legend and in the table, the SIMD peer too.
+    for row in ["stable f32", "batch f64", "trig f32", "ultraviolet f32"] {
         assert_eq!(h.query_all_by_label(row).count(), 2, "{row}");
     }
 }

@@ -190,3 +190,31 @@ fn fresnel_fractions_and_special_angles_in_both_precisions() {
         (1.0, 0.0)
     );
 }
+
+#[test]
+fn a_line_piped_in_is_answered_before_the_input_ends() {
+    use std::io::{BufRead, BufReader};
+    let mut child = Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
+        .arg("solve")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .expect("the binary starts");
+    let mut stdin = child.stdin.take().unwrap();
+    let mut answers = BufReader::new(child.stdout.take().unwrap());
+    // As a renderer's log arrives: one line, then a pause with the pipe still open.
+    for mu_t in ["1.5", "1.33"] {
+        writeln!(
+            stdin,
+            r#"{{"w":[0.6,-0.8,0],"n":[0,1,0],"mu_i":1,"mu_t":{mu_t}}}"#
+        )
+        .unwrap();
+        stdin.flush().unwrap();
+        let mut answer = String::new();
+        answers.read_line(&mut answer).unwrap();
+        let value: Value = serde_json::from_str(&answer).unwrap();
+        assert_eq!(value["tir"], false, "{answer}");
+    }
+    drop(stdin);
+    assert_eq!(child.wait().unwrap().code(), Some(0));
+}

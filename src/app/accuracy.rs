@@ -13,7 +13,7 @@ use egui_plot::{
 use super::paint::color;
 use refraction_bench::{Config, Report};
 use refraction_diagram::accuracy_plot::{
-    BOUND, FLOOR, axes, decade_label, point_label, variant_colour,
+    BOUND, FLOOR, Marker, axes, decade_label, point_label, variant_colour, variant_marker,
 };
 use refraction_diagram::palette;
 
@@ -179,13 +179,25 @@ fn plot(ui: &mut Ui, report: &Report) {
                 ];
                 plot.points(
                     Points::new(point_label(row), vec![at])
-                        .shape(MarkerShape::Circle)
+                        .shape(marker_shape(variant_marker(row.variant)))
                         .filled(row.precision == "f64")
                         .radius(6.0)
                         .color(color(variant_colour(row.variant))),
                 );
             }
         });
+}
+
+/// egui_plot's shape for a variant's marker.
+fn marker_shape(marker: Marker) -> MarkerShape {
+    match marker {
+        Marker::Circle => MarkerShape::Circle,
+        Marker::Square => MarkerShape::Square,
+        Marker::Diamond => MarkerShape::Diamond,
+        Marker::Triangle => MarkerShape::Up,
+        Marker::Plus => MarkerShape::Plus,
+        Marker::Cross => MarkerShape::Cross,
+    }
 }
 
 /// The report's numbers.

@@ -40,7 +40,8 @@ impl Tool {
     /// The panel's first height in points: what the tool shows without scrolling.
     fn height(self) -> f32 {
         match self {
-            Self::Check => 170.0,
+            // The selector, the fields and a verdict's first lines.
+            Self::Check => 260.0,
             Self::WalkThrough => 140.0,
             Self::Files => 150.0,
         }

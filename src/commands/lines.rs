@@ -94,8 +94,9 @@ pub fn check_api(file: Option<&Path>, options: &Options, reading: &Reading<'_>) 
     };
     let mut session = Session::new(*options, format, reading.strict, reading.paths);
     let mut output = io::stdout().lock();
-    let result =
-        jsonl::answer_lines(input, &mut output, |line| session.answer(line)).and_then(|answered| {
+    let result = session
+        .run(input, &mut output, jsonl::threads())
+        .and_then(|answered| {
             if let Some(summary) = session.finish() {
                 writeln!(output, "{summary}").map_err(LinesError::Write)?;
                 output.flush().map_err(LinesError::Write)?;
@@ -103,7 +104,7 @@ pub fn check_api(file: Option<&Path>, options: &Options, reading: &Reading<'_>) 
             Ok(answered)
         });
     match result {
-        Ok(answered) => finished(&session.tally.summary(), answered && session.all_ok()),
+        Ok(answered) => finished(&session.tally().summary(), answered && session.all_ok()),
         Err(e) => stopped("check", &name, &e),
     }
 }
@@ -129,8 +130,8 @@ pub fn check(file: Option<&Path>) -> ExitCode {
     };
     let mut tally: BTreeMap<&'static str, usize> = BTreeMap::new();
     let mut all_ok = true;
-    let result = jsonl::answer_lines(input, io::stdout().lock(), |line| {
-        let (kind, reply) = match check::answer(line) {
+    let finish = |answer: Result<(String, check::Verdict), String>| {
+        let (kind, reply) = match answer {
             Ok((text, verdict)) => {
                 all_ok &= verdict.ok;
                 let kind = match (verdict.ok, verdict.matches) {
@@ -145,7 +146,14 @@ pub fn check(file: Option<&Path>) -> ExitCode {
         };
         *tally.entry(kind).or_default() += 1;
         reply
-    });
+    };
+    let result = jsonl::answer_lines(
+        input,
+        io::stdout().lock(),
+        jsonl::threads(),
+        check::answer,
+        finish,
+    );
     match result {
         Ok(answered) => {
             let summary: Vec<String> = tally.iter().map(|(k, n)| format!("{n} {k}")).collect();

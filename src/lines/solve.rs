@@ -5,7 +5,7 @@
 //! default, or `"f32"`). Other fields are ignored. A line that cannot be solved is answered with
 //! `{"line": K, "error": "..."}` and the run goes on.
 
-use std::io::{BufRead, Write};
+use std::io::{Read, Write};
 
 use serde::Serialize;
 use serde::de::IgnoredAny;
@@ -296,13 +296,14 @@ pub fn answer(line: &str) -> Result<String, String> {
     }
 }
 
-/// Answers every non-empty line of `input` on `output` (see [`crate::lines::answer_lines`]).
+/// Answers every non-empty line of `input` on `output`, on every core
+/// ([`crate::lines::threads`]) and in input order (see [`crate::lines::answer_lines`]).
 /// Returns whether every line was solved.
 ///
 /// # Errors
 /// Reading `input` or writing `output` failed.
-pub fn run(input: impl BufRead, output: impl Write) -> Result<bool, crate::lines::LinesError> {
-    crate::lines::answer_lines(input, output, answer)
+pub fn run(input: impl Read, output: impl Write) -> Result<bool, crate::lines::LinesError> {
+    crate::lines::answer_lines(input, output, crate::lines::threads(), answer, |r| r)
 }
 
 #[cfg(test)]

@@ -190,15 +190,19 @@ pub fn parse_vector(text: &str) -> Result<Vector, String> {
     Ok(Vector { value, digits })
 }
 
+/// What an explanation says for a number that is not finite: words, never `NaN` or `inf`
+/// written as if they were numbers.
+const NOT_FINITE: &str = "not finite (NaN or infinite)";
+
 /// `x` with 6 significant digits and no trailing zeros, as C's `%g` prints it (`0.666667`,
-/// `1.5`, `1e+201` becomes `1e201`), for explanations.
+/// `1.5`, `1e+201` becomes `1e201`), for explanations; [`NOT_FINITE`] for NaN and ±∞.
 #[must_use]
 pub fn short(x: f64) -> String {
     if x == 0.0 {
         return "0".to_owned();
     }
     if !x.is_finite() {
-        return format!("{x}");
+        return NOT_FINITE.to_owned();
     }
     let exponent = x.abs().log10().floor();
     if (-5.0..6.0).contains(&exponent) {
@@ -220,10 +224,15 @@ pub fn short(x: f64) -> String {
     }
 }
 
-/// A vector as `(x, y, z)` with [`short`] numbers.
+/// A vector as `(x, y, z)` with [`short`] numbers, or words for one with a component that is
+/// not finite.
 #[must_use]
 pub fn short_vector(v: [f64; 3]) -> String {
-    format!("({}, {}, {})", short(v[0]), short(v[1]), short(v[2]))
+    if v.iter().all(|x| x.is_finite()) {
+        format!("({}, {}, {})", short(v[0]), short(v[1]), short(v[2]))
+    } else {
+        "a vector that is not finite (NaN or infinite components)".to_owned()
+    }
 }
 
 /// The largest absolute component (0 for the zero vector; NaN components are skipped).

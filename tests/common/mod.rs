@@ -94,3 +94,35 @@ pub fn undo(h: &mut Harness<'_, Explorer>) {
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run();
 }
+
+/// The smallest size of any non-blank text the last frame drew outside `away_from` (the
+/// diagram's canvas, whose labels are sized by the diagram), in pixels.
+pub fn smallest_text_px(h: &Harness<'_, Explorer>, away_from: egui::Rect) -> f32 {
+    fn smallest_in(shape: &egui::Shape, away_from: egui::Rect) -> f32 {
+        match shape {
+            egui::Shape::Vec(shapes) => shapes
+                .iter()
+                .map(|s| smallest_in(s, away_from))
+                .fold(f32::INFINITY, f32::min),
+            egui::Shape::Text(text) if !away_from.intersects(text.visual_bounding_rect()) => {
+                let job = &text.galley.job;
+                job.sections
+                    .iter()
+                    .filter(|s| {
+                        let words = job.text.get(s.byte_range.start.0..s.byte_range.end.0);
+                        words.is_some_and(|w| !w.trim().is_empty())
+                    })
+                    .map(|s| s.format.font_id.size)
+                    .fold(f32::INFINITY, f32::min)
+            }
+            _ => f32::INFINITY,
+        }
+    }
+    let smallest = h
+        .output()
+        .shapes
+        .iter()
+        .map(|clipped| smallest_in(&clipped.shape, away_from))
+        .fold(f32::INFINITY, f32::min);
+    smallest * h.ctx.pixels_per_point()
+}

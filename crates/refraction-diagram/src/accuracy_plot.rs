@@ -82,7 +82,8 @@ pub fn decade_label(exponent: i32) -> String {
     }
 }
 
-/// The colour of a variant's markers (Okabe–Ito hues, as the diagram's rays).
+/// The colour of a variant's markers (Okabe–Ito hues, as the diagram's rays); the SIMD peer,
+/// ultraviolet, in ink, so that it stands apart from this project's own variants.
 #[must_use]
 pub fn variant_colour(variant: &str) -> Colour {
     match variant {
@@ -90,7 +91,39 @@ pub fn variant_colour(variant: &str) -> Colour {
         "stable" => palette::T,
         "trig" => palette::CRITICAL,
         "glam" => palette::N,
+        "batch" => palette::REFLECTED,
+        "ultraviolet" => palette::INK,
         _ => palette::W,
+    }
+}
+
+/// The shape of a variant's markers, so that no two variants differ by colour alone.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Marker {
+    /// A circle.
+    Circle,
+    /// A square.
+    Square,
+    /// A diamond.
+    Diamond,
+    /// An upward triangle.
+    Triangle,
+    /// A plus sign.
+    Plus,
+    /// A cross.
+    Cross,
+}
+
+/// The marker of a variant: each kernel variant and the peer its own.
+#[must_use]
+pub fn variant_marker(variant: &str) -> Marker {
+    match variant {
+        "stable" => Marker::Circle,
+        "batch" => Marker::Square,
+        "glam" => Marker::Triangle,
+        "trig" => Marker::Plus,
+        "ultraviolet" => Marker::Diamond,
+        _ => Marker::Cross,
     }
 }
 
@@ -355,6 +388,21 @@ impl Plot {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_variant_and_the_peer_has_its_own_colour_and_marker() {
+        let names: Vec<&str> = refraction_kernel::Variant::ALL
+            .iter()
+            .map(|v| v.name())
+            .chain(["ultraviolet"])
+            .collect();
+        for (i, a) in names.iter().enumerate() {
+            for b in &names[i + 1..] {
+                assert_ne!(variant_colour(a), variant_colour(b), "{a} and {b}");
+                assert_ne!(variant_marker(a), variant_marker(b), "{a} and {b}");
+            }
+        }
+    }
 
     #[test]
     fn log_axes_cover_whole_decades() {

@@ -53,6 +53,19 @@ pub struct StudentRay {
     pub t: DVec3,
     /// What it is, e.g. `your T: wrong side`.
     pub label: String,
+    /// What the student's API calls W and N, drawn instead of those names while their case is
+    /// shown (`None`: this project's own W and N).
+    pub names: Option<VectorNames>,
+}
+
+/// The labels of the incident vector and the normal in a student's API, such as
+/// `wi (back toward the origin)` and `n` for pbrt.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct VectorNames {
+    /// The label of W's arrow.
+    pub incident: String,
+    /// The label of N's arrow.
+    pub normal: String,
 }
 
 /// A part of the diagram that a walk-through step can highlight.

@@ -607,16 +607,20 @@ impl DiagramBuilder<'_> {
     /// their handles go.
     fn vectors(&mut self, r: &Refraction<f64>) -> [DVec2; 2] {
         let palette = self.palette;
-        let w_text = match self.state.convention() {
+        let own = match self.state.convention() {
             Convention::AlongRay => "W (along the ray)",
             Convention::TowardOrigin => "W (toward the origin)",
         };
+        // A student's API names the vectors its own way while their call is shown.
+        let names = self.overlay.student.as_ref().and_then(|s| s.names.clone());
+        let (w_text, n_text) =
+            names.map_or((own.to_owned(), "N".to_owned()), |n| (n.incident, n.normal));
         let w_dir = self.state.direction(HandleId::W);
         let n_dir = self.state.direction(HandleId::N);
         let w_stroke = self.stroke(3.0, palette.w, Dash::Solid);
-        self.part_ray(Part::W, w_dir, 1.0, w_stroke, w_text);
+        self.part_ray(Part::W, w_dir, 1.0, w_stroke, &w_text);
         let n_stroke = self.stroke(3.0, palette.n, Dash::Solid);
-        self.part_ray(Part::N, n_dir, 1.0, n_stroke, "N");
+        self.part_ray(Part::N, n_dir, 1.0, n_stroke, &n_text);
         if let Some(tr) = r.transmission {
             let t_stroke = self.stroke(4.5, palette.t, Dash::Solid);
             self.part_ray(Part::T, self.flat(tr.t), 1.0, t_stroke, "T");
@@ -828,6 +832,7 @@ mod tests {
             student: Some(StudentRay {
                 t: wrong * 1.3,
                 label: "your T: wrong side".to_owned(),
+                names: None,
             }),
             focus: Some(Focus::SquaredConstraints),
             ..Overlay::default()
@@ -860,6 +865,7 @@ mod tests {
             student: Some(StudentRay {
                 t: glam::DVec3::NAN,
                 label: "your T".to_owned(),
+                names: None,
             }),
             ..Overlay::default()
         };
@@ -867,6 +873,30 @@ mod tests {
             Diagram::with_overlay(&state, size, &nan).shapes.len(),
             plain.shapes.len()
         );
+    }
+
+    #[test]
+    fn a_students_api_names_the_incident_vector_and_the_normal() {
+        use crate::overlay::{Overlay, StudentRay, VectorNames};
+        let state = ExplorerState::default();
+        let overlay = Overlay {
+            student: Some(StudentRay {
+                t: state.refraction().t().unwrap(),
+                label: "your wt".to_owned(),
+                names: Some(VectorNames {
+                    incident: "wi (back toward the origin)".to_owned(),
+                    normal: "n".to_owned(),
+                }),
+            }),
+            ..Overlay::default()
+        };
+        let size = Vec2::new(1000.0, 700.0);
+        let named = Diagram::with_overlay(&state, size, &overlay);
+        let named = texts(&named);
+        assert!(named.contains(&"wi (back toward the origin)"), "{named:?}");
+        assert!(named.contains(&"n") && !named.contains(&"N"), "{named:?}");
+        let plain = Diagram::new(&state, size);
+        assert!(texts(&plain).contains(&"W (along the ray)"));
     }
 
     #[test]

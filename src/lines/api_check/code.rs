@@ -42,4 +42,24 @@ impl Code {
             Self::NotUnitInput => "not_unit_input",
         }
     }
+
+    /// What the mistake is, in one line (the README's table), for lists beside a verdict.
+    #[must_use]
+    pub fn meaning(self) -> &'static str {
+        match self {
+            Self::EtaInverted => "the index ratio upside down for this API's convention",
+            Self::IncidentReversed => "the incident vector passed the wrong way round",
+            Self::NormalNotFacing => {
+                "the normal on the wrong side for this API (or for the eta passed)"
+            }
+            Self::NotTheApiResult => {
+                "the result is not what the API returns for these arguments: your own \
+                 implementation differs"
+            }
+            Self::MissedTir => {
+                "a direction (or NaN) where the API signals total internal reflection"
+            }
+            Self::NotUnitInput => "the incident vector or the normal is not unit length",
+        }
+    }
 }

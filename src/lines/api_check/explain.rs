@@ -210,7 +210,10 @@ fn detail(ctx: &Context<'_>, looks: Resemblance) -> String {
         Resemblance::NotFinite => {
             "NaN or infinite components, although this ray refracts".to_owned()
         }
-        Resemblance::Off(degrees) => format!("{} degrees from it", short(degrees)),
+        Resemblance::Off(degrees) if degrees.is_finite() => {
+            format!("{} degrees from it", short(degrees))
+        }
+        Resemblance::Off(_) => "at no angle that can be measured from it".to_owned(),
         Resemblance::Formula | Resemblance::Direction => String::new(),
     }
 }
@@ -261,8 +264,8 @@ fn tir_sentence(ctx: &Context<'_>, looks: Resemblance) -> String {
             " Your code gave a direction, {}, where there is none.",
             short_vector(v.to_array())
         ),
-        _ => " Your code gave NaN (the square root of a negative k, or normalize() of the zero \
-              vector)."
+        _ => " Your code gave NaN or infinite components (the square root of a negative k, or \
+              normalize() of the zero vector)."
             .to_owned(),
     };
     signal + &got

@@ -127,71 +127,111 @@ pub enum Format {
 /// The tally's name for log lines that did not match the pattern.
 const SKIPPED: &str = "skipped (not matching the pattern)";
 
-/// One run of `check --api`: lines in, answer lines out, the tally kept.
+/// What a line holds, as far as it can be judged without the run's state (on any thread).
+enum Judged {
+    /// A call and its diagnosis, or why the line holds no call that can be judged (boxed: a
+    /// diagnosis is large, and the chunks hold many of the other kinds).
+    Call(Box<Result<(Call, Diagnosis), String>>),
+    /// A log line the pattern does not match.
+    Unmatched,
+    /// A CSV line read before the header was known: read in order, with the run's state.
+    Deferred(String),
+}
+
+/// How a run reads and judges its lines: everything about it that does not change once the
+/// CSV header is known, so that lines can be judged on several threads.
 #[derive(Debug)]
-pub struct Session {
+struct Reader {
     options: Options,
     format: Format,
     strict: bool,
-    header: Option<Result<csv::Header, String>>,
+    header: std::sync::OnceLock<Result<csv::Header, String>>,
+}
+
+/// What one line holds before it is judged.
+enum Read {
+    /// The fields of a call, or why the line holds none that can be read.
+    Record(Result<Record, String>),
+    /// A log line the pattern does not match.
+    Unmatched,
+    /// A CSV line read before the header was known.
+    Deferred,
+}
+
+impl Reader {
+    /// Reads one line's fields, as far as that can be done without the run's state.
+    fn read(&self, line: &str) -> Read {
+        let api = self.options.api;
+        Read::Record(match &self.format {
+            Format::JsonLines => Record::from_json_line(api, line),
+            Format::Pattern(pattern) => match pattern.capture(line) {
+                Some(texts) => Record::from_texts(api, texts),
+                None => return Read::Unmatched,
+            },
+            Format::Csv => match self.header.get() {
+                None => return Read::Deferred,
+                Some(Ok(header)) => header.record(line),
+                Some(Err(e)) => Err(format!("no usable CSV header: {e}")),
+            },
+        })
+    }
+
+    /// Judges one line, or leaves it for [`Books::settle`] when it needs the run's state.
+    fn judge(&self, line: &str) -> Judged {
+        match self.read(line) {
+            Read::Record(record) => Judged::Call(Box::new(
+                record.and_then(|record| check_record(&record, &self.options)),
+            )),
+            Read::Unmatched => Judged::Unmatched,
+            Read::Deferred => Judged::Deferred(line.to_owned()),
+        }
+    }
+
+    /// Takes `line` as the CSV header (called in order, while none is known); why it is
+    /// unusable, if it is.
+    fn take_header(&self, line: &str) -> Option<String> {
+        let header = csv::Header::parse(self.options.api, line);
+        let failed = header.as_ref().err().cloned();
+        // Only this thread sets the header, between chunks: it cannot be set already.
+        let _ = self.header.set(header);
+        failed
+    }
+
+    /// A CSV line read in order: the header if none is known yet, else a record to judge.
+    fn judge_in_order(&self, line: &str) -> Option<Judged> {
+        if self.header.get().is_none() {
+            return self
+                .take_header(line)
+                .map(|e| Judged::Call(Box::new(Err(e))));
+        }
+        Some(self.judge(line))
+    }
+}
+
+/// What a run keeps as it goes: the paths followed, the tally, whether all was right.
+#[derive(Debug)]
+struct Books {
     paths: Option<paths::Paths>,
-    /// The verdicts so far.
-    pub tally: Tally,
+    tally: Tally,
     all_ok: bool,
 }
 
-impl Session {
-    /// A run for `options` reading lines in `format`; with `strict`, a line that does not match
-    /// the pattern is an error instead of skipped; with `paths`, a summary follows each path.
-    #[must_use]
-    pub fn new(options: Options, format: Format, strict: bool, paths: bool) -> Self {
-        Self {
-            options,
-            format,
-            strict,
-            header: None,
-            paths: paths.then(paths::Paths::new),
-            tally: Tally::default(),
-            all_ok: true,
-        }
-    }
-
-    /// The record on one line, or `None` for a line that carries none (a CSV header, a log
-    /// line the pattern does not match).
-    fn record(&mut self, line: &str) -> Result<Option<Record>, String> {
-        let api = self.options.api;
-        match &self.format {
-            Format::JsonLines => Record::from_json_line(api, line).map(Some),
-            Format::Pattern(pattern) => match pattern.capture(line) {
-                Some(texts) => Record::from_texts(api, texts).map(Some),
-                None if self.strict => Err("the line does not match the pattern".to_owned()),
-                None => {
-                    self.tally.add(SKIPPED);
-                    Ok(None)
-                }
+impl Books {
+    /// The answer to a judged line, in input order: nothing for a line without a call.
+    fn settle(&mut self, reader: &Reader, judged: Judged) -> Result<String, String> {
+        let judged = match judged {
+            Judged::Call(judged) => *judged,
+            Judged::Unmatched if reader.strict => {
+                Err("the line does not match the pattern".to_owned())
+            }
+            Judged::Unmatched => {
+                self.tally.add(SKIPPED);
+                return Ok(String::new());
+            }
+            Judged::Deferred(line) => match reader.judge_in_order(&line) {
+                None => return Ok(String::new()),
+                Some(judged) => return self.settle(reader, judged),
             },
-            Format::Csv => match &self.header {
-                None => {
-                    let header = csv::Header::parse(api, line);
-                    let reply = header.as_ref().map(|_| None).map_err(Clone::clone);
-                    self.header = Some(header);
-                    reply
-                }
-                Some(Ok(header)) => header.record(line).map(Some),
-                Some(Err(e)) => Err(format!("no usable CSV header: {e}")),
-            },
-        }
-    }
-
-    /// Answers one line: a JSON answer, or nothing for a line without a call.
-    ///
-    /// # Errors
-    /// Why the line cannot be judged; the loop answers it with `{"line", "error"}`.
-    pub fn answer(&mut self, line: &str) -> Result<String, String> {
-        let judged = match self.record(line) {
-            Ok(None) => return Ok(String::new()),
-            Ok(Some(record)) => check_record(&record, &self.options),
-            Err(e) => Err(e),
         };
         let ended = match (&judged, &mut self.paths) {
             (Ok((call, diagnosis)), Some(paths)) => paths.hit(call, diagnosis),
@@ -211,16 +251,102 @@ impl Session {
             }
         }
     }
+}
+
+/// One run of `check --api`: lines in, answer lines out, the tally kept.
+#[derive(Debug)]
+pub struct Session {
+    reader: Reader,
+    books: Books,
+}
+
+impl Session {
+    /// A run for `options` reading lines in `format`; with `strict`, a line that does not match
+    /// the pattern is an error instead of skipped; with `paths`, a summary follows each path.
+    #[must_use]
+    pub fn new(options: Options, format: Format, strict: bool, paths: bool) -> Self {
+        Self {
+            reader: Reader {
+                options,
+                format,
+                strict,
+                header: std::sync::OnceLock::new(),
+            },
+            books: Books {
+                paths: paths.then(paths::Paths::new),
+                tally: Tally::default(),
+                all_ok: true,
+            },
+        }
+    }
+
+    /// Answers one line: a JSON answer, or nothing for a line without a call.
+    ///
+    /// # Errors
+    /// Why the line cannot be judged; the loop answers it with `{"line", "error"}`.
+    pub fn answer(&mut self, line: &str) -> Result<String, String> {
+        let judged = self.reader.judge(line);
+        self.books.settle(&self.reader, judged)
+    }
+
+    /// Answers every non-empty line of `input` on `output` in order, the lines judged on
+    /// `threads` threads (see [`crate::lines::answer_lines`]); returns whether every line was
+    /// answered. Call [`Session::finish`] after it.
+    ///
+    /// # Errors
+    /// Reading `input` or writing `output` failed.
+    pub fn run(
+        &mut self,
+        input: impl std::io::Read,
+        output: impl std::io::Write,
+        threads: usize,
+    ) -> Result<bool, crate::lines::LinesError> {
+        let (reader, books) = (&self.reader, &mut self.books);
+        crate::lines::answer_lines(
+            input,
+            output,
+            threads,
+            |line| reader.judge(line),
+            |judged| books.settle(reader, judged),
+        )
+    }
+
+    /// The record on one line, read in order, for the explorer's pasted logs (so that they
+    /// and the command read lines alike): `None` for a line without a call (a CSV header; a log
+    /// line the pattern does not match, counted as skipped). The caller judges the record.
+    ///
+    /// # Errors
+    /// The line is not a record of the API's fields (the message says why), a log line does
+    /// not match the pattern under `strict`, or the CSV header is unusable.
+    pub fn record(&mut self, line: &str) -> Result<Option<Record>, String> {
+        match self.reader.read(line) {
+            Read::Record(record) => record.map(Some),
+            Read::Unmatched if self.reader.strict => {
+                Err("the line does not match the pattern".to_owned())
+            }
+            Read::Unmatched => {
+                self.books.tally.add(SKIPPED);
+                Ok(None)
+            }
+            Read::Deferred => self.reader.take_header(line).map_or(Ok(None), Err),
+        }
+    }
 
     /// The summary of the last path (with `--paths`), once the input has ended.
     pub fn finish(&mut self) -> Option<String> {
-        self.paths.as_mut().and_then(paths::Paths::finish)
+        self.books.paths.as_mut().and_then(paths::Paths::finish)
+    }
+
+    /// The verdicts so far.
+    #[must_use]
+    pub fn tally(&self) -> &Tally {
+        &self.books.tally
     }
 
     /// Whether every line so far was right and every path finished left right.
     #[must_use]
     pub fn all_ok(&self) -> bool {
-        self.all_ok && self.paths.as_ref().is_none_or(|p| p.all_exit_ok)
+        self.books.all_ok && self.books.paths.as_ref().is_none_or(|p| p.all_exit_ok)
     }
 }
 

@@ -501,3 +501,61 @@ fn each_path_gets_its_summary_and_a_hit_without_path_is_refused() {
             .contains("missing field `path`")
     );
 }
+
+#[test]
+fn a_long_csv_log_judged_on_many_threads_answers_as_one_thread_does() {
+    let rows = [
+        "0.642788,-0.766044,0,\"0, 1, 0\",0.666667,\"0.428525, -0.90353, 0\",1,1.5",
+        "0.642788,-0.766044,0,\"0, -1, 0\",0.666667,\"0.428525, 0.90353, 0\",1,1.5",
+        "not, a, row",
+    ];
+    let mut text = String::from("I.x,I.y,I.z,N,eta,result,from,to\n");
+    // Past one chunk of lines, so that later chunks are judged in parallel with the header.
+    for k in 0..9000 {
+        text.push_str(rows[k % rows.len()]);
+        text.push('\n');
+    }
+    let run = |threads: usize| {
+        let mut session = Session::new(options(Api::Glsl), Format::Csv, false, false);
+        let mut out = Vec::new();
+        let answered = session.run(text.as_bytes(), &mut out, threads).unwrap();
+        (
+            answered,
+            String::from_utf8(out).unwrap(),
+            session.tally().summary(),
+        )
+    };
+    let (one, many) = (run(1), run(4));
+    assert_eq!(one, many);
+    let (answered, out, tally) = one;
+    assert!(!answered);
+    assert_eq!(out.lines().count(), 9000);
+    assert_eq!(tally, "3000 normal_not_facing, 3000 ok, 3000 unreadable");
+    let last_error: Value = serde_json::from_str(out.lines().last().unwrap()).unwrap();
+    assert_eq!(
+        last_error["line"], 9001,
+        "line numbers count the header too"
+    );
+}
+
+#[test]
+fn an_api_result_that_overflows_is_told_in_words_not_as_nan() {
+    let line = r#"{"uv":[4e240,-1,0],"n":[0,1,0],"etai_over_etat":1.5,"refracted":[1,0,0]}"#;
+    let a = answer(Api::Rtiow, line);
+    let explanation = a["explanation"].as_str().unwrap();
+    assert!(
+        explanation.contains("not finite (NaN or infinite components)"),
+        "{explanation}"
+    );
+    let cleaned = explanation.replace("NaN or infinite", "");
+    assert!(
+        !cleaned.contains("NaN") && !cleaned.contains("inf"),
+        "{explanation}"
+    );
+    assert!(
+        a["mistakes"]
+            .as_array()
+            .unwrap()
+            .contains(&json!("not_unit_input"))
+    );
+}

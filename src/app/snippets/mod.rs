@@ -1,5 +1,8 @@
 //! The current case as text to paste elsewhere: a `solve` line, code calling a reference
-//! function (Rust, GLSL, C++ with glm) and a unit-test vector, each with the expected T.
+//! function (Rust, GLSL, C++ with glm) and a unit-test vector, each with the expected T; and a
+//! student's checked call as a unit test in their own language ([`api`]).
+
+pub mod api;
 
 use crate::lines::solve::Request;
 use refraction_kernel::{Convention, refract};

@@ -1,0 +1,427 @@
+//! Check my T in a student's API: that API's own argument fields and the optional truth, the
+//! verdict of [`crate::lines::api_check`] (the mistakes with what each means, the explanation in
+//! the API's language, what the API returns, the right T), and the case drawn in the API's
+//! convention: the right call's incident vector as the API means it (GLSL's I and the book's
+//! uv along the ray, pbrt's and Mitsuba's wi back toward the origin), μ as the API's eta means.
+
+use std::collections::HashMap;
+
+use egui::{RichText, Ui};
+use glam::DVec3;
+
+use super::{Checked, Shown, field, headline};
+use crate::app::snippets::api::{self as snippets, ApiCase, Language};
+use crate::lines::api_check::call::Got;
+use crate::lines::api_check::fields::{self, Kind, names};
+use crate::lines::api_check::record::Value;
+use crate::lines::api_check::{Call, Diagnosis, Options, Record, check_record};
+use crate::lines::state_file;
+use crate::lines::vector_text::{short, short_vector};
+use refraction_diagram::ExplorerState;
+use refraction_diagram::model::INDEX_RANGE;
+use refraction_diagram::overlay::{StudentRay, VectorNames};
+use refraction_kernel::Convention;
+use refraction_kernel::api::{Api, Args};
+use serde_json::Value as Json;
+
+/// The truth fields the panel offers (`path` and `point` belong to logs of whole paths).
+const TRUTH: [&str; 4] = ["from", "to", "travel", "entering"];
+
+/// The precision the student's code computes in, shown with the call (it sets the tolerance).
+const PRECISION: &str = "precision";
+
+/// How an API's case is drawn and what its arguments mean, in the panel's words.
+struct Drawn {
+    /// The API's short name, as the selector shows it.
+    owner: &'static str,
+    /// The explorer's convention that draws the API's incident vector as the API means it.
+    convention: Convention,
+    /// The label of the incident vector's arrow.
+    incident: &'static str,
+    /// What the arguments mean and how the diagram shows them.
+    about: &'static str,
+}
+
+fn drawn(api: Api) -> Drawn {
+    match api {
+        Api::Glsl => Drawn {
+            owner: "GLSL",
+            convention: Convention::AlongRay,
+            incident: "I (direction of travel)",
+            about: "I is the direction the ray travels, drawn as W along the ray (Section 2). \
+                    N must face I: GLSL does not turn it. eta = n_from/n_to = μi/μt. The zero \
+                    vector means total internal reflection.",
+        },
+        Api::Pbrt => Drawn {
+            owner: "pbrt",
+            convention: Convention::TowardOrigin,
+            incident: "wi (back toward the origin)",
+            about: "wi points back toward where the ray came from (−ray.d), drawn as W toward \
+                    the origin (Section 1). n may face either side: pbrt flips it and inverts \
+                    eta when wi is below it. eta = the index behind n over the one in front \
+                    (μt/μi with n facing wi). false means total internal reflection.",
+        },
+        Api::Rtiow => Drawn {
+            owner: "RTIOW",
+            convention: Convention::AlongRay,
+            incident: "uv (direction of travel)",
+            about: "uv is the unit direction the ray travels, drawn as W along the ray \
+                    (Section 2). n must face uv (front_face). etai_over_etat = n_from/n_to = \
+                    μi/μt. refract has no TIR test: the caller's cannot_refract reflects.",
+        },
+        Api::Mitsuba => Drawn {
+            owner: "Mitsuba",
+            convention: Convention::TowardOrigin,
+            incident: "wi (away from the surface)",
+            about: "wi points away from the surface, back along the ray, drawn as W toward the \
+                    origin (Section 1). n is +z (the local frame) when left empty. eta = \
+                    int_ior/ext_ior, the index behind n over the one in front (μt/μi with n \
+                    facing wi). F = 1 means total internal reflection: wo is null.",
+        },
+    }
+}
+
+/// The width of a field holding `kind`.
+fn width(kind: Kind) -> f32 {
+    match kind {
+        Kind::Vector | Kind::VectorOrNull => 170.0,
+        Kind::Number | Kind::Label => 80.0,
+        Kind::Flag => 60.0,
+    }
+}
+
+/// A record's value as the text a field shows, every digit kept.
+fn value_text(value: &Value) -> String {
+    match value {
+        Value::Number(x) => x.to_string(),
+        Value::Vector(v) => format!("{}, {}, {}", v[0], v[1], v[2]),
+        Value::Flag(b) => b.to_string(),
+        Value::Null => "null".to_owned(),
+        Value::Label(text) => text.clone(),
+    }
+}
+
+/// The API's answer (`api_result`) for reading: vectors as `(x, y, z)` and numbers with six
+/// digits, an object's fields as `name: value`.
+fn readable(json: &Json) -> String {
+    match json {
+        Json::Number(x) => x.as_f64().map_or_else(|| x.to_string(), short),
+        Json::Array(items) => {
+            let numbers: Option<Vec<f64>> = items.iter().map(Json::as_f64).collect();
+            match numbers.as_deref() {
+                Some(&[x, y, z]) => short_vector([x, y, z]),
+                _ => format!(
+                    "[{}]",
+                    items.iter().map(readable).collect::<Vec<_>>().join(", ")
+                ),
+            }
+        }
+        Json::Object(fields) => fields
+            .iter()
+            .map(|(name, value)| format!("{name}: {}", readable(value)))
+            .collect::<Vec<_>>()
+            .join(", "),
+        other => other.to_string(),
+    }
+}
+
+/// The API's own fields (arguments and result), then the truth fields offered.
+fn shown_fields(api: Api) -> [Vec<(&'static str, Kind)>; 2] {
+    let all = fields::all(api);
+    let own = all
+        .iter()
+        .filter(|(name, _)| *name == PRECISION || !fields::COMMON.iter().any(|(c, _)| c == name))
+        .copied()
+        .collect();
+    let truth = all
+        .into_iter()
+        .filter(|(name, _)| TRUTH.contains(name))
+        .collect();
+    [own, truth]
+}
+
+/// The indices to draw μ = `mu` with: the truth's when it agrees, otherwise 1 on the side of
+/// the lower index.
+fn indices(from_to: Option<(f64, f64)>, mu: f64) -> (f64, f64) {
+    match from_to {
+        Some((from, to)) if (from / to - mu).abs() <= 1e-9 * mu => (from, to),
+        _ if mu < 1.0 => (1.0, 1.0 / mu),
+        _ => (mu, 1.0),
+    }
+}
+
+/// A checked API call: the call, its verdict, and the right call in the API's convention.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Judged {
+    call: Call,
+    diagnosis: Diagnosis,
+    /// The right arguments for the ray, in the API's convention.
+    right: Args<f64>,
+    /// The right call as the explorer's state, or why it cannot be drawn.
+    picture: Result<ExplorerState, String>,
+}
+
+/// The right call in `api`'s convention as the explorer's state, with μ = `mu` drawn by the
+/// truth's indices when they agree.
+fn picture(
+    api: Api,
+    right: Args<f64>,
+    mu: f64,
+    from_to: Option<(f64, f64)>,
+) -> Result<ExplorerState, String> {
+    let (low, high) = INDEX_RANGE;
+    let (mu_i, mu_t) = indices(from_to, mu);
+    if ![mu_i, mu_t].iter().all(|x| (low..=high).contains(x)) {
+        return Err(format!(
+            "μ = {} needs indices outside the explorer's {low}…{high}",
+            short(mu)
+        ));
+    }
+    let Args {
+        incident, normal, ..
+    } = right;
+    ExplorerState::new(incident, normal, mu_i, mu_t, drawn(api).convention)
+        .map_err(|e| e.to_string())
+}
+
+impl Judged {
+    fn new(call: Call, diagnosis: Diagnosis) -> Self {
+        let m = diagnosis.right;
+        let facing = if m.travel.dot(m.normal) > 0.0 {
+            -m.normal
+        } else {
+            m.normal
+        };
+        let right = call.api.arguments::<f64>(m.travel, facing, m.mu);
+        let picture = picture(call.api, right, m.mu, call.truth.from_to);
+        Self {
+            call,
+            diagnosis,
+            right,
+            picture,
+        }
+    }
+
+    /// The student's result with the API's names for the vectors.
+    fn student(&self) -> StudentRay {
+        let n = names(self.call.api);
+        let t = match self.call.got {
+            Got::Vector(v) => v,
+            Got::Nothing => DVec3::ZERO,
+        };
+        let what = if self.diagnosis.ok {
+            "right".to_owned()
+        } else {
+            self.mistake_names().unwrap_or_else(|| "wrong".to_owned())
+        };
+        StudentRay {
+            t,
+            label: format!("your {}: {what}", n.result),
+            names: Some(VectorNames {
+                incident: drawn(self.call.api).incident.to_owned(),
+                normal: n.normal.to_owned(),
+            }),
+        }
+    }
+
+    fn mistake_names(&self) -> Option<String> {
+        let codes: Vec<&str> = self.diagnosis.mistakes.iter().map(|c| c.name()).collect();
+        (!codes.is_empty()).then(|| codes.join(", "))
+    }
+
+    /// The case a unit test is written from.
+    fn case(&self) -> ApiCase<'_> {
+        ApiCase {
+            api: self.call.api,
+            args: self.call.args,
+            returned: &self.diagnosis.api_result,
+            precision: self.call.precision,
+            mistakes: &self.diagnosis.mistakes,
+            right: self.right,
+            t: self.diagnosis.t,
+        }
+    }
+
+    /// The verdict: headline, each mistake with what it means, the explanation, what the API
+    /// returns, the right T and what is drawn.
+    pub fn show(&self, ui: &mut Ui) {
+        let d = &self.diagnosis;
+        let api = self.call.api;
+        let head = match self.mistake_names() {
+            _ if d.ok => format!("Right: what {} means for this ray", api.signature()),
+            Some(codes) => format!("Mistakes: {codes}"),
+            None => "Not explained by any single mistake".to_owned(),
+        };
+        headline(ui, d.ok, &head);
+        for code in &d.mistakes {
+            ui.label(format!("• {}: {}", code.name(), code.meaning()));
+        }
+        ui.label(&d.explanation);
+        ui.label(format!(
+            "{} returns {}",
+            drawn(api).owner,
+            readable(&d.api_result)
+        ))
+        .on_hover_text(d.api_result.to_string());
+        let right = d.t.map_or_else(
+            || "There is no refracted ray: total internal reflection.".to_owned(),
+            |t| format!("The right T = {}", short_vector(t)),
+        );
+        ui.label(right);
+        let n = names(api);
+        let drawn = match &self.picture {
+            Ok(state) => format!(
+                "Drawn: the right call, {} = {}, {} = {}, {} = {} (μi = {}, μt = {}).",
+                n.incident,
+                short_vector(self.right.incident.to_array()),
+                n.normal,
+                short_vector(self.right.normal.to_array()),
+                n.eta,
+                short(self.right.eta),
+                short(state.mu_i()),
+                short(state.mu_t()),
+            ),
+            Err(why) => format!("Not drawn: {why}."),
+        };
+        ui.label(drawn);
+    }
+}
+
+/// The copy buttons for the student's languages; the text copied, if one was clicked.
+pub fn copy_buttons(ui: &mut Ui, judged: &Judged) -> Option<String> {
+    ui.horizontal_wrapped(|ui| {
+        ui.label("Copy as a unit test:");
+        let mut copied = None;
+        for &language in Language::of(judged.call.api) {
+            if ui.button(language.label()).clicked() {
+                let text = snippets::test(language, &judged.case());
+                ui.ctx().copy_text(text.clone());
+                copied = Some(text);
+            }
+        }
+        copied
+    })
+    .inner
+}
+
+/// The texts of every API's fields, kept apart per API (GLSL's eta is not pbrt's).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ApiFields {
+    texts: HashMap<(Api, &'static str), String>,
+}
+
+impl ApiFields {
+    /// Fills `api`'s argument fields and the indices from the explorer's case, in the API's
+    /// convention, and the API's usual precision; the result is left for the student to fill.
+    fn take_case(&mut self, api: Api, state: &ExplorerState) {
+        let r = state_file::request(state);
+        let w = DVec3::from_array(r.w);
+        let travel = match r.convention {
+            Convention::AlongRay => w,
+            Convention::TowardOrigin => -w,
+        };
+        let n = DVec3::from_array(r.n);
+        let facing = if travel.dot(n) > 0.0 { -n } else { n };
+        let args = api.arguments::<f64>(travel, facing, r.mu_i / r.mu_t);
+        let v = |v: DVec3| value_text(&Value::Vector(v.to_array()));
+        let names = names(api);
+        for (name, text) in [
+            (names.incident, v(args.incident)),
+            (names.normal, v(args.normal)),
+            (names.eta, args.eta.to_string()),
+            ("from", r.mu_i.to_string()),
+            ("to", r.mu_t.to_string()),
+            (PRECISION, fields::usual_precision(api).name().to_owned()),
+        ] {
+            self.texts.insert((api, name), text);
+        }
+    }
+
+    /// Fills `api`'s fields from a pasted line's record: its values, the rest emptied.
+    pub fn fill_from(&mut self, api: Api, record: &Record) {
+        for (name, _) in fields::all(api) {
+            let text = match record.get(name) {
+                Some(value) => value_text(value),
+                // What the judge assumed, shown rather than left implicit.
+                None if name == PRECISION => fields::usual_precision(api).name().to_owned(),
+                None => String::new(),
+            };
+            self.texts.insert((api, name), text);
+        }
+    }
+
+    /// Reads and judges `api`'s fields (those the panel shows: a pasted line's `path` and
+    /// `point` are not kept).
+    pub fn check(&self, api: Api) -> Result<Checked, String> {
+        let texts = shown_fields(api)
+            .into_iter()
+            .flatten()
+            .filter_map(|(name, _)| {
+                let text = self.texts.get(&(api, name))?;
+                (!text.trim().is_empty()).then_some((name, text.as_str()))
+            });
+        let record = Record::from_texts(api, texts)?;
+        let (call, diagnosis) = check_record(&record, &Options::new(api))?;
+        let judged = Judged::new(call, diagnosis);
+        Ok(Checked {
+            opened: judged.picture.clone().ok(),
+            student: judged.student(),
+            shown: Shown::Api(Box::new(judged)),
+        })
+    }
+
+    /// The convention in use, the API's fields and the truth; whether the user asked to check.
+    pub fn show(&mut self, ui: &mut Ui, api: Api, state: &ExplorerState) -> bool {
+        let [own, truth] = shown_fields(api);
+        if own
+            .iter()
+            .all(|(name, _)| self.texts.get(&(api, name)).is_none_or(String::is_empty))
+        {
+            self.take_case(api, state);
+        }
+        ui.label(RichText::new(api.signature()).strong());
+        ui.label(format!("Convention: {}", drawn(api).about));
+        let mut asked = false;
+        for (title, list) in [("Your call", own), ("Truth (optional)", truth)] {
+            ui.horizontal_wrapped(|ui| {
+                ui.label(RichText::new(title).italics());
+                for (name, kind) in list {
+                    let text = self.texts.entry((api, name)).or_default();
+                    asked |= field(ui, name, text, width(kind));
+                }
+            });
+        }
+        ui.horizontal_wrapped(|ui| {
+            if ui
+                .button("Use the current case")
+                .on_hover_text("Fill the arguments and the indices from the explorer")
+                .clicked()
+            {
+                self.take_case(api, state);
+            }
+            asked |= ui.button("Check").clicked();
+        });
+        asked
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn indices_follow_the_truth_when_it_agrees() {
+        assert_eq!(indices(Some((1.0, 1.5)), 1.0 / 1.5), (1.0, 1.5));
+        assert_eq!(indices(Some((1.0, 1.5)), 1.5), (1.5, 1.0));
+        assert_eq!(indices(None, 0.5), (1.0, 2.0));
+    }
+
+    #[test]
+    fn every_api_shows_its_own_fields_and_the_truth() {
+        let [own, truth] = shown_fields(Api::Pbrt);
+        let own: Vec<&str> = own.iter().map(|(n, _)| *n).collect();
+        assert_eq!(own, ["wi", "n", "eta", "wt", "returned", "precision"]);
+        let truth: Vec<&str> = truth.iter().map(|(n, _)| *n).collect();
+        assert_eq!(truth, TRUTH);
+    }
+}

@@ -1,0 +1,390 @@
+//! "Check my T": a student pastes what their ray tracer logged, either in this project's own
+//! fields (W, N, μ_i, μ_t and the T they got, or a whole `check` JSON line) or in their own
+//! API's (GLSL's `I, N, eta, result`, pbrt's `wi, n, eta, returned, wt`, the book's `uv, n,
+//! etai_over_etat, refracted`, Mitsuba's `wi, n, eta, wo`, with the optional truth). The
+//! explorer opens that case, drawn in the convention in use (shown in the panel), says what is
+//! wrong and why, and draws the student's vector beside the right one. The verdicts are those of
+//! [`crate::lines::check`] and [`crate::lines::api_check`], so the window and `check` agree.
+
+mod api;
+mod bulk;
+
+use egui::{RichText, TextEdit, Ui};
+use glam::DVec3;
+
+use super::paint::color;
+use super::typed::error_label;
+use crate::lines::check::{self, Match, Verdict};
+use crate::lines::solve::{Precision, Request};
+use crate::lines::state_file;
+use refraction_diagram::ExplorerState;
+use refraction_diagram::numbers::vector;
+use refraction_diagram::overlay::StudentRay;
+use refraction_diagram::palette;
+use refraction_kernel::Convention;
+use refraction_kernel::api::Api;
+
+/// Whose fields the panel reads.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+enum Source {
+    /// This project's W, N, μ_i, μ_t and T.
+    #[default]
+    Own,
+    /// A student's API call.
+    Api(Api),
+}
+
+/// The selector's choices, in order, with their labels.
+const SOURCES: [(Source, &str); 5] = [
+    (Source::Own, "W, N, μ (this project)"),
+    (Source::Api(Api::Glsl), "GLSL"),
+    (Source::Api(Api::Pbrt), "pbrt"),
+    (Source::Api(Api::Rtiow), "RTIOW"),
+    (Source::Api(Api::Mitsuba), "Mitsuba"),
+];
+
+/// What a checked case said.
+#[derive(Clone, Debug, PartialEq)]
+enum Shown {
+    /// The verdict on a T in this project's fields.
+    Own(Verdict),
+    /// The verdict on an API call.
+    Api(Box<api::Judged>),
+}
+
+/// A case that was checked: what the explorer opened for it, what to draw over it, the verdict.
+#[derive(Clone, Debug, PartialEq)]
+struct Checked {
+    /// The state opened (`None`: the case could not be drawn; the verdict says why).
+    opened: Option<ExplorerState>,
+    /// The student's vector, drawn while `opened` is shown.
+    student: StudentRay,
+    shown: Shown,
+}
+
+/// This project's own fields, with the convention they are read in.
+#[derive(Clone, Debug, Default, PartialEq)]
+struct Own {
+    w: String,
+    n: String,
+    mu_i: String,
+    mu_t: String,
+    yours: String,
+    convention: Convention,
+}
+
+/// The panel's fields and its last verdict.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct CheckPanel {
+    source: Source,
+    own: Own,
+    api: api::ApiFields,
+    bulk: bulk::Bulk,
+    outcome: Option<Result<Checked, String>>,
+    copied: Option<String>,
+    /// Scroll the verdict into view next frame: it is new.
+    reveal: bool,
+}
+
+/// What a verdict's match is called on the diagram and in the headline.
+fn match_words(verdict: &Verdict) -> &'static str {
+    match verdict.matches {
+        Some(Match::Chosen) if verdict.ok => "the refracted ray T",
+        Some(Match::Chosen) => "T's direction, but not unit length",
+        Some(Match::Rejected(r)) => match r {
+            refraction_kernel::Rejection::WrongSide => "wrong side (the other root for b)",
+            refraction_kernel::Rejection::WrongBend => "wrong bend (the other sign of a)",
+            refraction_kernel::Rejection::Reversed => "reversed (−T: both signs wrong)",
+        },
+        Some(Match::TotalInternalReflection) => "total internal reflection, answered right",
+        None => "none of the four candidates",
+    }
+}
+
+/// How a whole `check` JSON line (an object) starts, which separate fields never do.
+const JSON_LINE_START: char = '{';
+
+/// The two conventions of this project's fields, as the panel offers them.
+const CONVENTIONS: [(Convention, &str, &str); 2] = [
+    (
+        Convention::AlongRay,
+        "Section 2: W along the ray",
+        "W is the direction the ray travels, toward the surface (GLSL's I, the book's uv).",
+    ),
+    (
+        Convention::TowardOrigin,
+        "Section 1: W toward the origin",
+        "W points back toward where the ray came from (pbrt's and Mitsuba's wi).",
+    ),
+];
+
+/// Reads a number typed into the field named `name`.
+fn number(text: &str, name: &str) -> Result<f64, String> {
+    text.trim()
+        .parse()
+        .map_err(|_| format!("{name}: “{}” is not a number", text.trim()))
+}
+
+/// Reads a vector typed into the field named `name`.
+fn vector_field(text: &str, name: &str) -> Result<[f64; 3], String> {
+    check::parse_vector(text).map_err(|e| format!("{name}: {e}"))
+}
+
+/// A text field labelled `label`, at most `width` wide (less in a narrow panel); whether Enter
+/// was pressed in it. In a wrapping row the label and its field start a new row together
+/// rather than be split across two.
+fn field(ui: &mut Ui, label: &str, text: &mut String, width: f32) -> bool {
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    let label_width = ui
+        .painter()
+        .layout_no_wrap(label.to_owned(), font, egui::Color32::PLACEHOLDER)
+        .size()
+        .x;
+    let gap = ui.spacing().item_spacing.x;
+    let width = width
+        .min(ui.max_rect().width() - label_width - gap)
+        .max(60.0);
+    if ui.available_size_before_wrap().x < label_width + gap + width {
+        ui.end_row();
+    }
+    let name = ui.label(label);
+    let response = ui
+        .add(TextEdit::singleline(text).desired_width(width))
+        .labelled_by(name.id);
+    response.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter))
+}
+
+/// The headline of a verdict: ✔ in the normal's colour, ✖ in the alarm colour.
+fn headline(ui: &mut Ui, ok: bool, text: &str) {
+    let (mark, ink) = if ok {
+        ("✔", palette::N)
+    } else {
+        ("✖", palette::ALARM)
+    };
+    ui.label(
+        RichText::new(format!("{mark} {text}"))
+            .strong()
+            .color(color(ink)),
+    );
+}
+
+impl Own {
+    /// Fills the case fields from a case, every digit kept so that checking the current case
+    /// does not move it.
+    fn fill(&mut self, request: &Request) {
+        let exact = |v: [f64; 3]| format!("{}, {}, {}", v[0], v[1], v[2]);
+        self.w = exact(request.w);
+        self.n = exact(request.n);
+        self.mu_i = request.mu_i.to_string();
+        self.mu_t = request.mu_t.to_string();
+        self.convention = request.convention;
+    }
+
+    /// The case and the student's T from the fields: a whole JSON line in "Your T", or the
+    /// separate fields in the panel's convention.
+    fn read(&self) -> Result<(Request, [f64; 3]), String> {
+        if self.yours.trim_start().starts_with(JSON_LINE_START) {
+            return check::parse_line(self.yours.trim());
+        }
+        let request = Request {
+            w: vector_field(&self.w, "W")?,
+            n: vector_field(&self.n, "N")?,
+            mu_i: number(&self.mu_i, "μi")?,
+            mu_t: number(&self.mu_t, "μt")?,
+            convention: self.convention,
+            precision: Precision::F64,
+        };
+        Ok((request, vector_field(&self.yours, "your T")?))
+    }
+
+    /// Checks the T in the fields; the case to open and the verdict.
+    fn check(&mut self) -> Result<Checked, String> {
+        let (request, yours) = self.read()?;
+        let verdict = check::check(&request, yours)?;
+        let [w, n] = [request.w, request.n].map(DVec3::from_array);
+        let case = ExplorerState::new(w, n, request.mu_i, request.mu_t, request.convention)
+            .map_err(|e| e.to_string())?;
+        self.fill(&request);
+        Ok(Checked {
+            opened: Some(case),
+            student: StudentRay {
+                t: DVec3::from_array(yours),
+                label: format!("your T: {}", match_words(&verdict)),
+                names: None,
+            },
+            shown: Shown::Own(verdict),
+        })
+    }
+
+    /// The convention the fields are read in, chosen here (filled from the explorer's).
+    fn convention_ui(&mut self, ui: &mut Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.label("Convention:");
+            for (convention, label, _) in CONVENTIONS {
+                ui.selectable_value(&mut self.convention, convention, label);
+            }
+        });
+        let (_, _, about) = CONVENTIONS
+            .iter()
+            .find(|(c, _, _)| *c == self.convention)
+            .unwrap_or(&CONVENTIONS[0]);
+        ui.label(format!(
+            "{about} μ = μi/μt; N on either side (the kernel turns it to face the ray)."
+        ));
+    }
+
+    /// The fields; whether the user asked to check.
+    fn show(&mut self, ui: &mut Ui, state: &ExplorerState) -> bool {
+        self.convention_ui(ui);
+        ui.label(
+            "Paste what your ray tracer logged. Vectors as 0.1, -0.9, 0 or [0.1,-0.9,0] or \
+             vec3(0.1, -0.9, 0.0); or paste a whole JSON line with t_yours into \"Your T\".",
+        );
+        ui.horizontal_wrapped(|ui| {
+            for (label, text, width) in [
+                ("W", &mut self.w, 150.0),
+                ("N", &mut self.n, 150.0),
+                ("μi", &mut self.mu_i, 60.0),
+                ("μt", &mut self.mu_t, 60.0),
+            ] {
+                field(ui, label, text, width);
+            }
+            if ui
+                .button("Use the current case")
+                .on_hover_text("Fill W, N, μ and the convention from the explorer")
+                .clicked()
+            {
+                self.fill(&state_file::request(state));
+            }
+        });
+        ui.horizontal_wrapped(|ui| {
+            let width = (ui.available_width() - 80.0).clamp(120.0, 520.0);
+            let entered = field(ui, "Your T", &mut self.yours, width);
+            ui.button("Check").clicked() || entered
+        })
+        .inner
+    }
+}
+
+/// Shows a verdict on a T in this project's fields.
+fn own_verdict(ui: &mut Ui, v: &Verdict) {
+    headline(ui, v.ok, &format!("Your T matches {}", match_words(v)));
+    ui.label(&v.explanation);
+    let right = v.correct.map_or_else(
+        || "There is no refracted ray: total internal reflection.".to_owned(),
+        |t| format!("The right T = {}", vector(DVec3::from_array(t), 4)),
+    );
+    ui.label(right);
+}
+
+impl CheckPanel {
+    /// Checks what the fields hold: opens the case in the explorer and keeps the verdict. A
+    /// case that cannot be read leaves the state as it was and says why; an API call whose
+    /// case cannot be drawn keeps its verdict and says why it is not drawn.
+    pub fn check(&mut self, state: &mut ExplorerState) {
+        let outcome = match self.source {
+            Source::Own => self.own.check(),
+            Source::Api(api) => self.api.check(api),
+        };
+        if let Ok(Checked {
+            opened: Some(case), ..
+        }) = &outcome
+        {
+            *state = case.clone();
+        }
+        self.copied = None;
+        self.outcome = Some(outcome);
+        self.reveal = true;
+    }
+
+    /// The verdict shown, if the explorer still shows the case it was made for.
+    fn current(&self, state: &ExplorerState) -> Option<&Checked> {
+        let checked = self.outcome.as_ref()?.as_ref().ok()?;
+        (checked.opened.as_ref() == Some(state)).then_some(checked)
+    }
+
+    /// The student's vector to draw, while the explorer shows the case it was checked against.
+    #[must_use]
+    pub fn student(&self, state: &ExplorerState) -> Option<StudentRay> {
+        self.current(state).map(|c| c.student.clone())
+    }
+
+    /// The selector of whose fields to read. Another choice is another question: the last
+    /// verdict (and the vector it drew) goes.
+    fn selector(&mut self, ui: &mut Ui) {
+        let before = self.source;
+        ui.horizontal_wrapped(|ui| {
+            ui.label("Your code calls:");
+            for (source, label) in SOURCES {
+                ui.selectable_value(&mut self.source, source, label);
+            }
+        });
+        if self.source != before {
+            self.outcome = None;
+            self.copied = None;
+        }
+    }
+
+    /// The last verdict, or why the fields could not be checked; a new one is scrolled into
+    /// view (the panel is short at the desk and narrow in presentation).
+    fn verdict(&mut self, ui: &mut Ui, state: &ExplorerState) {
+        let shown = ui.scope(|ui| self.verdict_ui(ui, state)).response;
+        if std::mem::take(&mut self.reveal) {
+            shown.scroll_to_me(Some(egui::Align::Min));
+        }
+    }
+
+    fn verdict_ui(&mut self, ui: &mut Ui, state: &ExplorerState) {
+        let drawn = self.current(state).is_some();
+        match &self.outcome {
+            None => {}
+            Some(Err(message)) => error_label(ui, message),
+            Some(Ok(checked)) => {
+                match &checked.shown {
+                    Shown::Own(v) => own_verdict(ui, v),
+                    Shown::Api(judged) => {
+                        judged.show(ui);
+                        if let Some(text) = api::copy_buttons(ui, judged) {
+                            self.copied = Some(text);
+                        }
+                    }
+                }
+                if !drawn && checked.opened.is_some() {
+                    ui.label(
+                        RichText::new("(The case has changed since: the verdict is not drawn.)")
+                            .small(),
+                    );
+                }
+            }
+        }
+        if let Some(text) = &self.copied {
+            ui.label(RichText::new(text).monospace());
+        }
+    }
+
+    /// The selector, the fields, the Check button, the verdict and (for an API) the pasted
+    /// log lines.
+    pub fn show(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
+        if [&self.own.w, &self.own.n, &self.own.mu_i, &self.own.mu_t]
+            .iter()
+            .all(|f| f.is_empty())
+        {
+            self.own.fill(&state_file::request(state));
+        }
+        self.selector(ui);
+        let asked = match self.source {
+            Source::Own => self.own.show(ui, state),
+            Source::Api(api) => self.api.show(ui, api, state),
+        };
+        if asked {
+            self.check(state);
+        }
+        self.verdict(ui, state);
+        if let Source::Api(api) = self.source
+            && let Some(record) = self.bulk.show(ui, api)
+        {
+            self.api.fill_from(api, &record);
+            self.check(state);
+        }
+    }
+}
