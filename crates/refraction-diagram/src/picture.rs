@@ -936,6 +936,7 @@ mod tests {
                     student: Some(StudentRay {
                         t: wrong,
                         label: "your T".to_owned(),
+                        names: None,
                     }),
                     ..Overlay::default()
                 };
