@@ -66,7 +66,12 @@ fn presentation_mode_zooms_the_ui_and_the_themes_change_panels_and_diagram() {
     let palette = h.state().overlay().palette;
     assert_eq!(palette.background, glam_colour(0x000000));
     click(&mut h, "Colour-blind safe");
-    assert!(h.state().overlay().palette.label_incoming);
+    // Every palette now labels the incoming ray; the switch gives the colour-blind-safe one.
+    assert!(h.state().presentation().colour_blind_safe);
+    assert_eq!(
+        h.state().overlay().palette,
+        refraction_diagram::palette::Palette::new(Theme::HighContrastDark, true)
+    );
     h.key_press(Key::F11);
     h.run();
     assert!(!h.state().presentation().on);

@@ -99,3 +99,76 @@ fn the_share_string_reproduces_the_state_and_the_case_copies_as_code() {
         assert!(h.query_by_label_contains(text).is_some(), "{button}");
     }
 }
+
+#[test]
+fn files_ask_before_replacing_refuse_the_wrong_kind_and_open_through_the_dialog() {
+    let dir = temp_file("dialog");
+    std::fs::create_dir_all(&dir).unwrap();
+    let lesson = dir.join("lesson.json");
+    let mut h = harness(leaving_glass());
+    click(&mut h, "💾 Save, open, share");
+    type_into(&mut h, "State file", lesson.to_str().unwrap());
+    click(&mut h, "💾 Save");
+    assert!(h.query_by_label_contains("saved").is_some());
+    // Saving again asks first; Cancel leaves the file, Replace writes it.
+    std::fs::write(&lesson, "{}").unwrap();
+    click(&mut h, "💾 Save");
+    assert!(h.query_by_label("Replace the file?").is_some());
+    click(&mut h, "Cancel");
+    assert!(h.query_by_label_contains("left as it was").is_some());
+    assert_eq!(std::fs::read_to_string(&lesson).unwrap(), "{}");
+    click(&mut h, "💾 Save");
+    click(&mut h, "Replace");
+    assert!(std::fs::read_to_string(&lesson).unwrap().contains("\"w\""));
+    // Never a state over an image, nor under an image's name.
+    let picture = dir.join("picture.png");
+    std::fs::write(&picture, b"\x89PNG\r\n\x1a\n").unwrap();
+    type_into(&mut h, "State file", picture.to_str().unwrap());
+    click(&mut h, "💾 Save");
+    assert!(h.query_by_label_contains("ending in .json").is_some());
+    let disguised = dir.join("disguised.json");
+    std::fs::write(&disguised, b"\x89PNG\r\n\x1a\n").unwrap();
+    type_into(&mut h, "State file", disguised.to_str().unwrap());
+    click(&mut h, "💾 Save");
+    assert!(h.query_by_label_contains("holds a PNG image").is_some());
+    assert_eq!(std::fs::read(&disguised).unwrap(), b"\x89PNG\r\n\x1a\n");
+    // The open dialog lists the folder's state files (not the PNG) and opens the one chosen.
+    click(&mut h, "Flip N");
+    let flipped = h.state().state().clone();
+    click(&mut h, "📂 Open…");
+    assert!(h.query_by_label("picture.png").is_none());
+    click(&mut h, "lesson.json");
+    click(&mut h, "Open file");
+    assert_ne!(h.state().state(), &flipped);
+    assert!(h.query_by_label_contains("opened").is_some());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Clicks the export button (the heading above it has the same words).
+fn export(h: &mut egui_kittest::Harness<'_, refraction_explorer::app::Explorer>) {
+    h.get_by_role_and_label(egui::Role::Button, "Export picture")
+        .click();
+    h.run();
+}
+
+#[test]
+fn exports_without_a_name_are_numbered() {
+    let dir = temp_file("exports");
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut h = harness(leaving_glass());
+    type_into(&mut h, "File", dir.to_str().unwrap());
+    export(&mut h);
+    export(&mut h);
+    assert!(dir.join("diagram-001.png").is_file());
+    assert!(dir.join("diagram-002.png").is_file());
+    // A name given is used; an existing image is replaced only when the user says so.
+    let named = dir.join("lesson.png");
+    type_into(&mut h, "File", named.to_str().unwrap());
+    export(&mut h);
+    assert!(named.is_file());
+    export(&mut h);
+    assert!(h.query_by_label("Replace the file?").is_some());
+    click(&mut h, "Replace");
+    assert!(h.query_by_label("Replace the file?").is_none());
+    std::fs::remove_dir_all(&dir).unwrap();
+}

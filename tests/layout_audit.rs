@@ -322,8 +322,9 @@ fn audit_scene(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>
     let face = Typeface::egui_default().unwrap();
     let rect = canvas_rect(h);
     let scenes = h.state().scenes();
-    let layout = SceneLayout::new(
-        scenes.trace().bounds,
+    let layout = SceneLayout::for_scene(
+        scenes.scene(),
+        scenes.trace(),
         GVec2::new(rect.width(), rect.height()),
     );
     let picture = ScenePicture::new(scenes.scene(), scenes.trace(), &layout);
@@ -452,7 +453,6 @@ fn report(measured: Vec<(String, Measured)>) {
 }
 
 #[test]
-#[ignore = "issue 10 is open: labels still cover arrowheads and some text is under 13 px; run with --ignored"]
 fn the_interface_view_owns_the_screen_and_nothing_covers_anything() {
     let states = states();
     let mut measured = Vec::new();
@@ -480,7 +480,6 @@ fn the_interface_view_owns_the_screen_and_nothing_covers_anything() {
 }
 
 #[test]
-#[ignore = "issue 10 is open: labels still cover arrowheads and some text is under 13 px; run with --ignored"]
 fn the_scenes_view_owns_the_screen_and_labels_leave_the_hit_markers_free() {
     let mut measured = Vec::new();
     for size in SIZES {

@@ -7,7 +7,7 @@ use egui::{
 };
 use glam::Vec2;
 
-use super::paint::{color, paint};
+use super::paint::{color, hover_left_out, paint};
 use refraction_diagram::{Diagram, ExplorerState, HandleId, Overlay};
 
 /// Degrees per arrow-key press (Shift: a tenth of it).
@@ -121,7 +121,9 @@ fn dragged_to(center: Pos2, press: Pos2, pointer: Pos2) -> Pos2 {
 /// A press and release within egui's click distance is a click, not a drag: it changes
 /// nothing and selects the handle (or, on the background, the W handle) for the arrow keys.
 pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
-    let line = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
+    // The hint's row (a label's row is as tall as a widget's) and the spacing above it.
+    let text = ui.text_style_height(&egui::TextStyle::Body);
+    let line = text.max(ui.spacing().interact_size.y) + 2.0 * ui.spacing().item_spacing.y;
     let size = ui.available_size() - EguiVec2::new(0.0, line);
     let (response, painter) =
         ui.allocate_painter(size.max(EguiVec2::splat(1.0)), Sense::click_and_drag());
@@ -183,6 +185,12 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
     }
     let after = Diagram::with_overlay(state, canvas_size, overlay);
     paint(&painter, &to_screen, &after.primitives());
+    hover_left_out(
+        &response,
+        &to_screen,
+        &after.left_out,
+        after.layout.font * 2.0,
+    );
     response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &after.summary));
     if let Some(handle) = after.handles.iter().find(|h| Some(h.id) == focused) {
         let center = to_screen.transform_pos(Pos2::new(handle.center.x, handle.center.y));

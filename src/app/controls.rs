@@ -1,10 +1,11 @@
 //! The left panel: convention, flipping N, the two indices (slider, typed value, preset), typed
 //! 3D W and N, the critical-angle snap and the picture export (PNG or SVG).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use egui::{ComboBox, DragValue, Slider, SliderClamping, Ui};
 
+use super::file_dialog::{self, Choice, FileDialog, Kind, Purpose, Target};
 use super::typed::{TypedField, format_vector, parse_number, parse_vector, short, status};
 use refraction_diagram::model::{INDEX_RANGE, MATERIALS, material_of};
 use refraction_diagram::overlay::PanZoom;
@@ -24,6 +25,10 @@ pub struct Controls {
     export_size: (u32, u32),
     export_path: String,
     export_status: Option<Result<String, String>>,
+    /// The export's save dialog, while it is up.
+    export_dialog: Option<FileDialog>,
+    /// An image the user is asked about replacing.
+    export_replace: Option<PathBuf>,
 }
 
 impl Default for Controls {
@@ -36,8 +41,11 @@ impl Default for Controls {
             w: TypedField::default(),
             n: TypedField::default(),
             export_size: refraction_render::DEFAULT_SIZE,
-            export_path: "refraction.png".to_owned(),
+            // Empty: exports are numbered diagram-001.png, diagram-002.png, …
+            export_path: String::new(),
             export_status: None,
+            export_dialog: None,
+            export_replace: None,
         }
     }
 }
@@ -205,7 +213,7 @@ impl Controls {
     /// student's T, highlights, the physics switches) in the fitted view, since the screen's
     /// pan is in its own pixels.
     fn export(&mut self, ui: &mut Ui, state: &ExplorerState, overlay: &Overlay) {
-        ui.heading("Export picture");
+        ui.heading("Export picture (PNG or SVG)");
         let (low, high) = refraction_render::SIZE_LIMITS;
         ui.horizontal(|ui| {
             let (width, height) = &mut self.export_size;
@@ -217,22 +225,69 @@ impl Controls {
                 .labelled_by(label.id);
         });
         ui.horizontal(|ui| {
-            let label = ui.label("File (.png or .svg)");
-            ui.add(egui::TextEdit::singleline(&mut self.export_path).desired_width(170.0))
-                .labelled_by(label.id);
+            let label = ui.label("File");
+            let field = egui::TextEdit::singleline(&mut self.export_path)
+                .hint_text("a .png or .svg name, or numbered diagram-001.png")
+                .desired_width(170.0);
+            ui.add(field).labelled_by(label.id);
+            if ui.button("Browse…").clicked() {
+                let start = self.export_path.clone();
+                self.export_dialog = Some(FileDialog::new(Purpose::Save, &["png", "svg"], &start));
+            }
         });
         if ui.button("Export picture").clicked() {
-            let path = PathBuf::from(self.export_path.trim());
-            let overlay = Overlay {
-                pan_zoom: PanZoom::default(),
-                ..overlay.clone()
+            // No name, or a folder: the next free number there.
+            let typed = PathBuf::from(self.export_path.trim());
+            let path = if typed.as_os_str().is_empty() || typed.is_dir() {
+                file_dialog::numbered(&typed, "diagram", "png")
+            } else {
+                typed
             };
-            self.export_status = Some(
-                refraction_render::export(state, &overlay, self.export_size, &path)
-                    .map_err(|e| e.to_string())
-                    .map(|()| format!("wrote {}", path.display())),
-            );
+            self.export_to(path, state, overlay);
+        }
+        match self.export_dialog.as_mut().map(|d| d.show(ui)) {
+            Some(Choice::Chosen(path)) => {
+                self.export_dialog = None;
+                self.export_path = path.display().to_string();
+                self.export_to(path, state, overlay);
+            }
+            Some(Choice::Cancelled) => self.export_dialog = None,
+            Some(Choice::Pending) | None => {}
+        }
+        if let Some(path) = self.export_replace.clone()
+            && let Some(replace) = file_dialog::confirm_replace(ui, &path)
+        {
+            self.export_replace = None;
+            if replace {
+                self.write_image(&path, state, overlay);
+            }
         }
         status(ui, self.export_status.as_ref());
+    }
+
+    /// Exports to `path` at once when it is new, after a question when it holds an image of
+    /// its kind, never over a file of another kind (a saved state).
+    fn export_to(&mut self, path: PathBuf, state: &ExplorerState, overlay: &Overlay) {
+        let kind = refraction_render::format::ImageFormat::for_path(&path)
+            .map_err(|e| e.to_string())
+            .map(|_| Kind::of_name(&path).unwrap_or(Kind::Png))
+            .and_then(|kind| file_dialog::target(&path, kind));
+        match kind {
+            Ok(Target::New) => self.write_image(&path, state, overlay),
+            Ok(Target::Replaces) => self.export_replace = Some(path),
+            Err(e) => self.export_status = Some(Err(e)),
+        }
+    }
+
+    fn write_image(&mut self, path: &Path, state: &ExplorerState, overlay: &Overlay) {
+        let overlay = Overlay {
+            pan_zoom: PanZoom::default(),
+            ..overlay.clone()
+        };
+        self.export_status = Some(
+            refraction_render::export(state, &overlay, self.export_size, path)
+                .map_err(|e| e.to_string())
+                .map(|()| format!("wrote {}", path.display())),
+        );
     }
 }

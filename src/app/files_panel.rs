@@ -6,6 +6,7 @@ use std::path::PathBuf;
 
 use egui::{RichText, TextEdit, Ui};
 
+use super::file_dialog::{Choice, FileDialog, Kind, Purpose, Target, confirm_replace, target};
 use super::typed::status;
 use crate::app::snippets;
 use crate::lines::state_file;
@@ -36,6 +37,10 @@ pub struct FilesPanel {
     pasted: String,
     status: Option<Result<String, String>>,
     copied: Option<String>,
+    /// The open or save dialog, while it is up.
+    dialog: Option<FileDialog>,
+    /// A file the user is asked about replacing.
+    replace: Option<PathBuf>,
 }
 
 impl Default for FilesPanel {
@@ -45,16 +50,57 @@ impl Default for FilesPanel {
             pasted: String::new(),
             status: None,
             copied: None,
+            dialog: None,
+            replace: None,
         }
     }
 }
 
 impl FilesPanel {
-    /// Saves the state to the file in the path field.
+    /// Saves the state to the file in the path field: at once to a new file, after a question
+    /// over an existing state file, never over a file of another kind (an image) or to a name
+    /// that is not `.json`.
     pub fn save(&mut self, state: &ExplorerState) {
         let path = PathBuf::from(self.path.trim());
+        match target(&path, Kind::State) {
+            Ok(Target::New) => self.write(state, &path),
+            Ok(Target::Replaces) => self.replace = Some(path),
+            Err(e) => self.status = Some(Err(e)),
+        }
+    }
+
+    fn write(&mut self, state: &ExplorerState, path: &std::path::Path) {
         self.status =
-            Some(state_file::save(state, &path).map(|()| format!("saved {}", path.display())));
+            Some(state_file::save(state, path).map(|()| format!("saved {}", path.display())));
+    }
+
+    /// The dialog and the replace question, while either is up.
+    fn dialogs(&mut self, ui: &Ui, state: &mut ExplorerState) {
+        if let Some(dialog) = &mut self.dialog {
+            let purpose = dialog.purpose();
+            match dialog.show(ui) {
+                Choice::Pending => {}
+                Choice::Cancelled => self.dialog = None,
+                Choice::Chosen(path) => {
+                    self.dialog = None;
+                    self.path = path.display().to_string();
+                    match purpose {
+                        Purpose::Open => self.open(state),
+                        Purpose::Save => self.save(state),
+                    }
+                }
+            }
+        }
+        if let Some(path) = self.replace.clone()
+            && let Some(replace) = confirm_replace(ui, &path)
+        {
+            self.replace = None;
+            if replace {
+                self.write(state, &path);
+            } else {
+                self.status = Some(Ok(format!("{} left as it was", path.display())));
+            }
+        }
     }
 
     /// Opens the file in the path field; a file that cannot be read or understood leaves the
@@ -99,7 +145,22 @@ impl FilesPanel {
             {
                 self.open(state);
             }
+            if ui
+                .button("📂 Open…")
+                .on_hover_text("Choose a state file to open")
+                .clicked()
+            {
+                self.dialog = Some(FileDialog::new(Purpose::Open, &["json"], &self.path));
+            }
+            if ui
+                .button("💾 Save as…")
+                .on_hover_text("Choose where to save")
+                .clicked()
+            {
+                self.dialog = Some(FileDialog::new(Purpose::Save, &["json"], &self.path));
+            }
         });
+        self.dialogs(ui, state);
         ui.horizontal_wrapped(|ui| {
             let share = state_file::to_json(state);
             if ui

@@ -11,6 +11,7 @@ mod canvas;
 mod check_panel;
 mod controls;
 mod export;
+mod file_dialog;
 mod files_panel;
 mod fonts;
 mod fresnel_panel;
@@ -279,7 +280,7 @@ impl Explorer {
         match self.view {
             View::Interface => self.show_interface(ui),
             View::Scenes => {
-                if let Some(state) = self.scenes.show(ui) {
+                if let Some(state) = self.scenes.show(ui, &self.presentation.palette()) {
                     self.state = state;
                     self.view = View::Interface;
                 }
@@ -375,7 +376,11 @@ impl Explorer {
         self.panels.show(ui, &NUMBERS, presenting, |ui| {
             readouts::show(ui, state.refraction(), &overlay.palette);
         });
-        egui::CentralPanel::no_frame().show(ui, |ui| canvas::show(ui, state, &mut overlay));
+        // No margins (the diagram reaches the panels), but the panel's fill under the key hint.
+        let frame = egui::Frame::NONE.fill(ui.visuals().panel_fill);
+        egui::CentralPanel::no_frame()
+            .frame(frame)
+            .show(ui, |ui| canvas::show(ui, state, &mut overlay));
         self.presentation.pan_zoom = overlay.pan_zoom;
     }
 }

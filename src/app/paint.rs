@@ -2,12 +2,13 @@
 
 use egui::emath::RectTransform;
 use egui::epaint::CircleShape;
-use egui::{Align2, Color32, FontId, Painter, Pos2, Shape, Stroke};
+use egui::{Align2, Color32, FontId, Painter, Pos2, Response, Shape, Stroke};
 use glam::Vec2;
 
 use refraction_diagram::Primitive;
 use refraction_diagram::geometry::Colour;
-use refraction_diagram::shapes::Align;
+use refraction_diagram::placer::PAD;
+use refraction_diagram::shapes::{Align, Label};
 
 /// The egui colour of a diagram colour.
 #[must_use]
@@ -74,7 +75,7 @@ pub fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[Primiti
                 let anchor = Align2([align(label.h), align(label.v)]);
                 let rect = anchor.anchor_size(at(label.at), galley.size());
                 if let Some(background) = label.background {
-                    let back = rect.expand(label.size * 0.2);
+                    let back = rect.expand(label.size * PAD);
                     shapes.push(Shape::rect_filled(back, 0.0, color(background)));
                 }
                 shapes.push(Shape::galley(rect.min, galley, color(label.colour)));
@@ -82,4 +83,30 @@ pub fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[Primiti
         }
     }
     painter.extend(shapes);
+}
+
+/// Shows, beside the pointer, the text of the label the placer left out whose anchor is
+/// nearest the pointer, when it is within `reach` canvas pixels: a label with no free spot is
+/// not drawn over anything, but can still be read. `to_screen` maps canvas to screen points.
+pub fn hover_left_out(
+    response: &Response,
+    to_screen: &RectTransform,
+    left_out: &[Label],
+    reach: f32,
+) {
+    let Some(pointer) = response.hover_pos() else {
+        return;
+    };
+    let p = to_screen.inverse().transform_pos(pointer);
+    let p = Vec2::new(p.x, p.y);
+    let nearest = left_out
+        .iter()
+        .map(|l| (l, l.at.distance(p)))
+        .filter(|(_, d)| *d <= reach)
+        .min_by(|a, b| a.1.total_cmp(&b.1));
+    if let Some((label, _)) = nearest {
+        response
+            .clone()
+            .on_hover_text_at_pointer(label.text.clone());
+    }
 }

@@ -171,6 +171,9 @@ impl Panels {
                 if hide.clicked() {
                     *shown = false;
                 }
+                // A solid scroll bar takes its own room: a floating one would cover the ends
+                // of the wrapped lines (an equation's "= 0", a table's last column).
+                ui.spacing_mut().scroll = egui::style::ScrollStyle::solid();
                 ScrollArea::vertical().show(ui, contents);
             });
     }

@@ -13,10 +13,11 @@ use std::time::Duration;
 use glam::{DVec2, Vec2};
 
 use super::export;
-use super::paint::{color, paint};
+use super::paint::{color, hover_left_out, paint};
 use super::retrace::{Retracer, empty};
+use refraction_diagram::layout::SMALLEST_TEXT;
 use refraction_diagram::numbers::number;
-use refraction_diagram::palette;
+use refraction_diagram::palette::{self, Palette};
 use refraction_diagram::shapes::{Align, Label};
 use refraction_diagram::{ExplorerState, Primitive, SceneLayout, ScenePicture};
 use refraction_render::atomic::write_atomically;
@@ -207,7 +208,7 @@ impl ScenesView {
 
     /// Shows the view in `ui`: the controls strip, then the canvas. Returns the single-interface
     /// problem of the hit point clicked, if one was.
-    pub fn show(&mut self, ui: &mut Ui) -> Option<ExplorerState> {
+    pub fn show(&mut self, ui: &mut Ui, palette: &Palette) -> Option<ExplorerState> {
         if let Some(done) = self.retracer.poll() {
             let shown = std::mem::replace(&mut self.trace, done);
             self.retracer.recycle(shown);
@@ -217,7 +218,7 @@ impl ScenesView {
             self.trace_status(ui);
         });
         CentralPanel::no_frame()
-            .show(ui, |ui| self.canvas(ui))
+            .show(ui, |ui| self.canvas(ui, palette))
             .inner
     }
 
@@ -338,12 +339,16 @@ impl ScenesView {
 
     /// The canvas: handles dragged first (retracing), then the picture painted once; a click
     /// near a hit point returns its problem.
-    fn canvas(&mut self, ui: &mut Ui) -> Option<ExplorerState> {
+    fn canvas(&mut self, ui: &mut Ui, palette: &Palette) -> Option<ExplorerState> {
         let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click());
         let rect = response.rect;
         let to_screen = RectTransform::from_to(Rect::from_min_size(Pos2::ZERO, rect.size()), rect);
         let layout = self.drag_layout.unwrap_or_else(|| {
-            SceneLayout::new(self.trace.bounds, Vec2::new(rect.width(), rect.height()))
+            SceneLayout::for_scene(
+                &self.scene,
+                &self.trace,
+                Vec2::new(rect.width(), rect.height()),
+            )
         });
         let mut clicked_at = response
             .interact_pointer_pos()
@@ -351,14 +356,15 @@ impl ScenesView {
         let dragging = self.handles(ui, &response, &to_screen, &layout, &mut clicked_at);
         self.drag_layout = dragging.then_some(layout);
         self.drawn = Some((rect, layout));
-        let picture = ScenePicture::new(&self.scene, &self.trace, &layout);
+        let picture = ScenePicture::with_palette(&self.scene, &self.trace, &layout, palette);
         paint(&painter, &to_screen, &picture.primitives);
+        hover_left_out(&response, &to_screen, &picture.left_out, layout.font * 2.0);
         response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &picture.summary));
         let hovered = response
             .hover_pos()
             .and_then(|p| layout.hit_near(&self.trace, canvas_point(&to_screen, p)));
         if let Some(hit) = hovered {
-            self.show_hit(ui, &painter, &to_screen, &layout, hit);
+            self.show_hit(ui, &painter, (&to_screen, &layout), hit, palette);
         }
         let clicked =
             clicked_at.and_then(|p| layout.hit_near(&self.trace, canvas_point(&to_screen, p)))?;
@@ -418,18 +424,18 @@ impl ScenesView {
         &self,
         ui: &Ui,
         painter: &Painter,
-        to_screen: &RectTransform,
-        layout: &SceneLayout,
+        (to_screen, layout): (&RectTransform, &SceneLayout),
         hit: &Hit,
+        palette: &Palette,
     ) {
         let center = layout.at(hit.point);
-        let ring = egui::Stroke::new(2.0, color(palette::INK));
+        let ring = egui::Stroke::new(2.0, color(palette.ink));
         painter.circle_stroke(
             to_screen.transform_pos(Pos2::new(center.x, center.y)),
             layout.pick_radius(),
             ring,
         );
-        let size = layout.font * 0.8;
+        let size = (layout.font * 0.8).max(SMALLEST_TEXT);
         let side = if center.x < layout.canvas.center().x {
             1.0
         } else {
@@ -441,8 +447,8 @@ impl ScenesView {
             h: Align::away(side),
             v: Align::Center,
             size,
-            colour: palette::INK,
-            background: Some(palette::BACKGROUND),
+            colour: palette.ink,
+            background: Some(palette.background),
         };
         paint(painter, to_screen, &[Primitive::Text(label)]);
         ui.ctx().set_cursor_icon(CursorIcon::PointingHand);

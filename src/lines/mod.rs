@@ -199,12 +199,14 @@ pub fn threads() -> usize {
 /// Reading `input` or writing `output` failed.
 pub fn answer_lines<W: Send>(
     input: impl Read,
-    mut output: impl Write,
+    output: impl Write,
     threads: usize,
     work: impl Fn(&str) -> W + Sync,
     mut finish: impl FnMut(W) -> Result<String, String>,
 ) -> Result<bool, LinesError> {
     let mut input = io::BufReader::with_capacity(READ_BUFFER_BYTES, input);
+    // One write per chunk, not one per line (stdout is line-buffered: two system calls a line).
+    let mut output = io::BufWriter::with_capacity(READ_BUFFER_BYTES, output);
     let mut all_answered = true;
     let mut number = 0;
     loop {
@@ -223,9 +225,10 @@ pub fn answer_lines<W: Send>(
                 writeln!(output, "{text}").map_err(LinesError::Write)?;
             }
         }
+        // A chunk's answers go out before more input is awaited (the input may be a live log,
+        // or the rest of an over-long line, which may be endless).
+        output.flush().map_err(LinesError::Write)?;
         if chunk.ended_too_long {
-            // Say so before reading on: the rest of the line may be long or endless.
-            output.flush().map_err(LinesError::Write)?;
             input.skip_until(b'\n').map_err(LinesError::Read)?;
         }
         if chunk.ended {

@@ -8,7 +8,9 @@ use glam::Vec2;
 use super::Primitive;
 use super::font::Typeface;
 use super::geometry::{Colour, Rect};
+use super::layout::SMALLEST_TEXT;
 use super::palette;
+use super::placer::{Obstacle, Placer};
 use super::shapes::{Align, Dash, Figure, Label, Stroke, lower_all};
 use refraction_bench::{Report, Row};
 
@@ -140,7 +142,7 @@ struct Metrics {
 
 impl Metrics {
     fn new(size: Vec2) -> Self {
-        let text = (size.y / 50.0).clamp(11.0, 28.0);
+        let text = (size.y / 50.0).clamp(SMALLEST_TEXT, 28.0);
         Self {
             text,
             title: text * 1.3,
@@ -195,7 +197,7 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
     shapes.extend(plot.bound());
     shapes.push(plot.frame());
     shapes.extend(plot.titles(size));
-    shapes.extend(plot.markers(report, face));
+    shapes.extend(plot.markers(report, face, Rect::from_min_size(Vec2::ZERO, size)));
     shapes.push(text(
         format!("{}    hollow: f32, filled: f64", report.verdict()),
         Vec2::new(size.x / 2.0, plot.m.text * 1.2 + plot.m.title * 1.3),
@@ -281,7 +283,7 @@ impl Plot {
                 "the default kernel's bound, 32 ε·κ".to_owned(),
                 Vec2::new(plot.max.x, y - size * 0.3),
                 (Align::End, Align::End),
-                size * 0.9,
+                (size * 0.9).max(SMALLEST_TEXT),
                 palette::ALARM,
             ),
         ]
@@ -333,9 +335,10 @@ impl Plot {
         })
     }
 
-    /// One marker a row (hollow for f32, filled for f64) with its label to the right, moved
-    /// down until it covers no marker and no other label.
-    fn markers(&self, report: &Report, face: &Typeface) -> Vec<Figure> {
+    /// One marker a row (hollow for f32, filled for f64), then their labels to the right,
+    /// placed by the [`Placer`] off every marker and other label, inside the canvas (a label
+    /// with no free spot is left out: the table beside the plot has every row).
+    fn markers(&self, report: &Report, face: &Typeface, canvas: Rect) -> Vec<Figure> {
         let size = self.m.text;
         let radius = size * 0.45;
         let points: Vec<Vec2> = report
@@ -343,11 +346,15 @@ impl Plot {
             .iter()
             .map(|row| self.at(row.ns_per_ray, row.max_err_hard_eps_kappa))
             .collect();
-        let mut taken: Vec<Rect> = points
-            .iter()
-            .map(|p| Rect::from_min_size(*p - Vec2::splat(radius), Vec2::splat(2.0 * radius)))
-            .collect();
+        let mut placer = Placer::new(face);
+        for center in &points {
+            placer.avoid(Obstacle::Disc {
+                center: *center,
+                radius,
+            });
+        }
         let mut shapes = Vec::new();
+        let mut labels = Vec::new();
         for (row, p) in report.rows.iter().zip(&points) {
             let colour = variant_colour(row.variant);
             let filled = row.precision == "f64";
@@ -361,19 +368,19 @@ impl Plot {
                     dash: Dash::Solid,
                 },
             });
-            let label = point_label(row);
-            let extent = face.measure(&label, size);
-            let mut corner = *p + Vec2::new(size * 0.8, -extent.y / 2.0);
-            let mut rect = Rect::from_min_size(corner, extent);
-            while taken.iter().any(|t| t.overlaps(&rect)) {
-                corner.y += extent.y * 0.5;
-                rect = Rect::from_min_size(corner, extent);
-            }
-            taken.push(rect);
-            let shade = palette::Palette::STANDARD.text_shade(colour);
-            let align = (Align::Start, Align::Start);
-            shapes.push(text(label, corner, align, size, shade));
+            let label = Label {
+                text: point_label(row),
+                at: *p + Vec2::new(size * 0.8, 0.0),
+                h: Align::Start,
+                v: Align::Center,
+                size,
+                colour: palette::Palette::STANDARD.text_shade(colour),
+                background: None,
+            };
+            labels.push((label, canvas));
         }
+        let placement = placer.place_all(labels);
+        shapes.extend(placement.placed.into_iter().map(Figure::Text));
         shapes
     }
 }

@@ -3,6 +3,9 @@
 //! diagram measures labels with it to keep them inside the canvas; the PNG renderer outlines
 //! them with it, so labels in the export look like labels on screen.
 
+use std::collections::HashMap;
+use std::sync::OnceLock;
+
 use glam::Vec2;
 use skrifa::instance::{LocationRef, Size};
 use skrifa::outline::{DrawSettings, OutlinePen};
@@ -17,6 +20,40 @@ pub struct FontError(ReadError);
 /// A font at hand for measuring and outlining labels.
 pub struct Typeface {
     font: FontRef<'static>,
+    metrics: &'static Metrics,
+}
+
+/// The font's measures at size 1, read once per run: every view measures its labels many
+/// times a frame (the placer tries spots), and reading them from the font each time is slow.
+/// Unhinted measures scale linearly with the size.
+struct Metrics {
+    advances: HashMap<char, f32>,
+    /// The advance of the glyph drawn for a character the font lacks.
+    missing: f32,
+    ascent: f32,
+    line_height: f32,
+}
+
+static METRICS: OnceLock<Metrics> = OnceLock::new();
+
+fn read_metrics(font: &FontRef<'_>) -> Metrics {
+    let unit = Size::new(1.0);
+    let glyphs = font.glyph_metrics(unit, LocationRef::default());
+    let advances = font
+        .charmap()
+        .mappings()
+        .filter_map(|(code, id)| {
+            let ch = char::from_u32(code)?;
+            Some((ch, glyphs.advance_width(id).unwrap_or(0.0)))
+        })
+        .collect();
+    let m = font.metrics(unit, LocationRef::default());
+    Metrics {
+        advances,
+        missing: glyphs.advance_width(GlyphId::NOTDEF).unwrap_or(0.0),
+        ascent: m.ascent,
+        line_height: m.ascent - m.descent + m.leading,
+    }
 }
 
 /// Moves glyph outlines (y up, origin on the baseline) to their place on the canvas (y down)
@@ -68,9 +105,9 @@ impl Typeface {
     /// # Errors
     /// The embedded font cannot be read (a broken build).
     pub fn egui_default() -> Result<Self, FontError> {
-        FontRef::new(epaint_default_fonts::UBUNTU_LIGHT)
-            .map(|font| Self { font })
-            .map_err(FontError)
+        let font = FontRef::new(epaint_default_fonts::UBUNTU_LIGHT).map_err(FontError)?;
+        let metrics = METRICS.get_or_init(|| read_metrics(&font));
+        Ok(Self { font, metrics })
     }
 
     fn glyph(&self, ch: char) -> GlyphId {
@@ -86,27 +123,24 @@ impl Typeface {
     /// The distance from the top of a line to its baseline, in pixels at font size `size`.
     #[must_use]
     pub fn ascent(&self, size: f32) -> f32 {
-        self.font
-            .metrics(Size::new(size), LocationRef::default())
-            .ascent
+        self.metrics.ascent * size
     }
 
     /// The height of one line, in pixels at font size `size`.
     #[must_use]
     pub fn line_height(&self, size: f32) -> f32 {
-        let m = self.font.metrics(Size::new(size), LocationRef::default());
-        m.ascent - m.descent + m.leading
+        self.metrics.line_height * size
     }
 
     /// The advance width of one line of text.
     #[must_use]
     pub fn width(&self, line: &str, size: f32) -> f32 {
-        let metrics = self
-            .font
-            .glyph_metrics(Size::new(size), LocationRef::default());
-        line.chars()
-            .map(|ch| metrics.advance_width(self.glyph(ch)).unwrap_or(0.0))
-            .sum()
+        let m = self.metrics;
+        let units: f32 = line
+            .chars()
+            .map(|ch| m.advances.get(&ch).copied().unwrap_or(m.missing))
+            .sum();
+        units * size
     }
 
     /// The size of the box of (possibly multi-line) text.

@@ -95,6 +95,10 @@ impl IndexScale {
     }
 }
 
+/// The smallest text any view draws, in canvas pixels (points on screen): 13, so that text
+/// reads at a glance at zoom 1 and is over 20 pixels in presentation (zoom 1.6).
+pub const SMALLEST_TEXT: f32 = 13.0;
+
 /// The label font size in pixels for a canvas `size` pixels wide and high: larger canvases
 /// (a projector, a 1080p export) get larger text, within limits.
 #[must_use]
@@ -120,13 +124,25 @@ pub struct Layout {
 }
 
 impl Layout {
-    /// The layout of a canvas `size` pixels wide and high (sizes below 1 are treated as 1).
+    /// The layout of a canvas `size` pixels wide and high (sizes below 1 are treated as 1),
+    /// with a banner two lines high.
     #[must_use]
     pub fn new(size: Vec2) -> Self {
         let size = size.max(Vec2::ONE);
+        Self::with_banner(size, font_size(size) * 3.2)
+    }
+
+    /// The same canvas with a banner `height` pixels high (at most half the canvas), the
+    /// drawing area and the index scale below it.
+    #[must_use]
+    pub fn with_banner_height(self, height: f32) -> Self {
+        Self::with_banner(self.canvas.size(), height)
+    }
+
+    fn with_banner(size: Vec2, height: f32) -> Self {
         let font = font_size(size);
         let canvas = Rect::from_min_size(Vec2::ZERO, size);
-        let banner = Rect::from_min_size(Vec2::ZERO, Vec2::new(size.x, font * 3.2));
+        let banner = Rect::from_min_size(Vec2::ZERO, Vec2::new(size.x, height.min(size.y * 0.5)));
         let scale_width = font * 10.0;
         let drawing = Rect {
             min: Vec2::new(0.0, banner.max.y),
@@ -167,6 +183,12 @@ impl Layout {
     #[must_use]
     pub fn unit(&self) -> f32 {
         self.font / 14.0
+    }
+
+    /// The size in pixels of text `scale` times the label font, never below [`SMALLEST_TEXT`].
+    #[must_use]
+    pub fn text_size(&self, scale: f32) -> f32 {
+        (self.font * scale).max(SMALLEST_TEXT)
     }
 }
 

@@ -11,6 +11,7 @@
 //! - [`picture`]: the interface diagram itself;
 //! - [`scene_picture`]: a traced scene ([`refraction_scene`]), with [`spectrum`] colouring its rays;
 //! - [`shapes`], [`geometry`], [`palette`], [`font`]: its vocabulary;
+//! - [`placer`]: the one label placer of every view: labels inside the canvas, off what they name;
 //! - [`table`], [`equations`], [`quadratic`]: the numbers shown beside it;
 //! - [`accuracy_plot`]: the `bench` report as error against time;
 //! - [`animation`]: the frames of the animations exported for slides;
@@ -32,6 +33,7 @@ pub mod numbers;
 pub mod overlay;
 pub mod palette;
 pub mod picture;
+pub mod placer;
 pub mod quadratic;
 pub mod scene_picture;
 pub mod shapes;

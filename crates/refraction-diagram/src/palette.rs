@@ -131,12 +131,14 @@ pub struct Palette {
     pub highlight: Colour,
     /// What text in a ray's colour is shaded toward, for legibility on the background.
     pub text_toward: Colour,
+    /// Beyond a scene's world rectangle.
+    pub outside_world: Colour,
+    /// White light traced at one wavelength, in a scene.
+    pub white_light: Colour,
     /// The incoming ray's dash.
     pub incoming_dash: Dash,
     /// The reflected ray's dash.
     pub reflected_dash: Dash,
-    /// Whether the incoming ray is labelled (the colour-blind-safe choice labels every ray).
-    pub label_incoming: bool,
 }
 
 impl Palette {
@@ -162,14 +164,16 @@ impl Palette {
         student: STUDENT,
         highlight: HIGHLIGHT,
         text_toward: Colour::hex(0x000000),
+        outside_world: OUTSIDE_WORLD,
+        white_light: WHITE_LIGHT,
+        // Every palette, not only the colour-blind one, tells the rays apart by stroke too: the
+        // incoming ray is thin and solid (T is bold and solid, the ghosts are dashed, dotted
+        // and dash-dotted), the reflected ray dash-dot-dotted.
         incoming_dash: Dash::Solid,
-        reflected_dash: Dash::Solid,
-        label_incoming: false,
+        reflected_dash: Dash::DashDotDot,
     };
 
-    /// The palette of `theme`; `colour_blind_safe` keeps to the eight Okabe–Ito colours and
-    /// gives the incoming and reflected rays their own dashes and labels, so that no two rays
-    /// differ by colour alone.
+    /// The palette of `theme`; `colour_blind_safe` keeps to the eight Okabe–Ito colours.
     #[must_use]
     pub fn new(theme: Theme, colour_blind_safe: bool) -> Self {
         let base = match theme {
@@ -213,6 +217,8 @@ impl Palette {
                 student: Colour::hex(0xFFFFFF),
                 highlight: Colour::hex(0xF0E442).with_alpha(120),
                 text_toward: Colour::hex(0xFFFFFF),
+                outside_world: Colour::hex(0x262626),
+                white_light: Colour::hex(0xC8C8C8),
                 ..Self::STANDARD
             },
         };
@@ -231,9 +237,6 @@ impl Palette {
             critical: base.ink,
             alarm: Colour::hex(0xD55E00),
             highlight: Colour::hex(0xF0E442).with_alpha(150),
-            incoming_dash: Dash::LongDashDot,
-            reflected_dash: Dash::DashDotDot,
-            label_incoming: true,
             ..base
         }
     }
@@ -268,10 +271,8 @@ mod tests {
                     assert!(rays[i + 1..].iter().all(|b| b != a), "{theme:?} {safe}");
                 }
                 assert_ne!(p.ink, p.background);
-                if safe {
-                    assert_ne!(p.incoming_dash, p.reflected_dash);
-                    assert!(p.label_incoming);
-                }
+                assert_ne!(p.incoming_dash, p.reflected_dash);
+                assert_ne!(p.outside_world, p.background);
             }
         }
         assert_eq!(Palette::new(Theme::Standard, false), Palette::STANDARD);

@@ -8,9 +8,10 @@ use super::geometry::{Colour, Rect, arc, clip_rect_to_half_plane, clip_segment};
 use super::intensities::{Shares, stroke_for};
 use super::layout::Layout;
 use super::model::{ExplorerState, HandleId, INDEX_RANGE, MATERIALS, material_of};
-use super::numbers::number;
+use super::numbers::{number, significant};
 use super::overlay::{Overlay, Part};
 use super::palette::Palette;
+use super::placer::{Obstacle, Placer, wrap};
 use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke, lower_all};
 use super::wavefronts;
 use refraction_kernel::{Convention, Refraction, Rejection, seed};
@@ -37,6 +38,9 @@ pub struct Diagram {
     pub handles: Vec<Handle>,
     /// The banner's text: what the picture says in words, for screen readers.
     pub summary: String,
+    /// The labels the placer left out for want of a free spot, at their anchors: the window
+    /// shows their text when the pointer is near.
+    pub left_out: Vec<Label>,
 }
 
 /// The lengths of the diagram's rays, in world units (W, N and T are 1).
@@ -56,7 +60,53 @@ fn short_rule(rejection: Rejection) -> &'static str {
 /// The name and index of a medium, e.g. `μt = 1.5 (glass)`.
 fn medium_text(symbol: &str, index: f64) -> String {
     let name = material_of(index).map_or("custom", |m| m.name);
-    format!("{symbol} = {index} ({name})")
+    format!("{symbol} = {} ({name})", significant(index, 4))
+}
+
+/// The banner's text: the convention in words, or total internal reflection.
+fn banner_text(r: &Refraction<f64>) -> String {
+    let theta_i = number(r.cos_i.clamp(-1.0, 1.0).acos().to_degrees(), 1);
+    match r.transmission {
+        None => format!(
+            "TOTAL INTERNAL REFLECTION\nk = {} < 0: no real root for b, no refracted ray; \
+             all light is reflected (θi = {theta_i}°)",
+            significant(r.k, 4)
+        ),
+        Some(tr) => {
+            let words = match r.convention {
+                Convention::TowardOrigin => "W points back toward the origin, so a = −μ",
+                Convention::AlongRay => "W is the direction of travel, so a = +μ",
+            };
+            format!(
+                "Section {}: {words}\nθi = {theta_i}°   θt = {}°   k = {} ≥ 0: T exists",
+                r.convention.section(),
+                number(tr.cos_t.clamp(-1.0, 1.0).acos().to_degrees(), 1),
+                significant(r.k, 4)
+            )
+        }
+    }
+}
+
+/// The banner's margins left and right, in label font sizes.
+const BANNER_MARGIN: f32 = 0.6;
+
+/// The layout of a canvas `size` with the banner tall enough for `text` wrapped to its width,
+/// and the text so wrapped.
+fn layout_with_banner(size: Vec2, text: &str, face: Option<&Typeface>) -> (Layout, String) {
+    let layout = Layout::new(size);
+    let Some(face) = face else {
+        return (layout, text.to_owned());
+    };
+    let font = layout.font;
+    let room = layout.banner.size().x - 2.0 * font * BANNER_MARGIN;
+    let wrapped = wrap(face, text, font, room);
+    let height = face.measure(&wrapped, font).y + font * 0.8;
+    let layout = if height > layout.banner.size().y {
+        layout.with_banner_height(height)
+    } else {
+        layout
+    };
+    (layout, wrapped)
 }
 
 /// How much larger than a handle its grab area is (half-side over radius).
@@ -144,51 +194,57 @@ impl DiagramBuilder<'_> {
             at,
             h,
             v,
-            size: size * self.font(),
+            size: self.layout.text_size(size),
             colour,
             background: Some(self.palette.label_background),
         };
         self.labels.push((self.rank, label));
     }
 
-    /// Places the waiting labels, by rank, on top of everything else. A label anchored in the
-    /// drawing area is kept inside it (clear of the banner and the index scale) and moved
-    /// aside, a step at a time, until it overlaps no handle and no label placed before it.
-    fn finish(mut self, handles: &[Handle]) -> Vec<Figure> {
+    /// Places the waiting labels, by rank, on top of everything else, through the
+    /// [`Placer`]: a label anchored in the drawing area stays inside it (clear of the banner
+    /// and the index scale), every label stays off the arrowheads, the handles' grab areas and
+    /// the labels placed before it, and one with no free spot is left out (returned second).
+    fn finish(mut self, handles: &[Handle]) -> (Vec<Figure>, Vec<Label>) {
         let mut labels = std::mem::take(&mut self.labels);
         labels.sort_by_key(|(rank, _)| *rank);
-        let drawing = self.layout.drawing;
-        let mut taken: Vec<Rect> = handles.iter().map(Diagram::grab_area).collect();
-        for (_, mut label) in labels {
-            if let Some(face) = self.face.as_ref().filter(|_| drawing.contains(label.at)) {
-                let extent = face.measure(&label.text, label.size);
-                let pad = Vec2::splat(label.size * 0.25);
-                let corner = extent * Vec2::new(label.h.fraction(), label.v.fraction()) + pad;
-                let boxed = |at: Vec2| {
-                    let min = at - corner;
-                    let max = min + extent + pad * 2.0;
-                    let shift =
-                        (drawing.min - min).max(Vec2::ZERO) + (drawing.max - max).min(Vec2::ZERO);
-                    let rect = Rect {
-                        min: min + shift,
-                        max: max + shift,
-                    };
-                    (at + shift, rect)
-                };
-                let step = label.size * 0.6;
-                let offsets = std::iter::once(Vec2::ZERO).chain((1..=12).flat_map(|k| {
-                    [Vec2::Y, -Vec2::Y, Vec2::X, -Vec2::X].map(|d| d * step * k as f32)
-                }));
-                let (at, rect) = offsets
-                    .map(|offset| boxed(label.at + offset))
-                    .find(|(_, rect)| !taken.iter().any(|t| t.overlaps(rect)))
-                    .unwrap_or_else(|| boxed(label.at));
-                label.at = at;
-                taken.push(rect);
+        let Some(face) = self.face.as_ref() else {
+            // No font (a broken build): nothing can be measured, so nothing is moved.
+            self.shapes
+                .extend(labels.into_iter().map(|(_, l)| Figure::Text(l)));
+            return (self.shapes, Vec::new());
+        };
+        let mut placer = Placer::new(face);
+        for shape in &self.shapes {
+            if let Figure::Arrow { .. } = shape {
+                let mut lowered = Vec::new();
+                shape.lower(&mut lowered);
+                for p in lowered {
+                    if let Primitive::Polygon { points, .. } = p {
+                        placer.avoid(Obstacle::Polygon(points));
+                    }
+                }
             }
-            self.shapes.push(Figure::Text(label));
         }
+        for handle in handles {
+            placer.avoid(Obstacle::Box(Diagram::grab_area(handle)));
+        }
+        let drawing = self.layout.drawing;
+        let below_banner = Rect {
+            min: Vec2::new(0.0, self.layout.banner.max.y),
+            max: self.layout.canvas.max,
+        };
+        let placement = placer.place_all(labels.into_iter().map(|(_, label)| {
+            let bounds = if drawing.contains(label.at) {
+                drawing
+            } else {
+                below_banner
+            };
+            (label, bounds)
+        }));
         self.shapes
+            .extend(placement.placed.into_iter().map(Figure::Text));
+        (self.shapes, placement.left_out)
     }
 
     /// An arrow from the hit point along the unit diagram direction `d`, `length` long, with a
@@ -416,8 +472,8 @@ impl DiagramBuilder<'_> {
         }
     }
 
-    /// The status strip: the convention in words, or total internal reflection.
-    fn banner(&mut self, r: &Refraction<f64>) -> String {
+    /// The status strip, its text wrapped to fit by [`Diagram::with_overlay`].
+    fn banner(&mut self, r: &Refraction<f64>, text: String) {
         let rect = self.layout.banner;
         let (fill, ink) = if r.is_tir() {
             (self.palette.alarm, self.palette.on_alarm)
@@ -428,29 +484,9 @@ impl DiagramBuilder<'_> {
             points: rect.corners().to_vec(),
             colour: fill,
         });
-        let theta_i = number(r.cos_i.clamp(-1.0, 1.0).acos().to_degrees(), 1);
-        let text = match r.transmission {
-            None => format!(
-                "TOTAL INTERNAL REFLECTION\nk = {} < 0: no real root for b, no refracted ray; \
-                 all light is reflected (θi = {theta_i}°)",
-                number(r.k, 4)
-            ),
-            Some(tr) => {
-                let words = match r.convention {
-                    Convention::TowardOrigin => "W points back toward the origin, so a = −μ",
-                    Convention::AlongRay => "W is the direction of travel, so a = +μ",
-                };
-                format!(
-                    "Section {}: {words}\nθi = {theta_i}°   θt = {}°   k = {} ≥ 0: T exists",
-                    r.convention.section(),
-                    number(tr.cos_t.clamp(-1.0, 1.0).acos().to_degrees(), 1),
-                    number(r.k, 4)
-                )
-            }
-        };
-        let at = Vec2::new(rect.min.x + self.font() * 0.6, rect.center().y);
+        let at = Vec2::new(rect.min.x + self.font() * BANNER_MARGIN, rect.center().y);
         self.shapes.push(Figure::Text(Label {
-            text: text.clone(),
+            text,
             at,
             h: Align::Start,
             v: Align::Center,
@@ -458,7 +494,6 @@ impl DiagramBuilder<'_> {
             colour: ink,
             background: None,
         }));
-        text
     }
 
     /// The index scale with the presets and the two μ markers.
@@ -515,7 +550,7 @@ impl DiagramBuilder<'_> {
                 at: center,
                 h: Align::Center,
                 v: Align::Center,
-                size: font * 0.75,
+                size: self.layout.text_size(0.75),
                 colour: self.palette.ink,
                 background: None,
             }));
@@ -537,13 +572,11 @@ impl DiagramBuilder<'_> {
         let source = toward_source * INCOMING_LENGTH;
         self.halo(Part::Incoming, vec![self.at(source), self.at(DVec2::ZERO)]);
         self.segment(source, DVec2::ZERO, incoming);
-        if palette.label_incoming {
-            let at = self.at(source);
-            let away = self.layout.view.direction(toward_source);
-            let anchor = (Align::away(away.x), Align::away(away.y));
-            let colour = palette.text_shade(palette.incoming);
-            self.label_coloured("incoming ray", at, anchor, 0.8, colour);
-        }
+        let at = self.at(source);
+        let away = self.layout.view.direction(toward_source);
+        let anchor = (Align::away(away.x), Align::away(away.y));
+        let colour = palette.text_shade(palette.incoming);
+        self.label_coloured("incoming ray", at, anchor, 0.8, colour);
         self.shapes.push(Figure::Arrow {
             from: self.at(source),
             to: self.at(source * 0.45),
@@ -672,14 +705,18 @@ impl Diagram {
     /// palette and view, with its student's T and highlights.
     #[must_use]
     pub fn with_overlay(state: &ExplorerState, size: Vec2, overlay: &Overlay) -> Self {
-        let layout = Layout::new(size).panned(overlay.pan_zoom);
+        let r = state.refraction();
+        let face = Typeface::egui_default().ok();
+        let summary = banner_text(r);
+        let (layout, banner) = layout_with_banner(size, &summary, face.as_ref());
+        let layout = layout.panned(overlay.pan_zoom);
         let palette = overlay.palette;
         let mut b = DiagramBuilder {
             layout: &layout,
             state,
             overlay,
             palette,
-            face: Typeface::egui_default().ok(),
+            face,
             labels: Vec::new(),
             rank: Rank::Media,
             shapes: vec![Figure::Fill {
@@ -687,7 +724,6 @@ impl Diagram {
                 colour: palette.background,
             }],
         };
-        let r = state.refraction();
         let normal = b.flat(r.facing_normal);
         let toward_source = b.flat(-r.travel);
         b.media(normal);
@@ -709,14 +745,16 @@ impl Diagram {
         b.rank = Rank::Vectors;
         let [w_dir, n_dir] = b.vectors(r);
         b.student();
-        let summary = b.banner(r);
+        b.banner(r, banner);
         let [mu_i, mu_t] = b.index_scale();
         let w = b.tip_handle(HandleId::W, w_dir, palette.w);
         let n = b.tip_handle(HandleId::N, n_dir, palette.n);
         let handles = vec![w, n, mu_i, mu_t];
+        let (shapes, left_out) = b.finish(&handles);
         Self {
-            shapes: b.finish(&handles),
+            shapes,
             handles,
+            left_out,
             layout,
             summary,
         }
@@ -935,6 +973,42 @@ mod tests {
             .find(|(_, s)| s.colour == dark.palette.reflected)
             .unwrap();
         assert_eq!(reflected.1.dash, Dash::DashDotDot);
+    }
+
+    #[test]
+    fn no_two_rays_differ_by_colour_alone_in_any_palette() {
+        use crate::overlay::{Overlay, StudentRay};
+        use crate::palette::{Palette, Theme};
+        let mut state = ExplorerState::default();
+        state.flip_normal();
+        let wrong = state.refraction().candidates[1].t;
+        for theme in Theme::ALL {
+            for safe in [false, true] {
+                let palette = Palette::new(theme, safe);
+                let overlay = Overlay {
+                    palette,
+                    student: Some(StudentRay {
+                        t: wrong,
+                        label: "your T".to_owned(),
+                        names: None,
+                    }),
+                    ..Overlay::default()
+                };
+                let diagram = Diagram::with_overlay(&state, Vec2::new(1000.0, 700.0), &overlay);
+                // The rays: every arrow but the vectors W and N (and the bug's −N beside N),
+                // which are told apart by their labels and handles.
+                let rays: Vec<(Dash, u32)> = arrows(&diagram)
+                    .into_iter()
+                    .filter(|(_, s)| s.colour != palette.w && s.colour != palette.n)
+                    .map(|(_, s)| (s.dash, s.width.to_bits()))
+                    .collect();
+                assert!(rays.len() >= 7, "{rays:?}");
+                for (i, a) in rays.iter().enumerate() {
+                    assert!(!rays[i + 1..].contains(a), "{theme:?} {safe}: {a:?} twice");
+                }
+                assert!(texts(&diagram).contains(&"incoming ray"));
+            }
+        }
     }
 
     #[test]

@@ -10,10 +10,11 @@ use glam::{DVec2, Vec2};
 
 use super::font::Typeface;
 use super::geometry::{Colour, Rect, convex_pieces};
-use super::layout::{Viewport, font_size};
+use super::layout::{SMALLEST_TEXT, Viewport, font_size};
 use super::numbers::number;
-use super::palette::{self, Palette};
+use super::palette::Palette;
 use super::picture::{GRAB_SCALE, medium_colour};
+use super::placer::{Obstacle, Placer};
 use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke};
 use super::spectrum::{ray_colour, wavelength_colour};
 use refraction_scene::{
@@ -99,9 +100,42 @@ impl SceneLayout {
     #[must_use]
     pub fn new(bounds: Bounds, size: Vec2) -> Self {
         let size = size.max(Vec2::ONE);
+        Self::with_banner(bounds, size, font_size(size) * 4.4)
+    }
+
+    /// The layout of `scene` traced as `trace` on a canvas `size` pixels wide and high: as
+    /// [`SceneLayout::new`], with the banner as tall as its wrapped lines need (at most half
+    /// the canvas).
+    #[must_use]
+    pub fn for_scene(scene: &Scene, trace: &Trace, size: Vec2) -> Self {
+        let layout = Self::new(trace.bounds, size);
+        let face = Typeface::egui_default().ok();
+        let rows = banner_rows(scene, trace, layout.font, &Palette::STANDARD);
+        let room = layout.banner_room();
+        let lines: f32 = rows
+            .iter()
+            .map(|(pieces, size)| {
+                let count = flow(face.as_ref(), pieces, *size, room).len();
+                count as f32 * line_height(face.as_ref(), *size)
+            })
+            .sum();
+        let height = lines + layout.font * BANNER_PAD * 2.0;
+        if height > layout.banner.size().y {
+            Self::with_banner(trace.bounds, layout.canvas.size(), height)
+        } else {
+            layout
+        }
+    }
+
+    /// The width a line of the banner may take.
+    fn banner_room(&self) -> f32 {
+        (self.canvas.size().x - 2.0 * self.font * BANNER_MARGIN).max(1.0)
+    }
+
+    fn with_banner(bounds: Bounds, size: Vec2, height: f32) -> Self {
         let font = font_size(size);
         let canvas = Rect::from_min_size(Vec2::ZERO, size);
-        let banner = Rect::from_min_size(Vec2::ZERO, Vec2::new(size.x, font * 4.4));
+        let banner = Rect::from_min_size(Vec2::ZERO, Vec2::new(size.x, height.min(size.y * 0.5)));
         let drawing = Rect {
             min: Vec2::new(0.0, banner.max.y),
             max: Vec2::new(size.x, size.y.max(banner.max.y + 1.0)),
@@ -233,6 +267,84 @@ impl SceneLayout {
     }
 }
 
+/// The banner's margin left and right, and above and below, in label font sizes.
+const BANNER_MARGIN: f32 = 0.6;
+const BANNER_PAD: f32 = 0.3;
+
+/// The extent of a label's text (estimated if the font is missing, which only a broken build
+/// can cause).
+fn measure(face: Option<&Typeface>, text: &str, size: f32) -> Vec2 {
+    face.map_or_else(
+        || Vec2::new(text.chars().count() as f32 * size * 0.55, size * 1.2),
+        |face| face.measure(text, size),
+    )
+}
+
+fn line_height(face: Option<&Typeface>, size: f32) -> f32 {
+    face.map_or(size * 1.2, |face| face.line_height(size))
+}
+
+/// One run of text of one colour on a banner line, starting `x` pixels from the margin.
+struct Run {
+    text: String,
+    colour: Colour,
+    x: f32,
+}
+
+/// Coloured pieces of text laid out in lines `room` pixels wide, broken between words.
+fn flow(
+    face: Option<&Typeface>,
+    pieces: &[(String, Colour)],
+    size: f32,
+    room: f32,
+) -> Vec<Vec<Run>> {
+    let mut lines: Vec<Vec<Run>> = vec![Vec::new()];
+    let mut x = 0.0;
+    for (text, colour) in pieces {
+        for word in text.split_inclusive(' ') {
+            let width = measure(face, word, size).x;
+            let inked = measure(face, word.trim_end(), size).x;
+            if x > 0.0 && x + inked > room {
+                lines.push(Vec::new());
+                x = 0.0;
+            }
+            let line = lines.last_mut().expect("lines start with one line");
+            match line.last_mut() {
+                Some(run) if run.colour == *colour => run.text.push_str(word),
+                _ => line.push(Run {
+                    text: word.to_owned(),
+                    colour: *colour,
+                    x,
+                }),
+            }
+            x += width;
+        }
+    }
+    lines
+}
+
+/// The banner's rows, each with its text size: the title, the counts, the legend.
+fn banner_rows(
+    scene: &Scene,
+    trace: &Trace,
+    font: f32,
+    p: &Palette,
+) -> [(Vec<(String, Colour)>, f32); 3] {
+    let small = (font * 0.85).max(SMALLEST_TEXT);
+    let mut count_row = vec![(counts_text(&trace.counts), p.ink)];
+    if trace.counts.truncated {
+        count_row.push((
+            format!(" · stopped at {} segments", trace.segments.len()),
+            p.alarm,
+        ));
+    }
+    [
+        (vec![(scene.title().to_owned(), p.ink)], font * 1.05),
+        (count_row, small),
+        (legend(scene, trace, p), small),
+    ]
+}
+
 /// Everything drawn for one traced scene on one canvas.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ScenePicture {
@@ -240,6 +352,8 @@ pub struct ScenePicture {
     pub primitives: Vec<Primitive>,
     /// The handles, as [`SceneLayout::handles`] gives them.
     pub handles: Vec<SceneHandle>,
+    /// The labels left out for want of a free spot, at their anchors, for a hover to show.
+    pub left_out: Vec<Label>,
     /// The title and the counts in words, for screen readers.
     pub summary: String,
 }
@@ -318,6 +432,11 @@ fn counts_text(c: &Counts) -> String {
 /// Builds the primitives, with the layout at hand.
 struct ScenePictureBuilder<'a> {
     layout: &'a SceneLayout,
+    palette: Palette,
+    /// Labels wait here to be placed once every marker and handle is known.
+    labels: Vec<Label>,
+    /// Where the hit markers and handles start in `out`: what labels must leave free.
+    marks_from: usize,
     face: Option<Typeface>,
     out: Vec<Primitive>,
 }
@@ -327,32 +446,49 @@ impl ScenePictureBuilder<'_> {
         self.layout.unit()
     }
 
-    /// The extent of a label's text (estimated if the font is missing, which only a broken
-    /// build can cause).
-    fn measure(&self, text: &str, size: f32) -> Vec2 {
-        self.face.as_ref().map_or_else(
-            || Vec2::new(text.chars().count() as f32 * size * 0.55, size * 1.2),
-            |face| face.measure(text, size),
-        )
-    }
-
-    /// A label with a light box behind it, moved as little as needed to lie inside the canvas.
+    /// A label with a light box behind it, placed (or left out) by [`ScenePictureBuilder::place`].
     fn boxed_label(&mut self, text: String, at: Vec2, (h, v): (Align, Align), size: f32) {
-        let extent = self.measure(&text, size);
-        let pad = Vec2::splat(size * 0.25);
-        let min = at - extent * Vec2::new(h.fraction(), v.fraction()) - pad;
-        let max = min + extent + pad * 2.0;
-        let canvas = self.layout.canvas;
-        let shift = (canvas.min - min).max(Vec2::ZERO) + (canvas.max - max).min(Vec2::ZERO);
-        self.out.push(Primitive::Text(Label {
+        self.labels.push(Label {
             text,
-            at: at + shift,
+            at,
             h,
             v,
             size,
-            colour: palette::INK,
-            background: Some(palette::LABEL_BACKGROUND),
-        }));
+            colour: self.palette.ink,
+            background: Some(self.palette.label_background),
+        });
+    }
+
+    /// Places the waiting labels inside the drawing area, off the hit markers, the handles and
+    /// the aim's arrowhead, through the [`Placer`]; returns those left out.
+    fn place(&mut self, handles: &[SceneHandle]) -> Vec<Label> {
+        let labels = std::mem::take(&mut self.labels);
+        let Some(face) = self.face.as_ref() else {
+            // No font (a broken build): nothing can be measured, so nothing is moved.
+            self.out.extend(labels.into_iter().map(Primitive::Text));
+            return Vec::new();
+        };
+        let mut placer = Placer::new(face);
+        for p in &self.out[self.marks_from..] {
+            match p {
+                Primitive::Disc { center, radius, .. } => placer.avoid(Obstacle::Disc {
+                    center: *center,
+                    radius: *radius,
+                }),
+                Primitive::Polygon { points, .. } if points.len() == 3 => {
+                    placer.avoid(Obstacle::Polygon(points.clone()));
+                }
+                _ => {}
+            }
+        }
+        for handle in handles {
+            placer.avoid(Obstacle::Box(handle.grab_area()));
+        }
+        let drawing = self.layout.drawing;
+        let placement = placer.place_all(labels.into_iter().map(|l| (l, drawing)));
+        self.out
+            .extend(placement.placed.into_iter().map(Primitive::Text));
+        placement.left_out
     }
 
     /// The world rectangle in the background medium's shade (rays end at its edge), then each
@@ -366,12 +502,12 @@ impl ScenePictureBuilder<'_> {
             .map_or(1.0, |m| m.index(REFERENCE_WAVELENGTH_NM));
         self.out.push(Primitive::Polygon {
             points: self.layout.canvas.corners().to_vec(),
-            colour: palette::OUTSIDE_WORLD,
+            colour: self.palette.outside_world,
         });
         let bounds = self.layout.bounds;
         self.out.push(Primitive::Polygon {
             points: bounds.corners().map(|p| self.layout.at(p)).to_vec(),
-            colour: medium_colour(&Palette::STANDARD, background),
+            colour: medium_colour(&self.palette, background),
         });
         let max_step = 2.0 / f64::from(self.layout.view.scale);
         let on_border = |a: DVec2, b: DVec2| {
@@ -389,7 +525,7 @@ impl ScenePictureBuilder<'_> {
                 self.out.push(Primitive::Polyline {
                     points,
                     width: 4.0 * self.unit(),
-                    colour: palette::INK,
+                    colour: self.palette.ink,
                 });
                 continue;
             };
@@ -400,7 +536,7 @@ impl ScenePictureBuilder<'_> {
             for piece in convex_pieces(&points) {
                 self.out.push(Primitive::Polygon {
                     points: piece,
-                    colour: medium_colour(&Palette::STANDARD, index),
+                    colour: medium_colour(&self.palette, index),
                 });
             }
             let mut run: Vec<Vec2> = Vec::new();
@@ -423,22 +559,32 @@ impl ScenePictureBuilder<'_> {
             self.out.push(Primitive::Polyline {
                 points,
                 width: 1.5 * self.unit(),
-                colour: palette::INK,
+                colour: self.palette.ink,
             });
         }
     }
 
     /// Every path as polylines in its wavelength's colour, split where its opacity changes.
     /// When white light is dispersed, what every colour shares (a source ray up to its first
-    /// kernel call, and the reflection there) is drawn once, as white light: drawn colour by
-    /// colour, the last colour would hide the others.
+    /// kernel call, and the reflection there) is drawn once, as white light, and the colours
+    /// are drawn interleaved (every colour of one source ray, then the next ray's): drawn
+    /// colour by colour, the last colour would hide the others where rays crowd, and a droplet
+    /// of a thousand rays would be a red blob instead of a spectrum.
     fn rays(&mut self, trace: &Trace) {
         let wavelengths = trace.counts.wavelengths.max(1);
         let per_colour = (trace.counts.source_rays / wavelengths).max(1) as f32;
         let width = (2.2 * self.unit() * (30.0 / per_colour).sqrt().min(1.0)).max(0.8);
+        // Dense dispersed light is drawn translucent, so that where many rays of every colour
+        // cross, the colours mix (as light adds up) instead of the last drawn hiding the rest.
+        let blend = if wavelengths > 1 {
+            (30.0 / per_colour).sqrt().clamp(0.2, 1.0)
+        } else {
+            1.0
+        };
+        let faded = |alpha: u8| (f32::from(alpha) * blend).round() as u8;
         let mut white = HashSet::new();
         let mut last_colour = None;
-        for path in &trace.paths {
+        for path in interleaved(trace).map(|i| &trace.paths[i]) {
             // Paths come colour after colour: look each colour up once.
             let colour = match last_colour {
                 Some((traced, colour)) if traced == path.light => colour,
@@ -454,7 +600,7 @@ impl ScenePictureBuilder<'_> {
                 if white.insert(key) {
                     let points = vec![self.layout.at(first.from), self.layout.at(first.to)];
                     let alpha = opacity(first.intensity);
-                    self.ray(points, palette::WHITE_LIGHT.with_alpha(alpha), width);
+                    self.ray(points, self.palette.white_light.with_alpha(alpha), width);
                 }
                 segments = rest;
             }
@@ -464,7 +610,7 @@ impl ScenePictureBuilder<'_> {
                 let mean = s
                     .intensity
                     .map(|i| (i + s.intensity_end.unwrap_or(i)) * 0.5);
-                let a = opacity(mean);
+                let a = faded(opacity(mean));
                 let (from, to) = (self.layout.at(s.from), self.layout.at(s.to));
                 if a != alpha {
                     self.ray(std::mem::take(&mut run), colour.with_alpha(alpha), width);
@@ -518,9 +664,9 @@ impl ScenePictureBuilder<'_> {
             self.out.push(Primitive::Disc {
                 center,
                 radius,
-                fill: hit_colour(hit),
+                fill: hit_colour(hit, &self.palette),
                 outline_width: self.unit(),
-                outline: palette::INK,
+                outline: self.palette.ink,
             });
         }
     }
@@ -528,7 +674,7 @@ impl ScenePictureBuilder<'_> {
     /// Each shape's medium named beside its handle, and the background's in the world's top-left
     /// corner.
     fn media_labels(&mut self, scene: &Scene, handles: &[SceneHandle]) {
-        let size = self.layout.font * 0.8;
+        let size = (self.layout.font * 0.8).max(SMALLEST_TEXT);
         let bounds = self.layout.bounds;
         let top_left = self.layout.at(DVec2::new(bounds.min.x, bounds.max.y));
         let corner = top_left.max(self.layout.drawing.min) + Vec2::splat(self.layout.font * 0.6);
@@ -566,16 +712,16 @@ impl ScenePictureBuilder<'_> {
                 to: aim.center,
                 stroke: Stroke {
                     dash: Dash::Dashed,
-                    ..ring(palette::W)
+                    ..ring(self.palette.w)
                 },
             }
             .lower(&mut self.out);
         }
         for handle in handles {
             let (fill, outline) = match handle.id {
-                SceneHandleId::Source => (palette::W, palette::INK),
-                SceneHandleId::Aim => (palette::BACKGROUND, palette::W),
-                SceneHandleId::Shape(_) => (palette::BACKGROUND, palette::INK),
+                SceneHandleId::Source => (self.palette.w, self.palette.ink),
+                SceneHandleId::Aim => (self.palette.background, self.palette.w),
+                SceneHandleId::Shape(_) => (self.palette.background, self.palette.ink),
             };
             Figure::Disc {
                 center: handle.center,
@@ -588,69 +734,88 @@ impl ScenePictureBuilder<'_> {
                 Figure::Disc {
                     center: handle.center,
                     radius: handle.radius * 0.3,
-                    fill: palette::INK,
-                    outline: ring(palette::INK),
+                    fill: self.palette.ink,
+                    outline: ring(self.palette.ink),
                 }
                 .lower(&mut self.out);
             }
         }
     }
 
-    /// One line of the banner: pieces of text in their colours, side by side from the left,
-    /// shrunk as needed to fit the canvas's width.
-    fn row(&mut self, pieces: &[(String, Colour)], y: f32, size: f32) {
-        let margin = self.layout.font * 0.6;
-        let room = (self.layout.canvas.size().x - 2.0 * margin).max(1.0);
-        let width: f32 = pieces.iter().map(|(t, _)| self.measure(t, size).x).sum();
-        let size = if width > room {
-            size * room / width
-        } else {
-            size
-        };
-        let mut x = margin;
-        for (text, colour) in pieces {
-            let advance = self.measure(text, size).x;
-            self.out.push(Primitive::Text(Label {
-                text: text.clone(),
-                at: Vec2::new(x, y),
-                h: Align::Start,
-                v: Align::Center,
-                size,
-                colour: *colour,
-                background: None,
-            }));
-            x += advance;
-        }
-    }
-
-    /// The banner, drawn last so that nothing covers it: the title, the counts, the legend.
+    /// The banner, drawn last so that nothing covers it: the title, the counts, the legend,
+    /// each wrapped to the canvas's width (a [`SceneLayout::for_scene`] banner is tall enough).
     fn banner(&mut self, scene: &Scene, trace: &Trace) -> String {
         let banner = self.layout.banner;
         self.out.push(Primitive::Polygon {
             points: banner.corners().to_vec(),
-            colour: palette::CALM,
+            colour: self.palette.calm,
         });
         let font = self.layout.font;
-        let line = banner.size().y / 3.0;
-        let top = banner.min.y;
-        self.row(
-            &[(scene.title().to_owned(), palette::INK)],
-            top + line * 0.55,
-            font * 1.05,
-        );
-        let counts = counts_text(&trace.counts);
-        let mut count_row = vec![(counts.clone(), palette::INK)];
-        if trace.counts.truncated {
-            count_row.push((
-                format!(" · stopped at {} segments", trace.segments.len()),
-                palette::ALARM,
-            ));
+        let margin = font * BANNER_MARGIN;
+        let room = self.layout.banner_room();
+        let mut y = banner.min.y + font * BANNER_PAD;
+        for (pieces, size) in banner_rows(scene, trace, font, &self.palette) {
+            for line in flow(self.face.as_ref(), &pieces, size, room) {
+                for run in line {
+                    self.out.push(Primitive::Text(Label {
+                        text: run.text,
+                        at: Vec2::new(margin + run.x, y),
+                        h: Align::Start,
+                        v: Align::Start,
+                        size,
+                        colour: run.colour,
+                        background: None,
+                    }));
+                }
+                y += line_height(self.face.as_ref(), size);
+            }
         }
-        self.row(&count_row, top + line * 1.5, font * 0.85);
-        let legend = legend(scene, trace);
-        self.row(&legend, top + line * 2.4, font * 0.85);
-        format!("{}: {counts}", scene.title())
+        format!("{}: {}", scene.title(), counts_text(&trace.counts))
     }
+}
+
+/// The order to draw the paths of `trace` in: as traced for one colour; for several, by the
+/// source ray they come from (the k-th source ray of each colour together, with the
+/// reflections spawned from it), and within one source ray its colours starting from the k-th
+/// (colour k mod n on top of ray k): the colours of one ray lie on one another until they
+/// spread, so a fixed order would put the same colour on top of every ray.
+fn interleaved(trace: &Trace) -> Box<dyn Iterator<Item = usize> + '_> {
+    let colours = trace.counts.wavelengths;
+    if colours <= 1 {
+        return Box::new(0..trace.paths.len());
+    }
+    // (source ray, colour) of every path, a reflection's those of the path it came from: the
+    // colour is the light's place among the lights met, the ray how many source rays of that
+    // light came before (the tracer may list them colour after colour or ray after ray).
+    let mut of = vec![(0, 0); trace.paths.len()];
+    let mut lights: Vec<(Light, usize)> = Vec::with_capacity(colours);
+    for (i, path) in trace.paths.iter().enumerate() {
+        of[i] = match path.parent_hit {
+            None => {
+                let colour = lights
+                    .iter()
+                    .position(|(light, _)| *light == path.light)
+                    .unwrap_or_else(|| {
+                        lights.push((path.light, 0));
+                        lights.len() - 1
+                    });
+                lights[colour].1 += 1;
+                (lights[colour].1, colour)
+            }
+            Some(h) => trace
+                .hits
+                .get(h)
+                .and_then(|hit| of.get(hit.path).copied())
+                .unwrap_or((0, 0)),
+        };
+    }
+    let mut order: Vec<usize> = (0..trace.paths.len()).collect();
+    // Stable: a path's reflections keep the traced order after it.
+    order.sort_by_key(|&i| {
+        let (ray, colour) = of[i];
+        (ray, (colour + colours - ray % colours) % colours)
+    });
+    Box::new(order.into_iter())
 }
 
 /// Whether the first segment of `path` is the same for every wavelength: a source ray's (it
@@ -672,27 +837,27 @@ fn starts_colour_blind(trace: &Trace, path: &Path) -> bool {
 }
 
 /// The fill of a hit's marker.
-fn hit_colour(hit: &Hit) -> Colour {
+fn hit_colour(hit: &Hit, p: &Palette) -> Colour {
     match (hit.outcome, hit.side) {
-        (Outcome::TotalInternalReflection, _) => palette::CRITICAL,
-        (Outcome::Refracted, Side::Leaving) => palette::WARNING,
-        (Outcome::Refracted, Side::Entering) => palette::BACKGROUND,
+        (Outcome::TotalInternalReflection, _) => p.critical,
+        (Outcome::Refracted, Side::Leaving) => p.warning,
+        (Outcome::Refracted, Side::Entering) => p.background,
     }
 }
 
 /// The legend row: the colours traced, what opacity means, the kinds of hit marker shown.
-fn legend(scene: &Scene, trace: &Trace) -> Vec<(String, Colour)> {
-    let ink = palette::INK;
+fn legend(scene: &Scene, trace: &Trace, p: &Palette) -> Vec<(String, Colour)> {
+    let ink = p.ink;
     let mut pieces = vec![("colour: ".to_owned(), ink)];
     let colours = scene.source().colours(scene.effects().dispersion);
     match colours.as_slice() {
         [Light::White] => pieces.push((
             format!("white light, traced at {REFERENCE_WAVELENGTH_NM} nm"),
-            palette::WHITE_LIGHT,
+            p.white_light,
         )),
         _ => {
             if colours.len() > 1 {
-                pieces.push(("white light, then ".to_owned(), palette::WHITE_LIGHT));
+                pieces.push(("white light, then ".to_owned(), p.white_light));
             }
             for nm in colours.iter().filter_map(|light| light.wavelength_nm()) {
                 pieces.push((format!("{} ", number(nm, 0)), wavelength_colour(nm)));
@@ -704,20 +869,20 @@ fn legend(scene: &Scene, trace: &Trace) -> Vec<(String, Colour)> {
         pieces.push((" · opacity: intensity".to_owned(), ink));
     }
     let kinds = [
-        (palette::BACKGROUND, "entering"),
-        (palette::WARNING, "leaving (N turned round)"),
-        (palette::CRITICAL, "total internal reflection"),
+        (p.background, "entering"),
+        (p.warning, "leaving (N turned round)"),
+        (p.critical, "total internal reflection"),
     ];
     let mut first = true;
     for (fill, words) in kinds {
-        if trace.hits.iter().any(|h| hit_colour(h) == fill) {
+        if trace.hits.iter().any(|h| hit_colour(h, p) == fill) {
             let lead = if first { " · hits: " } else { ", " };
             first = false;
             pieces.push((lead.to_owned(), ink));
-            let colour = if fill == palette::BACKGROUND {
+            let colour = if fill == p.background {
                 ink
             } else {
-                Palette::STANDARD.text_shade(fill)
+                p.text_shade(fill)
             };
             pieces.push((words.to_owned(), colour));
         }
@@ -731,21 +896,38 @@ impl ScenePicture {
     /// drag until it ends, so that the world does not move under the pointer).
     #[must_use]
     pub fn new(scene: &Scene, trace: &Trace, layout: &SceneLayout) -> Self {
+        Self::with_palette(scene, trace, layout, &Palette::STANDARD)
+    }
+
+    /// [`ScenePicture::new`] in the colours of `palette` (a theme, the colour-blind choice).
+    #[must_use]
+    pub fn with_palette(
+        scene: &Scene,
+        trace: &Trace,
+        layout: &SceneLayout,
+        palette: &Palette,
+    ) -> Self {
         let mut b = ScenePictureBuilder {
             layout,
+            palette: *palette,
+            labels: Vec::new(),
+            marks_from: 0,
             face: Typeface::egui_default().ok(),
             out: Vec::with_capacity(trace.segments.len() + trace.hits.len() / 4 + 64),
         };
         let handles = layout.handles(scene);
         b.shapes(scene);
         b.rays(trace);
+        b.marks_from = b.out.len();
         b.hits(trace);
-        b.media_labels(scene, &handles);
         b.handles(&handles);
+        b.media_labels(scene, &handles);
+        let left_out = b.place(&handles);
         let summary = b.banner(scene, trace);
         Self {
             primitives: b.out,
             handles,
+            left_out,
             summary,
         }
     }
@@ -754,6 +936,7 @@ impl ScenePicture {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::palette;
 
     fn traced(name: &str) -> (Scene, Trace) {
         let scene = Scene::embedded(name).unwrap();
@@ -801,6 +984,59 @@ mod tests {
         );
         assert!(legend.contains("leaving (N turned round)"), "{legend}");
         assert!(picture.summary.contains("kernel calls"));
+    }
+
+    #[test]
+    fn dispersed_colours_are_drawn_interleaved_not_one_after_another() {
+        let (mut scene, _) = traced("droplet");
+        scene.set_ray_count(200).unwrap();
+        let trace = scene.trace();
+        assert!(trace.counts.wavelengths > 3);
+        let layout = SceneLayout::new(trace.bounds, Vec2::new(1200.0, 800.0));
+        let picture = ScenePicture::new(&scene, &trace, &layout);
+        let colours: Vec<(u8, u8, u8)> = picture
+            .primitives
+            .iter()
+            .filter_map(|p| match p {
+                Primitive::Polyline { colour, .. } => Some((colour.r, colour.g, colour.b)),
+                _ => None,
+            })
+            .collect();
+        // The last fifth of the rays drawn (what lies on top) holds every colour traced.
+        let top: HashSet<_> = colours[colours.len() * 4 / 5..].iter().collect();
+        assert!(top.len() >= trace.counts.wavelengths, "{top:?}");
+        // And no colour is on top of every ray: the source rays, drawn in groups of one ray's
+        // colours, start their groups with every colour in turn.
+        let sources: Vec<usize> = interleaved(&trace)
+            .filter(|&i| trace.paths[i].parent_hit.is_none())
+            .collect();
+        for group in sources.chunks(trace.counts.wavelengths) {
+            let lights: HashSet<String> = group
+                .iter()
+                .map(|&i| format!("{:?}", trace.paths[i].light))
+                .collect();
+            assert_eq!(lights.len(), group.len(), "one ray's colours together");
+        }
+        let lasts: HashSet<String> = sources
+            .chunks(trace.counts.wavelengths)
+            .filter_map(|group| group.last())
+            .map(|&i| format!("{:?}", trace.paths[i].light))
+            .collect();
+        assert_eq!(lasts.len(), trace.counts.wavelengths, "{lasts:?}");
+    }
+
+    #[test]
+    fn every_theme_reaches_the_scene() {
+        use crate::palette::Theme;
+        let (scene, trace) = traced("slab");
+        let layout = SceneLayout::for_scene(&scene, &trace, Vec2::new(800.0, 600.0));
+        let dark = Palette::new(Theme::HighContrastDark, true);
+        let picture = ScenePicture::with_palette(&scene, &trace, &layout, &dark);
+        let texts: Vec<_> = texts(&picture);
+        assert!(texts.iter().all(|l| l.colour != palette::INK));
+        assert!(picture.primitives.iter().any(
+            |p| matches!(p, Primitive::Polygon { colour, .. } if *colour == dark.outside_world)
+        ));
     }
 
     #[test]

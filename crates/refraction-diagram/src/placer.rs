@@ -1,0 +1,385 @@
+//! The one label placer of every view (the interface diagram, a traced scene, the accuracy
+//! plot): it keeps each label inside its bounds and off the obstacles it is told about
+//! (arrowheads, handles, hit markers, plot markers) and off every label placed before it, and
+//! leaves a label out rather than let it cover anything. A label left out is handed back, so
+//! that the window can show its text on hover.
+//!
+//! Labels are placed in the order they are given: an earlier label keeps its spot, a later one
+//! moves aside (a step at a time, around its anchor) or is left out. Views give the labels that
+//! matter most first.
+
+use glam::Vec2;
+
+use super::font::Typeface;
+use super::geometry::Rect;
+use super::shapes::Label;
+
+/// Something a label must not cover.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Obstacle {
+    /// A box: a handle's grab area, a banner.
+    Box(Rect),
+    /// A disc: a hit marker, a plot marker.
+    Disc {
+        /// Centre.
+        center: Vec2,
+        /// Radius in pixels.
+        radius: f32,
+    },
+    /// A convex polygon: an arrowhead.
+    Polygon(Vec<Vec2>),
+}
+
+impl Obstacle {
+    /// Whether the box `r` covers any part of this obstacle.
+    #[must_use]
+    pub fn touches(&self, r: &Rect) -> bool {
+        match self {
+            Self::Box(b) => b.overlaps(r),
+            Self::Disc { center, radius } => center.clamp(r.min, r.max).distance(*center) < *radius,
+            Self::Polygon(points) => convex_overlaps(points, r),
+        }
+    }
+}
+
+/// Whether the convex polygon `points` and the box `r` overlap (separating axis test: the box's
+/// two axes and each edge's normal).
+fn convex_overlaps(points: &[Vec2], r: &Rect) -> bool {
+    if points.is_empty() {
+        return false;
+    }
+    let corners = r.corners();
+    let apart = |axis: Vec2| {
+        let span = |ps: &mut dyn Iterator<Item = Vec2>| {
+            ps.map(|p| p.dot(axis))
+                .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), d| {
+                    (lo.min(d), hi.max(d))
+                })
+        };
+        let (a0, a1) = span(&mut points.iter().copied());
+        let (b0, b1) = span(&mut corners.iter().copied());
+        a1 <= b0 || b1 <= a0
+    };
+    let edges = points
+        .iter()
+        .zip(points.iter().cycle().skip(1))
+        .map(|(a, b)| (*b - *a).perp());
+    !std::iter::once(Vec2::X)
+        .chain(std::iter::once(Vec2::Y))
+        .chain(edges)
+        .filter(|axis| axis.length_squared() > 0.0)
+        .any(apart)
+}
+
+/// The box of a label whose text measures `extent`, anchored at `at`, with its margin.
+fn boxed(label: &Label, extent: Vec2, at: Vec2) -> Rect {
+    let pad = Vec2::splat(label.size * PAD);
+    let min = at - extent * Vec2::new(label.h.fraction(), label.v.fraction()) - pad;
+    Rect {
+        min,
+        max: min + extent + pad * 2.0,
+    }
+}
+
+/// How far, in steps of 0.6 of the label's size, a label may move from its anchor.
+const MOST_STEPS: usize = 12;
+
+/// The directions a label tries at each distance from its anchor, nearest first.
+const DIRECTIONS: [Vec2; 8] = [
+    Vec2::new(0.0, 1.0),
+    Vec2::new(0.0, -1.0),
+    Vec2::new(1.0, 0.0),
+    Vec2::new(-1.0, 0.0),
+    Vec2::new(0.7, 0.7),
+    Vec2::new(-0.7, 0.7),
+    Vec2::new(0.7, -0.7),
+    Vec2::new(-0.7, -0.7),
+];
+
+/// The margin drawn around a label's text (its background box), as a fraction of its size: the
+/// painters draw the background this much larger than the text.
+pub const PAD: f32 = 0.2;
+
+/// Places labels one after another on one canvas.
+pub struct Placer<'f> {
+    face: &'f Typeface,
+    obstacles: Vec<Obstacle>,
+    placed: Vec<Rect>,
+}
+
+/// What became of the labels given to a [`Placer`].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Placement {
+    /// The labels drawn, moved where they cover nothing.
+    pub placed: Vec<Label>,
+    /// The labels left out, at their anchors, for a hover to show.
+    pub left_out: Vec<Label>,
+}
+
+impl<'f> Placer<'f> {
+    /// A placer measuring text with `face`, with nothing on the canvas yet.
+    #[must_use]
+    pub fn new(face: &'f Typeface) -> Self {
+        Self {
+            face,
+            obstacles: Vec::new(),
+            placed: Vec::new(),
+        }
+    }
+
+    /// Adds something no later label may cover.
+    pub fn avoid(&mut self, obstacle: Obstacle) {
+        self.obstacles.push(obstacle);
+    }
+
+    /// The box a label covers with its anchor at `at`: its text and the background's margin.
+    #[must_use]
+    pub fn text_box(&self, label: &Label, at: Vec2) -> Rect {
+        boxed(label, self.face.measure(&label.text, label.size), at)
+    }
+
+    fn free(&self, r: &Rect) -> bool {
+        !self.obstacles.iter().any(|o| o.touches(r)) && !self.placed.iter().any(|p| p.overlaps(r))
+    }
+
+    /// Places `label` inside `bounds`: at its anchor if that covers nothing, else at the
+    /// nearest free spot around it, moved inside `bounds` as needed. Returns the label as
+    /// placed, or gives it back unchanged (`Err`) when no spot is free: it is then left out.
+    ///
+    /// # Errors
+    /// No free spot within [`MOST_STEPS`] steps, or the label is larger than `bounds`.
+    pub fn place(&mut self, mut label: Label, bounds: &Rect) -> Result<Label, Label> {
+        let step = label.size * 0.6;
+        // Measured once: the text's extent does not depend on where it goes.
+        let extent = self.face.measure(&label.text, label.size);
+        let offsets = std::iter::once(Vec2::ZERO)
+            .chain((1..=MOST_STEPS).flat_map(|k| DIRECTIONS.map(|d| d * step * k as f32)));
+        let spot = offsets.map(|offset| label.at + offset).find_map(|at| {
+            let r = boxed(&label, extent, at);
+            let shift = (bounds.min - r.min).max(Vec2::ZERO) + (bounds.max - r.max).min(Vec2::ZERO);
+            // The box is measured again at the moved anchor, so that what is checked is
+            // exactly what a reader of the label's anchor computes.
+            let at = at + shift;
+            let moved = boxed(&label, extent, at);
+            let inside = moved.min.cmpge(bounds.min).all() && moved.max.cmple(bounds.max).all();
+            (inside && self.free(&moved)).then_some((at, moved))
+        });
+        match spot {
+            Some((at, r)) => {
+                self.placed.push(r);
+                label.at = at;
+                Ok(label)
+            }
+            None => Err(label),
+        }
+    }
+
+    /// Places every label of `labels` in order, each inside the bounds given with it.
+    #[must_use]
+    pub fn place_all(&mut self, labels: impl IntoIterator<Item = (Label, Rect)>) -> Placement {
+        let mut placement = Placement::default();
+        for (label, bounds) in labels {
+            match self.place(label, &bounds) {
+                Ok(l) => placement.placed.push(l),
+                Err(l) => placement.left_out.push(l),
+            }
+        }
+        placement
+    }
+}
+
+/// `text` broken into lines no wider than `width` pixels at font size `size`, between words
+/// (a word wider than `width` gets a line of its own). Existing line breaks are kept.
+#[must_use]
+pub fn wrap(face: &Typeface, text: &str, size: f32, width: f32) -> String {
+    // Widths add up (the font is measured without kerning): each word is measured once.
+    let space = face.width(" ", size);
+    let mut lines: Vec<String> = Vec::new();
+    for paragraph in text.lines() {
+        let mut line = String::new();
+        let mut line_width = 0.0;
+        for word in paragraph.split(' ') {
+            let word_width = face.width(word, size);
+            if !line.is_empty() && line_width + space + word_width > width {
+                lines.push(std::mem::replace(&mut line, word.to_owned()));
+                line_width = word_width;
+            } else {
+                if !line.is_empty() {
+                    line.push(' ');
+                    line_width += space;
+                }
+                line.push_str(word);
+                line_width += word_width;
+            }
+        }
+        lines.push(line);
+    }
+    lines.join("\n")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::palette;
+    use crate::shapes::Align;
+    use proptest::prelude::*;
+
+    fn label(text: &str, at: Vec2) -> Label {
+        Label {
+            text: text.to_owned(),
+            at,
+            h: Align::Start,
+            v: Align::Start,
+            size: 14.0,
+            colour: palette::INK,
+            background: Some(palette::LABEL_BACKGROUND),
+        }
+    }
+
+    fn canvas() -> Rect {
+        Rect::from_min_size(Vec2::ZERO, Vec2::new(400.0, 300.0))
+    }
+
+    #[test]
+    fn a_label_with_room_stays_at_its_anchor() {
+        let face = Typeface::egui_default().unwrap();
+        let mut placer = Placer::new(&face);
+        let placed = placer.place(label("T", Vec2::new(50.0, 50.0)), &canvas());
+        assert_eq!(placed.unwrap().at, Vec2::new(50.0, 50.0));
+    }
+
+    #[test]
+    fn a_label_moves_off_an_arrowhead_and_into_the_canvas() {
+        let face = Typeface::egui_default().unwrap();
+        let mut placer = Placer::new(&face);
+        let head = vec![
+            Vec2::new(45.0, 45.0),
+            Vec2::new(70.0, 55.0),
+            Vec2::new(45.0, 65.0),
+        ];
+        placer.avoid(Obstacle::Polygon(head.clone()));
+        let placed = placer
+            .place(label("your T", Vec2::new(50.0, 50.0)), &canvas())
+            .unwrap();
+        let r = placer.text_box(&placed, placed.at);
+        assert!(!Obstacle::Polygon(head).touches(&r));
+        let edge = placer
+            .place(label("at the edge", Vec2::new(390.0, 290.0)), &canvas())
+            .unwrap();
+        let r = placer.text_box(&edge, edge.at);
+        assert!(r.max.x <= 400.0 && r.max.y <= 300.0);
+    }
+
+    #[test]
+    fn a_label_with_no_room_is_left_out_not_overlapped() {
+        let face = Typeface::egui_default().unwrap();
+        let mut placer = Placer::new(&face);
+        placer.avoid(Obstacle::Box(canvas()));
+        let placement = placer.place_all([(label("θi = 40°", Vec2::new(50.0, 50.0)), canvas())]);
+        assert!(placement.placed.is_empty());
+        assert_eq!(placement.left_out[0].text, "θi = 40°");
+        let tiny = Rect::from_min_size(Vec2::ZERO, Vec2::splat(5.0));
+        assert!(
+            Placer::new(&face)
+                .place(label("wide", Vec2::ZERO), &tiny)
+                .is_err()
+        );
+    }
+
+    #[test]
+    fn discs_and_polygons_are_touched_only_where_they_are() {
+        let r = Rect::from_min_size(Vec2::ZERO, Vec2::splat(10.0));
+        let disc = |x: f32| Obstacle::Disc {
+            center: Vec2::new(x, 5.0),
+            radius: 3.0,
+        };
+        assert!(disc(12.0).touches(&r));
+        assert!(!disc(13.5).touches(&r));
+        let triangle = |dx: f32| {
+            Obstacle::Polygon(
+                [(11.0, 0.0), (20.0, 0.0), (20.0, 9.0)]
+                    .map(|(x, y)| Vec2::new(x + dx, y))
+                    .into(),
+            )
+        };
+        assert!(!triangle(0.0).touches(&r));
+        assert!(triangle(-5.0).touches(&r));
+        // Near the corner but outside the slanted edge: the box's axes alone would say yes.
+        let slanted = Obstacle::Polygon(vec![
+            Vec2::new(12.0, 20.0),
+            Vec2::new(20.0, 12.0),
+            Vec2::new(20.0, 20.0),
+        ]);
+        assert!(!slanted.touches(&r));
+        assert!(!Obstacle::Polygon(Vec::new()).touches(&r));
+    }
+
+    #[test]
+    fn wrapping_keeps_every_line_inside_the_width() {
+        let face = Typeface::egui_default().unwrap();
+        let text = "k = -0.25 < 0: no real root for b, no refracted ray; all light is reflected";
+        let wrapped = wrap(&face, text, 14.0, 200.0);
+        assert!(wrapped.lines().count() > 1);
+        assert!(wrapped.lines().all(|l| face.width(l, 14.0) <= 200.0));
+        assert_eq!(wrapped.replace('\n', " "), text);
+        assert_eq!(wrap(&face, "one\ntwo", 14.0, 1000.0), "one\ntwo");
+    }
+
+    fn obstacle() -> impl Strategy<Value = Obstacle> {
+        let point = || (0.0f32..400.0, 0.0f32..300.0).prop_map(|(x, y)| Vec2::new(x, y));
+        prop_oneof![
+            (point(), 2.0f32..40.0, 2.0f32..40.0)
+                .prop_map(|(p, w, h)| Obstacle::Box(Rect::from_min_size(p, Vec2::new(w, h)))),
+            (point(), 1.0f32..15.0).prop_map(|(center, radius)| Obstacle::Disc { center, radius }),
+            (point(), 0.0f32..6.3, 5.0f32..20.0).prop_map(|(tip, turn, length)| {
+                let d = Vec2::from_angle(turn) * length;
+                Obstacle::Polygon(vec![
+                    tip,
+                    tip - d + d.perp() * 0.4,
+                    tip - d - d.perp() * 0.4,
+                ])
+            }),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        #[test]
+        fn placed_labels_cover_no_obstacle_no_other_label_and_stay_inside(
+            obstacles in prop::collection::vec(obstacle(), 0..25),
+            anchors in prop::collection::vec(
+                (-20.0f32..420.0, -20.0f32..320.0, 0usize..3, 0usize..3, 13.0f32..30.0, 1usize..20),
+                1..25,
+            ),
+        ) {
+            let face = Typeface::egui_default().unwrap();
+            let mut placer = Placer::new(&face);
+            for o in &obstacles {
+                placer.avoid(o.clone());
+            }
+            let aligns = [Align::Start, Align::Center, Align::End];
+            let labels: Vec<(Label, Rect)> = anchors
+                .iter()
+                .map(|&(x, y, h, v, size, length)| {
+                    let mut l = label(&"μ".repeat(length), Vec2::new(x, y));
+                    (l.h, l.v, l.size) = (aligns[h], aligns[v], size);
+                    (l, canvas())
+                })
+                .collect();
+            let count = labels.len();
+            let placement = placer.place_all(labels);
+            prop_assert_eq!(placement.placed.len() + placement.left_out.len(), count);
+            let boxes: Vec<Rect> =
+                placement.placed.iter().map(|l| placer.text_box(l, l.at)).collect();
+            for (i, b) in boxes.iter().enumerate() {
+                prop_assert!(b.min.cmpge(Vec2::ZERO).all() && b.max.cmple(Vec2::new(400.0, 300.0)).all());
+                for o in &obstacles {
+                    prop_assert!(!o.touches(b), "{:?} covers {:?}", b, o);
+                }
+                for other in &boxes[i + 1..] {
+                    prop_assert!(!b.overlaps(other));
+                }
+            }
+        }
+    }
+}

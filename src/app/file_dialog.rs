@@ -1,0 +1,437 @@
+//! Files as a desktop user expects them: an open/save dialog, a question before a file is
+//! replaced, no state file written over an image (or the other way round), and exports
+//! numbered `diagram-001.png`, `diagram-002.png`, … when no name is given.
+//!
+//! The dialog is built of egui widgets (a folder field, the folder's listing filtered by
+//! extension, a file name field) rather than taken from a crate: `egui-file-dialog` 0.15, the
+//! newest at the time of writing, is built for egui 0.36 and the explorer uses 0.37, and `rfd`'s
+//! native dialogs need a desktop portal that a projector's kiosk session, Xvfb and the headless
+//! egui_kittest tests do not have. Widgets work in all three, and the tests drive this dialog
+//! like any other part of the window.
+
+use std::path::{Path, PathBuf};
+
+use egui::{Id, Modal, RichText, ScrollArea, TextEdit, Ui};
+
+/// What a file holds, as far as replacing it is concerned.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// A saved state (a `solve` JSON line, `.json`).
+    State,
+    /// A PNG image (`.png`).
+    Png,
+    /// An SVG image (`.svg`).
+    Svg,
+}
+
+impl Kind {
+    /// The kind a file of this name should hold, by its extension.
+    #[must_use]
+    pub fn of_name(path: &Path) -> Option<Self> {
+        let extension = path.extension()?.to_str()?.to_ascii_lowercase();
+        match extension.as_str() {
+            "json" => Some(Self::State),
+            "png" => Some(Self::Png),
+            "svg" => Some(Self::Svg),
+            _ => None,
+        }
+    }
+
+    /// What the first bytes of a file say it holds (`None`: something else).
+    #[must_use]
+    pub fn of_contents(bytes: &[u8]) -> Option<Self> {
+        let text = bytes.trim_ascii_start();
+        if bytes.starts_with(b"\x89PNG\r\n\x1a\n") {
+            Some(Self::Png)
+        } else if text.starts_with(b"{") {
+            Some(Self::State)
+        } else if text.starts_with(b"<") {
+            Some(Self::Svg)
+        } else {
+            None
+        }
+    }
+
+    fn words(self) -> &'static str {
+        match self {
+            Self::State => "a saved state (JSON)",
+            Self::Png => "a PNG image",
+            Self::Svg => "an SVG image",
+        }
+    }
+}
+
+/// Where a file is about to be written.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Target {
+    /// Nothing is there yet: write.
+    New,
+    /// A file of the same kind (or an empty one) is there: ask before replacing it.
+    Replaces,
+}
+
+/// Whether `kind` may be written at `path`: its name must say that kind and a file already
+/// there must hold that kind (or nothing).
+///
+/// # Errors
+/// The name says another kind (or none), the path is a folder, or the file there holds
+/// something else; the message names the path and what it holds.
+pub fn target(path: &Path, kind: Kind) -> Result<Target, String> {
+    let shown = path.display();
+    if Kind::of_name(path) != Some(kind) {
+        let wanted = match kind {
+            Kind::State => ".json",
+            Kind::Png => ".png",
+            Kind::Svg => ".svg",
+        };
+        return Err(format!(
+            "{shown}: {} is written to a {wanted} file; choose a name ending in {wanted}",
+            capitalised(kind.words())
+        ));
+    }
+    if path.is_dir() {
+        return Err(format!("{shown} is a folder; choose a file name"));
+    }
+    let Ok(bytes) = std::fs::read(path) else {
+        return Ok(Target::New);
+    };
+    match Kind::of_contents(&bytes) {
+        _ if bytes.is_empty() => Ok(Target::Replaces),
+        Some(found) if found == kind => Ok(Target::Replaces),
+        found => Err(format!(
+            "{shown} holds {}, not {}: it is left as it is; choose another name",
+            found.map_or("something else", Kind::words),
+            kind.words()
+        )),
+    }
+}
+
+fn capitalised(words: &str) -> String {
+    let mut chars = words.chars();
+    chars.next().map_or_else(String::new, |first| {
+        first.to_uppercase().chain(chars).collect()
+    })
+}
+
+/// The first of `stem-001.ext`, `stem-002.ext`, … that does not exist in `folder` (after
+/// 999, `stem-1000.ext` and on).
+#[must_use]
+pub fn numbered(folder: &Path, stem: &str, extension: &str) -> PathBuf {
+    (1..)
+        .map(|i| folder.join(format!("{stem}-{i:03}.{extension}")))
+        .find(|p| !p.exists())
+        .expect("some number is free")
+}
+
+/// Asks whether to replace the file at `pending`, while there is one: `Some(true)` once the
+/// user says replace, `Some(false)` once they cancel, `None` while they have not answered.
+pub fn confirm_replace(ui: &Ui, pending: &Path) -> Option<bool> {
+    let mut answer = None;
+    let modal = Modal::new(Id::unique("confirm replace")).show(ui.ctx(), |ui| {
+        ui.heading("Replace the file?");
+        ui.label(format!("{} already exists.", pending.display()));
+        ui.horizontal(|ui| {
+            if ui.button("Replace").clicked() {
+                answer = Some(true);
+            }
+            if ui.button("Cancel").clicked() {
+                answer = Some(false);
+            }
+        });
+    });
+    if answer.is_none() && modal.should_close() {
+        answer = Some(false);
+    }
+    answer
+}
+
+/// Whether the dialog picks a file to read or a name to write.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Purpose {
+    /// Open: the file must exist.
+    Open,
+    /// Save: any name in an existing folder.
+    Save,
+}
+
+/// One row of the listing.
+#[derive(Clone, Debug, PartialEq, Eq)]
+struct Entry {
+    name: String,
+    folder: bool,
+}
+
+/// An open or save dialog over the file system, listing one folder at a time: its folders
+/// and the files with one of the dialog's extensions.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FileDialog {
+    purpose: Purpose,
+    extensions: &'static [&'static str],
+    folder: String,
+    name: String,
+    entries: Vec<Entry>,
+    listed: Option<PathBuf>,
+    problem: Option<String>,
+}
+
+/// What the user did with the dialog this frame.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Choice {
+    /// Still choosing.
+    Pending,
+    /// This file.
+    Chosen(PathBuf),
+    /// Closed without a choice.
+    Cancelled,
+}
+
+impl FileDialog {
+    /// A dialog for `purpose` showing files ending in one of `extensions` (without the dot),
+    /// starting in the folder of `start` (a path as typed; relative to the working folder)
+    /// with its file name filled in.
+    #[must_use]
+    pub fn new(purpose: Purpose, extensions: &'static [&'static str], start: &str) -> Self {
+        let start = Path::new(start.trim());
+        let folder = match start.parent() {
+            Some(parent) if !parent.as_os_str().is_empty() => parent.to_path_buf(),
+            _ => std::env::current_dir().unwrap_or_else(|_| PathBuf::from(".")),
+        };
+        let name = start
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        Self {
+            purpose,
+            extensions,
+            folder: folder.display().to_string(),
+            name,
+            entries: Vec::new(),
+            listed: None,
+            problem: None,
+        }
+    }
+
+    /// Whether the dialog opens or saves.
+    #[must_use]
+    pub fn purpose(&self) -> Purpose {
+        self.purpose
+    }
+
+    /// Reads the folder's listing when the folder changed since it was last read.
+    fn list(&mut self) {
+        let folder = PathBuf::from(self.folder.trim());
+        if self.listed.as_ref() == Some(&folder) {
+            return;
+        }
+        self.entries.clear();
+        match std::fs::read_dir(&folder) {
+            Ok(read) => {
+                self.problem = None;
+                for entry in read.flatten() {
+                    let name = entry.file_name().to_string_lossy().into_owned();
+                    let is_folder = entry.path().is_dir();
+                    let wanted = Path::new(&name)
+                        .extension()
+                        .and_then(|e| e.to_str())
+                        .is_some_and(|e| self.extensions.iter().any(|x| x.eq_ignore_ascii_case(e)));
+                    if (is_folder || wanted) && !name.starts_with('.') {
+                        self.entries.push(Entry {
+                            name,
+                            folder: is_folder,
+                        });
+                    }
+                }
+                self.entries
+                    .sort_by(|a, b| b.folder.cmp(&a.folder).then(a.name.cmp(&b.name)));
+            }
+            Err(e) => self.problem = Some(format!("cannot list {}: {e}", folder.display())),
+        }
+        self.listed = Some(folder);
+    }
+
+    fn enter(&mut self, name: &str) {
+        let folder = PathBuf::from(self.folder.trim());
+        let next = if name == ".." {
+            folder
+                .canonicalize()
+                .ok()
+                .and_then(|f| f.parent().map(Path::to_path_buf))
+                .unwrap_or(folder)
+        } else {
+            folder.join(name)
+        };
+        self.folder = next.display().to_string();
+    }
+
+    /// The file chosen, if it can be: an existing file to open, or a name in an existing
+    /// folder to save; else says why not.
+    fn choose(&mut self) -> Option<PathBuf> {
+        let path = PathBuf::from(self.folder.trim()).join(self.name.trim());
+        let ok = match self.purpose {
+            Purpose::Open => path.is_file(),
+            Purpose::Save => {
+                !self.name.trim().is_empty() && path.parent().is_some_and(Path::is_dir)
+            }
+        };
+        if ok {
+            return Some(path);
+        }
+        self.problem = Some(match self.purpose {
+            Purpose::Open => format!("{} is not a file that can be opened", path.display()),
+            Purpose::Save => "type a file name in an existing folder".to_owned(),
+        });
+        None
+    }
+
+    /// The listing: the parent folder, then folders, then the files shown; a click on a
+    /// folder enters it, on a file takes its name, a double click on a file chooses it.
+    fn listing(&mut self, ui: &mut Ui) -> bool {
+        let mut entered = None;
+        let mut chosen = false;
+        ScrollArea::vertical().max_height(260.0).show(ui, |ui| {
+            if ui.selectable_label(false, "⬆ ..").clicked() {
+                entered = Some("..".to_owned());
+            }
+            for entry in &self.entries {
+                let text = if entry.folder {
+                    format!("📁 {}", entry.name)
+                } else {
+                    entry.name.clone()
+                };
+                let row = ui.selectable_label(self.name == entry.name, text);
+                if entry.folder && row.clicked() {
+                    entered = Some(entry.name.clone());
+                } else if row.double_clicked() {
+                    self.name.clone_from(&entry.name);
+                    chosen = true;
+                } else if row.clicked() {
+                    self.name.clone_from(&entry.name);
+                }
+            }
+        });
+        if let Some(name) = entered {
+            self.enter(&name);
+        }
+        chosen
+    }
+
+    /// Shows the dialog over the window.
+    pub fn show(&mut self, ui: &Ui) -> Choice {
+        self.list();
+        let title = match self.purpose {
+            Purpose::Open => "Open a file",
+            Purpose::Save => "Save as",
+        };
+        let modal = Modal::new(Id::unique(("file dialog", title))).show(ui.ctx(), |ui| {
+            ui.heading(title);
+            ui.horizontal(|ui| {
+                let label = ui.label("Folder");
+                ui.add(TextEdit::singleline(&mut self.folder).desired_width(360.0))
+                    .labelled_by(label.id);
+            });
+            let shown: Vec<String> = self.extensions.iter().map(|e| format!("*.{e}")).collect();
+            ui.label(RichText::new(format!("showing folders and {}", shown.join(", "))).weak());
+            let mut chosen = self.listing(ui);
+            ui.horizontal(|ui| {
+                let label = ui.label("File name");
+                ui.add(TextEdit::singleline(&mut self.name).desired_width(300.0))
+                    .labelled_by(label.id);
+            });
+            if let Some(problem) = &self.problem {
+                ui.label(RichText::new(format!("⚠ {problem}")).strong());
+            }
+            let mut cancelled = false;
+            ui.horizontal(|ui| {
+                let verb = match self.purpose {
+                    Purpose::Open => "Open file",
+                    Purpose::Save => "Save file",
+                };
+                chosen |= ui.button(verb).clicked();
+                cancelled = ui.button("Cancel").clicked();
+            });
+            (chosen, cancelled)
+        });
+        let (chosen, cancelled) = modal.inner;
+        if chosen && let Some(path) = self.choose() {
+            return Choice::Chosen(path);
+        }
+        if cancelled || modal.should_close() {
+            return Choice::Cancelled;
+        }
+        Choice::Pending
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("file-dialog-{}-{name}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    #[test]
+    fn a_state_is_never_written_over_an_image_nor_an_image_over_a_state() {
+        let dir = scratch("kinds");
+        let png = dir.join("picture.png");
+        std::fs::write(&png, b"\x89PNG\r\n\x1a\nrest").unwrap();
+        let state = dir.join("state.json");
+        std::fs::write(&state, b"{\"w\":[0,-1,0]}").unwrap();
+        let disguised = dir.join("disguised.json");
+        std::fs::write(&disguised, b"\x89PNG\r\n\x1a\n").unwrap();
+        assert_eq!(target(&state, Kind::State), Ok(Target::Replaces));
+        assert_eq!(target(&png, Kind::Png), Ok(Target::Replaces));
+        assert_eq!(target(&dir.join("new.json"), Kind::State), Ok(Target::New));
+        let refused = target(&png, Kind::State).unwrap_err();
+        assert!(refused.contains("ending in .json"), "{refused}");
+        let refused = target(&disguised, Kind::State).unwrap_err();
+        assert!(refused.contains("holds a PNG image"), "{refused}");
+        let refused = target(&dir.join("state.png"), Kind::Png);
+        assert_eq!(refused, Ok(Target::New));
+        std::fs::write(dir.join("state.png"), b"{}").unwrap();
+        assert!(target(&dir.join("state.png"), Kind::Png).is_err());
+        assert!(target(&dir, Kind::State).is_err());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn exports_are_numbered_from_the_first_free_number() {
+        let dir = scratch("numbers");
+        assert_eq!(
+            numbered(&dir, "diagram", "png"),
+            dir.join("diagram-001.png")
+        );
+        std::fs::write(dir.join("diagram-001.png"), b"").unwrap();
+        std::fs::write(dir.join("diagram-002.png"), b"").unwrap();
+        assert_eq!(
+            numbered(&dir, "diagram", "png"),
+            dir.join("diagram-003.png")
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn the_listing_shows_folders_and_the_wanted_files_only() {
+        let dir = scratch("listing");
+        std::fs::create_dir_all(dir.join("lessons")).unwrap();
+        for name in ["b.json", "a.json", "c.png", ".hidden.json"] {
+            std::fs::write(dir.join(name), b"{}").unwrap();
+        }
+        let mut dialog = FileDialog::new(
+            Purpose::Open,
+            &["json"],
+            dir.join("a.json").to_str().unwrap(),
+        );
+        dialog.list();
+        let names: Vec<&str> = dialog.entries.iter().map(|e| e.name.as_str()).collect();
+        assert_eq!(names, ["lessons", "a.json", "b.json"]);
+        assert_eq!(dialog.choose(), Some(dir.join("a.json")));
+        dialog.enter("lessons");
+        dialog.list();
+        assert!(dialog.entries.is_empty());
+        assert_eq!(dialog.choose(), None, "no a.json in lessons");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
