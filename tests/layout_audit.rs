@@ -34,7 +34,7 @@ const TOOLS: [Option<&str>; 5] = [
 ];
 
 /// The Fresnel tool's switch.
-const FRESNEL: &str = "Fresnel R, T";
+const FRESNEL: &str = "Fresnel";
 const THEMES: [&str; 3] = ["Standard", "High contrast light", "High contrast dark"];
 
 /// A small deterministic generator, so that a failure names a state that can be rerun.

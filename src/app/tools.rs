@@ -38,7 +38,7 @@ impl Tool {
             Self::Check => "✔ Check my T",
             Self::WalkThrough => "📖 Walk-through",
             Self::Files => "💾 Save, open, share",
-            Self::Fresnel => "Fresnel R, T",
+            Self::Fresnel => "Fresnel",
         }
     }
 

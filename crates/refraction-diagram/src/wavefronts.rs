@@ -218,7 +218,7 @@ impl Painter<'_> {
             at: self.at(world),
             h: Align::away(away.x),
             v: Align::away(away.y),
-            size: size * self.layout.font,
+            size: self.layout.text_size(size),
             colour: self.palette.text_shade(colour),
             background: Some(self.palette.label_background),
         });
