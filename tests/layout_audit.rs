@@ -35,7 +35,7 @@ const TOOLS: [Option<&str>; 5] = [
 
 /// The Fresnel tool's switch.
 const FRESNEL: &str = "Fresnel";
-const THEMES: [&str; 3] = ["Standard", "High contrast light", "High contrast dark"];
+const THEMES: [&str; 3] = ["Standard", "Black on white", "White on black"];
 
 /// A small deterministic generator, so that a failure names a state that can be rerun.
 struct Random(u64);

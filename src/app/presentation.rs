@@ -147,7 +147,9 @@ impl Presentation {
                 for theme in Theme::ALL {
                     ui.selectable_value(&mut self.theme, theme, theme.label());
                 }
-            });
+            })
+            .response
+            .on_hover_text("Standard, or high contrast: black on white or white on black");
         ui.checkbox(&mut self.colour_blind_safe, "Colour-blind safe")
             .on_hover_text("Okabe–Ito colours only; every ray also has its own dash and label");
     }

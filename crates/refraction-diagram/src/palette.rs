@@ -76,8 +76,9 @@ impl Theme {
     pub fn label(self) -> &'static str {
         match self {
             Self::Standard => "Standard",
-            Self::HighContrastLight => "High contrast light",
-            Self::HighContrastDark => "High contrast dark",
+            // Short, so that the presentation bar keeps to two rows at 1280×720.
+            Self::HighContrastLight => "Black on white",
+            Self::HighContrastDark => "White on black",
         }
     }
 
