@@ -1,22 +1,14 @@
 //! The `render` command end to end: a PNG of the diagram or of a traced scene without a window.
 
+mod cli;
+
+use cli::render;
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
 use refraction_diagram::spectrum::wavelength_colour;
 
 fn folder(name: &str) -> PathBuf {
-    let folder = std::env::temp_dir().join(format!("render-cli-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
-    folder
-}
-
-fn render(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
-        .arg("render")
-        .args(args)
-        .output()
-        .expect("the binary starts")
+    cli::folder("render-cli", name)
 }
 
 /// Runs `render` with `args` and checks it fails with exit status 2 and one line on stderr,

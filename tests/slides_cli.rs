@@ -1,21 +1,13 @@
 //! `render` for slides end to end: SVG by the file's extension (the diagram and a scene, labels
 //! as editable text), and `--animate` GIFs with the requested size and frame count.
 
+mod cli;
+
+use cli::render;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
 fn folder(name: &str) -> PathBuf {
-    let folder = std::env::temp_dir().join(format!("slides-cli-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
-    folder
-}
-
-fn render(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
-        .arg("render")
-        .args(args)
-        .output()
-        .expect("the binary starts")
+    cli::folder("slides-cli", name)
 }
 
 fn path(p: &Path) -> &str {

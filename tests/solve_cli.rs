@@ -5,14 +5,19 @@ use std::process::{Command, Stdio};
 
 use serde_json::Value;
 
-/// Runs `refraction-explorer solve` on `input`; returns the exit code and the parsed lines.
-fn solve(input: &str) -> (i32, Vec<Value>) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
+/// `refraction-explorer solve` started with its stdin and stdout piped.
+fn solve_process() -> std::process::Child {
+    Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
         .arg("solve")
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .spawn()
-        .expect("the binary starts");
+        .expect("the binary starts")
+}
+
+/// Runs `refraction-explorer solve` on `input`; returns the exit code and the parsed lines.
+fn solve(input: &str) -> (i32, Vec<Value>) {
+    let mut child = solve_process();
     let mut stdin = child.stdin.take().unwrap();
     let text = input.to_owned();
     let writer = std::thread::spawn(move || stdin.write_all(text.as_bytes()));
@@ -194,12 +199,7 @@ fn fresnel_fractions_and_special_angles_in_both_precisions() {
 #[test]
 fn a_line_piped_in_is_answered_before_the_input_ends() {
     use std::io::{BufRead, BufReader};
-    let mut child = Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
-        .arg("solve")
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .spawn()
-        .expect("the binary starts");
+    let mut child = solve_process();
     let mut stdin = child.stdin.take().unwrap();
     let mut answers = BufReader::new(child.stdout.take().unwrap());
     // As a renderer's log arrives: one line, then a pause with the pipe still open.

@@ -1,5 +1,10 @@
-//! Running the command on a file, for the `check --api` tests.
+//! Running the command end to end, for the CLI tests: on a file (`check --api`), or `render`
+//! into a folder of the test's own.
 
+// Every test file compiles this module into its own crate and uses only some of the helpers.
+#![allow(dead_code)]
+
+use std::path::PathBuf;
 use std::process::{Command, Output};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -30,4 +35,20 @@ pub fn answers(output: &Output) -> Vec<Value> {
         .lines()
         .map(|l| serde_json::from_str(l).unwrap())
         .collect()
+}
+
+/// A folder of this test run's own under the temporary directory, named `prefix-PID-name`.
+pub fn folder(prefix: &str, name: &str) -> PathBuf {
+    let folder = std::env::temp_dir().join(format!("{prefix}-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    folder
+}
+
+/// Runs `render` with `args`.
+pub fn render(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
+        .arg("render")
+        .args(args)
+        .output()
+        .expect("the binary starts")
 }
