@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{center_of, click, drag, harness, harness_for, replace_text};
+use common::{center_of, click, drag, harness, harness_for, harness_sized as sized, replace_text};
 use egui::{Role, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -28,17 +28,6 @@ fn at_brewster() -> ExplorerState {
         Default::default(),
     )
     .unwrap()
-}
-
-/// The window at `size` points, as `tests/common` builds it.
-fn sized(explorer: Explorer, size: (f32, f32)) -> Harness<'static, Explorer> {
-    let mut h = Harness::builder()
-        .with_context_setup(refraction_explorer::app::install_fonts)
-        .with_size(Vec2::new(size.0, size.1))
-        .with_theme(egui::Theme::Light)
-        .build_ui_state(|ui, app: &mut Explorer| app.show(ui), explorer);
-    h.run();
-    h
 }
 
 /// The diagram as the window draws it now, on its canvas.

@@ -12,7 +12,10 @@
 //!
 //! Run with `--nocapture` to see the measured figures.
 
-use egui::{Rect as EguiRect, Role, Shape, Vec2};
+mod common;
+
+use common::harness_sized;
+use egui::{Rect as EguiRect, Role, Shape};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use glam::{DVec3, Vec2 as GVec2};
@@ -98,16 +101,6 @@ fn states() -> Vec<ExplorerState> {
 fn click(h: &mut Harness<'_, Explorer>, label: &str) {
     h.get_by_label(label).click();
     h.run();
-}
-
-fn harness(explorer: Explorer, size: (f32, f32)) -> Harness<'static, Explorer> {
-    let mut h = Harness::builder()
-        .with_context_setup(refraction_explorer::app::install_fonts)
-        .with_size(Vec2::new(size.0, size.1))
-        .with_theme(egui::Theme::Light)
-        .build_ui_state(|ui, app: &mut Explorer| app.show(ui), explorer);
-    h.run();
-    h
 }
 
 /// Sets up the window as asked, through its own controls.
@@ -461,7 +454,7 @@ fn the_interface_view_owns_the_screen_and_nothing_covers_anything() {
             for (t, tool) in TOOLS.into_iter().enumerate() {
                 for (i, state) in states.iter().enumerate() {
                     let theme = THEMES[(i + t) % THEMES.len()];
-                    let mut h = harness(Explorer::new(state.clone()), size);
+                    let mut h = harness_sized(Explorer::new(state.clone()), size);
                     set_up(&mut h, present, theme, tool);
                     let what = format!(
                         "{}×{} {} {}, state {i}, {theme}",
@@ -491,7 +484,7 @@ fn the_scenes_view_owns_the_screen_and_labels_leave_the_hit_markers_free() {
                 }
                 let mut explorer = Explorer::new(ExplorerState::default());
                 explorer.open_scene(scene);
-                let mut h = harness(explorer, size);
+                let mut h = harness_sized(explorer, size);
                 set_up(&mut h, present, THEMES[0], None);
                 let what = format!(
                     "{}×{} {} scene {}",

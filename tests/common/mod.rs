@@ -11,15 +11,21 @@ use glam::DVec3;
 use refraction_diagram::ExplorerState;
 use refraction_explorer::app::Explorer;
 
-/// The window showing `explorer`, 1280 × 760 points in the light theme, after its first frame.
-pub fn harness_for(explorer: Explorer) -> Harness<'static, Explorer> {
+/// The window showing `explorer`, `size` points in the light theme with the window's fonts,
+/// after its first frame.
+pub fn harness_sized(explorer: Explorer, size: (f32, f32)) -> Harness<'static, Explorer> {
     let mut harness = Harness::builder()
         .with_context_setup(refraction_explorer::app::install_fonts)
-        .with_size(Vec2::new(1280.0, 760.0))
+        .with_size(Vec2::new(size.0, size.1))
         .with_theme(egui::Theme::Light)
         .build_ui_state(|ui, app: &mut Explorer| app.show(ui), explorer);
     harness.run();
     harness
+}
+
+/// The window showing `explorer`, 1280 × 760 points (see [`harness_sized`]).
+pub fn harness_for(explorer: Explorer) -> Harness<'static, Explorer> {
+    harness_sized(explorer, (1280.0, 760.0))
 }
 
 /// The window of a new explorer showing `state`.
