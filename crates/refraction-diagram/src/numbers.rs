@@ -1,9 +1,16 @@
 //! Numbers as the diagram and the panels print them: fixed decimals, a true minus sign, no
-//! "−0".
+//! "−0", and the decimal separator of the user's language (a comma in German, say). Copied
+//! code, JSON and files never use these: they keep Rust's own point.
 
-/// `x` with `decimals` digits, a true minus sign, and no "−0".
+/// `x` with `decimals` digits, a true minus sign, no "−0", and the language's decimal
+/// separator.
 #[must_use]
 pub fn number(x: f64, decimals: usize) -> String {
+    refraction_i18n::decimal(&point_number(x, decimals))
+}
+
+/// [`number`] with a decimal point whatever the language.
+fn point_number(x: f64, decimals: usize) -> String {
     let text = format!("{x:.decimals$}");
     if text
         .trim_start_matches('-')
@@ -19,12 +26,18 @@ pub fn number(x: f64, decimals: usize) -> String {
 /// `x` with at most `digits` significant digits (at least 1), for labels: a true minus sign,
 /// no "−0", and no trailing zeros when they would only repeat an exact value (`1.5`, not
 /// `1.500`); a value that was rounded keeps them (`1.000` for 1.000293), so the label does not
-/// claim an exact 1. Very large or small magnitudes are written as `1.234e-5`.
+/// claim an exact 1. Very large or small magnitudes are written as `1.234e-5`. The decimal
+/// separator is the language's.
 #[must_use]
 pub fn significant(x: f64, digits: usize) -> String {
+    refraction_i18n::decimal(&point_significant(x, digits))
+}
+
+/// [`significant`] with a decimal point whatever the language.
+fn point_significant(x: f64, digits: usize) -> String {
     let digits = digits.max(1);
     if !x.is_finite() || x == 0.0 {
-        return number(x, 0);
+        return point_number(x, 0);
     }
     let magnitude = x.abs().log10().floor();
     if !(-3.0..4.0).contains(&magnitude) {
@@ -37,7 +50,7 @@ pub fn significant(x: f64, digits: usize) -> String {
     if rounded >= 10f64.powf(magnitude + 1.0) && decimals > 0 {
         decimals -= 1;
     }
-    let text = number(x, decimals);
+    let text = point_number(x, decimals);
     // A value within a few ulps of its rounded text (40 reached by turning 50° by 10°) is that
     // value: its trailing zeros would only claim digits it does not have.
     let exact = format!("{x:.decimals$}")
@@ -50,15 +63,13 @@ pub fn significant(x: f64, digits: usize) -> String {
     }
 }
 
-/// A 3D vector as `(x, y, z)` with [`number`]s.
+/// A 3D vector as `(x, y, z)` with [`number`]s, separated as the language separates a list
+/// of numbers (`(0,5; −1,0; 0,0)` where the decimal separator is a comma).
 #[must_use]
 pub fn vector(v: glam::DVec3, decimals: usize) -> String {
-    format!(
-        "({}, {}, {})",
-        number(v.x, decimals),
-        number(v.y, decimals),
-        number(v.z, decimals)
-    )
+    let separator = refraction_i18n::locale().list_separator();
+    let [x, y, z] = [v.x, v.y, v.z].map(|c| number(c, decimals));
+    format!("({x}{separator}{y}{separator}{z})")
 }
 
 #[cfg(test)]
@@ -101,5 +112,19 @@ mod tests {
                 .count();
             assert!(digits <= 4, "{x}: {text}");
         }
+    }
+
+    #[test]
+    fn a_german_label_has_a_decimal_comma_and_semicolons_between_components() {
+        refraction_i18n::set_locale(refraction_i18n::Locale::De);
+        let written = (
+            number(-0.25, 3),
+            significant(1.3573907540770769, 4),
+            vector(glam::DVec3::new(0.5, -1.0, 0.0), 1),
+        );
+        refraction_i18n::set_locale(refraction_i18n::Locale::En);
+        assert_eq!(written.0, "−0,250");
+        assert_eq!(written.1, "1,357");
+        assert_eq!(written.2, "(0,5; −1,0; 0,0)");
     }
 }

@@ -1,0 +1,1 @@
+# check.ftl (de): filled in by the area's translation.

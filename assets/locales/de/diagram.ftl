@@ -1,0 +1,1 @@
+# diagram.ftl (de): filled in by the area's translation.

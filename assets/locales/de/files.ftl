@@ -1,0 +1,1 @@
+# files.ftl (de): filled in by the area's translation.

@@ -1,0 +1,1 @@
+# check.ftl (en): filled in by the area's translation.

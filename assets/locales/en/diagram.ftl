@@ -1,0 +1,1 @@
+# diagram.ftl (en): filled in by the area's translation.

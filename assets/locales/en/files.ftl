@@ -1,0 +1,1 @@
+# files.ftl (en): filled in by the area's translation.

@@ -1,0 +1,1 @@
+# check.ftl (es): filled in by the area's translation.

@@ -1,0 +1,1 @@
+# diagram.ftl (es): filled in by the area's translation.

@@ -1,0 +1,1 @@
+# files.ftl (es): filled in by the area's translation.

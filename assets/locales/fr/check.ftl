@@ -1,0 +1,1 @@
+# check.ftl (fr): filled in by the area's translation.

@@ -1,0 +1,1 @@
+# diagram.ftl (fr): filled in by the area's translation.

@@ -1,0 +1,1 @@
+# files.ftl (fr): filled in by the area's translation.

@@ -1,0 +1,1 @@
+# check.ftl (pt-BR): filled in by the area's translation.

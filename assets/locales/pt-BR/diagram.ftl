@@ -1,0 +1,1 @@
+# diagram.ftl (pt-BR): filled in by the area's translation.

@@ -1,0 +1,1 @@
+# files.ftl (pt-BR): filled in by the area's translation.

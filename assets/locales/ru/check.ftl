@@ -1,0 +1,1 @@
+# check.ftl (ru): filled in by the area's translation.

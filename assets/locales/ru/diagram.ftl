@@ -1,0 +1,1 @@
+# diagram.ftl (ru): filled in by the area's translation.

@@ -1,0 +1,1 @@
+# files.ftl (ru): filled in by the area's translation.
