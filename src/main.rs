@@ -12,6 +12,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand, ValueEnum};
 use refraction_diagram::palette::Theme;
 use refraction_explorer::app::View;
+use refraction_i18n::Locale;
 use refraction_scene::DEFAULT_SCENE;
 
 /// Makes refraction visible: a trig-free refraction kernel, its four sign candidates, and an
@@ -36,6 +37,22 @@ struct Cli {
     /// The explorer's theme (default: the one chosen last time).
     #[arg(long, value_enum, value_name = "NAME")]
     theme: Option<ThemeName>,
+    /// The language of the explorer and of the text `render` draws: en, de, es, fr, pt-BR or
+    /// ru (default: the one chosen in the explorer last time, else the system's). The JSON of
+    /// `solve` and `check` is the same in every language.
+    #[arg(long, global = true, value_name = "CODE", value_parser = language)]
+    lang: Option<Locale>,
+}
+
+/// The language `--lang` names.
+fn language(code: &str) -> Result<Locale, String> {
+    Locale::from_tag(code).ok_or_else(|| {
+        let known: Vec<&str> = Locale::ALL.iter().map(|l| l.code()).collect();
+        format!(
+            "no translation for `{code}`: choose one of {}",
+            known.join(", ")
+        )
+    })
 }
 
 /// The views as the command line names them.
@@ -190,6 +207,9 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(status) => return status,
     };
+    if let Some(language) = cli.lang {
+        refraction_i18n::set_locale(language);
+    }
     let refused = cli.command.as_ref().and_then(writes_stdout);
     if let Some(status) = refused.and_then(commands::refuse_closed_stdout) {
         return status;
@@ -234,6 +254,7 @@ fn main() -> ExitCode {
             present: cli.present,
             view: cli.view.map(View::from),
             theme: cli.theme.map(Theme::from),
+            language: cli.lang,
         }),
     }
 }

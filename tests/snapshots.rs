@@ -16,8 +16,7 @@ fn window(lesson: Lesson, size: (f32, f32), present: bool) -> Harness<'static, E
     let launch = Launch {
         state: Some(lesson.state()),
         present,
-        view: None,
-        theme: None,
+        ..Launch::default()
     };
     let mut harness = Harness::builder()
         .with_context_setup(app::install_fonts)

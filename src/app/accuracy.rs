@@ -3,6 +3,7 @@
 //! ray on log axes, one marker per variant and precision, and names the fastest variant within
 //! 10× of the best accuracy.
 
+use refraction_i18n::t;
 use std::sync::{Arc, Mutex, PoisonError};
 
 use egui::{Grid, ProgressBar, RichText, Ui};
@@ -15,6 +16,7 @@ use refraction_bench::{Config, Report};
 use refraction_diagram::accuracy_plot::{
     BOUND, FLOOR, Marker, axes, decade_label, point_label, variant_colour, variant_marker,
 };
+use refraction_diagram::numbers::number;
 use refraction_diagram::palette;
 
 /// What the background measurement has reached.
@@ -98,41 +100,47 @@ impl AccuracyView {
 
     /// Shows the view.
     pub fn show(&mut self, ui: &mut Ui) {
-        ui.heading("What accuracy costs in time");
-        ui.label(
-            "Times every kernel variant at f32 and f64 on this machine and measures its error \
-             against a double-double oracle on random and hard incidences. The plot shows the \
-             largest hard-set error in units of ε·κ (what the algorithm loses beyond what the \
-             problem itself amplifies) against nanoseconds per ray.",
-        );
+        ui.heading(t!("accuracy-heading"));
+        ui.label(t!("accuracy-intro"));
         let fraction = self.poll();
         ui.horizontal(|ui| {
-            ui.checkbox(&mut self.quick, "Quick run (a few seconds)");
-            let measure = ui.add_enabled(fraction.is_none(), egui::Button::new("Measure"));
+            ui.checkbox(&mut self.quick, t!("accuracy-quick"));
+            let measure = ui.add_enabled(
+                fraction.is_none(),
+                egui::Button::new(t!("accuracy-measure")),
+            );
             if measure.clicked() {
                 self.start(ui.ctx());
             }
         });
         if let Some(fraction) = fraction {
-            ui.add(
-                ProgressBar::new(fraction as f32)
-                    .show_percentage()
-                    .text(format!("measuring… {:.0} %", fraction * 100.0)),
-            );
+            ui.add(ProgressBar::new(fraction as f32).show_percentage().text(t!(
+                "accuracy-measuring",
+                percent = number(fraction * 100.0, 0)
+            )));
         }
         let Some(report) = &self.report else {
             if fraction.is_none() {
-                ui.label("Press Measure to run the benchmark.");
+                ui.label(t!("accuracy-press-measure"));
             }
             return;
         };
-        ui.label(RichText::new(report.verdict()).strong());
+        if let Some(best) = report.fastest_accurate() {
+            let verdict = t!(
+                "accuracy-verdict",
+                variant = point_label(best),
+                time = number(best.ns_per_ray, 2),
+                error = number(best.max_err_hard_eps_kappa, 1)
+            );
+            ui.label(RichText::new(verdict).strong());
+        }
         plot(ui, report);
         table(ui, report);
-        ui.small(format!(
-            "{} random and {} hard problems on {}. Timings depend on what else the machine is \
-             doing; `refraction-explorer bench` gives the same figures on the command line.",
-            report.rays, report.hard_rays, report.cpu
+        ui.small(t!(
+            "accuracy-footnote",
+            random = report.rays,
+            hard = report.hard_rays,
+            cpu = &report.cpu
         ));
     }
 }
@@ -141,13 +149,13 @@ impl AccuracyView {
 /// decades like the `bench --plot` image.
 fn plot(ui: &mut Ui, report: &Report) {
     let (x, y) = axes(report);
-    Plot::new("accuracy against time")
+    Plot::new("accuracy-plot")
         .height((ui.available_height() * 0.6).max(260.0))
         .legend(Legend::default().position(Corner::LeftTop))
         .default_x_bounds(x.low, x.high)
         .default_y_bounds(y.low, y.high)
-        .x_axis_label("time per ray, ns (log)")
-        .y_axis_label("largest hard-set error, ε·κ (log)")
+        .x_axis_label(t!("accuracy-axis-time"))
+        .y_axis_label(t!("accuracy-axis-error"))
         .x_grid_spacer(decades)
         .y_grid_spacer(decades)
         .x_axis_formatter(|mark, _| decade_text(mark))
@@ -161,16 +169,20 @@ fn plot(ui: &mut Ui, report: &Report) {
                 } => (*plot_name, position),
                 HoverPosition::Elsewhere { position } => ("", position),
             };
-            Some(format!(
-                "{name}\n{:.3} ns, {:.3} ε·κ",
-                10f64.powf(at.x),
-                10f64.powf(at.y)
+            Some(t!(
+                "accuracy-hover",
+                name = name,
+                time = number(10f64.powf(at.x), 3),
+                error = number(10f64.powf(at.y), 3)
             ))
         })
         .show(ui, |plot| {
             plot.hline(
-                HLine::new("the default kernel's bound, 32 ε·κ", BOUND.log10())
-                    .color(color(palette::ALARM)),
+                HLine::new(
+                    t!("accuracy-bound", bound = number(BOUND, 0)),
+                    BOUND.log10(),
+                )
+                .color(color(palette::ALARM)),
             );
             for row in &report.rows {
                 let at = [
@@ -202,24 +214,27 @@ fn marker_shape(marker: Marker) -> MarkerShape {
 
 /// The report's numbers.
 fn table(ui: &mut Ui, report: &Report) {
-    Grid::new("bench rows").striped(true).show(ui, |ui| {
+    Grid::new("bench-rows").striped(true).show(ui, |ui| {
         for heading in [
-            "variant",
-            "ns/ray",
-            "max err random",
-            "max err hard",
-            "hard ε·κ",
-            "TIR mismatches",
+            t!("accuracy-column-variant"),
+            t!("accuracy-column-time"),
+            t!("accuracy-column-random"),
+            t!("accuracy-column-hard"),
+            t!("accuracy-column-eps-kappa"),
+            t!("accuracy-column-tir"),
         ] {
             ui.label(RichText::new(heading).strong());
         }
         ui.end_row();
         for r in &report.rows {
             ui.label(point_label(r));
-            ui.label(format!("{:.2}", r.ns_per_ray));
-            ui.label(format!("{:.2e}", r.max_err_random));
-            ui.label(format!("{:.2e}", r.max_err_hard));
-            ui.label(format!("{:.1}", r.max_err_hard_eps_kappa));
+            ui.label(number(r.ns_per_ray, 2));
+            ui.label(refraction_i18n::decimal(&format!(
+                "{:.2e}",
+                r.max_err_random
+            )));
+            ui.label(refraction_i18n::decimal(&format!("{:.2e}", r.max_err_hard)));
+            ui.label(number(r.max_err_hard_eps_kappa, 1));
             ui.label(r.tir_mismatches.to_string());
             ui.end_row();
         }

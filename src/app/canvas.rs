@@ -6,6 +6,7 @@ use egui::{
     CursorIcon, EventFilter, Key, Pos2, Rect, Role, Sense, Stroke, Ui, Vec2 as EguiVec2, WidgetInfo,
 };
 use glam::Vec2;
+use refraction_i18n::t;
 
 use super::paint::{color, hover_left_out, paint};
 use refraction_diagram::{Diagram, ExplorerState, HandleId, Overlay};
@@ -96,15 +97,11 @@ fn pan_and_zoom(ui: &Ui, response: &egui::Response, overlay: &mut Overlay) {
 }
 
 /// The line under the diagram: how to use the handles, or the keys of the one selected.
-fn hint(focused: Option<HandleId>) -> &'static str {
+fn hint(focused: Option<HandleId>) -> String {
     match focused {
-        Some(HandleId::W | HandleId::N) => {
-            "←/→ turn by 1° (Shift: 0.1°) · +/− μt · Tab: next handle · drag to move"
-        }
-        Some(HandleId::MuI | HandleId::MuT) => {
-            "↑/↓ or +/− change the index by 0.01 (Shift: 0.001) · Tab: next handle"
-        }
-        None => "Drag W, N or a μ marker; click one (or the diagram) to use the arrow keys",
+        Some(HandleId::W | HandleId::N) => t!("canvas-hint-ray"),
+        Some(HandleId::MuI | HandleId::MuT) => t!("canvas-hint-index"),
+        None => t!("canvas-hint"),
     }
 }
 

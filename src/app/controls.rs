@@ -1,6 +1,7 @@
 //! The left panel: convention, flipping N, the two indices (slider, typed value, preset), typed
 //! 3D W and N, the critical-angle snap and the picture export (PNG or SVG).
 
+use refraction_i18n::t;
 use std::path::{Path, PathBuf};
 
 use egui::{ComboBox, DragValue, Slider, SliderClamping, Ui};
@@ -88,7 +89,7 @@ fn index_controls(
     }
     let typed = field.show(
         ui,
-        &format!("{symbol} value"),
+        &t!("controls-index-value", symbol = symbol),
         short(state.index(handle)),
         90.0,
     );
@@ -97,8 +98,9 @@ fn index_controls(
             parse_number(&text, symbol).and_then(|value| set_index(state, handle, symbol, value));
         field.settle(outcome);
     }
-    let current = material_of(state.index(handle)).map_or("custom", |m| m.name);
-    ComboBox::from_label(format!("{symbol} material"))
+    let custom = t!("controls-custom");
+    let current = material_of(state.index(handle)).map_or(custom.as_str(), |m| m.name);
+    ComboBox::from_label(t!("controls-material", symbol = symbol))
         .selected_text(current)
         .show_ui(ui, |ui| {
             for m in MATERIALS {
@@ -108,16 +110,16 @@ fn index_controls(
                     field.settle(set_index(state, handle, symbol, m.index));
                 }
             }
-            ui.label("custom: type a value above");
+            ui.label(t!("controls-custom-hint"));
         });
 }
 
 impl Controls {
     /// The lesson presets, *Reset*, and θi typed in degrees.
     fn lesson(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
-        ui.heading("Lesson");
+        ui.heading(t!("controls-lesson"));
         ui.horizontal_wrapped(|ui| {
-            ComboBox::from_label("Lesson preset")
+            ComboBox::from_label(t!("controls-lesson-preset"))
                 .selected_text(self.lesson.label())
                 .show_ui(ui, |ui| {
                     for lesson in Lesson::ALL {
@@ -131,15 +133,18 @@ impl Controls {
                     }
                 });
             if ui
-                .button("Reset")
-                .on_hover_text("Back to the start of the lesson chosen")
+                .button(t!("controls-reset"))
+                .on_hover_text(t!("controls-reset-hover"))
                 .clicked()
             {
                 *state = self.lesson.state();
             }
         });
         let current = short((state.incidence_degrees() * 1e4).round() / 1e4);
-        if let Some(text) = self.theta_i.show(ui, "θi (degrees)", current, 90.0) {
+        if let Some(text) = self
+            .theta_i
+            .show(ui, &t!("controls-incidence"), current, 90.0)
+        {
             let outcome = parse_number(&text, "θi").and_then(|degrees| {
                 state
                     .set_incidence_degrees(degrees)
@@ -153,48 +158,46 @@ impl Controls {
     pub fn show(&mut self, ui: &mut Ui, state: &mut ExplorerState, overlay: &Overlay) {
         self.lesson(ui, state);
         ui.separator();
-        ui.heading("Convention");
+        ui.heading(t!("controls-convention"));
         let mut convention = state.convention();
         ui.radio_value(
             &mut convention,
             Convention::TowardOrigin,
-            "Section 1: W points back toward the origin",
+            t!("controls-convention-toward-origin"),
         );
         ui.radio_value(
             &mut convention,
             Convention::AlongRay,
-            "Section 2: W is the direction of travel",
+            t!("controls-convention-along-ray"),
         );
         state.set_convention(convention);
         ui.horizontal(|ui| {
             if ui
-                .button("Flip N")
-                .on_hover_text(
-                    "Turn the normal around, as an outward normal is where a ray leaves glass",
-                )
+                .button(t!("controls-flip-normal"))
+                .on_hover_text(t!("controls-flip-normal-hover"))
                 .clicked()
             {
                 state.flip_normal();
             }
             let snap = ui.add_enabled(
                 state.critical_angle().is_some(),
-                egui::Button::new("Snap W to θc"),
+                egui::Button::new(t!("controls-snap")),
             );
             if snap
-                .on_hover_text("Put W at the critical angle (needs μi > μt)")
-                .on_disabled_hover_text("There is a critical angle only when μi > μt")
+                .on_hover_text(t!("controls-snap-hover"))
+                .on_disabled_hover_text(t!("controls-snap-disabled"))
                 .clicked()
             {
                 state.snap_to_critical_angle();
             }
         });
         ui.separator();
-        ui.heading("Indices");
+        ui.heading(t!("controls-indices"));
         index_controls(ui, state, HandleId::MuI, &mut self.mu_i);
         index_controls(ui, state, HandleId::MuT, &mut self.mu_t);
         ui.separator();
-        ui.heading("Typed W and N");
-        ui.label("Paste a student's logged vectors (x, y, z); press Enter.");
+        ui.heading(t!("controls-typed-vectors"));
+        ui.label(t!("controls-typed-vectors-hint"));
         if let Some(text) = self.w.show(ui, "W =", format_vector(state.w()), 170.0) {
             let outcome = parse_vector(&text, "W")
                 .and_then(|w| state.set_vectors(w, state.n()).map_err(|e| e.to_string()));
@@ -213,11 +216,11 @@ impl Controls {
     /// student's T, highlights, the physics switches) in the fitted view, since the screen's
     /// pan is in its own pixels.
     fn export(&mut self, ui: &mut Ui, state: &ExplorerState, overlay: &Overlay) {
-        ui.heading("Export picture (PNG or SVG)");
+        ui.heading(t!("controls-export-heading"));
         let (low, high) = refraction_render::SIZE_LIMITS;
         ui.horizontal(|ui| {
             let (width, height) = &mut self.export_size;
-            let label = ui.label("Size");
+            let label = ui.label(t!("controls-export-size"));
             ui.add(DragValue::new(width).range(low..=high).suffix(" px"))
                 .labelled_by(label.id);
             ui.label("×");
@@ -225,17 +228,17 @@ impl Controls {
                 .labelled_by(label.id);
         });
         ui.horizontal(|ui| {
-            let label = ui.label("File");
+            let label = ui.label(t!("controls-export-file"));
             let field = egui::TextEdit::singleline(&mut self.export_path)
-                .hint_text("a .png or .svg name, or numbered diagram-001.png")
+                .hint_text(t!("controls-export-file-hint"))
                 .desired_width(170.0);
             ui.add(field).labelled_by(label.id);
-            if ui.button("Browse…").clicked() {
+            if ui.button(t!("controls-browse")).clicked() {
                 let start = self.export_path.clone();
                 self.export_dialog = Some(FileDialog::new(Purpose::Save, &["png", "svg"], &start));
             }
         });
-        if ui.button("Export picture").clicked() {
+        if ui.button(t!("controls-export")).clicked() {
             // No name, or a folder: the next free number there.
             let typed = PathBuf::from(self.export_path.trim());
             let path = if typed.as_os_str().is_empty() || typed.is_dir() {
@@ -287,7 +290,7 @@ impl Controls {
         self.export_status = Some(
             refraction_render::export(state, &overlay, self.export_size, path)
                 .map_err(|e| e.to_string())
-                .map(|()| format!("wrote {}", path.display())),
+                .map(|()| t!("controls-exported", path = path.display().to_string())),
         );
     }
 }

@@ -5,7 +5,7 @@
 use egui::{Context, FontDefinitions, FontFamily};
 
 /// The font that covers arrows in egui's built-in set.
-const ARROWS: &str = "Hack";
+const ARROWS: &str = "Hack"; // untranslated: a font's name.
 
 /// egui's fonts with [`ARROWS`] as the proportional family's first fallback.
 fn definitions() -> FontDefinitions {

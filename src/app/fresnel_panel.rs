@@ -9,6 +9,7 @@
 
 use egui::{RichText, Ui};
 use egui_plot::{Line, LineStyle, Plot, PlotPoint, Text, VLine, uniform_grid_spacer};
+use refraction_i18n::t;
 
 use super::paint::color;
 use refraction_diagram::ExplorerState;
@@ -77,7 +78,7 @@ fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette, height: f32) -> Opt
         .include_x(90.0)
         .include_y(0.0)
         .include_y(1.12)
-        .x_axis_label("angle of incidence θi (°)")
+        .x_axis_label(t!("fresnel-axis"))
         // Lines every 10°, labels at least every 30° however narrow the plot.
         .x_grid_spacer(uniform_grid_spacer(|_| [10.0, 30.0, 90.0]))
         // The room above 100 % holds the markers' names, not values.
@@ -85,7 +86,7 @@ fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette, height: f32) -> Opt
             if mark.value > 1.0 + 1e-9 {
                 String::new()
             } else {
-                format!("{:.0} %", mark.value * 100.0)
+                format!("{} %", number(mark.value * 100.0, 0))
             }
         })
         .show(ui, |plot| {
@@ -118,7 +119,7 @@ fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette, height: f32) -> Opt
             }
             let shade = color(palette.text_shade(palette.w));
             plot.vline(
-                VLine::new("θi now", model.cursor_deg)
+                VLine::new(t!("fresnel-now"), model.cursor_deg)
                     .color(shade)
                     .width(3.0),
             );
@@ -159,31 +160,25 @@ fn legend(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) {
 
 /// The landmarks in words.
 fn landmarks(ui: &mut Ui, model: &FresnelPlot) {
-    ui.label(format!(
-        "At θi = {}°, from μi = {} into μt = {}.",
-        number(model.cursor_deg, 1),
-        model.mu_i,
-        model.mu_t
+    ui.label(t!(
+        "fresnel-at",
+        angle = number(model.cursor_deg, 1),
+        mu_i = refraction_i18n::decimal(&model.mu_i.to_string()),
+        mu_t = refraction_i18n::decimal(&model.mu_t.to_string())
     ));
     match model.angles.brewster_deg {
-        Some(b) => ui.label(format!(
-            "Brewster's angle θB = {}°: no p light is reflected there (tan θB = μt/μi).",
-            number(b, 1)
-        )),
-        None => ui.label("Equal indices: no interface, nothing is reflected."),
+        Some(b) => ui.label(t!("fresnel-brewster", angle = number(b, 1))),
+        None => ui.label(t!("fresnel-equal-indices")),
     };
     match model.angles.critical_deg {
-        Some(c) => ui.label(format!(
-            "Critical angle θc = {}°: beyond it all the light is reflected (sin θc = μt/μi).",
-            number(c, 1)
-        )),
-        None => ui.label("No critical angle: the light goes into a medium of higher index."),
+        Some(c) => ui.label(t!("fresnel-critical", angle = number(c, 1))),
+        None => ui.label(t!("fresnel-no-critical")),
     };
 }
 
 /// The legend, the landmarks in words and the source of the formula.
 fn words(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) {
-    ui.label(RichText::new("Click or drag on the plot to set θi.").weak());
+    ui.label(RichText::new(t!("fresnel-click-hint")).weak());
     legend(ui, model, palette);
     landmarks(ui, model);
     ui.label(RichText::new(SOURCE.replace('\n', " ")).small());
@@ -197,7 +192,7 @@ const SIDE_BY_SIDE_WIDTH: f32 = 720.0;
 /// under the pointer.
 pub fn show(ui: &mut Ui, state: &mut ExplorerState, palette: &Palette) {
     let model = FresnelPlot::of(state);
-    ui.label(RichText::new("How much light is reflected (Fresnel)").strong());
+    ui.label(RichText::new(t!("fresnel-heading")).strong());
     let clicked = if ui.available_width() >= SIDE_BY_SIDE_WIDTH {
         ui.horizontal_top(|ui| {
             let width = ui.available_width() * 0.58;

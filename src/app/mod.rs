@@ -42,11 +42,14 @@ use physics::Physics;
 use presentation::Presentation;
 use refraction_diagram::palette::Theme;
 use refraction_diagram::{ExplorerState, Overlay};
+use refraction_i18n::{Locale, t};
 use refraction_scene::Scene;
 pub use scenes::ScenesView;
 use tools::Tools;
 
-/// The window title.
+/// The window title: the program's name, the same in every language (so that a window
+/// manager's rules and a teacher's shortcut find it).
+// untranslated: the program's name.
 pub const TITLE: &str = "Refraction explorer";
 
 /// Where eframe keeps the last state between runs.
@@ -76,11 +79,11 @@ impl View {
 
     /// The view's name in the bar (also its accessible name).
     #[must_use]
-    pub fn label(self) -> &'static str {
+    pub fn label(self) -> String {
         match self {
-            Self::Interface => "One interface",
-            Self::Scenes => "Scenes",
-            Self::Accuracy => "Accuracy vs time",
+            Self::Interface => t!("view-interface"),
+            Self::Scenes => t!("view-scenes"),
+            Self::Accuracy => t!("view-accuracy"),
         }
     }
 
@@ -114,6 +117,10 @@ pub struct Launch {
     pub view: Option<View>,
     /// The theme (`--theme`).
     pub theme: Option<Theme>,
+    /// The language (`--lang`), for this run: over the one chosen last time and the system's.
+    pub language: Option<Locale>,
+    /// The system's language, which the window speaks unless one is chosen.
+    pub system_language: Option<Locale>,
 }
 
 /// The whole explorer: the state being explored, the view shown, each view's own memory,
@@ -133,10 +140,15 @@ pub struct Explorer {
     animation_export: AnimationExport,
     /// What the last undo or redo did, in words.
     travelled: Option<String>,
+    /// The language given on the command line, until one is chosen in the bar.
+    command_line_language: Option<Locale>,
+    /// The system's language, spoken unless one is chosen.
+    system_language: Option<Locale>,
 }
 
 impl Explorer {
-    /// An explorer opened on `state`.
+    /// An explorer opened on `state`, speaking this thread's language
+    /// ([`refraction_i18n::locale`]) until another is chosen.
     #[must_use]
     pub fn new(state: ExplorerState) -> Self {
         let scenes = ScenesView::default();
@@ -156,6 +168,8 @@ impl Explorer {
             physics: Physics::default(),
             animation_export: AnimationExport::default(),
             travelled: None,
+            command_line_language: None,
+            system_language: Some(refraction_i18n::locale()),
         }
     }
 
@@ -182,7 +196,18 @@ impl Explorer {
             explorer.presentation.theme = theme;
         }
         explorer.presentation.on = launch.present;
+        explorer.command_line_language = launch.language;
+        explorer.system_language = launch.system_language;
+        refraction_i18n::set_locale(explorer.speaking());
         explorer
+    }
+
+    /// The language the window speaks: the command line's (`--lang`) until one is chosen in
+    /// the bar, then the chosen one (kept between runs), else the system's, else English.
+    #[must_use]
+    pub fn speaking(&self) -> Locale {
+        self.command_line_language
+            .unwrap_or_else(|| self.presentation.locale(self.system_language))
     }
 
     /// The view shown and the Scenes view's scene as edited, as JSON text for the next run.
@@ -208,7 +233,7 @@ impl Explorer {
         let name = saved["scene_name"].as_str().unwrap_or_default();
         if let Some(Ok(scene)) = saved["scene"]
             .as_str()
-            .map(|toml| Scene::from_toml(toml, "the last run's scene", name))
+            .map(|toml| Scene::from_toml(toml, &t!("view-last-run-scene"), name))
         {
             // A built-in scene edited last time keeps its file's version for *Reset*.
             let base = Scene::embedded(name).unwrap_or_else(|_| scene.clone());
@@ -273,6 +298,7 @@ impl Explorer {
     /// Shows the explorer in `ui` (the whole window): the bar of views and tools, then the
     /// view; records a step of history once the user lets go.
     pub fn show(&mut self, ui: &mut Ui) {
+        refraction_i18n::set_locale(self.speaking());
         self.presentation.apply(ui.ctx());
         self.tools.walk.animate(ui.ctx(), &mut self.state);
         self.physics.animate(ui.ctx());
@@ -316,7 +342,11 @@ impl Explorer {
                 self.travel(travel);
             }
             ui.separator();
-            self.presentation.controls(ui);
+            let chosen = self.presentation.language;
+            self.presentation.controls(ui, self.speaking());
+            if self.presentation.language != chosen {
+                self.command_line_language = None;
+            }
             ui.separator();
             self.tools.bar(ui);
             if self.view == View::Interface {
@@ -349,7 +379,7 @@ impl Explorer {
         self.travelled = Some(match other {
             Some(view) => {
                 self.view = view;
-                format!("{} (in {})", change.words, view.label())
+                t!("travel-in-view", change = change.words, view = view.label())
             }
             None => change.words,
         });

@@ -7,6 +7,7 @@
 //! keeps between runs under the desk panels' ids.
 
 use egui::{Button, Key, Panel, RichText, Role, ScrollArea, Ui, WidgetInfo};
+use refraction_i18n::t;
 
 /// The width of a collapsed panel's strip, in points.
 pub const STRIP_WIDTH: f32 = 30.0;
@@ -16,8 +17,6 @@ pub const STRIP_WIDTH: f32 = 30.0;
 pub struct SidePanel {
     /// Its egui id at the desk (presentation adds a suffix).
     pub id: &'static str,
-    /// What it holds, for the strip's button (also its accessible name).
-    pub name: &'static str,
     /// The key that opens and closes it.
     pub key: Key,
     /// Whether it sits on the left.
@@ -28,10 +27,22 @@ pub struct SidePanel {
     pub max_share: (f32, f32),
 }
 
+impl SidePanel {
+    /// What its button says: show it (`show`) or hide it, with its `key`. The button's words
+    /// are also its accessible name.
+    fn words(&self, show: bool, key: &str) -> String {
+        match (self.left, show) {
+            (true, true) => t!("panel-show-controls", key = key),
+            (true, false) => t!("panel-hide-controls", key = key),
+            (false, true) => t!("panel-show-numbers", key = key),
+            (false, false) => t!("panel-hide-numbers", key = key),
+        }
+    }
+}
+
 /// The controls panel (F2).
 pub const CONTROLS: SidePanel = SidePanel {
     id: "controls",
-    name: "controls",
     key: Key::F2,
     left: true,
     default_width: 290.0,
@@ -41,7 +52,6 @@ pub const CONTROLS: SidePanel = SidePanel {
 /// The numbers panel (F3): k, the quadratic in b, the candidates, the equations.
 pub const NUMBERS: SidePanel = SidePanel {
     id: "readouts",
-    name: "numbers",
     key: Key::F3,
     left: false,
     default_width: 440.0,
@@ -126,6 +136,7 @@ impl Panels {
     ) {
         let shown = self.mode(presenting).of(panel);
         let id = if presenting {
+            // untranslated: an egui id (it keys the widths egui keeps between runs).
             format!("{} (presentation)", panel.id)
         } else {
             panel.id.to_owned()
@@ -139,12 +150,13 @@ impl Panels {
         };
         let key = panel.key.name();
         if !*shown {
+            // untranslated: an egui id.
             side(format!("{id} strip"))
                 .exact_size(STRIP_WIDTH)
                 .resizable(false)
                 .show(ui, |ui| {
                     let arrow = if panel.left { "⏵" } else { "⏴" };
-                    let name = format!("Show the {} ({key})", panel.name);
+                    let name = panel.words(true, key);
                     let open = ui.add(Button::new(RichText::new(arrow).strong()));
                     open.widget_info(|| WidgetInfo::labeled(Role::Button, true, &name));
                     if open.on_hover_text(&name).clicked() {
@@ -167,7 +179,7 @@ impl Panels {
             .show(ui, |ui| {
                 let arrow = if panel.left { "⏴" } else { "⏵" };
                 let hide =
-                    ui.add(Button::new(format!("{arrow} Hide the {} ({key})", panel.name)).small());
+                    ui.add(Button::new(format!("{arrow} {}", panel.words(false, key))).small());
                 if hide.clicked() {
                     *shown = false;
                 }

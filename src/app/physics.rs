@@ -9,6 +9,7 @@
 
 use egui::containers::menu::{MenuButton, MenuConfig};
 use egui::{Button, Context, PopupCloseBehavior, Ui};
+use refraction_i18n::t;
 
 use refraction_diagram::intensities::Polarisation;
 use refraction_diagram::wavefronts::WaveOptions;
@@ -72,21 +73,18 @@ impl Physics {
     /// shows selected while an effect is on; the menu stays open until a click outside it.
     pub fn menu(&mut self, ui: &mut Ui) {
         let on = self.intensities || self.waves;
-        let button = Button::new("Effects").selected(on);
+        let button = Button::new(t!("effects-menu")).selected(on);
         let config = MenuConfig::new().close_behavior(PopupCloseBehavior::CloseOnClickOutside);
         let (response, _) = MenuButton::from_button(button)
             .config(config)
             .ui(ui, |ui| self.switches(ui));
-        response.on_hover_text("Intensities (Fresnel) and wavefronts over the diagram");
+        response.on_hover_text(t!("effects-menu-hover"));
     }
 
     /// The switches and their options, one under the other.
     fn switches(&mut self, ui: &mut Ui) {
-        ui.toggle_value(&mut self.intensities, "Intensities")
-            .on_hover_text(
-                "Draw the reflected and transmitted rays by their share of the light (Fresnel), \
-                 with percentages",
-            );
+        ui.toggle_value(&mut self.intensities, t!("effects-intensities"))
+            .on_hover_text(t!("effects-intensities-hover"));
         if self.intensities {
             ui.horizontal(|ui| {
                 for p in Polarisation::ALL {
@@ -95,16 +93,12 @@ impl Physics {
             });
         }
         ui.separator();
-        ui.toggle_value(&mut self.waves, "Wavefronts")
-            .on_hover_text(
-                "Plane wavefronts λ/μ apart in each medium, moving at c/μ: why the ray bends",
-            );
+        ui.toggle_value(&mut self.waves, t!("effects-wavefronts"))
+            .on_hover_text(t!("effects-wavefronts-hover"));
         if self.waves {
-            ui.checkbox(&mut self.moving, "Moving");
-            ui.checkbox(&mut self.huygens, "Huygens's construction")
-                .on_hover_text(
-                    "Two points of one front and the wavelet grown in the time between them",
-                );
+            ui.checkbox(&mut self.moving, t!("effects-moving"));
+            ui.checkbox(&mut self.huygens, t!("effects-huygens"))
+                .on_hover_text(t!("effects-huygens-hover"));
         }
     }
 }

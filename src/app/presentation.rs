@@ -1,6 +1,6 @@
 //! Presentation mode for a projector: full screen with the whole UI zoomed (large fonts, thick
-//! lines), the high-contrast themes, the colour-blind-safe palette, and the diagram's pan and
-//! zoom.
+//! lines), the high-contrast themes, the colour-blind-safe palette, the diagram's pan and
+//! zoom, and the language of the window.
 
 use egui::{
     Color32, ComboBox, Context, FontFamily, FontId, Key, KeyboardShortcut, Modifiers, TextStyle,
@@ -9,6 +9,7 @@ use egui::{
 
 use refraction_diagram::overlay::PanZoom;
 use refraction_diagram::palette::{Palette, Theme};
+use refraction_i18n::{Locale, t};
 
 /// The UI zoom in presentation mode: the smallest text, 13 points, is then 20.8 pixels.
 pub const ZOOM: f32 = 1.6;
@@ -49,7 +50,36 @@ pub struct Presentation {
     pub colour_blind_safe: bool,
     /// How the diagram is panned and zoomed (drag the background, scroll; double-click resets).
     pub pan_zoom: PanZoom,
+    /// The language chosen in the bar, kept between runs; `None` follows the system's.
+    pub language: Option<Locale>,
     applied: Option<Applied>,
+}
+
+/// A theme's name in the saved settings: never translated, never renamed.
+fn theme_id(theme: Theme) -> &'static str {
+    match theme {
+        Theme::Standard => "standard",
+        Theme::HighContrastLight => "high-contrast-light",
+        Theme::HighContrastDark => "high-contrast-dark",
+    }
+}
+
+/// The theme a saved setting names: by its id, or by the English menu name earlier versions
+/// saved.
+fn saved_theme(saved: &str) -> Option<Theme> {
+    let earlier = match saved {
+        // untranslated: the menu names earlier versions saved, read back only.
+        "Standard" => Some(Theme::Standard),
+        // untranslated: as above.
+        "Black on white" => Some(Theme::HighContrastLight),
+        // untranslated: as above.
+        "White on black" => Some(Theme::HighContrastDark),
+        _ => None,
+    };
+    Theme::ALL
+        .into_iter()
+        .find(|t| theme_id(*t) == saved)
+        .or(earlier)
 }
 
 /// The egui look of a theme: the standard light one, or black on white / white on black with
@@ -107,13 +137,15 @@ impl Presentation {
         }
     }
 
-    /// The look worth keeping between runs, the theme and the palette, as a short JSON text
-    /// (presentation mode and the diagram's pan and zoom belong to one session).
+    /// The look worth keeping between runs, the theme, the palette and the language chosen,
+    /// as a short JSON text (presentation mode and the diagram's pan and zoom belong to one
+    /// session).
     #[must_use]
     pub fn look(&self) -> String {
         serde_json::json!({
-            "theme": self.theme.label(),
+            "theme": theme_id(self.theme),
             "colour_blind_safe": self.colour_blind_safe,
+            "language": self.language.map(Locale::code),
         })
         .to_string()
     }
@@ -123,25 +155,33 @@ impl Presentation {
         let Ok(look) = serde_json::from_str::<serde_json::Value>(text) else {
             return;
         };
-        if let Some(theme) = Theme::ALL
-            .into_iter()
-            .find(|t| look["theme"].as_str() == Some(t.label()))
-        {
+        if let Some(theme) = look["theme"].as_str().and_then(saved_theme) {
             self.theme = theme;
         }
         if let Some(safe) = look["colour_blind_safe"].as_bool() {
             self.colour_blind_safe = safe;
         }
+        if let Some(language) = look["language"].as_str().and_then(Locale::from_tag) {
+            self.language = Some(language);
+        }
     }
 
-    /// The presentation toggle (also F11), the theme menu and the colour-blind-safe switch.
-    pub fn controls(&mut self, ui: &mut Ui) {
+    /// The language the window speaks: the one chosen in the bar, else `system`'s, else
+    /// English.
+    #[must_use]
+    pub fn locale(&self, system: Option<Locale>) -> Locale {
+        self.language.or(system).unwrap_or_default()
+    }
+
+    /// The presentation toggle (also F11), the theme menu, the colour-blind-safe switch and
+    /// the language menu (`speaking` is the language the window speaks now).
+    pub fn controls(&mut self, ui: &mut Ui, speaking: Locale) {
         if ui.input_mut(|i| i.consume_shortcut(&KeyboardShortcut::new(Modifiers::NONE, Key::F11))) {
             self.on = !self.on;
         }
-        ui.toggle_value(&mut self.on, "🖵 Presentation")
-            .on_hover_text("Full screen, everything larger (F11)");
-        ComboBox::from_label("Theme")
+        ui.toggle_value(&mut self.on, t!("presentation-toggle"))
+            .on_hover_text(t!("presentation-toggle-hover"));
+        ComboBox::from_label(t!("presentation-theme"))
             .selected_text(self.theme.label())
             .show_ui(ui, |ui| {
                 for theme in Theme::ALL {
@@ -149,9 +189,28 @@ impl Presentation {
                 }
             })
             .response
-            .on_hover_text("Standard, or high contrast: black on white or white on black");
-        ui.checkbox(&mut self.colour_blind_safe, "Colour-blind safe")
-            .on_hover_text("Okabe–Ito colours only; every ray also has its own dash and label");
+            .on_hover_text(t!("presentation-theme-hover"));
+        ui.checkbox(&mut self.colour_blind_safe, t!("presentation-colour-blind"))
+            .on_hover_text(t!("presentation-colour-blind-hover"));
+        self.language_menu(ui, speaking);
+    }
+
+    /// The language menu: each language by its own name; the choice is kept between runs.
+    fn language_menu(&mut self, ui: &mut Ui, speaking: Locale) {
+        ComboBox::from_id_salt("language")
+            .selected_text(format!("🌐 {}", speaking.name()))
+            .show_ui(ui, |ui| {
+                for locale in Locale::ALL {
+                    if ui
+                        .selectable_label(speaking == locale, locale.name())
+                        .clicked()
+                    {
+                        self.language = Some(locale);
+                    }
+                }
+            })
+            .response
+            .on_hover_text(t!("language-hover"));
     }
 }
 
@@ -172,9 +231,33 @@ mod tests {
         assert_eq!(next_run.theme, Theme::HighContrastDark);
         assert!(next_run.colour_blind_safe);
         assert!(!next_run.on, "presentation mode is not restored");
-        next_run.restore_look("{\"theme\": \"Neon\"}");
+        assert_eq!(next_run.language, None, "no language chosen: the system's");
+        next_run.restore_look("{\"theme\": \"Neon\", \"language\": \"tlh\"}");
         next_run.restore_look("not json");
         assert_eq!(next_run.theme, Theme::HighContrastDark);
+        assert_eq!(next_run.language, None);
+    }
+
+    #[test]
+    fn a_chosen_language_is_kept_and_wins_over_the_systems() {
+        let chosen = Presentation {
+            language: Some(Locale::De),
+            ..Presentation::default()
+        };
+        let mut next_run = Presentation::default();
+        assert_eq!(next_run.locale(Some(Locale::Fr)), Locale::Fr);
+        assert_eq!(next_run.locale(None), Locale::En);
+        next_run.restore_look(&chosen.look());
+        assert_eq!(next_run.locale(Some(Locale::Fr)), Locale::De);
+    }
+
+    #[test]
+    fn looks_saved_by_earlier_versions_keep_their_theme() {
+        let mut next_run = Presentation::default();
+        next_run.restore_look("{\"theme\": \"White on black\"}");
+        assert_eq!(next_run.theme, Theme::HighContrastDark);
+        next_run.restore_look("{\"theme\": \"high-contrast-light\"}");
+        assert_eq!(next_run.theme, Theme::HighContrastLight);
     }
 
     #[test]

@@ -3,14 +3,15 @@
 
 use egui::{Grid, RichText, Sense, Stroke, Ui, Vec2};
 use egui_plot::{HLine, Line, Plot, Points};
+use refraction_i18n::t;
 
 use super::paint::color;
 use refraction_diagram::equations::equations;
-use refraction_diagram::numbers::{number, vector};
+use refraction_diagram::numbers::{number, significant, vector};
 use refraction_diagram::palette::Palette;
 use refraction_diagram::quadratic::Quadratic;
 use refraction_diagram::table::{CandidateRow, rows};
-use refraction_kernel::Refraction;
+use refraction_kernel::{Refraction, VectorName, Warning};
 
 /// The mark for a passed (✔) or failed (✖) check.
 fn mark(passed: bool) -> &'static str {
@@ -20,15 +21,12 @@ fn mark(passed: bool) -> &'static str {
 /// k as a number and as a bar signed about zero (k ranges over 1 − μ² … 1; the bar shows
 /// −1 … 1 and saturates beyond).
 fn discriminant(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
-    let verdict = if r.k < 0.0 {
-        "< 0: total internal reflection"
+    let k = number(r.k, 4);
+    ui.label(if r.k < 0.0 {
+        t!("readouts-discriminant-tir", k = k)
     } else {
-        "≥ 0: T exists"
-    };
-    ui.label(format!(
-        "Discriminant k = μ²wn² − μ² + 1 = {} {verdict}",
-        number(r.k, 4)
-    ));
+        t!("readouts-discriminant", k = k)
+    });
     let (response, painter) =
         ui.allocate_painter(Vec2::new(ui.available_width(), 18.0), Sense::hover());
     let rect = response.rect;
@@ -45,24 +43,22 @@ fn discriminant(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
 /// frame to both roots (or the vertex, on total internal reflection).
 fn quadratic(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     let q = Quadratic::of(r);
-    ui.label(format!(
-        "Eq. {}.20, the quadratic in b: b² + 2a·wn·b + a² − 1 = 0 with a = {}, wn = {}",
-        r.convention.section(),
-        number(q.a, 3),
-        number(q.wn, 3),
+    ui.label(t!(
+        "readouts-quadratic",
+        section = r.convention.section().to_string(),
+        a = number(q.a, 3),
+        wn = number(q.wn, 3)
     ));
     let roots: Vec<[f64; 2]> = q.roots.iter().map(|b| [*b, 0.0]).collect();
     let caption = if roots.is_empty() {
-        "no real roots: the parabola no longer reaches zero".to_owned()
+        t!("readouts-no-roots")
     } else {
         let values: Vec<String> = q.roots.iter().map(|b| number(*b, 4)).collect();
-        format!(
-            "roots b = {} (the candidates' b for this a)",
-            values.join(", ")
-        )
+        let separator = refraction_i18n::locale().list_separator();
+        t!("readouts-roots", roots = values.join(separator))
     };
     let ((x0, x1), (y0, y1)) = q.window();
-    Plot::new("quadratic in b")
+    Plot::new("quadratic-in-b")
         .height(150.0)
         .allow_drag(false)
         .allow_zoom(false)
@@ -73,14 +69,14 @@ fn quadratic(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
         .default_y_bounds(y0, y1)
         .reset()
         .show(ui, |plot| {
-            plot.hline(HLine::new("zero", 0.0).color(color(palette.guide)));
+            plot.hline(HLine::new(t!("readouts-plot-zero"), 0.0).color(color(palette.guide)));
             plot.line(
                 Line::new("f(b)", q.samples((x1 - x0) * 0.5, 161))
                     .color(color(palette.t))
                     .width(2.0),
             );
             plot.points(
-                Points::new("roots", roots)
+                Points::new(t!("readouts-plot-roots"), roots)
                     .radius(5.0)
                     .color(color(palette.warning)),
             );
@@ -94,9 +90,16 @@ fn quadratic(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
 const TABLE_WIDTH_IN_LINES: f32 = 30.0;
 
 /// The names of the four checks, in the order of [`passes`].
-const CHECKS: [&str; 4] = ["|T|=1", "eq.10", "side", "bend"];
+fn checks() -> [String; 4] {
+    [
+        "|T|=1".to_owned(),
+        t!("readouts-check-snell"),
+        t!("readouts-check-side"),
+        t!("readouts-check-bend"),
+    ]
+}
 
-/// Whether `row` passes each of [`CHECKS`].
+/// Whether `row` passes each of [`checks`].
 fn passes(row: &CandidateRow) -> [bool; 4] {
     [
         row.unit,
@@ -122,7 +125,7 @@ fn role_label(ui: &mut Ui, row: &CandidateRow, palette: &Palette) {
 
 /// A mark per check, each followed by its name when `named`.
 fn marks(ui: &mut Ui, row: &CandidateRow, palette: &Palette, named: bool) {
-    for (passed, name) in passes(row).into_iter().zip(CHECKS) {
+    for (passed, name) in passes(row).into_iter().zip(checks()) {
         let ink = if passed { palette.n } else { palette.alarm };
         ui.label(RichText::new(mark(passed)).color(color(ink)));
         if named {
@@ -137,7 +140,11 @@ fn candidate_table(ui: &mut Ui, rows: &[CandidateRow], palette: &Palette) {
         .striped(true)
         .spacing([6.0, 3.0])
         .show(ui, |ui| {
-            for heading in ["candidate", "a", "b", "T"].into_iter().chain(CHECKS) {
+            let names = ["a", "b", "T"].map(str::to_owned);
+            let headings = std::iter::once(t!("readouts-candidate"))
+                .chain(names)
+                .chain(checks());
+            for heading in headings {
                 ui.label(RichText::new(heading).strong());
             }
             ui.end_row();
@@ -175,10 +182,7 @@ fn candidate_blocks(ui: &mut Ui, rows: &[CandidateRow], palette: &Palette) {
 fn candidates(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     let rows = rows(r);
     if rows.is_empty() {
-        ui.label(
-            RichText::new("No candidates: k < 0, so b has no real roots and no T exists.")
-                .color(color(palette.alarm)),
-        );
+        ui.label(RichText::new(t!("readouts-no-candidates")).color(color(palette.alarm)));
         return;
     }
     let line = ui.text_style_height(&egui::TextStyle::Body);
@@ -187,10 +191,7 @@ fn candidates(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     } else {
         candidate_blocks(ui, &rows, palette);
     }
-    ui.label(
-        "All four are unit length and satisfy squared Snell (eq. 10): squaring cannot tell \
-         them apart. Only the side and the bend (the source's μ = 1 argument) pick T.",
-    );
+    ui.label(t!("readouts-candidates-note"));
 }
 
 /// The source's key equations with the numbers substituted.
@@ -204,12 +205,32 @@ fn source_equations(ui: &mut Ui, r: &Refraction<f64>) {
 /// The kernel's warnings, or a note that there are none.
 fn warnings(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     if r.warnings.is_empty() {
-        ui.label("No warnings: W and N are unit length and N faces the ray.");
+        ui.label(t!("readouts-no-warnings"));
     }
     for warning in &r.warnings {
+        let text = warning_text(warning);
         ui.label(
-            RichText::new(format!("⚠ {warning}")).color(color(palette.text_shade(palette.warning))),
+            RichText::new(format!("⚠ {text}")).color(color(palette.text_shade(palette.warning))),
         );
+    }
+}
+
+/// A kernel warning in words, its length with 4 significant digits (the kernel's own text,
+/// for the command line's JSON, keeps every digit).
+fn warning_text(warning: &Warning) -> String {
+    match warning {
+        Warning::NotUnitLength { vector, length } => {
+            let vector = match vector {
+                VectorName::W => "W",
+                VectorName::N => "N",
+            };
+            t!(
+                "readouts-warning-not-unit",
+                vector = vector,
+                length = significant(*length, 4)
+            )
+        }
+        Warning::NormalFlipped => t!("readouts-warning-flipped"),
     }
 }
 
@@ -219,15 +240,15 @@ pub fn show(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     ui.separator();
     quadratic(ui, r, palette);
     ui.separator();
-    ui.heading("The four candidates");
+    ui.heading(t!("readouts-candidates"));
     candidates(ui, r, palette);
     ui.separator();
-    ui.heading("Kernel warnings");
+    ui.heading(t!("readouts-warnings"));
     warnings(ui, r, palette);
     ui.separator();
-    ui.heading(format!(
-        "Source equations, Section {}",
-        r.convention.section()
+    ui.heading(t!(
+        "readouts-equations",
+        section = r.convention.section().to_string()
     ));
     source_equations(ui, r);
 }

@@ -7,6 +7,7 @@ use egui::{
     CentralPanel, ComboBox, CursorIcon, Painter, Panel, Pos2, ProgressBar, Rect, Response,
     RichText, Role, Sense, Slider, SliderClamping, TextEdit, Ui, WidgetInfo,
 };
+use refraction_i18n::t;
 use std::path::PathBuf;
 use std::time::Duration;
 
@@ -22,7 +23,7 @@ use refraction_diagram::shapes::{Align, Label};
 use refraction_diagram::{ExplorerState, Primitive, SceneLayout, ScenePicture};
 use refraction_render::atomic::write_atomically;
 use refraction_scene::{
-    DEFAULT_SCENE, EditError, Hit, Scene, SceneInfo, Side, SourceKind, Trace, catalogue,
+    DEFAULT_SCENE, EditError, Hit, Scene, SceneInfo, Side, SourceKind, Stop, Trace, catalogue,
     traced_wavelength,
 };
 
@@ -66,6 +67,7 @@ impl Default for ScenesView {
     /// The default built-in scene.
     fn default() -> Self {
         let scene = Scene::embedded(DEFAULT_SCENE)
+            // untranslated: a panic message for the engineer, never shown to a user.
             .unwrap_or_else(|e| unreachable!("the built-in scenes load (tested): {e}"));
         Self::new(scene)
     }
@@ -80,18 +82,36 @@ fn canvas_point(to_screen: &RectTransform, p: Pos2) -> Vec2 {
 /// What the overlay beside a hovered hit says.
 fn hit_text(scene: &Scene, hit: &Hit) -> String {
     let name = |m: usize| scene.media().get(m).map_or("?", |m| m.name.as_str());
-    let side = match hit.side {
-        Side::Entering => "entering",
-        Side::Leaving => "leaving: the kernel turns N round",
-    };
-    format!(
-        "{} into {} ({side})\nμi = {}, μt = {}, {} nm\nclick: open in One interface",
-        name(hit.from_medium),
-        name(hit.to_medium),
-        number(hit.mu_i, 4),
-        number(hit.mu_t, 4),
-        number(traced_wavelength(hit.light), 1)
-    )
+    let (from, to) = (name(hit.from_medium), name(hit.to_medium));
+    let (mu_i, mu_t) = (number(hit.mu_i, 4), number(hit.mu_t, 4));
+    let wavelength = number(traced_wavelength(hit.light), 1);
+    match hit.side {
+        Side::Entering => t!(
+            "scenes-hit-entering",
+            from = from,
+            to = to,
+            mu_i = mu_i,
+            mu_t = mu_t,
+            wavelength = wavelength
+        ),
+        Side::Leaving => t!(
+            "scenes-hit-leaving",
+            from = from,
+            to = to,
+            mu_i = mu_i,
+            mu_t = mu_t,
+            wavelength = wavelength
+        ),
+    }
+}
+
+/// Why a trace stopped early, in words.
+fn stop_text(stop: &Stop) -> String {
+    match stop {
+        Stop::Segments(n) => t!("scenes-stopped-segments", budget = number(*n as f64, 0)),
+        Stop::Tests(n) => t!("scenes-stopped-tests", budget = number(*n as f64, 0)),
+        Stop::Cancelled => t!("scenes-stopped-cancelled"),
+    }
 }
 
 impl ScenesView {
@@ -163,7 +183,7 @@ impl ScenesView {
                 .and_then(|text| {
                     write_atomically(&path, text.as_bytes()).map_err(|e| e.to_string())
                 })
-                .map(|()| format!("saved {}", path.display())),
+                .map(|()| t!("scenes-saved", path = path.display().to_string())),
         );
     }
 
@@ -174,7 +194,7 @@ impl ScenesView {
         self.file_status = Some(match Scene::load(&path) {
             Ok(scene) => {
                 self.open(scene);
-                Ok(format!("opened {path}"))
+                Ok(t!("scenes-opened", path = path))
             }
             Err(e) => Err(e.to_string()),
         });
@@ -213,7 +233,7 @@ impl ScenesView {
             let shown = std::mem::replace(&mut self.trace, done);
             self.retracer.recycle(shown);
         }
-        Panel::top("scene controls").show(ui, |ui| {
+        Panel::top("scene-controls").show(ui, |ui| {
             self.controls(ui);
             self.trace_status(ui);
         });
@@ -225,7 +245,7 @@ impl ScenesView {
     fn controls(&mut self, ui: &mut Ui) {
         ui.horizontal(|ui| {
             let mut picked = self.scene.name().to_owned();
-            ComboBox::from_label("Scene")
+            ComboBox::from_label(t!("scenes-scene"))
                 .selected_text(self.scene.title())
                 .show_ui(ui, |ui| {
                     for info in &self.catalogue {
@@ -243,14 +263,14 @@ impl ScenesView {
                 let slider = Slider::new(&mut rays, 1..=MAX_SLIDER_RAYS)
                     .logarithmic(true)
                     .clamping(SliderClamping::Never)
-                    .text("Rays");
+                    .text(t!("scenes-rays"));
                 if ui.add(slider).changed() {
                     self.edit(|s| s.set_ray_count(rays));
                 }
             }
             if ui
-                .button("Reset")
-                .on_hover_text("the scene as its file has it")
+                .button(t!("controls-reset"))
+                .on_hover_text(t!("scenes-reset-hover"))
                 .clicked()
             {
                 self.open(self.original.clone());
@@ -258,18 +278,18 @@ impl ScenesView {
         });
         ui.horizontal(|ui| {
             let field = TextEdit::singleline(&mut self.path).desired_width(260.0);
-            ui.add(field).labelled_by(ui.label("Scene file").id);
-            if ui.button("Open file").clicked() {
+            ui.add(field).labelled_by(ui.label(t!("scenes-file")).id);
+            if ui.button(t!("scenes-open")).clicked() {
                 self.open_file();
             }
             if ui
-                .button("Save file")
-                .on_hover_text("the scene as edited, in the scene format (TOML)")
+                .button(t!("scenes-save"))
+                .on_hover_text(t!("scenes-save-hover"))
                 .clicked()
             {
                 self.save();
             }
-            ui.menu_button("Export picture", |ui| self.export_picture(ui));
+            ui.menu_button(t!("controls-export"), |ui| self.export_picture(ui));
             match &self.file_status {
                 Some(Ok(done)) => {
                     ui.label(done);
@@ -281,13 +301,7 @@ impl ScenesView {
             }
         });
         ui.label(self.scene.description());
-        ui.label(
-            RichText::new(
-                "Drag the source (amber), its direction (the ring at the end of the dashed arrow) \
-                 or a shape's handle; click a hit point to open it in One interface.",
-            )
-            .weak(),
-        );
+        ui.label(RichText::new(t!("scenes-hint")).weak());
         if let Some(error) = &self.error {
             ui.label(RichText::new(format!("⚠ {error}")).color(color(palette::ALARM)));
         }
@@ -297,9 +311,13 @@ impl ScenesView {
     fn export_picture(&mut self, ui: &mut Ui) {
         let field = TextEdit::singleline(&mut self.picture_path).desired_width(220.0);
         ui.add(field)
-            .labelled_by(ui.label("Picture file (.png or .svg)").id);
+            .labelled_by(ui.label(t!("scenes-picture-file")).id);
         let (width, height) = refraction_render::DEFAULT_SIZE;
-        let text = format!("Export {width}×{height}");
+        let text = t!(
+            "scenes-export-size",
+            width = width.to_string(),
+            height = height.to_string()
+        );
         if ui.button(text).clicked() {
             let size = (width, height);
             self.file_status = Some(export::scene_picture(&self.scene, size, &self.picture_path));
@@ -313,10 +331,7 @@ impl ScenesView {
             // Wake up to show the progress, and the trace once it is done.
             ui.ctx().request_repaint_after(Duration::from_millis(50));
             ui.horizontal(|ui| {
-                let text = format!(
-                    "tracing… {:.0} % (the last finished trace is shown)",
-                    done * 100.0
-                );
+                let text = t!("scenes-tracing", percent = number(done * 100.0, 0));
                 // A fraction from 0 to 1: f32 holds it to far better than a pixel.
                 ui.add(
                     ProgressBar::new(done as f32)
@@ -324,8 +339,8 @@ impl ScenesView {
                         .text(text),
                 );
                 if ui
-                    .button("Cancel")
-                    .on_hover_text("stop tracing and show what was traced so far")
+                    .button(t!("scenes-cancel"))
+                    .on_hover_text(t!("scenes-cancel-hover"))
                     .clicked()
                 {
                     self.retracer.cancel();
@@ -333,7 +348,8 @@ impl ScenesView {
             });
         }
         if let Some(stop) = self.trace.counts.stopped {
-            ui.label(RichText::new(format!("⚠ {stop}")).color(color(palette::ALARM)));
+            let why = stop_text(&stop);
+            ui.label(RichText::new(format!("⚠ {why}")).color(color(palette::ALARM)));
         }
     }
 

@@ -2,6 +2,7 @@
 //! save / open / share, and the Fresnel plot. Their switches sit in the top bar.
 
 use egui::{Panel, ScrollArea, Ui};
+use refraction_i18n::t;
 
 use super::check_panel::CheckPanel;
 use super::files_panel::FilesPanel;
@@ -33,12 +34,12 @@ impl Tool {
 
     /// The switch's label (also its accessible name).
     #[must_use]
-    pub fn label(self) -> &'static str {
+    pub fn label(self) -> String {
         match self {
-            Self::Check => "✔ Check my T",
-            Self::WalkThrough => "📖 Walk-through",
-            Self::Files => "💾 Save, open, share",
-            Self::Fresnel => "Fresnel",
+            Self::Check => format!("✔ {}", t!("tool-check")),
+            Self::WalkThrough => format!("📖 {}", t!("tool-walk-through")),
+            Self::Files => format!("💾 {}", t!("tool-files")),
+            Self::Fresnel => t!("tool-fresnel"),
         }
     }
 
@@ -104,7 +105,7 @@ impl Tools {
         let panel = if presenting {
             // At most a third of the width: the diagram keeps half the window (tested).
             let limit = window.width() * tool.presentation_share();
-            Panel::right(format!("{} (presentation)", tool.label()))
+            Panel::right(format!("{tool:?}-presentation"))
                 .resizable(true)
                 .default_size(limit)
                 .size_range(limit * 0.5..=limit)
@@ -114,7 +115,7 @@ impl Tools {
             // be dragged taller.
             let limit = window.height() * 0.45;
             let height = tool.height().min(limit);
-            Panel::bottom(tool.label())
+            Panel::bottom(format!("{tool:?}"))
                 .resizable(true)
                 .size_range(height..=limit.max(height))
         };

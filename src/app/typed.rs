@@ -7,6 +7,7 @@ use glam::DVec3;
 
 use super::paint::color;
 use refraction_diagram::palette;
+use refraction_i18n::t;
 
 /// One typed field: its text and the error of the last attempt to apply it.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -71,29 +72,47 @@ pub fn status(ui: &mut Ui, outcome: Option<&Result<String, String>>) {
     }
 }
 
-/// Parses a number as typed (`NaN` and `inf` parse, for the kernel to refuse by name).
+/// Parses a number as typed, with a decimal point or a decimal comma whatever the language
+/// (`NaN` and `inf` parse, for the kernel to refuse by name).
 ///
 /// # Errors
 /// The text is not a number.
 pub fn parse_number(text: &str, name: &str) -> Result<f64, String> {
-    text.parse()
-        .map_err(|_| format!("{name}: “{text}” is not a number"))
+    refraction_i18n::read_number(text)
+        .ok_or_else(|| t!("typed-not-a-number", name = name, text = text))
 }
 
-/// Parses a 3D vector typed as `x, y, z` (commas and/or spaces, optional brackets).
+/// Parses a 3D vector typed as `x, y, z` (commas and/or spaces, optional brackets), or with
+/// decimal commas as `x; y; z` or `x, y, z` with spaces after the commas (`0,6; −0,8; 0` and
+/// `0,6, −0,8, 0` are both (0.6, −0.8, 0)).
 ///
 /// # Errors
 /// Not exactly three numbers; the message names the vector.
 pub fn parse_vector(text: &str, name: &str) -> Result<DVec3, String> {
-    let parts: Vec<&str> = text
-        .trim_matches(|c: char| "[]() ".contains(c))
-        .split(|c: char| c == ',' || c.is_whitespace())
-        .filter(|s| !s.is_empty())
-        .collect();
+    let inner = text.trim_matches(|c: char| "[]() ".contains(c));
+    let words = |separators: &[char]| -> Vec<&str> {
+        inner
+            .split(|c: char| separators.contains(&c) || c.is_whitespace())
+            .map(|s| s.trim_matches(','))
+            .filter(|s| !s.is_empty())
+            .collect()
+    };
+    // Decimal commas first: a comma inside a number, spaces or semicolons between numbers.
+    let local = words(&[';']);
+    let parts = if local.len() == 3
+        && local
+            .iter()
+            .all(|p| refraction_i18n::read_number(p).is_some())
+    {
+        local
+    } else {
+        words(&[',', ';'])
+    };
     if parts.len() != 3 {
-        return Err(format!(
-            "{name}: expected three numbers x, y, z, got {}",
-            parts.len()
+        return Err(t!(
+            "typed-not-three-numbers",
+            name = name,
+            count = parts.len()
         ));
     }
     let mut v = [0.0; 3];
@@ -103,13 +122,17 @@ pub fn parse_vector(text: &str, name: &str) -> Result<DVec3, String> {
     Ok(DVec3::from_array(v))
 }
 
-/// A vector as `x, y, z` with enough digits to read back what a student logged.
+/// A vector as `x, y, z` with enough digits to read back what a student logged, written the
+/// language's way (`x; y; z` where the decimal separator is a comma).
 #[must_use]
 pub fn format_vector(v: DVec3) -> String {
-    format!("{}, {}, {}", short(v.x), short(v.y), short(v.z))
+    let separator = refraction_i18n::locale().list_separator();
+    let [x, y, z] = [v.x, v.y, v.z].map(short);
+    format!("{x}{separator}{y}{separator}{z}")
 }
 
-/// A number with at most 6 decimals and no trailing zeros.
+/// A number with at most 6 decimals and no trailing zeros, with the language's decimal
+/// separator.
 #[must_use]
 pub fn short(x: f64) -> String {
     let text = format!("{x:.6}");
@@ -117,7 +140,7 @@ pub fn short(x: f64) -> String {
     if text == "-0" {
         "0".to_owned()
     } else {
-        text.to_owned()
+        refraction_i18n::decimal(text)
     }
 }
 
@@ -144,5 +167,26 @@ mod tests {
             format_vector(DVec3::new(0.5, -0.0, 1.0 / 3.0)),
             "0.5, 0, 0.333333"
         );
+    }
+
+    #[test]
+    fn german_numbers_and_vectors_are_written_and_read_with_a_decimal_comma() {
+        refraction_i18n::set_locale(refraction_i18n::Locale::De);
+        let written = (short(-0.8), format_vector(DVec3::new(0.6, -0.8, 0.0)));
+        let read = (
+            parse_number("1,5", "μt"),
+            parse_vector("0,6; -0,8; 0", "W"),
+            parse_vector("0,6, -0,8, 0", "W"),
+            parse_vector(&written.1, "W"),
+        );
+        let refused = parse_number("1,5x", "μt").unwrap_err();
+        refraction_i18n::set_locale(refraction_i18n::Locale::En);
+        assert_eq!(written.0, "-0,8");
+        assert_eq!(written.1, "0,6; -0,8; 0");
+        let w = DVec3::new(0.6, -0.8, 0.0);
+        assert_eq!(read.0, Ok(1.5));
+        assert_eq!((read.1, read.2, read.3), (Ok(w), Ok(w), Ok(w)));
+        assert!(refused.contains("keine Zahl"), "{refused}");
+        assert_eq!(parse_vector("0.6,-0.8,0", "W"), Ok(w), "points still read");
     }
 }

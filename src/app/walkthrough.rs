@@ -3,6 +3,7 @@
 //! about, and the "animate μ → 1" morph that shows why the source picks its signs.
 
 use egui::{Button, Context, RichText, Ui};
+use refraction_i18n::t;
 
 use refraction_diagram::walkthrough::steps;
 use refraction_diagram::{ExplorerState, Focus};
@@ -105,27 +106,33 @@ impl WalkThrough {
         self.step = self.step.min(all.len() - 1);
         ui.horizontal_wrapped(|ui| {
             if ui
-                .add_enabled(self.step > 0, Button::new("◀ Previous step"))
+                .add_enabled(
+                    self.step > 0,
+                    Button::new(format!("◀ {}", t!("walk-previous"))),
+                )
                 .clicked()
             {
                 self.step -= 1;
             }
             if ui
-                .add_enabled(self.step + 1 < all.len(), Button::new("Next step ▶"))
+                .add_enabled(
+                    self.step + 1 < all.len(),
+                    Button::new(format!("{} ▶", t!("walk-next"))),
+                )
                 .clicked()
             {
                 self.step += 1;
             }
             let label = if self.animating() {
-                "Animating μ to 1 …"
+                t!("walk-animating")
             } else {
-                "Animate μ to 1"
+                t!("walk-animate")
             };
             let can_morph = !self.animating() && state.mu_i() != state.mu_t();
             if ui
                 .add_enabled(can_morph, Button::new(label))
-                .on_hover_text("Morph μt to μi: the chosen T converges to the incoming ray")
-                .on_disabled_hover_text("μ is already 1 (μi = μt), or the morph is running")
+                .on_hover_text(t!("walk-animate-hover"))
+                .on_disabled_hover_text(t!("walk-animate-disabled"))
                 .clicked()
             {
                 self.start_morph(state);
@@ -134,11 +141,11 @@ impl WalkThrough {
         // The buttons may have moved on: show the step now selected.
         let step = &all[self.step];
         ui.label(
-            RichText::new(format!(
-                "Step {} of {}: {}",
-                self.step + 1,
-                all.len(),
-                step.title
+            RichText::new(t!(
+                "walk-step",
+                number = self.step + 1,
+                count = all.len(),
+                title = step.title
             ))
             .strong(),
         );

@@ -10,6 +10,7 @@ use refraction_diagram::palette::Theme;
 use refraction_diagram::{ExplorerState, Overlay};
 use refraction_explorer::app::{self, Launch, View};
 use refraction_explorer::lines::state_file;
+use refraction_i18n::Locale;
 use refraction_render::animation::AnimationSpec;
 use refraction_render::{self as render, atomic, format::ImageFormat};
 use refraction_scene::Scene;
@@ -244,6 +245,8 @@ pub struct Window {
     pub view: Option<View>,
     /// The theme.
     pub theme: Option<Theme>,
+    /// The language (`--lang`).
+    pub language: Option<Locale>,
 }
 
 /// Opens the explorer window as `window` asks; a state file that cannot be read is refused
@@ -259,6 +262,8 @@ pub fn explorer(window: &Window) -> ExitCode {
             present: window.present,
             view: window.view,
             theme: window.theme,
+            language: window.language,
+            system_language: sys_locale::get_locale().and_then(|tag| Locale::from_tag(&tag)),
         });
     match launch.and_then(|launch| app::run(launch).map_err(|e| e.to_string())) {
         Ok(()) => ExitCode::SUCCESS,

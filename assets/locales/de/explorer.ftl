@@ -1,4 +1,3 @@
 # Das Fenster, seine Leiste, Werkzeuge und Bereiche, auf Deutsch.
 
-language-menu = Sprache
 language-hover = Die Sprache des Fensters. Sie folgt der des Systems, solange hier keine gewählt ist.

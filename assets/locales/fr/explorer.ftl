@@ -1,4 +1,3 @@
 # La fenêtre, sa barre, ses outils et ses panneaux, en français.
 
-language-menu = Langue
 language-hover = La langue de la fenêtre. Elle suit celle du système sauf si elle est choisie ici.

@@ -120,10 +120,10 @@ pub struct Report {
 }
 
 impl Report {
-    /// The fastest variant whose largest hard-set error is within 10× of the most accurate
-    /// one's, as a sentence.
+    /// The fastest row whose hard-set error is within 10× of the best: the one the verdict
+    /// names. `None` for a report without rows.
     #[must_use]
-    pub fn verdict(&self) -> String {
+    pub fn fastest_accurate(&self) -> Option<&Row> {
         let best = self
             .rows
             .iter()
@@ -133,13 +133,19 @@ impl Report {
             .iter()
             .filter(|r| r.max_err_hard_eps_kappa <= 10.0 * best)
             .min_by(|a, b| a.ns_per_ray.total_cmp(&b.ns_per_ray))
-            .map_or_else(String::new, |r| {
-                format!(
-                    "Fastest within 10x of the best accuracy: {} {} at {:.2} ns per ray \
+    }
+
+    /// The fastest variant whose largest hard-set error is within 10× of the most accurate
+    /// one's, as a sentence.
+    #[must_use]
+    pub fn verdict(&self) -> String {
+        self.fastest_accurate().map_or_else(String::new, |r| {
+            format!(
+                "Fastest within 10x of the best accuracy: {} {} at {:.2} ns per ray \
                      (hard-set error {:.1} eps*kappa).",
-                    r.variant, r.precision, r.ns_per_ray, r.max_err_hard_eps_kappa
-                )
-            })
+                r.variant, r.precision, r.ns_per_ray, r.max_err_hard_eps_kappa
+            )
+        })
     }
 
     /// The report as an aligned text table with the streaming figure and the verdict below.

@@ -319,9 +319,9 @@ mod tests {
     #[test]
     fn a_message_comes_in_the_chosen_language_with_its_placeables() {
         set_locale(Locale::De);
-        let german = t!("language-menu");
+        let german = t!("language-hover");
         set_locale(Locale::En);
-        let english = t!("language-menu");
+        let english = t!("language-hover");
         assert_ne!(german, english);
         assert!(!english.starts_with('['), "{english}");
         assert_eq!(t!("no-such-key"), "[no-such-key]");
