@@ -10,6 +10,9 @@
 //! - every label inside its canvas, off every arrowhead, handle and hit marker and off every
 //!   other label; the banner's text inside the banner.
 //!
+//! English is audited over every state; each other language (German runs long) over the
+//! lessons' kinds, with every tool, theme, size and mode, and the built-in scenes.
+//!
 //! Run with `--nocapture` to see the measured figures.
 
 mod common;
@@ -23,22 +26,29 @@ use refraction_diagram::font::Typeface;
 use refraction_diagram::geometry::Rect;
 use refraction_diagram::shapes::{Figure, Label};
 use refraction_diagram::{Diagram, ExplorerState, Primitive, SceneLayout, ScenePicture};
+use refraction_diagram::palette::Theme;
 use refraction_explorer::app::Explorer;
+use refraction_i18n::{Locale, t};
 use refraction_kernel::Convention;
 use refraction_scene::Scene;
 
 const SIZES: [(f32, f32); 2] = [(1280.0, 720.0), (1920.0, 1080.0)];
-const TOOLS: [Option<&str>; 5] = [
-    None,
-    Some("✔ Check my T"),
-    Some("📖 Walk-through"),
-    Some("💾 Save, open, share"),
-    Some(FRESNEL),
-];
 
-/// The Fresnel tool's switch.
-const FRESNEL: &str = "Fresnel";
-const THEMES: [&str; 3] = ["Standard", "Black on white", "White on black"];
+/// The tools' switches in the bar, in the thread's language: none open, then each in turn.
+fn tools() -> [Option<String>; 5] {
+    [
+        None,
+        Some(format!("✔ {}", t!("tool-check"))),
+        Some(format!("📖 {}", t!("tool-walk-through"))),
+        Some(format!("💾 {}", t!("tool-files"))),
+        Some(t!("tool-fresnel")),
+    ]
+}
+
+/// The themes' names in the menu, in the thread's language.
+fn themes() -> Vec<String> {
+    Theme::ALL.iter().map(|t| t.label().to_string()).collect()
+}
 
 /// A small deterministic generator, so that a failure names a state that can be rerun.
 struct Random(u64);
@@ -106,10 +116,11 @@ fn click(h: &mut Harness<'_, Explorer>, label: &str) {
 /// Sets up the window as asked, through its own controls.
 fn set_up(h: &mut Harness<'_, Explorer>, present: bool, theme: &str, tool: Option<&str>) {
     if present {
-        click(h, "🖵 Presentation");
+        click(h, &t!("presentation-toggle"));
     }
-    if theme != THEMES[0] {
-        h.get_by_role_and_label(Role::ComboBox, "Theme").click();
+    if theme != themes()[0] {
+        h.get_by_role_and_label(Role::ComboBox, &t!("presentation-theme"))
+            .click();
         h.run();
         click(h, theme);
     }
@@ -118,10 +129,14 @@ fn set_up(h: &mut Harness<'_, Explorer>, present: bool, theme: &str, tool: Optio
     }
     // Beside the Fresnel tool, the effects it explains are on too: their labels and the
     // diagram's share are audited with everything a physics lesson turns on.
-    if tool == Some(FRESNEL) {
-        click(h, "Effects");
-        for switch in ["Intensities", "Wavefronts", "Huygens's construction"] {
-            click(h, switch);
+    if tool == Some(t!("tool-fresnel").as_str()) {
+        click(h, &t!("effects-menu"));
+        for switch in [
+            t!("effects-intensities"),
+            t!("effects-wavefronts"),
+            t!("effects-huygens"),
+        ] {
+            click(h, &switch);
         }
         h.key_press(egui::Key::Escape);
         h.run();
@@ -445,23 +460,24 @@ fn report(measured: Vec<(String, Measured)>) {
     );
 }
 
-#[test]
-fn the_interface_view_owns_the_screen_and_nothing_covers_anything() {
-    let states = states();
+/// The interface view over `states` in the thread's language, at both sizes, at the desk and
+/// in presentation, with each tool open in turn, the themes taken in turn.
+fn audit_interface(states: &[ExplorerState]) -> Vec<(String, Measured)> {
+    let (themes, language) = (themes(), refraction_i18n::locale());
     let mut measured = Vec::new();
     for size in SIZES {
         for present in [false, true] {
-            for (t, tool) in TOOLS.into_iter().enumerate() {
+            for (t, tool) in tools().into_iter().enumerate() {
                 for (i, state) in states.iter().enumerate() {
-                    let theme = THEMES[(i + t) % THEMES.len()];
+                    let theme = &themes[(i + t) % themes.len()];
                     let mut h = harness_sized(Explorer::new(state.clone()), size);
-                    set_up(&mut h, present, theme, tool);
+                    set_up(&mut h, present, theme, tool.as_deref());
                     let what = format!(
-                        "{}×{} {} {}, state {i}, {theme}",
+                        "{language} {}×{} {} {}, state {i}, {theme}",
                         size.0,
                         size.1,
                         if present { "presentation" } else { "desk" },
-                        tool.map_or("no tool".to_owned(), |t| format!("tool {t}")),
+                        tool.as_ref().map_or("no tool".to_owned(), |t| format!("tool {t}")),
                     );
                     let m = measure(&h, &what, present, tool.is_some(), false);
                     measured.push((what, m));
@@ -469,11 +485,18 @@ fn the_interface_view_owns_the_screen_and_nothing_covers_anything() {
             }
         }
     }
-    report(measured);
+    measured
 }
 
 #[test]
-fn the_scenes_view_owns_the_screen_and_labels_leave_the_hit_markers_free() {
+fn the_interface_view_owns_the_screen_and_nothing_covers_anything() {
+    report(audit_interface(&states()));
+}
+
+/// The Scenes view, every built-in scene (the droplet at 1,000 rays), in the thread's
+/// language.
+fn audit_scenes() -> Vec<(String, Measured)> {
+    let (themes, language) = (themes(), refraction_i18n::locale());
     let mut measured = Vec::new();
     for size in SIZES {
         for present in [false, true] {
@@ -485,9 +508,9 @@ fn the_scenes_view_owns_the_screen_and_labels_leave_the_hit_markers_free() {
                 let mut explorer = Explorer::new(ExplorerState::default());
                 explorer.open_scene(scene);
                 let mut h = harness_sized(explorer, size);
-                set_up(&mut h, present, THEMES[0], None);
+                set_up(&mut h, present, &themes[0], None);
                 let what = format!(
-                    "{}×{} {} scene {}",
+                    "{language} {}×{} {} scene {}",
                     size.0,
                     size.1,
                     if present { "presentation" } else { "desk" },
@@ -498,7 +521,46 @@ fn the_scenes_view_owns_the_screen_and_labels_leave_the_hit_markers_free() {
             }
         }
     }
+    measured
+}
+
+#[test]
+fn the_scenes_view_owns_the_screen_and_labels_leave_the_hit_markers_free() {
+    report(audit_scenes());
+}
+
+/// The audit in `language`: the lessons' kinds (the first states: the default, total
+/// internal reflection, near-normal incidence, leaving water, Brewster's angle) and the scenes.
+fn audit_in(language: Locale) {
+    refraction_i18n::set_locale(language);
+    let mut measured = audit_interface(&states()[..5]);
+    measured.extend(audit_scenes());
     report(measured);
+}
+
+#[test]
+fn german_keeps_the_layout_rules() {
+    audit_in(Locale::De);
+}
+
+#[test]
+fn spanish_keeps_the_layout_rules() {
+    audit_in(Locale::Es);
+}
+
+#[test]
+fn french_keeps_the_layout_rules() {
+    audit_in(Locale::Fr);
+}
+
+#[test]
+fn brazilian_portuguese_keeps_the_layout_rules() {
+    audit_in(Locale::PtBr);
+}
+
+#[test]
+fn russian_keeps_the_layout_rules() {
+    audit_in(Locale::Ru);
 }
 
 #[test]
