@@ -112,7 +112,7 @@ impl Presentation {
     #[must_use]
     pub fn look(&self) -> String {
         serde_json::json!({
-            "theme": self.theme.label(),
+            "theme": self.theme.name(),
             "colour_blind_safe": self.colour_blind_safe,
         })
         .to_string()
@@ -125,7 +125,7 @@ impl Presentation {
         };
         if let Some(theme) = Theme::ALL
             .into_iter()
-            .find(|t| look["theme"].as_str() == Some(t.label()))
+            .find(|t| look["theme"].as_str() == Some(t.name()))
         {
             self.theme = theme;
         }
