@@ -121,6 +121,7 @@ diagram-count-absorption = { $count ->
 diagram-legend-colour = colour:
 diagram-legend-white-traced = white light, traced at { $wavelength } nm
 diagram-legend-white-then = white light, then
+diagram-legend-nm = nm
 diagram-legend-opacity = opacity: intensity
 diagram-legend-hits = hits:
 diagram-hit-entering = entering

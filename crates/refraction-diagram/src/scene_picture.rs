@@ -857,7 +857,7 @@ fn legend(scene: &Scene, trace: &Trace, p: &Palette) -> Vec<(String, Colour)> {
             for nm in colours.iter().filter_map(|light| light.wavelength_nm()) {
                 pieces.push((format!("{} ", number(nm, 0)), wavelength_colour(nm)));
             }
-            pieces.push(("nm".to_owned(), ink));
+            pieces.push((t!("diagram-legend-nm"), ink));
         }
     }
     if scene.effects().intensities() {
