@@ -163,10 +163,17 @@ fn program_sources() -> Vec<PathBuf> {
     files
 }
 
-/// The keys `source` asks for with `t!("key"…)`.
+/// The keys `source` asks for with `t!("key"…)`; `format!("…")` and other macros whose
+/// names end in `t` are not `t!`.
 fn keys_asked(source: &str) -> Vec<String> {
     source
         .match_indices("t!(\"")
+        .filter(|(at, _)| {
+            !source[..*at]
+                .chars()
+                .next_back()
+                .is_some_and(|c| c.is_alphanumeric() || c == '_')
+        })
         .filter_map(|(at, opening)| {
             let rest = &source[at + opening.len()..];
             rest.find('"').map(|end| rest[..end].to_owned())
@@ -370,4 +377,11 @@ fn the_literal_finder_finds_text_and_leaves_code_alone() {
             (3, "Raw \"text\"".to_owned()),
         ]
     );
+}
+
+#[test]
+fn the_key_finder_reads_t_and_not_format() {
+    let source = "let a = t!(\"one-key\"); let b = format!(\"{x} rays\");\n\
+                  let c = t!(\"other-key\", count = n); print!(\"no\"); (t!(\"third\"))";
+    assert_eq!(keys_asked(source), ["one-key", "other-key", "third"]);
 }
