@@ -61,7 +61,7 @@ fn presentation_mode_zooms_the_ui_and_the_themes_change_panels_and_diagram() {
     assert!(h.query_by_label("Flip N").is_none());
     h.get_by_role_and_label(Role::ComboBox, "Theme").click();
     h.run();
-    click(&mut h, Theme::HighContrastDark.label());
+    click(&mut h, &Theme::HighContrastDark.label());
     assert!(h.ctx.global_style().visuals.dark_mode);
     let palette = h.state().overlay().palette;
     assert_eq!(palette.background, glam_colour(0x000000));

@@ -24,9 +24,9 @@ use egui_kittest::kittest::Queryable;
 use glam::{DVec3, Vec2 as GVec2};
 use refraction_diagram::font::Typeface;
 use refraction_diagram::geometry::Rect;
+use refraction_diagram::palette::Theme;
 use refraction_diagram::shapes::{Figure, Label};
 use refraction_diagram::{Diagram, ExplorerState, Primitive, SceneLayout, ScenePicture};
-use refraction_diagram::palette::Theme;
 use refraction_explorer::app::Explorer;
 use refraction_i18n::{Locale, t};
 use refraction_kernel::Convention;
@@ -477,7 +477,8 @@ fn audit_interface(states: &[ExplorerState]) -> Vec<(String, Measured)> {
                         size.0,
                         size.1,
                         if present { "presentation" } else { "desk" },
-                        tool.as_ref().map_or("no tool".to_owned(), |t| format!("tool {t}")),
+                        tool.as_ref()
+                            .map_or("no tool".to_owned(), |t| format!("tool {t}")),
                     );
                     let m = measure(&h, &what, present, tool.is_some(), false);
                     measured.push((what, m));

@@ -389,3 +389,15 @@ fn the_literal_finder_finds_text_and_leaves_code_alone() {
         ]
     );
 }
+
+#[test]
+fn the_key_finder_reads_t_and_not_format() {
+    let source = "let a = t!(\"one-key\"); let b = format!(\"{x} rays\");\n\
+                  let c = t!(\"other-key\", count = n); print!(\"no\"); (t!(\"third\"))\n\
+                  // t!(\"in-a-comment\")\n\
+                  let d = t!(\n    \"next-line\",\n    n = 1\n);";
+    assert_eq!(
+        keys_asked(source),
+        ["one-key", "other-key", "third", "next-line"]
+    );
+}

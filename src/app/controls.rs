@@ -98,14 +98,16 @@ fn index_controls(
             parse_number(&text, symbol).and_then(|value| set_index(state, handle, symbol, value));
         field.settle(outcome);
     }
-    let custom = t!("controls-custom");
-    let current = material_of(state.index(handle)).map_or(custom.as_str(), |m| m.name);
+    let current = material_of(state.index(handle));
+    let shown = current.map_or_else(|| t!("diagram-material-custom"), |m| m.label());
     ComboBox::from_label(t!("controls-material", symbol = symbol))
-        .selected_text(current)
+        .selected_text(shown)
         .show_ui(ui, |ui| {
             for m in MATERIALS {
-                let text = format!("{} ({})", m.name, m.index);
-                if ui.selectable_label(current == m.name, text).clicked() {
+                let index = refraction_i18n::decimal(&m.index.to_string());
+                let text = format!("{} ({index})", m.label());
+                let chosen = current.is_some_and(|c| c.name == m.name);
+                if ui.selectable_label(chosen, text).clicked() {
                     // A preset is refused only beside an extreme typed other index.
                     field.settle(set_index(state, handle, symbol, m.index));
                 }

@@ -13,7 +13,7 @@ use refraction_i18n::t;
 
 use super::paint::color;
 use refraction_diagram::ExplorerState;
-use refraction_diagram::fresnel_plot::{FresnelPlot, SOURCE, curve_strokes, percent};
+use refraction_diagram::fresnel_plot::{FresnelPlot, curve_strokes, percent, source};
 use refraction_diagram::numbers::number;
 use refraction_diagram::palette::Palette;
 use refraction_diagram::shapes::{Dash, Stroke};
@@ -96,7 +96,7 @@ fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette, height: f32) -> Opt
             for (curve, stroke) in model.curves.iter().zip(strokes) {
                 let points: Vec<[f64; 2]> = curve.points.iter().map(|&(x, y)| [x, y]).collect();
                 plot.line(
-                    Line::new(curve.name, points)
+                    Line::new(&curve.name, points)
                         .color(color(stroke.colour))
                         .width(stroke.width)
                         .style(style(stroke.dash)),
@@ -181,7 +181,7 @@ fn words(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) {
     ui.label(RichText::new(t!("fresnel-click-hint")).weak());
     legend(ui, model, palette);
     landmarks(ui, model);
-    ui.label(RichText::new(SOURCE.replace('\n', " ")).small());
+    ui.label(RichText::new(source().replace('\n', " ")).small());
 }
 
 /// The least width, in points, at which the words go beside the plot rather than under it: a

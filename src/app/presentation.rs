@@ -55,33 +55,6 @@ pub struct Presentation {
     applied: Option<Applied>,
 }
 
-/// A theme's name in the saved settings: never translated, never renamed.
-fn theme_id(theme: Theme) -> &'static str {
-    match theme {
-        Theme::Standard => "standard",
-        Theme::HighContrastLight => "high-contrast-light",
-        Theme::HighContrastDark => "high-contrast-dark",
-    }
-}
-
-/// The theme a saved setting names: by its id, or by the English menu name earlier versions
-/// saved.
-fn saved_theme(saved: &str) -> Option<Theme> {
-    let earlier = match saved {
-        // untranslated: the menu names earlier versions saved, read back only.
-        "Standard" => Some(Theme::Standard),
-        // untranslated: as above.
-        "Black on white" => Some(Theme::HighContrastLight),
-        // untranslated: as above.
-        "White on black" => Some(Theme::HighContrastDark),
-        _ => None,
-    };
-    Theme::ALL
-        .into_iter()
-        .find(|t| theme_id(*t) == saved)
-        .or(earlier)
-}
-
 /// The egui look of a theme: the standard light one, or black on white / white on black with
 /// strong borders.
 #[must_use]
@@ -143,7 +116,7 @@ impl Presentation {
     #[must_use]
     pub fn look(&self) -> String {
         serde_json::json!({
-            "theme": theme_id(self.theme),
+            "theme": self.theme.name(),
             "colour_blind_safe": self.colour_blind_safe,
             "language": self.language.map(Locale::code),
         })
@@ -155,7 +128,10 @@ impl Presentation {
         let Ok(look) = serde_json::from_str::<serde_json::Value>(text) else {
             return;
         };
-        if let Some(theme) = look["theme"].as_str().and_then(saved_theme) {
+        if let Some(theme) = Theme::ALL
+            .into_iter()
+            .find(|t| look["theme"].as_str() == Some(t.name()))
+        {
             self.theme = theme;
         }
         if let Some(safe) = look["colour_blind_safe"].as_bool() {
@@ -256,7 +232,7 @@ mod tests {
         let mut next_run = Presentation::default();
         next_run.restore_look("{\"theme\": \"White on black\"}");
         assert_eq!(next_run.theme, Theme::HighContrastDark);
-        next_run.restore_look("{\"theme\": \"high-contrast-light\"}");
+        next_run.restore_look("{\"theme\": \"Black on white\"}");
         assert_eq!(next_run.theme, Theme::HighContrastLight);
     }
 

@@ -111,14 +111,14 @@ fn passes(row: &CandidateRow) -> [bool; 4] {
 
 /// The candidate's role, strong in T's colour for the chosen one, its rule on hover.
 fn role_label(ui: &mut Ui, row: &CandidateRow, palette: &Palette) {
-    let role = RichText::new(row.role);
+    let role = RichText::new(&row.role);
     let role = if row.rule.is_none() {
         role.strong().color(color(palette.t))
     } else {
         role
     };
     let response = ui.label(role);
-    if let Some(rule) = row.rule {
+    if let Some(rule) = &row.rule {
         response.on_hover_text(rule);
     }
 }

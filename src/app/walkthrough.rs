@@ -145,7 +145,7 @@ impl WalkThrough {
                 "walk-step",
                 number = self.step + 1,
                 count = all.len(),
-                title = step.title
+                title = &step.title
             ))
             .strong(),
         );

@@ -64,8 +64,6 @@ controls-indices = Brechungsindizes
 # $symbol ist μi oder μt.
 controls-index-value = Wert von { $symbol }
 controls-material = Material für { $symbol }
-# Der Eintrag im Materialmenü für einen Index, der zu keinem aufgeführten Material gehört.
-controls-custom = eigener Wert
 controls-custom-hint = eigener Wert: oben einen Wert eingeben
 controls-typed-vectors = W und N von Hand
 controls-typed-vectors-hint = Von Lernenden protokollierte Vektoren einfügen (x, y, z); Enter drücken.

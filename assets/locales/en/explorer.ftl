@@ -64,8 +64,6 @@ controls-indices = Indices
 # $symbol is μi or μt.
 controls-index-value = { $symbol } value
 controls-material = { $symbol } material
-# The material menu's entry for an index that is no listed material.
-controls-custom = custom
 controls-custom-hint = custom: type a value above
 controls-typed-vectors = Typed W and N
 controls-typed-vectors-hint = Paste a student's logged vectors (x, y, z); press Enter.

@@ -65,8 +65,6 @@ controls-indices = Índices
 # $symbol es μi o μt.
 controls-index-value = Valor de { $symbol }
 controls-material = Material de { $symbol }
-# La entrada del menú de materiales para un índice que no es ningún material de la lista.
-controls-custom = personalizado
 controls-custom-hint = personalizado: escribe un valor arriba
 controls-typed-vectors = W y N introducidos
 controls-typed-vectors-hint = Pega los vectores registrados por un estudiante (x, y, z); pulsa Intro.

@@ -64,8 +64,6 @@ controls-indices = Indices
 # $symbol est μi ou μt.
 controls-index-value = Valeur de { $symbol }
 controls-material = Matériau de { $symbol }
-# L'entrée du menu des matériaux pour un indice qui ne correspond à aucun matériau de la liste.
-controls-custom = personnalisé
 controls-custom-hint = personnalisé : saisissez une valeur ci-dessus
 controls-typed-vectors = W et N saisis
 controls-typed-vectors-hint = Collez les vecteurs consignés par un étudiant (x, y, z) ; appuyez sur Entrée.

@@ -65,8 +65,6 @@ controls-indices = Índices
 # $symbol é μi ou μt.
 controls-index-value = Valor de { $symbol }
 controls-material = Material de { $symbol }
-# A entrada do menu de materiais para um índice que não é nenhum material da lista.
-controls-custom = personalizado
 controls-custom-hint = personalizado: digite um valor acima
 controls-typed-vectors = W e N digitados
 controls-typed-vectors-hint = Cole os vetores registrados por um aluno (x, y, z); pressione Enter.

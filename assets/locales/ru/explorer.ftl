@@ -66,8 +66,6 @@ controls-indices = Показатели преломления
 # $symbol — μi или μt.
 controls-index-value = Значение { $symbol }
 controls-material = Материал { $symbol }
-# Пункт меню материалов для показателя преломления, не соответствующего ни одному материалу из списка.
-controls-custom = свой
 controls-custom-hint = свой: введите значение выше
 controls-typed-vectors = Введённые W и N
 controls-typed-vectors-hint = Вставьте записанные учащимся векторы (x, y, z); нажмите Enter.

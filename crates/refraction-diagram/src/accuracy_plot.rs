@@ -13,6 +13,7 @@ use super::palette;
 use super::placer::{Obstacle, Placer};
 use super::shapes::{Align, Dash, Figure, Label, Stroke, lower_all};
 use refraction_bench::{Report, Row};
+use refraction_i18n::t;
 
 /// The default kernel's documented bound, drawn as a reference line: 32·ε·κ.
 pub const BOUND: f64 = 32.0;
@@ -199,7 +200,7 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
     shapes.extend(plot.titles(size));
     shapes.extend(plot.markers(report, face, Rect::from_min_size(Vec2::ZERO, size)));
     shapes.push(text(
-        format!("{}    hollow: f32, filled: f64", report.verdict()),
+        format!("{}    {}", report.verdict(), t!("diagram-accuracy-markers")),
         Vec2::new(size.x / 2.0, plot.m.text * 1.2 + plot.m.title * 1.3),
         (Align::Center, Align::Start),
         plot.m.text * 0.9,
@@ -280,7 +281,7 @@ impl Plot {
                 },
             },
             text(
-                "the default kernel's bound, 32 ε·κ".to_owned(),
+                t!("diagram-accuracy-bound"),
                 Vec2::new(plot.max.x, y - size * 0.3),
                 (Align::End, Align::End),
                 (size * 0.9).max(SMALLEST_TEXT),
@@ -311,28 +312,26 @@ impl Plot {
         let (small, title, plot) = (self.m.text, self.m.title, self.m.plot);
         [
             (
-                "Accuracy against time on this machine",
+                t!("diagram-accuracy-title"),
                 Vec2::new(size.x / 2.0, small * 1.0),
                 (Align::Center, Align::Start),
                 title,
             ),
             (
-                "largest hard-set error, in ε·κ (log)",
+                t!("diagram-accuracy-error-axis"),
                 Vec2::new(plot.min.x, plot.min.y - small * 0.6),
                 (Align::Start, Align::End),
                 small,
             ),
             (
-                "time per ray, ns (log)",
+                t!("diagram-accuracy-time-axis"),
                 Vec2::new((plot.min.x + plot.max.x) / 2.0, size.y - small * 1.2),
                 (Align::Center, Align::End),
                 small,
             ),
         ]
         .into_iter()
-        .map(|(words, anchor, align, size)| {
-            text(words.to_owned(), anchor, align, size, palette::INK)
-        })
+        .map(|(words, anchor, align, size)| text(words, anchor, align, size, palette::INK))
     }
 
     /// One marker a row (hollow for f32, filled for f64), then their labels to the right,

@@ -4,6 +4,8 @@
 
 use glam::{DVec2, Vec2};
 
+use refraction_i18n::t;
+
 use super::model::{ExplorerState, HandleId};
 use super::overlay::Overlay;
 use super::picture::Diagram;
@@ -58,13 +60,13 @@ impl Animation {
         Self::ALL.into_iter().find(|a| a.name() == name)
     }
 
-    /// What it shows, for a menu.
+    /// What it shows, for a menu, in the current language.
     #[must_use]
-    pub fn label(self) -> &'static str {
+    pub fn label(self) -> String {
         match self {
-            Self::Mu => "μ → 1: T turns into W",
-            Self::Sweep => "Sweep θi to grazing: total internal reflection appears",
-            Self::Wavefronts => "Moving wavefronts",
+            Self::Mu => t!("diagram-animation-mu"),
+            Self::Sweep => t!("diagram-animation-sweep"),
+            Self::Wavefronts => t!("diagram-animation-wavefronts"),
         }
     }
 

@@ -2,6 +2,7 @@
 //! current numbers substituted. Every number comes from the kernel (or, for eq. 22 with a
 //! flipped normal, from the source's formula taken literally, [`refraction_kernel::seed`]).
 
+use refraction_i18n::t;
 use refraction_kernel::{Convention, Refraction, seed};
 
 use super::numbers::{number, vector};
@@ -21,7 +22,7 @@ pub struct Equation {
 /// point back toward the origin, Section 2 along the ray, and the signs of a and b follow.
 struct Wording {
     /// Eq. 18's conclusion: which root for a the section takes, and why.
-    chosen_a: &'static str,
+    chosen_a: fn() -> String,
     /// Eq. 21: the two roots for b.
     roots_of_b: &'static str,
     /// Eq. 22: the root for b the section chooses.
@@ -29,14 +30,18 @@ struct Wording {
 }
 
 const TOWARD_ORIGIN: Wording = Wording {
-    chosen_a: "W points away from T, so the source takes a = −μ",
+    chosen_a: || t!("diagram-eq-toward-origin-a"),
+    // untranslated: a formula.
     roots_of_b: "b = μ·wn ± √(μ²wn² − μ² + 1)",
+    // untranslated: a formula.
     chosen_b: "b = μ·wn − √(μ²wn² − μ² + 1)",
 };
 
 const ALONG_RAY: Wording = Wording {
-    chosen_a: "W points along T, so the source takes a = +μ",
+    chosen_a: || t!("diagram-eq-along-ray-a"),
+    // untranslated: a formula.
     roots_of_b: "b = −μ·wn ± √(μ²wn² − μ² + 1)",
+    // untranslated: a formula.
     chosen_b: "b = −μ·wn − √(μ²wn² − μ² + 1)",
 };
 
@@ -59,9 +64,11 @@ pub fn equations(r: &Refraction<f64>) -> Vec<Equation> {
     };
     [
         (7, "T = a·W + b·N", decomposition(r)),
+        // untranslated: a formula.
         (12, "a² + 2ab·wn + b² = 1", unit_length(r)),
+        // untranslated: a formula.
         (17, "(wn² − 1)·μ² = a²·(wn² − 1)", squared_a(r)),
-        (18, "a = (μ, −μ)", roots_of_a(r, wording.chosen_a)),
+        (18, "a = (μ, −μ)", roots_of_a(r, &(wording.chosen_a)())),
         (21, wording.roots_of_b, roots_of_b(r)),
         (22, wording.chosen_b, choice_of_b(r)),
     ]
@@ -85,7 +92,7 @@ fn decomposition(r: &Refraction<f64>) -> String {
             vector(r.n, 3),
             vector(tr.t, 4)
         ),
-        None => "no real (a, b): there is no refracted ray".to_owned(),
+        None => t!("diagram-eq-no-refracted-ray"),
     }
 }
 
@@ -102,7 +109,7 @@ fn unit_length(r: &Refraction<f64>) -> String {
             n(tr.b),
             n(tr.a * tr.a + 2.0 * tr.a * tr.b * wn + tr.b * tr.b)
         ),
-        None => "no real b satisfies it together with eq. 10".to_owned(),
+        None => t!("diagram-eq-no-b-with-10"),
     }
 }
 
@@ -110,14 +117,16 @@ fn unit_length(r: &Refraction<f64>) -> String {
 fn squared_a(r: &Refraction<f64>) -> String {
     let (mu, wn) = (r.mu, r.wn());
     let wn2_minus_1 = wn * wn - 1.0;
-    format!(
-        "({}² − 1)·{}² = {} = a²·({}), so a² = {}",
+    let given = format!(
+        // untranslated: a formula with numbers.
+        "({}² − 1)·{}² = {} = a²·({})",
         n(wn),
         n(mu),
         n(wn2_minus_1 * mu * mu),
-        n(wn2_minus_1),
-        n(mu * mu)
-    )
+        n(wn2_minus_1)
+    );
+    let then = format!("a² = {}", n(mu * mu));
+    t!("diagram-eq-so", given = given, then = then)
 }
 
 /// Eq. 18: the two roots for a and the one the source takes.
@@ -128,10 +137,7 @@ fn roots_of_a(r: &Refraction<f64>, chosen: &str) -> String {
 /// Eq. 21: the two roots for b, or why there are none.
 fn roots_of_b(r: &Refraction<f64>) -> String {
     if r.is_tir() {
-        return format!(
-            "√({}) of a negative number: no real b (total internal reflection)",
-            n(r.k)
-        );
+        return t!("diagram-eq-negative-root", k = n(r.k));
     }
     let a = chosen_a(r);
     let roots: Vec<String> = r
@@ -144,23 +150,21 @@ fn roots_of_b(r: &Refraction<f64>) -> String {
         "b = {} ± √{} = {}",
         n(-a * r.wn()),
         n(r.k),
-        roots.join(" or ")
+        roots.join(&format!(" {} ", t!("diagram-eq-or")))
     )
 }
 
 /// Eq. 22: the source's root for b, taken literally; with a flipped normal, how it goes wrong.
 fn choice_of_b(r: &Refraction<f64>) -> String {
     match (seed::weights(r.w, r.n, r.mu, r.convention), r.transmission) {
-        (Some((_, b)), Some(tr)) if r.normal_flipped => format!(
-            "with N as given b = {}: the wrong root, T goes back (the outward-normal bug); \
-             the kernel uses −N and gets b = {} for N",
-            n(b),
-            n(tr.b)
-        ),
+        (Some((_, b)), Some(tr)) if r.normal_flipped => {
+            let (b, kernel) = (n(b), n(tr.b));
+            t!("diagram-eq-outward-normal-bug", b = b, kernel_b = kernel)
+        }
         (Some((_, b)), Some(_)) => {
             format!("b = {} − √{} = {}", n(-chosen_a(r) * r.wn()), n(r.k), n(b))
         }
-        _ => "no real root to choose".to_owned(),
+        _ => t!("diagram-eq-no-root"),
     }
 }
 

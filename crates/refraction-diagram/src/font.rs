@@ -14,6 +14,7 @@ use skrifa::{FontRef, GlyphId, MetadataProvider};
 
 /// The embedded font could not be read: a broken build, never bad input.
 #[derive(Debug, thiserror::Error)]
+// untranslated: a broken build's message for developers, never caused by a user.
 #[error("cannot read the embedded font: {0}")]
 pub struct FontError(ReadError);
 

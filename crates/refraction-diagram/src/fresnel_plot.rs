@@ -10,15 +10,15 @@ use super::model::ExplorerState;
 use super::numbers::number;
 use super::palette::Palette;
 use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke, lower_all};
+use refraction_i18n::t;
 use refraction_kernel::Fresnel;
 use refraction_kernel::stable::refract_facing;
 
-/// Where the formula comes from, in words, shown under the plot.
-pub const SOURCE: &str = "Fresnel's equations for the power reflected (Hecht, Optics, ch. 4): \
-    R_s = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², \
-    R_p = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,\n\
-    from the kernel's own cosθi and cosθt, without trigonometry; unpolarised light is the mean \
-    of s and p. Past the critical angle all light is reflected.";
+/// Where the formula comes from, in words (in the current language), shown under the plot.
+#[must_use]
+pub fn source() -> String {
+    t!("diagram-fresnel-source")
+}
 
 /// The angles of incidence at which something happens for a pair of media, in degrees.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -72,8 +72,8 @@ pub fn fresnel_at(mu: f64, degrees: f64) -> Fresnel<f64> {
 /// One curve of the plot.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Curve {
-    /// Its name in the legend.
-    pub name: &'static str,
+    /// Its name in the legend, in the current language.
+    pub name: String,
     /// (θi in degrees, fraction) from 0° to 90°.
     pub points: Vec<(f64, f64)>,
 }
@@ -82,11 +82,11 @@ pub struct Curve {
 type Share = fn(&Fresnel<f64>) -> f64;
 
 /// The four curves' names and what each takes from the fractions.
-const CURVES: [(&str, Share); 4] = [
-    ("R_s (s light reflected)", |f| f.rs),
-    ("R_p (p light reflected)", |f| f.rp),
-    ("R (unpolarised, reflected)", Fresnel::reflectance),
-    ("T (unpolarised, transmitted)", Fresnel::transmittance),
+const CURVES: [(fn() -> String, Share); 4] = [
+    (|| t!("diagram-curve-rs"), |f| f.rs),
+    (|| t!("diagram-curve-rp"), |f| f.rp),
+    (|| t!("diagram-curve-r"), Fresnel::reflectance),
+    (|| t!("diagram-curve-t"), Fresnel::transmittance),
 ];
 
 /// What the Fresnel view shows for one state.
@@ -119,7 +119,7 @@ impl FresnelPlot {
         let curves = CURVES
             .iter()
             .map(|(name, take)| Curve {
-                name,
+                name: name(),
                 points: samples.iter().map(|(deg, f)| (*deg, take(f))).collect(),
             })
             .collect();
@@ -254,7 +254,7 @@ impl PlotPainter<'_> {
         let frame = vec![f.at(0.0, 1.0), f.at(0.0, 0.0), f.at(90.0, 0.0)];
         self.line(frame, 1.5, ink, Dash::Solid);
         let under = f.at(45.0, 0.0) + Vec2::new(0.0, f.text * 1.9);
-        let axis = "angle of incidence θi".to_owned();
+        let axis = t!("diagram-fresnel-axis");
         self.text(axis, under, (Align::Center, Align::Start), 1.0, ink);
     }
 
@@ -360,32 +360,24 @@ pub fn primitives(plot: &FresnelPlot, size: Vec2, palette: &Palette) -> Vec<Prim
             colour: palette.background,
         }],
     };
-    let title = format!(
-        "How much light is reflected, from μi = {} into μt = {}",
-        plot.mu_i, plot.mu_t
-    );
+    let [mu_i, mu_t] = [plot.mu_i, plot.mu_t].map(|mu| refraction_i18n::decimal(&mu.to_string()));
+    let title = t!("diagram-fresnel-title", mu_i = mu_i, mu_t = mu_t);
     let top = Vec2::new(size.x / 2.0, frame.text * 0.5);
     p.text(title, top, (Align::Center, Align::Start), 1.2, palette.ink);
     p.axes();
     if let Some(b) = plot.angles.brewster_deg {
-        let text = format!(
-            "Brewster's angle θB = {}°: no p light reflected",
-            number(b, 1)
-        );
+        let text = t!("diagram-fresnel-brewster", angle = number(b, 1));
         p.marker(b, text, palette.n, Dash::Dashed, 0.0);
     }
     if let Some(c) = plot.angles.critical_deg {
-        let text = format!(
-            "critical angle θc = {}°: all reflected beyond",
-            number(c, 1)
-        );
+        let text = t!("diagram-fresnel-critical", angle = number(c, 1));
         p.marker(c, text, palette.critical, Dash::DashDot, 1.0);
     }
     p.curves(plot);
     p.cursor(plot);
     let bottom = Vec2::new(frame.text, size.y - frame.text * 0.5);
     p.text(
-        SOURCE.to_owned(),
+        source(),
         bottom,
         (Align::Start, Align::End),
         0.75,

@@ -5,6 +5,7 @@
 use super::fresnel_plot::percent;
 use super::geometry::Colour;
 use super::shapes::Stroke;
+use refraction_i18n::t;
 use refraction_kernel::{Fresnel, Refraction};
 
 /// A share below this is not drawn at all: the ray has vanished (p light at Brewster's angle).
@@ -26,13 +27,13 @@ impl Polarisation {
     /// Every choice, in the order of the menu.
     pub const ALL: [Self; 3] = [Self::Unpolarised, Self::S, Self::P];
 
-    /// The name in the menu and in the labels.
+    /// The name in the menu and in the labels, in the current language.
     #[must_use]
-    pub fn label(self) -> &'static str {
+    pub fn label(self) -> String {
         match self {
-            Self::S => "s light",
-            Self::P => "p light",
-            Self::Unpolarised => "unpolarised light",
+            Self::S => t!("diagram-light-s"),
+            Self::P => t!("diagram-light-p"),
+            Self::Unpolarised => t!("diagram-light-unpolarised"),
         }
     }
 }

@@ -3,6 +3,7 @@
 
 use glam::{DVec2, DVec3};
 
+use refraction_i18n::t;
 use refraction_kernel::{Convention, Incidence, InputError, Refraction, refract};
 
 /// The range of the index scale beside the diagram (dragging stays inside it; typed values
@@ -12,7 +13,8 @@ pub const INDEX_RANGE: (f64, f64) = (1.0, 2.6);
 /// A named medium for the index presets.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Material {
-    /// Its name as shown.
+    /// Its name, the same in every language (shown in the language's words by
+    /// [`Material::label`]).
     pub name: &'static str,
     /// Its index of refraction.
     pub index: f64,
@@ -42,6 +44,21 @@ pub const MATERIALS: [Material; 5] = [
     },
 ];
 
+impl Material {
+    /// Its name as shown, in the current language.
+    #[must_use]
+    pub fn label(&self) -> String {
+        match self.name {
+            "vacuum" => t!("diagram-material-vacuum"),
+            "air" => t!("diagram-material-air"),
+            "water" => t!("diagram-material-water"),
+            "glass" => t!("diagram-material-glass"),
+            "diamond" => t!("diagram-material-diamond"),
+            other => other.to_owned(),
+        }
+    }
+}
+
 /// The preset with exactly this index, if any.
 #[must_use]
 pub fn material_of(index: f64) -> Option<Material> {
@@ -52,8 +69,14 @@ pub fn material_of(index: f64) -> Option<Material> {
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
 pub enum AngleError {
     /// Not a number in [0°, 90°).
-    #[error("θi must be at least 0° and less than 90°, got {0}°")]
+    #[error("{}", out_of_range(*.0))]
     OutOfRange(f64),
+}
+
+/// [`AngleError::OutOfRange`]'s message, in the current language.
+fn out_of_range(degrees: f64) -> String {
+    let angle = refraction_i18n::decimal(&degrees.to_string());
+    t!("diagram-angle-out-of-range", angle = angle)
 }
 
 /// The lessons a teacher starts from, each one click away.
@@ -83,15 +106,15 @@ impl Lesson {
         Self::DropletExit,
     ];
 
-    /// Its name in the menu (also its accessible name).
+    /// Its name in the menu (also its accessible name), in the current language.
     #[must_use]
-    pub fn label(self) -> &'static str {
+    pub fn label(self) -> String {
         match self {
-            Self::AirToGlass => "Air → glass, 40°",
-            Self::BeyondCritical => "Glass → air beyond θc",
-            Self::NormalIncidence => "Normal incidence",
-            Self::Brewster => "Brewster's angle",
-            Self::DropletExit => "A droplet's exit",
+            Self::AirToGlass => t!("diagram-lesson-air-to-glass"),
+            Self::BeyondCritical => t!("diagram-lesson-beyond-critical"),
+            Self::NormalIncidence => t!("diagram-lesson-normal-incidence"),
+            Self::Brewster => t!("diagram-lesson-brewster"),
+            Self::DropletExit => t!("diagram-lesson-droplet-exit"),
         }
     }
 
@@ -108,6 +131,7 @@ impl Lesson {
         let angle = f64::to_radians(degrees);
         let w = DVec3::new(angle.sin(), -angle.cos(), 0.0);
         ExplorerState::new(w, n, mu_i, mu_t, Convention::AlongRay)
+            // untranslated: a panic message for developers, never shown to a user.
             .unwrap_or_else(|_| unreachable!("every lesson's incidence is valid (tested)"))
     }
 }
@@ -134,14 +158,15 @@ impl HandleId {
     /// All handles, in keyboard (Tab) order.
     pub const ALL: [Self; 4] = [Self::W, Self::N, Self::MuI, Self::MuT];
 
-    /// The accessible name (what a screen reader says and what tests look for).
+    /// The accessible name (what a screen reader says and what tests look for), in the
+    /// current language.
     #[must_use]
-    pub fn label(self) -> &'static str {
+    pub fn label(self) -> String {
         match self {
-            Self::W => "W handle",
-            Self::N => "N handle",
-            Self::MuI => "μi handle",
-            Self::MuT => "μt handle",
+            Self::W => t!("diagram-handle-w"),
+            Self::N => t!("diagram-handle-n"),
+            Self::MuI => t!("diagram-handle-mu-i"),
+            Self::MuT => t!("diagram-handle-mu-t"),
         }
     }
 }
@@ -231,6 +256,7 @@ impl Default for ExplorerState {
         let angle = 40_f64.to_radians();
         let w = DVec3::new(angle.sin(), -angle.cos(), 0.0);
         Self::new(w, DVec3::Y, AIR, GLASS, Convention::AlongRay)
+            // untranslated: a panic message for developers, never shown to a user.
             .unwrap_or_else(|_| unreachable!("the default incidence is valid"))
     }
 }

@@ -6,6 +6,8 @@
 //! themes of presentation mode, or with the strictly colour-blind-safe choice, in which every
 //! ray also has its own dash pattern and label.
 
+use refraction_i18n::t;
+
 use super::geometry::Colour;
 use super::shapes::Dash;
 
@@ -71,13 +73,27 @@ impl Theme {
         Self::HighContrastDark,
     ];
 
-    /// The theme's name in the menu.
+    /// The theme's name in the menu, in the current language.
     #[must_use]
-    pub fn label(self) -> &'static str {
+    pub fn label(self) -> String {
         match self {
-            Self::Standard => "Standard",
+            Self::Standard => t!("diagram-theme-standard"),
             // Short, so that the presentation bar keeps to two rows at 1280×720.
+            Self::HighContrastLight => t!("diagram-theme-black-on-white"),
+            Self::HighContrastDark => t!("diagram-theme-white-on-black"),
+        }
+    }
+
+    /// The theme's name in saved settings: the same in every language, so that a look saved
+    /// in one language is read back in another (the English names of earlier versions).
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            // untranslated: the name saved in settings, the same in every language.
+            Self::Standard => "Standard",
+            // untranslated: the name saved in settings, the same in every language.
             Self::HighContrastLight => "Black on white",
+            // untranslated: the name saved in settings, the same in every language.
             Self::HighContrastDark => "White on black",
         }
     }

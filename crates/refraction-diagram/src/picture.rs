@@ -14,6 +14,7 @@ use super::palette::Palette;
 use super::placer::{Obstacle, Placer, wrap};
 use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke, lower_all};
 use super::wavefronts;
+use refraction_i18n::t;
 use refraction_kernel::{Convention, Refraction, Rejection, seed};
 
 /// A draggable point on the canvas.
@@ -49,40 +50,37 @@ const GHOST_LENGTH: f64 = 0.9;
 const ARC_RADIUS: f64 = 0.28;
 
 /// The short form of each rejection, for the label beside its ghost.
-fn short_rule(rejection: Rejection) -> &'static str {
+fn short_rule(rejection: Rejection) -> String {
     match rejection {
-        Rejection::WrongSide => "other b root: wrong side",
-        Rejection::WrongBend => "other a sign: bends wrong way",
-        Rejection::Reversed => "both signs wrong: −T",
+        Rejection::WrongSide => t!("diagram-ghost-wrong-side"),
+        Rejection::WrongBend => t!("diagram-ghost-wrong-bend"),
+        Rejection::Reversed => t!("diagram-ghost-reversed"),
     }
 }
 
 /// The name and index of a medium, e.g. `μt = 1.5 (glass)`.
 fn medium_text(symbol: &str, index: f64) -> String {
-    let name = material_of(index).map_or("custom", |m| m.name);
-    format!("{symbol} = {} ({name})", significant(index, 4))
+    let name = material_of(index).map_or_else(|| t!("diagram-material-custom"), |m| m.label());
+    let index = significant(index, 4);
+    t!("diagram-medium", mu = symbol, index = index, name = name)
 }
 
 /// The banner's text: the convention in words, or total internal reflection.
 fn banner_text(r: &Refraction<f64>) -> String {
     let theta_i = number(r.cos_i.clamp(-1.0, 1.0).acos().to_degrees(), 1);
+    let k = significant(r.k, 4);
     match r.transmission {
-        None => format!(
-            "TOTAL INTERNAL REFLECTION\nk = {} < 0: no real root for b, no refracted ray; \
-             all light is reflected (θi = {theta_i}°)",
-            significant(r.k, 4)
-        ),
+        None => t!("diagram-banner-tir", k = k, theta_i = theta_i),
         Some(tr) => {
             let words = match r.convention {
-                Convention::TowardOrigin => "W points back toward the origin, so a = −μ",
-                Convention::AlongRay => "W is the direction of travel, so a = +μ",
+                Convention::TowardOrigin => t!("diagram-banner-toward-origin"),
+                Convention::AlongRay => t!("diagram-banner-along-ray"),
             };
-            format!(
-                "Section {}: {words}\nθi = {theta_i}°   θt = {}°   k = {} ≥ 0: T exists",
-                r.convention.section(),
-                number(tr.cos_t.clamp(-1.0, 1.0).acos().to_degrees(), 1),
-                significant(r.k, 4)
-            )
+            let theta_t = number(tr.cos_t.clamp(-1.0, 1.0).acos().to_degrees(), 1);
+            let section = r.convention.section().to_string();
+            let numbers = t!("diagram-banner-numbers", i = theta_i, t = theta_t, k = k);
+            let title = t!("diagram-banner-section", section = section, words = words);
+            format!("{title}\n{numbers}")
         }
     }
 }
@@ -338,11 +336,12 @@ impl DiagramBuilder<'_> {
             let inward = (drawing.center() - corner).signum();
             let anchor = (Align::away(inward.x), Align::away(inward.y));
             let text = medium_text(symbol, index);
-            let text = if side > 0.0 {
-                format!("{text}\nthe ray's medium")
+            let which = if side > 0.0 {
+                t!("diagram-medium-of-ray")
             } else {
-                format!("{text}\nthe medium it enters")
+                t!("diagram-medium-entered")
             };
+            let text = format!("{text}\n{which}");
             self.label(text, corner + inward * inset, anchor, 1.0);
         }
     }
@@ -365,7 +364,8 @@ impl DiagramBuilder<'_> {
             self.segment(DVec2::ZERO, direction * 1.15, stroke);
             let at = self.at(direction * 1.15);
             let away = self.layout.view.direction(direction);
-            let text = format!("critical angle θc = {}°", number(critical.to_degrees(), 1));
+            let angle = number(critical.to_degrees(), 1);
+            let text = t!("diagram-critical-angle", angle = angle);
             let anchor = (Align::away(away.x), Align::away(away.y));
             self.label_coloured(
                 text,
@@ -433,14 +433,14 @@ impl DiagramBuilder<'_> {
         }
         let facing = self.flat(r.facing_normal);
         let stroke = self.stroke(1.6, self.palette.n, Dash::Dashed);
-        self.ray(facing, 0.75, stroke, "−N: the normal the kernel uses", 0.8);
+        self.ray(facing, 0.75, stroke, &t!("diagram-kernel-normal"), 0.8);
         if let Some(wrong) = seed::refract(r.w, r.n, r.mu, r.convention) {
             let stroke = self.stroke(3.0, self.palette.warning, Dash::Dashed);
             self.ray(
                 self.flat(wrong),
                 1.0,
                 stroke,
-                "source formula with un-flipped N: the wrong-side root,\nthe wrong T of the outward-normal bug",
+                &t!("diagram-outward-normal-bug"),
                 0.85,
             );
         }
@@ -509,7 +509,7 @@ impl DiagramBuilder<'_> {
             stroke: line,
         });
         self.label(
-            "index μ",
+            t!("diagram-index-scale"),
             Vec2::new(scale.x, scale.top - font * 1.2),
             (Align::Center, Align::End),
             0.85,
@@ -530,7 +530,7 @@ impl DiagramBuilder<'_> {
         }
         for m in MATERIALS.iter().filter(|m| m.name != "air") {
             let at = Vec2::new(scale.x - font * 2.0, scale.y_of(m.index));
-            self.label(m.name, at, (Align::End, Align::Center), 0.75);
+            self.label(m.label(), at, (Align::End, Align::Center), 0.75);
         }
         [
             (HandleId::MuI, -1.0, self.state.mu_i(), "μi"),
@@ -576,7 +576,7 @@ impl DiagramBuilder<'_> {
         let away = self.layout.view.direction(toward_source);
         let anchor = (Align::away(away.x), Align::away(away.y));
         let colour = palette.text_shade(palette.incoming);
-        self.label_coloured("incoming ray", at, anchor, 0.8, colour);
+        self.label_coloured(t!("diagram-incoming-ray"), at, anchor, 0.8, colour);
         self.shapes.push(Figure::Arrow {
             from: self.at(source),
             to: self.at(source * 0.45),
@@ -596,7 +596,8 @@ impl DiagramBuilder<'_> {
                 self.angle(Part::AngleT, (-normal, self.flat(tr.t)), text, palette.t);
             }
             let full = self.stroke(3.0, palette.reflected, palette.reflected_dash);
-            let name = format!("reflected ({})", shares.polarisation.label());
+            let light = shares.polarisation.label();
+            let name = t!("diagram-reflected-light", light = light);
             self.shared_ray(reflected, full, &name, shares.reflected);
             return;
         }
@@ -607,11 +608,11 @@ impl DiagramBuilder<'_> {
                 let text = format!("θt = {theta_t}°");
                 self.angle(Part::AngleT, (-normal, t), text, palette.t);
                 let thin = self.stroke(1.6, palette.reflected, palette.reflected_dash);
-                self.ray(reflected, 0.7, thin, "reflected", 0.8);
+                self.ray(reflected, 0.7, thin, &t!("diagram-reflected"), 0.8);
             }
             None => {
                 let bold = self.stroke(4.5, palette.reflected, palette.reflected_dash);
-                self.ray(reflected, 1.0, bold, "reflected ray (all the light)", 1.0);
+                self.ray(reflected, 1.0, bold, &t!("diagram-reflected-all"), 1.0);
             }
         }
     }
@@ -621,13 +622,12 @@ impl DiagramBuilder<'_> {
     fn vectors(&mut self, r: &Refraction<f64>) -> [DVec2; 2] {
         let palette = self.palette;
         let own = match self.state.convention() {
-            Convention::AlongRay => "W (along the ray)",
-            Convention::TowardOrigin => "W (toward the origin)",
+            Convention::AlongRay => t!("diagram-w-along-ray"),
+            Convention::TowardOrigin => t!("diagram-w-toward-origin"),
         };
         // A student's API names the vectors its own way while their call is shown.
         let names = self.overlay.student.as_ref().and_then(|s| s.names.clone());
-        let (w_text, n_text) =
-            names.map_or((own.to_owned(), "N".to_owned()), |n| (n.incident, n.normal));
+        let (w_text, n_text) = names.map_or((own, "N".to_owned()), |n| (n.incident, n.normal));
         let w_dir = self.state.direction(HandleId::W);
         let n_dir = self.state.direction(HandleId::N);
         let w_stroke = self.stroke(3.0, palette.w, Dash::Solid);
@@ -642,7 +642,7 @@ impl DiagramBuilder<'_> {
                 Some(s) => (
                     stroke_for(self.stroke(3.0, palette.t, Dash::Solid), s.transmitted)
                         .unwrap_or(t_stroke),
-                    Shares::label("T: transmitted", s.transmitted),
+                    Shares::label(&t!("diagram-transmitted"), s.transmitted),
                 ),
                 None => (t_stroke, "T".to_owned()),
             };
@@ -663,7 +663,7 @@ impl DiagramBuilder<'_> {
                 let at = self.at(d * 0.7);
                 let anchor = (Align::away(away.x), Align::away(away.y));
                 let colour = self.palette.text_shade(full.colour);
-                let text = format!("{text}: no reflected ray");
+                let text = t!("diagram-no-reflected-ray", label = text);
                 self.label_coloured(text, at, anchor, 0.9, colour);
             }
         }

@@ -17,6 +17,7 @@ use super::picture::{GRAB_SCALE, medium_colour};
 use super::placer::{Obstacle, Placer};
 use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke};
 use super::spectrum::{ray_colour, wavelength_colour};
+use refraction_i18n::t;
 use refraction_scene::{
     Bounds, Counts, EditError, Hit, Light, Outcome, Path, REFERENCE_WAVELENGTH_NM, Scene, Side,
     Trace,
@@ -42,16 +43,17 @@ impl SceneHandleId {
     #[must_use]
     pub fn label(self, scene: &Scene) -> String {
         match self {
-            Self::Source => "Source handle".to_owned(),
-            Self::Aim => "Source direction handle".to_owned(),
+            Self::Source => t!("diagram-handle-source"),
+            Self::Aim => t!("diagram-handle-aim"),
             Self::Shape(i) => {
                 let what = scene
                     .shapes()
                     .get(i)
                     .and_then(|s| s.medium())
                     .and_then(|m| scene.media().get(m))
-                    .map_or("screen", |m| m.name.as_str());
-                format!("Shape {} handle ({what})", i + 1)
+                    .map_or_else(|| t!("diagram-screen"), |m| m.name.clone());
+                let number = (i + 1).to_string();
+                t!("diagram-handle-shape", number = number, medium = what)
             }
         }
     }
@@ -308,6 +310,7 @@ fn flow(
                 lines.push(Vec::new());
                 x = 0.0;
             }
+            // untranslated: a panic message for developers, never shown to a user.
             let line = lines.last_mut().expect("lines start with one line");
             match line.last_mut() {
                 Some(run) if run.colour == *colour => run.text.push_str(word),
@@ -334,7 +337,10 @@ fn banner_rows(
     let mut count_row = vec![(counts_text(&trace.counts), p.ink)];
     if trace.counts.truncated {
         count_row.push((
-            format!(" · stopped at {} segments", trace.segments.len()),
+            format!(
+                " · {}",
+                t!("diagram-stopped-at", count = trace.segments.len())
+            ),
             p.alarm,
         ));
     }
@@ -381,50 +387,37 @@ fn medium_text(scene: &Scene, medium: usize) -> String {
     scene.media().get(medium).map_or_else(String::new, |m| {
         let n = number(m.index(REFERENCE_WAVELENGTH_NM), 3);
         if m.dispersion.is_dispersive() {
-            format!("{}\nn = {n} at {REFERENCE_WAVELENGTH_NM} nm", m.name)
+            let nm = reference_wavelength();
+            let at = t!("diagram-index-at-wavelength", index = n, wavelength = nm);
+            format!("{}\n{at}", m.name)
         } else {
             format!("{}\nn = {n}", m.name)
         }
     })
 }
 
+/// The reference wavelength in nanometres, written the local way.
+fn reference_wavelength() -> String {
+    refraction_i18n::decimal(&REFERENCE_WAVELENGTH_NM.to_string())
+}
+
 /// The counts of what the tracer computed, in one line.
 fn counts_text(c: &Counts) -> String {
-    let plural =
-        |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
     let mut parts = vec![
-        plural(c.kernel_calls, "kernel call", "kernel calls"),
-        plural(
-            c.total_internal_reflections,
-            "total internal reflection",
-            "total internal reflections",
-        ),
-        plural(
-            c.reflections_spawned,
-            "reflection spawned",
-            "reflections spawned",
-        ),
-        plural(
-            c.fresnel_evaluations,
-            "Fresnel evaluation",
-            "Fresnel evaluations",
-        ),
-        plural(c.wavelengths, "wavelength", "wavelengths"),
-        plural(c.source_rays, "source ray", "source rays"),
+        t!("diagram-count-kernel-calls", count = c.kernel_calls),
+        t!("diagram-count-tir", count = c.total_internal_reflections),
+        t!("diagram-count-reflections", count = c.reflections_spawned),
+        t!("diagram-count-fresnel", count = c.fresnel_evaluations),
+        t!("diagram-count-wavelengths", count = c.wavelengths),
+        t!("diagram-count-source-rays", count = c.source_rays),
     ];
     if c.equal_index_skips > 0 {
-        parts.push(plural(
-            c.equal_index_skips,
-            "equal-index skip",
-            "equal-index skips",
-        ));
+        let count = c.equal_index_skips;
+        parts.push(t!("diagram-count-equal-index-skips", count = count));
     }
     if c.absorption_evaluations > 0 {
-        parts.push(plural(
-            c.absorption_evaluations,
-            "absorption evaluation",
-            "absorption evaluations",
-        ));
+        let count = c.absorption_evaluations;
+        parts.push(t!("diagram-count-absorption", count = count));
     }
     parts.join(" · ")
 }
@@ -688,7 +681,7 @@ impl ScenePictureBuilder<'_> {
                 .shapes()
                 .get(i)
                 .and_then(|s| s.medium())
-                .map_or_else(|| "screen".to_owned(), |m| medium_text(scene, m));
+                .map_or_else(|| t!("diagram-screen"), |m| medium_text(scene, m));
             let at = handle.center + Vec2::new(handle.radius * GRAB_SCALE + size * 0.3, 0.0);
             self.boxed_label(text, at, (Align::Start, Align::Center), size);
         }
@@ -848,43 +841,49 @@ fn hit_colour(hit: &Hit, p: &Palette) -> Colour {
 /// The legend row: the colours traced, what opacity means, the kinds of hit marker shown.
 fn legend(scene: &Scene, trace: &Trace, p: &Palette) -> Vec<(String, Colour)> {
     let ink = p.ink;
-    let mut pieces = vec![("colour: ".to_owned(), ink)];
+    let mut pieces = vec![(format!("{} ", t!("diagram-legend-colour")), ink)];
     let colours = scene.source().colours(scene.effects().dispersion);
     match colours.as_slice() {
-        [Light::White] => pieces.push((
-            format!("white light, traced at {REFERENCE_WAVELENGTH_NM} nm"),
-            p.white_light,
-        )),
+        [Light::White] => {
+            let nm = reference_wavelength();
+            let text = t!("diagram-legend-white-traced", wavelength = nm);
+            pieces.push((text, p.white_light));
+        }
         _ => {
             if colours.len() > 1 {
-                pieces.push(("white light, then ".to_owned(), p.white_light));
+                let then = t!("diagram-legend-white-then");
+                pieces.push((format!("{then} "), p.white_light));
             }
             for nm in colours.iter().filter_map(|light| light.wavelength_nm()) {
                 pieces.push((format!("{} ", number(nm, 0)), wavelength_colour(nm)));
             }
-            pieces.push(("nm".to_owned(), ink));
+            pieces.push((t!("diagram-legend-nm"), ink));
         }
     }
     if scene.effects().intensities() {
-        pieces.push((" · opacity: intensity".to_owned(), ink));
+        pieces.push((format!(" · {}", t!("diagram-legend-opacity")), ink));
     }
     let kinds = [
-        (p.background, "entering"),
-        (p.warning, "leaving (N turned round)"),
-        (p.critical, "total internal reflection"),
+        (p.background, t!("diagram-hit-entering")),
+        (p.warning, t!("diagram-hit-leaving")),
+        (p.critical, t!("diagram-hit-tir")),
     ];
     let mut first = true;
     for (fill, words) in kinds {
         if trace.hits.iter().any(|h| hit_colour(h, p) == fill) {
-            let lead = if first { " · hits: " } else { ", " };
+            let lead = if first {
+                format!(" · {} ", t!("diagram-legend-hits"))
+            } else {
+                ", ".to_owned()
+            };
             first = false;
-            pieces.push((lead.to_owned(), ink));
+            pieces.push((lead, ink));
             let colour = if fill == p.background {
                 ink
             } else {
                 p.text_shade(fill)
             };
-            pieces.push((words.to_owned(), colour));
+            pieces.push((words, colour));
         }
     }
     pieces

@@ -2,13 +2,15 @@
 
 use glam::DVec3;
 
+use refraction_i18n::t;
 use refraction_kernel::{Refraction, Rejection};
 
 /// One row of the candidates table.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CandidateRow {
-    /// What the candidate is: `T (chosen)`, `wrong side`, `wrong bend` or `reversed`.
-    pub role: &'static str,
+    /// What the candidate is, in the current language: `T (chosen)`, `wrong side`, `wrong
+    /// bend` or `reversed`.
+    pub role: String,
     /// Weight of W.
     pub a: f64,
     /// Weight of N.
@@ -23,18 +25,29 @@ pub struct CandidateRow {
     pub correct_side: bool,
     /// T's part along the surface points the way the ray's does (the μ → 1 argument).
     pub tangential: bool,
-    /// The rule a rejected candidate breaks, in a sentence.
-    pub rule: Option<&'static str>,
+    /// The rule a rejected candidate breaks, in a sentence in the current language.
+    pub rule: Option<String>,
 }
 
-/// The role of a candidate, as the table names it.
+/// The role of a candidate, as the table names it in the current language.
 #[must_use]
-pub fn role(rejection: Option<Rejection>) -> &'static str {
+pub fn role(rejection: Option<Rejection>) -> String {
     match rejection {
-        None => "T (chosen)",
-        Some(Rejection::WrongSide) => "wrong side",
-        Some(Rejection::WrongBend) => "wrong bend",
-        Some(Rejection::Reversed) => "reversed",
+        None => t!("diagram-role-chosen"),
+        Some(Rejection::WrongSide) => t!("diagram-role-wrong-side"),
+        Some(Rejection::WrongBend) => t!("diagram-role-wrong-bend"),
+        Some(Rejection::Reversed) => t!("diagram-role-reversed"),
+    }
+}
+
+/// The rule a rejected candidate breaks, in a sentence in the current language (the kernel's
+/// [`Rejection::rule`] in English).
+#[must_use]
+pub fn rule(rejection: Rejection) -> String {
+    match rejection {
+        Rejection::WrongSide => t!("diagram-rule-wrong-side"),
+        Rejection::WrongBend => t!("diagram-rule-wrong-bend"),
+        Rejection::Reversed => t!("diagram-rule-reversed"),
     }
 }
 
@@ -56,7 +69,7 @@ pub fn rows(r: &Refraction<f64>) -> Vec<CandidateRow> {
                 squared_snell: checks.obeys_squared_snell(tolerance),
                 correct_side: checks.is_on_correct_side(tolerance),
                 tangential: checks.bends_correctly(tolerance),
-                rule: c.rejection.map(Rejection::rule),
+                rule: c.rejection.map(rule),
             }
         })
         .collect()
@@ -73,7 +86,7 @@ mod tests {
         assert_eq!(rows.len(), 4);
         for row in &rows {
             assert!(row.unit && row.squared_snell, "{row:?}");
-            let expected = match row.role {
+            let expected = match row.role.as_str() {
                 "T (chosen)" => (true, true),
                 "wrong side" => (false, true),
                 "wrong bend" => (true, false),

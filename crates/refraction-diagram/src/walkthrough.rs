@@ -4,13 +4,14 @@
 
 use super::equations::{Equation, chosen_a, equations, n};
 use super::overlay::Focus;
+use refraction_i18n::t;
 use refraction_kernel::{Convention, Refraction};
 
 /// One step of the walk-through.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Step {
-    /// A short title, e.g. `The two roots for a`.
-    pub title: &'static str,
+    /// A short title in the current language, e.g. `The two roots for a`.
+    pub title: String,
     /// The source's equations for this step, with numbers.
     pub equations: Vec<Equation>,
     /// What the step argues, in words a student follows.
@@ -19,86 +20,64 @@ pub struct Step {
     pub focus: Focus,
 }
 
-/// What a step argues: the same words for every case, or words with the case's numbers in.
-enum Explanation {
-    Fixed(&'static str),
-    Live(fn(&Refraction<f64>) -> String),
-}
-
 /// One step as the source takes it, before any numbers.
 struct Description {
-    title: &'static str,
+    title: fn() -> String,
     /// The equations the step cites, by their number within the section.
     cites: &'static [u8],
-    explanation: Explanation,
+    /// What the step argues: the same words for every case, or words with the case's numbers.
+    explanation: fn(&Refraction<f64>) -> String,
     focus: Focus,
 }
 
 /// The source's eight steps, in its order.
 const STEPS: [Description; 8] = [
     Description {
-        title: "Snell's law",
+        title: || t!("diagram-step-snell"),
         cites: &[4],
-        explanation: Explanation::Fixed(
-            "The ray bends so that μi·sinθi = μt·sinθt; with μ = μi/μt, the sine of the angle \
-             in the new medium is μ times the old one.",
-        ),
+        explanation: |_| t!("diagram-step-snell-text"),
         focus: Focus::Angles,
     },
     Description {
-        title: "Square it, and use cosines",
+        title: || t!("diagram-step-square"),
         cites: &[6],
-        explanation: Explanation::Fixed(
-            "Squaring lets the cosines (dot products) replace the sines, but it also lets in \
-             false solutions: a solution and its signed opposite both satisfy it.",
-        ),
+        explanation: |_| t!("diagram-step-square-text"),
         focus: Focus::Angles,
     },
     Description {
-        title: "T as a·W + b·N",
+        title: || t!("diagram-step-decomposition"),
         cites: &[7, 8],
-        explanation: Explanation::Live(decomposition),
+        explanation: decomposition,
         focus: Focus::Decomposition,
     },
     Description {
-        title: "The two squared constraints",
+        title: || t!("diagram-step-constraints"),
         cites: &[10, 12],
-        explanation: Explanation::Fixed(
-            "Squared Snell (eq. 10) and unit length (eq. 12) are two quadratics in a and b. \
-             Four pairs (a, b) satisfy both: T and the three ghosts. Nothing in them tells the \
-             four apart.",
-        ),
+        explanation: |_| t!("diagram-step-constraints-text"),
         focus: Focus::SquaredConstraints,
     },
     Description {
-        title: "The two roots for a",
+        title: || t!("diagram-step-roots-a"),
         cites: &[17, 18],
-        explanation: Explanation::Fixed(
-            "Substituting eq. 12 into eq. 10 leaves a² = μ²: a = +μ or a = −μ. The other sign \
-             mirrors T across the normal: it bends the wrong way.",
-        ),
+        explanation: |_| t!("diagram-step-roots-a-text"),
         focus: Focus::RootsOfA,
     },
     Description {
-        title: "Choosing a: the limit μ = 1",
+        title: || t!("diagram-step-choice-a"),
         cites: &[19],
-        explanation: Explanation::Live(choice_of_a),
+        explanation: choice_of_a,
         focus: Focus::ChoiceOfA,
     },
     Description {
-        title: "The two roots for b",
+        title: || t!("diagram-step-roots-b"),
         cites: &[20, 21],
-        explanation: Explanation::Fixed(
-            "With a fixed, eq. 12 is a quadratic in b with the roots −a·wn ± √k (k = μ²wn² − μ² \
-             + 1). The other root mirrors T across the surface, back into the medium the ray \
-             came from. k < 0 means no real root: total internal reflection.",
-        ),
+        explanation: |_| t!("diagram-step-roots-b-text"),
         focus: Focus::RootsOfB,
     },
     Description {
-        title: "Choosing b",
+        title: || t!("diagram-step-choice-b"),
         cites: &[22],
-        explanation: Explanation::Live(choice_of_b),
+        explanation: choice_of_b,
         focus: Focus::ChoiceOfB,
     },
 ];
@@ -114,24 +93,27 @@ struct Wording {
     /// Eq. 20: eq. 12 with that a.
     quadratic_in_b: &'static str,
     /// What the section's text gets wrong, if anything.
-    typo: &'static str,
+    typo: Option<fn() -> String>,
 }
 
 const TOWARD_ORIGIN: Wording = Wording {
+    // untranslated: a formula.
     cos_i: "cosθi = wn",
     travel: "−W",
     a: "a = −μ",
+    // untranslated: a formula.
     quadratic_in_b: "μ² − 2μ·b·wn + b² = 1",
-    typo: "",
+    typo: None,
 };
 
 const ALONG_RAY: Wording = Wording {
+    // untranslated: a formula.
     cos_i: "cosθi = −wn",
     travel: "W",
     a: "a = μ",
+    // untranslated: a formula.
     quadratic_in_b: "μ² + 2μ·b·wn + b² = 1",
-    typo: " (Section 2's text then says \"once we decide upon using the a = −μ solution\": it \
-           means a = +μ, the one it chose.)",
+    typo: Some(|| t!("diagram-step-choice-a-typo")),
 };
 
 fn wording(convention: Convention) -> &'static Wording {
@@ -149,7 +131,7 @@ pub fn steps(r: &Refraction<f64>) -> Vec<Step> {
     STEPS
         .iter()
         .map(|step| Step {
-            title: step.title,
+            title: (step.title)(),
             equations: step
                 .cites
                 .iter()
@@ -158,10 +140,7 @@ pub fn steps(r: &Refraction<f64>) -> Vec<Step> {
                     all.iter().find(|e| e.number == number).cloned()
                 })
                 .collect(),
-            explanation: match step.explanation {
-                Explanation::Fixed(text) => text.to_owned(),
-                Explanation::Live(text) => text(r),
-            },
+            explanation: (step.explanation)(r),
             focus: step.focus,
         })
         .collect()
@@ -182,14 +161,18 @@ fn other_equations(r: &Refraction<f64>) -> [Equation; 6] {
     let a = chosen_a(r);
     let wn = r.wn();
     [
+        // untranslated: a formula.
         equation(r, 4, "sin(θi)·μ = sin(θt)", snell(r)),
+        // untranslated: a formula.
         equation(r, 6, "(1 − cos²θi)·μ² = 1 − cos²θt", squared(r)),
         equation(
             r,
             8,
             wording.cos_i,
+            // untranslated: a formula with numbers.
             format!("wn = W·N = {}, cosθi = {}", n(wn), n(r.cos_i)),
         ),
+        // untranslated: a formula.
         equation(r, 10, "(1 − wn²)·μ² = 1 − (−a·wn − b)²", squared_snell(r)),
         equation(r, 19, wording.a, format!("a = {}", n(a))),
         equation(
@@ -210,14 +193,14 @@ fn sin_i(r: &Refraction<f64>) -> f64 {
 fn snell(r: &Refraction<f64>) -> String {
     let sin_i = sin_i(r);
     let sin_t = r.mu * sin_i;
+    // untranslated: a formula with numbers.
     let given = format!("μ = μi/μt = {}; sinθi = {}", n(r.mu), n(sin_i));
     if sin_t > 1.0 {
-        format!(
-            "{given}, so sinθt would be {} > 1: no angle θt exists",
-            n(sin_t)
-        )
+        t!("diagram-eq-no-theta-t", given = given, sin_t = n(sin_t))
     } else {
-        format!("{given}, so sinθt = {}", n(sin_t))
+        // untranslated: a formula with numbers.
+        let then = format!("sinθt = {}", n(sin_t));
+        t!("diagram-eq-so", given = given, then = then)
     }
 }
 
@@ -225,6 +208,7 @@ fn snell(r: &Refraction<f64>) -> String {
 fn squared(r: &Refraction<f64>) -> String {
     let (cos_i, mu) = (r.cos_i, r.mu);
     format!(
+        // untranslated: a formula with numbers.
         "(1 − {}²)·{}² = {} = 1 − cos²θt",
         n(cos_i),
         n(mu),
@@ -239,43 +223,36 @@ fn squared_snell(r: &Refraction<f64>) -> String {
             let wn = r.wn();
             let lhs = (1.0 - wn * wn) * r.mu * r.mu;
             let rhs = 1.0 - (-tr.a * wn - tr.b).powi(2);
-            format!("{} = {} with the chosen (a, b)", n(lhs), n(rhs))
+            t!("diagram-eq-with-chosen", lhs = n(lhs), rhs = n(rhs))
         }
-        None => "no real (a, b) satisfies it with eq. 12".to_owned(),
+        None => t!("diagram-eq-no-ab-with-12"),
     }
 }
 
 /// Step 3's words: the direction of travel depends on the convention.
 fn decomposition(r: &Refraction<f64>) -> String {
     let travel = wording(r.convention).travel;
-    format!(
-        "T lies in the plane of W and N, so it is a·W + b·N; the cosines become dot products \
-         with wn = W·N, and cosθt = −a·wn − b. The ray travels along {travel}."
-    )
+    t!("diagram-step-decomposition-text", travel = travel)
 }
 
 /// Step 6's words: the limit μ = 1 picks the a that keeps the direction of travel.
 fn choice_of_a(r: &Refraction<f64>) -> String {
     let Wording { travel, typo, .. } = wording(r.convention);
-    format!(
-        "When μ = 1 nothing bends, so T must be the direction of travel, {travel}. Only a = {} \
-         gives that; the other sign would give the mirror image. Press \"Animate μ to 1\" to \
-         watch T converge to {travel} and the ghosts not.{typo}",
-        if chosen_a(r) < 0.0 { "−μ" } else { "+μ" }
-    )
+    let a = if chosen_a(r) < 0.0 { "−μ" } else { "+μ" };
+    let words = t!("diagram-step-choice-a-text", travel = *travel, a = a);
+    match typo {
+        Some(typo) => format!("{words} {}", typo()),
+        None => words,
+    }
 }
 
 /// Step 8's words: with an outward normal the source's root is the wrong side.
 fn choice_of_b(r: &Refraction<f64>) -> String {
     if r.normal_flipped {
-        "The root with −√k goes to b = 0 at μ = 1, so T becomes the incoming ray. But here N \
-         points along the ray (an outward normal where the ray leaves the medium): with N as \
-         given that root is the wrong side. The kernel turns N around first."
+        t!("diagram-step-choice-b-flipped")
     } else {
-        "Of the two roots only the one with −√k becomes b = 0 at μ = 1, when T must be the \
-         incoming ray unchanged; the other sends T back across the surface."
+        t!("diagram-step-choice-b-text")
     }
-    .to_owned()
 }
 
 #[cfg(test)]

@@ -17,6 +17,7 @@ use super::model::ExplorerState;
 use super::numbers::number;
 use super::palette::Palette;
 use super::shapes::{Align, Dash, Figure, Label, Stroke};
+use refraction_i18n::t;
 
 /// How far from the hit point the fronts are drawn, in world units (W, N and T are 1 long).
 pub const EXTENT: f64 = 1.3;
@@ -236,7 +237,7 @@ impl Painter<'_> {
         }
         let index = number(fronts.index, 2);
         let speed = number(1.0 / fronts.index, 2);
-        let text = format!("fronts λ/{index} apart\nspeed c/{index} = {speed} c");
+        let text = t!("diagram-fronts", index = index, speed = speed);
         let at = fronts.normal.perp() * (EXTENT * 0.75) + surface_normal * fronts.side * 0.35;
         self.label(text, at, colour, 0.8);
     }
@@ -265,12 +266,9 @@ impl Painter<'_> {
                 self.line(h.a, q, halo);
                 self.line(h.a, q, self.stroke(2.2, self.palette.t, Dash::Solid));
                 self.line(h.b, q, ink);
-                "Huygens: the front reaches A Δt after B;\nB's wavelet grows vt·Δt, the new \
-                 front touches it"
+                t!("diagram-huygens-touch")
             }
-            None => {
-                "Huygens: B's wavelet outgrows BA:\nno tangent from A, total internal reflection"
-            }
+            None => t!("diagram-huygens-tir"),
         };
         for (point, name) in [(h.b, "B"), (h.a, "A")] {
             self.label(
@@ -285,7 +283,7 @@ impl Painter<'_> {
         // candidates.
         let along = (h.a - h.b).normalize_or(surface_normal.perp());
         let at = h.a + along * 0.22 + surface_normal * 0.1;
-        self.label(text.to_owned(), at, self.palette.ink, 0.8);
+        self.label(text, at, self.palette.ink, 0.8);
     }
 }
 

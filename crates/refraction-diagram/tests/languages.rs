@@ -1,0 +1,136 @@
+//! The diagram drawn in other languages: the banner, the labels and the walk-through speak
+//! the chosen language and write numbers with its decimal separator.
+
+use glam::Vec2;
+use refraction_diagram::shapes::Figure;
+use refraction_diagram::{Diagram, Lesson, walkthrough};
+use refraction_i18n::{Locale, set_locale, t};
+
+/// Every label's text: those placed on the canvas and those left out for want of room.
+fn label_texts(diagram: &Diagram) -> Vec<String> {
+    let placed = diagram.shapes.iter().filter_map(|shape| match shape {
+        Figure::Text(label) => Some(label.text.clone()),
+        _ => None,
+    });
+    let left_out = diagram.left_out.iter().map(|label| label.text.clone());
+    placed.chain(left_out).collect()
+}
+
+/// The diagram of glass into air at 45°, beyond the critical angle, drawn in `locale`; the
+/// thread goes back to English before the test looks at it.
+fn total_internal_reflection_in(locale: Locale) -> Diagram {
+    let state = Lesson::BeyondCritical.state();
+    assert!(state.refraction().is_tir());
+    set_locale(locale);
+    let diagram = Diagram::new(&state, Vec2::new(1600.0, 1000.0));
+    set_locale(Locale::En);
+    diagram
+}
+
+#[test]
+fn german_total_internal_reflection_says_totalreflexion_with_decimal_commas() {
+    let diagram = total_internal_reflection_in(Locale::De);
+    assert!(
+        diagram.summary.to_lowercase().contains("totalreflexion"),
+        "{}",
+        diagram.summary
+    );
+    assert!(
+        diagram.summary.contains("θi = 45,0°"),
+        "{}",
+        diagram.summary
+    );
+    let labels = label_texts(&diagram);
+    assert!(
+        labels.iter().any(|l| l == "Grenzwinkel θc = 41,8°"),
+        "{labels:?}"
+    );
+    assert!(
+        labels.iter().any(|l| l.starts_with("μi = 1,5 (Glas)")),
+        "{labels:?}"
+    );
+    assert!(
+        !labels
+            .iter()
+            .any(|l| l.contains("critical") || l.contains("reflected")),
+        "English left in {labels:?}"
+    );
+}
+
+#[test]
+fn russian_total_internal_reflection_is_named_so() {
+    let diagram = total_internal_reflection_in(Locale::Ru);
+    assert!(
+        diagram
+            .summary
+            .to_lowercase()
+            .contains("полное внутреннее отражение"),
+        "{}",
+        diagram.summary
+    );
+    let labels = label_texts(&diagram);
+    assert!(
+        labels.iter().any(|l| l == "предельный угол θc = 41,8°"),
+        "{labels:?}"
+    );
+    assert!(
+        labels.iter().any(|l| l == "отражённый луч (весь свет)"),
+        "{labels:?}"
+    );
+}
+
+#[test]
+fn the_same_diagram_in_english_is_unchanged() {
+    let diagram = total_internal_reflection_in(Locale::En);
+    assert!(diagram.summary.starts_with("TOTAL INTERNAL REFLECTION\n"));
+    assert!(
+        diagram.summary.contains("θi = 45.0°"),
+        "{}",
+        diagram.summary
+    );
+    let labels = label_texts(&diagram);
+    assert!(
+        labels.iter().any(|l| l == "critical angle θc = 41.8°"),
+        "{labels:?}"
+    );
+}
+
+#[test]
+fn counts_take_each_languages_plural_forms() {
+    set_locale(Locale::Ru);
+    let russian = [1_usize, 3, 5, 21].map(|n| t!("diagram-count-kernel-calls", count = n));
+    set_locale(Locale::De);
+    let german = [1_usize, 2].map(|n| t!("diagram-count-source-rays", count = n));
+    set_locale(Locale::En);
+    assert_eq!(
+        russian,
+        [
+            "1 вызов ядра",
+            "3 вызова ядра",
+            "5 вызовов ядра",
+            "21 вызов ядра"
+        ]
+    );
+    assert_eq!(german, ["1 Quellstrahl", "2 Quellstrahlen"]);
+}
+
+#[test]
+fn the_walk_through_speaks_german_with_the_kernels_numbers() {
+    let state = refraction_diagram::ExplorerState::default();
+    set_locale(Locale::De);
+    let steps = walkthrough::steps(state.refraction());
+    set_locale(Locale::En);
+    assert_eq!(steps[0].title, "Brechungsgesetz von Snellius");
+    assert!(
+        steps[0].equations[0]
+            .substituted
+            .contains("μ = μi/μt = 0,6669"),
+        "{:?}",
+        steps[0].equations[0]
+    );
+    assert!(
+        steps[0].equations[0]
+            .substituted
+            .contains(", also sinθt = ")
+    );
+}
