@@ -163,15 +163,27 @@ fn program_sources() -> Vec<PathBuf> {
     files
 }
 
-/// The keys `source` asks for with `t!("key"…)`.
+/// The keys `source` asks for with `t!("key"…)`, also where rustfmt put the key on the next
+/// line; `format!("…")` and other macros ending in `t` are not `t!`.
 fn keys_asked(source: &str) -> Vec<String> {
     source
-        .match_indices("t!(\"")
+        .match_indices("t!(")
+        .filter(|(at, _)| {
+            let before = source[..*at].chars().next_back();
+            !before.is_some_and(|c| c.is_alphanumeric() || c == '_')
+        })
         .filter_map(|(at, opening)| {
-            let rest = &source[at + opening.len()..];
+            let rest = source[at + opening.len()..].trim_start();
+            let rest = rest.strip_prefix('"')?;
             rest.find('"').map(|end| rest[..end].to_owned())
         })
         .collect()
+}
+
+#[test]
+fn the_key_finder_reads_t_calls_only() {
+    let source = "t!(\"a-key\"); format!(\"{x} y\"); t!(\n    \"b-key\",\n    n = 1\n); t!(k)";
+    assert_eq!(keys_asked(source), ["a-key", "b-key"]);
 }
 
 #[test]
