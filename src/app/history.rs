@@ -269,8 +269,8 @@ mod tests {
         assert_eq!(history.travel(Travel::Undo), Some(2));
     }
 
-    #[test]
-    fn an_undo_says_what_it_changed_and_where() {
+    /// The droplet with the default interface, and the same with μt 1.333 and N flipped.
+    fn start_and_edited() -> (Snapshot, Snapshot) {
         let start = Snapshot {
             interface: ExplorerState::default(),
             scene: Scene::embedded("droplet").unwrap(),
@@ -278,6 +278,12 @@ mod tests {
         let mut edited = start.clone();
         edited.interface.set_mu_t(1.333).unwrap();
         edited.interface.flip_normal();
+        (start, edited)
+    }
+
+    #[test]
+    fn an_undo_says_what_it_changed_and_where() {
+        let (start, edited) = start_and_edited();
         let change = describe(Travel::Undo, &edited, &start);
         assert_eq!(change.words, "Undid μt 1.333 → 1.5, N flipped");
         assert!(change.in_interface && !change.in_scene);
@@ -301,13 +307,7 @@ mod tests {
     #[test]
     fn an_undo_speaks_the_language_of_the_window_with_its_decimal_comma() {
         use refraction_i18n::{Locale, set_locale};
-        let start = Snapshot {
-            interface: ExplorerState::default(),
-            scene: Scene::embedded("droplet").unwrap(),
-        };
-        let mut edited = start.clone();
-        edited.interface.set_mu_t(1.333).unwrap();
-        edited.interface.flip_normal();
+        let (start, edited) = start_and_edited();
         set_locale(Locale::De);
         let undone = describe(Travel::Undo, &edited, &start).words;
         let redone = describe(Travel::Redo, &start, &edited).words;
