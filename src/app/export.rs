@@ -13,12 +13,14 @@ use egui::{ComboBox, DragValue, ProgressBar, TextEdit, Ui};
 
 use super::typed::status;
 use refraction_diagram::animation::Animation;
+use refraction_diagram::numbers::number;
 use refraction_diagram::overlay::PanZoom;
 use refraction_diagram::{ExplorerState, Overlay};
-use refraction_render::SIZE_LIMITS;
+use refraction_i18n::t;
 use refraction_render::animation::{AnimationSpec, FPS_LIMITS, FRAME_LIMITS, export_gif};
 use refraction_render::atomic::check_writable;
 use refraction_render::format::ImageFormat;
+use refraction_render::{RenderError, SIZE_LIMITS};
 use refraction_scene::Scene;
 
 /// The size of an exported animation when none is chosen: a slide's width, small enough to
@@ -34,8 +36,10 @@ struct Job {
     all: usize,
     /// Set to stop the export after the frame being drawn.
     cancel: Arc<AtomicBool>,
-    /// What the export says when it ends.
-    handle: JoinHandle<Result<String, String>>,
+    /// The file being written.
+    path: PathBuf,
+    /// How the export ended, put in words on the window's thread (whose language it is).
+    handle: JoinHandle<Result<(), RenderError>>,
 }
 
 /// The *Export animation* controls, the export running and what the last one said.
@@ -65,15 +69,26 @@ impl Default for AnimationExport {
     }
 }
 
+/// Why an export wrote nothing, in the current language around the renderer's own reason.
+fn not_exported(reason: &impl std::fmt::Display) -> String {
+    t!("files-not-exported", reason = reason.to_string())
+}
+
+/// What an export that ended says: the file written, or why nothing was.
+fn outcome(result: Result<(), RenderError>, path: &Path) -> Result<String, String> {
+    match result {
+        Ok(()) => Ok(t!("files-wrote", path = path.display().to_string())),
+        Err(RenderError::Cancelled) => Err(t!("files-export-cancelled")),
+        Err(e) => Err(not_exported(&e)),
+    }
+}
+
 /// Checks `path` as the GIF to write: a `.gif` name (in any case) where a file can be written.
 fn check_gif_path(path: &Path) -> Result<(), String> {
     match ImageFormat::for_path(path) {
-        Ok(ImageFormat::Gif) => check_writable(path).map_err(|e| e.to_string()),
-        Ok(_) => Err(format!(
-            "{}: an animation is written as a GIF; give a name ending in .gif",
-            path.display()
-        )),
-        Err(e) => Err(e.to_string()),
+        Ok(ImageFormat::Gif) => check_writable(path).map_err(|e| not_exported(&e)),
+        Ok(_) => Err(t!("files-gif-needed", path = path.display().to_string())),
+        Err(e) => Err(not_exported(&e)),
     }
 }
 
@@ -93,7 +108,7 @@ impl AnimationExport {
         let path = PathBuf::from(self.path.trim());
         let checked = spec
             .check()
-            .map_err(|e| e.to_string())
+            .map_err(|e| not_exported(&e))
             .and_then(|()| check_gif_path(&path));
         if let Err(why) = checked {
             self.status = Some(Err(why));
@@ -109,23 +124,22 @@ impl AnimationExport {
             ..overlay.clone()
         };
         let (counter, stop) = (Arc::clone(&done), Arc::clone(&cancel));
+        let target = path.clone();
         let handle = std::thread::spawn(move || {
-            let result = export_gif(&state, &overlay, &spec, &path, |frames, _| {
+            let result = export_gif(&state, &overlay, &spec, &target, |frames, _| {
                 counter.store(frames, Ordering::Relaxed);
                 ctx.request_repaint();
                 !stop.load(Ordering::Relaxed)
             });
             ctx.request_repaint();
-            // A cancelled export says so in the error's words: nothing was written.
             result
-                .map(|()| format!("wrote {}", path.display()))
-                .map_err(|e| e.to_string())
         });
         self.status = None;
         self.running = Some(Job {
             done,
             all: spec.frames,
             cancel,
+            path,
             handle,
         });
     }
@@ -146,19 +160,18 @@ impl AnimationExport {
             return Some(done as f32 / job.all.max(1) as f32);
         }
         let job = self.running.take()?;
-        self.status = Some(
-            job.handle
-                .join()
-                .unwrap_or_else(|_| Err("the export stopped with an internal error".to_owned())),
-        );
+        self.status = Some(match job.handle.join() {
+            Ok(result) => outcome(result, &job.path),
+            Err(_) => Err(t!("files-export-crashed")),
+        });
         None
     }
 
     /// The controls: which animation, frames, rate, size and file; *Export animation*, or
     /// while it runs a progress bar and *Cancel*.
     pub fn show(&mut self, ui: &mut Ui, state: &ExplorerState, overlay: &Overlay) {
-        ui.heading("Animation for a slide");
-        ComboBox::from_label("Animation")
+        ui.heading(t!("files-animation-heading"));
+        ComboBox::from_label(t!("files-animation"))
             .selected_text(self.animation.label())
             .show_ui(ui, |ui| {
                 for a in Animation::ALL {
@@ -167,7 +180,7 @@ impl AnimationExport {
             });
         self.numbers(ui);
         ui.horizontal(|ui| {
-            let label = ui.label("GIF file");
+            let label = ui.label(t!("files-gif-file"));
             ui.add(TextEdit::singleline(&mut self.path).desired_width(170.0))
                 .labelled_by(label.id);
         });
@@ -175,17 +188,18 @@ impl AnimationExport {
             Some(fraction) => {
                 ui.ctx().request_repaint_after(Duration::from_millis(100));
                 ui.horizontal(|ui| {
-                    let text = format!("drawing frames… {:.0} %", fraction * 100.0);
+                    let percent = number(f64::from(fraction) * 100.0, 0);
+                    let text = t!("files-drawing-frames", percent = percent);
                     ui.add(ProgressBar::new(fraction).desired_width(170.0).text(text));
-                    if ui.button("Cancel").clicked() {
+                    if ui.button(t!("files-cancel")).clicked() {
                         self.cancel();
                     }
                 });
             }
             None => {
                 if ui
-                    .button("Export animation")
-                    .on_hover_text("Draws every frame in the background; the window stays live")
+                    .button(t!("files-export-animation"))
+                    .on_hover_text(t!("files-export-animation-hover"))
                     .clicked()
                 {
                     self.start(state, overlay, ui.ctx());
@@ -198,11 +212,11 @@ impl AnimationExport {
     /// Frames, rate and size, within their limits.
     fn numbers(&mut self, ui: &mut Ui) {
         ui.horizontal(|ui| {
-            let label = ui.label("Frames");
+            let label = ui.label(t!("files-frames"));
             let (fewest, most) = FRAME_LIMITS;
             ui.add(DragValue::new(&mut self.frames).range(fewest..=most))
                 .labelled_by(label.id);
-            let label = ui.label("per second");
+            let label = ui.label(t!("files-per-second"));
             let (slowest, fastest) = FPS_LIMITS;
             ui.add(DragValue::new(&mut self.fps).range(slowest..=fastest))
                 .labelled_by(label.id);
@@ -210,7 +224,7 @@ impl AnimationExport {
         ui.horizontal(|ui| {
             let (low, high) = SIZE_LIMITS;
             let (width, height) = &mut self.size;
-            for (name, value) in [("GIF width", width), ("height", height)] {
+            for (name, value) in [(t!("files-gif-width"), width), (t!("files-height"), height)] {
                 let label = ui.label(name);
                 ui.add(DragValue::new(value).range(low..=high).suffix(" px"))
                     .labelled_by(label.id);
@@ -226,7 +240,8 @@ impl AnimationExport {
 /// The message of a bad path, size or extension, or of a failed write.
 pub fn scene_picture(scene: &Scene, size: (u32, u32), path: &str) -> Result<String, String> {
     let path = PathBuf::from(path.trim());
-    refraction_render::export_scene(scene, size.0, size.1, &path)
-        .map(|()| format!("wrote {}", path.display()))
-        .map_err(|e| e.to_string())
+    outcome(
+        refraction_render::export_scene(scene, size.0, size.1, &path),
+        &path,
+    )
 }

@@ -12,6 +12,7 @@
 use std::path::{Path, PathBuf};
 
 use egui::{Id, Modal, RichText, ScrollArea, TextEdit, Ui};
+use refraction_i18n::t;
 
 /// What a file holds, as far as replacing it is concerned.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -52,11 +53,13 @@ impl Kind {
         }
     }
 
-    fn words(self) -> &'static str {
+    /// The name the messages select this kind's words by (`{ $kind -> [png] … }`), the same
+    /// in every language.
+    fn id(self) -> &'static str {
         match self {
-            Self::State => "a saved state (JSON)",
-            Self::Png => "a PNG image",
-            Self::Svg => "an SVG image",
+            Self::State => "state",
+            Self::Png => "png",
+            Self::Svg => "svg",
         }
     }
 }
@@ -77,20 +80,22 @@ pub enum Target {
 /// The name says another kind (or none), the path is a folder, or the file there holds
 /// something else; the message names the path and what it holds.
 pub fn target(path: &Path, kind: Kind) -> Result<Target, String> {
-    let shown = path.display();
+    let shown = path.display().to_string();
     if Kind::of_name(path) != Some(kind) {
         let wanted = match kind {
             Kind::State => ".json",
             Kind::Png => ".png",
             Kind::Svg => ".svg",
         };
-        return Err(format!(
-            "{shown}: {} is written to a {wanted} file; choose a name ending in {wanted}",
-            capitalised(kind.words())
+        return Err(t!(
+            "files-wrong-extension",
+            path = &shown,
+            kind = kind.id(),
+            extension = wanted
         ));
     }
     if path.is_dir() {
-        return Err(format!("{shown} is a folder; choose a file name"));
+        return Err(t!("files-is-a-folder", path = &shown));
     }
     let Ok(bytes) = std::fs::read(path) else {
         return Ok(Target::New);
@@ -98,19 +103,13 @@ pub fn target(path: &Path, kind: Kind) -> Result<Target, String> {
     match Kind::of_contents(&bytes) {
         _ if bytes.is_empty() => Ok(Target::Replaces),
         Some(found) if found == kind => Ok(Target::Replaces),
-        found => Err(format!(
-            "{shown} holds {}, not {}: it is left as it is; choose another name",
-            found.map_or("something else", Kind::words),
-            kind.words()
+        found => Err(t!(
+            "files-holds-another-kind",
+            path = &shown,
+            found = found.map_or("other", Kind::id),
+            kind = kind.id()
         )),
     }
-}
-
-fn capitalised(words: &str) -> String {
-    let mut chars = words.chars();
-    chars.next().map_or_else(String::new, |first| {
-        first.to_uppercase().chain(chars).collect()
-    })
 }
 
 /// The first of `stem-001.ext`, `stem-002.ext`, … that does not exist in `folder` (after
@@ -120,6 +119,7 @@ pub fn numbered(folder: &Path, stem: &str, extension: &str) -> PathBuf {
     (1..)
         .map(|i| folder.join(format!("{stem}-{i:03}.{extension}")))
         .find(|p| !p.exists())
+        // untranslated: a panic message for developers; some number is always free
         .expect("some number is free")
 }
 
@@ -127,14 +127,15 @@ pub fn numbered(folder: &Path, stem: &str, extension: &str) -> PathBuf {
 /// user says replace, `Some(false)` once they cancel, `None` while they have not answered.
 pub fn confirm_replace(ui: &Ui, pending: &Path) -> Option<bool> {
     let mut answer = None;
-    let modal = Modal::new(Id::unique("confirm replace")).show(ui.ctx(), |ui| {
-        ui.heading("Replace the file?");
-        ui.label(format!("{} already exists.", pending.display()));
+    let modal = Modal::new(Id::unique("confirm_replace")).show(ui.ctx(), |ui| {
+        ui.heading(t!("files-replace-question"));
+        let path = pending.display().to_string();
+        ui.label(t!("files-already-exists", path = path));
         ui.horizontal(|ui| {
-            if ui.button("Replace").clicked() {
+            if ui.button(t!("files-replace")).clicked() {
                 answer = Some(true);
             }
-            if ui.button("Cancel").clicked() {
+            if ui.button(t!("files-cancel")).clicked() {
                 answer = Some(false);
             }
         });
@@ -146,7 +147,7 @@ pub fn confirm_replace(ui: &Ui, pending: &Path) -> Option<bool> {
 }
 
 /// Whether the dialog picks a file to read or a name to write.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Purpose {
     /// Open: the file must exist.
     Open,
@@ -244,7 +245,10 @@ impl FileDialog {
                 self.entries
                     .sort_by(|a, b| b.folder.cmp(&a.folder).then(a.name.cmp(&b.name)));
             }
-            Err(e) => self.problem = Some(format!("cannot list {}: {e}", folder.display())),
+            Err(e) => {
+                let (path, reason) = (folder.display().to_string(), e.to_string());
+                self.problem = Some(t!("files-cannot-list", path = path, reason = reason));
+            }
         }
         self.listed = Some(folder);
     }
@@ -277,8 +281,8 @@ impl FileDialog {
             return Some(path);
         }
         self.problem = Some(match self.purpose {
-            Purpose::Open => format!("{} is not a file that can be opened", path.display()),
-            Purpose::Save => "type a file name in an existing folder".to_owned(),
+            Purpose::Open => t!("files-not-a-file", path = path.display().to_string()),
+            Purpose::Save => t!("files-type-a-name"),
         });
         None
     }
@@ -319,21 +323,23 @@ impl FileDialog {
     pub fn show(&mut self, ui: &Ui) -> Choice {
         self.list();
         let title = match self.purpose {
-            Purpose::Open => "Open a file",
-            Purpose::Save => "Save as",
+            Purpose::Open => t!("files-dialog-open-title"),
+            Purpose::Save => t!("files-dialog-save-title"),
         };
-        let modal = Modal::new(Id::unique(("file dialog", title))).show(ui.ctx(), |ui| {
+        let id = Id::unique(("file_dialog", self.purpose));
+        let modal = Modal::new(id).show(ui.ctx(), |ui| {
             ui.heading(title);
             ui.horizontal(|ui| {
-                let label = ui.label("Folder");
+                let label = ui.label(t!("files-folder"));
                 ui.add(TextEdit::singleline(&mut self.folder).desired_width(360.0))
                     .labelled_by(label.id);
             });
             let shown: Vec<String> = self.extensions.iter().map(|e| format!("*.{e}")).collect();
-            ui.label(RichText::new(format!("showing folders and {}", shown.join(", "))).weak());
+            let showing = t!("files-showing", patterns = shown.join(", "));
+            ui.label(RichText::new(showing).weak());
             let mut chosen = self.listing(ui);
             ui.horizontal(|ui| {
-                let label = ui.label("File name");
+                let label = ui.label(t!("files-file-name"));
                 ui.add(TextEdit::singleline(&mut self.name).desired_width(300.0))
                     .labelled_by(label.id);
             });
@@ -343,11 +349,11 @@ impl FileDialog {
             let mut cancelled = false;
             ui.horizontal(|ui| {
                 let verb = match self.purpose {
-                    Purpose::Open => "Open file",
-                    Purpose::Save => "Save file",
+                    Purpose::Open => t!("files-open-file"),
+                    Purpose::Save => t!("files-save-file"),
                 };
                 chosen |= ui.button(verb).clicked();
-                cancelled = ui.button("Cancel").clicked();
+                cancelled = ui.button(t!("files-cancel")).clicked();
             });
             (chosen, cancelled)
         });
@@ -393,6 +399,26 @@ mod tests {
         std::fs::write(dir.join("state.png"), b"{}").unwrap();
         assert!(target(&dir.join("state.png"), Kind::Png).is_err());
         assert!(target(&dir, Kind::State).is_err());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_refusal_names_both_kinds_in_the_language_of_the_window() {
+        let dir = scratch("german");
+        let disguised = dir.join("disguised.json");
+        std::fs::write(&disguised, b"\x89PNG\r\n\x1a\n").unwrap();
+        refraction_i18n::set_locale(refraction_i18n::Locale::De);
+        let refused = target(&disguised, Kind::State).unwrap_err();
+        let named = target(&dir.join("picture.svg"), Kind::Png).unwrap_err();
+        refraction_i18n::set_locale(refraction_i18n::Locale::En);
+        assert!(
+            refused.ends_with("enthält ein PNG-Bild, keinen gespeicherten Zustand (JSON): Die Datei bleibt unverändert; bitte einen anderen Namen wählen"),
+            "{refused}"
+        );
+        assert!(
+            named.contains(": Ein PNG-Bild wird als .png-Datei"),
+            "{named}"
+        );
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

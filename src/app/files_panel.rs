@@ -5,30 +5,46 @@
 use std::path::PathBuf;
 
 use egui::{RichText, TextEdit, Ui};
+use refraction_i18n::t;
 
 use super::file_dialog::{Choice, FileDialog, Kind, Purpose, Target, confirm_replace, target};
 use super::typed::status;
 use crate::app::snippets;
-use crate::lines::state_file;
+use crate::lines::state_file::{self, LoadError};
 use refraction_diagram::ExplorerState;
 
 /// The file name offered first.
 pub const DEFAULT_PATH: &str = "refraction-state.json";
 
-/// The formats the current case can be copied in: the button's label and how to write it.
+/// The formats the current case can be copied in: the button's label (in the current
+/// language) and how to write it.
 type Format = (
-    &'static str,
+    fn() -> String,
     fn(&crate::lines::solve::Request) -> Result<String, String>,
 );
 
-/// The copy buttons, in order.
+/// The copy buttons, in order. The programming languages' names are the same in every language.
 const FORMATS: [Format; 5] = [
-    ("solve line", |r| Ok(r.to_json_line())),
-    ("Rust", snippets::rust),
-    ("GLSL", snippets::glsl),
-    ("C++ (glm)", snippets::cpp),
-    ("test vector", snippets::test_vector),
+    (|| t!("files-copy-solve-line"), |r| Ok(r.to_json_line())),
+    (|| "Rust".to_owned(), snippets::rust), // untranslated: a programming language's name
+    (|| "GLSL".to_owned(), snippets::glsl), // untranslated: a programming language's name
+    (|| "C++ (glm)".to_owned(), snippets::cpp), // untranslated: a language and library's name
+    (|| t!("files-copy-test-vector"), snippets::test_vector),
 ];
+
+/// What went wrong opening a state file, in the current language (the reason as the reader
+/// wrote it).
+fn open_failed(error: &LoadError) -> String {
+    match error {
+        LoadError::Read { path, source } => {
+            let reason = source.to_string();
+            t!("files-cannot-read-state", path = path, reason = reason)
+        }
+        LoadError::Refused { path, reason } => {
+            t!("files-state-refused", path = path, reason = reason)
+        }
+    }
+}
 
 /// The panel's fields and what its last action said.
 #[derive(Clone, Debug, PartialEq)]
@@ -70,8 +86,12 @@ impl FilesPanel {
     }
 
     fn write(&mut self, state: &ExplorerState, path: &std::path::Path) {
-        self.status =
-            Some(state_file::save(state, path).map(|()| format!("saved {}", path.display())));
+        let shown = path.display().to_string();
+        self.status = Some(
+            state_file::save(state, path)
+                .map(|()| t!("files-saved", path = &shown))
+                .map_err(|reason| t!("files-not-saved", reason = reason)),
+        );
     }
 
     /// The dialog and the replace question, while either is up.
@@ -98,7 +118,8 @@ impl FilesPanel {
             if replace {
                 self.write(state, &path);
             } else {
-                self.status = Some(Ok(format!("{} left as it was", path.display())));
+                let shown = path.display().to_string();
+                self.status = Some(Ok(t!("files-left-as-it-was", path = shown)));
             }
         }
     }
@@ -107,10 +128,14 @@ impl FilesPanel {
     /// state as it was and says why.
     pub fn open(&mut self, state: &mut ExplorerState) {
         let path = PathBuf::from(self.path.trim());
-        self.status = Some(state_file::load(&path).map(|opened| {
-            *state = opened;
-            format!("opened {}", path.display())
-        }));
+        self.status = Some(
+            state_file::open(&path)
+                .map(|opened| {
+                    *state = opened;
+                    t!("files-opened", path = path.display().to_string())
+                })
+                .map_err(|e| open_failed(&e)),
+        );
     }
 
     /// Applies the pasted share string, or says why it cannot be.
@@ -119,42 +144,42 @@ impl FilesPanel {
             state_file::parse(&self.pasted)
                 .map(|pasted| {
                     *state = pasted;
-                    "applied the share string".to_owned()
+                    t!("files-share-applied")
                 })
-                .map_err(|e| format!("share string: {e}")),
+                .map_err(|reason| t!("files-share-refused", reason = reason)),
         );
     }
 
     /// Shows the panel: file, share string, copy buttons, and the last outcome.
     pub fn show(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
         ui.horizontal_wrapped(|ui| {
-            let name = ui.label("State file");
+            let name = ui.label(t!("files-state-file"));
             ui.add(TextEdit::singleline(&mut self.path).desired_width(260.0))
                 .labelled_by(name.id);
             if ui
-                .button("💾 Save")
-                .on_hover_text("Write W, N, μ and the convention as a solve JSON line")
+                .button(t!("files-save"))
+                .on_hover_text(t!("files-save-hover"))
                 .clicked()
             {
                 self.save(state);
             }
             if ui
-                .button("📂 Open")
-                .on_hover_text("Read a solve JSON file; a bad file changes nothing")
+                .button(t!("files-open"))
+                .on_hover_text(t!("files-open-hover"))
                 .clicked()
             {
                 self.open(state);
             }
             if ui
-                .button("📂 Open…")
-                .on_hover_text("Choose a state file to open")
+                .button(t!("files-open-dialog"))
+                .on_hover_text(t!("files-open-dialog-hover"))
                 .clicked()
             {
                 self.dialog = Some(FileDialog::new(Purpose::Open, &["json"], &self.path));
             }
             if ui
-                .button("💾 Save as…")
-                .on_hover_text("Choose where to save")
+                .button(t!("files-save-as"))
+                .on_hover_text(t!("files-save-as-hover"))
                 .clicked()
             {
                 self.dialog = Some(FileDialog::new(Purpose::Save, &["json"], &self.path));
@@ -164,31 +189,32 @@ impl FilesPanel {
         ui.horizontal_wrapped(|ui| {
             let share = state_file::to_json(state);
             if ui
-                .button("🔗 Copy share string")
-                .on_hover_text("Reproduces this exact state on another machine, bit for bit")
+                .button(t!("files-copy-share"))
+                .on_hover_text(t!("files-copy-share-hover"))
                 .clicked()
             {
                 ui.ctx().copy_text(share.clone());
                 self.copied = Some(share);
-                self.status = Some(Ok("copied the share string".to_owned()));
+                self.status = Some(Ok(t!("files-share-copied")));
             }
-            let name = ui.label("Paste a share string");
+            let name = ui.label(t!("files-paste-share"));
             ui.add(TextEdit::singleline(&mut self.pasted).desired_width(260.0))
                 .labelled_by(name.id);
-            if ui.button("Apply").clicked() {
+            if ui.button(t!("files-apply")).clicked() {
                 self.apply_pasted(state);
             }
         });
         ui.horizontal_wrapped(|ui| {
-            ui.label("Copy the case as");
+            ui.label(t!("files-copy-case-as"));
             let request = state_file::request(state);
             for (label, write) in FORMATS {
-                if ui.button(label).clicked() {
+                let label = label();
+                if ui.button(&label).clicked() {
                     match write(&request) {
                         Ok(text) => {
                             ui.ctx().copy_text(text.clone());
                             self.copied = Some(text);
-                            self.status = Some(Ok(format!("copied the {label}")));
+                            self.status = Some(Ok(t!("files-copied", what = label)));
                         }
                         Err(e) => self.status = Some(Err(e)),
                     }
@@ -199,5 +225,42 @@ impl FilesPanel {
         if let Some(text) = &self.copied {
             ui.label(RichText::new(text).monospace().small());
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use egui_kittest::Harness;
+    use egui_kittest::kittest::Queryable;
+    use refraction_i18n::{Locale, set_locale};
+
+    type Panel = (FilesPanel, ExplorerState);
+
+    #[test]
+    fn the_save_tool_and_its_dialog_speak_german() {
+        set_locale(Locale::De);
+        let mut h = Harness::builder()
+            .with_size(egui::Vec2::new(900.0, 700.0))
+            .build_ui_state(
+                |ui, (panel, state): &mut Panel| panel.show(ui, state),
+                (FilesPanel::default(), ExplorerState::default()),
+            );
+        h.run();
+        assert!(h.query_by_label("Zustandsdatei").is_some());
+        assert!(h.query_by_label("Den Fall kopieren als").is_some());
+        h.get_by_label("💾 Speichern unter…").click();
+        h.run();
+        let found = [
+            h.query_by_label("Speichern unter").is_some(),
+            h.query_by_label("Dateiname").is_some(),
+            h.query_by_label("Abbrechen").is_some(),
+        ];
+        h.get_by_label("Abbrechen").click();
+        h.run();
+        let closed = h.query_by_label("Dateiname").is_none();
+        set_locale(Locale::En);
+        assert_eq!(found, [true; 3]);
+        assert!(closed, "Abbrechen closes the dialog");
     }
 }

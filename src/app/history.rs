@@ -9,6 +9,7 @@ use egui::{Button, Key, KeyboardShortcut, Modifiers, Ui};
 
 use refraction_diagram::ExplorerState;
 use refraction_diagram::numbers::significant;
+use refraction_i18n::t;
 use refraction_scene::Scene;
 
 /// How many steps back the history reaches; older ones are forgotten.
@@ -60,10 +61,10 @@ fn incidence_degrees(state: &ExplorerState) -> String {
 fn interface_changes(from: &ExplorerState, to: &ExplorerState) -> Vec<String> {
     let mut parts = Vec::new();
     if from.convention() != to.convention() {
-        parts.push(format!(
-            "the convention (Section {} → {})",
-            from.convention().section(),
-            to.convention().section()
+        parts.push(t!(
+            "files-undo-convention",
+            from = from.convention().section().to_string(),
+            to = to.convention().section().to_string()
         ));
     }
     for (symbol, a, b) in [
@@ -79,9 +80,9 @@ fn interface_changes(from: &ExplorerState, to: &ExplorerState) -> Vec<String> {
         }
     }
     if from.n() != to.n() && from.n() != -to.n() {
-        parts.push("N turned".to_owned());
+        parts.push(t!("files-undo-n-turned"));
     } else if from.n() == -to.n() {
-        parts.push("N flipped".to_owned());
+        parts.push(t!("files-undo-n-flipped"));
     }
     if from.w() != to.w() && from.convention() == to.convention() {
         parts.push(format!(
@@ -101,20 +102,26 @@ pub fn describe(travel: Travel, from: &Snapshot, to: &Snapshot) -> Change {
     let in_scene = from.scene != to.scene;
     if in_scene {
         parts.push(if from.scene.name() == to.scene.name() {
-            format!("the edit of {}", to.scene.title())
+            t!("files-undo-scene-edit", scene = to.scene.title())
         } else {
-            format!("the scene ({} → {})", from.scene.title(), to.scene.title())
+            t!(
+                "files-undo-scene",
+                from = from.scene.title(),
+                to = to.scene.title()
+            )
         });
     }
     if parts.is_empty() && in_interface {
-        parts.push("W or N typed".to_owned());
+        parts.push(t!("files-undo-w-or-n-typed"));
     }
-    let verb = match travel {
-        Travel::Undo => "Undid",
-        Travel::Redo => "Redid",
+    // The language's list separator: "; " where numbers have a decimal comma.
+    let changes = parts.join(refraction_i18n::locale().list_separator());
+    let words = match travel {
+        Travel::Undo => t!("files-undid", changes = changes),
+        Travel::Redo => t!("files-redid", changes = changes),
     };
     Change {
-        words: format!("{verb} {}", parts.join(", ")),
+        words,
         in_interface,
         in_scene,
     }
@@ -221,17 +228,17 @@ fn shortcut(ui: &mut Ui) -> Option<Travel> {
 /// The Undo and Redo buttons, and their shortcuts: which way the user asked to move.
 pub fn controls<T: Clone + PartialEq>(ui: &mut Ui, history: &History<T>) -> Option<Travel> {
     let mut asked = shortcut(ui);
-    let undo = Button::new("⟲ Undo");
+    let undo = Button::new(t!("files-undo"));
     let undo = ui
         .add_enabled(history.undo_steps() > 0, undo)
-        .on_hover_text("Undo the last change of W, N, μ or convention (Ctrl+Z)");
+        .on_hover_text(t!("files-undo-hover"));
     if undo.clicked() {
         asked = Some(Travel::Undo);
     }
-    let redo = Button::new("⟳ Redo");
+    let redo = Button::new(t!("files-redo"));
     let redo = ui
         .add_enabled(history.redo_steps() > 0, redo)
-        .on_hover_text("Redo what was undone (Ctrl+Shift+Z)");
+        .on_hover_text(t!("files-redo-hover"));
     if redo.clicked() {
         asked = Some(Travel::Redo);
     }
@@ -262,8 +269,8 @@ mod tests {
         assert_eq!(history.travel(Travel::Undo), Some(2));
     }
 
-    #[test]
-    fn an_undo_says_what_it_changed_and_where() {
+    /// The droplet with the default interface, and the same with μt 1.333 and N flipped.
+    fn start_and_edited() -> (Snapshot, Snapshot) {
         let start = Snapshot {
             interface: ExplorerState::default(),
             scene: Scene::embedded("droplet").unwrap(),
@@ -271,6 +278,12 @@ mod tests {
         let mut edited = start.clone();
         edited.interface.set_mu_t(1.333).unwrap();
         edited.interface.flip_normal();
+        (start, edited)
+    }
+
+    #[test]
+    fn an_undo_says_what_it_changed_and_where() {
+        let (start, edited) = start_and_edited();
         let change = describe(Travel::Undo, &edited, &start);
         assert_eq!(change.words, "Undid μt 1.333 → 1.5, N flipped");
         assert!(change.in_interface && !change.in_scene);
@@ -289,6 +302,19 @@ mod tests {
             .rotate(refraction_diagram::HandleId::W, 10.0);
         let words = describe(Travel::Undo, &turned, &start).words;
         assert_eq!(words, "Undid θi 50° → 40°");
+    }
+
+    #[test]
+    fn an_undo_speaks_the_language_of_the_window_with_its_decimal_comma() {
+        use refraction_i18n::{Locale, set_locale};
+        let (start, edited) = start_and_edited();
+        set_locale(Locale::De);
+        let undone = describe(Travel::Undo, &edited, &start).words;
+        let redone = describe(Travel::Redo, &start, &edited).words;
+        set_locale(Locale::En);
+        // A semicolon between the changes: the comma is the numbers' own.
+        assert_eq!(undone, "Rückgängig: μt 1,333 → 1,5; N umgekehrt");
+        assert_eq!(redone, "Wiederholt: μt 1,5 → 1,333; N umgekehrt");
     }
 
     #[test]

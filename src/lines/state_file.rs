@@ -31,15 +31,53 @@ pub fn parse(text: &str) -> Result<ExplorerState, String> {
 /// The largest state file [`load`] reads: 1 MiB (a state is one line of about 150 bytes).
 pub const MAX_STATE_FILE_BYTES: u64 = 1 << 20;
 
+/// Why a state file could not be opened: kept apart so that the window can say it in the
+/// user's language around the reader's own reason.
+#[derive(Debug, thiserror::Error)]
+pub enum LoadError {
+    /// The file cannot be read, is too long or is not UTF-8.
+    #[error("cannot read state file {path}: {source}")]
+    Read {
+        /// The file, as displayed.
+        path: String,
+        /// What reading it said.
+        source: std::io::Error,
+    },
+    /// The file was read and [`parse`] refused it.
+    #[error("state file {path}: {reason}")]
+    Refused {
+        /// The file, as displayed.
+        path: String,
+        /// [`parse`]'s message (naming the line and column of malformed JSON).
+        reason: String,
+    },
+}
+
 /// Reads a state from a JSON file of at most [`MAX_STATE_FILE_BYTES`].
 ///
 /// # Errors
-/// The file cannot be read or is too long, or [`parse`] refuses it; the message names the file
-/// (and malformed JSON its line and column).
+/// [`LoadError::Read`] when the file cannot be read or is too long, [`LoadError::Refused`]
+/// when [`parse`] refuses it.
+pub fn open(path: &Path) -> Result<ExplorerState, LoadError> {
+    let shown = || path.display().to_string();
+    let text = refraction_scene::read_capped(path, MAX_STATE_FILE_BYTES, "a state file").map_err(
+        |source| LoadError::Read {
+            path: shown(),
+            source,
+        },
+    )?;
+    parse(&text).map_err(|reason| LoadError::Refused {
+        path: shown(),
+        reason,
+    })
+}
+
+/// [`open`] with the error in words, as the command line reports it.
+///
+/// # Errors
+/// As [`open`]; the message names the file (and malformed JSON its line and column).
 pub fn load(path: &Path) -> Result<ExplorerState, String> {
-    let text = refraction_scene::read_capped(path, MAX_STATE_FILE_BYTES, "a state file")
-        .map_err(|e| format!("cannot read state file {}: {e}", path.display()))?;
-    parse(&text).map_err(|e| format!("state file {}: {e}", path.display()))
+    open(path).map_err(|e| e.to_string())
 }
 
 /// The state as a `solve` request (in f64, the explorer's precision).
