@@ -5,7 +5,7 @@
 //! changes. A change is recorded once the user lets go (no pointer button held, no animation
 //! running), so a drag or the μ → 1 animation is one step, not one per frame.
 
-use egui::{Button, Key, KeyboardShortcut, Modifiers, Ui};
+use egui::{Button, Key, KeyboardShortcut, Modifiers, Role, Ui, WidgetInfo};
 
 use refraction_diagram::ExplorerState;
 use refraction_diagram::numbers::significant;
@@ -225,24 +225,47 @@ fn shortcut(ui: &mut Ui) -> Option<Travel> {
     })
 }
 
-/// The Undo and Redo buttons, and their shortcuts: which way the user asked to move.
-pub fn controls<T: Clone + PartialEq>(ui: &mut Ui, history: &History<T>) -> Option<Travel> {
+/// The Undo and Redo buttons, and their shortcuts: which way the user asked to move. A
+/// `compact` bar (presentation) shows only their arrows; their names stay their accessible
+/// names and hover texts.
+pub fn controls<T: Clone + PartialEq>(
+    ui: &mut Ui,
+    history: &History<T>,
+    compact: bool,
+) -> Option<Travel> {
     let mut asked = shortcut(ui);
-    let undo = Button::new(t!("files-undo"));
-    let undo = ui
-        .add_enabled(history.undo_steps() > 0, undo)
-        .on_hover_text(t!("files-undo-hover"));
-    if undo.clicked() {
+    let undo = (format!("⟲ {}", t!("files-undo")), t!("files-undo-hover"));
+    if travel_button(ui, undo, history.undo_steps() > 0, compact) {
         asked = Some(Travel::Undo);
     }
-    let redo = Button::new(t!("files-redo"));
-    let redo = ui
-        .add_enabled(history.redo_steps() > 0, redo)
-        .on_hover_text(t!("files-redo-hover"));
-    if redo.clicked() {
+    let redo = (format!("⟳ {}", t!("files-redo")), t!("files-redo-hover"));
+    if travel_button(ui, redo, history.redo_steps() > 0, compact) {
         asked = Some(Travel::Redo);
     }
     asked
+}
+
+/// One of Undo and Redo (`name` with its arrow first, and its hover text): whether it was
+/// clicked.
+fn travel_button(
+    ui: &mut Ui,
+    (name, hover): (String, String),
+    enabled: bool,
+    compact: bool,
+) -> bool {
+    let shown = if compact {
+        name.split(' ').next().unwrap_or_default().to_owned()
+    } else {
+        name.clone()
+    };
+    let button = ui.add_enabled(enabled, Button::new(shown));
+    button.widget_info(|| WidgetInfo::labeled(Role::Button, enabled, &name));
+    let hover = if compact {
+        format!("{name}: {hover}")
+    } else {
+        hover
+    };
+    button.on_hover_text(hover).clicked()
 }
 
 #[cfg(test)]

@@ -338,7 +338,7 @@ impl Explorer {
                 ui.selectable_value(&mut self.view, view, view.label());
             }
             ui.separator();
-            if let Some(travel) = history::controls(ui, &self.history) {
+            if let Some(travel) = history::controls(ui, &self.history, self.presentation.on) {
                 self.travel(travel);
             }
             ui.separator();

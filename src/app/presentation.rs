@@ -3,8 +3,8 @@
 //! zoom, and the language of the window.
 
 use egui::{
-    Color32, ComboBox, Context, FontFamily, FontId, Key, KeyboardShortcut, Modifiers, TextStyle,
-    Ui, ViewportCommand,
+    Color32, ComboBox, Context, FontFamily, FontId, Key, KeyboardShortcut, Modifiers, Role,
+    TextStyle, Ui, ViewportCommand, WidgetInfo,
 };
 
 use refraction_diagram::overlay::PanZoom;
@@ -13,6 +13,9 @@ use refraction_i18n::{Locale, t};
 
 /// The UI zoom in presentation mode: the smallest text, 13 points, is then 20.8 pixels.
 pub const ZOOM: f32 = 1.6;
+
+/// The least width of a menu button in the bar that is only as wide as its choice, in points.
+const COMPACT_COMBO_WIDTH: f32 = 40.0;
 
 /// The smallest text anywhere in the window, in points (pixels at zoom 1).
 pub const SMALLEST_TEXT: f32 = 13.0;
@@ -149,32 +152,56 @@ impl Presentation {
         self.language.or(system).unwrap_or_default()
     }
 
-    /// The presentation toggle (also F11), the theme menu, the colour-blind-safe switch and
-    /// the language menu (`speaking` is the language the window speaks now).
+    /// The presentation toggle (also F11), the theme and language menus and the
+    /// colour-blind-safe switch (`speaking` is the language the window speaks now).
     pub fn controls(&mut self, ui: &mut Ui, speaking: Locale) {
         if ui.input_mut(|i| i.consume_shortcut(&KeyboardShortcut::new(Modifiers::NONE, Key::F11))) {
             self.on = !self.on;
         }
         ui.toggle_value(&mut self.on, t!("presentation-toggle"))
             .on_hover_text(t!("presentation-toggle-hover"));
-        ComboBox::from_label(t!("presentation-theme"))
+        self.theme_menu(ui);
+        self.language_menu(ui, speaking);
+        ui.checkbox(&mut self.colour_blind_safe, t!("presentation-colour-blind"))
+            .on_hover_text(t!("presentation-colour-blind-hover"));
+    }
+
+    /// The theme menu, labelled at the desk; in presentation, where the bar is short of room,
+    /// as wide as the theme's name, with its label only as its accessible name and on hover.
+    fn theme_menu(&mut self, ui: &mut Ui) {
+        let label = t!("presentation-theme");
+        let menu = if self.on {
+            ComboBox::from_id_salt("theme").width(COMPACT_COMBO_WIDTH)
+        } else {
+            ComboBox::from_label(&label)
+        };
+        let response = menu
             .selected_text(self.theme.label())
             .show_ui(ui, |ui| {
                 for theme in Theme::ALL {
                     ui.selectable_value(&mut self.theme, theme, theme.label());
                 }
             })
-            .response
-            .on_hover_text(t!("presentation-theme-hover"));
-        ui.checkbox(&mut self.colour_blind_safe, t!("presentation-colour-blind"))
-            .on_hover_text(t!("presentation-colour-blind-hover"));
-        self.language_menu(ui, speaking);
+            .response;
+        if self.on {
+            response.widget_info(|| WidgetInfo::labeled(Role::ComboBox, true, &label));
+        }
+        let hover = t!("presentation-theme-hover");
+        response.on_hover_text(format!("{label}: {hover}"));
     }
 
-    /// The language menu: each language by its own name; the choice is kept between runs.
+    /// The language menu: each language by its own name (in presentation, where the bar is
+    /// short of room, the chosen one by its code); the choice is kept between runs.
     fn language_menu(&mut self, ui: &mut Ui, speaking: Locale) {
+        let shown = if self.on {
+            speaking.code().to_uppercase()
+        } else {
+            speaking.name().to_owned()
+        };
+        // As wide as the chosen name: the bar keeps its rows on a projector.
         ComboBox::from_id_salt("language")
-            .selected_text(format!("🌐 {}", speaking.name()))
+            .width(COMPACT_COMBO_WIDTH)
+            .selected_text(format!("🌐 {shown}"))
             .show_ui(ui, |ui| {
                 for locale in Locale::ALL {
                     if ui

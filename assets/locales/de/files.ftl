@@ -91,9 +91,9 @@ files-height = Höhe
 
 ## Rückgängig und Wiederholen
 
-files-undo = ⟲ Rückgängig
+files-undo = Rückgängig
 files-undo-hover = Die letzte Änderung von W, N, μ oder Konvention rückgängig machen (Strg+Z)
-files-redo = ⟳ Wiederholen
+files-redo = Wiederholen
 files-redo-hover = Rückgängig Gemachtes wiederholen (Strg+Umschalt+Z)
 files-undid = Rückgängig: { $changes }
 files-redid = Wiederholt: { $changes }

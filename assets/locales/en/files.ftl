@@ -96,9 +96,9 @@ files-height = height
 
 ## Undo and redo
 
-files-undo = ⟲ Undo
+files-undo = Undo
 files-undo-hover = Undo the last change of W, N, μ or convention (Ctrl+Z)
-files-redo = ⟳ Redo
+files-redo = Redo
 files-redo-hover = Redo what was undone (Ctrl+Shift+Z)
 # $changes: what changed, such as "μt 1.333 → 1.5, N flipped"
 files-undid = Undid { $changes }

@@ -91,9 +91,9 @@ files-height = alto
 
 ## Deshacer y rehacer
 
-files-undo = ⟲ Deshacer
+files-undo = Deshacer
 files-undo-hover = Deshace el último cambio de W, N, μ o la convención (Ctrl+Z)
-files-redo = ⟳ Rehacer
+files-redo = Rehacer
 files-redo-hover = Rehace lo deshecho (Ctrl+Mayús+Z)
 files-undid = Deshecho: { $changes }
 files-redid = Rehecho: { $changes }

@@ -91,9 +91,9 @@ files-height = hauteur
 
 ## Annuler et rétablir
 
-files-undo = ⟲ Annuler
+files-undo = Annuler
 files-undo-hover = Annule la dernière modification de W, N, μ ou de la convention (Ctrl+Z)
-files-redo = ⟳ Rétablir
+files-redo = Rétablir
 files-redo-hover = Rétablit ce qui a été annulé (Ctrl+Maj+Z)
 files-undid = Annulé : { $changes }
 files-redid = Rétabli : { $changes }

@@ -91,9 +91,9 @@ files-height = altura
 
 ## Desfazer e refazer
 
-files-undo = ⟲ Desfazer
+files-undo = Desfazer
 files-undo-hover = Desfaz a última mudança de W, N, μ ou da convenção (Ctrl+Z)
-files-redo = ⟳ Refazer
+files-redo = Refazer
 files-redo-hover = Refaz o que foi desfeito (Ctrl+Shift+Z)
 files-undid = Desfeito: { $changes }
 files-redid = Refeito: { $changes }

@@ -92,9 +92,9 @@ files-height = высота
 
 ## Отмена и повтор
 
-files-undo = ⟲ Отменить
+files-undo = Отменить
 files-undo-hover = Отменить последнее изменение W, N, μ или соглашения (Ctrl+Z)
-files-redo = ⟳ Повторить
+files-redo = Повторить
 files-redo-hover = Повторить отменённое (Ctrl+Shift+Z)
 files-undid = Отменено: { $changes }
 files-redid = Повторено: { $changes }

@@ -413,8 +413,10 @@ impl DiagramBuilder<'_> {
             let text = if r.normal_flipped && rejection == Rejection::WrongSide {
                 String::new()
             } else {
+                // Semicolons between the numbers where the decimal separator is a comma.
+                let separator = refraction_i18n::locale().list_separator();
                 format!(
-                    "{}\n(a, b) = ({}, {})",
+                    "{}\n(a, b) = ({}{separator}{})",
                     short_rule(rejection),
                     number(c.a, 3),
                     number(c.b, 3)
