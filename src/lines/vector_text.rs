@@ -235,6 +235,31 @@ pub fn short_vector(v: [f64; 3]) -> String {
     }
 }
 
+/// [`short`] for a sentence a user reads: the language's decimal separator, and the language's
+/// words for a number that is not finite. Never for text that is parsed back or copied.
+#[must_use]
+pub fn spoken(x: f64) -> String {
+    if x.is_finite() {
+        refraction_i18n::decimal(&short(x))
+    } else {
+        refraction_i18n::t!("check-number-not-finite")
+    }
+}
+
+/// [`short_vector`] for a sentence a user reads: [`spoken`] components separated as the
+/// language separates a list of numbers (`(0,6; −0,8; 0)` where the decimal separator is a
+/// comma), or the language's words for a vector that is not finite.
+#[must_use]
+pub fn spoken_vector(v: [f64; 3]) -> String {
+    if v.iter().all(|x| x.is_finite()) {
+        let separator = refraction_i18n::locale().list_separator();
+        let [x, y, z] = v.map(spoken);
+        format!("({x}{separator}{y}{separator}{z})")
+    } else {
+        refraction_i18n::t!("check-vector-not-finite")
+    }
+}
+
 /// The largest absolute component (0 for the zero vector; NaN components are skipped).
 fn scale_of(v: DVec3) -> f64 {
     v.abs().max_element()
