@@ -103,7 +103,6 @@ fn not_finite(tir: bool) -> String {
 }
 
 /// A finite T for a totally internally reflected ray: right when it is the reflection or zero.
-#[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
 fn totally_reflected<S: Real>(
     r: &refraction_kernel::Refraction<S>,
     yours: glam::DVec3,
@@ -116,18 +115,12 @@ fn totally_reflected<S: Real>(
             t!("check-verdict-tir-right"),
         );
     }
-    (
-        false,
-        None,
-        t!("check-verdict-tir-but-refracted",
-            k = decimal(&format!("{:.4}", r.k.to_f64()))
-        ),
-    )
+    let k = decimal(&format!("{:.4}", r.k.to_f64()));
+    (false, None, t!("check-verdict-tir-but-refracted", k = k))
 }
 
 /// A finite T for a ray that refracts: the candidate it matches or why it matches none, with a
 /// note when it is not unit length.
-#[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
 fn refracted<S: Real>(
     incidence: &Incidence<S>,
     r: &refraction_kernel::Refraction<S>,
@@ -139,12 +132,8 @@ fn refracted<S: Real>(
     }
     let unit_note = ((length - 1.0).abs() > LENGTH_TOLERANCE).then(|| {
         // The note follows the verdict's sentence, one space after it.
-        format!(
-            " {}",
-            t!("check-verdict-not-unit",
-                length = vector_text::spoken(length)
-            )
-        )
+        let written = vector_text::spoken(length);
+        format!(" {}", t!("check-verdict-not-unit", length = written))
     });
     let nearest = r
         .candidates
@@ -163,28 +152,21 @@ fn refracted<S: Real>(
 
 /// The verdict on a T within [`MATCH_ANGLE`] (`off` radians) of the candidate that breaks
 /// `rejection` (`None`: the refracted ray), and that is or is not unit length.
-#[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
 fn matched(rejection: Option<Rejection>, off: f64, not_unit: bool) -> (bool, Match, String) {
+    let off = decimal(&format!("{off:.1e}"));
     match rejection {
         None if not_unit => (
             false,
             Match::Chosen,
-            t!("check-verdict-along-refracted",
-                off = decimal(&format!("{off:.1e}"))
-            ),
+            t!("check-verdict-along-refracted", off = off),
         ),
-        None => (
-            true,
-            Match::Chosen,
-            t!("check-verdict-right", off = decimal(&format!("{off:.1e}"))),
-        ),
+        None => (true, Match::Chosen, t!("check-verdict-right", off = off)),
         Some(rejection) => (false, Match::Rejected(rejection), explain(rejection)),
     }
 }
 
 /// Why a T that matches no candidate is wrong: a swapped index ratio, a T outside the plane of
 /// incidence, or simply how far it is from the right answer.
-#[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
 fn diagnose_unmatched<S: Real>(
     incidence: &Incidence<S>,
     r: &refraction_kernel::Refraction<S>,
@@ -204,14 +186,12 @@ fn diagnose_unmatched<S: Real>(
     if plane.length() > 1e-9 && out_of_plane > MATCH_ANGLE * plane.length() {
         // Rounding can put the ratio just above 1 for a T normal to the plane.
         let off = (out_of_plane / plane.length()).min(1.0).asin();
-        return t!("check-verdict-out-of-plane",
-            off = decimal(&format!("{off:.3}"))
-        );
+        let off = decimal(&format!("{off:.3}"));
+        return t!("check-verdict-out-of-plane", off = off);
     }
     let off = r.t().map_or(f64::NAN, |t| angle(yours, wide::<S>(t)));
-    t!("check-verdict-no-candidate",
-        degrees = decimal(&format!("{:.2}", off.to_degrees()))
-    )
+    let degrees = decimal(&format!("{:.2}", off.to_degrees()));
+    t!("check-verdict-no-candidate", degrees = degrees)
 }
 
 /// Judges `yours` as the refraction asked for by `request`.
@@ -371,6 +351,40 @@ mod tests {
         let tiny = along_ray((right * 4e-320).to_array());
         assert_eq!(tiny.matches, Some(Match::Chosen), "{}", tiny.explanation);
         assert!(!tiny.explanation.contains("zero vector"));
+    }
+
+    #[test]
+    fn a_verdict_is_explained_in_the_threads_language_with_its_decimal_comma() {
+        let right = glam::DVec3::from_array(along_ray([0.4, -0.9, 0.0]).correct.unwrap());
+        let long = (right * 1.5).to_array();
+        refraction_i18n::set_locale(refraction_i18n::Locale::De);
+        let german = along_ray(long);
+        let wrong_side = along_ray([right.x, -right.y, 0.0]);
+        refraction_i18n::set_locale(refraction_i18n::Locale::En);
+        assert_eq!(german.matches, Some(Match::Chosen));
+        assert!(
+            german
+                .explanation
+                .starts_with("Dein T zeigt entlang des gebrochenen Strahls")
+                && german
+                    .explanation
+                    .contains("hat dein T die Länge 1,5, nicht 1"),
+            "{}",
+            german.explanation
+        );
+        assert!(
+            wrong_side
+                .explanation
+                .starts_with("Dein T läuft zurück in das Medium"),
+            "{}",
+            wrong_side.explanation
+        );
+        let english = along_ray(long);
+        assert!(
+            english.explanation.contains("your T has length 1.5, not 1"),
+            "{}",
+            english.explanation
+        );
     }
 
     #[test]

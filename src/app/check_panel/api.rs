@@ -149,7 +149,6 @@ pub struct Judged {
 
 /// The right call in `api`'s convention as the explorer's state, with μ = `mu` drawn by the
 /// truth's indices when they agree.
-#[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
 fn picture(
     api: Api,
     right: Args<f64>,
@@ -159,11 +158,8 @@ fn picture(
     let (low, high) = INDEX_RANGE;
     let (mu_i, mu_t) = indices(from_to, mu);
     if ![mu_i, mu_t].iter().all(|x| (low..=high).contains(x)) {
-        return Err(t!("check-picture-outside",
-            mu = spoken(mu),
-            low = spoken(low),
-            high = spoken(high)
-        ));
+        let [mu, low, high] = [mu, low, high].map(spoken);
+        return Err(t!("check-picture-outside", mu = mu, low = low, high = high));
     }
     let Args {
         incident, normal, ..
@@ -232,7 +228,6 @@ impl Judged {
 
     /// The verdict: headline, each mistake with what it means, the explanation, what the API
     /// returns, the right T and what is drawn.
-    #[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
     pub fn show(&self, ui: &mut Ui) {
         let d = &self.diagnosis;
         let api = self.call.api;
@@ -246,27 +241,31 @@ impl Judged {
             ui.label(format!("• {}: {}", code.name(), code.meaning()));
         }
         ui.label(&d.explanation);
-        ui.label(t!("check-api-returns",
-            owner = owner(api),
-            value = readable(&d.api_result)
-        ))
-        .on_hover_text(d.api_result.to_string());
+        let (owner, value) = (owner(api), readable(&d.api_result));
+        ui.label(t!("check-api-returns", owner = owner, value = value))
+            .on_hover_text(d.api_result.to_string());
         ui.label(right_t(d.t.map(spoken_vector)));
-        let n = names(api);
         let drawn = match &self.picture {
-            Ok(state) => t!("check-api-drawn",
-                incident = n.incident,
-                incident_value = spoken_vector(self.right.incident.to_array()),
-                normal = n.normal,
-                normal_value = spoken_vector(self.right.normal.to_array()),
-                eta = n.eta,
-                eta_value = spoken(self.right.eta),
-                mu_i = spoken(state.mu_i()),
-                mu_t = spoken(state.mu_t()),
-            ),
+            Ok(state) => self.drawn(state),
             Err(why) => t!("check-api-not-drawn", why = why),
         };
         ui.label(drawn);
+    }
+
+    /// What the diagram shows of the right call: its arguments and the indices drawn.
+    #[rustfmt::skip] // the t! keys stay where the translation tests find them
+    fn drawn(&self, state: &ExplorerState) -> String {
+        let n = names(self.call.api);
+        t!("check-api-drawn",
+            incident = n.incident,
+            incident_value = spoken_vector(self.right.incident.to_array()),
+            normal = n.normal,
+            normal_value = spoken_vector(self.right.normal.to_array()),
+            eta = n.eta,
+            eta_value = spoken(self.right.eta),
+            mu_i = spoken(state.mu_i()),
+            mu_t = spoken(state.mu_t())
+        )
     }
 }
 

@@ -118,21 +118,16 @@ fn shortened(text: &str) -> String {
 
 impl Table {
     /// The summary line and the rows; the record of the row clicked, if one was.
-    #[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
     fn show(&self, ui: &mut Ui, selected: &mut Option<usize>) -> Option<Record> {
-        let mut summary = t!("check-bulk-summary",
-            read_as = &self.read_as,
-            count = self.rows.len()
-        );
+        let (read_as, count) = (&self.read_as, self.rows.len());
+        let mut summary = t!("check-bulk-summary", read_as = read_as, count = count);
         let tally = self.tally.summary();
         if !tally.is_empty() {
             summary.push_str(&format!(" ({tally})"));
         }
         if self.left_out > 0 {
-            let left_out = t!("check-bulk-left-out",
-                count = self.left_out,
-                first = MAX_LINES
-            );
+            let (count, first) = (self.left_out, MAX_LINES);
+            let left_out = t!("check-bulk-left-out", count = count, first = first);
             summary.push_str(&format!("; {left_out}"));
         }
         ui.label(summary);
@@ -198,17 +193,14 @@ impl Row {
 impl Bulk {
     /// The collapsible section: the pattern, the box, the Check button and the table; the
     /// record of the row clicked, to open.
-    #[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
     pub fn show(&mut self, ui: &mut Ui, api: Api) -> Option<Record> {
         CollapsingHeader::new(t!("check-paste-lines"))
             // untranslated: egui's id of the section, the same in every language
             .id_salt("paste log lines")
             .show(ui, |ui| {
-                ui.label(t!("check-paste-lines-hint",
-                    api = api.name(),
-                    characters = MAX_PASTED_CHARS,
-                    count = MAX_LINES
-                ));
+                let (a, c, n) = (api.name(), MAX_PASTED_CHARS, MAX_LINES);
+                let hint = t!("check-paste-lines-hint", api = a, characters = c, count = n);
+                ui.label(hint);
                 ui.horizontal_wrapped(|ui| {
                     field(ui, &t!("check-pattern"), &mut self.pattern, 360.0);
                 });

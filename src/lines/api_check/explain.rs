@@ -83,7 +83,7 @@ fn discriminant(call: &Call) -> f64 {
     1.0 - m.mu * m.mu * (1.0 - cos * cos)
 }
 
-#[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
 fn argument_sentence(ctx: &Context<'_>, reading: &Reading, code: Code) -> String {
     let (call, w, n) = (ctx.call, words(ctx.call.api), names(ctx.call.api));
     let a = call.args;
@@ -140,7 +140,7 @@ fn argument_sentence(ctx: &Context<'_>, reading: &Reading, code: Code) -> String
     }
 }
 
-#[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
 fn normal_sentence(call: &Call, reading: &Reading, w: &Words) -> String {
     let (n, a) = (names(call.api), call.args);
     let flipped = spoken_vector((-a.normal).to_array());
@@ -177,7 +177,7 @@ fn normal_sentence(call: &Call, reading: &Reading, w: &Words) -> String {
     }
 }
 
-#[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
 fn detail(ctx: &Context<'_>, looks: Resemblance) -> String {
     let w = words(ctx.call.api);
     match looks {
@@ -222,7 +222,7 @@ fn returned_text(ctx: &Context<'_>) -> String {
     }
 }
 
-#[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
 fn tir_sentence(ctx: &Context<'_>, looks: Resemblance) -> String {
     let k = spoken(discriminant(ctx.call));
     let signal = match ctx.call.api {
@@ -240,17 +240,15 @@ fn tir_sentence(ctx: &Context<'_>, looks: Resemblance) -> String {
             vector = spoken_vector(v.to_array()),
             length = spoken(length(v))
         ),
-        (_, Seen::Direction(v)) => {
-            t!("check-tir-got-direction",
-                vector = spoken_vector(v.to_array())
-            )
-        }
+        (_, Seen::Direction(v)) => t!("check-tir-got-direction",
+            vector = spoken_vector(v.to_array())
+        ),
         _ => t!("check-tir-got-not-finite"),
     };
     format!("{signal} {got}")
 }
 
-#[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
 fn result_sentence(ctx: &Context<'_>, code: Code, looks: Resemblance) -> String {
     if code == Code::MissedTir {
         return tir_sentence(ctx, looks);
@@ -340,7 +338,7 @@ fn unchecked_note(call: &Call) -> String {
     }
 }
 
-#[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
 fn unexplained(ctx: &Context<'_>) -> String {
     let (call, n) = (ctx.call, names(ctx.call.api));
     let m = call.api.meaning(call.args);
@@ -374,7 +372,7 @@ fn capitalised(text: &str) -> String {
 }
 
 /// The sentence of a call that is right.
-#[rustfmt::skip] // keeps each t!("key" on one line, where the translation tests find it
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
 fn right_sentence(ctx: &Context<'_>) -> String {
     let (call, returned) = (words(ctx.call.api).call, returned_text(ctx));
     let right = match (ctx.seen, situation(ctx.call)) {
