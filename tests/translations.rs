@@ -326,6 +326,13 @@ fn interface_sources() -> Vec<PathBuf> {
         "src/lines/check.rs",
         "src/lines/api_check/explain.rs",
         "src/lines/api_check/code.rs",
+        "src/lines/api_check/call.rs",
+        "src/lines/api_check/csv.rs",
+        "src/lines/api_check/mod.rs",
+        "src/lines/api_check/pattern.rs",
+        "src/lines/api_check/record.rs",
+        "src/lines/api_check/result.rs",
+        "src/lines/vector_text.rs",
     ] {
         files.push(root().join(file));
     }

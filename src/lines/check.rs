@@ -235,8 +235,12 @@ pub fn vector_from_json(value: &Value) -> Result<[f64; 3], String> {
             }
             Ok(out)
         }
-        Value::Array(items) => Err(t!("check-t-yours-not-three", count = items.len())),
-        _ => Err(t!("check-t-yours-not-a-vector")),
+        Value::Array(items) => {
+            let n = items.len();
+            let e = t!("check-field-not-three", field = "t_yours", count = n);
+            Err(e)
+        }
+        _ => Err(t!("check-field-not-a-vector", field = "t_yours")),
     }
 }
 

@@ -25,8 +25,6 @@ check-verdict-no-candidate = Dein T passt zu keiner der vier Vorzeichenwahlen: E
 ## t_yours aus einer JSON-Zeile lesen
 
 check-t-yours-item-not-number = `t_yours[{ $index }]` muss eine Zahl oder null sein
-check-t-yours-not-three = `t_yours` muss genau 3 Zahlen haben, hat aber { $count }
-check-t-yours-not-a-vector = `t_yours` muss ein Array aus 3 Zahlen sein oder ein Text wie „0.1, -0.9, 0“
 check-t-yours-missing = das Feld `t_yours` fehlt (das T, das dein Code berechnet hat)
 
 ## Erklärungen zu einem API-Aufruf (`check --api` und das Panel): wie jede API spricht
@@ -225,3 +223,52 @@ check-column-explanation = Erklärung
 check-row-line = Zeile { $line }
 check-row-open-hover = Diesen Aufruf im Panel und im Diagramm öffnen
 check-row-error = Fehler
+
+## Die Felder eines Aufrufs, einer CSV-Zeile, eines Musters und eines Vektors lesen (auch das Panel zeigt diese Meldungen)
+
+check-field-not-three = `{ $field }` muss genau 3 Zahlen haben, hat aber { $count }
+check-field-not-a-vector = `{ $field }` muss ein Array aus 3 Zahlen sein oder ein Text wie „0.1, -0.9, 0“
+check-field-not-flag-got = `{ $field }` muss true/false oder 1/0 sein, nicht „{ $text }“
+check-field-not-number-json = `{ $field }` muss eine Zahl sein
+check-field-not-flag = `{ $field }` muss true/false oder 1/0 sein
+check-field-not-label = `{ $field }` muss ein Text oder eine Zahl sein
+check-json-not-object = erwartet wird ein JSON-Objekt mit den Feldern { $fields }
+check-unknown-field = unbekanntes Feld `{ $field }`
+check-field-not-vector = `{ $field }` muss aus 3 Zahlen bestehen
+check-field-missing = das Feld `{ $field }` fehlt ({ $what })
+check-what-normal = die Flächennormale
+check-what-incident = der Einfallsvektor
+check-what-eta = das Indexverhältnis
+check-field-not-finite = `{ $field }` muss endlich sein, ist aber { $value }
+check-field-zero-vector = `{ $field }` ist der Nullvektor
+check-field-not-positive = `{ $field }` muss eine endliche Zahl > 0 sein, ist aber { $value }
+check-from-and-to-together = `from` und `to` gehören zusammen: Gib beide oder keines an
+check-travel-not-finite = `travel` muss ein endlicher Vektor ungleich null sein
+check-result-null = `{ $field }` ist null, obwohl `{ $returned }` true ist
+check-result-missing = das Feld `{ $field }` fehlt (was der Aufruf zurückgab{ $api ->
+    [pbrt] , oder "returned": false
+    [mitsuba] , null, wenn er reflektiert hat
+   *[other] {""}
+})
+check-unknown-precision = unbekannte Genauigkeit „{ $text }“: erwartet wird "f32" oder "f64"
+check-too-large = { $value } ist zu groß für { $precision }
+check-csv-unclosed-quote = nicht geschlossenes Anführungszeichen in der CSV-Zeile
+check-csv-no-column = die CSV-Kopfzeile hat keine Spalte `{ $field }`: Sie nennt { $names }; erwartet wird { $expected }
+check-csv-partial-vector = die CSV-Kopfzeile hat nur { $count } der 3 Komponenten von `{ $field }`
+check-csv-cells = { $count ->
+    [one] { $count } Zelle, wo die Kopfzeile { $columns } Spalten hat
+   *[other] { $count } Zellen, wo die Kopfzeile { $columns } Spalten hat
+}
+check-csv-no-header = keine brauchbare CSV-Kopfzeile: { $reason }
+check-pattern-unclosed = nicht geschlossenes `{"{"}` im Muster „{ $pattern }“
+check-pattern-adjacent = zwei Felder ohne etwas dazwischen im Muster „{ $pattern }“
+check-pattern-no-field = das Muster „{ $pattern }“ nennt kein Feld
+check-pattern-unknown-field = unbekanntes Feld {"{"}{ $field }{"}"} im Muster für --api { $api }: erwartet wird {"{"}_{"}"} oder eines von { $expected }
+check-line-not-matching = die Zeile passt nicht zum Muster
+check-tally-skipped = übersprungen (passen nicht zum Muster)
+check-tally-unreadable = unlesbar
+check-tally-unexplained = unerklärt
+check-word-not-a-number = „{ $word }“ ist keine Zahl
+check-vector-expected-named = erwartet wird `{ $expected }: <Zahl>`, gefunden „{ $found }“
+check-vector-within = { $error } (in „{ $text }“)
+check-vector-not-three = erwartet werden 3 Zahlen wie `0.1, -0.9, 0` oder `vec3(0.1, -0.9, 0.0)`, gefunden { $count } in „{ $text }“

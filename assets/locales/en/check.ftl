@@ -25,8 +25,6 @@ check-verdict-no-candidate = Your T matches none of the four sign choices: it is
 ## Reading t_yours from a JSON line
 
 check-t-yours-item-not-number = `t_yours[{ $index }]` must be a number or null
-check-t-yours-not-three = `t_yours` must have exactly 3 numbers, got { $count }
-check-t-yours-not-a-vector = `t_yours` must be an array of 3 numbers or a string like "0.1, -0.9, 0"
 check-t-yours-missing = missing field `t_yours` (the T your code produced)
 
 ## Explanations of a verdict on an API call (`check --api` and the panel): how each API speaks
@@ -222,3 +220,49 @@ check-column-explanation = explanation
 check-row-line = line { $line }
 check-row-open-hover = Open this call in the panel and the diagram
 check-row-error = error
+
+## Reading the fields of a call, a CSV line, a pattern and a vector (the panel shows these too)
+
+check-field-not-three = `{ $field }` must have exactly 3 numbers, got { $count }
+check-field-not-a-vector = `{ $field }` must be an array of 3 numbers or a string like "0.1, -0.9, 0"
+check-field-not-flag-got = `{ $field }` must be true/false or 1/0, got "{ $text }"
+check-field-not-number-json = `{ $field }` must be a number
+check-field-not-flag = `{ $field }` must be true/false or 1/0
+check-field-not-label = `{ $field }` must be a string or a number
+check-json-not-object = expected a JSON object with the fields { $fields }
+check-unknown-field = unknown field `{ $field }`
+check-field-not-vector = `{ $field }` must be 3 numbers
+check-field-missing = missing field `{ $field }` ({ $what })
+check-what-normal = the surface normal
+check-what-incident = the incident vector
+check-what-eta = the index ratio
+check-field-not-finite = `{ $field }` must be finite, got { $value }
+check-field-zero-vector = `{ $field }` is the zero vector
+check-field-not-positive = `{ $field }` must be a finite number > 0, got { $value }
+check-from-and-to-together = `from` and `to` go together: give both or neither
+check-travel-not-finite = `travel` must be a finite non-zero vector
+check-result-null = `{ $field }` is null although `{ $returned }` is true
+check-result-missing = missing field `{ $field }` (what the call returned{ $api ->
+    [pbrt] , or "returned": false
+    [mitsuba] , null when it reflected
+   *[other] {""}
+})
+check-unknown-precision = unknown precision "{ $text }": expected "f32" or "f64"
+check-too-large = { $value } is too large for { $precision }
+check-csv-unclosed-quote = unclosed quote in the CSV line
+check-csv-no-column = the CSV header has no column `{ $field }`: it names { $names }; expected { $expected }
+check-csv-partial-vector = the CSV header has only { $count } of `{ $field }`'s 3 components
+check-csv-cells = { $count } cells where the header has { $columns } columns
+check-csv-no-header = no usable CSV header: { $reason }
+check-pattern-unclosed = unclosed `{"{"}` in the pattern "{ $pattern }"
+check-pattern-adjacent = two fields with nothing between them in the pattern "{ $pattern }"
+check-pattern-no-field = the pattern "{ $pattern }" names no field
+check-pattern-unknown-field = unknown field {"{"}{ $field }{"}"} in the pattern for --api { $api }: expected {"{"}_{"}"} or one of { $expected }
+check-line-not-matching = the line does not match the pattern
+check-tally-skipped = skipped (not matching the pattern)
+check-tally-unreadable = unreadable
+check-tally-unexplained = unexplained
+check-word-not-a-number = "{ $word }" is not a number
+check-vector-expected-named = expected `{ $expected }: <number>`, found "{ $found }"
+check-vector-within = { $error } (in "{ $text }")
+check-vector-not-three = expected 3 numbers such as `0.1, -0.9, 0` or `vec3(0.1, -0.9, 0.0)`, found { $count } in "{ $text }"

@@ -25,8 +25,6 @@ check-verdict-no-candidate = Tu T no coincide con ninguna de las cuatro eleccion
 ## Lectura de t_yours en una línea JSON
 
 check-t-yours-item-not-number = `t_yours[{ $index }]` debe ser un número o null
-check-t-yours-not-three = `t_yours` debe tener exactamente 3 números, tiene { $count }
-check-t-yours-not-a-vector = `t_yours` debe ser un array de 3 números o un texto como «0.1, -0.9, 0»
 check-t-yours-missing = falta el campo `t_yours` (la T que produjo tu código)
 
 ## Explicaciones de un veredicto sobre una llamada a una API (`check --api` y el panel): cómo habla cada API
@@ -222,3 +220,52 @@ check-column-explanation = explicación
 check-row-line = línea { $line }
 check-row-open-hover = Abrir esta llamada en el panel y en el diagrama
 check-row-error = error
+
+## Lectura de los campos de una llamada, una línea CSV, un patrón y un vector (el panel también muestra estos mensajes)
+
+check-field-not-three = `{ $field }` debe tener exactamente 3 números, tiene { $count }
+check-field-not-a-vector = `{ $field }` debe ser un array de 3 números o un texto como «0.1, -0.9, 0»
+check-field-not-flag-got = `{ $field }` debe ser true/false o 1/0, no «{ $text }»
+check-field-not-number-json = `{ $field }` debe ser un número
+check-field-not-flag = `{ $field }` debe ser true/false o 1/0
+check-field-not-label = `{ $field }` debe ser un texto o un número
+check-json-not-object = se esperaba un objeto JSON con los campos { $fields }
+check-unknown-field = campo desconocido `{ $field }`
+check-field-not-vector = `{ $field }` debe ser 3 números
+check-field-missing = falta el campo `{ $field }` ({ $what })
+check-what-normal = la normal a la superficie
+check-what-incident = el vector incidente
+check-what-eta = el cociente de índices
+check-field-not-finite = `{ $field }` debe ser finito, es { $value }
+check-field-zero-vector = `{ $field }` es el vector nulo
+check-field-not-positive = `{ $field }` debe ser un número finito > 0, es { $value }
+check-from-and-to-together = `from` y `to` van juntos: indica ambos o ninguno
+check-travel-not-finite = `travel` debe ser un vector finito no nulo
+check-result-null = `{ $field }` es null aunque `{ $returned }` es true
+check-result-missing = falta el campo `{ $field }` (lo que devolvió la llamada{ $api ->
+    [pbrt] , o "returned": false
+    [mitsuba] , null cuando reflejó
+   *[other] {""}
+})
+check-unknown-precision = precisión desconocida «{ $text }»: se esperaba "f32" o "f64"
+check-too-large = { $value } es demasiado grande para { $precision }
+check-csv-unclosed-quote = comilla sin cerrar en la línea CSV
+check-csv-no-column = la cabecera CSV no tiene la columna `{ $field }`: nombra { $names }; se esperaba { $expected }
+check-csv-partial-vector = la cabecera CSV solo tiene { $count } de las 3 componentes de `{ $field }`
+check-csv-cells = { $count ->
+    [one] { $count } celda donde la cabecera tiene { $columns } columnas
+   *[other] { $count } celdas donde la cabecera tiene { $columns } columnas
+}
+check-csv-no-header = no hay cabecera CSV utilizable: { $reason }
+check-pattern-unclosed = `{"{"}` sin cerrar en el patrón «{ $pattern }»
+check-pattern-adjacent = dos campos sin nada entre ellos en el patrón «{ $pattern }»
+check-pattern-no-field = el patrón «{ $pattern }» no nombra ningún campo
+check-pattern-unknown-field = campo desconocido {"{"}{ $field }{"}"} en el patrón para --api { $api }: se esperaba {"{"}_{"}"} o uno de { $expected }
+check-line-not-matching = la línea no coincide con el patrón
+check-tally-skipped = omitidas (no coinciden con el patrón)
+check-tally-unreadable = ilegibles
+check-tally-unexplained = sin explicar
+check-word-not-a-number = «{ $word }» no es un número
+check-vector-expected-named = se esperaba `{ $expected }: <número>`, se encontró «{ $found }»
+check-vector-within = { $error } (en «{ $text }»)
+check-vector-not-three = se esperaban 3 números como `0.1, -0.9, 0` o `vec3(0.1, -0.9, 0.0)`, se encontraron { $count } en «{ $text }»

@@ -25,8 +25,6 @@ check-verdict-no-candidate = Ton T ne correspond à aucun des quatre choix de si
 ## Lecture de t_yours dans une ligne JSON
 
 check-t-yours-item-not-number = `t_yours[{ $index }]` doit être un nombre ou null
-check-t-yours-not-three = `t_yours` doit avoir exactement 3 nombres, il en a { $count }
-check-t-yours-not-a-vector = `t_yours` doit être un tableau de 3 nombres ou un texte comme « 0.1, -0.9, 0 »
 check-t-yours-missing = champ `t_yours` manquant (le T produit par ton code)
 
 ## Explications d’un verdict sur un appel d’API (`check --api` et le panneau) : comment chaque API s’exprime
@@ -222,3 +220,52 @@ check-column-explanation = explication
 check-row-line = ligne { $line }
 check-row-open-hover = Ouvrir cet appel dans le panneau et le diagramme
 check-row-error = erreur
+
+## Lecture des champs d’un appel, d’une ligne CSV, d’un motif et d’un vecteur (le panneau affiche aussi ces messages)
+
+check-field-not-three = `{ $field }` doit avoir exactement 3 nombres, il en a { $count }
+check-field-not-a-vector = `{ $field }` doit être un tableau de 3 nombres ou un texte comme « 0.1, -0.9, 0 »
+check-field-not-flag-got = `{ $field }` doit valoir true/false ou 1/0, pas « { $text } »
+check-field-not-number-json = `{ $field }` doit être un nombre
+check-field-not-flag = `{ $field }` doit valoir true/false ou 1/0
+check-field-not-label = `{ $field }` doit être un texte ou un nombre
+check-json-not-object = un objet JSON avec les champs { $fields } est attendu
+check-unknown-field = champ inconnu `{ $field }`
+check-field-not-vector = `{ $field }` doit être 3 nombres
+check-field-missing = champ `{ $field }` manquant ({ $what })
+check-what-normal = la normale à la surface
+check-what-incident = le vecteur incident
+check-what-eta = le rapport des indices
+check-field-not-finite = `{ $field }` doit être fini, il vaut { $value }
+check-field-zero-vector = `{ $field }` est le vecteur nul
+check-field-not-positive = `{ $field }` doit être un nombre fini > 0, il vaut { $value }
+check-from-and-to-together = `from` et `to` vont ensemble : donne les deux ou aucun
+check-travel-not-finite = `travel` doit être un vecteur fini non nul
+check-result-null = `{ $field }` est null alors que `{ $returned }` vaut true
+check-result-missing = champ `{ $field }` manquant (ce que l’appel a renvoyé{ $api ->
+    [pbrt] , ou "returned": false
+    [mitsuba] , null s’il a réfléchi
+   *[other] {""}
+})
+check-unknown-precision = précision inconnue « { $text } » : "f32" ou "f64" attendu
+check-too-large = { $value } est trop grand pour { $precision }
+check-csv-unclosed-quote = guillemet non fermé dans la ligne CSV
+check-csv-no-column = l’en-tête CSV n’a pas de colonne `{ $field }` : il nomme { $names } ; attendu : { $expected }
+check-csv-partial-vector = l’en-tête CSV n’a que { $count } des 3 composantes de `{ $field }`
+check-csv-cells = { $count ->
+    [one] { $count } cellule là où l’en-tête a { $columns } colonnes
+   *[other] { $count } cellules là où l’en-tête a { $columns } colonnes
+}
+check-csv-no-header = aucun en-tête CSV utilisable : { $reason }
+check-pattern-unclosed = `{"{"}` non fermé dans le motif « { $pattern } »
+check-pattern-adjacent = deux champs sans rien entre eux dans le motif « { $pattern } »
+check-pattern-no-field = le motif « { $pattern } » ne nomme aucun champ
+check-pattern-unknown-field = champ inconnu {"{"}{ $field }{"}"} dans le motif pour --api { $api } : {"{"}_{"}"} ou l’un de { $expected } attendu
+check-line-not-matching = la ligne ne correspond pas au motif
+check-tally-skipped = ignorées (ne correspondent pas au motif)
+check-tally-unreadable = illisibles
+check-tally-unexplained = inexpliquées
+check-word-not-a-number = « { $word } » n’est pas un nombre
+check-vector-expected-named = `{ $expected }: <nombre>` attendu, « { $found } » trouvé
+check-vector-within = { $error } (dans « { $text } »)
+check-vector-not-three = 3 nombres attendus, comme `0.1, -0.9, 0` ou `vec3(0.1, -0.9, 0.0)`, { $count } trouvés dans « { $text } »

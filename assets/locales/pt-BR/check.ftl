@@ -25,8 +25,6 @@ check-verdict-no-candidate = Seu T não corresponde a nenhuma das quatro escolha
 ## Leitura de t_yours numa linha JSON
 
 check-t-yours-item-not-number = `t_yours[{ $index }]` deve ser um número ou null
-check-t-yours-not-three = `t_yours` deve ter exatamente 3 números, tem { $count }
-check-t-yours-not-a-vector = `t_yours` deve ser um array de 3 números ou um texto como “0.1, -0.9, 0”
 check-t-yours-missing = falta o campo `t_yours` (o T que seu código produziu)
 
 ## Explicações de um veredicto sobre uma chamada de API (`check --api` e o painel): como cada API fala
@@ -222,3 +220,52 @@ check-column-explanation = explicação
 check-row-line = linha { $line }
 check-row-open-hover = Abrir esta chamada no painel e no diagrama
 check-row-error = erro
+
+## Leitura dos campos de uma chamada, de uma linha CSV, de um padrão e de um vetor (o painel também mostra estas mensagens)
+
+check-field-not-three = `{ $field }` deve ter exatamente 3 números, tem { $count }
+check-field-not-a-vector = `{ $field }` deve ser um array de 3 números ou um texto como “0.1, -0.9, 0”
+check-field-not-flag-got = `{ $field }` deve ser true/false ou 1/0, não “{ $text }”
+check-field-not-number-json = `{ $field }` deve ser um número
+check-field-not-flag = `{ $field }` deve ser true/false ou 1/0
+check-field-not-label = `{ $field }` deve ser um texto ou um número
+check-json-not-object = esperava-se um objeto JSON com os campos { $fields }
+check-unknown-field = campo desconhecido `{ $field }`
+check-field-not-vector = `{ $field }` deve ser 3 números
+check-field-missing = falta o campo `{ $field }` ({ $what })
+check-what-normal = a normal à superfície
+check-what-incident = o vetor incidente
+check-what-eta = a razão dos índices
+check-field-not-finite = `{ $field }` deve ser finito, é { $value }
+check-field-zero-vector = `{ $field }` é o vetor nulo
+check-field-not-positive = `{ $field }` deve ser um número finito > 0, é { $value }
+check-from-and-to-together = `from` e `to` andam juntos: informe os dois ou nenhum
+check-travel-not-finite = `travel` deve ser um vetor finito não nulo
+check-result-null = `{ $field }` é null, embora `{ $returned }` seja true
+check-result-missing = falta o campo `{ $field }` (o que a chamada devolveu{ $api ->
+    [pbrt] , ou "returned": false
+    [mitsuba] , null quando refletiu
+   *[other] {""}
+})
+check-unknown-precision = precisão desconhecida “{ $text }”: esperava-se "f32" ou "f64"
+check-too-large = { $value } é grande demais para { $precision }
+check-csv-unclosed-quote = aspas não fechadas na linha CSV
+check-csv-no-column = o cabeçalho CSV não tem a coluna `{ $field }`: ele nomeia { $names }; esperava-se { $expected }
+check-csv-partial-vector = o cabeçalho CSV tem só { $count } das 3 componentes de `{ $field }`
+check-csv-cells = { $count ->
+    [one] { $count } célula onde o cabeçalho tem { $columns } colunas
+   *[other] { $count } células onde o cabeçalho tem { $columns } colunas
+}
+check-csv-no-header = nenhum cabeçalho CSV utilizável: { $reason }
+check-pattern-unclosed = `{"{"}` não fechado no padrão “{ $pattern }”
+check-pattern-adjacent = dois campos sem nada entre eles no padrão “{ $pattern }”
+check-pattern-no-field = o padrão “{ $pattern }” não nomeia nenhum campo
+check-pattern-unknown-field = campo desconhecido {"{"}{ $field }{"}"} no padrão para --api { $api }: esperava-se {"{"}_{"}"} ou um de { $expected }
+check-line-not-matching = a linha não corresponde ao padrão
+check-tally-skipped = ignoradas (não correspondem ao padrão)
+check-tally-unreadable = ilegíveis
+check-tally-unexplained = sem explicação
+check-word-not-a-number = “{ $word }” não é um número
+check-vector-expected-named = esperava-se `{ $expected }: <número>`, encontrou-se “{ $found }”
+check-vector-within = { $error } (em “{ $text }”)
+check-vector-not-three = esperavam-se 3 números como `0.1, -0.9, 0` ou `vec3(0.1, -0.9, 0.0)`, encontraram-se { $count } em “{ $text }”

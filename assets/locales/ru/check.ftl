@@ -25,8 +25,6 @@ check-verdict-no-candidate = Ваш T не совпадает ни с одним
 ## Чтение t_yours из строки JSON
 
 check-t-yours-item-not-number = `t_yours[{ $index }]` должно быть числом или null
-check-t-yours-not-three = `t_yours` должно содержать ровно 3 числа, а содержит { $count }
-check-t-yours-not-a-vector = `t_yours` должно быть массивом из 3 чисел или строкой вида «0.1, -0.9, 0»
 check-t-yours-missing = нет поля `t_yours` (T, которое получил ваш код)
 
 ## Объяснения вердикта о вызове API (`check --api` и панель): как говорит каждый API
@@ -226,3 +224,54 @@ check-column-explanation = объяснение
 check-row-line = строка { $line }
 check-row-open-hover = Открыть этот вызов в панели и на диаграмме
 check-row-error = ошибка
+
+## Чтение полей вызова, строки CSV, шаблона и вектора (эти сообщения показывает и панель)
+
+check-field-not-three = `{ $field }` должно содержать ровно 3 числа, а содержит { $count }
+check-field-not-a-vector = `{ $field }` должно быть массивом из 3 чисел или строкой вида «0.1, -0.9, 0»
+check-field-not-flag-got = `{ $field }` должно быть true/false или 1/0, а не «{ $text }»
+check-field-not-number-json = `{ $field }` должно быть числом
+check-field-not-flag = `{ $field }` должно быть true/false или 1/0
+check-field-not-label = `{ $field }` должно быть строкой или числом
+check-json-not-object = ожидается объект JSON с полями { $fields }
+check-unknown-field = неизвестное поле `{ $field }`
+check-field-not-vector = `{ $field }` должно состоять из 3 чисел
+check-field-missing = нет поля `{ $field }` ({ $what })
+check-what-normal = нормаль к поверхности
+check-what-incident = падающий вектор
+check-what-eta = отношение показателей
+check-field-not-finite = `{ $field }` должно быть конечным, а равно { $value }
+check-field-zero-vector = `{ $field }` — нулевой вектор
+check-field-not-positive = `{ $field }` должно быть конечным числом > 0, а равно { $value }
+check-from-and-to-together = `from` и `to` задаются вместе: укажите оба или ни одного
+check-travel-not-finite = `travel` должен быть конечным ненулевым вектором
+check-result-null = `{ $field }` равно null, хотя `{ $returned }` равно true
+check-result-missing = нет поля `{ $field }` (что вернул вызов{ $api ->
+    [pbrt] , или "returned": false
+    [mitsuba] , null при отражении
+   *[other] {""}
+})
+check-unknown-precision = неизвестная точность «{ $text }»: ожидается "f32" или "f64"
+check-too-large = { $value } слишком велико для { $precision }
+check-csv-unclosed-quote = незакрытая кавычка в строке CSV
+check-csv-no-column = в заголовке CSV нет столбца `{ $field }`: в нём { $names }; ожидается { $expected }
+check-csv-partial-vector = в заголовке CSV есть только { $count } из 3 компонент `{ $field }`
+check-csv-cells = { $count ->
+    [one] { $count } ячейка, а в заголовке { $columns } столбцов
+    [few] { $count } ячейки, а в заголовке { $columns } столбцов
+    [many] { $count } ячеек, а в заголовке { $columns } столбцов
+   *[other] { $count } ячейки, а в заголовке { $columns } столбцов
+}
+check-csv-no-header = нет пригодного заголовка CSV: { $reason }
+check-pattern-unclosed = незакрытая `{"{"}` в шаблоне «{ $pattern }»
+check-pattern-adjacent = два поля без ничего между ними в шаблоне «{ $pattern }»
+check-pattern-no-field = шаблон «{ $pattern }» не называет ни одного поля
+check-pattern-unknown-field = неизвестное поле {"{"}{ $field }{"}"} в шаблоне для --api { $api }: ожидается {"{"}_{"}"} или одно из { $expected }
+check-line-not-matching = строка не соответствует шаблону
+check-tally-skipped = пропущено (не соответствует шаблону)
+check-tally-unreadable = не прочитано
+check-tally-unexplained = не объяснено
+check-word-not-a-number = «{ $word }» — не число
+check-vector-expected-named = ожидается `{ $expected }: <число>`, найдено «{ $found }»
+check-vector-within = { $error } (в «{ $text }»)
+check-vector-not-three = ожидаются 3 числа, например `0.1, -0.9, 0` или `vec3(0.1, -0.9, 0.0)`, найдено { $count } в «{ $text }»

@@ -8,7 +8,7 @@ use super::{JSON_LINE_START, field};
 use crate::app::paint::color;
 use crate::app::typed::error_label;
 use crate::lines::api_check::{
-    Diagnosis, Format, Options, Pattern, Record, Session, Tally, check_record,
+    Diagnosis, Format, Options, Pattern, Record, SKIPPED, Session, Tally, check_record,
 };
 use refraction_diagram::palette;
 use refraction_i18n::t;
@@ -106,6 +106,23 @@ fn judge(api: Api, pattern: &str, text: &str) -> Result<Table, String> {
     })
 }
 
+/// The tally in the language's words; the mistakes keep their codes, as the table shows them.
+fn tally_words(tally: &Tally) -> String {
+    let parts: Vec<String> = tally
+        .counts()
+        .map(|(kind, n)| {
+            let kind = match kind {
+                SKIPPED => t!("check-tally-skipped"),
+                "unreadable" => t!("check-tally-unreadable"),
+                "unexplained" => t!("check-tally-unexplained"),
+                code => code.to_owned(),
+            };
+            format!("{n} {kind}")
+        })
+        .collect();
+    parts.join(", ")
+}
+
 /// The first `SHORT_EXPLANATION` characters of `text`, cut at a word, with an ellipsis.
 fn shortened(text: &str) -> String {
     if text.chars().count() <= SHORT_EXPLANATION {
@@ -121,7 +138,7 @@ impl Table {
     fn show(&self, ui: &mut Ui, selected: &mut Option<usize>) -> Option<Record> {
         let (read_as, count) = (&self.read_as, self.rows.len());
         let mut summary = t!("check-bulk-summary", read_as = read_as, count = count);
-        let tally = self.tally.summary();
+        let tally = tally_words(&self.tally);
         if !tally.is_empty() {
             summary.push_str(&format!(" ({tally})"));
         }
