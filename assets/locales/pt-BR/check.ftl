@@ -29,10 +29,11 @@ check-t-yours-missing = falta o campo `t_yours` (o T que seu código produziu)
 
 ## Explicações de um veredicto sobre uma chamada de API (`check --api` e o painel): como cada API fala
 
+# Fica depois de “No …” (“No GLSL”, “No livro”).
 check-api-owner = { $api ->
     [glsl] GLSL
     [pbrt] pbrt
-    [rtiow] o livro
+    [rtiow] livro
    *[mitsuba] Mitsuba
 }
 check-api-call = { $api ->
