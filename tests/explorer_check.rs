@@ -454,3 +454,38 @@ fn the_panel_reads_at_13_px_and_leaves_the_diagram_its_room_at_1280_by_720() {
         }
     }
 }
+
+#[test]
+fn check_my_t_gives_its_verdict_in_german_with_decimal_commas() {
+    use refraction_i18n::Locale;
+    use refraction_kernel::Rejection;
+    let mut h = harness(ExplorerState::default());
+    // The tool is opened by its English name (another area's words), then the window speaks
+    // German: the language is the thread's, read every frame.
+    click(&mut h, "✔ Check my T");
+    refraction_i18n::set_locale(Locale::De);
+    h.run();
+    let r = h.state().state().refraction().clone();
+    let wrong_side = r
+        .candidates
+        .iter()
+        .find(|c| c.rejection == Some(Rejection::WrongSide))
+        .unwrap()
+        .t;
+    type_into(&mut h, "Dein T", &vector_text(wrong_side));
+    let headline = h
+        .query_by_label("✖ Dein T ist: falsche Seite (die andere Wurzel für b)")
+        .is_some();
+    let explained = h
+        .query_by_label_contains("Dein T läuft zurück in das Medium")
+        .is_some();
+    let right = format!(
+        "Das richtige T = {}",
+        refraction_diagram::numbers::vector(r.t().unwrap(), 4)
+    );
+    let right_shown = h.query_by_label(&right).is_some();
+    refraction_i18n::set_locale(Locale::En);
+    assert!(headline && explained, "the German verdict");
+    assert!(right.contains("0,") && right.contains("; "), "{right}");
+    assert!(right_shown, "no {right}");
+}

@@ -337,6 +337,21 @@ fn interface_sources() -> Vec<PathBuf> {
     let mut files = Vec::new();
     rust_files(&root().join("src/app"), &mut files);
     rust_files(&root().join("crates/refraction-diagram/src"), &mut files);
+    // The sentences of "Check my T" that the window shows (and `check` prints in English).
+    for file in [
+        "src/lines/check.rs",
+        "src/lines/api_check/explain.rs",
+        "src/lines/api_check/code.rs",
+        "src/lines/api_check/call.rs",
+        "src/lines/api_check/csv.rs",
+        "src/lines/api_check/mod.rs",
+        "src/lines/api_check/pattern.rs",
+        "src/lines/api_check/record.rs",
+        "src/lines/api_check/result.rs",
+        "src/lines/vector_text.rs",
+    ] {
+        files.push(root().join(file));
+    }
     files.retain(|p| !p.components().any(|c| c.as_os_str() == "snippets"));
     files
 }

@@ -7,6 +7,7 @@ use serde_json::Value;
 use crate::lines::fields;
 use crate::lines::solve::{Precision, Request};
 use crate::lines::vector_text;
+use refraction_i18n::{decimal, t};
 use refraction_kernel::{Incidence, Real, Rejection, Vector3, refract};
 
 /// Largest angle (radians) between a student's T and a candidate for them to count as the same
@@ -54,24 +55,11 @@ pub struct Verdict {
     pub correct: Option<[f64; 3]>,
 }
 
-fn explain(rejection: Rejection) -> &'static str {
+fn explain(rejection: Rejection) -> String {
     match rejection {
-        Rejection::WrongSide => {
-            "Your T goes back into the medium the ray came from: the other root for b (+ where \
-             the square root needs -). The usual cause is a normal that points along the ray, \
-             such as a sphere's outward normal where the ray leaves it, used without flipping."
-        }
-        Rejection::WrongBend => {
-            "Your T bends the wrong way: the sign of a is flipped, so it would not become the \
-             incoming ray as mu -> 1. The usual cause is mixing the conventions: W pointing back \
-             to the origin (Section 1, a = -mu) fed to the along-the-ray formula (Section 2, \
-             a = +mu), or the other way round."
-        }
-        Rejection::Reversed => {
-            "Your T is -T, pointing back where the ray came from: both signs are wrong. The \
-             usual cause is returning the direction toward the origin instead of the direction \
-             of travel, or negating W twice."
-        }
+        Rejection::WrongSide => t!("check-verdict-wrong-side"),
+        Rejection::WrongBend => t!("check-verdict-wrong-bend"),
+        Rejection::Reversed => t!("check-verdict-reversed"),
     }
 }
 
@@ -87,7 +75,7 @@ fn wide<S: Real>(v: S::Vec3) -> glam::DVec3 {
 fn verdict_in<S: Real>(incidence: &Incidence<S>, yours: [f64; 3]) -> Result<Verdict, String> {
     let r = refract(incidence).map_err(|e| e.to_string())?;
     let (ok, matches, explanation) = if yours.iter().any(|c| !c.is_finite()) {
-        (false, None, not_finite(r.is_tir()).to_owned())
+        (false, None, not_finite(r.is_tir()))
     } else if r.is_tir() {
         totally_reflected::<S>(&r, glam::DVec3::from_array(yours))
     } else {
@@ -106,13 +94,11 @@ type Judgement = (bool, Option<Match>, String);
 
 /// Why a T with NaN or infinite components is wrong, for a ray that is totally internally
 /// reflected (`tir`) or not.
-fn not_finite(tir: bool) -> &'static str {
+fn not_finite(tir: bool) -> String {
     if tir {
-        "Your T has NaN or infinite components. This ray is totally internally reflected \
-         (k < 0): your code took the square root of a negative k instead of checking k first."
+        t!("check-verdict-not-finite-tir")
     } else {
-        "Your T has NaN or infinite components although this ray refracts normally (k >= 0): \
-         look for a division by zero or an un-initialised vector."
+        t!("check-verdict-not-finite-refracts")
     }
 }
 
@@ -126,20 +112,11 @@ fn totally_reflected<S: Real>(
         return (
             true,
             Some(Match::TotalInternalReflection),
-            "Right: this ray is totally internally reflected (k < 0) and your code returned \
-             the reflection (or the zero vector GLSL uses to say so)."
-                .to_owned(),
+            t!("check-verdict-tir-right"),
         );
     }
-    (
-        false,
-        None,
-        format!(
-            "This ray is totally internally reflected (k = {:.4} < 0): there is no refracted \
-             ray, but your code returned one. Check k before taking its square root.",
-            r.k.to_f64()
-        ),
-    )
+    let k = decimal(&format!("{:.4}", r.k.to_f64()));
+    (false, None, t!("check-verdict-tir-but-refracted", k = k))
 }
 
 /// A finite T for a ray that refracts: the candidate it matches or why it matches none, with a
@@ -151,20 +128,12 @@ fn refracted<S: Real>(
 ) -> Judgement {
     let length = vector_text::length(yours);
     if length == 0.0 {
-        return (
-            false,
-            None,
-            "Your T is the zero vector, which GLSL returns for total internal reflection, but \
-             this ray refracts (k >= 0). Check the sign of k and the index ratio."
-                .to_owned(),
-        );
+        return (false, None, t!("check-verdict-zero-vector"));
     }
     let unit_note = ((length - 1.0).abs() > LENGTH_TOLERANCE).then(|| {
-        format!(
-            " Also, your T has length {}, not 1: normalise W and N before refracting \
-             (the formula assumes unit vectors) or T after.",
-            vector_text::short(length)
-        )
+        // The note follows the verdict's sentence, one space after it.
+        let written = vector_text::spoken(length);
+        format!(" {}", t!("check-verdict-not-unit", length = written))
     });
     let nearest = r
         .candidates
@@ -184,22 +153,15 @@ fn refracted<S: Real>(
 /// The verdict on a T within [`MATCH_ANGLE`] (`off` radians) of the candidate that breaks
 /// `rejection` (`None`: the refracted ray), and that is or is not unit length.
 fn matched(rejection: Option<Rejection>, off: f64, not_unit: bool) -> (bool, Match, String) {
+    let off = decimal(&format!("{off:.1e}"));
     match rejection {
         None if not_unit => (
             false,
             Match::Chosen,
-            format!("Your T points along the refracted ray (within {off:.1e} rad)."),
+            t!("check-verdict-along-refracted", off = off),
         ),
-        None => (
-            true,
-            Match::Chosen,
-            format!("Right: your T is the refracted ray (within {off:.1e} rad)."),
-        ),
-        Some(rejection) => (
-            false,
-            Match::Rejected(rejection),
-            explain(rejection).to_owned(),
-        ),
+        None => (true, Match::Chosen, t!("check-verdict-right", off = off)),
+        Some(rejection) => (false, Match::Rejected(rejection), explain(rejection)),
     }
 }
 
@@ -217,26 +179,19 @@ fn diagnose_unmatched<S: Real>(
     };
     let swapped_t = refract(&swapped).ok().and_then(|s| s.t());
     if swapped_t.is_some_and(|t| angle(yours, wide::<S>(t)) <= MATCH_ANGLE) {
-        return "Your T is the refraction with the index ratio upside down: mu must be mu_i/mu_t \
-                (the medium the ray leaves over the one it enters), and your code used mu_t/mu_i."
-            .to_owned();
+        return t!("check-verdict-ratio-upside-down");
     }
     let plane = wide::<S>(r.travel).cross(wide::<S>(r.facing_normal));
     let out_of_plane = vector_text::unit(yours).dot(plane).abs();
     if plane.length() > 1e-9 && out_of_plane > MATCH_ANGLE * plane.length() {
-        return format!(
-            "Your T leaves the plane of incidence (the plane of W and N) by {:.3} rad: T must be \
-             a combination a*W + b*N of the two.",
-            // Rounding can put the ratio just above 1 for a T normal to the plane.
-            (out_of_plane / plane.length()).min(1.0).asin()
-        );
+        // Rounding can put the ratio just above 1 for a T normal to the plane.
+        let off = (out_of_plane / plane.length()).min(1.0).asin();
+        let off = decimal(&format!("{off:.3}"));
+        return t!("check-verdict-out-of-plane", off = off);
     }
     let off = r.t().map_or(f64::NAN, |t| angle(yours, wide::<S>(t)));
-    format!(
-        "Your T matches none of the four sign choices: it is {:.2} degrees from the refracted \
-         ray. Check mu, and which way W and N point.",
-        off.to_degrees()
-    )
+    let degrees = decimal(&format!("{:.2}", off.to_degrees()));
+    t!("check-verdict-no-candidate", degrees = degrees)
 }
 
 /// Judges `yours` as the refraction asked for by `request`.
@@ -273,20 +228,19 @@ pub fn vector_from_json(value: &Value) -> Result<[f64; 3], String> {
             for (i, (slot, item)) in out.iter_mut().zip(items).enumerate() {
                 *slot = match item {
                     Value::Null => f64::NAN,
-                    other => other
-                        .as_f64()
-                        .ok_or_else(|| format!("`t_yours[{i}]` must be a number or null"))?,
+                    other => other.as_f64().ok_or_else(|| {
+                        t!("check-t-yours-item-not-number", index = i.to_string())
+                    })?,
                 };
             }
             Ok(out)
         }
-        Value::Array(items) => Err(format!(
-            "`t_yours` must have exactly 3 numbers, got {}",
-            items.len()
-        )),
-        _ => Err(
-            "`t_yours` must be an array of 3 numbers or a string like \"0.1, -0.9, 0\"".to_owned(),
-        ),
+        Value::Array(items) => {
+            let n = items.len();
+            let e = t!("check-field-not-three", field = "t_yours", count = n);
+            Err(e)
+        }
+        _ => Err(t!("check-field-not-a-vector", field = "t_yours")),
     }
 }
 
@@ -310,7 +264,7 @@ pub fn parse_line(line: &str) -> Result<(Request, [f64; 3]), String> {
     let yours = fields
         .extra
         .0
-        .ok_or_else(|| "missing field `t_yours` (the T your code produced)".to_owned())
+        .ok_or_else(|| t!("check-t-yours-missing"))
         .and_then(|value| vector_from_json(&value))?;
     Ok((request, yours))
 }
@@ -401,6 +355,40 @@ mod tests {
         let tiny = along_ray((right * 4e-320).to_array());
         assert_eq!(tiny.matches, Some(Match::Chosen), "{}", tiny.explanation);
         assert!(!tiny.explanation.contains("zero vector"));
+    }
+
+    #[test]
+    fn a_verdict_is_explained_in_the_threads_language_with_its_decimal_comma() {
+        let right = glam::DVec3::from_array(along_ray([0.4, -0.9, 0.0]).correct.unwrap());
+        let long = (right * 1.5).to_array();
+        refraction_i18n::set_locale(refraction_i18n::Locale::De);
+        let german = along_ray(long);
+        let wrong_side = along_ray([right.x, -right.y, 0.0]);
+        refraction_i18n::set_locale(refraction_i18n::Locale::En);
+        assert_eq!(german.matches, Some(Match::Chosen));
+        assert!(
+            german
+                .explanation
+                .starts_with("Dein T zeigt entlang des gebrochenen Strahls")
+                && german
+                    .explanation
+                    .contains("hat dein T die Länge 1,5, nicht 1"),
+            "{}",
+            german.explanation
+        );
+        assert!(
+            wrong_side
+                .explanation
+                .starts_with("Dein T läuft zurück in das Medium"),
+            "{}",
+            wrong_side.explanation
+        );
+        let english = along_ray(long);
+        assert!(
+            english.explanation.contains("your T has length 1.5, not 1"),
+            "{}",
+            english.explanation
+        );
     }
 
     #[test]

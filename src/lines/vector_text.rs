@@ -9,6 +9,7 @@
 //! `glm::vec3(...)`, `Vec3 { x: .., y: .., z: .. }`.
 
 use glam::DVec3;
+use refraction_i18n::t;
 
 /// A parsed number and the significant digits it was written with (0 for `inf` and `nan`).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -102,7 +103,7 @@ pub fn parse_number(word: &str) -> Result<Number, String> {
                 digits: decimal_digits(mantissa),
             })
         }
-        _ => Err(format!("\"{word}\" is not a number")),
+        _ => Err(t!("check-word-not-a-number", word = word)),
     }
 }
 
@@ -153,7 +154,11 @@ fn named_components(body: &str) -> Option<Result<Vec<&str>, String>> {
         .zip(["x", "y", "z"])
         .map(|(part, expected)| match part.split_once(':') {
             Some((name, value)) if name.trim().eq_ignore_ascii_case(expected) => Ok(value.trim()),
-            _ => Err(format!("expected `{expected}: <number>`, found \"{part}\"")),
+            _ => {
+                let (x, f) = (expected, *part);
+                let e = t!("check-vector-expected-named", expected = x, found = f);
+                Err(e)
+            }
         })
         .collect::<Result<Vec<&str>, String>>();
     Some(values.map(|v| if parts.len() == 3 { v } else { parts.clone() }))
@@ -166,24 +171,22 @@ fn named_components(body: &str) -> Option<Result<Vec<&str>, String>> {
 pub fn parse_vector(text: &str) -> Result<Vector, String> {
     let trimmed = text.trim();
     let body = vector_body(trimmed.trim_end_matches([';', ',']).trim_end());
+    let within = |e: String| t!("check-vector-within", error = e, text = trimmed);
     let words: Vec<&str> = match named_components(body) {
-        Some(named) => named.map_err(|e| format!("{e} (in \"{trimmed}\")"))?,
+        Some(named) => named.map_err(within)?,
         None => body
             .split(|c: char| c == ',' || c.is_whitespace())
             .filter(|s| !s.is_empty())
             .collect(),
     };
     if words.len() != 3 {
-        return Err(format!(
-            "expected 3 numbers such as `0.1, -0.9, 0` or `vec3(0.1, -0.9, 0.0)`, found {} in \
-             \"{trimmed}\"",
-            words.len()
-        ));
+        let n = words.len();
+        return Err(t!("check-vector-not-three", count = n, text = trimmed));
     }
     let mut value = [0.0; 3];
     let mut digits = 0;
     for (slot, word) in value.iter_mut().zip(&words) {
-        let number = parse_number(word).map_err(|e| format!("{e} (in \"{trimmed}\")"))?;
+        let number = parse_number(word).map_err(within)?;
         *slot = number.value;
         digits = digits.max(number.digits);
     }
@@ -192,6 +195,7 @@ pub fn parse_vector(text: &str) -> Result<Vector, String> {
 
 /// What an explanation says for a number that is not finite: words, never `NaN` or `inf`
 /// written as if they were numbers.
+// untranslated: the words of `short`, for the command line's text; `spoken` translates them
 const NOT_FINITE: &str = "not finite (NaN or infinite)";
 
 /// `x` with 6 significant digits and no trailing zeros, as C's `%g` prints it (`0.666667`,
@@ -231,7 +235,33 @@ pub fn short_vector(v: [f64; 3]) -> String {
     if v.iter().all(|x| x.is_finite()) {
         format!("({}, {}, {})", short(v[0]), short(v[1]), short(v[2]))
     } else {
+        // untranslated: the words of `short_vector`, for the command line's text
         "a vector that is not finite (NaN or infinite components)".to_owned()
+    }
+}
+
+/// [`short`] for a sentence a user reads: the language's decimal separator, and the language's
+/// words for a number that is not finite. Never for text that is parsed back or copied.
+#[must_use]
+pub fn spoken(x: f64) -> String {
+    if x.is_finite() {
+        refraction_i18n::decimal(&short(x))
+    } else {
+        t!("check-number-not-finite")
+    }
+}
+
+/// [`short_vector`] for a sentence a user reads: [`spoken`] components separated as the
+/// language separates a list of numbers (`(0,6; −0,8; 0)` where the decimal separator is a
+/// comma), or the language's words for a vector that is not finite.
+#[must_use]
+pub fn spoken_vector(v: [f64; 3]) -> String {
+    if v.iter().all(|x| x.is_finite()) {
+        let separator = refraction_i18n::locale().list_separator();
+        let [x, y, z] = v.map(spoken);
+        format!("({x}{separator}{y}{separator}{z})")
+    } else {
+        t!("check-vector-not-finite")
     }
 }
 

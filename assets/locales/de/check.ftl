@@ -1,1 +1,274 @@
-# check.ftl (de): filled in by the area's translation.
+# check.ftl (de): die Texte von „Mein T prüfen“: das Panel, seine Urteile und ihre Erklärungen.
+
+## Zahlen und Vektoren in Erklärungen
+
+check-number-not-finite = nicht endlich (NaN oder unendlich)
+check-vector-not-finite = ein nicht endlicher Vektor (Komponenten NaN oder unendlich)
+
+## Urteile über ein T in den Feldern dieses Projekts (auch die Erklärungen des Befehls `check`)
+
+check-verdict-wrong-side = Dein T läuft zurück in das Medium, aus dem der Strahl kam: die andere Wurzel für b (+, wo die Quadratwurzel - braucht). Meist liegt es an einer Normalen, die in Strahlrichtung zeigt, etwa der äußeren Normalen einer Kugel dort, wo der Strahl sie verlässt, die nicht umgedreht wurde.
+check-verdict-wrong-bend = Dein T wird in die falsche Richtung gebrochen: Das Vorzeichen von a ist vertauscht, sodass es für mu -> 1 nicht zum einfallenden Strahl wird. Meist sind die Konventionen vermischt: W zurück zum Ursprung (Abschnitt 1, a = -mu) in die Formel für W entlang des Strahls (Abschnitt 2, a = +mu) eingesetzt, oder umgekehrt.
+check-verdict-reversed = Dein T ist -T und zeigt dorthin zurück, woher der Strahl kam: Beide Vorzeichen sind falsch. Meist wird die Richtung zum Ursprung statt der Laufrichtung zurückgegeben, oder W wurde zweimal negiert.
+check-verdict-not-finite-tir = Dein T hat Komponenten NaN oder unendlich. Dieser Strahl wird totalreflektiert (k < 0): Dein Code hat die Wurzel aus einem negativen k gezogen, statt k vorher zu prüfen.
+check-verdict-not-finite-refracts = Dein T hat Komponenten NaN oder unendlich, obwohl dieser Strahl normal gebrochen wird (k >= 0): Suche nach einer Division durch null oder einem nicht initialisierten Vektor.
+check-verdict-tir-right = Richtig: Dieser Strahl wird totalreflektiert (k < 0), und dein Code gab die Reflexion zurück (oder den Nullvektor, mit dem GLSL das anzeigt).
+check-verdict-tir-but-refracted = Dieser Strahl wird totalreflektiert (k = { $k } < 0): Es gibt keinen gebrochenen Strahl, aber dein Code gab einen zurück. Prüfe k, bevor du die Wurzel ziehst.
+check-verdict-zero-vector = Dein T ist der Nullvektor, den GLSL bei Totalreflexion zurückgibt, aber dieser Strahl wird gebrochen (k >= 0). Prüfe das Vorzeichen von k und das Verhältnis der Brechungsindizes.
+check-verdict-not-unit = Außerdem hat dein T die Länge { $length }, nicht 1: Normiere W und N vor der Brechung (die Formel setzt Einheitsvektoren voraus) oder T danach.
+check-verdict-along-refracted = Dein T zeigt entlang des gebrochenen Strahls (auf { $off } rad genau).
+check-verdict-right = Richtig: Dein T ist der gebrochene Strahl (auf { $off } rad genau).
+check-verdict-ratio-upside-down = Dein T ist die Brechung mit umgekehrtem Indexverhältnis: mu muss mu_i/mu_t sein (das Medium, das der Strahl verlässt, durch das, in das er eintritt), und dein Code hat mu_t/mu_i verwendet.
+check-verdict-out-of-plane = Dein T verlässt die Einfallsebene (die Ebene von W und N) um { $off } rad: T muss eine Kombination a*W + b*N der beiden sein.
+check-verdict-no-candidate = Dein T passt zu keiner der vier Vorzeichenwahlen: Es liegt { $degrees } Grad neben dem gebrochenen Strahl. Prüfe mu und die Richtungen von W und N.
+
+## t_yours aus einer JSON-Zeile lesen
+
+check-t-yours-item-not-number = `t_yours[{ $index }]` muss eine Zahl oder null sein
+check-t-yours-missing = das Feld `t_yours` fehlt (das T, das dein Code berechnet hat)
+
+## Erklärungen zu einem API-Aufruf (`check --api` und das Panel): wie jede API spricht
+
+# Der Besitzer steht in „Bei … ist eta …“: RTIOW ist das Buch „Ray Tracing in One Weekend“.
+check-api-owner = { $api ->
+    [glsl] GLSL
+    [pbrt] pbrt
+    [rtiow] RTIOW
+   *[mitsuba] Mitsuba
+}
+check-api-call = { $api ->
+    [glsl] refract(I, N, eta) von GLSL
+    [pbrt] Refract(wi, n, eta) von pbrt
+    [rtiow] refract(uv, n, etai_over_etat) aus dem Buch
+   *[mitsuba] fresnel(cos_theta_i, eta) von Mitsuba mit refract
+}
+check-api-eta-means = { $api ->
+    [glsl] n_from/n_to, der Index, den der Strahl verlässt, durch den, in den er eintritt
+    [pbrt] der Index auf der Seite, von der n wegzeigt, durch den Index auf der Seite, zu der n zeigt (n_inside/n_outside bei äußerer Normale)
+    [rtiow] etai/etat = n_from/n_to (1/refraction_index auf einer Vorderseite, refraction_index auf einer Rückseite)
+   *[mitsuba] int_ior/ext_ior, der Index auf der Seite, von der die Normale wegzeigt, durch den Index auf der Seite, zu der sie zeigt
+}
+check-api-incident-means = { $api ->
+    [glsl] die Richtung, in die der Strahl läuft, zur Oberfläche hin
+    [pbrt] die Richtung zurück dorthin, woher der Strahl kam (-ray.d)
+    [rtiow] die Einheitsrichtung, in die der Strahl läuft (unit_vector(r_in.direction()))
+   *[mitsuba] wi, von der Oberfläche weg entlang des Strahls zurück (-ray.d)
+}
+check-api-root-hint = { $api ->
+    [glsl] GLSL subtrahiert (eta * dot(N, I) + sqrt(k)) * N
+    [pbrt] wt nimmt (cosTheta_i / eta - cosTheta_t) * n
+    [rtiow] r_out_parallel ist -sqrt(fabs(1 - r_out_perp.length_squared())) * n
+   *[mitsuba] cos_theta_t hat das entgegengesetzte Vorzeichen von cos_theta_i
+}
+check-api-usual = { $api ->
+    [pbrt] die äußere Normale mit dem eta des Materials (n_inside/n_outside)
+    [mitsuba] die äußere Normale mit eta = int_ior/ext_ior
+   *[other] {""}
+}
+
+## Erklärungen zu einem API-Aufruf: die Bausteine
+
+check-situation-entering = beim Eintritt in das Objekt (von n = { $from } nach n = { $to })
+check-situation-leaving = beim Austritt aus dem Objekt (von n = { $from } nach n = { $to })
+check-situation-going = von n = { $from } nach n = { $to }
+# Ohne Artikel, weil sie in verschiedenen Fällen stehen („ergab …“, „… zurück“).
+check-nothing-zero-vector = Nullvektor
+check-nothing-reflection = Reflexion
+check-nothing-false-or-null = nichts (false oder null)
+check-and = und
+check-or = oder
+check-field-from-and-to = from und to (oder entering mit --inside und --outside)
+check-normal-fix-rtiow = die Normale des Trefferdatensatzes nach set_face_normal
+check-normal-inward-entering = sie zeigt ins Objekt, und der Strahl tritt ein
+check-normal-inward-leaving = sie zeigt ins Objekt, und der Strahl tritt aus
+check-looks-other-root = die andere Wurzel, mit umgekehrtem Vorzeichen der Quadratwurzel ({ $hint })
+check-looks-wrong-bend = der Anteil entlang der Oberfläche umgedreht
+check-looks-reversed = minus die Antwort der API
+check-looks-length = dieselbe Richtung mit der { $ratio }-fachen Länge: Dein Code skaliert oder normiert anders
+check-looks-reflection = die Reflexion, obwohl dieser Strahl gebrochen wird (protokolliere nur die Brechung, keine von Fresnel oder Schlick gewählte Reflexion)
+check-looks-variant = was { $call } mit { $variant } zurückgibt: Deine Implementierung tut das intern
+check-variant-eta-inverted = invertiertem eta
+check-variant-normal-flipped = umgedrehter Normale
+check-variant-incident-reversed = umgekehrtem Einfallsvektor
+check-looks-nothing = { $what }, also wird nichts durchgelassen, obwohl dieser Strahl gebrochen wird (k = { $k } >= 0)
+check-looks-not-finite = Komponenten NaN oder unendlich, obwohl dieser Strahl gebrochen wird
+check-looks-off = { $degrees } Grad daneben
+check-looks-off-unmeasurable = in keinem messbaren Winkel dazu
+check-returned-pbrt-true = true mit wt = { $wt }
+check-returned-rtiow-cannot-refract = cannot_refract (dielectric::scatter reflektiert)
+check-returned-mitsuba-reflects = F = 1 (das BSDF reflektiert immer)
+check-unchecked-mu = from und to (oder entering mit --inside und --outside), um { $eta } zu prüfen
+check-unchecked-travel = travel, um zu prüfen, wohin { $incident } zeigt
+
+## Erklärungen zu einem API-Aufruf: die Sätze
+
+check-eta-inverted = Bei { $owner } ist { $eta } { $means }: Du hast { $value } für einen Strahl { $situation } übergeben; übergib 1/{ $value } = { $inverse }.
+check-eta-inverted-this-ray = Bei { $owner } ist { $eta } { $means }: Du hast { $value } für diesen Strahl übergeben; übergib 1/{ $value } = { $inverse }.
+check-incident-reversed = Bei { $owner } ist { $incident } { $means }; deiner zeigt in die Gegenrichtung: Übergib -{ $incident } = { $reversed }.
+check-incident-reversed-travel = Bei { $owner } ist { $incident } { $means }; deiner zeigt in die Gegenrichtung (der Strahl läuft entlang { $travel }): Übergib -{ $incident } = { $reversed }.
+check-not-unit-input = { $call } setzt Einheitsvektoren { $incident } und { $normal } voraus und normiert sie nicht: |{ $incident }| = { $incident_length }, |{ $normal }| = { $normal_length }; normiere sie vorher.
+check-normal-against = { $call } braucht { $normal } entgegen { $incident } (dot({ $normal }, { $incident }) < 0) und dreht sie nicht um; bei dir ist dot({ $normal }, { $incident }) = { $dot }, wie bei einer äußeren Normalen dort, wo der Strahl das Objekt verlässt: Übergib -{ $normal } = { $flipped } ({ $fix }).
+check-normal-either-side = { $call } nimmt { $normal } auf beiden Seiten, aber { $eta } muss dazu passen: Es ist { $means }. Dein { $normal } zeigt in die andere Richtung als das, für das { $eta } = { $value } gedacht war{ $inward }; übergib -{ $normal } = { $flipped } mit demselben { $eta } (oder behalte { $normal } und übergib 1/{ $eta }).
+check-tir-glsl = Das refract von GLSL gibt hier den Nullvektor zurück (k = { $k } < 0: Totalreflexion); prüfe darauf und reflektiere stattdessen.
+check-tir-pbrt = Das Refract von pbrt gibt hier false zurück (sin2Theta_t = { $sin2 } >= 1: Totalreflexion); reflektiere stattdessen.
+check-tir-rtiow = Das cannot_refract von dielectric::scatter gilt hier (ri * sin_theta = { $sine } > 1): Das Buch reflektiert, statt refract aufzurufen.
+check-tir-mitsuba = fresnel gibt hier F = 1 zurück (cos_theta_t_sqr = { $k } < 0): Mitsuba reflektiert immer.
+check-tir-got-formula = Dein Code hat trotzdem den Vektor der Formel verwendet, { $vector } mit der Länge { $length }: kein Strahl.
+check-tir-got-direction = Dein Code gab eine Richtung zurück, { $vector }, wo es keine gibt.
+check-tir-got-not-finite = Dein Code gab Komponenten NaN oder unendlich zurück (die Wurzel aus einem negativen k oder normalize() des Nullvektors).
+check-result-differs = { $call } gibt für diese Argumente { $returned } zurück, aber der Aufruf ergab { $got }: { $detail }. Deine eigene Implementierung weicht von der API ab.
+# „Referenz“ für die optionalen Felder der Wahrheit (truth: from, to, travel, entering); bitte prüfen.
+check-ties-no-field = Kein Referenzfeld unterscheidet sie: { $call } liest beide gleich; der übliche Aufruf übergibt { $usual }.
+check-ties-give = Gib { $fields } an, um sie zu unterscheiden.
+check-ties = Ebenso möglich: stattdessen { $readings }. { $hint }
+check-unchecked = Nur gegen die eigenen Regeln der API geprüft: Gib { $missing } an.
+check-unexplained-travel = Das protokollierte { $incident } liegt { $degrees } Grad neben der Laufrichtung { $travel } dieses Strahls: Es ist nicht die Richtung dieses Strahls (auch nicht ihre Umkehrung).
+check-unexplained-eta = { $eta } = { $value } passt weder zu n_from/n_to = { $mu } noch zu dessen Kehrwert, so wie { $call } es liest: Das sind nicht die Brechungsindizes dieser Grenzfläche.
+check-unexplained = Keine Kombination von Argumentfehlern bringt diesen Aufruf in Einklang mit der angegebenen Referenz.
+check-right-tir = Richtig: { $call } zeigt hier Totalreflexion an ({ $returned }), und der Aufruf ergab { $what }.
+check-right-for-ray = Richtig: { $call } gibt für diese Argumente { $returned } zurück, ein Strahl { $situation }.
+check-right = Richtig: { $call } gibt für diese Argumente { $returned } zurück.
+
+## Die Fehler eines API-Aufrufs, je in einer Zeile
+
+check-mistake-eta-inverted = das Indexverhältnis ist für die Konvention dieser API umgekehrt
+check-mistake-incident-reversed = der Einfallsvektor wurde falsch herum übergeben
+check-mistake-normal-not-facing = die Normale liegt für diese API (oder für das übergebene eta) auf der falschen Seite
+check-mistake-not-the-api-result = das Ergebnis ist nicht das, was die API für diese Argumente zurückgibt: Deine eigene Implementierung weicht ab
+check-mistake-missed-tir = eine Richtung (oder NaN), wo die API Totalreflexion anzeigt
+check-mistake-not-unit-input = Einfallsvektor oder Normale hat nicht die Länge 1
+
+## Das Panel: die Felder dieses Projekts
+
+check-source-own = W, N, μ (dieses Projekt)
+check-code-calls = Dein Code ruft auf:
+check-convention = Konvention:
+check-convention-along-ray = Abschnitt 2: W entlang des Strahls
+check-convention-along-ray-about = W ist die Richtung, in die der Strahl läuft, zur Oberfläche hin (I bei GLSL, uv im Buch).
+check-convention-toward-origin = Abschnitt 1: W zum Ursprung
+check-convention-toward-origin-about = W zeigt zurück dorthin, woher der Strahl kam (wi bei pbrt und Mitsuba).
+check-convention-note = { $about } μ = μi/μt; N auf beliebiger Seite (der Kern dreht sie zum Strahl).
+check-paste-hint = Füge ein, was dein Raytracer protokolliert hat. Vektoren als 0.1, -0.9, 0 oder [0.1,-0.9,0] oder vec3(0.1, -0.9, 0.0); oder füge eine ganze JSON-Zeile mit t_yours in „Dein T“ ein.
+check-use-current-case = Aktuellen Fall übernehmen
+check-use-current-case-own-hover = W, N, μ und die Konvention aus dem Explorer übernehmen
+check-use-current-case-api-hover = Argumente und Brechungsindizes aus dem Explorer übernehmen
+check-your-t = Dein T
+check-your-t-in-error = dein T
+check-button = Prüfen
+check-field-not-number = { $field }: „{ $text }“ ist keine Zahl
+check-student-own = dein T: { $verdict }
+check-headline-own = Dein T ist: { $verdict }
+check-match-refracted = der gebrochene Strahl T
+check-match-not-unit = die Richtung von T, aber nicht Länge 1
+check-match-wrong-side = falsche Seite (die andere Wurzel für b)
+check-match-wrong-bend = falsche Brechung (das andere Vorzeichen von a)
+check-match-reversed = umgekehrt (−T: beide Vorzeichen falsch)
+check-match-tir = Totalreflexion, richtig beantwortet
+check-match-none = keiner der vier Kandidaten
+check-no-refracted-ray = Es gibt keinen gebrochenen Strahl: Totalreflexion.
+check-right-t = Das richtige T = { $t }
+check-not-drawn-changed = (Der Fall hat sich inzwischen geändert: Das Urteil wird nicht gezeichnet.)
+
+## Das Panel: ein API-Aufruf
+
+check-drawn-incident = { $api ->
+    [glsl] I (Laufrichtung)
+    [pbrt] wi (zurück zum Ursprung)
+    [rtiow] uv (Laufrichtung)
+   *[mitsuba] wi (von der Oberfläche weg)
+}
+check-drawn-about = { $api ->
+    [glsl] I ist die Richtung, in die der Strahl läuft, gezeichnet als W entlang des Strahls (Abschnitt 2). N muss I entgegen zeigen: GLSL dreht sie nicht um. eta = n_from/n_to = μi/μt. Der Nullvektor bedeutet Totalreflexion.
+    [pbrt] wi zeigt zurück dorthin, woher der Strahl kam (−ray.d), gezeichnet als W zum Ursprung (Abschnitt 1). n darf auf beiden Seiten liegen: pbrt dreht sie um und invertiert eta, wenn wi darunter liegt. eta = der Index hinter n durch den davor (μt/μi, wenn n zu wi zeigt). false bedeutet Totalreflexion.
+    [rtiow] uv ist die Einheitsrichtung, in die der Strahl läuft, gezeichnet als W entlang des Strahls (Abschnitt 2). n muss uv entgegen zeigen (front_face). etai_over_etat = n_from/n_to = μi/μt. refract prüft nicht auf Totalreflexion: Das cannot_refract des Aufrufers reflektiert.
+   *[mitsuba] wi zeigt von der Oberfläche weg, zurück entlang des Strahls, gezeichnet als W zum Ursprung (Abschnitt 1). n ist +z (das lokale Koordinatensystem), wenn leer. eta = int_ior/ext_ior, der Index hinter n durch den davor (μt/μi, wenn n zu wi zeigt). F = 1 bedeutet Totalreflexion: wo ist null.
+}
+check-convention-about = Konvention: { $about }
+check-your-call = Dein Aufruf
+check-truth = Referenz (optional)
+check-picture-outside = μ = { $mu } braucht Brechungsindizes außerhalb des Bereichs { $low }…{ $high } des Explorers
+check-student-api = dein { $result }: { $verdict }
+check-student-right = richtig
+check-student-wrong = falsch
+check-api-right-headline = Richtig: was { $signature } für diesen Strahl bedeutet
+check-api-mistakes = Fehler: { $codes }
+check-api-unexplained-headline = Durch keinen einzelnen Fehler erklärt
+check-api-returns = { $owner } gibt { $value } zurück
+check-api-drawn = Gezeichnet: der richtige Aufruf, { $incident } = { $incident_value }, { $normal } = { $normal_value }, { $eta } = { $eta_value } (μi = { $mu_i }, μt = { $mu_t }).
+check-api-not-drawn = Nicht gezeichnet: { $why }.
+check-copy-as-test = Als Unit-Test kopieren:
+
+## Das Panel: eingefügte Log-Zeilen
+
+check-paste-lines = 📋 Log-Zeilen einfügen
+check-paste-lines-hint = JSON Lines mit den Feldern von { $api }, CSV mit einer Kopfzeile, die sie nennt, oder printf-Zeilen mit einem Muster wie LOG {"{"}uv{"}"} | {"{"}n{"}"} | {"{"}etai_over_etat{"}"} | {"{"}refracted{"}"}. Höchstens { $characters } Zeichen; die ersten { $count } Zeilen werden geprüft.
+check-pattern = Muster
+check-log-lines = Log-Zeilen
+check-lines-button = Zeilen prüfen
+check-read-as-pattern = das Muster
+check-read-as-json-lines = JSON Lines
+check-read-as-csv = CSV (die erste Zeile ist die Kopfzeile)
+check-bulk-summary = Gelesen als { $read_as }: { $count ->
+    [one] { $count } Aufruf
+   *[other] { $count } Aufrufe
+}
+check-bulk-left-out = { $count ->
+    [one] { $count } Zeile nach den ersten { $first } ausgelassen
+   *[other] { $count } Zeilen nach den ersten { $first } ausgelassen
+}
+check-column-line = Zeile
+check-column-ok = ok
+check-column-mistakes = Fehler
+check-column-explanation = Erklärung
+check-row-line = Zeile { $line }
+check-row-open-hover = Diesen Aufruf im Panel und im Diagramm öffnen
+check-row-error = Fehler
+
+## Die Felder eines Aufrufs, einer CSV-Zeile, eines Musters und eines Vektors lesen (auch das Panel zeigt diese Meldungen)
+
+check-field-not-three = `{ $field }` muss genau 3 Zahlen haben, hat aber { $count }
+check-field-not-a-vector = `{ $field }` muss ein Array aus 3 Zahlen sein oder ein Text wie „0.1, -0.9, 0“
+check-field-not-flag-got = `{ $field }` muss true/false oder 1/0 sein, nicht „{ $text }“
+check-field-not-number-json = `{ $field }` muss eine Zahl sein
+check-field-not-flag = `{ $field }` muss true/false oder 1/0 sein
+check-field-not-label = `{ $field }` muss ein Text oder eine Zahl sein
+check-json-not-object = erwartet wird ein JSON-Objekt mit den Feldern { $fields }
+check-unknown-field = unbekanntes Feld `{ $field }`
+check-field-not-vector = `{ $field }` muss aus 3 Zahlen bestehen
+check-field-missing = das Feld `{ $field }` fehlt ({ $what })
+check-what-normal = die Flächennormale
+check-what-incident = der Einfallsvektor
+check-what-eta = das Indexverhältnis
+check-field-not-finite = `{ $field }` muss endlich sein, ist aber { $value }
+check-field-zero-vector = `{ $field }` ist der Nullvektor
+check-field-not-positive = `{ $field }` muss eine endliche Zahl > 0 sein, ist aber { $value }
+check-from-and-to-together = `from` und `to` gehören zusammen: Gib beide oder keines an
+check-travel-not-finite = `travel` muss ein endlicher Vektor ungleich null sein
+check-result-null = `{ $field }` ist null, obwohl `{ $returned }` true ist
+check-result-missing = das Feld `{ $field }` fehlt (was der Aufruf zurückgab{ $api ->
+    [pbrt] , oder "returned": false
+    [mitsuba] , null, wenn er reflektiert hat
+   *[other] {""}
+})
+check-unknown-precision = unbekannte Genauigkeit „{ $text }“: erwartet wird "f32" oder "f64"
+check-too-large = { $value } ist zu groß für { $precision }
+check-csv-unclosed-quote = nicht geschlossenes Anführungszeichen in der CSV-Zeile
+check-csv-no-column = die CSV-Kopfzeile hat keine Spalte `{ $field }`: Sie nennt { $names }; erwartet wird { $expected }
+check-csv-partial-vector = die CSV-Kopfzeile hat nur { $count } der 3 Komponenten von `{ $field }`
+check-csv-cells = { $count ->
+    [one] { $count } Zelle, wo die Kopfzeile { $columns } Spalten hat
+   *[other] { $count } Zellen, wo die Kopfzeile { $columns } Spalten hat
+}
+check-csv-no-header = keine brauchbare CSV-Kopfzeile: { $reason }
+check-pattern-unclosed = nicht geschlossenes `{"{"}` im Muster „{ $pattern }“
+check-pattern-adjacent = zwei Felder ohne etwas dazwischen im Muster „{ $pattern }“
+check-pattern-no-field = das Muster „{ $pattern }“ nennt kein Feld
+check-pattern-unknown-field = unbekanntes Feld {"{"}{ $field }{"}"} im Muster für --api { $api }: erwartet wird {"{"}_{"}"} oder eines von { $expected }
+check-line-not-matching = die Zeile passt nicht zum Muster
+check-tally-skipped = übersprungen (passen nicht zum Muster)
+check-tally-unreadable = unlesbar
+check-tally-unexplained = unerklärt
+check-word-not-a-number = „{ $word }“ ist keine Zahl
+check-vector-expected-named = erwartet wird `{ $expected }: <Zahl>`, gefunden „{ $found }“
+check-vector-within = { $error } (in „{ $text }“)
+check-vector-not-three = erwartet werden 3 Zahlen wie `0.1, -0.9, 0` oder `vec3(0.1, -0.9, 0.0)`, gefunden { $count } in „{ $text }“

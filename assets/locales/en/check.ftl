@@ -1,1 +1,268 @@
-# check.ftl (en): filled in by the area's translation.
+# check.ftl (en): the words of "Check my T": the panel, its verdicts and their explanations.
+
+## Numbers and vectors in explanations
+
+check-number-not-finite = not finite (NaN or infinite)
+check-vector-not-finite = a vector that is not finite (NaN or infinite components)
+
+## Verdicts on a T in this project's fields (also the `check` command's explanations)
+
+check-verdict-wrong-side = Your T goes back into the medium the ray came from: the other root for b (+ where the square root needs -). The usual cause is a normal that points along the ray, such as a sphere's outward normal where the ray leaves it, used without flipping.
+check-verdict-wrong-bend = Your T bends the wrong way: the sign of a is flipped, so it would not become the incoming ray as mu -> 1. The usual cause is mixing the conventions: W pointing back to the origin (Section 1, a = -mu) fed to the along-the-ray formula (Section 2, a = +mu), or the other way round.
+check-verdict-reversed = Your T is -T, pointing back where the ray came from: both signs are wrong. The usual cause is returning the direction toward the origin instead of the direction of travel, or negating W twice.
+check-verdict-not-finite-tir = Your T has NaN or infinite components. This ray is totally internally reflected (k < 0): your code took the square root of a negative k instead of checking k first.
+check-verdict-not-finite-refracts = Your T has NaN or infinite components although this ray refracts normally (k >= 0): look for a division by zero or an un-initialised vector.
+check-verdict-tir-right = Right: this ray is totally internally reflected (k < 0) and your code returned the reflection (or the zero vector GLSL uses to say so).
+check-verdict-tir-but-refracted = This ray is totally internally reflected (k = { $k } < 0): there is no refracted ray, but your code returned one. Check k before taking its square root.
+check-verdict-zero-vector = Your T is the zero vector, which GLSL returns for total internal reflection, but this ray refracts (k >= 0). Check the sign of k and the index ratio.
+check-verdict-not-unit = Also, your T has length { $length }, not 1: normalise W and N before refracting (the formula assumes unit vectors) or T after.
+check-verdict-along-refracted = Your T points along the refracted ray (within { $off } rad).
+check-verdict-right = Right: your T is the refracted ray (within { $off } rad).
+check-verdict-ratio-upside-down = Your T is the refraction with the index ratio upside down: mu must be mu_i/mu_t (the medium the ray leaves over the one it enters), and your code used mu_t/mu_i.
+check-verdict-out-of-plane = Your T leaves the plane of incidence (the plane of W and N) by { $off } rad: T must be a combination a*W + b*N of the two.
+check-verdict-no-candidate = Your T matches none of the four sign choices: it is { $degrees } degrees from the refracted ray. Check mu, and which way W and N point.
+
+## Reading t_yours from a JSON line
+
+check-t-yours-item-not-number = `t_yours[{ $index }]` must be a number or null
+check-t-yours-missing = missing field `t_yours` (the T your code produced)
+
+## Explanations of a verdict on an API call (`check --api` and the panel): how each API speaks
+
+check-api-owner = { $api ->
+    [glsl] GLSL
+    [pbrt] pbrt
+    [rtiow] The book
+   *[mitsuba] Mitsuba
+}
+check-api-call = { $api ->
+    [glsl] GLSL's refract(I, N, eta)
+    [pbrt] pbrt's Refract(wi, n, eta)
+    [rtiow] the book's refract(uv, n, etai_over_etat)
+   *[mitsuba] Mitsuba's fresnel(cos_theta_i, eta) with refract
+}
+check-api-eta-means = { $api ->
+    [glsl] n_from/n_to, the index the ray leaves over the one it enters
+    [pbrt] the index on the side n points away from over the index on the side it points to (n_inside/n_outside with the outward normal)
+    [rtiow] etai/etat = n_from/n_to (1/refraction_index on a front face, refraction_index on a back face)
+   *[mitsuba] int_ior/ext_ior, the index on the side the normal points away from over the index on the side it points to
+}
+check-api-incident-means = { $api ->
+    [glsl] the direction the ray travels, toward the surface
+    [pbrt] the direction back toward where the ray came from (-ray.d)
+    [rtiow] the unit direction the ray travels (unit_vector(r_in.direction()))
+   *[mitsuba] wi, pointing away from the surface back along the ray (-ray.d)
+}
+check-api-root-hint = { $api ->
+    [glsl] GLSL subtracts (eta * dot(N, I) + sqrt(k)) * N
+    [pbrt] wt takes (cosTheta_i / eta - cosTheta_t) * n
+    [rtiow] r_out_parallel is -sqrt(fabs(1 - r_out_perp.length_squared())) * n
+   *[mitsuba] cos_theta_t has the opposite sign to cos_theta_i
+}
+check-api-usual = { $api ->
+    [pbrt] the outward normal with the material's eta (n_inside/n_outside)
+    [mitsuba] the exterior normal with eta = int_ior/ext_ior
+   *[other] {""}
+}
+
+## Explanations of a verdict on an API call: the pieces
+
+check-situation-entering = entering the object (from n = { $from } into n = { $to })
+check-situation-leaving = leaving the object (from n = { $from } into n = { $to })
+check-situation-going = going from n = { $from } into n = { $to }
+check-nothing-zero-vector = the zero vector
+check-nothing-reflection = the reflection
+check-nothing-false-or-null = nothing (false or null)
+check-and = and
+check-or = or
+check-field-from-and-to = from and to (or entering with --inside and --outside)
+check-normal-fix-rtiow = the hit record's normal after set_face_normal
+check-normal-inward-entering = it points into the object, and the ray is entering
+check-normal-inward-leaving = it points into the object, and the ray is leaving
+check-looks-other-root = the other root, with the square root's sign flipped ({ $hint })
+check-looks-wrong-bend = the part along the surface flipped
+check-looks-reversed = minus the API's answer
+check-looks-length = the same direction with { $ratio } times the length: your code scales or normalises differently
+check-looks-reflection = the reflection, although this ray refracts (log only the refraction, not a reflection chosen by Fresnel or Schlick)
+check-looks-variant = what { $call } returns with { $variant }: your implementation does that inside
+check-variant-eta-inverted = eta inverted
+check-variant-normal-flipped = the normal flipped
+check-variant-incident-reversed = the incident vector reversed
+check-looks-nothing = { $what }, which says nothing is transmitted, although this ray refracts (k = { $k } >= 0)
+check-looks-not-finite = NaN or infinite components, although this ray refracts
+check-looks-off = { $degrees } degrees from it
+check-looks-off-unmeasurable = at no angle that can be measured from it
+check-returned-pbrt-true = true with wt = { $wt }
+check-returned-rtiow-cannot-refract = cannot_refract (dielectric::scatter reflects)
+check-returned-mitsuba-reflects = F = 1 (the BSDF always reflects)
+check-unchecked-mu = from and to (or entering with --inside and --outside) to check { $eta }
+check-unchecked-travel = travel to check which way { $incident } points
+
+## Explanations of a verdict on an API call: the sentences
+
+check-eta-inverted = { $owner }'s { $eta } is { $means }: you passed { $value } for a ray { $situation }; pass 1/{ $value } = { $inverse }.
+check-eta-inverted-this-ray = { $owner }'s { $eta } is { $means }: you passed { $value } for a ray this ray; pass 1/{ $value } = { $inverse }.
+check-incident-reversed = { $owner }'s { $incident } is { $means }; yours points the other way: pass -{ $incident } = { $reversed }.
+check-incident-reversed-travel = { $owner }'s { $incident } is { $means }; yours points the other way (the ray travels along { $travel }): pass -{ $incident } = { $reversed }.
+check-not-unit-input = { $call } assumes unit { $incident } and { $normal } and does not normalise them: |{ $incident }| = { $incident_length }, |{ $normal }| = { $normal_length }; normalise them first.
+check-normal-against = { $call } needs { $normal } against { $incident } (dot({ $normal }, { $incident }) < 0) and does not flip it; yours has dot({ $normal }, { $incident }) = { $dot }, as an outward normal has where the ray leaves the object: pass -{ $normal } = { $flipped } ({ $fix }).
+check-normal-either-side = { $call } takes { $normal } on either side, but { $eta } must go with it: it is { $means }. Your { $normal } points the other way from the one { $eta } = { $value } was meant for{ $inward }; pass -{ $normal } = { $flipped } with the same { $eta } (or keep { $normal } and pass 1/{ $eta }).
+check-tir-glsl = GLSL's refract returns the zero vector here (k = { $k } < 0: total internal reflection); test for it and reflect instead.
+check-tir-pbrt = pbrt's Refract returns false here (sin2Theta_t = { $sin2 } >= 1: total internal reflection); reflect instead.
+check-tir-rtiow = dielectric::scatter's cannot_refract holds here (ri * sin_theta = { $sine } > 1): the book reflects instead of calling refract.
+check-tir-mitsuba = fresnel returns F = 1 here (cos_theta_t_sqr = { $k } < 0): Mitsuba always reflects.
+check-tir-got-formula = Your code used the formula's vector anyway, { $vector } of length { $length }: not a ray.
+check-tir-got-direction = Your code gave a direction, { $vector }, where there is none.
+check-tir-got-not-finite = Your code gave NaN or infinite components (the square root of a negative k, or normalize() of the zero vector).
+check-result-differs = { $call } returns { $returned } for these arguments, but the call gave { $got }: { $detail }. Your own implementation of it differs from the API's.
+check-ties-no-field = No truth field tells them apart: { $call } reads both alike; the usual call passes { $usual }.
+check-ties-give = Give { $fields } to tell them apart.
+check-ties = Equally possible: { $readings } instead. { $hint }
+check-unchecked = Checked against the API's own rules only: give { $missing }.
+check-unexplained-travel = The logged { $incident } is { $degrees } degrees from this ray's travel { $travel }: it is not this ray's direction (nor its reverse).
+check-unexplained-eta = { $eta } = { $value } fits neither n_from/n_to = { $mu } nor its inverse as { $call } reads it: these are not this interface's indices.
+check-unexplained = No combination of argument mistakes makes this call fit the truth given.
+check-right-tir = Right: { $call } signals total internal reflection here ({ $returned }), and the call gave { $what }.
+check-right-for-ray = Right: { $call } returns { $returned } for these arguments, a ray { $situation }.
+check-right = Right: { $call } returns { $returned } for these arguments.
+
+## The mistakes of an API call, in one line each
+
+check-mistake-eta-inverted = the index ratio upside down for this API's convention
+check-mistake-incident-reversed = the incident vector passed the wrong way round
+check-mistake-normal-not-facing = the normal on the wrong side for this API (or for the eta passed)
+check-mistake-not-the-api-result = the result is not what the API returns for these arguments: your own implementation differs
+check-mistake-missed-tir = a direction (or NaN) where the API signals total internal reflection
+check-mistake-not-unit-input = the incident vector or the normal is not unit length
+
+## The panel: this project's fields
+
+check-source-own = W, N, μ (this project)
+check-code-calls = Your code calls:
+check-convention = Convention:
+check-convention-along-ray = Section 2: W along the ray
+check-convention-along-ray-about = W is the direction the ray travels, toward the surface (GLSL's I, the book's uv).
+check-convention-toward-origin = Section 1: W toward the origin
+check-convention-toward-origin-about = W points back toward where the ray came from (pbrt's and Mitsuba's wi).
+check-convention-note = { $about } μ = μi/μt; N on either side (the kernel turns it to face the ray).
+check-paste-hint = Paste what your ray tracer logged. Vectors as 0.1, -0.9, 0 or [0.1,-0.9,0] or vec3(0.1, -0.9, 0.0); or paste a whole JSON line with t_yours into "Your T".
+check-use-current-case = Use the current case
+check-use-current-case-own-hover = Fill W, N, μ and the convention from the explorer
+check-use-current-case-api-hover = Fill the arguments and the indices from the explorer
+check-your-t = Your T
+check-your-t-in-error = your T
+check-button = Check
+check-field-not-number = { $field }: “{ $text }” is not a number
+check-student-own = your T: { $verdict }
+check-headline-own = Your T matches { $verdict }
+check-match-refracted = the refracted ray T
+check-match-not-unit = T's direction, but not unit length
+check-match-wrong-side = wrong side (the other root for b)
+check-match-wrong-bend = wrong bend (the other sign of a)
+check-match-reversed = reversed (−T: both signs wrong)
+check-match-tir = total internal reflection, answered right
+check-match-none = none of the four candidates
+check-no-refracted-ray = There is no refracted ray: total internal reflection.
+check-right-t = The right T = { $t }
+check-not-drawn-changed = (The case has changed since: the verdict is not drawn.)
+
+## The panel: an API call
+
+check-drawn-incident = { $api ->
+    [glsl] I (direction of travel)
+    [pbrt] wi (back toward the origin)
+    [rtiow] uv (direction of travel)
+   *[mitsuba] wi (away from the surface)
+}
+check-drawn-about = { $api ->
+    [glsl] I is the direction the ray travels, drawn as W along the ray (Section 2). N must face I: GLSL does not turn it. eta = n_from/n_to = μi/μt. The zero vector means total internal reflection.
+    [pbrt] wi points back toward where the ray came from (−ray.d), drawn as W toward the origin (Section 1). n may face either side: pbrt flips it and inverts eta when wi is below it. eta = the index behind n over the one in front (μt/μi with n facing wi). false means total internal reflection.
+    [rtiow] uv is the unit direction the ray travels, drawn as W along the ray (Section 2). n must face uv (front_face). etai_over_etat = n_from/n_to = μi/μt. refract has no TIR test: the caller's cannot_refract reflects.
+   *[mitsuba] wi points away from the surface, back along the ray, drawn as W toward the origin (Section 1). n is +z (the local frame) when left empty. eta = int_ior/ext_ior, the index behind n over the one in front (μt/μi with n facing wi). F = 1 means total internal reflection: wo is null.
+}
+check-convention-about = Convention: { $about }
+check-your-call = Your call
+check-truth = Truth (optional)
+check-picture-outside = μ = { $mu } needs indices outside the explorer's { $low }…{ $high }
+check-student-api = your { $result }: { $verdict }
+check-student-right = right
+check-student-wrong = wrong
+check-api-right-headline = Right: what { $signature } means for this ray
+check-api-mistakes = Mistakes: { $codes }
+check-api-unexplained-headline = Not explained by any single mistake
+check-api-returns = { $owner } returns { $value }
+check-api-drawn = Drawn: the right call, { $incident } = { $incident_value }, { $normal } = { $normal_value }, { $eta } = { $eta_value } (μi = { $mu_i }, μt = { $mu_t }).
+check-api-not-drawn = Not drawn: { $why }.
+check-copy-as-test = Copy as a unit test:
+
+## The panel: pasted log lines
+
+check-paste-lines = 📋 Paste log lines
+check-paste-lines-hint = JSON Lines of { $api }'s fields, CSV with a header naming them, or printf lines with a pattern such as LOG {"{"}uv{"}"} | {"{"}n{"}"} | {"{"}etai_over_etat{"}"} | {"{"}refracted{"}"}. At most { $characters } characters; the first { $count } lines are checked.
+check-pattern = Pattern
+check-log-lines = Log lines
+check-lines-button = Check the lines
+check-read-as-pattern = the pattern
+check-read-as-json-lines = JSON Lines
+check-read-as-csv = CSV (the first line is the header)
+check-bulk-summary = Read as { $read_as }: { $count ->
+    [one] { $count } call
+   *[other] { $count } calls
+}
+check-bulk-left-out = { $count ->
+    [one] { $count } line after the first { $first } left out
+   *[other] { $count } lines after the first { $first } left out
+}
+check-column-line = line
+check-column-ok = ok
+check-column-mistakes = mistakes
+check-column-explanation = explanation
+check-row-line = line { $line }
+check-row-open-hover = Open this call in the panel and the diagram
+check-row-error = error
+
+## Reading the fields of a call, a CSV line, a pattern and a vector (the panel shows these too)
+
+check-field-not-three = `{ $field }` must have exactly 3 numbers, got { $count }
+check-field-not-a-vector = `{ $field }` must be an array of 3 numbers or a string like "0.1, -0.9, 0"
+check-field-not-flag-got = `{ $field }` must be true/false or 1/0, got "{ $text }"
+check-field-not-number-json = `{ $field }` must be a number
+check-field-not-flag = `{ $field }` must be true/false or 1/0
+check-field-not-label = `{ $field }` must be a string or a number
+check-json-not-object = expected a JSON object with the fields { $fields }
+check-unknown-field = unknown field `{ $field }`
+check-field-not-vector = `{ $field }` must be 3 numbers
+check-field-missing = missing field `{ $field }` ({ $what })
+check-what-normal = the surface normal
+check-what-incident = the incident vector
+check-what-eta = the index ratio
+check-field-not-finite = `{ $field }` must be finite, got { $value }
+check-field-zero-vector = `{ $field }` is the zero vector
+check-field-not-positive = `{ $field }` must be a finite number > 0, got { $value }
+check-from-and-to-together = `from` and `to` go together: give both or neither
+check-travel-not-finite = `travel` must be a finite non-zero vector
+check-result-null = `{ $field }` is null although `{ $returned }` is true
+check-result-missing = missing field `{ $field }` (what the call returned{ $api ->
+    [pbrt] , or "returned": false
+    [mitsuba] , null when it reflected
+   *[other] {""}
+})
+check-unknown-precision = unknown precision "{ $text }": expected "f32" or "f64"
+check-too-large = { $value } is too large for { $precision }
+check-csv-unclosed-quote = unclosed quote in the CSV line
+check-csv-no-column = the CSV header has no column `{ $field }`: it names { $names }; expected { $expected }
+check-csv-partial-vector = the CSV header has only { $count } of `{ $field }`'s 3 components
+check-csv-cells = { $count } cells where the header has { $columns } columns
+check-csv-no-header = no usable CSV header: { $reason }
+check-pattern-unclosed = unclosed `{"{"}` in the pattern "{ $pattern }"
+check-pattern-adjacent = two fields with nothing between them in the pattern "{ $pattern }"
+check-pattern-no-field = the pattern "{ $pattern }" names no field
+check-pattern-unknown-field = unknown field {"{"}{ $field }{"}"} in the pattern for --api { $api }: expected {"{"}_{"}"} or one of { $expected }
+check-line-not-matching = the line does not match the pattern
+check-tally-skipped = skipped (not matching the pattern)
+check-tally-unreadable = unreadable
+check-tally-unexplained = unexplained
+check-word-not-a-number = "{ $word }" is not a number
+check-vector-expected-named = expected `{ $expected }: <number>`, found "{ $found }"
+check-vector-within = { $error } (in "{ $text }")
+check-vector-not-three = expected 3 numbers such as `0.1, -0.9, 0` or `vec3(0.1, -0.9, 0.0)`, found { $count } in "{ $text }"

@@ -1,1 +1,271 @@
-# check.ftl (es): filled in by the area's translation.
+# check.ftl (es): los textos de «Comprobar mi T»: el panel, sus veredictos y sus explicaciones.
+
+## Números y vectores en las explicaciones
+
+check-number-not-finite = no finito (NaN o infinito)
+check-vector-not-finite = un vector no finito (componentes NaN o infinitas)
+
+## Veredictos sobre una T en los campos de este proyecto (también las explicaciones de la orden `check`)
+
+check-verdict-wrong-side = Tu T vuelve al medio del que venía el rayo: es la otra raíz para b (+ donde la raíz cuadrada necesita -). La causa habitual es una normal que apunta en el sentido del rayo, como la normal exterior de una esfera donde el rayo sale de ella, usada sin invertirla.
+check-verdict-wrong-bend = Tu T se desvía hacia el lado equivocado: el signo de a está invertido, así que no se convertiría en el rayo incidente cuando mu -> 1. La causa habitual es mezclar las convenciones: W apuntando hacia el origen (Sección 1, a = -mu) usado en la fórmula de W a lo largo del rayo (Sección 2, a = +mu), o al revés.
+check-verdict-reversed = Tu T es -T y apunta hacia donde venía el rayo: ambos signos están mal. La causa habitual es devolver la dirección hacia el origen en lugar de la dirección de propagación, o negar W dos veces.
+check-verdict-not-finite-tir = Tu T tiene componentes NaN o infinitas. Este rayo sufre reflexión total interna (k < 0): tu código tomó la raíz cuadrada de un k negativo en lugar de comprobar k antes.
+check-verdict-not-finite-refracts = Tu T tiene componentes NaN o infinitas aunque este rayo se refracta con normalidad (k >= 0): busca una división por cero o un vector sin inicializar.
+check-verdict-tir-right = Correcto: este rayo sufre reflexión total interna (k < 0) y tu código devolvió la reflexión (o el vector nulo con el que GLSL lo indica).
+check-verdict-tir-but-refracted = Este rayo sufre reflexión total interna (k = { $k } < 0): no hay rayo refractado, pero tu código devolvió uno. Comprueba k antes de tomar su raíz cuadrada.
+check-verdict-zero-vector = Tu T es el vector nulo, que GLSL devuelve en la reflexión total interna, pero este rayo se refracta (k >= 0). Comprueba el signo de k y el cociente de índices.
+check-verdict-not-unit = Además, tu T tiene longitud { $length }, no 1: normaliza W y N antes de refractar (la fórmula supone vectores unitarios) o T después.
+check-verdict-along-refracted = Tu T apunta a lo largo del rayo refractado (con { $off } rad de diferencia como mucho).
+check-verdict-right = Correcto: tu T es el rayo refractado (con { $off } rad de diferencia como mucho).
+check-verdict-ratio-upside-down = Tu T es la refracción con el cociente de índices al revés: mu debe ser mu_i/mu_t (el medio que deja el rayo entre aquel en el que entra), y tu código usó mu_t/mu_i.
+check-verdict-out-of-plane = Tu T sale del plano de incidencia (el plano de W y N) en { $off } rad: T debe ser una combinación a*W + b*N de ambos.
+check-verdict-no-candidate = Tu T no coincide con ninguna de las cuatro elecciones de signo: está a { $degrees } grados del rayo refractado. Comprueba mu y hacia dónde apuntan W y N.
+
+## Lectura de t_yours en una línea JSON
+
+check-t-yours-item-not-number = `t_yours[{ $index }]` debe ser un número o null
+check-t-yours-missing = falta el campo `t_yours` (la T que produjo tu código)
+
+## Explicaciones de un veredicto sobre una llamada a una API (`check --api` y el panel): cómo habla cada API
+
+check-api-owner = { $api ->
+    [glsl] GLSL
+    [pbrt] pbrt
+    [rtiow] el libro
+   *[mitsuba] Mitsuba
+}
+check-api-call = { $api ->
+    [glsl] refract(I, N, eta) de GLSL
+    [pbrt] Refract(wi, n, eta) de pbrt
+    [rtiow] refract(uv, n, etai_over_etat) del libro
+   *[mitsuba] fresnel(cos_theta_i, eta) de Mitsuba con refract
+}
+check-api-eta-means = { $api ->
+    [glsl] n_from/n_to, el índice del medio que deja el rayo entre el del medio en el que entra
+    [pbrt] el índice del lado del que n se aleja entre el índice del lado hacia el que apunta (n_inside/n_outside con la normal exterior)
+    [rtiow] etai/etat = n_from/n_to (1/refraction_index en una cara frontal, refraction_index en una cara trasera)
+   *[mitsuba] int_ior/ext_ior, el índice del lado del que la normal se aleja entre el índice del lado hacia el que apunta
+}
+check-api-incident-means = { $api ->
+    [glsl] la dirección en la que viaja el rayo, hacia la superficie
+    [pbrt] la dirección de vuelta hacia donde venía el rayo (-ray.d)
+    [rtiow] la dirección unitaria en la que viaja el rayo (unit_vector(r_in.direction()))
+   *[mitsuba] wi, que se aleja de la superficie de vuelta a lo largo del rayo (-ray.d)
+}
+check-api-root-hint = { $api ->
+    [glsl] GLSL resta (eta * dot(N, I) + sqrt(k)) * N
+    [pbrt] wt toma (cosTheta_i / eta - cosTheta_t) * n
+    [rtiow] r_out_parallel es -sqrt(fabs(1 - r_out_perp.length_squared())) * n
+   *[mitsuba] cos_theta_t tiene el signo opuesto a cos_theta_i
+}
+check-api-usual = { $api ->
+    [pbrt] la normal exterior con la eta del material (n_inside/n_outside)
+    [mitsuba] la normal exterior con eta = int_ior/ext_ior
+   *[other] {""}
+}
+
+## Explicaciones de una llamada a una API: las piezas
+
+check-situation-entering = que entra en el objeto (de n = { $from } a n = { $to })
+check-situation-leaving = que sale del objeto (de n = { $from } a n = { $to })
+check-situation-going = que va de n = { $from } a n = { $to }
+check-nothing-zero-vector = el vector nulo
+check-nothing-reflection = la reflexión
+check-nothing-false-or-null = nada (false o null)
+check-and = y
+check-or = o
+check-field-from-and-to = from y to (o entering con --inside y --outside)
+check-normal-fix-rtiow = la normal del registro de impacto tras set_face_normal
+check-normal-inward-entering = apunta hacia dentro del objeto, y el rayo está entrando
+check-normal-inward-leaving = apunta hacia dentro del objeto, y el rayo está saliendo
+check-looks-other-root = la otra raíz, con el signo de la raíz cuadrada invertido ({ $hint })
+check-looks-wrong-bend = la parte a lo largo de la superficie invertida
+check-looks-reversed = la respuesta de la API con el signo cambiado
+check-looks-length = la misma dirección con { $ratio } veces la longitud: tu código escala o normaliza de otra manera
+check-looks-reflection = la reflexión, aunque este rayo se refracta (registra solo la refracción, no una reflexión elegida por Fresnel o Schlick)
+check-looks-variant = lo que devuelve { $call } con { $variant }: tu implementación hace eso por dentro
+check-variant-eta-inverted = eta invertida
+check-variant-normal-flipped = la normal invertida
+check-variant-incident-reversed = el vector incidente al revés
+check-looks-nothing = { $what }, que indica que no se transmite nada, aunque este rayo se refracta (k = { $k } >= 0)
+check-looks-not-finite = componentes NaN o infinitas, aunque este rayo se refracta
+check-looks-off = a { $degrees } grados de ella
+check-looks-off-unmeasurable = a un ángulo que no se puede medir
+check-returned-pbrt-true = true con wt = { $wt }
+check-returned-rtiow-cannot-refract = cannot_refract (dielectric::scatter refleja)
+check-returned-mitsuba-reflects = F = 1 (el BSDF siempre refleja)
+check-unchecked-mu = from y to (o entering con --inside y --outside) para comprobar { $eta }
+check-unchecked-travel = travel para comprobar hacia dónde apunta { $incident }
+
+## Explicaciones de una llamada a una API: las frases
+
+check-eta-inverted = En { $owner }, { $eta } es { $means }: pasaste { $value } para un rayo { $situation }; pasa 1/{ $value } = { $inverse }.
+check-eta-inverted-this-ray = En { $owner }, { $eta } es { $means }: pasaste { $value } para este rayo; pasa 1/{ $value } = { $inverse }.
+check-incident-reversed = En { $owner }, { $incident } es { $means }; el tuyo apunta al revés: pasa -{ $incident } = { $reversed }.
+check-incident-reversed-travel = En { $owner }, { $incident } es { $means }; el tuyo apunta al revés (el rayo viaja a lo largo de { $travel }): pasa -{ $incident } = { $reversed }.
+check-not-unit-input = { $call } supone { $incident } y { $normal } unitarios y no los normaliza: |{ $incident }| = { $incident_length }, |{ $normal }| = { $normal_length }; normalízalos antes.
+check-normal-against = { $call } necesita { $normal } opuesta a { $incident } (dot({ $normal }, { $incident }) < 0) y no la invierte; la tuya tiene dot({ $normal }, { $incident }) = { $dot }, como una normal exterior donde el rayo sale del objeto: pasa -{ $normal } = { $flipped } ({ $fix }).
+check-normal-either-side = { $call } acepta { $normal } en cualquier lado, pero { $eta } debe ir de acuerdo con ella: es { $means }. Tu { $normal } apunta al lado contrario de aquella para la que era { $eta } = { $value }{ $inward }; pasa -{ $normal } = { $flipped } con la misma { $eta } (o conserva { $normal } y pasa 1/{ $eta }).
+check-tir-glsl = El refract de GLSL devuelve aquí el vector nulo (k = { $k } < 0: reflexión total interna); compruébalo y refleja en su lugar.
+check-tir-pbrt = El Refract de pbrt devuelve aquí false (sin2Theta_t = { $sin2 } >= 1: reflexión total interna); refleja en su lugar.
+check-tir-rtiow = Aquí se cumple cannot_refract de dielectric::scatter (ri * sin_theta = { $sine } > 1): el libro refleja en lugar de llamar a refract.
+check-tir-mitsuba = fresnel devuelve aquí F = 1 (cos_theta_t_sqr = { $k } < 0): Mitsuba siempre refleja.
+check-tir-got-formula = Tu código usó de todos modos el vector de la fórmula, { $vector } de longitud { $length }: no es un rayo.
+check-tir-got-direction = Tu código dio una dirección, { $vector }, donde no hay ninguna.
+check-tir-got-not-finite = Tu código dio componentes NaN o infinitas (la raíz cuadrada de un k negativo, o normalize() del vector nulo).
+check-result-differs = { $call } devuelve { $returned } con estos argumentos, pero la llamada dio { $got }: { $detail }. Tu propia implementación difiere de la de la API.
+check-ties-no-field = Ningún campo de referencia los distingue: { $call } lee ambos igual; la llamada habitual pasa { $usual }.
+check-ties-give = Indica { $fields } para distinguirlos.
+check-ties = Igual de posible: { $readings } en su lugar. { $hint }
+check-unchecked = Comprobado solo con las reglas propias de la API: indica { $missing }.
+check-unexplained-travel = El { $incident } registrado está a { $degrees } grados de la dirección { $travel } de este rayo: no es la dirección de este rayo (ni su opuesta).
+check-unexplained-eta = { $eta } = { $value } no encaja ni con n_from/n_to = { $mu } ni con su inverso tal como lo lee { $call }: no son los índices de esta interfaz.
+check-unexplained = Ninguna combinación de errores en los argumentos hace que esta llamada encaje con la referencia dada.
+check-right-tir = Correcto: { $call } indica aquí reflexión total interna ({ $returned }), y la llamada dio { $what }.
+check-right-for-ray = Correcto: { $call } devuelve { $returned } con estos argumentos, para un rayo { $situation }.
+check-right = Correcto: { $call } devuelve { $returned } con estos argumentos.
+
+## Los errores de una llamada a una API, en una línea cada uno
+
+check-mistake-eta-inverted = el cociente de índices al revés para la convención de esta API
+check-mistake-incident-reversed = el vector incidente pasado al revés
+check-mistake-normal-not-facing = la normal en el lado equivocado para esta API (o para la eta pasada)
+check-mistake-not-the-api-result = el resultado no es lo que devuelve la API con estos argumentos: tu propia implementación difiere
+check-mistake-missed-tir = una dirección (o NaN) donde la API indica reflexión total interna
+check-mistake-not-unit-input = el vector incidente o la normal no tiene longitud unidad
+
+## El panel: los campos de este proyecto
+
+check-source-own = W, N, μ (este proyecto)
+check-code-calls = Tu código llama a:
+check-convention = Convención:
+check-convention-along-ray = Sección 2: W a lo largo del rayo
+check-convention-along-ray-about = W es la dirección en la que viaja el rayo, hacia la superficie (la I de GLSL, el uv del libro).
+check-convention-toward-origin = Sección 1: W hacia el origen
+check-convention-toward-origin-about = W apunta hacia donde venía el rayo (el wi de pbrt y de Mitsuba).
+check-convention-note = { $about } μ = μi/μt; N en cualquier lado (el núcleo la gira hacia el rayo).
+check-paste-hint = Pega lo que registró tu trazador de rayos. Vectores como 0.1, -0.9, 0 o [0.1,-0.9,0] o vec3(0.1, -0.9, 0.0); o pega una línea JSON entera con t_yours en «Tu T».
+check-use-current-case = Usar el caso actual
+check-use-current-case-own-hover = Rellenar W, N, μ y la convención desde el explorador
+check-use-current-case-api-hover = Rellenar los argumentos y los índices desde el explorador
+check-your-t = Tu T
+check-your-t-in-error = tu T
+check-button = Comprobar
+check-field-not-number = { $field }: «{ $text }» no es un número
+check-student-own = tu T: { $verdict }
+check-headline-own = Tu T coincide con { $verdict }
+check-match-refracted = el rayo refractado T
+check-match-not-unit = la dirección de T, pero sin longitud unidad
+check-match-wrong-side = lado equivocado (la otra raíz para b)
+check-match-wrong-bend = desviación equivocada (el otro signo de a)
+check-match-reversed = invertido (−T: ambos signos mal)
+check-match-tir = reflexión total interna, bien respondida
+check-match-none = ninguno de los cuatro candidatos
+check-no-refracted-ray = No hay rayo refractado: reflexión total interna.
+check-right-t = La T correcta = { $t }
+check-not-drawn-changed = (El caso ha cambiado desde entonces: el veredicto no se dibuja.)
+
+## El panel: una llamada a una API
+
+check-drawn-incident = { $api ->
+    [glsl] I (dirección de propagación)
+    [pbrt] wi (de vuelta hacia el origen)
+    [rtiow] uv (dirección de propagación)
+   *[mitsuba] wi (alejándose de la superficie)
+}
+check-drawn-about = { $api ->
+    [glsl] I es la dirección en la que viaja el rayo, dibujada como W a lo largo del rayo (Sección 2). N debe estar opuesta a I: GLSL no la gira. eta = n_from/n_to = μi/μt. El vector nulo significa reflexión total interna.
+    [pbrt] wi apunta hacia donde venía el rayo (−ray.d), dibujado como W hacia el origen (Sección 1). n puede estar en cualquier lado: pbrt la invierte e invierte eta cuando wi queda por debajo. eta = el índice detrás de n entre el de delante (μt/μi con n hacia wi). false significa reflexión total interna.
+    [rtiow] uv es la dirección unitaria en la que viaja el rayo, dibujada como W a lo largo del rayo (Sección 2). n debe estar opuesta a uv (front_face). etai_over_etat = n_from/n_to = μi/μt. refract no comprueba la reflexión total interna: la refleja cannot_refract de quien llama.
+   *[mitsuba] wi se aleja de la superficie, de vuelta a lo largo del rayo, dibujado como W hacia el origen (Sección 1). n es +z (el sistema local) si se deja vacío. eta = int_ior/ext_ior, el índice detrás de n entre el de delante (μt/μi con n hacia wi). F = 1 significa reflexión total interna: wo es null.
+}
+check-convention-about = Convención: { $about }
+check-your-call = Tu llamada
+check-truth = Referencia (opcional)
+check-picture-outside = μ = { $mu } necesita índices fuera del rango { $low }…{ $high } del explorador
+check-student-api = tu { $result }: { $verdict }
+check-student-right = correcto
+check-student-wrong = incorrecto
+check-api-right-headline = Correcto: lo que { $signature } significa para este rayo
+check-api-mistakes = Errores: { $codes }
+check-api-unexplained-headline = Ningún error por sí solo lo explica
+check-api-returns = { $owner } devuelve { $value }
+check-api-drawn = Dibujado: la llamada correcta, { $incident } = { $incident_value }, { $normal } = { $normal_value }, { $eta } = { $eta_value } (μi = { $mu_i }, μt = { $mu_t }).
+check-api-not-drawn = No dibujado: { $why }.
+check-copy-as-test = Copiar como prueba unitaria:
+
+## El panel: líneas de registro pegadas
+
+check-paste-lines = 📋 Pegar líneas de registro
+check-paste-lines-hint = JSON Lines con los campos de { $api }, CSV con una cabecera que los nombre, o líneas de printf con un patrón como LOG {"{"}uv{"}"} | {"{"}n{"}"} | {"{"}etai_over_etat{"}"} | {"{"}refracted{"}"}. Como mucho { $characters } caracteres; se comprueban las primeras { $count } líneas.
+check-pattern = Patrón
+check-log-lines = Líneas de registro
+check-lines-button = Comprobar las líneas
+check-read-as-pattern = el patrón
+check-read-as-json-lines = JSON Lines
+check-read-as-csv = CSV (la primera línea es la cabecera)
+check-bulk-summary = Leído como { $read_as }: { $count ->
+    [one] { $count } llamada
+   *[other] { $count } llamadas
+}
+check-bulk-left-out = { $count ->
+    [one] { $count } línea tras las primeras { $first } queda fuera
+   *[other] { $count } líneas tras las primeras { $first } quedan fuera
+}
+check-column-line = línea
+check-column-ok = ok
+check-column-mistakes = errores
+check-column-explanation = explicación
+check-row-line = línea { $line }
+check-row-open-hover = Abrir esta llamada en el panel y en el diagrama
+check-row-error = error
+
+## Lectura de los campos de una llamada, una línea CSV, un patrón y un vector (el panel también muestra estos mensajes)
+
+check-field-not-three = `{ $field }` debe tener exactamente 3 números, tiene { $count }
+check-field-not-a-vector = `{ $field }` debe ser un array de 3 números o un texto como «0.1, -0.9, 0»
+check-field-not-flag-got = `{ $field }` debe ser true/false o 1/0, no «{ $text }»
+check-field-not-number-json = `{ $field }` debe ser un número
+check-field-not-flag = `{ $field }` debe ser true/false o 1/0
+check-field-not-label = `{ $field }` debe ser un texto o un número
+check-json-not-object = se esperaba un objeto JSON con los campos { $fields }
+check-unknown-field = campo desconocido `{ $field }`
+check-field-not-vector = `{ $field }` debe ser 3 números
+check-field-missing = falta el campo `{ $field }` ({ $what })
+check-what-normal = la normal a la superficie
+check-what-incident = el vector incidente
+check-what-eta = el cociente de índices
+check-field-not-finite = `{ $field }` debe ser finito, es { $value }
+check-field-zero-vector = `{ $field }` es el vector nulo
+check-field-not-positive = `{ $field }` debe ser un número finito > 0, es { $value }
+check-from-and-to-together = `from` y `to` van juntos: indica ambos o ninguno
+check-travel-not-finite = `travel` debe ser un vector finito no nulo
+check-result-null = `{ $field }` es null aunque `{ $returned }` es true
+check-result-missing = falta el campo `{ $field }` (lo que devolvió la llamada{ $api ->
+    [pbrt] , o "returned": false
+    [mitsuba] , null cuando reflejó
+   *[other] {""}
+})
+check-unknown-precision = precisión desconocida «{ $text }»: se esperaba "f32" o "f64"
+check-too-large = { $value } es demasiado grande para { $precision }
+check-csv-unclosed-quote = comilla sin cerrar en la línea CSV
+check-csv-no-column = la cabecera CSV no tiene la columna `{ $field }`: nombra { $names }; se esperaba { $expected }
+check-csv-partial-vector = la cabecera CSV solo tiene { $count } de las 3 componentes de `{ $field }`
+check-csv-cells = { $count ->
+    [one] { $count } celda donde la cabecera tiene { $columns } columnas
+   *[other] { $count } celdas donde la cabecera tiene { $columns } columnas
+}
+check-csv-no-header = no hay cabecera CSV utilizable: { $reason }
+check-pattern-unclosed = `{"{"}` sin cerrar en el patrón «{ $pattern }»
+check-pattern-adjacent = dos campos sin nada entre ellos en el patrón «{ $pattern }»
+check-pattern-no-field = el patrón «{ $pattern }» no nombra ningún campo
+check-pattern-unknown-field = campo desconocido {"{"}{ $field }{"}"} en el patrón para --api { $api }: se esperaba {"{"}_{"}"} o uno de { $expected }
+check-line-not-matching = la línea no coincide con el patrón
+check-tally-skipped = omitidas (no coinciden con el patrón)
+check-tally-unreadable = ilegibles
+check-tally-unexplained = sin explicar
+check-word-not-a-number = «{ $word }» no es un número
+check-vector-expected-named = se esperaba `{ $expected }: <número>`, se encontró «{ $found }»
+check-vector-within = { $error } (en «{ $text }»)
+check-vector-not-three = se esperaban 3 números como `0.1, -0.9, 0` o `vec3(0.1, -0.9, 0.0)`, se encontraron { $count } en «{ $text }»

@@ -1,1 +1,271 @@
-# check.ftl (fr): filled in by the area's translation.
+# check.ftl (fr) : les textes de « Vérifier mon T » : le panneau, ses verdicts et leurs explications.
+
+## Nombres et vecteurs dans les explications
+
+check-number-not-finite = non fini (NaN ou infini)
+check-vector-not-finite = un vecteur non fini (composantes NaN ou infinies)
+
+## Verdicts sur un T dans les champs de ce projet (aussi les explications de la commande `check`)
+
+check-verdict-wrong-side = Ton T repart dans le milieu d’où venait le rayon : c’est l’autre racine pour b (+ là où la racine carrée demande -). La cause habituelle est une normale orientée dans le sens du rayon, comme la normale extérieure d’une sphère là où le rayon en sort, utilisée sans être retournée.
+check-verdict-wrong-bend = Ton T est dévié du mauvais côté : le signe de a est inversé, il ne redeviendrait donc pas le rayon incident quand mu -> 1. La cause habituelle est un mélange des conventions : W orienté vers l’origine (Section 1, a = -mu) donné à la formule de W le long du rayon (Section 2, a = +mu), ou l’inverse.
+check-verdict-reversed = Ton T vaut -T et pointe vers là d’où venait le rayon : les deux signes sont faux. La cause habituelle est de renvoyer la direction vers l’origine au lieu de la direction de propagation, ou d’avoir inversé W deux fois.
+check-verdict-not-finite-tir = Ton T a des composantes NaN ou infinies. Ce rayon subit une réflexion totale interne (k < 0) : ton code a pris la racine carrée d’un k négatif au lieu de tester k d’abord.
+check-verdict-not-finite-refracts = Ton T a des composantes NaN ou infinies alors que ce rayon est réfracté normalement (k >= 0) : cherche une division par zéro ou un vecteur non initialisé.
+check-verdict-tir-right = Juste : ce rayon subit une réflexion totale interne (k < 0) et ton code a renvoyé la réflexion (ou le vecteur nul par lequel GLSL l’indique).
+check-verdict-tir-but-refracted = Ce rayon subit une réflexion totale interne (k = { $k } < 0) : il n’y a pas de rayon réfracté, mais ton code en a renvoyé un. Teste k avant d’en prendre la racine carrée.
+check-verdict-zero-vector = Ton T est le vecteur nul, que GLSL renvoie en cas de réflexion totale interne, mais ce rayon est réfracté (k >= 0). Vérifie le signe de k et le rapport des indices.
+check-verdict-not-unit = De plus, ton T a pour longueur { $length }, pas 1 : normalise W et N avant la réfraction (la formule suppose des vecteurs unitaires) ou T après.
+check-verdict-along-refracted = Ton T pointe le long du rayon réfracté (à { $off } rad près).
+check-verdict-right = Juste : ton T est le rayon réfracté (à { $off } rad près).
+check-verdict-ratio-upside-down = Ton T est la réfraction avec le rapport des indices à l’envers : mu doit valoir mu_i/mu_t (le milieu que le rayon quitte sur celui où il entre), et ton code a utilisé mu_t/mu_i.
+check-verdict-out-of-plane = Ton T sort du plan d’incidence (le plan de W et N) de { $off } rad : T doit être une combinaison a*W + b*N des deux.
+check-verdict-no-candidate = Ton T ne correspond à aucun des quatre choix de signe : il est à { $degrees } degrés du rayon réfracté. Vérifie mu, et le sens de W et de N.
+
+## Lecture de t_yours dans une ligne JSON
+
+check-t-yours-item-not-number = `t_yours[{ $index }]` doit être un nombre ou null
+check-t-yours-missing = champ `t_yours` manquant (le T produit par ton code)
+
+## Explications d’un verdict sur un appel d’API (`check --api` et le panneau) : comment chaque API s’exprime
+
+check-api-owner = { $api ->
+    [glsl] GLSL
+    [pbrt] pbrt
+    [rtiow] le livre
+   *[mitsuba] Mitsuba
+}
+check-api-call = { $api ->
+    [glsl] refract(I, N, eta) de GLSL
+    [pbrt] Refract(wi, n, eta) de pbrt
+    [rtiow] refract(uv, n, etai_over_etat) du livre
+   *[mitsuba] fresnel(cos_theta_i, eta) de Mitsuba avec refract
+}
+check-api-eta-means = { $api ->
+    [glsl] n_from/n_to, l’indice du milieu que le rayon quitte sur celui du milieu où il entre
+    [pbrt] l’indice du côté opposé à n sur l’indice du côté vers lequel n pointe (n_inside/n_outside avec la normale extérieure)
+    [rtiow] etai/etat = n_from/n_to (1/refraction_index sur une face avant, refraction_index sur une face arrière)
+   *[mitsuba] int_ior/ext_ior, l’indice du côté opposé à la normale sur l’indice du côté vers lequel elle pointe
+}
+check-api-incident-means = { $api ->
+    [glsl] la direction dans laquelle le rayon se propage, vers la surface
+    [pbrt] la direction de retour vers là d’où venait le rayon (-ray.d)
+    [rtiow] la direction unitaire dans laquelle le rayon se propage (unit_vector(r_in.direction()))
+   *[mitsuba] wi, qui s’éloigne de la surface en remontant le rayon (-ray.d)
+}
+check-api-root-hint = { $api ->
+    [glsl] GLSL soustrait (eta * dot(N, I) + sqrt(k)) * N
+    [pbrt] wt prend (cosTheta_i / eta - cosTheta_t) * n
+    [rtiow] r_out_parallel vaut -sqrt(fabs(1 - r_out_perp.length_squared())) * n
+   *[mitsuba] cos_theta_t a le signe opposé à cos_theta_i
+}
+check-api-usual = { $api ->
+    [pbrt] la normale extérieure avec l’eta du matériau (n_inside/n_outside)
+    [mitsuba] la normale extérieure avec eta = int_ior/ext_ior
+   *[other] {""}
+}
+
+## Explications d’un appel d’API : les éléments
+
+check-situation-entering = qui entre dans l’objet (de n = { $from } vers n = { $to })
+check-situation-leaving = qui sort de l’objet (de n = { $from } vers n = { $to })
+check-situation-going = qui va de n = { $from } vers n = { $to }
+check-nothing-zero-vector = le vecteur nul
+check-nothing-reflection = la réflexion
+check-nothing-false-or-null = rien (false ou null)
+check-and = et
+check-or = ou
+check-field-from-and-to = from et to (ou entering avec --inside et --outside)
+check-normal-fix-rtiow = la normale de l’enregistrement d’impact après set_face_normal
+check-normal-inward-entering = elle pointe vers l’intérieur de l’objet, et le rayon entre
+check-normal-inward-leaving = elle pointe vers l’intérieur de l’objet, et le rayon sort
+check-looks-other-root = l’autre racine, avec le signe de la racine carrée inversé ({ $hint })
+check-looks-wrong-bend = la composante le long de la surface inversée
+check-looks-reversed = l’opposé de la réponse de l’API
+check-looks-length = la même direction avec { $ratio } fois la longueur : ton code met à l’échelle ou normalise autrement
+check-looks-reflection = la réflexion, alors que ce rayon est réfracté (n’enregistre que la réfraction, pas une réflexion choisie par Fresnel ou Schlick)
+check-looks-variant = ce que { $call } renvoie avec { $variant } : ton implémentation fait cela en interne
+check-variant-eta-inverted = eta inversé
+check-variant-normal-flipped = la normale retournée
+check-variant-incident-reversed = le vecteur incident inversé
+check-looks-nothing = { $what }, ce qui signifie que rien n’est transmis, alors que ce rayon est réfracté (k = { $k } >= 0)
+check-looks-not-finite = des composantes NaN ou infinies, alors que ce rayon est réfracté
+check-looks-off = à { $degrees } degrés de celle-ci
+check-looks-off-unmeasurable = à un angle impossible à mesurer
+check-returned-pbrt-true = true avec wt = { $wt }
+check-returned-rtiow-cannot-refract = cannot_refract (dielectric::scatter réfléchit)
+check-returned-mitsuba-reflects = F = 1 (la BSDF réfléchit toujours)
+check-unchecked-mu = from et to (ou entering avec --inside et --outside) pour vérifier { $eta }
+check-unchecked-travel = travel pour vérifier dans quel sens pointe { $incident }
+
+## Explications d’un appel d’API : les phrases
+
+check-eta-inverted = Dans { $owner }, { $eta } est { $means } : tu as passé { $value } pour un rayon { $situation } ; passe 1/{ $value } = { $inverse }.
+check-eta-inverted-this-ray = Dans { $owner }, { $eta } est { $means } : tu as passé { $value } pour ce rayon ; passe 1/{ $value } = { $inverse }.
+check-incident-reversed = Dans { $owner }, { $incident } est { $means } ; le tien pointe dans l’autre sens : passe -{ $incident } = { $reversed }.
+check-incident-reversed-travel = Dans { $owner }, { $incident } est { $means } ; le tien pointe dans l’autre sens (le rayon se propage selon { $travel }) : passe -{ $incident } = { $reversed }.
+check-not-unit-input = { $call } suppose { $incident } et { $normal } unitaires et ne les normalise pas : |{ $incident }| = { $incident_length }, |{ $normal }| = { $normal_length } ; normalise-les d’abord.
+check-normal-against = { $call } exige { $normal } opposée à { $incident } (dot({ $normal }, { $incident }) < 0) et ne la retourne pas ; la tienne a dot({ $normal }, { $incident }) = { $dot }, comme une normale extérieure là où le rayon sort de l’objet : passe -{ $normal } = { $flipped } ({ $fix }).
+check-normal-either-side = { $call } accepte { $normal } de chaque côté, mais { $eta } doit aller avec : c’est { $means }. Ta { $normal } pointe à l’opposé de celle pour laquelle { $eta } = { $value } était prévu{ $inward } ; passe -{ $normal } = { $flipped } avec le même { $eta } (ou garde { $normal } et passe 1/{ $eta }).
+check-tir-glsl = Le refract de GLSL renvoie ici le vecteur nul (k = { $k } < 0 : réflexion totale interne) ; teste ce cas et réfléchis à la place.
+check-tir-pbrt = Le Refract de pbrt renvoie ici false (sin2Theta_t = { $sin2 } >= 1 : réflexion totale interne) ; réfléchis à la place.
+check-tir-rtiow = Le cannot_refract de dielectric::scatter est vrai ici (ri * sin_theta = { $sine } > 1) : le livre réfléchit au lieu d’appeler refract.
+check-tir-mitsuba = fresnel renvoie ici F = 1 (cos_theta_t_sqr = { $k } < 0) : Mitsuba réfléchit toujours.
+check-tir-got-formula = Ton code a quand même utilisé le vecteur de la formule, { $vector } de longueur { $length } : ce n’est pas un rayon.
+check-tir-got-direction = Ton code a donné une direction, { $vector }, là où il n’y en a pas.
+check-tir-got-not-finite = Ton code a donné des composantes NaN ou infinies (la racine carrée d’un k négatif, ou normalize() du vecteur nul).
+check-result-differs = { $call } renvoie { $returned } pour ces arguments, mais l’appel a donné { $got } : { $detail }. Ta propre implémentation diffère de celle de l’API.
+check-ties-no-field = Aucun champ de référence ne les distingue : { $call } lit les deux de la même façon ; l’appel habituel passe { $usual }.
+check-ties-give = Donne { $fields } pour les distinguer.
+check-ties = Tout aussi possible : { $readings } à la place. { $hint }
+check-unchecked = Vérifié seulement selon les règles propres de l’API : donne { $missing }.
+check-unexplained-travel = Le { $incident } enregistré est à { $degrees } degrés de la direction { $travel } de ce rayon : ce n’est pas la direction de ce rayon (ni son opposée).
+check-unexplained-eta = { $eta } = { $value } ne correspond ni à n_from/n_to = { $mu } ni à son inverse tel que { $call } le lit : ce ne sont pas les indices de cette interface.
+check-unexplained = Aucune combinaison d’erreurs d’arguments ne fait correspondre cet appel à la référence donnée.
+check-right-tir = Juste : { $call } signale ici une réflexion totale interne ({ $returned }), et l’appel a donné { $what }.
+check-right-for-ray = Juste : { $call } renvoie { $returned } pour ces arguments, pour un rayon { $situation }.
+check-right = Juste : { $call } renvoie { $returned } pour ces arguments.
+
+## Les erreurs d’un appel d’API, une ligne chacune
+
+check-mistake-eta-inverted = le rapport des indices à l’envers pour la convention de cette API
+check-mistake-incident-reversed = le vecteur incident passé à l’envers
+check-mistake-normal-not-facing = la normale du mauvais côté pour cette API (ou pour l’eta passé)
+check-mistake-not-the-api-result = le résultat n’est pas ce que l’API renvoie pour ces arguments : ta propre implémentation diffère
+check-mistake-missed-tir = une direction (ou NaN) là où l’API signale une réflexion totale interne
+check-mistake-not-unit-input = le vecteur incident ou la normale n’est pas de longueur unité
+
+## Le panneau : les champs de ce projet
+
+check-source-own = W, N, μ (ce projet)
+check-code-calls = Ton code appelle :
+check-convention = Convention :
+check-convention-along-ray = Section 2 : W le long du rayon
+check-convention-along-ray-about = W est la direction dans laquelle le rayon se propage, vers la surface (le I de GLSL, le uv du livre).
+check-convention-toward-origin = Section 1 : W vers l’origine
+check-convention-toward-origin-about = W pointe vers là d’où venait le rayon (le wi de pbrt et de Mitsuba).
+check-convention-note = { $about } μ = μi/μt ; N d’un côté ou de l’autre (le noyau la tourne vers le rayon).
+check-paste-hint = Colle ce que ton lancer de rayons a enregistré. Vecteurs sous la forme 0.1, -0.9, 0 ou [0.1,-0.9,0] ou vec3(0.1, -0.9, 0.0) ; ou colle une ligne JSON entière avec t_yours dans « Ton T ».
+check-use-current-case = Prendre le cas actuel
+check-use-current-case-own-hover = Remplir W, N, μ et la convention depuis l’explorateur
+check-use-current-case-api-hover = Remplir les arguments et les indices depuis l’explorateur
+check-your-t = Ton T
+check-your-t-in-error = ton T
+check-button = Vérifier
+check-field-not-number = { $field } : « { $text } » n’est pas un nombre
+check-student-own = ton T : { $verdict }
+check-headline-own = Ton T correspond à : { $verdict }
+check-match-refracted = le rayon réfracté T
+check-match-not-unit = la direction de T, mais pas de longueur unité
+check-match-wrong-side = mauvais côté (l’autre racine pour b)
+check-match-wrong-bend = mauvaise déviation (l’autre signe de a)
+check-match-reversed = inversé (−T : les deux signes faux)
+check-match-tir = réflexion totale interne, bien traitée
+check-match-none = aucun des quatre candidats
+check-no-refracted-ray = Il n’y a pas de rayon réfracté : réflexion totale interne.
+check-right-t = Le bon T = { $t }
+check-not-drawn-changed = (Le cas a changé depuis : le verdict n’est pas dessiné.)
+
+## Le panneau : un appel d’API
+
+check-drawn-incident = { $api ->
+    [glsl] I (sens de propagation)
+    [pbrt] wi (retour vers l’origine)
+    [rtiow] uv (sens de propagation)
+   *[mitsuba] wi (s’éloignant de la surface)
+}
+check-drawn-about = { $api ->
+    [glsl] I est la direction dans laquelle le rayon se propage, dessinée comme W le long du rayon (Section 2). N doit être opposée à I : GLSL ne la retourne pas. eta = n_from/n_to = μi/μt. Le vecteur nul signifie réflexion totale interne.
+    [pbrt] wi pointe vers là d’où venait le rayon (−ray.d), dessiné comme W vers l’origine (Section 1). n peut être de chaque côté : pbrt la retourne et inverse eta quand wi est en dessous. eta = l’indice derrière n sur celui de devant (μt/μi avec n tournée vers wi). false signifie réflexion totale interne.
+    [rtiow] uv est la direction unitaire dans laquelle le rayon se propage, dessinée comme W le long du rayon (Section 2). n doit être opposée à uv (front_face). etai_over_etat = n_from/n_to = μi/μt. refract ne teste pas la réflexion totale interne : c’est le cannot_refract de l’appelant qui réfléchit.
+   *[mitsuba] wi s’éloigne de la surface, en remontant le rayon, dessiné comme W vers l’origine (Section 1). n vaut +z (le repère local) s’il est laissé vide. eta = int_ior/ext_ior, l’indice derrière n sur celui de devant (μt/μi avec n tournée vers wi). F = 1 signifie réflexion totale interne : wo est null.
+}
+check-convention-about = Convention : { $about }
+check-your-call = Ton appel
+check-truth = Référence (facultative)
+check-picture-outside = μ = { $mu } demande des indices hors de la plage { $low }…{ $high } de l’explorateur
+check-student-api = ton { $result } : { $verdict }
+check-student-right = juste
+check-student-wrong = faux
+check-api-right-headline = Juste : ce que { $signature } signifie pour ce rayon
+check-api-mistakes = Erreurs : { $codes }
+check-api-unexplained-headline = Aucune erreur seule ne l’explique
+check-api-returns = { $owner } renvoie { $value }
+check-api-drawn = Dessiné : le bon appel, { $incident } = { $incident_value }, { $normal } = { $normal_value }, { $eta } = { $eta_value } (μi = { $mu_i }, μt = { $mu_t }).
+check-api-not-drawn = Non dessiné : { $why }.
+check-copy-as-test = Copier comme test unitaire :
+
+## Le panneau : lignes de journal collées
+
+check-paste-lines = 📋 Coller des lignes de journal
+check-paste-lines-hint = JSON Lines avec les champs de { $api }, CSV avec un en-tête qui les nomme, ou lignes printf avec un motif comme LOG {"{"}uv{"}"} | {"{"}n{"}"} | {"{"}etai_over_etat{"}"} | {"{"}refracted{"}"}. Au plus { $characters } caractères ; les { $count } premières lignes sont vérifiées.
+check-pattern = Motif
+check-log-lines = Lignes de journal
+check-lines-button = Vérifier les lignes
+check-read-as-pattern = le motif
+check-read-as-json-lines = JSON Lines
+check-read-as-csv = CSV (la première ligne est l’en-tête)
+check-bulk-summary = Lu comme { $read_as } : { $count ->
+    [one] { $count } appel
+   *[other] { $count } appels
+}
+check-bulk-left-out = { $count ->
+    [one] { $count } ligne après les { $first } premières laissée de côté
+   *[other] { $count } lignes après les { $first } premières laissées de côté
+}
+check-column-line = ligne
+check-column-ok = ok
+check-column-mistakes = erreurs
+check-column-explanation = explication
+check-row-line = ligne { $line }
+check-row-open-hover = Ouvrir cet appel dans le panneau et le diagramme
+check-row-error = erreur
+
+## Lecture des champs d’un appel, d’une ligne CSV, d’un motif et d’un vecteur (le panneau affiche aussi ces messages)
+
+check-field-not-three = `{ $field }` doit avoir exactement 3 nombres, il en a { $count }
+check-field-not-a-vector = `{ $field }` doit être un tableau de 3 nombres ou un texte comme « 0.1, -0.9, 0 »
+check-field-not-flag-got = `{ $field }` doit valoir true/false ou 1/0, pas « { $text } »
+check-field-not-number-json = `{ $field }` doit être un nombre
+check-field-not-flag = `{ $field }` doit valoir true/false ou 1/0
+check-field-not-label = `{ $field }` doit être un texte ou un nombre
+check-json-not-object = un objet JSON avec les champs { $fields } est attendu
+check-unknown-field = champ inconnu `{ $field }`
+check-field-not-vector = `{ $field }` doit être 3 nombres
+check-field-missing = champ `{ $field }` manquant ({ $what })
+check-what-normal = la normale à la surface
+check-what-incident = le vecteur incident
+check-what-eta = le rapport des indices
+check-field-not-finite = `{ $field }` doit être fini, il vaut { $value }
+check-field-zero-vector = `{ $field }` est le vecteur nul
+check-field-not-positive = `{ $field }` doit être un nombre fini > 0, il vaut { $value }
+check-from-and-to-together = `from` et `to` vont ensemble : donne les deux ou aucun
+check-travel-not-finite = `travel` doit être un vecteur fini non nul
+check-result-null = `{ $field }` est null alors que `{ $returned }` vaut true
+check-result-missing = champ `{ $field }` manquant (ce que l’appel a renvoyé{ $api ->
+    [pbrt] , ou "returned": false
+    [mitsuba] , null s’il a réfléchi
+   *[other] {""}
+})
+check-unknown-precision = précision inconnue « { $text } » : "f32" ou "f64" attendu
+check-too-large = { $value } est trop grand pour { $precision }
+check-csv-unclosed-quote = guillemet non fermé dans la ligne CSV
+check-csv-no-column = l’en-tête CSV n’a pas de colonne `{ $field }` : il nomme { $names } ; attendu : { $expected }
+check-csv-partial-vector = l’en-tête CSV n’a que { $count } des 3 composantes de `{ $field }`
+check-csv-cells = { $count ->
+    [one] { $count } cellule là où l’en-tête a { $columns } colonnes
+   *[other] { $count } cellules là où l’en-tête a { $columns } colonnes
+}
+check-csv-no-header = aucun en-tête CSV utilisable : { $reason }
+check-pattern-unclosed = `{"{"}` non fermé dans le motif « { $pattern } »
+check-pattern-adjacent = deux champs sans rien entre eux dans le motif « { $pattern } »
+check-pattern-no-field = le motif « { $pattern } » ne nomme aucun champ
+check-pattern-unknown-field = champ inconnu {"{"}{ $field }{"}"} dans le motif pour --api { $api } : {"{"}_{"}"} ou l’un de { $expected } attendu
+check-line-not-matching = la ligne ne correspond pas au motif
+check-tally-skipped = ignorées (ne correspondent pas au motif)
+check-tally-unreadable = illisibles
+check-tally-unexplained = inexpliquées
+check-word-not-a-number = « { $word } » n’est pas un nombre
+check-vector-expected-named = `{ $expected }: <nombre>` attendu, « { $found } » trouvé
+check-vector-within = { $error } (dans « { $text } »)
+check-vector-not-three = 3 nombres attendus, comme `0.1, -0.9, 0` ou `vec3(0.1, -0.9, 0.0)`, { $count } trouvés dans « { $text } »

@@ -1,1 +1,272 @@
-# check.ftl (pt-BR): filled in by the area's translation.
+# check.ftl (pt-BR): os textos de “Verificar meu T”: o painel, seus veredictos e suas explicações.
+
+## Números e vetores nas explicações
+
+check-number-not-finite = não finito (NaN ou infinito)
+check-vector-not-finite = um vetor não finito (componentes NaN ou infinitas)
+
+## Veredictos sobre um T nos campos deste projeto (também as explicações do comando `check`)
+
+check-verdict-wrong-side = Seu T volta para o meio de onde o raio veio: é a outra raiz para b (+ onde a raiz quadrada pede -). A causa comum é uma normal que aponta no sentido do raio, como a normal externa de uma esfera onde o raio sai dela, usada sem ser invertida.
+check-verdict-wrong-bend = Seu T se desvia para o lado errado: o sinal de a está trocado, então ele não se tornaria o raio incidente quando mu -> 1. A causa comum é misturar as convenções: W apontando de volta para a origem (Seção 1, a = -mu) usado na fórmula de W ao longo do raio (Seção 2, a = +mu), ou o contrário.
+check-verdict-reversed = Seu T é -T e aponta de volta para onde o raio veio: os dois sinais estão errados. A causa comum é devolver a direção para a origem em vez da direção de propagação, ou negar W duas vezes.
+check-verdict-not-finite-tir = Seu T tem componentes NaN ou infinitas. Este raio sofre reflexão total interna (k < 0): seu código tirou a raiz quadrada de um k negativo em vez de testar k antes.
+check-verdict-not-finite-refracts = Seu T tem componentes NaN ou infinitas, embora este raio seja refratado normalmente (k >= 0): procure uma divisão por zero ou um vetor não inicializado.
+check-verdict-tir-right = Certo: este raio sofre reflexão total interna (k < 0) e seu código devolveu a reflexão (ou o vetor nulo com que o GLSL indica isso).
+check-verdict-tir-but-refracted = Este raio sofre reflexão total interna (k = { $k } < 0): não há raio refratado, mas seu código devolveu um. Teste k antes de tirar a raiz quadrada.
+check-verdict-zero-vector = Seu T é o vetor nulo, que o GLSL devolve na reflexão total interna, mas este raio é refratado (k >= 0). Verifique o sinal de k e a razão dos índices.
+check-verdict-not-unit = Além disso, seu T tem comprimento { $length }, não 1: normalize W e N antes de refratar (a fórmula supõe vetores unitários) ou T depois.
+check-verdict-along-refracted = Seu T aponta ao longo do raio refratado (com até { $off } rad de diferença).
+check-verdict-right = Certo: seu T é o raio refratado (com até { $off } rad de diferença).
+check-verdict-ratio-upside-down = Seu T é a refração com a razão dos índices invertida: mu deve ser mu_i/mu_t (o meio que o raio deixa sobre aquele em que entra), e seu código usou mu_t/mu_i.
+check-verdict-out-of-plane = Seu T sai do plano de incidência (o plano de W e N) por { $off } rad: T deve ser uma combinação a*W + b*N dos dois.
+check-verdict-no-candidate = Seu T não corresponde a nenhuma das quatro escolhas de sinal: está a { $degrees } graus do raio refratado. Verifique mu e para onde apontam W e N.
+
+## Leitura de t_yours numa linha JSON
+
+check-t-yours-item-not-number = `t_yours[{ $index }]` deve ser um número ou null
+check-t-yours-missing = falta o campo `t_yours` (o T que seu código produziu)
+
+## Explicações de um veredicto sobre uma chamada de API (`check --api` e o painel): como cada API fala
+
+# Fica depois de “No …” (“No GLSL”, “No livro”).
+check-api-owner = { $api ->
+    [glsl] GLSL
+    [pbrt] pbrt
+    [rtiow] livro
+   *[mitsuba] Mitsuba
+}
+check-api-call = { $api ->
+    [glsl] refract(I, N, eta) do GLSL
+    [pbrt] Refract(wi, n, eta) do pbrt
+    [rtiow] refract(uv, n, etai_over_etat) do livro
+   *[mitsuba] fresnel(cos_theta_i, eta) do Mitsuba com refract
+}
+check-api-eta-means = { $api ->
+    [glsl] n_from/n_to, o índice do meio que o raio deixa sobre o do meio em que entra
+    [pbrt] o índice do lado oposto a n sobre o índice do lado para onde n aponta (n_inside/n_outside com a normal externa)
+    [rtiow] etai/etat = n_from/n_to (1/refraction_index numa face frontal, refraction_index numa face traseira)
+   *[mitsuba] int_ior/ext_ior, o índice do lado oposto à normal sobre o índice do lado para onde ela aponta
+}
+check-api-incident-means = { $api ->
+    [glsl] a direção em que o raio viaja, em direção à superfície
+    [pbrt] a direção de volta para onde o raio veio (-ray.d)
+    [rtiow] a direção unitária em que o raio viaja (unit_vector(r_in.direction()))
+   *[mitsuba] wi, afastando-se da superfície de volta ao longo do raio (-ray.d)
+}
+check-api-root-hint = { $api ->
+    [glsl] o GLSL subtrai (eta * dot(N, I) + sqrt(k)) * N
+    [pbrt] wt usa (cosTheta_i / eta - cosTheta_t) * n
+    [rtiow] r_out_parallel é -sqrt(fabs(1 - r_out_perp.length_squared())) * n
+   *[mitsuba] cos_theta_t tem o sinal oposto ao de cos_theta_i
+}
+check-api-usual = { $api ->
+    [pbrt] a normal externa com o eta do material (n_inside/n_outside)
+    [mitsuba] a normal externa com eta = int_ior/ext_ior
+   *[other] {""}
+}
+
+## Explicações de uma chamada de API: as peças
+
+check-situation-entering = entrando no objeto (de n = { $from } para n = { $to })
+check-situation-leaving = saindo do objeto (de n = { $from } para n = { $to })
+check-situation-going = indo de n = { $from } para n = { $to }
+check-nothing-zero-vector = o vetor nulo
+check-nothing-reflection = a reflexão
+check-nothing-false-or-null = nada (false ou null)
+check-and = e
+check-or = ou
+check-field-from-and-to = from e to (ou entering com --inside e --outside)
+check-normal-fix-rtiow = a normal do registro de interseção depois de set_face_normal
+check-normal-inward-entering = ela aponta para dentro do objeto, e o raio está entrando
+check-normal-inward-leaving = ela aponta para dentro do objeto, e o raio está saindo
+check-looks-other-root = a outra raiz, com o sinal da raiz quadrada trocado ({ $hint })
+check-looks-wrong-bend = a parte ao longo da superfície invertida
+check-looks-reversed = o oposto da resposta da API
+check-looks-length = a mesma direção com { $ratio } vezes o comprimento: seu código escala ou normaliza de outro jeito
+check-looks-reflection = a reflexão, embora este raio seja refratado (registre só a refração, não uma reflexão escolhida por Fresnel ou Schlick)
+check-looks-variant = o que { $call } devolve com { $variant }: sua implementação faz isso por dentro
+check-variant-eta-inverted = eta invertido
+check-variant-normal-flipped = a normal invertida
+check-variant-incident-reversed = o vetor incidente ao contrário
+check-looks-nothing = { $what }, que indica que nada é transmitido, embora este raio seja refratado (k = { $k } >= 0)
+check-looks-not-finite = componentes NaN ou infinitas, embora este raio seja refratado
+check-looks-off = a { $degrees } graus dela
+check-looks-off-unmeasurable = a um ângulo que não se pode medir
+check-returned-pbrt-true = true com wt = { $wt }
+check-returned-rtiow-cannot-refract = cannot_refract (dielectric::scatter reflete)
+check-returned-mitsuba-reflects = F = 1 (a BSDF sempre reflete)
+check-unchecked-mu = from e to (ou entering com --inside e --outside) para verificar { $eta }
+check-unchecked-travel = travel para verificar para onde { $incident } aponta
+
+## Explicações de uma chamada de API: as frases
+
+check-eta-inverted = No { $owner }, { $eta } é { $means }: você passou { $value } para um raio { $situation }; passe 1/{ $value } = { $inverse }.
+check-eta-inverted-this-ray = No { $owner }, { $eta } é { $means }: você passou { $value } para este raio; passe 1/{ $value } = { $inverse }.
+check-incident-reversed = No { $owner }, { $incident } é { $means }; o seu aponta para o outro lado: passe -{ $incident } = { $reversed }.
+check-incident-reversed-travel = No { $owner }, { $incident } é { $means }; o seu aponta para o outro lado (o raio viaja ao longo de { $travel }): passe -{ $incident } = { $reversed }.
+check-not-unit-input = { $call } supõe { $incident } e { $normal } unitários e não os normaliza: |{ $incident }| = { $incident_length }, |{ $normal }| = { $normal_length }; normalize-os antes.
+check-normal-against = { $call } precisa de { $normal } oposta a { $incident } (dot({ $normal }, { $incident }) < 0) e não a inverte; a sua tem dot({ $normal }, { $incident }) = { $dot }, como uma normal externa onde o raio sai do objeto: passe -{ $normal } = { $flipped } ({ $fix }).
+check-normal-either-side = { $call } aceita { $normal } de qualquer lado, mas { $eta } deve combinar com ela: é { $means }. Sua { $normal } aponta para o lado oposto daquela para a qual { $eta } = { $value } foi pensado{ $inward }; passe -{ $normal } = { $flipped } com o mesmo { $eta } (ou mantenha { $normal } e passe 1/{ $eta }).
+check-tir-glsl = O refract do GLSL devolve aqui o vetor nulo (k = { $k } < 0: reflexão total interna); teste isso e reflita em vez de refratar.
+check-tir-pbrt = O Refract do pbrt devolve aqui false (sin2Theta_t = { $sin2 } >= 1: reflexão total interna); reflita em vez de refratar.
+check-tir-rtiow = Aqui vale o cannot_refract de dielectric::scatter (ri * sin_theta = { $sine } > 1): o livro reflete em vez de chamar refract.
+check-tir-mitsuba = fresnel devolve aqui F = 1 (cos_theta_t_sqr = { $k } < 0): o Mitsuba sempre reflete.
+check-tir-got-formula = Seu código usou mesmo assim o vetor da fórmula, { $vector } de comprimento { $length }: não é um raio.
+check-tir-got-direction = Seu código deu uma direção, { $vector }, onde não há nenhuma.
+check-tir-got-not-finite = Seu código deu componentes NaN ou infinitas (a raiz quadrada de um k negativo, ou normalize() do vetor nulo).
+check-result-differs = { $call } devolve { $returned } para estes argumentos, mas a chamada deu { $got }: { $detail }. Sua própria implementação difere da da API.
+check-ties-no-field = Nenhum campo de referência os distingue: { $call } lê os dois igualmente; a chamada usual passa { $usual }.
+check-ties-give = Informe { $fields } para distingui-los.
+check-ties = Igualmente possível: { $readings } em vez disso. { $hint }
+check-unchecked = Verificado só pelas regras da própria API: informe { $missing }.
+check-unexplained-travel = O { $incident } registrado está a { $degrees } graus da direção { $travel } deste raio: não é a direção deste raio (nem a oposta).
+check-unexplained-eta = { $eta } = { $value } não corresponde nem a n_from/n_to = { $mu } nem ao seu inverso do jeito que { $call } o lê: estes não são os índices desta interface.
+check-unexplained = Nenhuma combinação de erros nos argumentos faz esta chamada corresponder à referência dada.
+check-right-tir = Certo: { $call } indica aqui reflexão total interna ({ $returned }), e a chamada deu { $what }.
+check-right-for-ray = Certo: { $call } devolve { $returned } para estes argumentos, para um raio { $situation }.
+check-right = Certo: { $call } devolve { $returned } para estes argumentos.
+
+## Os erros de uma chamada de API, um por linha
+
+check-mistake-eta-inverted = a razão dos índices invertida para a convenção desta API
+check-mistake-incident-reversed = o vetor incidente passado ao contrário
+check-mistake-normal-not-facing = a normal do lado errado para esta API (ou para o eta passado)
+check-mistake-not-the-api-result = o resultado não é o que a API devolve para estes argumentos: sua própria implementação difere
+check-mistake-missed-tir = uma direção (ou NaN) onde a API indica reflexão total interna
+check-mistake-not-unit-input = o vetor incidente ou a normal não tem comprimento unitário
+
+## O painel: os campos deste projeto
+
+check-source-own = W, N, μ (este projeto)
+check-code-calls = Seu código chama:
+check-convention = Convenção:
+check-convention-along-ray = Seção 2: W ao longo do raio
+check-convention-along-ray-about = W é a direção em que o raio viaja, em direção à superfície (o I do GLSL, o uv do livro).
+check-convention-toward-origin = Seção 1: W para a origem
+check-convention-toward-origin-about = W aponta de volta para onde o raio veio (o wi do pbrt e do Mitsuba).
+check-convention-note = { $about } μ = μi/μt; N de qualquer lado (o núcleo a vira para o raio).
+check-paste-hint = Cole o que seu traçador de raios registrou. Vetores como 0.1, -0.9, 0 ou [0.1,-0.9,0] ou vec3(0.1, -0.9, 0.0); ou cole uma linha JSON inteira com t_yours em “Seu T”.
+check-use-current-case = Usar o caso atual
+check-use-current-case-own-hover = Preencher W, N, μ e a convenção a partir do explorador
+check-use-current-case-api-hover = Preencher os argumentos e os índices a partir do explorador
+check-your-t = Seu T
+check-your-t-in-error = seu T
+check-button = Verificar
+check-field-not-number = { $field }: “{ $text }” não é um número
+check-student-own = seu T: { $verdict }
+check-headline-own = Seu T corresponde a: { $verdict }
+check-match-refracted = o raio refratado T
+check-match-not-unit = a direção de T, mas sem comprimento unitário
+check-match-wrong-side = lado errado (a outra raiz para b)
+check-match-wrong-bend = desvio errado (o outro sinal de a)
+check-match-reversed = invertido (−T: os dois sinais errados)
+check-match-tir = reflexão total interna, respondida corretamente
+check-match-none = nenhum dos quatro candidatos
+check-no-refracted-ray = Não há raio refratado: reflexão total interna.
+check-right-t = O T correto = { $t }
+check-not-drawn-changed = (O caso mudou desde então: o veredicto não é desenhado.)
+
+## O painel: uma chamada de API
+
+check-drawn-incident = { $api ->
+    [glsl] I (direção de propagação)
+    [pbrt] wi (de volta para a origem)
+    [rtiow] uv (direção de propagação)
+   *[mitsuba] wi (afastando-se da superfície)
+}
+check-drawn-about = { $api ->
+    [glsl] I é a direção em que o raio viaja, desenhada como W ao longo do raio (Seção 2). N deve ficar oposta a I: o GLSL não a vira. eta = n_from/n_to = μi/μt. O vetor nulo significa reflexão total interna.
+    [pbrt] wi aponta de volta para onde o raio veio (−ray.d), desenhado como W para a origem (Seção 1). n pode ficar de qualquer lado: o pbrt a inverte e inverte eta quando wi está abaixo dela. eta = o índice atrás de n sobre o da frente (μt/μi com n voltada para wi). false significa reflexão total interna.
+    [rtiow] uv é a direção unitária em que o raio viaja, desenhada como W ao longo do raio (Seção 2). n deve ficar oposta a uv (front_face). etai_over_etat = n_from/n_to = μi/μt. refract não testa a reflexão total interna: quem reflete é o cannot_refract de quem chama.
+   *[mitsuba] wi se afasta da superfície, de volta ao longo do raio, desenhado como W para a origem (Seção 1). n é +z (o referencial local) quando fica vazio. eta = int_ior/ext_ior, o índice atrás de n sobre o da frente (μt/μi com n voltada para wi). F = 1 significa reflexão total interna: wo é null.
+}
+check-convention-about = Convenção: { $about }
+check-your-call = Sua chamada
+check-truth = Referência (opcional)
+check-picture-outside = μ = { $mu } exige índices fora da faixa { $low }…{ $high } do explorador
+check-student-api = seu { $result }: { $verdict }
+check-student-right = certo
+check-student-wrong = errado
+check-api-right-headline = Certo: o que { $signature } significa para este raio
+check-api-mistakes = Erros: { $codes }
+check-api-unexplained-headline = Nenhum erro isolado explica isto
+check-api-returns = { $owner } devolve { $value }
+check-api-drawn = Desenhado: a chamada correta, { $incident } = { $incident_value }, { $normal } = { $normal_value }, { $eta } = { $eta_value } (μi = { $mu_i }, μt = { $mu_t }).
+check-api-not-drawn = Não desenhado: { $why }.
+check-copy-as-test = Copiar como teste unitário:
+
+## O painel: linhas de log coladas
+
+check-paste-lines = 📋 Colar linhas de log
+check-paste-lines-hint = JSON Lines com os campos de { $api }, CSV com um cabeçalho que os nomeie, ou linhas de printf com um padrão como LOG {"{"}uv{"}"} | {"{"}n{"}"} | {"{"}etai_over_etat{"}"} | {"{"}refracted{"}"}. No máximo { $characters } caracteres; as primeiras { $count } linhas são verificadas.
+check-pattern = Padrão
+check-log-lines = Linhas de log
+check-lines-button = Verificar as linhas
+check-read-as-pattern = o padrão
+check-read-as-json-lines = JSON Lines
+check-read-as-csv = CSV (a primeira linha é o cabeçalho)
+check-bulk-summary = Lido como { $read_as }: { $count ->
+    [one] { $count } chamada
+   *[other] { $count } chamadas
+}
+check-bulk-left-out = { $count ->
+    [one] { $count } linha depois das primeiras { $first } ficou de fora
+   *[other] { $count } linhas depois das primeiras { $first } ficaram de fora
+}
+check-column-line = linha
+check-column-ok = ok
+check-column-mistakes = erros
+check-column-explanation = explicação
+check-row-line = linha { $line }
+check-row-open-hover = Abrir esta chamada no painel e no diagrama
+check-row-error = erro
+
+## Leitura dos campos de uma chamada, de uma linha CSV, de um padrão e de um vetor (o painel também mostra estas mensagens)
+
+check-field-not-three = `{ $field }` deve ter exatamente 3 números, tem { $count }
+check-field-not-a-vector = `{ $field }` deve ser um array de 3 números ou um texto como “0.1, -0.9, 0”
+check-field-not-flag-got = `{ $field }` deve ser true/false ou 1/0, não “{ $text }”
+check-field-not-number-json = `{ $field }` deve ser um número
+check-field-not-flag = `{ $field }` deve ser true/false ou 1/0
+check-field-not-label = `{ $field }` deve ser um texto ou um número
+check-json-not-object = esperava-se um objeto JSON com os campos { $fields }
+check-unknown-field = campo desconhecido `{ $field }`
+check-field-not-vector = `{ $field }` deve ser 3 números
+check-field-missing = falta o campo `{ $field }` ({ $what })
+check-what-normal = a normal à superfície
+check-what-incident = o vetor incidente
+check-what-eta = a razão dos índices
+check-field-not-finite = `{ $field }` deve ser finito, é { $value }
+check-field-zero-vector = `{ $field }` é o vetor nulo
+check-field-not-positive = `{ $field }` deve ser um número finito > 0, é { $value }
+check-from-and-to-together = `from` e `to` andam juntos: informe os dois ou nenhum
+check-travel-not-finite = `travel` deve ser um vetor finito não nulo
+check-result-null = `{ $field }` é null, embora `{ $returned }` seja true
+check-result-missing = falta o campo `{ $field }` (o que a chamada devolveu{ $api ->
+    [pbrt] , ou "returned": false
+    [mitsuba] , null quando refletiu
+   *[other] {""}
+})
+check-unknown-precision = precisão desconhecida “{ $text }”: esperava-se "f32" ou "f64"
+check-too-large = { $value } é grande demais para { $precision }
+check-csv-unclosed-quote = aspas não fechadas na linha CSV
+check-csv-no-column = o cabeçalho CSV não tem a coluna `{ $field }`: ele nomeia { $names }; esperava-se { $expected }
+check-csv-partial-vector = o cabeçalho CSV tem só { $count } das 3 componentes de `{ $field }`
+check-csv-cells = { $count ->
+    [one] { $count } célula onde o cabeçalho tem { $columns } colunas
+   *[other] { $count } células onde o cabeçalho tem { $columns } colunas
+}
+check-csv-no-header = nenhum cabeçalho CSV utilizável: { $reason }
+check-pattern-unclosed = `{"{"}` não fechado no padrão “{ $pattern }”
+check-pattern-adjacent = dois campos sem nada entre eles no padrão “{ $pattern }”
+check-pattern-no-field = o padrão “{ $pattern }” não nomeia nenhum campo
+check-pattern-unknown-field = campo desconhecido {"{"}{ $field }{"}"} no padrão para --api { $api }: esperava-se {"{"}_{"}"} ou um de { $expected }
+check-line-not-matching = a linha não corresponde ao padrão
+check-tally-skipped = ignoradas (não correspondem ao padrão)
+check-tally-unreadable = ilegíveis
+check-tally-unexplained = sem explicação
+check-word-not-a-number = “{ $word }” não é um número
+check-vector-expected-named = esperava-se `{ $expected }: <número>`, encontrou-se “{ $found }”
+check-vector-within = { $error } (em “{ $text }”)
+check-vector-not-three = esperavam-se 3 números como `0.1, -0.9, 0` ou `vec3(0.1, -0.9, 0.0)`, encontraram-se { $count } em “{ $text }”

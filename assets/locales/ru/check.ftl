@@ -1,1 +1,277 @@
-# check.ftl (ru): filled in by the area's translation.
+# check.ftl (ru): тексты «Проверить моё T»: панель, её вердикты и их объяснения.
+
+## Числа и векторы в объяснениях
+
+check-number-not-finite = не конечное (NaN или бесконечность)
+check-vector-not-finite = не конечный вектор (компоненты NaN или бесконечны)
+
+## Вердикты о T в полях этого проекта (также объяснения команды `check`)
+
+check-verdict-wrong-side = Ваш T уходит обратно в среду, из которой пришёл луч: это другой корень для b (+ там, где у квадратного корня нужен -). Обычная причина — нормаль, направленная вдоль луча, например внешняя нормаль сферы в точке, где луч из неё выходит, использованная без разворота.
+check-verdict-wrong-bend = Ваш T преломляется не в ту сторону: знак a перевёрнут, поэтому при mu -> 1 он не переходит в падающий луч. Обычная причина — смешение соглашений: W, направленный назад к началу луча (раздел 1, a = -mu), подан в формулу для W вдоль луча (раздел 2, a = +mu), или наоборот.
+check-verdict-reversed = Ваш T равен -T и указывает туда, откуда пришёл луч: оба знака неверны. Обычная причина — возврат направления к началу луча вместо направления распространения или двойное обращение W.
+check-verdict-not-finite-tir = У вашего T есть компоненты NaN или бесконечность. Этот луч испытывает полное внутреннее отражение (k < 0): ваш код извлёк квадратный корень из отрицательного k, не проверив k заранее.
+check-verdict-not-finite-refracts = У вашего T есть компоненты NaN или бесконечность, хотя этот луч обычно преломляется (k >= 0): ищите деление на ноль или неинициализированный вектор.
+check-verdict-tir-right = Верно: этот луч испытывает полное внутреннее отражение (k < 0), и ваш код вернул отражённый луч (или нулевой вектор, которым GLSL это сообщает).
+check-verdict-tir-but-refracted = Этот луч испытывает полное внутреннее отражение (k = { $k } < 0): преломлённого луча нет, но ваш код его вернул. Проверяйте k, прежде чем извлекать из него корень.
+check-verdict-zero-vector = Ваш T — нулевой вектор, который GLSL возвращает при полном внутреннем отражении, но этот луч преломляется (k >= 0). Проверьте знак k и отношение показателей преломления.
+check-verdict-not-unit = Кроме того, длина вашего T равна { $length }, а не 1: нормируйте W и N перед преломлением (формула предполагает единичные векторы) или T после.
+check-verdict-along-refracted = Ваш T направлен вдоль преломлённого луча (с точностью до { $off } рад).
+check-verdict-right = Верно: ваш T — преломлённый луч (с точностью до { $off } рад).
+check-verdict-ratio-upside-down = Ваш T — преломление с перевёрнутым отношением показателей: mu должно быть mu_i/mu_t (среда, которую луч покидает, к той, в которую входит), а ваш код использовал mu_t/mu_i.
+check-verdict-out-of-plane = Ваш T выходит из плоскости падения (плоскости W и N) на { $off } рад: T должен быть комбинацией a*W + b*N этих двух векторов.
+check-verdict-no-candidate = Ваш T не совпадает ни с одним из четырёх вариантов знаков: он отклоняется от преломлённого луча на { $degrees } град. Проверьте mu и направления W и N.
+
+## Чтение t_yours из строки JSON
+
+check-t-yours-item-not-number = `t_yours[{ $index }]` должно быть числом или null
+check-t-yours-missing = нет поля `t_yours` (T, которое получил ваш код)
+
+## Объяснения вердикта о вызове API (`check --api` и панель): как говорит каждый API
+
+check-api-owner = { $api ->
+    [glsl] GLSL
+    [pbrt] pbrt
+    [rtiow] книге
+   *[mitsuba] Mitsuba
+}
+check-api-call = { $api ->
+    [glsl] refract(I, N, eta) из GLSL
+    [pbrt] Refract(wi, n, eta) из pbrt
+    [rtiow] refract(uv, n, etai_over_etat) из книги
+   *[mitsuba] fresnel(cos_theta_i, eta) из Mitsuba вместе с refract
+}
+check-api-eta-means = { $api ->
+    [glsl] n_from/n_to, показатель среды, которую луч покидает, к показателю среды, в которую он входит
+    [pbrt] показатель на стороне, от которой n направлена, к показателю на стороне, куда она указывает (n_inside/n_outside при внешней нормали)
+    [rtiow] etai/etat = n_from/n_to (1/refraction_index на лицевой стороне, refraction_index на обратной)
+   *[mitsuba] int_ior/ext_ior, показатель на стороне, от которой направлена нормаль, к показателю на стороне, куда она указывает
+}
+check-api-incident-means = { $api ->
+    [glsl] направление, в котором идёт луч, к поверхности
+    [pbrt] направление назад, туда, откуда пришёл луч (-ray.d)
+    [rtiow] единичное направление, в котором идёт луч (unit_vector(r_in.direction()))
+   *[mitsuba] wi, направленный от поверхности назад вдоль луча (-ray.d)
+}
+check-api-root-hint = { $api ->
+    [glsl] GLSL вычитает (eta * dot(N, I) + sqrt(k)) * N
+    [pbrt] wt берёт (cosTheta_i / eta - cosTheta_t) * n
+    [rtiow] r_out_parallel равен -sqrt(fabs(1 - r_out_perp.length_squared())) * n
+   *[mitsuba] у cos_theta_t знак, противоположный cos_theta_i
+}
+check-api-usual = { $api ->
+    [pbrt] внешнюю нормаль с eta материала (n_inside/n_outside)
+    [mitsuba] внешнюю нормаль с eta = int_ior/ext_ior
+   *[other] {""}
+}
+
+## Объяснения вызова API: части
+
+check-situation-entering = входящего в объект (из n = { $from } в n = { $to })
+check-situation-leaving = выходящего из объекта (из n = { $from } в n = { $to })
+check-situation-going = идущего из n = { $from } в n = { $to }
+check-nothing-zero-vector = нулевой вектор
+check-nothing-reflection = отражённый луч
+check-nothing-false-or-null = ничего (false или null)
+check-and = и
+check-or = или
+check-field-from-and-to = from и to (или entering с --inside и --outside)
+check-normal-fix-rtiow = нормаль из записи о попадании после set_face_normal
+check-normal-inward-entering = она направлена внутрь объекта, а луч входит
+check-normal-inward-leaving = она направлена внутрь объекта, а луч выходит
+check-looks-other-root = другой корень, с обратным знаком квадратного корня ({ $hint })
+check-looks-wrong-bend = составляющая вдоль поверхности развёрнута
+check-looks-reversed = ответ API с обратным знаком
+check-looks-length = то же направление, но длина больше в { $ratio } раза: ваш код масштабирует или нормирует иначе
+check-looks-reflection = отражённый луч, хотя этот луч преломляется (записывайте только преломление, а не отражение, выбранное по Френелю или Шлику)
+check-looks-variant = то, что { $call } возвращает при { $variant }: ваша реализация делает это внутри
+check-variant-eta-inverted = обращённом eta
+check-variant-normal-flipped = развёрнутой нормали
+check-variant-incident-reversed = развёрнутом падающем векторе
+check-looks-nothing = { $what }, то есть ничего не проходит, хотя этот луч преломляется (k = { $k } >= 0)
+check-looks-not-finite = компоненты NaN или бесконечность, хотя этот луч преломляется
+check-looks-off = на { $degrees } град. в стороне от него
+check-looks-off-unmeasurable = под углом, который невозможно измерить
+check-returned-pbrt-true = true с wt = { $wt }
+check-returned-rtiow-cannot-refract = cannot_refract (dielectric::scatter отражает)
+check-returned-mitsuba-reflects = F = 1 (BSDF всегда отражает)
+check-unchecked-mu = from и to (или entering с --inside и --outside), чтобы проверить { $eta }
+check-unchecked-travel = travel, чтобы проверить, куда указывает { $incident }
+
+## Объяснения вызова API: предложения
+
+check-eta-inverted = В { $owner } { $eta } — это { $means }: вы передали { $value } для луча, { $situation }; передайте 1/{ $value } = { $inverse }.
+check-eta-inverted-this-ray = В { $owner } { $eta } — это { $means }: вы передали { $value } для этого луча; передайте 1/{ $value } = { $inverse }.
+check-incident-reversed = В { $owner } { $incident } — это { $means }; ваш направлен в другую сторону: передайте -{ $incident } = { $reversed }.
+check-incident-reversed-travel = В { $owner } { $incident } — это { $means }; ваш направлен в другую сторону (луч идёт вдоль { $travel }): передайте -{ $incident } = { $reversed }.
+check-not-unit-input = { $call } предполагает единичные { $incident } и { $normal } и не нормирует их: |{ $incident }| = { $incident_length }, |{ $normal }| = { $normal_length }; сначала нормируйте их.
+check-normal-against = { $call } требует, чтобы { $normal } была направлена против { $incident } (dot({ $normal }, { $incident }) < 0), и не разворачивает её; у вас dot({ $normal }, { $incident }) = { $dot }, как у внешней нормали там, где луч выходит из объекта: передайте -{ $normal } = { $flipped } ({ $fix }).
+check-normal-either-side = { $call } принимает { $normal } с любой стороны, но { $eta } должно ей соответствовать: это { $means }. Ваша { $normal } направлена противоположно той, для которой предназначено { $eta } = { $value }{ $inward }; передайте -{ $normal } = { $flipped } с тем же { $eta } (или оставьте { $normal } и передайте 1/{ $eta }).
+check-tir-glsl = refract из GLSL здесь возвращает нулевой вектор (k = { $k } < 0: полное внутреннее отражение); проверяйте это и отражайте вместо преломления.
+check-tir-pbrt = Refract из pbrt здесь возвращает false (sin2Theta_t = { $sin2 } >= 1: полное внутреннее отражение); отражайте вместо преломления.
+check-tir-rtiow = Здесь выполняется cannot_refract из dielectric::scatter (ri * sin_theta = { $sine } > 1): книга отражает, а не вызывает refract.
+check-tir-mitsuba = fresnel здесь возвращает F = 1 (cos_theta_t_sqr = { $k } < 0): Mitsuba всегда отражает.
+check-tir-got-formula = Ваш код всё равно использовал вектор из формулы, { $vector } длины { $length }: это не луч.
+check-tir-got-direction = Ваш код выдал направление, { $vector }, там, где его нет.
+check-tir-got-not-finite = Ваш код выдал компоненты NaN или бесконечность (квадратный корень из отрицательного k или normalize() нулевого вектора).
+check-result-differs = { $call } возвращает { $returned } для этих аргументов, но вызов дал { $got }: { $detail }. Ваша собственная реализация отличается от API.
+check-ties-no-field = Ни одно эталонное поле их не различает: { $call } читает оба одинаково; обычный вызов передаёт { $usual }.
+check-ties-give = Укажите { $fields }, чтобы их различить.
+check-ties = Столь же возможно: вместо этого { $readings }. { $hint }
+check-unchecked = Проверено только по собственным правилам API: укажите { $missing }.
+check-unexplained-travel = Записанный { $incident } отклоняется на { $degrees } град. от направления этого луча { $travel }: это не направление этого луча (и не обратное ему).
+check-unexplained-eta = { $eta } = { $value } не соответствует ни n_from/n_to = { $mu }, ни обратной величине в том смысле, как его читает { $call }: это не показатели преломления этой границы.
+check-unexplained = Никакое сочетание ошибок в аргументах не согласует этот вызов с данным эталоном.
+check-right-tir = Верно: { $call } здесь сообщает о полном внутреннем отражении ({ $returned }), и вызов дал { $what }.
+check-right-for-ray = Верно: { $call } возвращает { $returned } для этих аргументов, для луча, { $situation }.
+check-right = Верно: { $call } возвращает { $returned } для этих аргументов.
+
+## Ошибки вызова API, по одной строке
+
+check-mistake-eta-inverted = отношение показателей перевёрнуто для соглашения этого API
+check-mistake-incident-reversed = падающий вектор передан в обратную сторону
+check-mistake-normal-not-facing = нормаль не с той стороны для этого API (или для переданного eta)
+check-mistake-not-the-api-result = результат не тот, что API возвращает для этих аргументов: ваша собственная реализация отличается
+check-mistake-missed-tir = направление (или NaN) там, где API сообщает о полном внутреннем отражении
+check-mistake-not-unit-input = падающий вектор или нормаль не единичной длины
+
+## Панель: поля этого проекта
+
+check-source-own = W, N, μ (этот проект)
+check-code-calls = Ваш код вызывает:
+check-convention = Соглашение:
+check-convention-along-ray = Раздел 2: W вдоль луча
+check-convention-along-ray-about = W — направление, в котором идёт луч, к поверхности (I в GLSL, uv в книге).
+check-convention-toward-origin = Раздел 1: W к началу луча
+check-convention-toward-origin-about = W направлен назад, туда, откуда пришёл луч (wi в pbrt и Mitsuba).
+check-convention-note = { $about } μ = μi/μt; N с любой стороны (ядро само разворачивает её к лучу).
+check-paste-hint = Вставьте то, что записал ваш трассировщик лучей. Векторы в виде 0.1, -0.9, 0 или [0.1,-0.9,0] или vec3(0.1, -0.9, 0.0); или вставьте целую строку JSON с t_yours в поле «Ваш T».
+check-use-current-case = Взять текущий случай
+check-use-current-case-own-hover = Заполнить W, N, μ и соглашение из обозревателя
+check-use-current-case-api-hover = Заполнить аргументы и показатели преломления из обозревателя
+check-your-t = Ваш T
+check-your-t-in-error = ваш T
+check-button = Проверить
+check-field-not-number = { $field }: «{ $text }» — не число
+check-student-own = ваш T: { $verdict }
+check-headline-own = Ваш T: { $verdict }
+check-match-refracted = преломлённый луч T
+check-match-not-unit = направление T, но не единичной длины
+check-match-wrong-side = не та сторона (другой корень для b)
+check-match-wrong-bend = не тот изгиб (другой знак a)
+check-match-reversed = обращён (−T: оба знака неверны)
+check-match-tir = полное внутреннее отражение, ответ верный
+check-match-none = ни один из четырёх кандидатов
+check-no-refracted-ray = Преломлённого луча нет: полное внутреннее отражение.
+check-right-t = Правильный T = { $t }
+check-not-drawn-changed = (Случай с тех пор изменился: вердикт не нарисован.)
+
+## Панель: вызов API
+
+check-drawn-incident = { $api ->
+    [glsl] I (направление распространения)
+    [pbrt] wi (назад к началу луча)
+    [rtiow] uv (направление распространения)
+   *[mitsuba] wi (от поверхности)
+}
+check-drawn-about = { $api ->
+    [glsl] I — направление, в котором идёт луч, нарисовано как W вдоль луча (раздел 2). N должна быть направлена против I: GLSL её не разворачивает. eta = n_from/n_to = μi/μt. Нулевой вектор означает полное внутреннее отражение.
+    [pbrt] wi направлен назад, туда, откуда пришёл луч (−ray.d), нарисован как W к началу луча (раздел 1). n может быть с любой стороны: pbrt разворачивает её и обращает eta, когда wi под ней. eta = показатель за n к показателю перед ней (μt/μi при n, обращённой к wi). false означает полное внутреннее отражение.
+    [rtiow] uv — единичное направление, в котором идёт луч, нарисовано как W вдоль луча (раздел 2). n должна быть направлена против uv (front_face). etai_over_etat = n_from/n_to = μi/μt. refract не проверяет полное внутреннее отражение: отражает cannot_refract вызывающего кода.
+   *[mitsuba] wi направлен от поверхности назад вдоль луча, нарисован как W к началу луча (раздел 1). n равна +z (локальная система координат), если поле пустое. eta = int_ior/ext_ior, показатель за n к показателю перед ней (μt/μi при n, обращённой к wi). F = 1 означает полное внутреннее отражение: wo равен null.
+}
+check-convention-about = Соглашение: { $about }
+check-your-call = Ваш вызов
+check-truth = Эталон (необязательно)
+check-picture-outside = μ = { $mu } требует показателей вне диапазона обозревателя { $low }…{ $high }
+check-student-api = ваш { $result }: { $verdict }
+check-student-right = верно
+check-student-wrong = неверно
+check-api-right-headline = Верно: что { $signature } означает для этого луча
+check-api-mistakes = Ошибки: { $codes }
+check-api-unexplained-headline = Ни одна отдельная ошибка этого не объясняет
+check-api-returns = { $owner } возвращает { $value }
+check-api-drawn = Нарисовано: правильный вызов, { $incident } = { $incident_value }, { $normal } = { $normal_value }, { $eta } = { $eta_value } (μi = { $mu_i }, μt = { $mu_t }).
+check-api-not-drawn = Не нарисовано: { $why }.
+check-copy-as-test = Скопировать как модульный тест:
+
+## Панель: вставленные строки журнала
+
+check-paste-lines = 📋 Вставить строки журнала
+check-paste-lines-hint = JSON Lines с полями { $api }, CSV с заголовком, который их называет, или строки printf по шаблону вроде LOG {"{"}uv{"}"} | {"{"}n{"}"} | {"{"}etai_over_etat{"}"} | {"{"}refracted{"}"}. Не более { $characters } символов; проверяются первые { $count } строк.
+check-pattern = Шаблон
+check-log-lines = Строки журнала
+check-lines-button = Проверить строки
+check-read-as-pattern = шаблон
+check-read-as-json-lines = JSON Lines
+check-read-as-csv = CSV (первая строка — заголовок)
+check-bulk-summary = Прочитано как { $read_as }: { $count ->
+    [one] { $count } вызов
+    [few] { $count } вызова
+    [many] { $count } вызовов
+   *[other] { $count } вызова
+}
+check-bulk-left-out = { $count ->
+    [one] { $count } строка после первых { $first } пропущена
+    [few] { $count } строки после первых { $first } пропущены
+    [many] { $count } строк после первых { $first } пропущены
+   *[other] { $count } строки после первых { $first } пропущены
+}
+check-column-line = строка
+check-column-ok = ok
+check-column-mistakes = ошибки
+check-column-explanation = объяснение
+check-row-line = строка { $line }
+check-row-open-hover = Открыть этот вызов в панели и на диаграмме
+check-row-error = ошибка
+
+## Чтение полей вызова, строки CSV, шаблона и вектора (эти сообщения показывает и панель)
+
+check-field-not-three = `{ $field }` должно содержать ровно 3 числа, а содержит { $count }
+check-field-not-a-vector = `{ $field }` должно быть массивом из 3 чисел или строкой вида «0.1, -0.9, 0»
+check-field-not-flag-got = `{ $field }` должно быть true/false или 1/0, а не «{ $text }»
+check-field-not-number-json = `{ $field }` должно быть числом
+check-field-not-flag = `{ $field }` должно быть true/false или 1/0
+check-field-not-label = `{ $field }` должно быть строкой или числом
+check-json-not-object = ожидается объект JSON с полями { $fields }
+check-unknown-field = неизвестное поле `{ $field }`
+check-field-not-vector = `{ $field }` должно состоять из 3 чисел
+check-field-missing = нет поля `{ $field }` ({ $what })
+check-what-normal = нормаль к поверхности
+check-what-incident = падающий вектор
+check-what-eta = отношение показателей
+check-field-not-finite = `{ $field }` должно быть конечным, а равно { $value }
+check-field-zero-vector = `{ $field }` — нулевой вектор
+check-field-not-positive = `{ $field }` должно быть конечным числом > 0, а равно { $value }
+check-from-and-to-together = `from` и `to` задаются вместе: укажите оба или ни одного
+check-travel-not-finite = `travel` должен быть конечным ненулевым вектором
+check-result-null = `{ $field }` равно null, хотя `{ $returned }` равно true
+check-result-missing = нет поля `{ $field }` (что вернул вызов{ $api ->
+    [pbrt] , или "returned": false
+    [mitsuba] , null при отражении
+   *[other] {""}
+})
+check-unknown-precision = неизвестная точность «{ $text }»: ожидается "f32" или "f64"
+check-too-large = { $value } слишком велико для { $precision }
+check-csv-unclosed-quote = незакрытая кавычка в строке CSV
+check-csv-no-column = в заголовке CSV нет столбца `{ $field }`: в нём { $names }; ожидается { $expected }
+check-csv-partial-vector = в заголовке CSV есть только { $count } из 3 компонент `{ $field }`
+check-csv-cells = { $count ->
+    [one] { $count } ячейка, а в заголовке { $columns } столбцов
+    [few] { $count } ячейки, а в заголовке { $columns } столбцов
+    [many] { $count } ячеек, а в заголовке { $columns } столбцов
+   *[other] { $count } ячейки, а в заголовке { $columns } столбцов
+}
+check-csv-no-header = нет пригодного заголовка CSV: { $reason }
+check-pattern-unclosed = незакрытая `{"{"}` в шаблоне «{ $pattern }»
+check-pattern-adjacent = два поля без ничего между ними в шаблоне «{ $pattern }»
+check-pattern-no-field = шаблон «{ $pattern }» не называет ни одного поля
+check-pattern-unknown-field = неизвестное поле {"{"}{ $field }{"}"} в шаблоне для --api { $api }: ожидается {"{"}_{"}"} или одно из { $expected }
+check-line-not-matching = строка не соответствует шаблону
+check-tally-skipped = пропущено (не соответствует шаблону)
+check-tally-unreadable = не прочитано
+check-tally-unexplained = не объяснено
+check-word-not-a-number = «{ $word }» — не число
+check-vector-expected-named = ожидается `{ $expected }: <число>`, найдено «{ $found }»
+check-vector-within = { $error } (в «{ $text }»)
+check-vector-not-three = ожидаются 3 числа, например `0.1, -0.9, 0` или `vec3(0.1, -0.9, 0.0)`, найдено { $count } в «{ $text }»

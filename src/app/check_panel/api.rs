@@ -9,17 +9,18 @@ use std::collections::HashMap;
 use egui::{RichText, Ui};
 use glam::DVec3;
 
-use super::{Checked, Shown, field, headline};
+use super::{Checked, Shown, field, headline, right_t};
 use crate::app::snippets::api::{self as snippets, ApiCase, Language};
 use crate::lines::api_check::call::Got;
 use crate::lines::api_check::fields::{self, Kind, names};
 use crate::lines::api_check::record::Value;
 use crate::lines::api_check::{Call, Diagnosis, Options, Record, check_record};
 use crate::lines::state_file;
-use crate::lines::vector_text::{short, short_vector};
+use crate::lines::vector_text::{spoken, spoken_vector};
 use refraction_diagram::ExplorerState;
 use refraction_diagram::model::INDEX_RANGE;
 use refraction_diagram::overlay::{StudentRay, VectorNames};
+use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::{Api, Args};
 use serde_json::Value as Json;
@@ -30,55 +31,35 @@ const TRUTH: [&str; 4] = ["from", "to", "travel", "entering"];
 /// The precision the student's code computes in, shown with the call (it sets the tolerance).
 const PRECISION: &str = "precision";
 
-/// How an API's case is drawn and what its arguments mean, in the panel's words.
-struct Drawn {
-    /// The API's short name, as the selector shows it.
-    owner: &'static str,
-    /// The explorer's convention that draws the API's incident vector as the API means it.
-    convention: Convention,
-    /// The label of the incident vector's arrow.
-    incident: &'static str,
-    /// What the arguments mean and how the diagram shows them.
-    about: &'static str,
+/// The API's short name, as the selector shows it.
+pub fn owner(api: Api) -> &'static str {
+    match api {
+        // untranslated: the shading language's name
+        Api::Glsl => "GLSL",
+        Api::Pbrt => "pbrt",
+        // untranslated: the book's short name
+        Api::Rtiow => "RTIOW",
+        // untranslated: the renderer's name
+        Api::Mitsuba => "Mitsuba",
+    }
 }
 
-fn drawn(api: Api) -> Drawn {
+/// The explorer's convention that draws the API's incident vector as the API means it.
+fn convention(api: Api) -> Convention {
     match api {
-        Api::Glsl => Drawn {
-            owner: "GLSL",
-            convention: Convention::AlongRay,
-            incident: "I (direction of travel)",
-            about: "I is the direction the ray travels, drawn as W along the ray (Section 2). \
-                    N must face I: GLSL does not turn it. eta = n_from/n_to = μi/μt. The zero \
-                    vector means total internal reflection.",
-        },
-        Api::Pbrt => Drawn {
-            owner: "pbrt",
-            convention: Convention::TowardOrigin,
-            incident: "wi (back toward the origin)",
-            about: "wi points back toward where the ray came from (−ray.d), drawn as W toward \
-                    the origin (Section 1). n may face either side: pbrt flips it and inverts \
-                    eta when wi is below it. eta = the index behind n over the one in front \
-                    (μt/μi with n facing wi). false means total internal reflection.",
-        },
-        Api::Rtiow => Drawn {
-            owner: "RTIOW",
-            convention: Convention::AlongRay,
-            incident: "uv (direction of travel)",
-            about: "uv is the unit direction the ray travels, drawn as W along the ray \
-                    (Section 2). n must face uv (front_face). etai_over_etat = n_from/n_to = \
-                    μi/μt. refract has no TIR test: the caller's cannot_refract reflects.",
-        },
-        Api::Mitsuba => Drawn {
-            owner: "Mitsuba",
-            convention: Convention::TowardOrigin,
-            incident: "wi (away from the surface)",
-            about: "wi points away from the surface, back along the ray, drawn as W toward the \
-                    origin (Section 1). n is +z (the local frame) when left empty. eta = \
-                    int_ior/ext_ior, the index behind n over the one in front (μt/μi with n \
-                    facing wi). F = 1 means total internal reflection: wo is null.",
-        },
+        Api::Glsl | Api::Rtiow => Convention::AlongRay,
+        Api::Pbrt | Api::Mitsuba => Convention::TowardOrigin,
     }
+}
+
+/// The label of the incident vector's arrow.
+fn incident_label(api: Api) -> String {
+    t!("check-drawn-incident", api = api.name())
+}
+
+/// What the arguments mean and how the diagram shows them.
+fn about(api: Api) -> String {
+    t!("check-drawn-about", api = api.name())
 }
 
 /// The width of a field holding `kind`.
@@ -102,17 +83,22 @@ fn value_text(value: &Value) -> String {
 }
 
 /// The API's answer (`api_result`) for reading: vectors as `(x, y, z)` and numbers with six
-/// digits, an object's fields as `name: value`.
+/// digits, an object's fields as `name: value`, separated as the language separates lists.
 fn readable(json: &Json) -> String {
+    let separator = refraction_i18n::locale().list_separator();
     match json {
-        Json::Number(x) => x.as_f64().map_or_else(|| x.to_string(), short),
+        Json::Number(x) => x.as_f64().map_or_else(|| x.to_string(), spoken),
         Json::Array(items) => {
             let numbers: Option<Vec<f64>> = items.iter().map(Json::as_f64).collect();
             match numbers.as_deref() {
-                Some(&[x, y, z]) => short_vector([x, y, z]),
+                Some(&[x, y, z]) => spoken_vector([x, y, z]),
                 _ => format!(
                     "[{}]",
-                    items.iter().map(readable).collect::<Vec<_>>().join(", ")
+                    items
+                        .iter()
+                        .map(readable)
+                        .collect::<Vec<_>>()
+                        .join(separator)
                 ),
             }
         }
@@ -120,7 +106,7 @@ fn readable(json: &Json) -> String {
             .iter()
             .map(|(name, value)| format!("{name}: {}", readable(value)))
             .collect::<Vec<_>>()
-            .join(", "),
+            .join(separator),
         other => other.to_string(),
     }
 }
@@ -172,16 +158,13 @@ fn picture(
     let (low, high) = INDEX_RANGE;
     let (mu_i, mu_t) = indices(from_to, mu);
     if ![mu_i, mu_t].iter().all(|x| (low..=high).contains(x)) {
-        return Err(format!(
-            "μ = {} needs indices outside the explorer's {low}…{high}",
-            short(mu)
-        ));
+        let [mu, low, high] = [mu, low, high].map(spoken);
+        return Err(t!("check-picture-outside", mu = mu, low = low, high = high));
     }
     let Args {
         incident, normal, ..
     } = right;
-    ExplorerState::new(incident, normal, mu_i, mu_t, drawn(api).convention)
-        .map_err(|e| e.to_string())
+    ExplorerState::new(incident, normal, mu_i, mu_t, convention(api)).map_err(|e| e.to_string())
 }
 
 impl Judged {
@@ -210,15 +193,16 @@ impl Judged {
             Got::Nothing => DVec3::ZERO,
         };
         let what = if self.diagnosis.ok {
-            "right".to_owned()
+            t!("check-student-right")
         } else {
-            self.mistake_names().unwrap_or_else(|| "wrong".to_owned())
+            self.mistake_names()
+                .unwrap_or_else(|| t!("check-student-wrong"))
         };
         StudentRay {
             t,
-            label: format!("your {}: {what}", n.result),
+            label: t!("check-student-api", result = n.result, verdict = what),
             names: Some(VectorNames {
-                incident: drawn(self.call.api).incident.to_owned(),
+                incident: incident_label(self.call.api),
                 normal: n.normal.to_owned(),
             }),
         }
@@ -248,49 +232,47 @@ impl Judged {
         let d = &self.diagnosis;
         let api = self.call.api;
         let head = match self.mistake_names() {
-            _ if d.ok => format!("Right: what {} means for this ray", api.signature()),
-            Some(codes) => format!("Mistakes: {codes}"),
-            None => "Not explained by any single mistake".to_owned(),
+            _ if d.ok => t!("check-api-right-headline", signature = api.signature()),
+            Some(codes) => t!("check-api-mistakes", codes = codes),
+            None => t!("check-api-unexplained-headline"),
         };
         headline(ui, d.ok, &head);
         for code in &d.mistakes {
             ui.label(format!("• {}: {}", code.name(), code.meaning()));
         }
         ui.label(&d.explanation);
-        ui.label(format!(
-            "{} returns {}",
-            drawn(api).owner,
-            readable(&d.api_result)
-        ))
-        .on_hover_text(d.api_result.to_string());
-        let right = d.t.map_or_else(
-            || "There is no refracted ray: total internal reflection.".to_owned(),
-            |t| format!("The right T = {}", short_vector(t)),
-        );
-        ui.label(right);
-        let n = names(api);
+        let (owner, value) = (owner(api), readable(&d.api_result));
+        ui.label(t!("check-api-returns", owner = owner, value = value))
+            .on_hover_text(d.api_result.to_string());
+        ui.label(right_t(d.t.map(spoken_vector)));
         let drawn = match &self.picture {
-            Ok(state) => format!(
-                "Drawn: the right call, {} = {}, {} = {}, {} = {} (μi = {}, μt = {}).",
-                n.incident,
-                short_vector(self.right.incident.to_array()),
-                n.normal,
-                short_vector(self.right.normal.to_array()),
-                n.eta,
-                short(self.right.eta),
-                short(state.mu_i()),
-                short(state.mu_t()),
-            ),
-            Err(why) => format!("Not drawn: {why}."),
+            Ok(state) => self.drawn(state),
+            Err(why) => t!("check-api-not-drawn", why = why),
         };
         ui.label(drawn);
+    }
+
+    /// What the diagram shows of the right call: its arguments and the indices drawn.
+    #[rustfmt::skip] // the t! keys stay where the translation tests find them
+    fn drawn(&self, state: &ExplorerState) -> String {
+        let n = names(self.call.api);
+        t!("check-api-drawn",
+            incident = n.incident,
+            incident_value = spoken_vector(self.right.incident.to_array()),
+            normal = n.normal,
+            normal_value = spoken_vector(self.right.normal.to_array()),
+            eta = n.eta,
+            eta_value = spoken(self.right.eta),
+            mu_i = spoken(state.mu_i()),
+            mu_t = spoken(state.mu_t())
+        )
     }
 }
 
 /// The copy buttons for the student's languages; the text copied, if one was clicked.
 pub fn copy_buttons(ui: &mut Ui, judged: &Judged) -> Option<String> {
     ui.horizontal_wrapped(|ui| {
-        ui.label("Copy as a unit test:");
+        ui.label(t!("check-copy-as-test"));
         let mut copied = None;
         for &language in Language::of(judged.call.api) {
             if ui.button(language.label()).clicked() {
@@ -380,9 +362,9 @@ impl ApiFields {
             self.take_case(api, state);
         }
         ui.label(RichText::new(api.signature()).strong());
-        ui.label(format!("Convention: {}", drawn(api).about));
+        ui.label(t!("check-convention-about", about = about(api)));
         let mut asked = false;
-        for (title, list) in [("Your call", own), ("Truth (optional)", truth)] {
+        for (title, list) in [(t!("check-your-call"), own), (t!("check-truth"), truth)] {
             ui.horizontal_wrapped(|ui| {
                 ui.label(RichText::new(title).italics());
                 for (name, kind) in list {
@@ -393,13 +375,13 @@ impl ApiFields {
         }
         ui.horizontal_wrapped(|ui| {
             if ui
-                .button("Use the current case")
-                .on_hover_text("Fill the arguments and the indices from the explorer")
+                .button(t!("check-use-current-case"))
+                .on_hover_text(t!("check-use-current-case-api-hover"))
                 .clicked()
             {
                 self.take_case(api, state);
             }
-            asked |= ui.button("Check").clicked();
+            asked |= ui.button(t!("check-button")).clicked();
         });
         asked
     }

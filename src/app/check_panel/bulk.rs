@@ -8,9 +8,10 @@ use super::{JSON_LINE_START, field};
 use crate::app::paint::color;
 use crate::app::typed::error_label;
 use crate::lines::api_check::{
-    Diagnosis, Format, Options, Pattern, Record, Session, Tally, check_record,
+    Diagnosis, Format, Options, Pattern, Record, SKIPPED, Session, Tally, check_record,
 };
 use refraction_diagram::palette;
+use refraction_i18n::t;
 use refraction_kernel::api::Api;
 
 /// The most characters the box takes (a paste beyond it is cut there): about 500 log lines.
@@ -34,8 +35,8 @@ struct Row {
 /// The verdicts on the pasted lines.
 #[derive(Clone, Debug, PartialEq)]
 struct Table {
-    /// How the lines were read: `JSON Lines`, `CSV` or `the pattern`.
-    read_as: &'static str,
+    /// How the lines were read: `JSON Lines`, `CSV` or `the pattern` (in the language's words).
+    read_as: String,
     rows: Vec<Row>,
     tally: Tally,
     /// Lines beyond [`MAX_LINES`] that were not judged.
@@ -53,16 +54,16 @@ pub struct Bulk {
 
 /// How the lines are written: by the pattern when one is given, else JSON Lines when the first
 /// line is an object, else CSV with that line as its header.
-fn how_written(api: Api, pattern: &str, text: &str) -> Result<(Format, &'static str), String> {
+fn how_written(api: Api, pattern: &str, text: &str) -> Result<(Format, String), String> {
     if !pattern.trim().is_empty() {
         let pattern = Pattern::parse(api, pattern.trim())?;
-        return Ok((Format::Pattern(pattern), "the pattern"));
+        return Ok((Format::Pattern(pattern), t!("check-read-as-pattern")));
     }
     let first = text.lines().find(|l| !l.trim().is_empty()).unwrap_or("");
     if first.trim_start().starts_with(JSON_LINE_START) {
-        Ok((Format::JsonLines, "JSON Lines"))
+        Ok((Format::JsonLines, t!("check-read-as-json-lines")))
     } else {
-        Ok((Format::Csv, "CSV (the first line is the header)"))
+        Ok((Format::Csv, t!("check-read-as-csv")))
     }
 }
 
@@ -105,6 +106,23 @@ fn judge(api: Api, pattern: &str, text: &str) -> Result<Table, String> {
     })
 }
 
+/// The tally in the language's words; the mistakes keep their codes, as the table shows them.
+fn tally_words(tally: &Tally) -> String {
+    let parts: Vec<String> = tally
+        .counts()
+        .map(|(kind, n)| {
+            let kind = match kind {
+                SKIPPED => t!("check-tally-skipped"),
+                "unreadable" => t!("check-tally-unreadable"),
+                "unexplained" => t!("check-tally-unexplained"),
+                code => code.to_owned(),
+            };
+            format!("{n} {kind}")
+        })
+        .collect();
+    parts.join(", ")
+}
+
 /// The first `SHORT_EXPLANATION` characters of `text`, cut at a word, with an ellipsis.
 fn shortened(text: &str) -> String {
     if text.chars().count() <= SHORT_EXPLANATION {
@@ -118,26 +136,32 @@ fn shortened(text: &str) -> String {
 impl Table {
     /// The summary line and the rows; the record of the row clicked, if one was.
     fn show(&self, ui: &mut Ui, selected: &mut Option<usize>) -> Option<Record> {
-        let mut summary = format!("Read as {}: {} calls", self.read_as, self.rows.len());
-        let tally = self.tally.summary();
+        let (read_as, count) = (&self.read_as, self.rows.len());
+        let mut summary = t!("check-bulk-summary", read_as = read_as, count = count);
+        let tally = tally_words(&self.tally);
         if !tally.is_empty() {
             summary.push_str(&format!(" ({tally})"));
         }
         if self.left_out > 0 {
-            summary.push_str(&format!(
-                "; {} lines after the first {MAX_LINES} left out",
-                self.left_out
-            ));
+            let (count, first) = (self.left_out, MAX_LINES);
+            let left_out = t!("check-bulk-left-out", count = count, first = first);
+            summary.push_str(&format!("; {left_out}"));
         }
         ui.label(summary);
         let mut opened = None;
         // No scroll area of its own: the tool's panel scrolls, and a nested one would keep a
         // row that is scrolled to (a click, the keyboard) out of view.
+        // untranslated: egui's id of the grid
         Grid::new("pasted verdicts grid")
             .striped(true)
             .num_columns(4)
             .show(ui, |ui| {
-                for heading in ["line", "ok", "mistakes", "explanation"] {
+                for heading in [
+                    t!("check-column-line"),
+                    t!("check-column-ok"),
+                    t!("check-column-mistakes"),
+                    t!("check-column-explanation"),
+                ] {
                     ui.label(RichText::new(heading).strong());
                 }
                 ui.end_row();
@@ -157,8 +181,8 @@ impl Row {
     /// The row's cells; whether its line number was clicked.
     fn show(&self, ui: &mut Ui, selected: bool) -> bool {
         let clicked = ui
-            .selectable_label(selected, format!("line {}", self.line))
-            .on_hover_text("Open this call in the panel and the diagram")
+            .selectable_label(selected, t!("check-row-line", line = self.line.to_string()))
+            .on_hover_text(t!("check-row-open-hover"))
             .clicked();
         match &self.verdict {
             Ok((_, d)) => {
@@ -175,7 +199,7 @@ impl Row {
             }
             Err(e) => {
                 ui.label(RichText::new("✖").color(color(palette::ALARM)));
-                ui.label("error");
+                ui.label(t!("check-row-error"));
                 error_label(ui, &shortened(e));
             }
         }
@@ -187,20 +211,17 @@ impl Bulk {
     /// The collapsible section: the pattern, the box, the Check button and the table; the
     /// record of the row clicked, to open.
     pub fn show(&mut self, ui: &mut Ui, api: Api) -> Option<Record> {
-        CollapsingHeader::new("📋 Paste log lines")
+        CollapsingHeader::new(t!("check-paste-lines"))
+            // untranslated: egui's id of the section, the same in every language
             .id_salt("paste log lines")
             .show(ui, |ui| {
-                ui.label(format!(
-                    "JSON Lines of {api}'s fields, CSV with a header naming them, or printf lines \
-                     with a pattern such as LOG {{uv}} | {{n}} | {{etai_over_etat}} | \
-                     {{refracted}}. At most {MAX_PASTED_CHARS} characters; the first \
-                     {MAX_LINES} lines are checked.",
-                    api = api.name()
-                ));
+                let (a, c, n) = (api.name(), MAX_PASTED_CHARS, MAX_LINES);
+                let hint = t!("check-paste-lines-hint", api = a, characters = c, count = n);
+                ui.label(hint);
                 ui.horizontal_wrapped(|ui| {
-                    field(ui, "Pattern", &mut self.pattern, 360.0);
+                    field(ui, &t!("check-pattern"), &mut self.pattern, 360.0);
                 });
-                let name = ui.label("Log lines");
+                let name = ui.label(t!("check-log-lines"));
                 ui.add(
                     TextEdit::multiline(&mut self.text)
                         .char_limit(MAX_PASTED_CHARS)
@@ -209,7 +230,7 @@ impl Bulk {
                         .code_editor(),
                 )
                 .labelled_by(name.id);
-                if ui.button("Check the lines").clicked() {
+                if ui.button(t!("check-lines-button")).clicked() {
                     self.table = Some(judge(api, &self.pattern, &self.text));
                     self.selected = None;
                 }

@@ -21,6 +21,7 @@ use refraction_diagram::ExplorerState;
 use refraction_diagram::numbers::vector;
 use refraction_diagram::overlay::StudentRay;
 use refraction_diagram::palette;
+use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
 
@@ -34,14 +35,22 @@ enum Source {
     Api(Api),
 }
 
-/// The selector's choices, in order, with their labels.
-const SOURCES: [(Source, &str); 5] = [
-    (Source::Own, "W, N, μ (this project)"),
-    (Source::Api(Api::Glsl), "GLSL"),
-    (Source::Api(Api::Pbrt), "pbrt"),
-    (Source::Api(Api::Rtiow), "RTIOW"),
-    (Source::Api(Api::Mitsuba), "Mitsuba"),
+/// The selector's choices, in order.
+const SOURCES: [Source; 5] = [
+    Source::Own,
+    Source::Api(Api::Glsl),
+    Source::Api(Api::Pbrt),
+    Source::Api(Api::Rtiow),
+    Source::Api(Api::Mitsuba),
 ];
+
+/// A choice's label in the selector: the API's own name, or this project's fields.
+fn source_label(source: Source) -> String {
+    match source {
+        Source::Own => t!("check-source-own"),
+        Source::Api(api) => api::owner(api).to_owned(),
+    }
+}
 
 /// What a checked case said.
 #[derive(Clone, Debug, PartialEq)]
@@ -87,17 +96,17 @@ pub struct CheckPanel {
 }
 
 /// What a verdict's match is called on the diagram and in the headline.
-fn match_words(verdict: &Verdict) -> &'static str {
+fn match_words(verdict: &Verdict) -> String {
     match verdict.matches {
-        Some(Match::Chosen) if verdict.ok => "the refracted ray T",
-        Some(Match::Chosen) => "T's direction, but not unit length",
+        Some(Match::Chosen) if verdict.ok => t!("check-match-refracted"),
+        Some(Match::Chosen) => t!("check-match-not-unit"),
         Some(Match::Rejected(r)) => match r {
-            refraction_kernel::Rejection::WrongSide => "wrong side (the other root for b)",
-            refraction_kernel::Rejection::WrongBend => "wrong bend (the other sign of a)",
-            refraction_kernel::Rejection::Reversed => "reversed (−T: both signs wrong)",
+            refraction_kernel::Rejection::WrongSide => t!("check-match-wrong-side"),
+            refraction_kernel::Rejection::WrongBend => t!("check-match-wrong-bend"),
+            refraction_kernel::Rejection::Reversed => t!("check-match-reversed"),
         },
-        Some(Match::TotalInternalReflection) => "total internal reflection, answered right",
-        None => "none of the four candidates",
+        Some(Match::TotalInternalReflection) => t!("check-match-tir"),
+        None => t!("check-match-none"),
     }
 }
 
@@ -105,24 +114,26 @@ fn match_words(verdict: &Verdict) -> &'static str {
 const JSON_LINE_START: char = '{';
 
 /// The two conventions of this project's fields, as the panel offers them.
-const CONVENTIONS: [(Convention, &str, &str); 2] = [
-    (
-        Convention::AlongRay,
-        "Section 2: W along the ray",
-        "W is the direction the ray travels, toward the surface (GLSL's I, the book's uv).",
-    ),
-    (
-        Convention::TowardOrigin,
-        "Section 1: W toward the origin",
-        "W points back toward where the ray came from (pbrt's and Mitsuba's wi).",
-    ),
-];
+const CONVENTIONS: [Convention; 2] = [Convention::AlongRay, Convention::TowardOrigin];
 
-/// Reads a number typed into the field named `name`.
+/// A convention's name in the panel and what it means for W.
+fn convention_words(convention: Convention) -> (String, String) {
+    match convention {
+        Convention::AlongRay => (
+            t!("check-convention-along-ray"),
+            t!("check-convention-along-ray-about"),
+        ),
+        Convention::TowardOrigin => (
+            t!("check-convention-toward-origin"),
+            t!("check-convention-toward-origin-about"),
+        ),
+    }
+}
+
+/// Reads a number typed into the field named `name`, with a decimal point or comma.
 fn number(text: &str, name: &str) -> Result<f64, String> {
-    text.trim()
-        .parse()
-        .map_err(|_| format!("{name}: “{}” is not a number", text.trim()))
+    refraction_i18n::read_number(text)
+        .ok_or_else(|| t!("check-field-not-number", field = name, text = text.trim()))
 }
 
 /// Reads a vector typed into the field named `name`.
@@ -194,7 +205,10 @@ impl Own {
             convention: self.convention,
             precision: Precision::F64,
         };
-        Ok((request, vector_field(&self.yours, "your T")?))
+        Ok((
+            request,
+            vector_field(&self.yours, &t!("check-your-t-in-error"))?,
+        ))
     }
 
     /// Checks the T in the fields; the case to open and the verdict.
@@ -209,7 +223,7 @@ impl Own {
             opened: Some(case),
             student: StudentRay {
                 t: DVec3::from_array(yours),
-                label: format!("your T: {}", match_words(&verdict)),
+                label: t!("check-student-own", verdict = match_words(&verdict)),
                 names: None,
             },
             shown: Shown::Own(verdict),
@@ -219,27 +233,20 @@ impl Own {
     /// The convention the fields are read in, chosen here (filled from the explorer's).
     fn convention_ui(&mut self, ui: &mut Ui) {
         ui.horizontal_wrapped(|ui| {
-            ui.label("Convention:");
-            for (convention, label, _) in CONVENTIONS {
+            ui.label(t!("check-convention"));
+            for convention in CONVENTIONS {
+                let (label, _) = convention_words(convention);
                 ui.selectable_value(&mut self.convention, convention, label);
             }
         });
-        let (_, _, about) = CONVENTIONS
-            .iter()
-            .find(|(c, _, _)| *c == self.convention)
-            .unwrap_or(&CONVENTIONS[0]);
-        ui.label(format!(
-            "{about} μ = μi/μt; N on either side (the kernel turns it to face the ray)."
-        ));
+        let (_, about) = convention_words(self.convention);
+        ui.label(t!("check-convention-note", about = about));
     }
 
     /// The fields; whether the user asked to check.
     fn show(&mut self, ui: &mut Ui, state: &ExplorerState) -> bool {
         self.convention_ui(ui);
-        ui.label(
-            "Paste what your ray tracer logged. Vectors as 0.1, -0.9, 0 or [0.1,-0.9,0] or \
-             vec3(0.1, -0.9, 0.0); or paste a whole JSON line with t_yours into \"Your T\".",
-        );
+        ui.label(t!("check-paste-hint"));
         ui.horizontal_wrapped(|ui| {
             for (label, text, width) in [
                 ("W", &mut self.w, 150.0),
@@ -250,8 +257,8 @@ impl Own {
                 field(ui, label, text, width);
             }
             if ui
-                .button("Use the current case")
-                .on_hover_text("Fill W, N, μ and the convention from the explorer")
+                .button(t!("check-use-current-case"))
+                .on_hover_text(t!("check-use-current-case-own-hover"))
                 .clicked()
             {
                 self.fill(&state_file::request(state));
@@ -259,8 +266,8 @@ impl Own {
         });
         ui.horizontal_wrapped(|ui| {
             let width = (ui.available_width() - 80.0).clamp(120.0, 520.0);
-            let entered = field(ui, "Your T", &mut self.yours, width);
-            ui.button("Check").clicked() || entered
+            let entered = field(ui, &t!("check-your-t"), &mut self.yours, width);
+            ui.button(t!("check-button")).clicked() || entered
         })
         .inner
     }
@@ -268,13 +275,21 @@ impl Own {
 
 /// Shows a verdict on a T in this project's fields.
 fn own_verdict(ui: &mut Ui, v: &Verdict) {
-    headline(ui, v.ok, &format!("Your T matches {}", match_words(v)));
-    ui.label(&v.explanation);
-    let right = v.correct.map_or_else(
-        || "There is no refracted ray: total internal reflection.".to_owned(),
-        |t| format!("The right T = {}", vector(DVec3::from_array(t), 4)),
+    headline(
+        ui,
+        v.ok,
+        &t!("check-headline-own", verdict = match_words(v)),
     );
-    ui.label(right);
+    ui.label(&v.explanation);
+    ui.label(right_t(v.correct.map(|t| vector(DVec3::from_array(t), 4))));
+}
+
+/// The right T written for reading, or that there is none.
+fn right_t(written: Option<String>) -> String {
+    written.map_or_else(
+        || t!("check-no-refracted-ray"),
+        |t| t!("check-right-t", t = t),
+    )
 }
 
 impl CheckPanel {
@@ -314,9 +329,9 @@ impl CheckPanel {
     fn selector(&mut self, ui: &mut Ui) {
         let before = self.source;
         ui.horizontal_wrapped(|ui| {
-            ui.label("Your code calls:");
-            for (source, label) in SOURCES {
-                ui.selectable_value(&mut self.source, source, label);
+            ui.label(t!("check-code-calls"));
+            for source in SOURCES {
+                ui.selectable_value(&mut self.source, source, source_label(source));
             }
         });
         if self.source != before {
@@ -350,10 +365,7 @@ impl CheckPanel {
                     }
                 }
                 if !drawn && checked.opened.is_some() {
-                    ui.label(
-                        RichText::new("(The case has changed since: the verdict is not drawn.)")
-                            .small(),
-                    );
+                    ui.label(RichText::new(t!("check-not-drawn-changed")).small());
                 }
             }
         }

@@ -3,6 +3,7 @@
 //! logged numbers.
 
 use glam::DVec3;
+use refraction_i18n::{decimal, t};
 use refraction_kernel::api::{Api, Args};
 
 use super::fields::{self, names};
@@ -96,17 +97,20 @@ fn vector(record: &Record, name: &str) -> Result<Option<DVec3>, String> {
     match record.get(name) {
         None => Ok(None),
         Some(Value::Vector(v)) => Ok(Some(DVec3::from_array(*v))),
-        Some(_) => Err(format!("`{name}` must be 3 numbers")),
+        Some(_) => Err(t!("check-field-not-vector", field = name)),
     }
 }
 
-fn required_vector(record: &Record, name: &str, what: &str) -> Result<DVec3, String> {
-    let v = vector(record, name)?.ok_or_else(|| format!("missing field `{name}` ({what})"))?;
+/// The argument vector `name` (`what` says what it is), finite and not zero.
+fn required_vector(record: &Record, name: &str, what: String) -> Result<DVec3, String> {
+    let missing = || t!("check-field-missing", field = name, what = what);
+    let v = vector(record, name)?.ok_or_else(missing)?;
     if !v.is_finite() {
-        return Err(format!("`{name}` must be finite, got {v}"));
+        let value = v.to_string();
+        return Err(t!("check-field-not-finite", field = name, value = value));
     }
     if v == DVec3::ZERO {
-        return Err(format!("`{name}` is the zero vector"));
+        return Err(t!("check-field-zero-vector", field = name));
     }
     Ok(v)
 }
@@ -115,8 +119,11 @@ fn number(record: &Record, name: &str) -> Result<Option<f64>, String> {
     match record.get(name) {
         None => Ok(None),
         Some(Value::Number(x)) if x.is_finite() && *x > 0.0 => Ok(Some(*x)),
-        Some(Value::Number(x)) => Err(format!("`{name}` must be a finite number > 0, got {x}")),
-        Some(_) => Err(format!("`{name}` must be a number")),
+        Some(Value::Number(x)) => {
+            let value = decimal(&x.to_string());
+            Err(t!("check-field-not-positive", field = name, value = value))
+        }
+        Some(_) => Err(t!("check-field-not-number-json", field = name)),
     }
 }
 
@@ -139,7 +146,7 @@ fn truth(record: &Record, options: &Options) -> Result<Truth, String> {
     let given = match (number(record, "from")?, number(record, "to")?) {
         (Some(from), Some(to)) => Some((from, to)),
         (None, None) => None,
-        _ => return Err("`from` and `to` go together: give both or neither".to_owned()),
+        _ => return Err(t!("check-from-and-to-together")),
     };
     let sides = options.inside.zip(options.outside);
     let from_sides = entering.zip(sides).map(|(entering, (inside, outside))| {
@@ -151,7 +158,7 @@ fn truth(record: &Record, options: &Options) -> Result<Truth, String> {
     });
     let travel = vector(record, "travel")?;
     if travel.is_some_and(|t| !t.is_finite() || t == DVec3::ZERO) {
-        return Err("`travel` must be a finite non-zero vector".to_owned());
+        return Err(t!("check-travel-not-finite"));
     }
     Ok(Truth {
         from_to: given.or(from_sides),
@@ -166,21 +173,14 @@ fn got(record: &Record, api: Api) -> Result<Got, String> {
     let returned = flag(record, fields::RETURNED);
     match (record.get(name), returned) {
         (_, Some(false)) => Ok(Got::Nothing),
-        (Some(Value::Null), Some(true)) => Err(format!(
-            "`{name}` is null although `{}` is true",
-            fields::RETURNED
-        )),
+        (Some(Value::Null), Some(true)) => {
+            let returned = fields::RETURNED;
+            Err(t!("check-result-null", field = name, returned = returned))
+        }
         (Some(Value::Null), None) => Ok(Got::Nothing),
         (Some(Value::Vector(v)), _) => Ok(Got::Vector(DVec3::from_array(*v))),
-        (None, _) => Err(format!(
-            "missing field `{name}` (what the call returned{})",
-            match api {
-                Api::Pbrt => ", or \"returned\": false",
-                Api::Mitsuba => ", null when it reflected",
-                Api::Glsl | Api::Rtiow => "",
-            }
-        )),
-        (Some(_), _) => Err(format!("`{name}` must be 3 numbers")),
+        (None, _) => Err(t!("check-result-missing", field = name, api = api.name())),
+        (Some(_), _) => Err(t!("check-field-not-vector", field = name)),
     }
 }
 
@@ -191,9 +191,7 @@ fn precision(record: &Record, options: &Options) -> Result<Precision, String> {
             .unwrap_or_else(|| fields::usual_precision(options.api))),
         Some("f32" | "float") => Ok(Precision::F32),
         Some("f64" | "double") => Ok(Precision::F64),
-        Some(other) => Err(format!(
-            "unknown precision \"{other}\": expected \"f32\" or \"f64\""
-        )),
+        Some(other) => Err(t!("check-unknown-precision", text = other)),
     }
 }
 
@@ -209,13 +207,15 @@ impl Call {
         let normal = if api == Api::Mitsuba && record.get(n.normal).is_none() {
             DVec3::Z
         } else {
-            required_vector(record, n.normal, "the surface normal")?
+            required_vector(record, n.normal, t!("check-what-normal"))?
         };
         let args = Args {
-            incident: required_vector(record, n.incident, "the incident vector")?,
+            incident: required_vector(record, n.incident, t!("check-what-incident"))?,
             normal,
-            eta: number(record, n.eta)?
-                .ok_or_else(|| format!("missing field `{}` (the index ratio)", n.eta))?,
+            eta: number(record, n.eta)?.ok_or_else(|| {
+                let (eta, what) = (n.eta, t!("check-what-eta"));
+                t!("check-field-missing", field = eta, what = what)
+            })?,
         };
         Ok(Self {
             api,

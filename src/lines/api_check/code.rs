@@ -1,5 +1,7 @@
 //! The mistake codes of `check --api`.
 
+use refraction_i18n::t;
+
 /// A mistake a call can contain.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Code {
@@ -43,23 +45,17 @@ impl Code {
         }
     }
 
-    /// What the mistake is, in one line (the README's table), for lists beside a verdict.
+    /// What the mistake is, in one line (the README's table), for lists beside a verdict, in
+    /// the current language.
     #[must_use]
-    pub fn meaning(self) -> &'static str {
+    pub fn meaning(self) -> String {
         match self {
-            Self::EtaInverted => "the index ratio upside down for this API's convention",
-            Self::IncidentReversed => "the incident vector passed the wrong way round",
-            Self::NormalNotFacing => {
-                "the normal on the wrong side for this API (or for the eta passed)"
-            }
-            Self::NotTheApiResult => {
-                "the result is not what the API returns for these arguments: your own \
-                 implementation differs"
-            }
-            Self::MissedTir => {
-                "a direction (or NaN) where the API signals total internal reflection"
-            }
-            Self::NotUnitInput => "the incident vector or the normal is not unit length",
+            Self::EtaInverted => t!("check-mistake-eta-inverted"),
+            Self::IncidentReversed => t!("check-mistake-incident-reversed"),
+            Self::NormalNotFacing => t!("check-mistake-normal-not-facing"),
+            Self::NotTheApiResult => t!("check-mistake-not-the-api-result"),
+            Self::MissedTir => t!("check-mistake-missed-tir"),
+            Self::NotUnitInput => t!("check-mistake-not-unit-input"),
         }
     }
 }

@@ -2,6 +2,7 @@
 //! quoted when it holds commas: `"0.6, -0.8, 0"`) or three (`uv.x,uv.y,uv.z`, `uv_x,...` or
 //! `uv[0],...`); columns the API has no field for are ignored; an empty cell is an absent field.
 
+use refraction_i18n::t;
 use refraction_kernel::api::Api;
 
 use super::fields::{self, Kind, names};
@@ -36,6 +37,7 @@ pub fn cells(line: &str) -> Result<Vec<String>, String> {
     while let Some(c) = chars.next() {
         let cell = out
             .last_mut()
+            // untranslated: a programmer's note, never shown
             .unwrap_or_else(|| unreachable!("out starts non-empty"));
         match c {
             '"' if quoted && chars.peek() == Some(&'"') => {
@@ -48,7 +50,7 @@ pub fn cells(line: &str) -> Result<Vec<String>, String> {
         }
     }
     if quoted {
-        return Err("unclosed quote in the CSV line".to_owned());
+        return Err(t!("check-csv-unclosed-quote"));
     }
     Ok(out.into_iter().map(|c| c.trim().to_owned()).collect())
 }
@@ -97,11 +99,9 @@ impl Header {
             let optional = (api == Api::Mitsuba && field == n.normal)
                 || (api == Api::Pbrt && field == n.result && has(fields::RETURNED));
             if !optional && !has(field) {
-                return Err(format!(
-                    "the CSV header has no column `{field}`: it names {}; expected {}",
-                    line.trim(),
-                    fields::listed(api)
-                ));
+                let (f, h, l) = (field, line.trim(), fields::listed(api));
+                let e = t!("check-csv-no-column", field = f, names = h, expected = l);
+                return Err(e);
             }
         }
         for (field, _) in fields::all(api) {
@@ -109,9 +109,7 @@ impl Header {
                 .filter(|&axis| columns.contains(&Column::Component(field, axis)))
                 .count();
             if axes != 0 && axes != 3 {
-                return Err(format!(
-                    "the CSV header has only {axes} of `{field}`'s 3 components"
-                ));
+                return Err(t!("check-csv-partial-vector", field = field, count = axes));
             }
         }
         Ok(Self { api, columns })
@@ -124,11 +122,8 @@ impl Header {
     pub fn record(&self, line: &str) -> Result<Record, String> {
         let cells = cells(line)?;
         if cells.len() != self.columns.len() {
-            return Err(format!(
-                "{} cells where the header has {} columns",
-                cells.len(),
-                self.columns.len()
-            ));
+            let (count, columns) = (cells.len(), self.columns.len().to_string());
+            return Err(t!("check-csv-cells", count = count, columns = columns));
         }
         let mut texts: Vec<(&str, String)> = Vec::new();
         let mut parts: Vec<(&str, [&str; 3])> = Vec::new();

@@ -9,7 +9,8 @@ use super::diagnose::Resemblance;
 use super::fields::names;
 use super::readings::{Reading, normal_points_inward};
 use super::result::{Returns, Seen};
-use crate::lines::vector_text::{length, short, short_vector};
+use crate::lines::vector_text::{length, spoken, spoken_vector};
+use refraction_i18n::t;
 
 /// Everything the explanation draws on.
 pub struct Context<'a> {
@@ -25,53 +26,25 @@ pub struct Context<'a> {
     pub seen: Seen,
 }
 
-/// How each API speaks.
+/// How each API speaks, in the current language.
 struct Words {
-    owner: &'static str,
-    call: &'static str,
-    eta_means: &'static str,
-    incident_means: &'static str,
-    root_hint: &'static str,
-    usual: &'static str,
+    owner: String,
+    call: String,
+    eta_means: String,
+    incident_means: String,
+    root_hint: String,
+    usual: String,
 }
 
 fn words(api: Api) -> Words {
-    match api {
-        Api::Glsl => Words {
-            owner: "GLSL",
-            call: "GLSL's refract(I, N, eta)",
-            eta_means: "n_from/n_to, the index the ray leaves over the one it enters",
-            incident_means: "the direction the ray travels, toward the surface",
-            root_hint: "GLSL subtracts (eta * dot(N, I) + sqrt(k)) * N",
-            usual: "",
-        },
-        Api::Pbrt => Words {
-            owner: "pbrt",
-            call: "pbrt's Refract(wi, n, eta)",
-            eta_means: "the index on the side n points away from over the index on the side \
-                        it points to (n_inside/n_outside with the outward normal)",
-            incident_means: "the direction back toward where the ray came from (-ray.d)",
-            root_hint: "wt takes (cosTheta_i / eta - cosTheta_t) * n",
-            usual: "the outward normal with the material's eta (n_inside/n_outside)",
-        },
-        Api::Rtiow => Words {
-            owner: "The book",
-            call: "the book's refract(uv, n, etai_over_etat)",
-            eta_means: "etai/etat = n_from/n_to (1/refraction_index on a front face, \
-                        refraction_index on a back face)",
-            incident_means: "the unit direction the ray travels (unit_vector(r_in.direction()))",
-            root_hint: "r_out_parallel is -sqrt(fabs(1 - r_out_perp.length_squared())) * n",
-            usual: "",
-        },
-        Api::Mitsuba => Words {
-            owner: "Mitsuba",
-            call: "Mitsuba's fresnel(cos_theta_i, eta) with refract",
-            eta_means: "int_ior/ext_ior, the index on the side the normal points away from over \
-                        the index on the side it points to",
-            incident_means: "wi, pointing away from the surface back along the ray (-ray.d)",
-            root_hint: "cos_theta_t has the opposite sign to cos_theta_i",
-            usual: "the exterior normal with eta = int_ior/ext_ior",
-        },
+    let api = api.name();
+    Words {
+        owner: t!("check-api-owner", api = api),
+        call: t!("check-api-call", api = api),
+        eta_means: t!("check-api-eta-means", api = api),
+        incident_means: t!("check-api-incident-means", api = api),
+        root_hint: t!("check-api-root-hint", api = api),
+        usual: t!("check-api-usual", api = api),
     }
 }
 
@@ -79,15 +52,28 @@ fn words(api: Api) -> Words {
 fn situation(call: &Call) -> Option<String> {
     let t = &call.truth;
     let (from, to) = t.from_to?;
+    let (from, to) = (spoken(from), spoken(to));
     Some(match t.entering {
-        Some(entering) if t.from_entering => format!(
-            "{} the object (from n = {} into n = {})",
-            if entering { "entering" } else { "leaving" },
-            short(from),
-            short(to)
-        ),
-        _ => format!("going from n = {} into n = {}", short(from), short(to)),
+        Some(true) if t.from_entering => t!("check-situation-entering", from = from, to = to),
+        Some(false) if t.from_entering => t!("check-situation-leaving", from = from, to = to),
+        _ => t!("check-situation-going", from = from, to = to),
     })
+}
+
+/// The words for what came back when nothing was transmitted ([`Seen::Nothing`]'s names).
+fn nothing_words(what: &str) -> String {
+    match what {
+        // untranslated: the name result.rs gives this answer, matched to its words
+        "the zero vector" => t!("check-nothing-zero-vector"),
+        // untranslated: the name result.rs gives this answer, matched to its words
+        "the reflection" => t!("check-nothing-reflection"),
+        _ => t!("check-nothing-false-or-null"),
+    }
+}
+
+/// `items` joined by "and" (or the language's word for it).
+fn and_list(items: &[String]) -> String {
+    items.join(&format!(" {} ", t!("check-and")))
 }
 
 /// 1 − μ²·sin²θi for the call as the API reads it: k, cos²θt, 1 − sin²θt.
@@ -97,123 +83,126 @@ fn discriminant(call: &Call) -> f64 {
     1.0 - m.mu * m.mu * (1.0 - cos * cos)
 }
 
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
 fn argument_sentence(ctx: &Context<'_>, reading: &Reading, code: Code) -> String {
     let (call, w, n) = (ctx.call, words(ctx.call.api), names(ctx.call.api));
     let a = call.args;
     match code {
-        Code::EtaInverted => format!(
-            "{}'s {} is {}: you passed {} for a ray {}; pass 1/{} = {}.",
-            w.owner,
-            n.eta,
-            w.eta_means,
-            short(a.eta),
-            situation(call).unwrap_or_else(|| "this ray".to_owned()),
-            short(a.eta),
-            short(1.0 / a.eta)
-        ),
-        Code::IncidentReversed => format!(
-            "{}'s {} is {}; yours points the other way{}: pass -{} = {}.",
-            w.owner,
-            n.incident,
-            w.incident_means,
-            call.truth.travel.map_or(String::new(), |t| format!(
-                " (the ray travels along {})",
-                short_vector(t.to_array())
-            )),
-            n.incident,
-            short_vector((-a.incident).to_array())
-        ),
+        Code::EtaInverted => {
+            let (owner, eta, means) = (w.owner, n.eta, w.eta_means);
+            let (value, inverse) = (spoken(a.eta), spoken(1.0 / a.eta));
+            match situation(call) {
+                Some(situation) => t!("check-eta-inverted",
+                    owner = owner,
+                    eta = eta,
+                    means = means,
+                    value = value,
+                    situation = situation,
+                    inverse = inverse
+                ),
+                None => t!("check-eta-inverted-this-ray",
+                    owner = owner,
+                    eta = eta,
+                    means = means,
+                    value = value,
+                    inverse = inverse
+                ),
+            }
+        }
+        Code::IncidentReversed => {
+            let (owner, incident, means) = (w.owner, n.incident, w.incident_means);
+            let reversed = spoken_vector((-a.incident).to_array());
+            match call.truth.travel {
+                Some(travel) => t!("check-incident-reversed-travel",
+                    owner = owner,
+                    incident = incident,
+                    means = means,
+                    reversed = reversed,
+                    travel = spoken_vector(travel.to_array())
+                ),
+                None => t!("check-incident-reversed",
+                    owner = owner,
+                    incident = incident,
+                    means = means,
+                    reversed = reversed
+                ),
+            }
+        }
         Code::NormalNotFacing => normal_sentence(call, reading, &w),
-        Code::NotUnitInput => format!(
-            "{} assumes unit {} and {} and does not normalise them: |{}| = {}, |{}| = {}; \
-             normalise them first.",
-            w.call,
-            n.incident,
-            n.normal,
-            n.incident,
-            short(length(a.incident)),
-            n.normal,
-            short(length(a.normal))
+        Code::NotUnitInput => t!("check-not-unit-input",
+            call = w.call,
+            incident = n.incident,
+            normal = n.normal,
+            incident_length = spoken(length(a.incident)),
+            normal_length = spoken(length(a.normal))
         ),
         Code::NotTheApiResult | Code::MissedTir => String::new(),
     }
 }
 
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
 fn normal_sentence(call: &Call, reading: &Reading, w: &Words) -> String {
     let (n, a) = (names(call.api), call.args);
-    let flipped = short_vector((-a.normal).to_array());
+    let flipped = spoken_vector((-a.normal).to_array());
     match call.api {
-        Api::Glsl | Api::Rtiow => format!(
-            "{} needs {} against {} (dot({1}, {2}) < 0) and does not flip it; yours has \
-             dot({1}, {2}) = {}, as an outward normal has where the ray leaves the object: pass \
-             -{1} = {} ({}).",
-            w.call,
-            n.normal,
-            n.incident,
-            short(a.incident.dot(a.normal)),
-            flipped,
-            if call.api == Api::Glsl {
-                "faceforward(N, I, N)"
+        Api::Glsl | Api::Rtiow => t!("check-normal-against",
+            call = &w.call,
+            normal = n.normal,
+            incident = n.incident,
+            dot = spoken(a.incident.dot(a.normal)),
+            flipped = flipped,
+            fix = if call.api == Api::Glsl {
+                // untranslated: GLSL code
+                "faceforward(N, I, N)".to_owned()
             } else {
-                "the hit record's normal after set_face_normal"
+                t!("check-normal-fix-rtiow")
             }
         ),
-        Api::Pbrt | Api::Mitsuba => format!(
-            "{} takes {} on either side, but {} must go with it: it is {}. Your {1} points \
-             the other way from the one {2} = {} was meant for{}; pass -{1} = {} with the same \
-             {2} (or keep {1} and pass 1/{2}).",
-            w.call,
-            n.normal,
-            n.eta,
-            w.eta_means,
-            short(a.eta),
-            match (normal_points_inward(call, reading), call.truth.entering) {
-                (true, Some(true)) => " (it points into the object, and the ray is entering)",
-                (true, Some(false)) => " (it points into the object, and the ray is leaving)",
-                _ => "",
-            },
-            flipped
-        ),
+        Api::Pbrt | Api::Mitsuba => {
+            let inward = match (normal_points_inward(call, reading), call.truth.entering) {
+                (true, Some(true)) => format!(" ({})", t!("check-normal-inward-entering")),
+                (true, Some(false)) => format!(" ({})", t!("check-normal-inward-leaving")),
+                _ => String::new(),
+            };
+            t!("check-normal-either-side",
+                call = &w.call,
+                normal = n.normal,
+                eta = n.eta,
+                means = &w.eta_means,
+                value = spoken(a.eta),
+                inward = inward,
+                flipped = flipped
+            )
+        }
     }
 }
 
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
 fn detail(ctx: &Context<'_>, looks: Resemblance) -> String {
     let w = words(ctx.call.api);
     match looks {
-        Resemblance::OtherRoot => format!(
-            "the other root, with the square root's sign flipped ({})",
-            w.root_hint
-        ),
-        Resemblance::WrongBend => "the part along the surface flipped".to_owned(),
-        Resemblance::Reversed => "minus the API's answer".to_owned(),
-        Resemblance::Length(ratio) => format!(
-            "the same direction with {} times the length: your code scales or normalises \
-             differently",
-            short(ratio)
-        ),
-        Resemblance::Reflection => "the reflection, although this ray refracts (log only the \
-                                    refraction, not a reflection chosen by Fresnel or Schlick)"
-            .to_owned(),
-        Resemblance::Variant(code) => format!(
-            "what {} returns with {}: your implementation does that inside",
-            w.call,
-            match code {
-                Code::EtaInverted => "eta inverted",
-                Code::NormalNotFacing => "the normal flipped",
-                _ => "the incident vector reversed",
+        Resemblance::OtherRoot => t!("check-looks-other-root", hint = w.root_hint),
+        Resemblance::WrongBend => t!("check-looks-wrong-bend"),
+        Resemblance::Reversed => t!("check-looks-reversed"),
+        Resemblance::Length(ratio) => t!("check-looks-length", ratio = spoken(ratio)),
+        Resemblance::Reflection => t!("check-looks-reflection"),
+        Resemblance::Variant(code) => t!("check-looks-variant",
+            call = w.call,
+            variant = match code {
+                Code::EtaInverted => t!("check-variant-eta-inverted"),
+                Code::NormalNotFacing => t!("check-variant-normal-flipped"),
+                _ => t!("check-variant-incident-reversed"),
             }
         ),
-        Resemblance::Nothing(what) => format!(
-            "{what}, which says nothing is transmitted, although this ray refracts (k = {} >= 0)",
-            short(discriminant(ctx.call))
+        Resemblance::Nothing(what) => t!("check-looks-nothing",
+            what = nothing_words(what),
+            k = spoken(discriminant(ctx.call))
         ),
-        Resemblance::NotFinite => {
-            "NaN or infinite components, although this ray refracts".to_owned()
-        }
+        Resemblance::NotFinite => t!("check-looks-not-finite"),
         Resemblance::Off(degrees) if degrees.is_finite() => {
-            format!("{} degrees from it", short(degrees))
+            t!("check-looks-off", degrees = spoken(degrees))
         }
-        Resemblance::Off(_) => "at no angle that can be measured from it".to_owned(),
+        Resemblance::Off(_) => t!("check-looks-off-unmeasurable"),
         Resemblance::Formula | Resemblance::Direction => String::new(),
     }
 }
@@ -222,82 +211,69 @@ fn detail(ctx: &Context<'_>, looks: Resemblance) -> String {
 fn returned_text(ctx: &Context<'_>) -> String {
     let r = ctx.returns;
     match (ctx.call.api, r.transmitted) {
-        (Api::Glsl, Some(t)) => short_vector(t.to_array()),
-        (Api::Glsl, None) => "the zero vector".to_owned(),
-        (Api::Pbrt, Some(t)) => format!("true with wt = {}", short_vector(t.to_array())),
+        (Api::Glsl | Api::Rtiow, Some(t)) => spoken_vector(t.to_array()),
+        (Api::Glsl, None) => t!("check-nothing-zero-vector"),
+        (Api::Pbrt, Some(t)) => t!("check-returned-pbrt-true", wt = spoken_vector(t.to_array())),
         (Api::Pbrt, None) => "false".to_owned(),
-        (Api::Rtiow, Some(t)) => short_vector(t.to_array()),
-        (Api::Rtiow, None) => "cannot_refract (dielectric::scatter reflects)".to_owned(),
-        (Api::Mitsuba, Some(t)) => format!("wo = {}", short_vector(t.to_array())),
-        (Api::Mitsuba, None) => "F = 1 (the BSDF always reflects)".to_owned(),
+        (Api::Rtiow, None) => t!("check-returned-rtiow-cannot-refract"),
+        // untranslated: Mitsuba's variable and a vector
+        (Api::Mitsuba, Some(t)) => format!("wo = {}", spoken_vector(t.to_array())),
+        (Api::Mitsuba, None) => t!("check-returned-mitsuba-reflects"),
     }
 }
 
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
 fn tir_sentence(ctx: &Context<'_>, looks: Resemblance) -> String {
-    let k = short(discriminant(ctx.call));
-    let sin2 = short(1.0 - discriminant(ctx.call));
+    let k = spoken(discriminant(ctx.call));
     let signal = match ctx.call.api {
-        Api::Glsl => format!(
-            "GLSL's refract returns the zero vector here (k = {k} < 0: total internal \
-             reflection); test for it and reflect instead."
+        Api::Glsl => t!("check-tir-glsl", k = k),
+        Api::Pbrt => t!("check-tir-pbrt",
+            sin2 = spoken(1.0 - discriminant(ctx.call))
         ),
-        Api::Pbrt => format!(
-            "pbrt's Refract returns false here (sin2Theta_t = {sin2} >= 1: total internal \
-             reflection); reflect instead."
+        Api::Rtiow => t!("check-tir-rtiow",
+            sine = spoken((1.0 - discriminant(ctx.call)).max(0.0).sqrt())
         ),
-        Api::Rtiow => format!(
-            "dielectric::scatter's cannot_refract holds here (ri * sin_theta = {} > 1): the \
-             book reflects instead of calling refract.",
-            short((1.0 - discriminant(ctx.call)).max(0.0).sqrt())
-        ),
-        Api::Mitsuba => format!(
-            "fresnel returns F = 1 here (cos_theta_t_sqr = {k} < 0): Mitsuba always reflects."
-        ),
+        Api::Mitsuba => t!("check-tir-mitsuba", k = k),
     };
     let got = match (looks, ctx.seen) {
-        (Resemblance::Formula, Seen::Direction(v)) => format!(
-            " Your code used the formula's vector anyway, {} of length {}: not a ray.",
-            short_vector(v.to_array()),
-            short(length(v))
+        (Resemblance::Formula, Seen::Direction(v)) => t!("check-tir-got-formula",
+            vector = spoken_vector(v.to_array()),
+            length = spoken(length(v))
         ),
-        (_, Seen::Direction(v)) => format!(
-            " Your code gave a direction, {}, where there is none.",
-            short_vector(v.to_array())
+        (_, Seen::Direction(v)) => t!("check-tir-got-direction",
+            vector = spoken_vector(v.to_array())
         ),
-        _ => " Your code gave NaN or infinite components (the square root of a negative k, or \
-              normalize() of the zero vector)."
-            .to_owned(),
+        _ => t!("check-tir-got-not-finite"),
     };
-    signal + &got
+    format!("{signal} {got}")
 }
 
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
 fn result_sentence(ctx: &Context<'_>, code: Code, looks: Resemblance) -> String {
     if code == Code::MissedTir {
         return tir_sentence(ctx, looks);
     }
     let got = match ctx.seen {
-        Seen::Direction(v) | Seen::NotFinite(v) => short_vector(v.to_array()),
-        Seen::Nothing(what) => what.to_owned(),
+        Seen::Direction(v) | Seen::NotFinite(v) => spoken_vector(v.to_array()),
+        Seen::Nothing(what) => nothing_words(what),
     };
-    format!(
-        "{} returns {} for these arguments, but the call gave {}: {}. Your own implementation \
-         of it differs from the API's.",
-        words(ctx.call.api).call,
-        returned_text(ctx),
-        got,
-        detail(ctx, looks)
+    t!("check-result-differs",
+        call = words(ctx.call.api).call,
+        returned = returned_text(ctx),
+        got = got,
+        detail = detail(ctx, looks)
     )
 }
 
 /// The truth fields that would tell reading `a` from reading `b`.
-fn telling_fields(call: &Call, a: &Reading, b: &Reading) -> Vec<&'static str> {
+fn telling_fields(call: &Call, a: &Reading, b: &Reading) -> Vec<String> {
     let mut fields = Vec::new();
     if call.truth.travel.is_none() && a.meaning.travel.dot(b.meaning.travel) < 0.0 {
-        fields.push("travel");
+        fields.push("travel".to_owned());
     }
     let mu_differs = (a.meaning.mu / b.meaning.mu - 1.0).abs() > 1e-9;
     if call.truth.mu().is_none() && mu_differs {
-        fields.push("from and to (or entering with --inside and --outside)");
+        fields.push(t!("check-field-from-and-to"));
     }
     let normal_differs =
         a.codes.contains(&Code::NormalNotFacing) != b.codes.contains(&Code::NormalNotFacing);
@@ -305,7 +281,7 @@ fn telling_fields(call: &Call, a: &Reading, b: &Reading) -> Vec<&'static str> {
         && call.truth.entering.is_none()
         && normal_differs
     {
-        fields.push("entering");
+        fields.push("entering".to_owned());
     }
     fields
 }
@@ -318,11 +294,15 @@ fn ties_sentence(ctx: &Context<'_>) -> Option<String> {
     let list: Vec<String> = others
         .iter()
         .map(|r| {
-            let codes: Vec<&str> = r.codes.iter().map(|c| c.name()).collect();
-            codes.join(" and ")
+            and_list(
+                &r.codes
+                    .iter()
+                    .map(|c| c.name().to_owned())
+                    .collect::<Vec<_>>(),
+            )
         })
         .collect();
-    let mut fields: Vec<&str> = Vec::new();
+    let mut fields: Vec<String> = Vec::new();
     for other in others {
         for field in telling_fields(ctx.call, first, other) {
             if !fields.contains(&field) {
@@ -331,76 +311,84 @@ fn ties_sentence(ctx: &Context<'_>) -> Option<String> {
         }
     }
     let hint = if fields.is_empty() {
-        format!(
-            "No truth field tells them apart: {} reads both alike; the usual call passes {}.",
-            words(ctx.call.api).call,
-            words(ctx.call.api).usual
-        )
+        let w = words(ctx.call.api);
+        t!("check-ties-no-field", call = w.call, usual = w.usual)
     } else {
-        format!("Give {} to tell them apart.", fields.join(" and "))
+        t!("check-ties-give", fields = and_list(&fields))
     };
-    Some(format!(
-        "Equally possible: {} instead. {hint}",
-        list.join(", or ")
-    ))
+    let or = format!(", {} ", t!("check-or"));
+    Some(t!("check-ties", readings = list.join(&or), hint = hint))
 }
 
 fn unchecked_note(call: &Call) -> String {
     let n = names(call.api);
     let mut missing = Vec::new();
     if call.truth.mu().is_none() {
-        missing.push(format!(
-            "from and to (or entering with --inside and --outside) to check {}",
-            n.eta
-        ));
+        missing.push(t!("check-unchecked-mu", eta = n.eta));
     }
     if call.truth.travel.is_none() {
-        missing.push(format!("travel to check which way {} points", n.incident));
+        missing.push(t!("check-unchecked-travel", incident = n.incident));
     }
     if missing.is_empty() {
         String::new()
     } else {
-        format!(
-            " Checked against the API's own rules only: give {}.",
-            missing.join(", and ")
-        )
+        let and = format!(", {} ", t!("check-and"));
+        // The note follows the verdict's sentence, one space after it.
+        format!(" {}", t!("check-unchecked", missing = missing.join(&and)))
     }
 }
 
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
 fn unexplained(ctx: &Context<'_>) -> String {
     let (call, n) = (ctx.call, names(ctx.call.api));
     let m = call.api.meaning(call.args);
     if let Some(travel) = call.truth.travel {
         let d = crate::lines::vector_text::angle(m.travel, travel).to_degrees();
         if (3.0..177.0).contains(&d) {
-            return format!(
-                "The logged {} is {} degrees from this ray's travel {}: it is not this ray's \
-                 direction (nor its reverse).",
-                n.incident,
-                short(d),
-                short_vector(travel.to_array())
+            return t!("check-unexplained-travel",
+                incident = n.incident,
+                degrees = spoken(d),
+                travel = spoken_vector(travel.to_array())
             );
         }
     }
     match call.truth.mu() {
-        Some(mu) => format!(
-            "{} = {} fits neither n_from/n_to = {} nor its inverse as {} reads it: these are \
-             not this interface's indices.",
-            n.eta,
-            short(call.args.eta),
-            short(mu),
-            words(call.api).call
+        Some(mu) => t!("check-unexplained-eta",
+            eta = n.eta,
+            value = spoken(call.args.eta),
+            mu = spoken(mu),
+            call = words(call.api).call
         ),
-        None => {
-            "No combination of argument mistakes makes this call fit the truth given.".to_owned()
-        }
+        None => t!("check-unexplained"),
     }
 }
 
 /// `text` with a leading "the" capitalised (the API names and functions keep their case).
+/// Only English starts a sentence so; the translations start theirs capitalised.
 fn capitalised(text: &str) -> String {
     text.strip_prefix("the ")
+        // untranslated: English's own article, only ever put back capitalised
         .map_or_else(|| text.to_owned(), |rest| format!("The {rest}"))
+}
+
+/// The sentence of a call that is right.
+#[rustfmt::skip] // the t! keys stay where the translation tests find them
+fn right_sentence(ctx: &Context<'_>) -> String {
+    let (call, returned) = (words(ctx.call.api).call, returned_text(ctx));
+    let right = match (ctx.seen, situation(ctx.call)) {
+        (Seen::Nothing(what), _) => t!("check-right-tir",
+            call = call,
+            returned = returned,
+            what = nothing_words(what)
+        ),
+        (_, Some(situation)) => t!("check-right-for-ray",
+            call = call,
+            returned = returned,
+            situation = situation
+        ),
+        (_, None) => t!("check-right", call = call, returned = returned),
+    };
+    right + &unchecked_note(ctx.call)
 }
 
 /// The explanation of one verdict.
@@ -426,20 +414,7 @@ pub fn explanation(ctx: &Context<'_>) -> String {
         *sentence = capitalised(sentence);
     }
     if sentences.is_empty() {
-        let right = match ctx.seen {
-            Seen::Nothing(what) => format!(
-                "Right: {} signals total internal reflection here ({}), and the call gave {what}.",
-                words(ctx.call.api).call,
-                returned_text(ctx)
-            ),
-            _ => format!(
-                "Right: {} returns {} for these arguments{}.",
-                words(ctx.call.api).call,
-                returned_text(ctx),
-                situation(ctx.call).map_or(String::new(), |s| format!(", a ray {s}"))
-            ),
-        };
-        return right + &unchecked_note(ctx.call);
+        return right_sentence(ctx);
     }
     sentences.join(" ")
 }

@@ -27,6 +27,7 @@ pub mod result;
 
 use std::collections::BTreeMap;
 
+use refraction_i18n::t;
 use serde::Serialize;
 
 pub use call::{Call, Options};
@@ -45,6 +46,7 @@ struct Answer<'a> {
     api_result: &'a serde_json::Value,
     mistakes: Vec<&'static str>,
     alternatives: Vec<Vec<&'static str>>,
+    // untranslated: serde's path of a function
     #[serde(skip_serializing_if = "Option::is_none")]
     path: Option<&'a str>,
 }
@@ -101,6 +103,11 @@ impl Tally {
         }
     }
 
+    /// Each kind counted and its count, in the summary's order.
+    pub fn counts(&self) -> impl Iterator<Item = (&'static str, usize)> + '_ {
+        self.counts.iter().map(|(kind, n)| (*kind, *n))
+    }
+
     /// `2 ok, 1 eta_inverted, ...`.
     #[must_use]
     pub fn summary(&self) -> String {
@@ -125,7 +132,8 @@ pub enum Format {
 }
 
 /// The tally's name for log lines that did not match the pattern.
-const SKIPPED: &str = "skipped (not matching the pattern)";
+// untranslated: the tally's name, as `check` prints it on stderr (the panel says it in words)
+pub const SKIPPED: &str = "skipped (not matching the pattern)";
 
 /// What a line holds, as far as it can be judged without the run's state (on any thread).
 enum Judged {
@@ -171,7 +179,7 @@ impl Reader {
             Format::Csv => match self.header.get() {
                 None => return Read::Deferred,
                 Some(Ok(header)) => header.record(line),
-                Some(Err(e)) => Err(format!("no usable CSV header: {e}")),
+                Some(Err(e)) => Err(t!("check-csv-no-header", reason = e)),
             },
         })
     }
@@ -221,9 +229,7 @@ impl Books {
     fn settle(&mut self, reader: &Reader, judged: Judged) -> Result<String, String> {
         let judged = match judged {
             Judged::Call(judged) => *judged,
-            Judged::Unmatched if reader.strict => {
-                Err("the line does not match the pattern".to_owned())
-            }
+            Judged::Unmatched if reader.strict => Err(t!("check-line-not-matching")),
             Judged::Unmatched => {
                 self.tally.add(SKIPPED);
                 return Ok(String::new());
@@ -321,9 +327,7 @@ impl Session {
     pub fn record(&mut self, line: &str) -> Result<Option<Record>, String> {
         match self.reader.read(line) {
             Read::Record(record) => record.map(Some),
-            Read::Unmatched if self.reader.strict => {
-                Err("the line does not match the pattern".to_owned())
-            }
+            Read::Unmatched if self.reader.strict => Err(t!("check-line-not-matching")),
             Read::Unmatched => {
                 self.books.tally.add(SKIPPED);
                 Ok(None)

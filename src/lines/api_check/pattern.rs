@@ -5,6 +5,7 @@
 //! (or none). The pattern may start anywhere in the line (a timestamp before it is skipped) and
 //! must run to its end (trailing spaces aside).
 
+use refraction_i18n::t;
 use refraction_kernel::api::Api;
 
 use super::fields::{self, Kind};
@@ -79,7 +80,7 @@ impl Pattern {
                         match chars.next() {
                             Some('}') => break,
                             Some(c) => name.push(c),
-                            None => return Err(format!("unclosed `{{` in the pattern \"{text}\"")),
+                            None => return Err(t!("check-pattern-unclosed", pattern = text)),
                         }
                     }
                     pieces.push(Self::field(api, name.trim())?);
@@ -91,16 +92,15 @@ impl Pattern {
             .windows(2)
             .any(|w| !matches!(w[0], Piece::Literal(_)) && !matches!(w[1], Piece::Literal(_)));
         if adjacent {
-            return Err(format!(
-                "two fields with nothing between them in the pattern \"{text}\""
-            ));
+            return Err(t!("check-pattern-adjacent", pattern = text));
         }
         if !pieces.iter().any(|p| matches!(p, Piece::Field(..))) {
-            return Err(format!("the pattern \"{text}\" names no field"));
+            return Err(t!("check-pattern-no-field", pattern = text));
         }
         Ok(Self { pieces })
     }
 
+    #[rustfmt::skip] // the t! keys stay where the translation tests find them
     fn field(api: Api, name: &str) -> Result<Piece, String> {
         if name == "_" {
             return Ok(Piece::Anything);
@@ -108,12 +108,8 @@ impl Pattern {
         fields::find(api, name)
             .map(|(name, kind)| Piece::Field(name, kind))
             .ok_or_else(|| {
-                format!(
-                    "unknown field {{{name}}} in the pattern for --api {}: expected {{_}} or one \
-                     of {}",
-                    api.name(),
-                    fields::listed(api)
-                )
+                let (a, listed) = (api.name(), fields::listed(api));
+                t!("check-pattern-unknown-field", field = name, api = a, expected = listed)
             })
     }
 

@@ -1,6 +1,7 @@
 //! One logged call as named values, read from a JSON line or from the texts a `--pattern` or
 //! CSV header names, with the significant digits its numbers were written with.
 
+use refraction_i18n::t;
 use refraction_kernel::api::Api;
 use serde_json::Value as Json;
 
@@ -62,7 +63,7 @@ pub fn from_text(kind: Kind, name: &str, text: &str) -> Result<(Value, u32), Str
             .map_err(wrap),
         Kind::Flag => flag_text(text)
             .map(|f| (Value::Flag(f), 0))
-            .ok_or_else(|| format!("`{name}` must be true/false or 1/0, got \"{text}\"")),
+            .ok_or_else(|| t!("check-field-not-flag-got", field = name, text = text)),
         Kind::Label => Ok((Value::Label(text.to_owned()), 0)),
     }
 }
@@ -77,7 +78,7 @@ fn json_number(value: &Json, name: &str) -> Result<(f64, u32), String> {
         Json::String(text) => parse_number(text)
             .map(|n| (n.value, n.digits))
             .map_err(|e| format!("`{name}`: {e}")),
-        _ => Err(format!("`{name}` must be a number")),
+        _ => Err(t!("check-field-not-number-json", field = name)),
     }
 }
 
@@ -94,13 +95,11 @@ fn json_vector(value: &Json, name: &str) -> Result<(Value, u32), String> {
             }
             Ok((Value::Vector(out), digits))
         }
-        Json::Array(items) => Err(format!(
-            "`{name}` must have exactly 3 numbers, got {}",
-            items.len()
-        )),
-        _ => Err(format!(
-            "`{name}` must be an array of 3 numbers or a string like \"0.1, -0.9, 0\""
-        )),
+        Json::Array(items) => {
+            let n = items.len();
+            Err(t!("check-field-not-three", field = name, count = n))
+        }
+        _ => Err(t!("check-field-not-a-vector", field = name)),
     }
 }
 
@@ -119,8 +118,8 @@ fn from_json(kind: Kind, name: &str, value: &Json) -> Result<(Value, u32), Strin
         }
         (Kind::Label, Json::String(text)) => Ok((Value::Label(text.clone()), 0)),
         (Kind::Label, Json::Number(n)) => Ok((Value::Label(n.to_string()), 0)),
-        (Kind::Flag, _) => Err(format!("`{name}` must be true/false or 1/0")),
-        (Kind::Label, _) => Err(format!("`{name}` must be a string or a number")),
+        (Kind::Flag, _) => Err(t!("check-field-not-flag", field = name)),
+        (Kind::Label, _) => Err(t!("check-field-not-label", field = name)),
     }
 }
 
@@ -144,12 +143,10 @@ impl Record {
     pub fn from_json_line(api: Api, line: &str) -> Result<Self, String> {
         let value: Json =
             serde_json::from_str(line).map_err(|e| crate::lines::fields::json_error(&e))?;
-        let object = value.as_object().ok_or_else(|| {
-            format!(
-                "expected a JSON object with the fields {}",
-                fields::listed(api)
-            )
-        })?;
+        let listed = || fields::listed(api);
+        let object = value
+            .as_object()
+            .ok_or_else(|| t!("check-json-not-object", fields = listed()))?;
         let mut record = Self::default();
         for (name, kind) in fields::all(api) {
             match object.get(name) {
@@ -172,7 +169,7 @@ impl Record {
         let mut record = Self::default();
         for (name, text) in texts {
             let (field, kind) =
-                fields::find(api, name).ok_or_else(|| format!("unknown field `{name}`"))?;
+                fields::find(api, name).ok_or_else(|| t!("check-unknown-field", field = name))?;
             record.push(field, from_text(kind, name, text)?);
         }
         Ok(record)

@@ -3,6 +3,7 @@
 //! is that, the API's "nothing transmitted", or something else (and then what it resembles).
 
 use glam::DVec3;
+use refraction_i18n::t;
 use refraction_kernel::api::{Api, Args, Returned};
 use refraction_kernel::{Real, Vector3};
 use serde_json::{Value as Json, json};
@@ -41,7 +42,8 @@ fn narrow<S: Real>(args: Args<f64>) -> Result<Args<S>, String> {
         if y.is_finite() {
             Ok(y)
         } else {
-            Err(format!("{x:e} is too large for {}", S::NAME))
+            let (value, precision) = (format!("{x:e}"), S::NAME);
+            Err(t!("check-too-large", value = value, precision = precision))
         }
     };
     let vector = |v: DVec3| -> Result<S::Vec3, String> {
@@ -192,8 +194,10 @@ impl Returns {
     #[must_use]
     pub fn see(&self, got: Got) -> Seen {
         match got {
+            // untranslated: the answers' names; explain.rs puts them in the language's words
             Got::Nothing => Seen::Nothing("nothing (false or null)"),
             Got::Vector(v) if !v.is_finite() => Seen::NotFinite(v),
+            // untranslated: as above
             Got::Vector(v) if v == DVec3::ZERO => Seen::Nothing("the zero vector"),
             Got::Vector(v)
                 if self.may_reflect()
@@ -201,6 +205,7 @@ impl Returns {
                     && angle(v, self.reflection) <= self.distance
                     && (length(v) - 1.0).abs() <= self.distance =>
             {
+                // untranslated: as above
                 Seen::Nothing("the reflection")
             }
             Got::Vector(v) => Seen::Direction(v),

@@ -212,16 +212,21 @@ fn injected_tir(api: Api, args: Args<f64>) -> String {
     line(api, args, result, json!({"entering": false}))
 }
 
-#[test]
-fn glsl_explains_eta_in_its_own_words() {
+/// A GLSL call entering glass with eta inverted (1.5 passed for 1/1.5).
+fn glsl_eta_inverted() -> String {
     let (d, n, _) = situation(true);
     let args = Api::Glsl.arguments(d, n, 1.5);
-    let text = line(
+    line(
         Api::Glsl,
         args,
         returned(Api::Glsl, args),
         json!({"entering": true}),
-    );
+    )
+}
+
+#[test]
+fn glsl_explains_eta_in_its_own_words() {
+    let text = glsl_eta_inverted();
     let a = answer(Api::Glsl, &text);
     assert_eq!(mistakes(&a), ["eta_inverted"]);
     let explanation = a["explanation"].as_str().unwrap();
@@ -557,5 +562,29 @@ fn an_api_result_that_overflows_is_told_in_words_not_as_nan() {
             .as_array()
             .unwrap()
             .contains(&json!("not_unit_input"))
+    );
+}
+
+#[test]
+fn explanations_come_in_the_threads_language_with_its_decimal_comma() {
+    let text = glsl_eta_inverted();
+    refraction_i18n::set_locale(refraction_i18n::Locale::De);
+    let a = answer(Api::Glsl, &text);
+    refraction_i18n::set_locale(refraction_i18n::Locale::En);
+    assert_eq!(mistakes(&a), ["eta_inverted"], "the codes stay the JSON's");
+    let explanation = a["explanation"].as_str().unwrap();
+    assert!(
+        explanation.starts_with("Bei GLSL ist eta n_from/n_to")
+            && explanation.contains("beim Eintritt in das Objekt (von n = 1 nach n = 1,5)")
+            && explanation.contains("übergib 1/1,5 = 0,666667"),
+        "{explanation}"
+    );
+    let english = answer(Api::Glsl, &text);
+    assert!(
+        english["explanation"]
+            .as_str()
+            .unwrap()
+            .contains("pass 1/1.5 = 0.666667"),
+        "English again once the language is set back"
     );
 }
