@@ -459,12 +459,14 @@ fn the_panel_reads_at_13_px_and_leaves_the_diagram_its_room_at_1280_by_720() {
 fn check_my_t_gives_its_verdict_in_german_with_decimal_commas() {
     use refraction_i18n::Locale;
     use refraction_kernel::Rejection;
-    let mut h = harness(ExplorerState::default());
-    // The tool is opened by its English name (another area's words), then the window speaks
-    // German: the language is the thread's, read every frame.
-    click(&mut h, "✔ Check my T");
+    // An explorer made on a German thread speaks German (the system's language, in a test).
     refraction_i18n::set_locale(Locale::De);
-    h.run();
+    let mut h = harness(ExplorerState::default());
+    click(&mut h, &format!("✔ {}", refraction_i18n::t!("tool-check")));
+    assert!(
+        h.query_by_label("✔ Mein T prüfen").is_some(),
+        "the bar in German"
+    );
     let r = h.state().state().refraction().clone();
     let wrong_side = r
         .candidates
