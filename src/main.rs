@@ -207,7 +207,10 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(status) => return status,
     };
-    if let Some(language) = cli.lang {
+    // Only what is drawn speaks the language: the JSON and messages of `solve`, `check`,
+    // `trace` and `bench` are the same for every user.
+    let draws = matches!(cli.command, None | Some(Command::Render(_)));
+    if let Some(language) = cli.lang.filter(|_| draws) {
         refraction_i18n::set_locale(language);
     }
     let refused = cli.command.as_ref().and_then(writes_stdout);

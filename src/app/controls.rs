@@ -81,7 +81,12 @@ fn index_controls(
     // or pull a typed 3.2 into its range.
     let slider = Slider::new(&mut index, low..=high)
         .text(symbol)
-        .clamping(SliderClamping::Never);
+        .clamping(SliderClamping::Never)
+        // Its number box in the language's way, read with a comma or a point.
+        .custom_formatter(|value, decimals| {
+            refraction_i18n::decimal(&egui::emath::format_with_decimals_in_range(value, decimals))
+        })
+        .custom_parser(refraction_i18n::read_number);
     // The slider's number box takes any value typed into it: a refused one shows its error in
     // the field below, as a refused typed value does.
     if ui.add(slider).changed() {

@@ -125,7 +125,10 @@ impl AnimationExport {
         };
         let (counter, stop) = (Arc::clone(&done), Arc::clone(&cancel));
         let target = path.clone();
+        // The frames' labels are in the window's language: the thread takes it along.
+        let language = refraction_i18n::locale();
         let handle = std::thread::spawn(move || {
+            refraction_i18n::set_locale(language);
             let result = export_gif(&state, &overlay, &spec, &target, |frames, _| {
                 counter.store(frames, Ordering::Relaxed);
                 ctx.request_repaint();

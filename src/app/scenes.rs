@@ -19,6 +19,7 @@ use super::retrace::{Retracer, empty};
 use refraction_diagram::layout::SMALLEST_TEXT;
 use refraction_diagram::numbers::number;
 use refraction_diagram::palette::{self, Palette};
+use refraction_diagram::scene_words::{self, medium_name};
 use refraction_diagram::shapes::{Align, Label};
 use refraction_diagram::{ExplorerState, Primitive, SceneLayout, ScenePicture};
 use refraction_render::atomic::write_atomically;
@@ -81,7 +82,12 @@ fn canvas_point(to_screen: &RectTransform, p: Pos2) -> Vec2 {
 
 /// What the overlay beside a hovered hit says.
 fn hit_text(scene: &Scene, hit: &Hit) -> String {
-    let name = |m: usize| scene.media().get(m).map_or("?", |m| m.name.as_str());
+    let name = |m: usize| {
+        scene
+            .media()
+            .get(m)
+            .map_or_else(|| "?".to_owned(), |m| medium_name(&m.name))
+    };
     let (from, to) = (name(hit.from_medium), name(hit.to_medium));
     let (mu_i, mu_t) = (number(hit.mu_i, 4), number(hit.mu_t, 4));
     let wavelength = number(traced_wavelength(hit.light), 1);
@@ -246,10 +252,12 @@ impl ScenesView {
         ui.horizontal(|ui| {
             let mut picked = self.scene.name().to_owned();
             ComboBox::from_label(t!("scenes-scene"))
-                .selected_text(self.scene.title())
+                .selected_text(scene_words::title(&self.scene))
                 .show_ui(ui, |ui| {
                     for info in &self.catalogue {
-                        ui.selectable_value(&mut picked, info.name.to_owned(), &info.title);
+                        let title = scene_words::built_in_title(info.name);
+                        let title = title.unwrap_or_else(|| info.title.clone());
+                        ui.selectable_value(&mut picked, info.name.to_owned(), title);
                     }
                 });
             if picked != self.scene.name() {
@@ -300,8 +308,10 @@ impl ScenesView {
                 None => {}
             }
         });
-        ui.label(self.scene.description());
-        ui.label(RichText::new(t!("scenes-hint")).weak());
+        // One line each, whatever the language: a cut line shows its whole text on hover, and
+        // the scene keeps the window's height.
+        ui.add(egui::Label::new(scene_words::description(&self.scene)).truncate());
+        ui.add(egui::Label::new(RichText::new(t!("scenes-hint")).weak()).truncate());
         if let Some(error) = &self.error {
             ui.label(RichText::new(format!("⚠ {error}")).color(color(palette::ALARM)));
         }

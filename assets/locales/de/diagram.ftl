@@ -198,3 +198,25 @@ diagram-accuracy-error-axis = größter Fehler der schweren Fälle, in ε·κ (l
 diagram-accuracy-time-axis = Zeit pro Strahl, ns (log)
 diagram-accuracy-bound = Schranke des Standardkerns, 32 ε·κ
 diagram-accuracy-markers = hohl: f32, gefüllt: f64
+
+## Die eingebauten Szenen (Titel, Beschreibungen und die Namen ihrer Medien)
+
+diagram-scene-dispersing-prism = Dispersionsprisma
+diagram-scene-dispersing-prism-about = Weißes Licht durch ein gleichseitiges F2-Flintglasprisma nahe der minimalen Ablenkung: Violett wird am stärksten gebrochen.
+diagram-scene-droplet = Wassertropfen (Regenbogen)
+diagram-scene-droplet-about = Weißes Licht tritt in einen Tropfen ein, wird innen reflektiert und tritt wieder aus; die Dispersion fächert den Hauptregenbogen bei etwa 138 Grad Ablenkung auf.
+diagram-scene-fibre = Lichtleiter
+diagram-scene-fibre-about = Wiederholte Totalreflexion führt das Licht durch den Kern; die steilsten Strahlen treten in den Mantel aus.
+diagram-scene-interface = Eine Grenzfläche
+diagram-scene-interface-about = Ein Strahl in Luft trifft unter 45 Grad auf ebenes Glas (n = 1,5) und wird zur Normalen hin gebrochen.
+diagram-scene-lens = Sammellinse
+diagram-scene-lens-about = Eine bikonvexe BK7-Linse bündelt einen parallelen Strahl auf einem Schirm; Randstrahlen treffen sich schon davor.
+diagram-scene-right-angle-prism = Umlenkprisma
+diagram-scene-right-angle-prism-about = Totalreflexion an der Hypotenuse lenkt das Bündel um 90 Grad um.
+diagram-scene-slab = Glasplatte
+diagram-scene-slab-about = Parallele Flächen: Der austretende Strahl ist parallel zum eintretenden, seitlich versetzt. Fresnel-Verluste an beiden Flächen, Absorption im Inneren.
+diagram-medium-core = Kern
+diagram-medium-cladding = Mantel
+diagram-medium-f2 = F2-Flintglas
+diagram-medium-bk7 = BK7
+diagram-medium-tinted-bk7 = getöntes BK7

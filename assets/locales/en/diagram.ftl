@@ -199,3 +199,25 @@ diagram-accuracy-error-axis = largest hard-set error, in ε·κ (log)
 diagram-accuracy-time-axis = time per ray, ns (log)
 diagram-accuracy-bound = the default kernel's bound, 32 ε·κ
 diagram-accuracy-markers = hollow: f32, filled: f64
+
+## The built-in scenes (their titles and descriptions, and the names of their media)
+
+diagram-scene-dispersing-prism = Dispersing prism
+diagram-scene-dispersing-prism-about = White light through an equilateral F2 flint prism near minimum deviation: violet bends most.
+diagram-scene-droplet = Water droplet (rainbow)
+diagram-scene-droplet-about = White light enters a droplet, reflects inside and leaves; dispersion spreads the primary rainbow near 138 degrees deviation.
+diagram-scene-fibre = Optical fibre
+diagram-scene-fibre-about = Repeated total internal reflection guides light along a core; the steepest rays leak into the cladding.
+diagram-scene-interface = Single interface
+diagram-scene-interface-about = A ray in air meets flat glass (n = 1.5) at 45 degrees and bends toward the normal.
+diagram-scene-lens = Converging lens
+diagram-scene-lens-about = A biconvex BK7 lens focuses a parallel beam onto a screen; marginal rays focus short of it.
+diagram-scene-right-angle-prism = Right-angle prism
+diagram-scene-right-angle-prism-about = Total internal reflection at the hypotenuse turns the beam through 90 degrees.
+diagram-scene-slab = Glass slab
+diagram-scene-slab-about = Parallel faces: the exit ray is parallel to the entry ray, shifted sideways. Fresnel losses at both faces, absorption inside.
+diagram-medium-core = core
+diagram-medium-cladding = cladding
+diagram-medium-f2 = F2 flint
+diagram-medium-bk7 = BK7
+diagram-medium-tinted-bk7 = tinted BK7

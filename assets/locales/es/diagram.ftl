@@ -197,3 +197,25 @@ diagram-accuracy-error-axis = mayor error del conjunto difícil, en ε·κ (log)
 diagram-accuracy-time-axis = tiempo por rayo, ns (log)
 diagram-accuracy-bound = la cota del núcleo por defecto, 32 ε·κ
 diagram-accuracy-markers = hueco: f32, relleno: f64
+
+## Las escenas incluidas (títulos, descripciones y los nombres de sus medios)
+
+diagram-scene-dispersing-prism = Prisma dispersor
+diagram-scene-dispersing-prism-about = Luz blanca a través de un prisma equilátero de vidrio flint F2 cerca de la desviación mínima: el violeta se desvía más.
+diagram-scene-droplet = Gota de agua (arcoíris)
+diagram-scene-droplet-about = La luz blanca entra en una gota, se refleja dentro y sale; la dispersión abre el arcoíris primario cerca de 138 grados de desviación.
+diagram-scene-fibre = Fibra óptica
+diagram-scene-fibre-about = La reflexión total interna repetida guía la luz a lo largo del núcleo; los rayos más inclinados escapan al revestimiento.
+diagram-scene-interface = Una interfaz
+diagram-scene-interface-about = Un rayo en el aire llega a un vidrio plano (n = 1,5) a 45 grados y se desvía hacia la normal.
+diagram-scene-lens = Lente convergente
+diagram-scene-lens-about = Una lente biconvexa de BK7 enfoca un haz paralelo sobre una pantalla; los rayos marginales enfocan antes.
+diagram-scene-right-angle-prism = Prisma de ángulo recto
+diagram-scene-right-angle-prism-about = La reflexión total interna en la hipotenusa desvía el haz 90 grados.
+diagram-scene-slab = Lámina de vidrio
+diagram-scene-slab-about = Caras paralelas: el rayo de salida es paralelo al de entrada, desplazado de lado. Pérdidas de Fresnel en ambas caras, absorción en el interior.
+diagram-medium-core = núcleo
+diagram-medium-cladding = revestimiento
+diagram-medium-f2 = flint F2
+diagram-medium-bk7 = BK7
+diagram-medium-tinted-bk7 = BK7 tintado

@@ -197,3 +197,25 @@ diagram-accuracy-error-axis = plus grande erreur du jeu difficile, en ε·κ (lo
 diagram-accuracy-time-axis = temps par rayon, ns (log)
 diagram-accuracy-bound = la borne du noyau par défaut, 32 ε·κ
 diagram-accuracy-markers = creux : f32, plein : f64
+
+## Les scènes intégrées (titres, descriptions et noms de leurs milieux)
+
+diagram-scene-dispersing-prism = Prisme dispersif
+diagram-scene-dispersing-prism-about = Lumière blanche à travers un prisme équilatéral en verre flint F2 près du minimum de déviation : le violet est le plus dévié.
+diagram-scene-droplet = Goutte d’eau (arc-en-ciel)
+diagram-scene-droplet-about = La lumière blanche entre dans une goutte, s’y réfléchit et en sort ; la dispersion étale l’arc-en-ciel primaire vers 138 degrés de déviation.
+diagram-scene-fibre = Fibre optique
+diagram-scene-fibre-about = La réflexion totale interne répétée guide la lumière dans le cœur ; les rayons les plus inclinés fuient dans la gaine.
+diagram-scene-interface = Une interface
+diagram-scene-interface-about = Un rayon dans l’air atteint un verre plan (n = 1,5) sous 45 degrés et se rapproche de la normale.
+diagram-scene-lens = Lentille convergente
+diagram-scene-lens-about = Une lentille biconvexe en BK7 focalise un faisceau parallèle sur un écran ; les rayons marginaux convergent avant.
+diagram-scene-right-angle-prism = Prisme à angle droit
+diagram-scene-right-angle-prism-about = La réflexion totale interne sur l’hypoténuse dévie le faisceau de 90 degrés.
+diagram-scene-slab = Lame de verre
+diagram-scene-slab-about = Faces parallèles : le rayon sortant est parallèle au rayon entrant, décalé latéralement. Pertes de Fresnel sur les deux faces, absorption à l’intérieur.
+diagram-medium-core = cœur
+diagram-medium-cladding = gaine
+diagram-medium-f2 = flint F2
+diagram-medium-bk7 = BK7
+diagram-medium-tinted-bk7 = BK7 teinté

@@ -197,3 +197,25 @@ diagram-accuracy-error-axis = maior erro do conjunto difícil, em ε·κ (log)
 diagram-accuracy-time-axis = tempo por raio, ns (log)
 diagram-accuracy-bound = o limite do núcleo padrão, 32 ε·κ
 diagram-accuracy-markers = vazado: f32, cheio: f64
+
+## As cenas embutidas (títulos, descrições e os nomes de seus meios)
+
+diagram-scene-dispersing-prism = Prisma dispersivo
+diagram-scene-dispersing-prism-about = Luz branca através de um prisma equilátero de vidro flint F2 perto do desvio mínimo: o violeta desvia mais.
+diagram-scene-droplet = Gota d’água (arco-íris)
+diagram-scene-droplet-about = A luz branca entra numa gota, reflete dentro dela e sai; a dispersão abre o arco-íris primário perto de 138 graus de desvio.
+diagram-scene-fibre = Fibra óptica
+diagram-scene-fibre-about = A reflexão total interna repetida guia a luz ao longo do núcleo; os raios mais inclinados escapam para a casca.
+diagram-scene-interface = Uma interface
+diagram-scene-interface-about = Um raio no ar atinge um vidro plano (n = 1,5) a 45 graus e se aproxima da normal.
+diagram-scene-lens = Lente convergente
+diagram-scene-lens-about = Uma lente biconvexa de BK7 foca um feixe paralelo numa tela; os raios marginais focam antes dela.
+diagram-scene-right-angle-prism = Prisma de ângulo reto
+diagram-scene-right-angle-prism-about = A reflexão total interna na hipotenusa desvia o feixe em 90 graus.
+diagram-scene-slab = Lâmina de vidro
+diagram-scene-slab-about = Faces paralelas: o raio que sai é paralelo ao que entra, deslocado para o lado. Perdas de Fresnel nas duas faces, absorção no interior.
+diagram-medium-core = núcleo
+diagram-medium-cladding = casca
+diagram-medium-f2 = flint F2
+diagram-medium-bk7 = BK7
+diagram-medium-tinted-bk7 = BK7 tingido

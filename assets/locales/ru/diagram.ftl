@@ -216,3 +216,25 @@ diagram-accuracy-error-axis = наибольшая ошибка на трудн�
 diagram-accuracy-time-axis = время на луч, нс (лог.)
 diagram-accuracy-bound = граница ядра по умолчанию, 32 ε·κ
 diagram-accuracy-markers = полые: f32, закрашенные: f64
+
+## Встроенные сцены (названия, описания и имена их сред)
+
+diagram-scene-dispersing-prism = Дисперсионная призма
+diagram-scene-dispersing-prism-about = Белый свет проходит через равностороннюю призму из флинта F2 вблизи наименьшего отклонения: фиолетовый отклоняется сильнее всего.
+diagram-scene-droplet = Капля воды (радуга)
+diagram-scene-droplet-about = Белый свет входит в каплю, отражается внутри и выходит; дисперсия растягивает первичную радугу около 138 градусов отклонения.
+diagram-scene-fibre = Оптическое волокно
+diagram-scene-fibre-about = Многократное полное внутреннее отражение ведёт свет по сердцевине; самые крутые лучи уходят в оболочку.
+diagram-scene-interface = Одна граница
+diagram-scene-interface-about = Луч в воздухе падает на плоское стекло (n = 1,5) под углом 45 градусов и преломляется к нормали.
+diagram-scene-lens = Собирающая линза
+diagram-scene-lens-about = Двояковыпуклая линза из BK7 фокусирует параллельный пучок на экран; краевые лучи фокусируются ближе.
+diagram-scene-right-angle-prism = Прямоугольная призма
+diagram-scene-right-angle-prism-about = Полное внутреннее отражение на гипотенузе поворачивает пучок на 90 градусов.
+diagram-scene-slab = Стеклянная пластина
+diagram-scene-slab-about = Параллельные грани: выходящий луч параллелен входящему и смещён вбок. Потери Френеля на обеих гранях, поглощение внутри.
+diagram-medium-core = сердцевина
+diagram-medium-cladding = оболочка
+diagram-medium-f2 = флинт F2
+diagram-medium-bk7 = BK7
+diagram-medium-tinted-bk7 = тонированное BK7

@@ -14,7 +14,8 @@ view-last-run-scene = сцена последнего запуска
 travel-in-view = { $change } (вид: { $view })
 tool-check = Проверить моё T
 tool-walk-through = Пошагово
-tool-files = Сохранить, открыть, поделиться
+# Короче, чем «Сохранить, открыть, поделиться»: так панель на проекторе остаётся в две строки.
+tool-files = Сохранить/открыть
 tool-fresnel = Френель
 presentation-toggle = 🖵 Презентация
 presentation-toggle-hover = Полный экран, всё крупнее (F11)

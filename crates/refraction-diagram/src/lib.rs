@@ -36,6 +36,7 @@ pub mod picture;
 pub mod placer;
 pub mod quadratic;
 pub mod scene_picture;
+pub mod scene_words;
 pub mod shapes;
 pub mod spectrum;
 pub mod table;

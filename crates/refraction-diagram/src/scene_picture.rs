@@ -4,6 +4,7 @@
 //! [`Primitive`]s directly (no dashes to lower), because a scene of a thousand rays is rebuilt
 //! on every frame of a drag.
 
+use crate::scene_words::{medium_name, title};
 use std::collections::{HashMap, HashSet};
 
 use glam::{DVec2, Vec2};
@@ -51,7 +52,7 @@ impl SceneHandleId {
                     .get(i)
                     .and_then(|s| s.medium())
                     .and_then(|m| scene.media().get(m))
-                    .map_or_else(|| t!("diagram-screen"), |m| m.name.clone());
+                    .map_or_else(|| t!("diagram-screen"), |m| medium_name(&m.name));
                 let number = (i + 1).to_string();
                 t!("diagram-handle-shape", number = number, medium = what)
             }
@@ -345,7 +346,7 @@ fn banner_rows(
         ));
     }
     [
-        (vec![(scene.title().to_owned(), p.ink)], font * 1.05),
+        (vec![(title(scene), p.ink)], font * 1.05),
         (count_row, small),
         (legend(scene, trace, p), small),
     ]
@@ -389,9 +390,9 @@ fn medium_text(scene: &Scene, medium: usize) -> String {
         if m.dispersion.is_dispersive() {
             let nm = reference_wavelength();
             let at = t!("diagram-index-at-wavelength", index = n, wavelength = nm);
-            format!("{}\n{at}", m.name)
+            format!("{}\n{at}", medium_name(&m.name))
         } else {
-            format!("{}\nn = {n}", m.name)
+            format!("{}\nn = {n}", medium_name(&m.name))
         }
     })
 }
@@ -763,7 +764,7 @@ impl ScenePictureBuilder<'_> {
                 y += line_height(self.face.as_ref(), size);
             }
         }
-        format!("{}: {}", scene.title(), counts_text(&trace.counts))
+        format!("{}: {}", title(scene), counts_text(&trace.counts))
     }
 }
 
