@@ -174,13 +174,21 @@ impl AnimationExport {
     /// while it runs a progress bar and *Cancel*.
     pub fn show(&mut self, ui: &mut Ui, state: &ExplorerState, overlay: &Overlay) {
         ui.heading(t!("files-animation-heading"));
-        ComboBox::from_label(t!("files-animation"))
+        // The label above the menu, and the menu one line as wide as the panel, cut if the
+        // animation's name is long (the menu and the hover show it all).
+        let label = ui.label(t!("files-animation"));
+        let response = ComboBox::from_id_salt("animation")
+            .width(ui.available_width())
+            .wrap_mode(egui::TextWrapMode::Truncate)
             .selected_text(self.animation.label())
             .show_ui(ui, |ui| {
                 for a in Animation::ALL {
                     ui.selectable_value(&mut self.animation, a, a.label());
                 }
-            });
+            })
+            .response
+            .labelled_by(label.id);
+        response.on_hover_text(self.animation.label());
         self.numbers(ui);
         ui.horizontal(|ui| {
             let label = ui.label(t!("files-gif-file"));
