@@ -91,24 +91,19 @@ fn hit_text(scene: &Scene, hit: &Hit) -> String {
     let (from, to) = (name(hit.from_medium), name(hit.to_medium));
     let (mu_i, mu_t) = (number(hit.mu_i, 4), number(hit.mu_t, 4));
     let wavelength = number(traced_wavelength(hit.light), 1);
-    match hit.side {
-        Side::Entering => t!(
-            "scenes-hit-entering",
-            from = from,
-            to = to,
-            mu_i = mu_i,
-            mu_t = mu_t,
-            wavelength = wavelength
-        ),
-        Side::Leaving => t!(
-            "scenes-hit-leaving",
-            from = from,
-            to = to,
-            mu_i = mu_i,
-            mu_t = mu_t,
-            wavelength = wavelength
-        ),
-    }
+    let side = match hit.side {
+        Side::Entering => "entering",
+        Side::Leaving => "leaving",
+    };
+    t!(
+        "scenes-hit",
+        side = side,
+        from = from,
+        to = to,
+        mu_i = mu_i,
+        mu_t = mu_t,
+        wavelength = wavelength
+    )
 }
 
 /// Why a trace stopped early, in words.
@@ -478,5 +473,52 @@ impl ScenesView {
         };
         paint(painter, to_screen, &[Primitive::Text(label)]);
         ui.ctx().set_cursor_icon(CursorIcon::PointingHand);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use refraction_i18n::Locale;
+
+    #[test]
+    fn a_hovered_hit_says_which_way_the_ray_crosses_in_the_windows_language() {
+        let scene = Scene::embedded("droplet").unwrap();
+        let trace = scene.trace();
+        let entering = trace
+            .hits
+            .iter()
+            .find(|h| h.side == Side::Entering)
+            .unwrap();
+        let leaving = trace.hits.iter().find(|h| h.side == Side::Leaving).unwrap();
+        let english = (hit_text(&scene, entering), hit_text(&scene, leaving));
+        refraction_i18n::set_locale(Locale::De);
+        let german = hit_text(&scene, leaving);
+        refraction_i18n::set_locale(Locale::En);
+        assert!(
+            english
+                .0
+                .starts_with("air into water (entering)\nμi = 1.0003"),
+            "{}",
+            english.0
+        );
+        assert!(
+            english.1.contains("(leaving: the kernel turns N round)\n"),
+            "{}",
+            english.1
+        );
+        assert!(
+            english.1.ends_with("nm\nclick: open in One interface"),
+            "{}",
+            english.1
+        );
+        assert!(
+            german.starts_with("von Wasser in Luft (Austritt"),
+            "{german}"
+        );
+        assert!(
+            german.contains("μi = 1,3436, μt = 1,0003, 400,0 nm"),
+            "{german}"
+        );
     }
 }

@@ -146,12 +146,11 @@ scenes-stopped-segments = die Verfolgung hielt an ihrem Limit von { $budget } Se
 scenes-stopped-tests = die Verfolgung hielt an ihrem Limit von { $budget } Schnitttests an: Die noch nicht verfolgten Strahlen fehlen (weniger Strahlen, Formen oder Reflexionen werden vollständig verfolgt)
 scenes-stopped-cancelled = die Verfolgung wurde abgebrochen: Die noch nicht verfolgten Strahlen fehlen
 # Der Kasten neben einem Trefferpunkt unter dem Mauszeiger: die Medien, aus denen und in die der Strahl geht, ihre Brechungsindizes und die verfolgte Wellenlänge.
-scenes-hit-entering =
-    von { $from } in { $to } (Eintritt)
-    μi = { $mu_i }, μt = { $mu_t }, { $wavelength } nm
-    Klick: in „Eine Grenzfläche“ öffnen
-scenes-hit-leaving =
-    von { $from } in { $to } (Austritt: Der Kernel kehrt N um)
+scenes-hit =
+    von { $from } in { $to } ({ $side ->
+        [entering] Eintritt
+       *[leaving] Austritt: Der Kernel kehrt N um
+    })
     μi = { $mu_i }, μt = { $mu_t }, { $wavelength } nm
     Klick: in „Eine Grenzfläche“ öffnen
 

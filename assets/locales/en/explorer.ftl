@@ -145,12 +145,11 @@ scenes-stopped-segments = the trace stopped at its budget of { $budget } segment
 scenes-stopped-tests = the trace stopped at its budget of { $budget } intersection tests: the rays not yet followed are left out (fewer rays, shapes or reflections trace fully)
 scenes-stopped-cancelled = the trace was cancelled before it finished
 # The box beside a hovered hit point: the media the ray goes from and into, their indices and the wavelength traced.
-scenes-hit-entering =
-    { $from } into { $to } (entering)
-    μi = { $mu_i }, μt = { $mu_t }, { $wavelength } nm
-    click: open in One interface
-scenes-hit-leaving =
-    { $from } into { $to } (leaving: the kernel turns N round)
+scenes-hit =
+    { $from } into { $to } ({ $side ->
+        [entering] entering
+       *[leaving] leaving: the kernel turns N round
+    })
     μi = { $mu_i }, μt = { $mu_t }, { $wavelength } nm
     click: open in One interface
 

@@ -149,12 +149,11 @@ scenes-stopped-segments = el trazado se detuvo en su límite de { $budget } segm
 scenes-stopped-tests = el trazado se detuvo en su límite de { $budget } pruebas de intersección: faltan los rayos aún no seguidos (con menos rayos, formas o reflexiones se traza por completo)
 scenes-stopped-cancelled = se canceló el trazado: faltan los rayos aún no seguidos
 # El recuadro junto a un punto de impacto bajo el puntero: los medios de los que sale y a los que entra el rayo, sus índices y la longitud de onda trazada.
-scenes-hit-entering =
-    de { $from } a { $to } (entrada)
-    μi = { $mu_i }, μt = { $mu_t }, { $wavelength } nm
-    clic: abrir en “Una interfaz”
-scenes-hit-leaving =
-    de { $from } a { $to } (salida: el kernel invierte N)
+scenes-hit =
+    de { $from } a { $to } ({ $side ->
+        [entering] entrada
+       *[leaving] salida: el kernel invierte N
+    })
     μi = { $mu_i }, μt = { $mu_t }, { $wavelength } nm
     clic: abrir en “Una interfaz”
 

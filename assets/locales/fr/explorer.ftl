@@ -147,12 +147,11 @@ scenes-stopped-segments = le tracé s'est arrêté à sa limite de { $budget } s
 scenes-stopped-tests = le tracé s'est arrêté à sa limite de { $budget } tests d'intersection : les rayons pas encore suivis sont omis (avec moins de rayons, de formes ou de réflexions, le tracé est complet)
 scenes-stopped-cancelled = le tracé a été annulé : les rayons pas encore suivis sont omis
 # L'encadré à côté d'un point d'impact survolé : les milieux d'où vient et où va le rayon, leurs indices et la longueur d'onde tracée.
-scenes-hit-entering =
-    { $from } vers { $to } (entrée)
-    μi = { $mu_i }, μt = { $mu_t }, { $wavelength } nm
-    clic : ouvrir dans « Une interface »
-scenes-hit-leaving =
-    { $from } vers { $to } (sortie : le noyau retourne N)
+scenes-hit =
+    { $from } vers { $to } ({ $side ->
+        [entering] entrée
+       *[leaving] sortie : le noyau retourne N
+    })
     μi = { $mu_i }, μt = { $mu_t }, { $wavelength } nm
     clic : ouvrir dans « Une interface »
 

@@ -149,12 +149,11 @@ scenes-stopped-segments = o traçado parou no seu limite de { $budget } segmento
 scenes-stopped-tests = o traçado parou no seu limite de { $budget } testes de interseção: os raios ainda não seguidos ficam de fora (com menos raios, formas ou reflexões, o traçado fica completo)
 scenes-stopped-cancelled = o traçado foi cancelado: os raios ainda não seguidos ficam de fora
 # A caixa ao lado de um ponto de impacto sob o ponteiro: os meios de onde vem e para onde vai o raio, seus índices e o comprimento de onda traçado.
-scenes-hit-entering =
-    de { $from } para { $to } (entrando)
-    μi = { $mu_i }, μt = { $mu_t }, { $wavelength } nm
-    clique: abrir em “Uma interface”
-scenes-hit-leaving =
-    de { $from } para { $to } (saindo: o kernel inverte N)
+scenes-hit =
+    de { $from } para { $to } ({ $side ->
+        [entering] entrando
+       *[leaving] saindo: o kernel inverte N
+    })
     μi = { $mu_i }, μt = { $mu_t }, { $wavelength } nm
     clique: abrir em “Uma interface”
 
