@@ -198,8 +198,10 @@ impl Presentation {
         } else {
             speaking.name().to_owned()
         };
-        // As wide as the chosen name: the bar keeps its rows on a projector.
-        ComboBox::from_id_salt("language")
+        // As wide as the chosen name: the bar keeps its rows on a projector; its name is for
+        // screen readers and the hover.
+        let name = t!("language-menu");
+        let response = ComboBox::from_id_salt("language")
             .width(COMPACT_COMBO_WIDTH)
             .selected_text(format!("🌐 {shown}"))
             .show_ui(ui, |ui| {
@@ -212,8 +214,9 @@ impl Presentation {
                     }
                 }
             })
-            .response
-            .on_hover_text(t!("language-hover"));
+            .response;
+        response.widget_info(|| WidgetInfo::labeled(Role::ComboBox, true, &name));
+        response.on_hover_text(format!("{name}: {}", t!("language-hover")));
     }
 }
 

@@ -21,6 +21,7 @@ presentation-theme = Design
 presentation-theme-hover = Standard oder hoher Kontrast: Schwarz auf Weiß oder Weiß auf Schwarz
 presentation-colour-blind = Für Farbenblinde
 presentation-colour-blind-hover = Nur Okabe–Ito-Farben; jeder Strahl hat zudem eigene Strichelung und Beschriftung
+language-menu = Sprache
 language-hover = Die Sprache des Fensters. Sie folgt der des Systems, solange hier keine gewählt ist.
 effects-menu = Effekte
 effects-menu-hover = Intensitäten (Fresnel) und Wellenfronten über dem Diagramm

@@ -21,6 +21,7 @@ presentation-theme = Theme
 presentation-theme-hover = Standard, or high contrast: black on white or white on black
 presentation-colour-blind = Colour-blind safe
 presentation-colour-blind-hover = Okabe–Ito colours only; every ray also has its own dash and label
+language-menu = Language
 language-hover = The language of the window. It follows the system's unless chosen here.
 effects-menu = Effects
 effects-menu-hover = Intensities (Fresnel) and wavefronts over the diagram

@@ -21,6 +21,7 @@ presentation-theme = Tema
 presentation-theme-hover = Estándar o alto contraste: negro sobre blanco o blanco sobre negro
 presentation-colour-blind = Apto para daltónicos
 presentation-colour-blind-hover = Solo colores Okabe–Ito; además, cada rayo tiene su propio trazo discontinuo y su etiqueta
+language-menu = Idioma
 language-hover = El idioma de la ventana. Sigue el del sistema salvo que se elija aquí.
 effects-menu = Efectos
 effects-menu-hover = Intensidades (Fresnel) y frentes de onda sobre el diagrama

@@ -21,6 +21,7 @@ presentation-theme = Thème
 presentation-theme-hover = Standard, ou contraste élevé : noir sur blanc ou blanc sur noir
 presentation-colour-blind = Adapté aux daltoniens
 presentation-colour-blind-hover = Couleurs Okabe–Ito uniquement ; chaque rayon a aussi son propre tireté et son étiquette
+language-menu = Langue
 language-hover = La langue de la fenêtre. Elle suit celle du système sauf si elle est choisie ici.
 effects-menu = Effets
 effects-menu-hover = Intensités (Fresnel) et fronts d'onde sur le schéma

@@ -21,6 +21,7 @@ presentation-theme = Tema
 presentation-theme-hover = Padrão ou alto contraste: preto no branco ou branco no preto
 presentation-colour-blind = Para daltônicos
 presentation-colour-blind-hover = Só cores Okabe–Ito; cada raio também tem seu próprio tracejado e rótulo
+language-menu = Idioma
 language-hover = O idioma da janela. Segue o do sistema, a menos que seja escolhido aqui.
 effects-menu = Efeitos
 effects-menu-hover = Intensidades (Fresnel) e frentes de onda sobre o diagrama

@@ -23,6 +23,7 @@ presentation-theme = Тема
 presentation-theme-hover = Стандартная или высокий контраст: чёрное на белом или белое на чёрном
 presentation-colour-blind = Для дальтоников
 presentation-colour-blind-hover = Только цвета Okabe–Ito; у каждого луча также свой тип штриха и подпись
+language-menu = Язык
 language-hover = Язык окна. Он совпадает с языком системы, если не выбран здесь.
 effects-menu = Эффекты
 effects-menu-hover = Интенсивности (Френель) и волновые фронты поверх схемы
