@@ -234,32 +234,28 @@ pub fn controls<T: Clone + PartialEq>(
     compact: bool,
 ) -> Option<Travel> {
     let mut asked = shortcut(ui);
-    let undo = (format!("⟲ {}", t!("files-undo")), t!("files-undo-hover"));
+    let undo = ("⟲", t!("files-undo"), t!("files-undo-hover"));
     if travel_button(ui, undo, history.undo_steps() > 0, compact) {
         asked = Some(Travel::Undo);
     }
-    let redo = (format!("⟳ {}", t!("files-redo")), t!("files-redo-hover"));
+    let redo = ("⟳", t!("files-redo"), t!("files-redo-hover"));
     if travel_button(ui, redo, history.redo_steps() > 0, compact) {
         asked = Some(Travel::Redo);
     }
     asked
 }
 
-/// One of Undo and Redo (`name` with its arrow first, and its hover text): whether it was
-/// clicked.
+/// One of Undo and Redo (its arrow, its name and its hover text): whether it was clicked.
 fn travel_button(
     ui: &mut Ui,
-    (name, hover): (String, String),
+    (arrow, name, hover): (&str, String, String),
     enabled: bool,
     compact: bool,
 ) -> bool {
-    let shown = if compact {
-        name.split(' ').next().unwrap_or_default().to_owned()
-    } else {
-        name.clone()
-    };
+    let full = format!("{arrow} {name}");
+    let shown = if compact { arrow } else { full.as_str() };
     let button = ui.add_enabled(enabled, Button::new(shown));
-    button.widget_info(|| WidgetInfo::labeled(Role::Button, enabled, &name));
+    button.widget_info(|| WidgetInfo::labeled(Role::Button, enabled, &full));
     let hover = if compact {
         format!("{name}: {hover}")
     } else {

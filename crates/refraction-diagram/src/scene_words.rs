@@ -3,60 +3,86 @@
 //! a text is translated only where it is exactly a built-in scene's own, so that a user's
 //! scene file shows what its author wrote.
 
+use std::sync::OnceLock;
+
 use refraction_i18n::t;
-use refraction_scene::Scene;
+use refraction_scene::{Scene, catalogue};
+
+/// Where a scene's title is in [`built_in_words`] and [`file_words`].
+const TITLE: usize = 0;
+/// Where a scene's description is.
+const DESCRIPTION: usize = 1;
+
+/// The title and the description of the built-in scene `name`, in the current language.
+fn built_in_words(name: &str) -> Option<[String; 2]> {
+    Some(match name {
+        "dispersing-prism" => [
+            t!("diagram-scene-dispersing-prism"),
+            t!("diagram-scene-dispersing-prism-about"),
+        ],
+        "droplet" => [
+            t!("diagram-scene-droplet"),
+            t!("diagram-scene-droplet-about"),
+        ],
+        "fibre" => [t!("diagram-scene-fibre"), t!("diagram-scene-fibre-about")],
+        "interface" => [
+            t!("diagram-scene-interface"),
+            t!("diagram-scene-interface-about"),
+        ],
+        "lens" => [t!("diagram-scene-lens"), t!("diagram-scene-lens-about")],
+        "right-angle-prism" => [
+            t!("diagram-scene-right-angle-prism"),
+            t!("diagram-scene-right-angle-prism-about"),
+        ],
+        "slab" => [t!("diagram-scene-slab"), t!("diagram-scene-slab-about")],
+        _ => return None,
+    })
+}
+
+/// The English title and description the built-in scene file `name` carries, read from the
+/// files once: the window asks for a scene's words every frame.
+fn file_words(name: &str) -> Option<&'static [String; 2]> {
+    static WORDS: OnceLock<Vec<(&'static str, [String; 2])>> = OnceLock::new();
+    let words = WORDS.get_or_init(|| {
+        catalogue()
+            .into_iter()
+            .filter_map(|info| {
+                let scene = Scene::embedded(info.name).ok()?;
+                let words = [scene.title().to_owned(), scene.description().to_owned()];
+                Some((info.name, words))
+            })
+            .collect()
+    });
+    words.iter().find(|(n, _)| *n == name).map(|(_, w)| w)
+}
 
 /// The title of the built-in scene `name`, in the current language.
 #[must_use]
 pub fn built_in_title(name: &str) -> Option<String> {
-    Some(match name {
-        "dispersing-prism" => t!("diagram-scene-dispersing-prism"),
-        "droplet" => t!("diagram-scene-droplet"),
-        "fibre" => t!("diagram-scene-fibre"),
-        "interface" => t!("diagram-scene-interface"),
-        "lens" => t!("diagram-scene-lens"),
-        "right-angle-prism" => t!("diagram-scene-right-angle-prism"),
-        "slab" => t!("diagram-scene-slab"),
-        _ => return None,
-    })
+    built_in_words(name).map(|[title, _]| title)
 }
 
-/// The description of the built-in scene `name`, in the current language.
-fn built_in_description(name: &str) -> Option<String> {
-    Some(match name {
-        "dispersing-prism" => t!("diagram-scene-dispersing-prism-about"),
-        "droplet" => t!("diagram-scene-droplet-about"),
-        "fibre" => t!("diagram-scene-fibre-about"),
-        "interface" => t!("diagram-scene-interface-about"),
-        "lens" => t!("diagram-scene-lens-about"),
-        "right-angle-prism" => t!("diagram-scene-right-angle-prism-about"),
-        "slab" => t!("diagram-scene-slab-about"),
-        _ => return None,
-    })
-}
-
-/// Whether `scene` says what the built-in scene of its name says (`part` picks the text):
-/// a file of the user's own with a built-in's name keeps its own words.
-fn as_built_in(scene: &Scene, part: fn(&Scene) -> &str) -> bool {
-    Scene::embedded(scene.name()).is_ok_and(|built_in| part(&built_in) == part(scene))
+/// `scene`'s title or description (`part`), in the current language where it says what the
+/// built-in scene of its name says: a file of the user's own keeps its own words.
+fn words(scene: &Scene, part: usize) -> String {
+    let own = [scene.title(), scene.description()][part];
+    let as_built_in = file_words(scene.name()).is_some_and(|words| words[part] == own);
+    as_built_in
+        .then(|| built_in_words(scene.name()))
+        .flatten()
+        .map_or_else(|| own.to_owned(), |words| words[part].clone())
 }
 
 /// `scene`'s title, in the current language where it is a built-in scene's own.
 #[must_use]
 pub fn title(scene: &Scene) -> String {
-    as_built_in(scene, Scene::title)
-        .then(|| built_in_title(scene.name()))
-        .flatten()
-        .unwrap_or_else(|| scene.title().to_owned())
+    words(scene, TITLE)
 }
 
 /// `scene`'s description, in the current language where it is a built-in scene's own.
 #[must_use]
 pub fn description(scene: &Scene) -> String {
-    as_built_in(scene, Scene::description)
-        .then(|| built_in_description(scene.name()))
-        .flatten()
-        .unwrap_or_else(|| scene.description().to_owned())
+    words(scene, DESCRIPTION)
 }
 
 /// A medium's name as a built-in scene names it (`air`, `bk7`), in the current language;
@@ -86,7 +112,6 @@ fn built_in_medium(name: &str) -> Option<String> {
 mod tests {
     use super::*;
     use refraction_i18n::Locale;
-    use refraction_scene::{Scene, catalogue};
 
     #[test]
     fn every_built_in_scene_has_its_words_in_every_language() {
