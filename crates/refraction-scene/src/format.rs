@@ -84,6 +84,16 @@ fn place(position: &Option<Position>) -> String {
     })
 }
 
+/// The TOML parser's message in the words of the scene format's own messages: an array holds
+/// values and an inline table entries, never "elements" (serde's word, which the format's
+/// messages avoid).
+fn toml_words(message: &str) -> String {
+    message
+        .trim_end()
+        .replace("array elements", "the array's values")
+        .replace("inline table element", "inline table entry")
+}
+
 /// A problem at a place in the file: a byte range and a message.
 struct Invalid {
     span: Range<usize>,
@@ -689,7 +699,7 @@ impl Scene {
             message,
         };
         let parsed: SceneFile =
-            toml::from_str(text).map_err(|e| fail(e.span(), e.message().trim_end().to_owned()))?;
+            toml::from_str(text).map_err(|e| fail(e.span(), toml_words(e.message())))?;
         build(parsed, name).map_err(|e| fail(Some(e.span), e.message))
     }
 
@@ -900,6 +910,21 @@ direction = [1, 0]
         assert_eq!((line, column), (8, 21), "{message}");
         let (message, ..) = error_at("[view]\nmin = [0]\nmax = [1, 1]\n");
         assert!(message.contains("two numbers"), "{message}");
+    }
+
+    #[test]
+    fn the_parsers_syntax_errors_are_worded_as_the_formats_own() {
+        let (message, line, _) = error_at("[view]\nmin = [[0] [0]]\nmax = [1, 1]\n");
+        assert!(
+            message.contains("missing comma between the array's values"),
+            "{message}"
+        );
+        assert!(!message.contains("element"), "{message}");
+        assert_eq!(line, 8);
+        assert_eq!(
+            toml_words("invalid inline table element\n"),
+            "invalid inline table entry"
+        );
     }
 
     #[test]
