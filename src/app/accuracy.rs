@@ -17,7 +17,7 @@ use refraction_diagram::accuracy_plot::{
     BOUND, FLOOR, Marker, axes, decade_label, point_label, variant_colour, variant_marker,
 };
 use refraction_diagram::numbers::number;
-use refraction_diagram::palette;
+use refraction_diagram::palette::Palette;
 
 /// What the background measurement has reached.
 #[derive(Debug, Default)]
@@ -98,8 +98,8 @@ impl AccuracyView {
         }
     }
 
-    /// Shows the view.
-    pub fn show(&mut self, ui: &mut Ui) {
+    /// Shows the view, its plot in `palette`'s colours.
+    pub fn show(&mut self, ui: &mut Ui, palette: &Palette) {
         ui.heading(t!("accuracy-heading"));
         ui.label(t!("accuracy-intro"));
         let fraction = self.poll();
@@ -134,7 +134,7 @@ impl AccuracyView {
             );
             ui.label(RichText::new(verdict).strong());
         }
-        plot(ui, report);
+        plot(ui, report, palette);
         table(ui, report);
         ui.small(t!(
             "accuracy-footnote",
@@ -147,7 +147,7 @@ impl AccuracyView {
 
 /// Error against time, both log10-transformed (egui_plot has no log axes), framed on whole
 /// decades like the `bench --plot` image.
-fn plot(ui: &mut Ui, report: &Report) {
+fn plot(ui: &mut Ui, report: &Report, palette: &Palette) {
     let (x, y) = axes(report);
     Plot::new("accuracy-plot")
         .height((ui.available_height() * 0.6).max(260.0))
@@ -182,7 +182,7 @@ fn plot(ui: &mut Ui, report: &Report) {
                     t!("accuracy-bound", bound = number(BOUND, 0)),
                     BOUND.log10(),
                 )
-                .color(color(palette::ALARM)),
+                .color(color(palette.alarm)),
             );
             for row in &report.rows {
                 let at = [
@@ -194,7 +194,7 @@ fn plot(ui: &mut Ui, report: &Report) {
                         .shape(marker_shape(variant_marker(row.variant)))
                         .filled(row.precision == "f64")
                         .radius(6.0)
-                        .color(color(variant_colour(row.variant))),
+                        .color(color(variant_colour(row.variant, palette))),
                 );
             }
         });

@@ -300,6 +300,7 @@ impl Explorer {
     pub fn show(&mut self, ui: &mut Ui) {
         refraction_i18n::set_locale(self.speaking());
         self.presentation.apply(ui.ctx());
+        paint::share_palette(ui.ctx(), self.presentation.palette());
         self.tools.walk.animate(ui.ctx(), &mut self.state);
         self.physics.animate(ui.ctx());
         Panel::top("views").show(ui, |ui| self.bar(ui));
@@ -313,7 +314,8 @@ impl Explorer {
             }
             View::Accuracy => {
                 egui::CentralPanel::default().show(ui, |ui| {
-                    ScrollArea::vertical().show(ui, |ui| self.accuracy.show(ui));
+                    let palette = self.presentation.palette();
+                    ScrollArea::vertical().show(ui, |ui| self.accuracy.show(ui, &palette));
                 });
             }
         }

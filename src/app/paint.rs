@@ -2,11 +2,12 @@
 
 use egui::emath::RectTransform;
 use egui::epaint::CircleShape;
-use egui::{Align2, Color32, FontId, Painter, Pos2, Response, Shape, Stroke};
+use egui::{Align2, Color32, Context, FontId, Id, Painter, Pos2, Response, Shape, Stroke, Ui};
 use glam::Vec2;
 
 use refraction_diagram::Primitive;
 use refraction_diagram::geometry::Colour;
+use refraction_diagram::palette::Palette;
 use refraction_diagram::placer::PAD;
 use refraction_diagram::shapes::{Align, Label};
 
@@ -14,6 +15,33 @@ use refraction_diagram::shapes::{Align, Label};
 #[must_use]
 pub fn color(c: Colour) -> Color32 {
     Color32::from_rgba_unmultiplied(c.r, c.g, c.b, c.a)
+}
+
+/// Where this frame's palette is kept in the context's memory.
+fn palette_id() -> Id {
+    Id::unique("window-palette")
+}
+
+/// Keeps the palette the window shows this frame (its theme and colour-blind choice) where
+/// every widget can read it with [`window_palette`].
+pub fn share_palette(ctx: &Context, palette: Palette) {
+    ctx.data_mut(|d| d.insert_temp(palette_id(), palette));
+}
+
+/// The palette the window shows, as [`share_palette`] left it (the standard palette where no
+/// explorer set one, as in a panel's own tests).
+#[must_use]
+pub fn window_palette(ui: &Ui) -> Palette {
+    ui.data(|d| d.get_temp(palette_id()))
+        .unwrap_or(Palette::STANDARD)
+}
+
+/// The colour of text in the window's palette that warns (the alarm's hue) or approves (the
+/// normal's), shaded to read on the window's background.
+#[must_use]
+pub fn verdict_colour(ui: &Ui, ok: bool) -> Color32 {
+    let palette = window_palette(ui);
+    color(palette.text_shade(if ok { palette.n } else { palette.alarm }))
 }
 
 fn align(a: Align) -> egui::Align {
@@ -108,5 +136,32 @@ pub fn hover_left_out(
         response
             .clone()
             .on_hover_text_at_pointer(label.text.clone());
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use refraction_diagram::palette::Theme;
+
+    #[test]
+    fn warnings_and_verdicts_take_the_window_palette() {
+        let dark = Palette::new(Theme::HighContrastDark, false);
+        let mut harness = egui_kittest::Harness::builder().build_ui_state(
+            |ui, seen: &mut Vec<Color32>| {
+                seen.push(verdict_colour(ui, false));
+                share_palette(ui.ctx(), Palette::new(Theme::HighContrastDark, false));
+                seen.push(verdict_colour(ui, false));
+                seen.push(verdict_colour(ui, true));
+            },
+            Vec::new(),
+        );
+        harness.run_steps(1);
+        let seen = harness.state();
+        let standard = Palette::STANDARD;
+        assert_eq!(seen[0], color(standard.text_shade(standard.alarm)));
+        assert_eq!(seen[1], color(dark.text_shade(dark.alarm)));
+        assert_eq!(seen[2], color(dark.text_shade(dark.n)));
+        assert_ne!(seen[0], seen[1]);
     }
 }

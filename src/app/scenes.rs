@@ -16,9 +16,10 @@ use glam::{DVec2, Vec2};
 use super::export;
 use super::paint::{color, hover_left_out, paint};
 use super::retrace::{Retracer, empty};
+use super::typed::error_label;
 use refraction_diagram::layout::SMALLEST_TEXT;
 use refraction_diagram::numbers::number;
-use refraction_diagram::palette::{self, Palette};
+use refraction_diagram::palette::Palette;
 use refraction_diagram::scene_words::{self, medium_name};
 use refraction_diagram::shapes::{Align, Label};
 use refraction_diagram::{ExplorerState, Primitive, SceneLayout, ScenePicture};
@@ -298,7 +299,7 @@ impl ScenesView {
                     ui.label(done);
                 }
                 Some(Err(why)) => {
-                    ui.label(RichText::new(format!("⚠ {why}")).color(color(palette::ALARM)));
+                    error_label(ui, why);
                 }
                 None => {}
             }
@@ -308,7 +309,7 @@ impl ScenesView {
         ui.add(egui::Label::new(scene_words::description(&self.scene)).truncate());
         ui.add(egui::Label::new(RichText::new(t!("scenes-hint")).weak()).truncate());
         if let Some(error) = &self.error {
-            ui.label(RichText::new(format!("⚠ {error}")).color(color(palette::ALARM)));
+            error_label(ui, error);
         }
     }
 
@@ -354,7 +355,7 @@ impl ScenesView {
         }
         if let Some(stop) = self.trace.counts.stopped {
             let why = stop_text(&stop);
-            ui.label(RichText::new(format!("⚠ {why}")).color(color(palette::ALARM)));
+            error_label(ui, &why);
         }
     }
 

@@ -5,8 +5,7 @@
 use egui::{RichText, TextEdit, Ui};
 use glam::DVec3;
 
-use super::paint::color;
-use refraction_diagram::palette;
+use super::paint::verdict_colour;
 use refraction_i18n::t;
 
 /// One typed field: its text and the error of the last attempt to apply it.
@@ -58,7 +57,8 @@ impl TypedField {
 
 /// Shows why something typed or asked for was refused, in the alarm colour.
 pub fn error_label(ui: &mut Ui, message: &str) {
-    ui.label(RichText::new(format!("⚠ {message}")).color(color(palette::ALARM)));
+    let colour = verdict_colour(ui, false);
+    ui.label(RichText::new(format!("⚠ {message}")).color(colour));
 }
 
 /// Shows the outcome of the last action (a file written, a string copied), if any.

@@ -9,7 +9,7 @@ use super::Primitive;
 use super::font::Typeface;
 use super::geometry::{Colour, Rect};
 use super::layout::SMALLEST_TEXT;
-use super::palette;
+use super::palette::Palette;
 use super::placer::{Obstacle, Placer};
 use super::shapes::{Align, Dash, Figure, Label, Stroke, lower_all};
 use refraction_bench::{Report, Row};
@@ -83,19 +83,21 @@ pub fn decade_label(exponent: i32) -> String {
     }
 }
 
-/// The colour of a variant's markers (Okabe–Ito hues, as the diagram's rays); the SIMD peer,
-/// ultraviolet, in ink, so that it stands apart from this project's own variants.
+/// The colour of a variant's markers in `palette` (one of its [`Palette::series`], the hues of
+/// the diagram's rays); the SIMD peer, ultraviolet, in ink, so that it stands apart from this
+/// project's own variants.
 #[must_use]
-pub fn variant_colour(variant: &str) -> Colour {
-    match variant {
-        "seed" => palette::WARNING,
-        "stable" => palette::T,
-        "trig" => palette::CRITICAL,
-        "glam" => palette::N,
-        "batch" => palette::REFLECTED,
-        "ultraviolet" => palette::INK,
-        _ => palette::W,
-    }
+pub fn variant_colour(variant: &str, palette: &Palette) -> Colour {
+    let series = match variant {
+        "stable" => 1,
+        "glam" => 2,
+        "batch" => 3,
+        "seed" => 4,
+        "trig" => 5,
+        "ultraviolet" => 6,
+        _ => 0,
+    };
+    palette.series[series]
 }
 
 /// The shape of a variant's markers, so that no two variants differ by colour alone.
@@ -181,10 +183,16 @@ pub fn axes(report: &Report) -> (LogAxis, LogAxis) {
     )
 }
 
-/// The report's plot on a canvas of `size` pixels, as primitives for any backend.
+/// The report's plot on a canvas of `size` pixels in `palette`'s colours, as primitives for
+/// any backend.
 #[must_use]
-pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive> {
-    let plot = Plot::new(report, size);
+pub fn primitives(
+    report: &Report,
+    size: Vec2,
+    face: &Typeface,
+    palette: &Palette,
+) -> Vec<Primitive> {
+    let plot = Plot::new(report, size, palette);
     let mut shapes = vec![Figure::Fill {
         points: vec![
             Vec2::ZERO,
@@ -192,7 +200,7 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
             size,
             Vec2::new(0.0, size.y),
         ],
-        colour: palette::BACKGROUND,
+        colour: palette.background,
     }];
     shapes.extend(plot.grid());
     shapes.extend(plot.bound());
@@ -204,25 +212,28 @@ pub fn primitives(report: &Report, size: Vec2, face: &Typeface) -> Vec<Primitive
         Vec2::new(size.x / 2.0, plot.m.text * 1.2 + plot.m.title * 1.3),
         (Align::Center, Align::Start),
         plot.m.text * 0.9,
-        palette::INK,
+        palette.ink,
     ));
     lower_all(&shapes)
 }
 
-/// The plot's area on the canvas and its two axes: where a time and an error are drawn.
-struct Plot {
+/// The plot's area on the canvas and its two axes (where a time and an error are drawn),
+/// and its colours.
+struct Plot<'a> {
     m: Metrics,
     x: LogAxis,
     y: LogAxis,
+    palette: &'a Palette,
 }
 
-impl Plot {
-    fn new(report: &Report, size: Vec2) -> Self {
+impl<'a> Plot<'a> {
+    fn new(report: &Report, size: Vec2, palette: &'a Palette) -> Self {
         let (x, y) = axes(report);
         Self {
             m: Metrics::new(size),
             x,
             y,
+            palette,
         }
     }
 
@@ -240,7 +251,7 @@ impl Plot {
         let (plot, size) = (&self.m.plot, self.m.text);
         let stroke = Stroke {
             width: 1.0,
-            colour: palette::GUIDE.with_alpha(90),
+            colour: self.palette.guide.with_alpha(90),
             dash: Dash::Solid,
         };
         let mut shapes = Vec::new();
@@ -252,7 +263,7 @@ impl Plot {
             });
             let below = Vec2::new(x, plot.max.y + size * 0.4);
             let align = (Align::Center, Align::Start);
-            shapes.push(text(decade_label(e), below, align, size, palette::INK));
+            shapes.push(text(decade_label(e), below, align, size, self.palette.ink));
         }
         for e in self.y.decades() {
             let y = self.at(10f64.powi(self.x.low as i32), 10f64.powi(e)).y;
@@ -262,7 +273,7 @@ impl Plot {
             });
             let left = Vec2::new(plot.min.x - size * 0.5, y);
             let align = (Align::End, Align::Center);
-            shapes.push(text(decade_label(e), left, align, size, palette::INK));
+            shapes.push(text(decade_label(e), left, align, size, self.palette.ink));
         }
         shapes
     }
@@ -276,7 +287,7 @@ impl Plot {
                 points: vec![Vec2::new(plot.min.x, y), Vec2::new(plot.max.x, y)],
                 stroke: Stroke {
                     width: 1.5,
-                    colour: palette::ALARM,
+                    colour: self.palette.alarm,
                     dash: Dash::Dashed,
                 },
             },
@@ -285,7 +296,7 @@ impl Plot {
                 Vec2::new(plot.max.x, y - size * 0.3),
                 (Align::End, Align::End),
                 (size * 0.9).max(SMALLEST_TEXT),
-                palette::ALARM,
+                self.palette.alarm,
             ),
         ]
     }
@@ -301,14 +312,14 @@ impl Plot {
             ],
             stroke: Stroke {
                 width: 1.5,
-                colour: palette::INK,
+                colour: self.palette.ink,
                 dash: Dash::Solid,
             },
         }
     }
 
     /// The plot's title and the two axes' names, on a canvas of `size`.
-    fn titles(&self, size: Vec2) -> impl Iterator<Item = Figure> {
+    fn titles(&self, size: Vec2) -> impl Iterator<Item = Figure> + use<'_> {
         let (small, title, plot) = (self.m.text, self.m.title, self.m.plot);
         [
             (
@@ -331,7 +342,7 @@ impl Plot {
             ),
         ]
         .into_iter()
-        .map(|(words, anchor, align, size)| text(words, anchor, align, size, palette::INK))
+        .map(|(words, anchor, align, size)| text(words, anchor, align, size, self.palette.ink))
     }
 
     /// One marker a row (hollow for f32, filled for f64), then their labels to the right,
@@ -355,12 +366,16 @@ impl Plot {
         let mut shapes = Vec::new();
         let mut labels = Vec::new();
         for (row, p) in report.rows.iter().zip(&points) {
-            let colour = variant_colour(row.variant);
+            let colour = variant_colour(row.variant, self.palette);
             let filled = row.precision == "f64";
             shapes.push(Figure::Disc {
                 center: *p,
                 radius,
-                fill: if filled { colour } else { palette::BACKGROUND },
+                fill: if filled {
+                    colour
+                } else {
+                    self.palette.background
+                },
                 outline: Stroke {
                     width: 2.0,
                     colour,
@@ -373,7 +388,7 @@ impl Plot {
                 h: Align::Start,
                 v: Align::Center,
                 size,
-                colour: palette::Palette::STANDARD.text_shade(colour),
+                colour: self.palette.text_shade(colour),
                 background: None,
             };
             labels.push((label, canvas));
@@ -395,10 +410,75 @@ mod tests {
             .map(|v| v.name())
             .chain(["ultraviolet"])
             .collect();
-        for (i, a) in names.iter().enumerate() {
-            for b in &names[i + 1..] {
-                assert_ne!(variant_colour(a), variant_colour(b), "{a} and {b}");
-                assert_ne!(variant_marker(a), variant_marker(b), "{a} and {b}");
+        let palettes = crate::palette::Theme::ALL
+            .into_iter()
+            .flat_map(|theme| [false, true].map(|safe| Palette::new(theme, safe)));
+        for palette in palettes {
+            for (i, a) in names.iter().enumerate() {
+                for b in &names[i + 1..] {
+                    let colours = [a, b].map(|v| variant_colour(v, &palette));
+                    assert_ne!(colours[0], colours[1], "{a} and {b} in {palette:?}");
+                    assert_ne!(variant_marker(a), variant_marker(b), "{a} and {b}");
+                }
+            }
+        }
+    }
+
+    fn row(variant: &'static str, precision: &'static str, ns: f64, err: f64) -> Row {
+        Row {
+            variant,
+            precision,
+            ns_per_ray: ns,
+            rays_per_second: 1e9 / ns,
+            max_err_random: 1e-7,
+            median_err_random: 1e-8,
+            max_err_hard: 1e-6,
+            median_err_hard: 1e-7,
+            max_err_hard_eps_kappa: err,
+            tir_mismatches: 0,
+        }
+    }
+
+    #[test]
+    fn the_plot_takes_the_palettes_colours() {
+        let report = Report {
+            rows: vec![
+                row("stable", "f64", 3.0, 1.2),
+                row("seed", "f32", 1.5, 900.0),
+            ],
+            rays: 10,
+            hard_rays: 10,
+            streaming: refraction_bench::timing::Streaming {
+                rays: 10,
+                batch_ns_per_ray: 1.0,
+                memory_limit_ns_per_ray: 0.5,
+            },
+            cpu: "test".to_owned(),
+        };
+        let face = Typeface::egui_default().unwrap();
+        let dark = Palette::new(crate::palette::Theme::HighContrastDark, true);
+        let shapes = primitives(&report, Vec2::new(800.0, 500.0), &face, &dark);
+        assert!(
+            matches!(&shapes[0], Primitive::Polygon { colour, .. } if *colour == dark.background)
+        );
+        let outlines: Vec<Colour> = shapes
+            .iter()
+            .filter_map(|p| match p {
+                Primitive::Disc { outline, .. } => Some(*outline),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(
+            outlines,
+            [
+                variant_colour("stable", &dark),
+                variant_colour("seed", &dark)
+            ]
+        );
+        assert_ne!(outlines[0], variant_colour("stable", &Palette::STANDARD));
+        for p in &shapes {
+            if let Primitive::Text(label) = p {
+                assert_ne!(label.colour, Palette::STANDARD.ink, "{}", label.text);
             }
         }
     }

@@ -156,6 +156,9 @@ pub struct Palette {
     pub incoming_dash: Dash,
     /// The reflected ray's dash.
     pub reflected_dash: Dash,
+    /// Seven hues for the series of a plot (the accuracy plot's variants), apart from each
+    /// other and readable on the background: the rays' hues and ink.
+    pub series: [Colour; 7],
 }
 
 impl Palette {
@@ -188,12 +191,43 @@ impl Palette {
         // and dash-dotted), the reflected ray dash-dot-dotted.
         incoming_dash: Dash::Solid,
         reflected_dash: Dash::DashDotDot,
+        series: [W, T, N, REFLECTED, WARNING, CRITICAL, INK],
     };
 
     /// The palette of `theme`; `colour_blind_safe` keeps to the eight Okabe–Ito colours.
     #[must_use]
     pub fn new(theme: Theme, colour_blind_safe: bool) -> Self {
-        let base = match theme {
+        let base = Self::of_theme(theme);
+        if !colour_blind_safe {
+            return base;
+        }
+        // Okabe–Ito: orange, bluish green, blue (sky blue on black), reddish purple,
+        // vermillion, yellow; black or white for everything without a hue. A plot's sixth
+        // series takes the hue T leaves: sky blue on white, yellow on black.
+        let (t, sixth) = if theme.is_dark() {
+            (0x56B4E9, 0xF0E442)
+        } else {
+            (0x0072B2, 0x56B4E9)
+        };
+        let [orange, blue, green, purple, vermillion, sixth] =
+            [0xE69F00, t, 0x009E73, 0xCC79A7, 0xD55E00, sixth].map(Colour::hex);
+        Self {
+            w: orange,
+            n: green,
+            t: blue,
+            reflected: purple,
+            warning: vermillion,
+            critical: base.ink,
+            alarm: vermillion,
+            highlight: Colour::hex(0xF0E442).with_alpha(150),
+            series: [orange, blue, green, purple, vermillion, sixth, base.ink],
+            ..base
+        }
+    }
+
+    /// The palette of `theme` in its own hues.
+    fn of_theme(theme: Theme) -> Self {
+        let mut base = match theme {
             Theme::Standard => Self::STANDARD,
             Theme::HighContrastLight => Self {
                 ink: Colour::hex(0x000000),
@@ -239,23 +273,16 @@ impl Palette {
                 ..Self::STANDARD
             },
         };
-        if !colour_blind_safe {
-            return base;
-        }
-        // Okabe–Ito: orange, bluish green, blue (sky blue on black), reddish purple,
-        // vermillion, yellow; black or white for everything without a hue.
-        let t = if theme.is_dark() { 0x56B4E9 } else { 0x0072B2 };
-        Self {
-            w: Colour::hex(0xE69F00),
-            n: Colour::hex(0x009E73),
-            t: Colour::hex(t),
-            reflected: Colour::hex(0xCC79A7),
-            warning: Colour::hex(0xD55E00),
-            critical: base.ink,
-            alarm: Colour::hex(0xD55E00),
-            highlight: Colour::hex(0xF0E442).with_alpha(150),
-            ..base
-        }
+        base.series = [
+            base.w,
+            base.t,
+            base.n,
+            base.reflected,
+            base.warning,
+            base.critical,
+            base.ink,
+        ];
+        base
     }
 
     /// A shade of an arrow colour for text in that colour: darker on a light background,
@@ -290,6 +317,10 @@ mod tests {
                 assert_ne!(p.ink, p.background);
                 assert_ne!(p.incoming_dash, p.reflected_dash);
                 assert_ne!(p.outside_world, p.background);
+                for (i, a) in p.series.iter().enumerate() {
+                    assert!(p.series[i + 1..].iter().all(|b| b != a), "{theme:?} {safe}");
+                    assert_ne!(*a, p.background, "{theme:?} {safe}");
+                }
             }
         }
         assert_eq!(Palette::new(Theme::Standard, false), Palette::STANDARD);

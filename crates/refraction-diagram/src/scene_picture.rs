@@ -561,9 +561,9 @@ impl ScenePictureBuilder<'_> {
     /// Every path as polylines in its wavelength's colour, split where its opacity changes.
     /// When white light is dispersed, what every colour shares (a source ray up to its first
     /// kernel call, and the reflection there) is drawn once, as white light, and the colours
-    /// are drawn interleaved (every colour of one source ray, then the next ray's): drawn
-    /// colour by colour, the last colour would hide the others where rays crowd, and a droplet
-    /// of a thousand rays would be a red blob instead of a spectrum.
+    /// are drawn shuffled ([`drawing_order`]): drawn colour by colour or ray by ray, one
+    /// colour would lie on top wherever rays crowd, and a droplet of a thousand rays would be
+    /// a red blob instead of a spectrum.
     fn rays(&mut self, trace: &Trace) {
         let wavelengths = trace.counts.wavelengths.max(1);
         let per_colour = (trace.counts.source_rays / wavelengths).max(1) as f32;
@@ -578,7 +578,7 @@ impl ScenePictureBuilder<'_> {
         let faded = |alpha: u8| (f32::from(alpha) * blend).round() as u8;
         let mut white = HashSet::new();
         let mut last_colour = None;
-        for path in interleaved(trace).map(|i| &trace.paths[i]) {
+        for path in drawing_order(trace).map(|i| &trace.paths[i]) {
             // Paths come colour after colour: look each colour up once.
             let colour = match last_colour {
                 Some((traced, colour)) if traced == path.light => colour,
@@ -768,12 +768,14 @@ impl ScenePictureBuilder<'_> {
     }
 }
 
-/// The order to draw the paths of `trace` in: as traced for one colour; for several, by the
-/// source ray they come from (the k-th source ray of each colour together, with the
-/// reflections spawned from it), and within one source ray its colours starting from the k-th
-/// (colour k mod n on top of ray k): the colours of one ray lie on one another until they
-/// spread, so a fixed order would put the same colour on top of every ray.
-fn interleaved(trace: &Trace) -> Box<dyn Iterator<Item = usize> + '_> {
+/// The order to draw the paths of `trace` in: as traced for one colour; for several, each
+/// source ray of each colour (with the reflections spawned from it) in an order that is
+/// shuffled but the same every time. Any order that follows the rays or the colours is
+/// biased: where a fan spreads by colour, the red ray through a point comes from a later
+/// source ray than the violet one, so drawing ray after ray puts red on top across a whole
+/// fan (and violet across another). Shuffled, every colour is as likely to lie on top
+/// anywhere, and where colours cross they mix.
+fn drawing_order(trace: &Trace) -> Box<dyn Iterator<Item = usize> + '_> {
     let colours = trace.counts.wavelengths;
     if colours <= 1 {
         return Box::new(0..trace.paths.len());
@@ -807,9 +809,18 @@ fn interleaved(trace: &Trace) -> Box<dyn Iterator<Item = usize> + '_> {
     // Stable: a path's reflections keep the traced order after it.
     order.sort_by_key(|&i| {
         let (ray, colour) = of[i];
-        (ray, (colour + colours - ray % colours) % colours)
+        shuffled((ray * colours + colour) as u64)
     });
     Box::new(order.into_iter())
+}
+
+/// `n` well mixed (the finaliser of SplitMix64, by Sebastiano Vigna): sorting by it shuffles,
+/// the same way every time.
+fn shuffled(n: u64) -> u64 {
+    let mut z = n.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
 }
 
 /// Whether the first segment of `path` is the same for every wavelength: a source ray's (it
@@ -986,43 +997,79 @@ mod tests {
         assert!(picture.summary.contains("kernel calls"));
     }
 
-    #[test]
-    fn dispersed_colours_are_drawn_interleaved_not_one_after_another() {
-        let (mut scene, _) = traced("droplet");
-        scene.set_ray_count(200).unwrap();
-        let trace = scene.trace();
-        assert!(trace.counts.wavelengths > 3);
-        let layout = SceneLayout::new(trace.bounds, Vec2::new(1200.0, 800.0));
-        let picture = ScenePicture::new(&scene, &trace, &layout);
-        let colours: Vec<(u8, u8, u8)> = picture
+    /// A colour without its opacity.
+    type Rgb = (u8, u8, u8);
+
+    /// The colour of the last ray drawn over each of a grid of points on the canvas (`None`
+    /// where no coloured ray passes within half a pixel), as `(r, g, b)`.
+    fn colour_on_top(picture: &ScenePicture, size: Vec2, step: f32) -> Vec<Option<Rgb>> {
+        let spectral = |c: &Colour| c.r != c.g || c.g != c.b;
+        let rays: Vec<(&Vec<Vec2>, Rgb)> = picture
             .primitives
             .iter()
             .filter_map(|p| match p {
-                Primitive::Polyline { colour, .. } => Some((colour.r, colour.g, colour.b)),
+                Primitive::Polyline { points, colour, .. } if spectral(colour) => {
+                    Some((points, (colour.r, colour.g, colour.b)))
+                }
                 _ => None,
             })
             .collect();
-        // The last fifth of the rays drawn (what lies on top) holds every colour traced.
-        let top: HashSet<_> = colours[colours.len() * 4 / 5..].iter().collect();
-        assert!(top.len() >= trace.counts.wavelengths, "{top:?}");
-        // And no colour is on top of every ray: the source rays, drawn in groups of one ray's
-        // colours, start their groups with every colour in turn.
-        let sources: Vec<usize> = interleaved(&trace)
-            .filter(|&i| trace.paths[i].parent_hit.is_none())
-            .collect();
-        for group in sources.chunks(trace.counts.wavelengths) {
-            let lights: HashSet<String> = group
-                .iter()
-                .map(|&i| format!("{:?}", trace.paths[i].light))
-                .collect();
-            assert_eq!(lights.len(), group.len(), "one ray's colours together");
+        let near = |points: &Vec<Vec2>, p: Vec2| {
+            points.windows(2).any(|s| {
+                let (a, b) = (s[0], s[1]);
+                let t = ((p - a).dot(b - a) / (b - a).length_squared().max(1e-6)).clamp(0.0, 1.0);
+                p.distance(a + (b - a) * t) < 0.5
+            })
+        };
+        let (columns, rows) = ((size.x / step) as usize, (size.y / step) as usize);
+        (0..rows * columns)
+            .map(|k| {
+                let p = Vec2::new((k % columns) as f32 + 0.5, (k / columns) as f32 + 0.5) * step;
+                rays.iter()
+                    .rev()
+                    .find(|(points, _)| near(points, p))
+                    .map(|(_, c)| *c)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn no_colour_of_dispersed_light_lies_on_top_across_a_fan() {
+        let (mut scene, _) = traced("droplet");
+        scene.set_ray_count(300).unwrap();
+        let trace = scene.trace();
+        assert!(trace.counts.wavelengths > 3);
+        let size = Vec2::new(600.0, 500.0);
+        let layout = SceneLayout::new(trace.bounds, size);
+        let picture = ScenePicture::new(&scene, &trace, &layout);
+        let tops = colour_on_top(&picture, size, 5.0);
+        // Over each tenth of the canvas (five columns, two rows) that coloured rays cover, no
+        // one colour is on top at more than half the points: drawn ray after ray, red lay on
+        // top over the whole fan leaving the drop, violet over the light inside it.
+        let (columns, rows) = ((size.x / 5.0) as usize, (size.y / 5.0) as usize);
+        let mut checked = 0;
+        for cell in 0..10 {
+            let mut count: HashMap<Rgb, usize> = HashMap::new();
+            for (k, top) in tops.iter().enumerate() {
+                let (x, y) = (k % columns * 5 / columns, k / columns * 2 / rows);
+                if x + 5 * y == cell
+                    && let Some(c) = top
+                {
+                    *count.entry(*c).or_default() += 1;
+                }
+            }
+            let all: usize = count.values().sum();
+            if all < 100 {
+                continue;
+            }
+            checked += 1;
+            let most = count.values().max().copied().unwrap_or(0);
+            assert!(
+                2 * most <= all,
+                "cell {cell}: {most} of {all} points in one colour: {count:?}"
+            );
         }
-        let lasts: HashSet<String> = sources
-            .chunks(trace.counts.wavelengths)
-            .filter_map(|group| group.last())
-            .map(|&i| format!("{:?}", trace.paths[i].light))
-            .collect();
-        assert_eq!(lasts.len(), trace.counts.wavelengths, "{lasts:?}");
+        assert!(checked >= 3, "coloured rays cover {checked} cells");
     }
 
     #[test]

@@ -1,5 +1,6 @@
 //! The colour of a traced ray: its wavelength's hue, darkened where a bright hue (yellow, green)
-//! would vanish on the light canvas; white light traced once is a neutral grey.
+//! would vanish on the light canvas and toward either end of the spectrum; white light traced
+//! once is a neutral grey.
 
 use super::geometry::Colour;
 use super::palette;
@@ -36,8 +37,9 @@ pub fn wavelength_colour(nm: f64) -> Colour {
     };
     let fade = if x < 420.0 {
         END_FADE + (1.0 - END_FADE) * (x - 380.0) / 40.0
-    } else if x > 700.0 {
-        END_FADE + (1.0 - END_FADE) * (780.0 - x) / 80.0
+    } else if x > 645.0 {
+        // Through the reds, so that deep red (700 nm) is told from red (650 nm).
+        END_FADE + (1.0 - END_FADE) * (780.0 - x) / 135.0
     } else {
         1.0
     };
@@ -72,6 +74,8 @@ mod tests {
         assert!(green.g > green.r && green.g > green.b);
         let red = wavelength_colour(650.0);
         assert!(red.r > 200 && red.g == 0 && red.b == 0);
+        let deep_red = wavelength_colour(700.0);
+        assert!(deep_red.g == 0 && deep_red.b == 0 && red.r - deep_red.r >= 40);
         assert_eq!(wavelength_colour(200.0), wavelength_colour(380.0));
         assert_eq!(wavelength_colour(f64::NAN), palette::WHITE_LIGHT);
         assert_eq!(

@@ -337,7 +337,8 @@ pub fn export_accuracy_plot(
 ) -> Result<(), RenderError> {
     let format = ImageFormat::for_path(path)?;
     let bytes = still(format, (width, height), path, |size, face| {
-        refraction_diagram::accuracy_plot::primitives(report, size, face)
+        let palette = refraction_diagram::palette::Palette::STANDARD;
+        refraction_diagram::accuracy_plot::primitives(report, size, face, &palette)
     })?;
     write_atomically(path, &bytes).map_err(RenderError::Write)
 }

@@ -5,12 +5,11 @@
 use egui::{CollapsingHeader, Grid, RichText, TextEdit, Ui};
 
 use super::{JSON_LINE_START, field};
-use crate::app::paint::color;
+use crate::app::paint::verdict_colour;
 use crate::app::typed::error_label;
 use crate::lines::api_check::{
     Diagnosis, Format, Options, Pattern, Record, SKIPPED, Session, Tally, check_record,
 };
-use refraction_diagram::palette;
 use refraction_i18n::t;
 use refraction_kernel::api::Api;
 
@@ -186,19 +185,15 @@ impl Row {
             .clicked();
         match &self.verdict {
             Ok((_, d)) => {
-                let (mark, ink) = if d.ok {
-                    ("✔", palette::N)
-                } else {
-                    ("✖", palette::ALARM)
-                };
-                ui.label(RichText::new(mark).color(color(ink)));
+                let mark = if d.ok { "✔" } else { "✖" };
+                ui.label(RichText::new(mark).color(verdict_colour(ui, d.ok)));
                 let codes: Vec<&str> = d.mistakes.iter().map(|c| c.name()).collect();
                 ui.label(codes.join(", "));
                 ui.label(shortened(&d.explanation))
                     .on_hover_text(&d.explanation);
             }
             Err(e) => {
-                ui.label(RichText::new("✖").color(color(palette::ALARM)));
+                ui.label(RichText::new("✖").color(verdict_colour(ui, false)));
                 ui.label(t!("check-row-error"));
                 error_label(ui, &shortened(e));
             }

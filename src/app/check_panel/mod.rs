@@ -12,7 +12,7 @@ mod bulk;
 use egui::{RichText, TextEdit, Ui};
 use glam::DVec3;
 
-use super::paint::color;
+use super::paint::verdict_colour;
 use super::typed::error_label;
 use crate::lines::check::{self, Match, Verdict};
 use crate::lines::solve::{Precision, Request};
@@ -20,7 +20,6 @@ use crate::lines::state_file;
 use refraction_diagram::ExplorerState;
 use refraction_diagram::numbers::vector;
 use refraction_diagram::overlay::StudentRay;
-use refraction_diagram::palette;
 use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
@@ -167,15 +166,12 @@ fn field(ui: &mut Ui, label: &str, text: &mut String, width: f32) -> bool {
 
 /// The headline of a verdict: ✔ in the normal's colour, ✖ in the alarm colour.
 fn headline(ui: &mut Ui, ok: bool, text: &str) {
-    let (mark, ink) = if ok {
-        ("✔", palette::N)
-    } else {
-        ("✖", palette::ALARM)
-    };
+    let mark = if ok { "✔" } else { "✖" };
+    let colour = verdict_colour(ui, ok);
     ui.label(
         RichText::new(format!("{mark} {text}"))
             .strong()
-            .color(color(ink)),
+            .color(colour),
     );
 }
 
