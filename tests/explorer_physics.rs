@@ -248,6 +248,23 @@ fn export_animation_writes_a_gif_in_the_background_and_cancel_writes_nothing() {
         frames += 1;
     }
     assert_eq!(frames, 3);
+    // The same name again: asked first, and Cancel leaves the GIF as it was.
+    h.get_by_label("Export animation").click();
+    h.run();
+    assert!(h.query_by_label("Replace the file?").is_some());
+    click(&mut h, "Cancel");
+    assert!(h.query_by_label_contains("left as it was").is_some());
+    assert_eq!(std::fs::read(&out).unwrap(), bytes);
+    // A GIF is never written over a file of another kind with a .gif name.
+    let disguised = folder.join("state.gif");
+    std::fs::write(&disguised, "{\"w\":[0,-1,0]}").unwrap();
+    replace_text(&mut h, "GIF file", disguised.to_str().unwrap());
+    h.get_by_label("Export animation").click();
+    h.run();
+    assert!(
+        h.query_by_label_contains("holds a saved state (JSON), not a GIF animation")
+            .is_some()
+    );
     // A long one, cancelled at once: nothing written, and the window says so.
     let cancelled = folder.join("cancelled.gif");
     replace_text(&mut h, "GIF file", cancelled.to_str().unwrap());

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{drag, harness_for, press_move_release};
+use common::{click, drag, harness_for, press_move_release};
 use egui::{Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -146,6 +146,119 @@ fn an_edited_scene_saves_and_opens_again_and_a_corrupt_file_changes_nothing() {
         h.query_by_label_contains("corrupt.toml:3:").is_some(),
         "the error names the file, line and column"
     );
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn a_scene_file_is_replaced_only_when_the_user_says_so_and_never_over_another_kind() {
+    let folder = std::env::temp_dir().join(format!("scene-replace-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let saved = folder.join("lesson.toml");
+    let mut h = droplet();
+    common::replace_text(&mut h, "Scene file", saved.to_str().unwrap());
+    click(&mut h, "Save file");
+    let first = std::fs::read_to_string(&saved).unwrap();
+    assert!(first.contains("[source]"));
+    // Saving again asks first; Cancel keeps the file, Replace writes the scene as edited.
+    std::fs::write(&saved, "# kept\ntitle = \"mine\"\n").unwrap();
+    click(&mut h, "Save file");
+    assert!(h.query_by_label("Replace the file?").is_some());
+    click(&mut h, "Cancel");
+    assert_eq!(
+        std::fs::read_to_string(&saved).unwrap(),
+        "# kept\ntitle = \"mine\"\n"
+    );
+    assert!(h.query_by_label_contains("left as it was").is_some());
+    click(&mut h, "Save file");
+    click(&mut h, "Replace");
+    assert_eq!(std::fs::read_to_string(&saved).unwrap(), first);
+    // Never over a state file or an image, whatever the name says.
+    let state = folder.join("state.json");
+    std::fs::write(&state, "{\"w\":[0,-1,0]}").unwrap();
+    common::replace_text(&mut h, "Scene file", state.to_str().unwrap());
+    click(&mut h, "Save file");
+    assert!(h.query_by_label_contains("ending in .toml").is_some());
+    let disguised = folder.join("picture.toml");
+    std::fs::write(&disguised, b"\x89PNG\r\n\x1a\n").unwrap();
+    common::replace_text(&mut h, "Scene file", disguised.to_str().unwrap());
+    click(&mut h, "Save file");
+    assert!(
+        h.query_by_label_contains("holds a PNG image, not a scene (TOML)")
+            .is_some()
+    );
+    assert_eq!(std::fs::read(&disguised).unwrap(), b"\x89PNG\r\n\x1a\n");
+    assert_eq!(std::fs::read_to_string(&state).unwrap(), "{\"w\":[0,-1,0]}");
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn the_open_dialog_lists_scene_files_and_opens_the_one_chosen() {
+    let folder = std::env::temp_dir().join(format!("scene-dialog-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let prism = Scene::embedded("dispersing-prism").unwrap();
+    std::fs::write(folder.join("prism.toml"), prism.to_toml().unwrap()).unwrap();
+    std::fs::write(folder.join("notes.png"), b"\x89PNG\r\n\x1a\n").unwrap();
+    let mut h = droplet();
+    common::replace_text(
+        &mut h,
+        "Scene file",
+        folder.join("x.toml").to_str().unwrap(),
+    );
+    click(&mut h, "📂 Open…");
+    assert!(
+        h.query_by_label("notes.png").is_none(),
+        "only scene files are listed"
+    );
+    click(&mut h, "prism.toml");
+    // The dialog's own button (the strip has one of the same name behind it).
+    let buttons = h.get_all_by_role_and_label(egui::Role::Button, "Open file");
+    buttons.last().unwrap().click();
+    h.run();
+    assert_eq!(h.state().scenes().scene().name(), "prism");
+    assert_eq!(h.state().scenes().scene().source(), prism.source());
+    assert!(h.query_by_label("File name").is_none(), "the dialog closed");
+    // Save as… names a new file in the dialog and writes it there.
+    click(&mut h, "💾 Save as…");
+    common::replace_text(&mut h, "File name", "copy.toml");
+    let buttons = h.get_all_by_role_and_label(egui::Role::Button, "Save file");
+    buttons.last().unwrap().click();
+    h.run();
+    let copy = std::fs::read_to_string(folder.join("copy.toml")).unwrap();
+    assert_eq!(copy, prism.to_toml().unwrap());
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn a_scene_picture_without_a_name_is_numbered_and_an_existing_one_is_asked_about() {
+    let folder = std::env::temp_dir().join(format!("scene-pictures-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let mut h = droplet();
+    for _ in 0..2 {
+        click(&mut h, "Export picture");
+        common::replace_text(
+            &mut h,
+            "Picture file (.png or .svg)",
+            folder.to_str().unwrap(),
+        );
+        h.get_by_label_contains("Export 1920×1080").click();
+        h.run();
+    }
+    assert!(folder.join("scene-001.svg").is_file());
+    assert!(folder.join("scene-002.svg").is_file());
+    let named = folder.join("slide.png");
+    std::fs::write(&named, b"\x89PNG\r\n\x1a\nold").unwrap();
+    click(&mut h, "Export picture");
+    common::replace_text(
+        &mut h,
+        "Picture file (.png or .svg)",
+        named.to_str().unwrap(),
+    );
+    h.get_by_label_contains("Export 1920×1080").click();
+    h.run();
+    assert!(h.query_by_label("Replace the file?").is_some());
+    click(&mut h, "Replace");
+    let bytes = std::fs::read(&named).unwrap();
+    assert!(bytes.len() > 1000, "the picture replaced the old file");
     std::fs::remove_dir_all(&folder).unwrap();
 }
 

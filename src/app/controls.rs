@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use egui::{ComboBox, DragValue, Slider, SliderClamping, Ui};
 
-use super::file_dialog::{self, Choice, FileDialog, Kind, Purpose, Target};
+use super::file_dialog::{self, Choice, FileDialog, Purpose, Target};
 use super::typed::{TypedField, format_vector, parse_number, parse_vector, short, status};
 use refraction_diagram::model::{INDEX_RANGE, MATERIALS, material_of};
 use refraction_diagram::overlay::PanZoom;
@@ -247,12 +247,7 @@ impl Controls {
         });
         if ui.button(t!("controls-export")).clicked() {
             // No name, or a folder: the next free number there.
-            let typed = PathBuf::from(self.export_path.trim());
-            let path = if typed.as_os_str().is_empty() || typed.is_dir() {
-                file_dialog::numbered(&typed, "diagram", "png")
-            } else {
-                typed
-            };
+            let path = file_dialog::or_numbered(&self.export_path, "diagram", "png");
             self.export_to(path, state, overlay);
         }
         match self.export_dialog.as_mut().map(|d| d.show(ui)) {
@@ -264,13 +259,9 @@ impl Controls {
             Some(Choice::Cancelled) => self.export_dialog = None,
             Some(Choice::Pending) | None => {}
         }
-        if let Some(path) = self.export_replace.clone()
-            && let Some(replace) = file_dialog::confirm_replace(ui, &path)
-        {
-            self.export_replace = None;
-            if replace {
-                self.write_image(&path, state, overlay);
-            }
+        let replacing = &mut self.export_replace;
+        if let Some(path) = file_dialog::answer_replace(ui, replacing, &mut self.export_status) {
+            self.write_image(&path, state, overlay);
         }
         status(ui, self.export_status.as_ref());
     }
@@ -278,11 +269,7 @@ impl Controls {
     /// Exports to `path` at once when it is new, after a question when it holds an image of
     /// its kind, never over a file of another kind (a saved state).
     fn export_to(&mut self, path: PathBuf, state: &ExplorerState, overlay: &Overlay) {
-        let kind = refraction_render::format::ImageFormat::for_path(&path)
-            .map_err(|e| e.to_string())
-            .map(|_| Kind::of_name(&path).unwrap_or(Kind::Png))
-            .and_then(|kind| file_dialog::target(&path, kind));
-        match kind {
+        match file_dialog::picture_target(&path) {
             Ok(Target::New) => self.write_image(&path, state, overlay),
             Ok(Target::Replaces) => self.export_replace = Some(path),
             Err(e) => self.export_status = Some(Err(e)),

@@ -11,6 +11,7 @@ use std::time::Duration;
 
 use egui::{ComboBox, DragValue, ProgressBar, TextEdit, Ui};
 
+use super::file_dialog::{self, Kind, Target};
 use super::typed::status;
 use refraction_diagram::animation::Animation;
 use refraction_diagram::numbers::number;
@@ -52,6 +53,8 @@ pub struct AnimationExport {
     path: String,
     running: Option<Job>,
     status: Option<Result<String, String>>,
+    /// A GIF the user is asked about replacing.
+    replace: Option<PathBuf>,
 }
 
 impl Default for AnimationExport {
@@ -65,6 +68,7 @@ impl Default for AnimationExport {
             path: "refraction.gif".to_owned(),
             running: None,
             status: None,
+            replace: None,
         }
     }
 }
@@ -93,27 +97,47 @@ fn check_gif_path(path: &Path) -> Result<(), String> {
 }
 
 impl AnimationExport {
-    /// Starts exporting from `state` drawn with `overlay` (in the fitted view) in a background
-    /// thread; a bad spec or path is refused at once. Nothing starts while one runs.
-    pub fn start(&mut self, state: &ExplorerState, overlay: &Overlay, ctx: &egui::Context) {
-        if self.running.is_some() {
-            return;
-        }
-        let spec = AnimationSpec {
+    /// The animation as chosen.
+    fn spec(&self) -> AnimationSpec {
+        AnimationSpec {
             animation: self.animation,
             frames: self.frames,
             fps: self.fps,
             size: self.size,
-        };
-        let path = PathBuf::from(self.path.trim());
-        let checked = spec
-            .check()
-            .map_err(|e| not_exported(&e))
-            .and_then(|()| check_gif_path(&path));
-        if let Err(why) = checked {
-            self.status = Some(Err(why));
+        }
+    }
+
+    /// Starts exporting from `state` drawn with `overlay` (in the fitted view) in a background
+    /// thread, to the GIF named (or the next free `refraction-NNN.gif` when none is): at once
+    /// to a new file, after a question over an existing GIF, never over a file of another
+    /// kind; a bad spec or path is refused at once. Nothing starts while one runs.
+    pub fn start(&mut self, state: &ExplorerState, overlay: &Overlay, ctx: &egui::Context) {
+        if self.running.is_some() {
             return;
         }
+        let path = file_dialog::or_numbered(&self.path, "refraction", "gif");
+        let checked = self
+            .spec()
+            .check()
+            .map_err(|e| not_exported(&e))
+            .and_then(|()| check_gif_path(&path))
+            .and_then(|()| file_dialog::target(&path, Kind::Gif));
+        match checked {
+            Ok(Target::New) => self.begin(path, state, overlay, ctx),
+            Ok(Target::Replaces) => self.replace = Some(path),
+            Err(why) => self.status = Some(Err(why)),
+        }
+    }
+
+    /// Draws the animation into `path` in a background thread.
+    fn begin(
+        &mut self,
+        path: PathBuf,
+        state: &ExplorerState,
+        overlay: &Overlay,
+        ctx: &egui::Context,
+    ) {
+        let spec = self.spec();
         let (done, cancel) = (
             Arc::new(AtomicUsize::new(0)),
             Arc::new(AtomicBool::new(false)),
@@ -217,6 +241,9 @@ impl AnimationExport {
                 }
             }
         }
+        if let Some(path) = file_dialog::answer_replace(ui, &mut self.replace, &mut self.status) {
+            self.begin(path, state, overlay, ui.ctx());
+        }
         status(ui, self.status.as_ref());
     }
 
@@ -249,10 +276,9 @@ impl AnimationExport {
 ///
 /// # Errors
 /// The message of a bad path, size or extension, or of a failed write.
-pub fn scene_picture(scene: &Scene, size: (u32, u32), path: &str) -> Result<String, String> {
-    let path = PathBuf::from(path.trim());
+pub fn scene_picture(scene: &Scene, size: (u32, u32), path: &Path) -> Result<String, String> {
     outcome(
-        refraction_render::export_scene(scene, size.0, size.1, &path),
-        &path,
+        refraction_render::export_scene(scene, size.0, size.1, path),
+        path,
     )
 }

@@ -1,6 +1,7 @@
 //! Files as a desktop user expects them: an open/save dialog, a question before a file is
-//! replaced, no state file written over an image (or the other way round), and exports
-//! numbered `diagram-001.png`, `diagram-002.png`, … when no name is given.
+//! replaced, no file written over one of another kind (a state over an image, a scene over a
+//! state, …), and exports numbered `diagram-001.png`, `diagram-002.png`, … when no name is
+//! given.
 //!
 //! The dialog is built of egui widgets (a folder field, the folder's listing filtered by
 //! extension, a file name field) rather than taken from a crate: `egui-file-dialog` 0.15, the
@@ -23,6 +24,10 @@ pub enum Kind {
     Png,
     /// An SVG image (`.svg`).
     Svg,
+    /// A scene (the scene format, TOML text, `.toml`).
+    Scene,
+    /// A GIF animation (`.gif`).
+    Gif,
 }
 
 impl Kind {
@@ -34,6 +39,8 @@ impl Kind {
             "json" => Some(Self::State),
             "png" => Some(Self::Png),
             "svg" => Some(Self::Svg),
+            "toml" => Some(Self::Scene),
+            "gif" => Some(Self::Gif),
             _ => None,
         }
     }
@@ -44,12 +51,27 @@ impl Kind {
         let text = bytes.trim_ascii_start();
         if bytes.starts_with(b"\x89PNG\r\n\x1a\n") {
             Some(Self::Png)
+        } else if bytes.starts_with(b"GIF87a") || bytes.starts_with(b"GIF89a") {
+            Some(Self::Gif)
         } else if text.starts_with(b"{") {
             Some(Self::State)
         } else if text.starts_with(b"<") {
             Some(Self::Svg)
+        } else if std::str::from_utf8(bytes).is_ok_and(looks_like_toml) {
+            Some(Self::Scene)
         } else {
             None
+        }
+    }
+
+    /// The extension a file of this kind is written with, dot included.
+    fn extension(self) -> &'static str {
+        match self {
+            Self::State => ".json",
+            Self::Png => ".png",
+            Self::Svg => ".svg",
+            Self::Scene => ".toml",
+            Self::Gif => ".gif",
         }
     }
 
@@ -60,8 +82,19 @@ impl Kind {
             Self::State => "state",
             Self::Png => "png",
             Self::Svg => "svg",
+            Self::Scene => "scene",
+            Self::Gif => "gif",
         }
     }
+}
+
+/// Whether `text` reads as TOML: its first line that is neither blank nor a comment opens a
+/// table (`[`) or sets a key (`=`); text of comments only does too.
+fn looks_like_toml(text: &str) -> bool {
+    text.lines()
+        .map(str::trim)
+        .find(|line| !line.is_empty() && !line.starts_with('#'))
+        .is_none_or(|line| line.starts_with('[') || line.contains('='))
 }
 
 /// Where a file is about to be written.
@@ -82,16 +115,11 @@ pub enum Target {
 pub fn target(path: &Path, kind: Kind) -> Result<Target, String> {
     let shown = path.display().to_string();
     if Kind::of_name(path) != Some(kind) {
-        let wanted = match kind {
-            Kind::State => ".json",
-            Kind::Png => ".png",
-            Kind::Svg => ".svg",
-        };
         return Err(t!(
             "files-wrong-extension",
             path = &shown,
             kind = kind.id(),
-            extension = wanted
+            extension = kind.extension()
         ));
     }
     if path.is_dir() {
@@ -112,6 +140,28 @@ pub fn target(path: &Path, kind: Kind) -> Result<Target, String> {
     }
 }
 
+/// [`target`] for a picture: a PNG or SVG image as the name of `path` says, a PNG when it
+/// says neither (so that the refusal names `.png`).
+///
+/// # Errors
+/// As [`target`].
+pub fn picture_target(path: &Path) -> Result<Target, String> {
+    let kind = Kind::of_name(path).filter(|kind| matches!(kind, Kind::Png | Kind::Svg));
+    target(path, kind.unwrap_or(Kind::Png))
+}
+
+/// The path typed, or when none is typed (or a folder is) the next free
+/// `stem-NNN.extension` in that folder ([`numbered`]).
+#[must_use]
+pub fn or_numbered(typed: &str, stem: &str, extension: &str) -> PathBuf {
+    let typed = PathBuf::from(typed.trim());
+    if typed.as_os_str().is_empty() || typed.is_dir() {
+        numbered(&typed, stem, extension)
+    } else {
+        typed
+    }
+}
+
 /// The first of `stem-001.ext`, `stem-002.ext`, … that does not exist in `folder` (after
 /// 999, `stem-1000.ext` and on).
 #[must_use]
@@ -125,7 +175,7 @@ pub fn numbered(folder: &Path, stem: &str, extension: &str) -> PathBuf {
 
 /// Asks whether to replace the file at `pending`, while there is one: `Some(true)` once the
 /// user says replace, `Some(false)` once they cancel, `None` while they have not answered.
-pub fn confirm_replace(ui: &Ui, pending: &Path) -> Option<bool> {
+fn confirm_replace(ui: &Ui, pending: &Path) -> Option<bool> {
     let mut answer = None;
     let modal = Modal::new(Id::unique("confirm_replace")).show(ui.ctx(), |ui| {
         ui.heading(t!("files-replace-question"));
@@ -144,6 +194,24 @@ pub fn confirm_replace(ui: &Ui, pending: &Path) -> Option<bool> {
         answer = Some(false);
     }
     answer
+}
+
+/// While `pending` holds a file, asks whether to replace it ([`confirm_replace`]); once the
+/// user answers, clears it and returns the file when they said replace, or leaves `status`
+/// saying the file was left as it was when they cancelled.
+pub fn answer_replace(
+    ui: &Ui,
+    pending: &mut Option<PathBuf>,
+    status: &mut Option<Result<String, String>>,
+) -> Option<PathBuf> {
+    let replace = confirm_replace(ui, pending.as_deref()?)?;
+    let path = pending.take()?;
+    if replace {
+        return Some(path);
+    }
+    let shown = path.display().to_string();
+    *status = Some(Ok(t!("files-left-as-it-was", path = shown)));
+    None
 }
 
 /// Whether the dialog picks a file to read or a name to write.
@@ -399,6 +467,57 @@ mod tests {
         std::fs::write(dir.join("state.png"), b"{}").unwrap();
         assert!(target(&dir.join("state.png"), Kind::Png).is_err());
         assert!(target(&dir, Kind::State).is_err());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn scenes_and_animations_are_told_from_states_and_images() {
+        assert_eq!(Kind::of_contents(b"GIF89a\x01"), Some(Kind::Gif));
+        let scene = b"# A lesson\n\ntitle = \"Slab\"\n[source]\n";
+        assert_eq!(Kind::of_contents(scene), Some(Kind::Scene));
+        assert_eq!(
+            Kind::of_contents(b"[media.glass]\nindex = 1.5\n"),
+            Some(Kind::Scene)
+        );
+        assert_eq!(Kind::of_contents(b"just some words"), None);
+        assert_eq!(Kind::of_contents(b"\xff\xfe = binary"), None);
+        let dir = scratch("scenes");
+        let state = dir.join("lesson.toml");
+        std::fs::write(&state, b"{\"w\":[0,-1,0]}").unwrap();
+        let refused = target(&state, Kind::Scene).unwrap_err();
+        assert!(
+            refused.contains("holds a saved state (JSON), not a scene (TOML)"),
+            "{refused}"
+        );
+        let scene_file = dir.join("slab.toml");
+        std::fs::write(&scene_file, scene).unwrap();
+        assert_eq!(target(&scene_file, Kind::Scene), Ok(Target::Replaces));
+        assert!(
+            target(&scene_file, Kind::Gif)
+                .unwrap_err()
+                .contains("ending in .gif")
+        );
+        // A picture is a PNG or an SVG: any other name is refused as not being a .png.
+        assert_eq!(picture_target(&dir.join("new.svg")), Ok(Target::New));
+        assert!(
+            picture_target(&scene_file)
+                .unwrap_err()
+                .contains("ending in .png")
+        );
+        // No name, or a folder: the next free number there.
+        assert_eq!(
+            or_numbered("  ", "scene", "svg"),
+            PathBuf::from("scene-001.svg")
+        );
+        let typed = dir.display().to_string();
+        assert_eq!(
+            or_numbered(&typed, "scene", "svg"),
+            dir.join("scene-001.svg")
+        );
+        assert_eq!(
+            or_numbered(" a.png ", "scene", "svg"),
+            PathBuf::from("a.png")
+        );
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use egui::{RichText, TextEdit, Ui};
 use refraction_i18n::t;
 
-use super::file_dialog::{Choice, FileDialog, Kind, Purpose, Target, confirm_replace, target};
+use super::file_dialog::{Choice, FileDialog, Kind, Purpose, Target, answer_replace, target};
 use super::typed::status;
 use crate::app::snippets;
 use crate::lines::state_file::{self, LoadError};
@@ -111,16 +111,8 @@ impl FilesPanel {
                 }
             }
         }
-        if let Some(path) = self.replace.clone()
-            && let Some(replace) = confirm_replace(ui, &path)
-        {
-            self.replace = None;
-            if replace {
-                self.write(state, &path);
-            } else {
-                let shown = path.display().to_string();
-                self.status = Some(Ok(t!("files-left-as-it-was", path = shown)));
-            }
+        if let Some(path) = answer_replace(ui, &mut self.replace, &mut self.status) {
+            self.write(state, &path);
         }
     }
 

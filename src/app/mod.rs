@@ -22,6 +22,7 @@ pub mod physics;
 pub mod presentation;
 mod readouts;
 mod retrace;
+mod scene_files;
 mod scenes;
 pub mod snippets;
 mod tools;

@@ -5,17 +5,16 @@
 use egui::emath::RectTransform;
 use egui::{
     CentralPanel, ComboBox, CursorIcon, Painter, Panel, Pos2, ProgressBar, Rect, Response,
-    RichText, Role, Sense, Slider, SliderClamping, TextEdit, Ui, WidgetInfo,
+    RichText, Role, Sense, Slider, SliderClamping, Ui, WidgetInfo,
 };
 use refraction_i18n::t;
-use std::path::PathBuf;
 use std::time::Duration;
 
 use glam::{DVec2, Vec2};
 
-use super::export;
 use super::paint::{color, hover_left_out, paint};
 use super::retrace::{Retracer, empty};
+use super::scene_files::SceneFiles;
 use super::typed::error_label;
 use refraction_diagram::layout::SMALLEST_TEXT;
 use refraction_diagram::numbers::number;
@@ -23,7 +22,6 @@ use refraction_diagram::palette::Palette;
 use refraction_diagram::scene_words::{self, medium_name};
 use refraction_diagram::shapes::{Align, Label};
 use refraction_diagram::{ExplorerState, Primitive, SceneLayout, ScenePicture};
-use refraction_render::atomic::write_atomically;
 use refraction_scene::{
     DEFAULT_SCENE, EditError, Hit, Scene, SceneInfo, Side, SourceKind, Stop, Trace, catalogue,
     traced_wavelength,
@@ -31,12 +29,6 @@ use refraction_scene::{
 
 /// The most rays the slider offers: enough to see a caustic, few enough to drag smoothly.
 const MAX_SLIDER_RAYS: usize = 1000;
-
-/// The scene file offered first.
-pub const DEFAULT_SCENE_PATH: &str = "scene.toml";
-
-/// The picture file offered first: SVG, so that a slide can edit the labels.
-pub const DEFAULT_PICTURE_PATH: &str = "scene.svg";
 
 /// The Scenes view's state: the scene as edited, its trace, and what the canvas remembers
 /// between frames.
@@ -57,12 +49,8 @@ pub struct ScenesView {
     error: Option<String>,
     /// Where the canvas was drawn in the last frame, with the layout it used.
     drawn: Option<(Rect, SceneLayout)>,
-    /// The scene file to save to or open.
-    path: String,
-    /// What the last save or open said.
-    file_status: Option<Result<String, String>>,
-    /// The picture file to export to (PNG or SVG by its extension).
-    picture_path: String,
+    /// The scene file, the picture export and their dialogs.
+    files: SceneFiles,
 }
 
 impl Default for ScenesView {
@@ -131,9 +119,7 @@ impl ScenesView {
             drag_layout: None,
             error: None,
             drawn: None,
-            path: DEFAULT_SCENE_PATH.to_owned(),
-            file_status: None,
-            picture_path: DEFAULT_PICTURE_PATH.to_owned(),
+            files: SceneFiles::default(),
         }
     }
 
@@ -173,33 +159,6 @@ impl ScenesView {
         self.error = None;
         self.drag_layout = None;
         self.retracer.retrace(&self.scene, &mut self.trace);
-    }
-
-    /// Writes the scene as edited to the scene file in the path field, atomically.
-    pub fn save(&mut self) {
-        let path = PathBuf::from(self.path.trim());
-        self.file_status = Some(
-            self.scene
-                .to_toml()
-                .map_err(|e| e.to_string())
-                .and_then(|text| {
-                    write_atomically(&path, text.as_bytes()).map_err(|e| e.to_string())
-                })
-                .map(|()| t!("scenes-saved", path = path.display().to_string())),
-        );
-    }
-
-    /// Opens the scene file in the path field (or a built-in scene by name); a file that cannot
-    /// be read or understood leaves the scene as it was and says why, with its line and column.
-    pub fn open_file(&mut self) {
-        let path = self.path.trim().to_owned();
-        self.file_status = Some(match Scene::load(&path) {
-            Ok(scene) => {
-                self.open(scene);
-                Ok(t!("scenes-opened", path = path))
-            }
-            Err(e) => Err(e.to_string()),
-        });
     }
 
     /// Puts back a scene from the undo history: the same scene edited differently is retraced
@@ -280,53 +239,15 @@ impl ScenesView {
                 self.open(self.original.clone());
             }
         });
-        ui.horizontal(|ui| {
-            let field = TextEdit::singleline(&mut self.path).desired_width(260.0);
-            ui.add(field).labelled_by(ui.label(t!("scenes-file")).id);
-            if ui.button(t!("scenes-open")).clicked() {
-                self.open_file();
-            }
-            if ui
-                .button(t!("scenes-save"))
-                .on_hover_text(t!("scenes-save-hover"))
-                .clicked()
-            {
-                self.save();
-            }
-            ui.menu_button(t!("controls-export"), |ui| self.export_picture(ui));
-            match &self.file_status {
-                Some(Ok(done)) => {
-                    ui.label(done);
-                }
-                Some(Err(why)) => {
-                    error_label(ui, why);
-                }
-                None => {}
-            }
-        });
+        if let Some(scene) = self.files.show(ui, &self.scene) {
+            self.open(scene);
+        }
         // One line each, whatever the language: a cut line shows its whole text on hover, and
         // the scene keeps the window's height.
         ui.add(egui::Label::new(scene_words::description(&self.scene)).truncate());
         ui.add(egui::Label::new(RichText::new(t!("scenes-hint")).weak()).truncate());
         if let Some(error) = &self.error {
             error_label(ui, error);
-        }
-    }
-
-    /// The picture export's menu: the file (PNG or SVG by its extension) and *Export*.
-    fn export_picture(&mut self, ui: &mut Ui) {
-        let field = TextEdit::singleline(&mut self.picture_path).desired_width(220.0);
-        ui.add(field)
-            .labelled_by(ui.label(t!("scenes-picture-file")).id);
-        let (width, height) = refraction_render::DEFAULT_SIZE;
-        let text = t!(
-            "scenes-export-size",
-            width = width.to_string(),
-            height = height.to_string()
-        );
-        if ui.button(text).clicked() {
-            let size = (width, height);
-            self.file_status = Some(export::scene_picture(&self.scene, size, &self.picture_path));
         }
     }
 

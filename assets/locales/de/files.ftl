@@ -7,17 +7,23 @@
 files-wrong-extension = { $path }: { $kind ->
         [state] Ein gespeicherter Zustand (JSON)
         [png] Ein PNG-Bild
+        [scene] Eine Szene (TOML)
+        [gif] Eine GIF-Animation
        *[svg] Ein SVG-Bild
     } wird als { $extension }-Datei geschrieben; bitte einen Namen mit der Endung { $extension } wählen
 files-is-a-folder = { $path } ist ein Ordner; bitte einen Dateinamen wählen
 files-holds-another-kind = { $path } enthält { $found ->
         [state] einen gespeicherten Zustand (JSON)
         [png] ein PNG-Bild
+        [scene] eine Szene (TOML)
+        [gif] eine GIF-Animation
         [svg] ein SVG-Bild
        *[other] etwas anderes
     }, { $kind ->
         [state] keinen gespeicherten Zustand (JSON)
         [png] kein PNG-Bild
+        [scene] keine Szene (TOML)
+        [gif] keine GIF-Animation
        *[svg] kein SVG-Bild
     }: Die Datei bleibt unverändert; bitte einen anderen Namen wählen
 

@@ -3,22 +3,28 @@
 # { $path } is a file's path as the system writes it; { $reason } is the reader's or writer's
 # own explanation, which may stay in English.
 
-## What a file holds ($kind and $found: state, png, svg; $found also: other)
+## What a file holds ($kind and $found: state, png, svg, scene, gif; $found also: other)
 
 files-wrong-extension = { $path }: { $kind ->
         [state] a saved state (JSON)
         [png] a PNG image
+        [scene] a scene (TOML)
+        [gif] a GIF animation
        *[svg] an SVG image
     } is written to a { $extension } file; choose a name ending in { $extension }
 files-is-a-folder = { $path } is a folder; choose a file name
 files-holds-another-kind = { $path } holds { $found ->
         [state] a saved state (JSON)
         [png] a PNG image
+        [scene] a scene (TOML)
+        [gif] a GIF animation
         [svg] an SVG image
        *[other] something else
     }, not { $kind ->
         [state] a saved state (JSON)
         [png] a PNG image
+        [scene] a scene (TOML)
+        [gif] a GIF animation
        *[svg] an SVG image
     }: it is left as it is; choose another name
 

@@ -7,17 +7,23 @@
 files-wrong-extension = { $path }: { $kind ->
         [state] un estado guardado (JSON)
         [png] una imagen PNG
+        [scene] una escena (TOML)
+        [gif] una animación GIF
        *[svg] una imagen SVG
     } se escribe en un archivo { $extension }; elija un nombre terminado en { $extension }
 files-is-a-folder = { $path } es una carpeta; elija un nombre de archivo
 files-holds-another-kind = { $path } contiene { $found ->
         [state] un estado guardado (JSON)
         [png] una imagen PNG
+        [scene] una escena (TOML)
+        [gif] una animación GIF
         [svg] una imagen SVG
        *[other] otra cosa
     }, no { $kind ->
         [state] un estado guardado (JSON)
         [png] una imagen PNG
+        [scene] una escena (TOML)
+        [gif] una animación GIF
        *[svg] una imagen SVG
     }: se deja como está; elija otro nombre
 

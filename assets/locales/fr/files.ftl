@@ -7,17 +7,23 @@
 files-wrong-extension = { $path } : { $kind ->
         [state] un état enregistré (JSON)
         [png] une image PNG
+        [scene] une scène (TOML)
+        [gif] une animation GIF
        *[svg] une image SVG
     } s’écrit dans un fichier { $extension } ; choisissez un nom se terminant par { $extension }
 files-is-a-folder = { $path } est un dossier ; choisissez un nom de fichier
 files-holds-another-kind = { $path } contient { $found ->
         [state] un état enregistré (JSON)
         [png] une image PNG
+        [scene] une scène (TOML)
+        [gif] une animation GIF
         [svg] une image SVG
        *[other] autre chose
     }, pas { $kind ->
         [state] un état enregistré (JSON)
         [png] une image PNG
+        [scene] une scène (TOML)
+        [gif] une animation GIF
        *[svg] une image SVG
     } : le fichier reste inchangé ; choisissez un autre nom
 

@@ -7,17 +7,23 @@
 files-wrong-extension = { $path }: { $kind ->
         [state] um estado salvo (JSON) é gravado
         [png] uma imagem PNG é gravada
+        [scene] uma cena (TOML) é gravada
+        [gif] uma animação GIF é gravada
        *[svg] uma imagem SVG é gravada
     } em um arquivo { $extension }; escolha um nome terminado em { $extension }
 files-is-a-folder = { $path } é uma pasta; escolha um nome de arquivo
 files-holds-another-kind = { $path } contém { $found ->
         [state] um estado salvo (JSON)
         [png] uma imagem PNG
+        [scene] uma cena (TOML)
+        [gif] uma animação GIF
         [svg] uma imagem SVG
        *[other] outra coisa
     }, não { $kind ->
         [state] um estado salvo (JSON)
         [png] uma imagem PNG
+        [scene] uma cena (TOML)
+        [gif] uma animação GIF
        *[svg] uma imagem SVG
     }: o arquivo fica como está; escolha outro nome
 

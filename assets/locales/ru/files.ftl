@@ -7,17 +7,23 @@
 files-wrong-extension = { $path }: { $kind ->
         [state] сохранённое состояние (JSON)
         [png] изображение PNG
+        [scene] сцена (TOML)
+        [gif] анимация GIF
        *[svg] изображение SVG
     } записывается в файл { $extension }; выберите имя с расширением { $extension }
 files-is-a-folder = { $path } — это папка; выберите имя файла
 files-holds-another-kind = { $path } содержит { $found ->
         [state] сохранённое состояние (JSON)
         [png] изображение PNG
+        [scene] сцену (TOML)
+        [gif] анимацию GIF
         [svg] изображение SVG
        *[other] что-то другое
     }, а не { $kind ->
         [state] сохранённое состояние (JSON)
         [png] изображение PNG
+        [scene] сцену (TOML)
+        [gif] анимацию GIF
        *[svg] изображение SVG
     }: файл оставлен без изменений; выберите другое имя
 

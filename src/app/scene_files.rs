@@ -1,0 +1,239 @@
+//! The Scenes view's files: the scene file typed or chosen in the file dialog, opened and
+//! saved (after a question before a scene file is replaced, never over a file of another
+//! kind), and the picture export (numbered `scene-001.svg`, … when no name is given).
+
+use std::path::{Path, PathBuf};
+
+use egui::{TextEdit, Ui};
+use refraction_i18n::t;
+
+use super::export;
+use super::file_dialog::{self, Choice, FileDialog, Kind, Purpose, Target, picture_target};
+use super::typed::status;
+use refraction_render::atomic::write_atomically;
+use refraction_scene::Scene;
+
+/// The scene file offered first.
+pub const DEFAULT_SCENE_PATH: &str = "scene.toml";
+
+/// The picture file offered first: SVG, so that a slide can edit the labels.
+pub const DEFAULT_PICTURE_PATH: &str = "scene.svg";
+
+/// The extensions the dialog lists for a scene file.
+const SCENE_FILES: &[&str] = &["toml"];
+
+/// The extensions the dialog lists for a picture.
+const PICTURE_FILES: &[&str] = &["png", "svg"];
+
+/// What a file chosen in the dialog, or a file about to be replaced, is for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Use {
+    /// The scene file to open.
+    OpenScene,
+    /// The scene file to save to.
+    SaveScene,
+    /// The picture to export to.
+    Picture,
+}
+
+/// The scene file and picture fields, the dialog and the replace question while they are up,
+/// and what the last action said.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneFiles {
+    /// The scene file to save to or open.
+    path: String,
+    /// The picture file to export to (PNG or SVG by its extension).
+    picture_path: String,
+    /// What the last save, open or export said.
+    status: Option<Result<String, String>>,
+    /// The file dialog, while it is up, and what its file is for.
+    dialog: Option<(Use, FileDialog)>,
+    /// A file the user is asked about replacing.
+    replace: Option<PathBuf>,
+    /// What would be written there.
+    replacing: Use,
+}
+
+impl Default for SceneFiles {
+    fn default() -> Self {
+        Self {
+            path: DEFAULT_SCENE_PATH.to_owned(),
+            picture_path: DEFAULT_PICTURE_PATH.to_owned(),
+            status: None,
+            dialog: None,
+            replace: None,
+            replacing: Use::SaveScene,
+        }
+    }
+}
+
+impl SceneFiles {
+    /// Shows the row: the scene file, *Open file*, *Save file*, the dialog's *Open…* and
+    /// *Save as…*, the picture export's menu and what the last action said; then the dialog or
+    /// the replace question, while one is up. Returns the scene opened, if one was.
+    pub fn show(&mut self, ui: &mut Ui, scene: &Scene) -> Option<Scene> {
+        let mut opened = None;
+        ui.horizontal(|ui| {
+            let field = TextEdit::singleline(&mut self.path).desired_width(260.0);
+            ui.add(field).labelled_by(ui.label(t!("scenes-file")).id);
+            if ui.button(t!("scenes-open")).clicked() {
+                opened = self.open_typed();
+            }
+            if ui
+                .button(t!("scenes-save"))
+                .on_hover_text(t!("scenes-save-hover"))
+                .clicked()
+            {
+                self.save(scene);
+            }
+            let open = ui
+                .button(t!("files-open-dialog"))
+                .on_hover_text(t!("scenes-open-dialog-hover"));
+            if open.clicked() {
+                self.ask(Use::OpenScene);
+            }
+            let save_as = ui
+                .button(t!("files-save-as"))
+                .on_hover_text(t!("files-save-as-hover"));
+            if save_as.clicked() {
+                self.ask(Use::SaveScene);
+            }
+            ui.menu_button(t!("controls-export"), |ui| self.export_menu(ui, scene));
+            status(ui, self.status.as_ref());
+        });
+        opened.or_else(|| self.dialogs(ui, scene))
+    }
+
+    /// Puts up the file dialog for `usage`, starting from the file in its field.
+    fn ask(&mut self, usage: Use) {
+        let (purpose, extensions, start) = match usage {
+            Use::OpenScene => (Purpose::Open, SCENE_FILES, &self.path),
+            Use::SaveScene => (Purpose::Save, SCENE_FILES, &self.path),
+            Use::Picture => (Purpose::Save, PICTURE_FILES, &self.picture_path),
+        };
+        self.dialog = Some((usage, FileDialog::new(purpose, extensions, start)));
+    }
+
+    /// Opens the scene file in the path field (or a built-in scene by name); a file that
+    /// cannot be read or understood opens nothing and says why, with its line and column.
+    fn open_typed(&mut self) -> Option<Scene> {
+        let path = self.path.trim().to_owned();
+        match Scene::load(&path) {
+            Ok(scene) => {
+                self.status = Some(Ok(t!("scenes-opened", path = path)));
+                Some(scene)
+            }
+            Err(e) => {
+                self.status = Some(Err(e.to_string()));
+                None
+            }
+        }
+    }
+
+    /// Saves `scene` to the file in the path field: at once to a new file, after a question
+    /// over an existing scene file, never over a file of another kind or to a name that is
+    /// not `.toml`; with no name typed, asks for one in the dialog.
+    fn save(&mut self, scene: &Scene) {
+        if self.path.trim().is_empty() {
+            self.ask(Use::SaveScene);
+            return;
+        }
+        let path = PathBuf::from(self.path.trim());
+        match file_dialog::target(&path, Kind::Scene) {
+            Ok(Target::New) => self.write(Use::SaveScene, scene, &path),
+            Ok(Target::Replaces) => self.ask_to_replace(Use::SaveScene, path),
+            Err(e) => self.status = Some(Err(e)),
+        }
+    }
+
+    /// The picture export's menu: the file (PNG or SVG by its extension), *Browse…* and
+    /// *Export*.
+    fn export_menu(&mut self, ui: &mut Ui, scene: &Scene) {
+        ui.horizontal(|ui| {
+            let field = TextEdit::singleline(&mut self.picture_path)
+                .hint_text(t!("scenes-picture-hint"))
+                .desired_width(220.0);
+            ui.add(field)
+                .labelled_by(ui.label(t!("scenes-picture-file")).id);
+            if ui.button(t!("controls-browse")).clicked() {
+                self.ask(Use::Picture);
+                ui.close();
+            }
+        });
+        let (width, height) = refraction_render::DEFAULT_SIZE;
+        let text = t!(
+            "scenes-export-size",
+            width = width.to_string(),
+            height = height.to_string()
+        );
+        if ui.button(text).clicked() {
+            let path = file_dialog::or_numbered(&self.picture_path, "scene", "svg");
+            self.export(scene, path);
+        }
+    }
+
+    /// Exports the picture to `path` at once when it is new, after a question when it holds
+    /// an image of its kind, never over a file of another kind.
+    fn export(&mut self, scene: &Scene, path: PathBuf) {
+        match picture_target(&path) {
+            Ok(Target::New) => self.write(Use::Picture, scene, &path),
+            Ok(Target::Replaces) => self.ask_to_replace(Use::Picture, path),
+            Err(e) => self.status = Some(Err(e)),
+        }
+    }
+
+    /// Asks whether to replace `path` with what `usage` writes.
+    fn ask_to_replace(&mut self, usage: Use, path: PathBuf) {
+        self.replacing = usage;
+        self.replace = Some(path);
+    }
+
+    /// Writes `scene` at `path` as `usage` says (its scene file, atomically, or its picture);
+    /// says what happened.
+    fn write(&mut self, usage: Use, scene: &Scene, path: &Path) {
+        let shown = path.display().to_string();
+        self.status = Some(match usage {
+            Use::Picture => export::scene_picture(scene, refraction_render::DEFAULT_SIZE, path),
+            Use::OpenScene | Use::SaveScene => scene
+                .to_toml()
+                .map_err(|e| e.to_string())
+                .and_then(|text| write_atomically(path, text.as_bytes()).map_err(|e| e.to_string()))
+                .map(|()| t!("scenes-saved", path = shown)),
+        });
+    }
+
+    /// The dialog and the replace question, while either is up; returns the scene opened
+    /// from the dialog, if one was.
+    fn dialogs(&mut self, ui: &Ui, scene: &Scene) -> Option<Scene> {
+        let mut opened = None;
+        if let Some((usage, dialog)) = &mut self.dialog {
+            let usage = *usage;
+            match dialog.show(ui) {
+                Choice::Pending => {}
+                Choice::Cancelled => self.dialog = None,
+                Choice::Chosen(path) => {
+                    self.dialog = None;
+                    let shown = path.display().to_string();
+                    match usage {
+                        Use::OpenScene => {
+                            self.path = shown;
+                            opened = self.open_typed();
+                        }
+                        Use::SaveScene => {
+                            self.path = shown;
+                            self.save(scene);
+                        }
+                        Use::Picture => {
+                            self.picture_path = shown;
+                            self.export(scene, path);
+                        }
+                    }
+                }
+            }
+        }
+        if let Some(path) = file_dialog::answer_replace(ui, &mut self.replace, &mut self.status) {
+            self.write(self.replacing, scene, &path);
+        }
+        opened
+    }
+}
