@@ -20,7 +20,7 @@ mod common;
 use common::harness_sized;
 use egui::{Rect as EguiRect, Role, Shape};
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT, Queryable};
 use glam::{DVec3, Vec2 as GVec2};
 use refraction_diagram::font::Typeface;
 use refraction_diagram::geometry::Rect;
@@ -187,6 +187,26 @@ fn canvas_rect(h: &Harness<'_, Explorer>) -> EguiRect {
 fn share(h: &Harness<'_, Explorer>) -> f32 {
     let window = h.ctx.content_rect();
     canvas_rect(h).area() / window.area()
+}
+
+/// Every control (button, text field, menu, switch) within the window's width: a row that
+/// runs past the window's edge cuts its last controls off.
+fn check_controls_inside<S>(h: &Harness<'_, S>, what: &str, problems: &mut Vec<String>) {
+    let window = h.ctx.content_rect();
+    for role in [
+        Role::Button,
+        Role::TextInput,
+        Role::ComboBox,
+        Role::CheckBox,
+    ] {
+        for node in h.query_all_by_role(role) {
+            let r = node.rect();
+            if r.max.x > window.max.x + 0.5 || r.min.x < window.min.x - 0.5 {
+                let name = node.accesskit_node().label().unwrap_or_default();
+                problems.push(format!("{what}: “{name}” is cut off at the window's edge"));
+            }
+        }
+    }
 }
 
 /// The box of a label's text on its canvas.
@@ -394,6 +414,7 @@ fn measure(
             m.smallest_text_px
         ));
     }
+    check_controls_inside(h, what, &mut m.problems);
     if scene {
         audit_scene(h, what, &mut m.problems);
     } else {
@@ -613,4 +634,24 @@ fn the_audit_finds_what_it_looks_for() {
     ] {
         assert!(all.contains(expected), "{expected} not found in:\n{all}");
     }
+}
+
+#[test]
+fn the_audit_finds_a_row_of_controls_cut_off_at_the_window_edge() {
+    let mut h = Harness::builder()
+        .with_size(egui::Vec2::new(190.0, 100.0))
+        .build_ui(|ui| {
+            ui.horizontal(|ui| {
+                for name in ["Open file", "Save file", "Export picture"] {
+                    let _ = ui.button(name);
+                }
+            });
+        });
+    h.run();
+    let mut problems = Vec::new();
+    check_controls_inside(&h, "row", &mut problems);
+    assert_eq!(
+        problems,
+        ["row: “Export picture” is cut off at the window's edge"]
+    );
 }

@@ -327,3 +327,57 @@ fn a_runaway_droplet_stops_at_what_the_screen_can_show_and_says_so() {
             .is_some()
     );
 }
+
+#[test]
+fn a_click_in_or_beside_the_file_dialog_never_reaches_the_scene_under_it() {
+    for present in [false, true] {
+        let mut h = droplet();
+        if present {
+            click(&mut h, "🖵 Presentation");
+        }
+        let scenes = h.state().scenes();
+        let hits: Vec<Pos2> = scenes
+            .trace()
+            .hits
+            .iter()
+            .map(|hit| scenes.to_screen(hit.point).unwrap())
+            .collect();
+        click(&mut h, "📂 Open…");
+        // The dialog's Cancel over a hit point, the dim backdrop over the button that opened
+        // the dialog, and the backdrop over a hit point beside the dialog (where the window
+        // leaves room for one): each closes the dialog and does nothing else.
+        let cancel = h.get_by_label("Cancel").rect();
+        let heading = h.get_by_label("Open a file").rect();
+        let opener = h.get_all_by_label("📂 Open…").next().unwrap().rect();
+        let beside = hits
+            .iter()
+            .copied()
+            .find(|p| p.y > cancel.max.y + 30.0 || p.y < heading.min.y - 30.0);
+        if !present {
+            assert!(
+                hits.iter().any(|p| cancel.contains(*p)),
+                "a hit lies under Cancel"
+            );
+            assert!(beside.is_some(), "a hit lies beside the dialog");
+        }
+        // (In presentation the larger dialog covers its button.)
+        let opener = Some(opener.center()).filter(|p| p.y < heading.min.y - 20.0);
+        assert_eq!(opener.is_some(), !present);
+        for at in [Some(cancel.center()), opener, beside]
+            .into_iter()
+            .flatten()
+        {
+            if h.query_by_label("File name").is_none() {
+                click(&mut h, "📂 Open…");
+            }
+            // Pressed and released within one frame, as a quick click often is.
+            h.hover_at(at);
+            h.run();
+            h.drag_at(at);
+            h.drop_at(at);
+            h.run();
+            assert_eq!(h.state().view(), View::Scenes, "a click at {at:?}");
+            assert!(h.query_by_label("File name").is_none(), "the dialog closed");
+        }
+    }
+}

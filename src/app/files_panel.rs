@@ -9,6 +9,7 @@ use refraction_i18n::t;
 
 use super::file_dialog::{Choice, FileDialog, Kind, Purpose, Target, answer_replace, target};
 use super::typed::status;
+use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 use crate::app::snippets;
 use crate::lines::state_file::{self, LoadError};
 use refraction_diagram::ExplorerState;
@@ -162,18 +163,16 @@ impl FilesPanel {
             {
                 self.open(state);
             }
-            if ui
-                .button(t!("files-open-dialog"))
-                .on_hover_text(t!("files-open-dialog-hover"))
-                .clicked()
-            {
+            let open = (
+                OPEN_ICON,
+                t!("files-open-dialog"),
+                t!("files-open-dialog-hover"),
+            );
+            if icon_button(ui, open, true, false) {
                 self.dialog = Some(FileDialog::new(Purpose::Open, &["json"], &self.path));
             }
-            if ui
-                .button(t!("files-save-as"))
-                .on_hover_text(t!("files-save-as-hover"))
-                .clicked()
-            {
+            let save_as = (SAVE_AS_ICON, t!("files-save-as"), t!("files-save-as-hover"));
+            if icon_button(ui, save_as, true, false) {
                 self.dialog = Some(FileDialog::new(Purpose::Save, &["json"], &self.path));
             }
         });

@@ -5,7 +5,9 @@
 //! changes. A change is recorded once the user lets go (no pointer button held, no animation
 //! running), so a drag or the μ → 1 animation is one step, not one per frame.
 
-use egui::{Button, Key, KeyboardShortcut, Modifiers, Role, Ui, WidgetInfo};
+use egui::{Key, KeyboardShortcut, Modifiers, Ui};
+
+use super::widgets::icon_button;
 
 use refraction_diagram::ExplorerState;
 use refraction_diagram::numbers::significant;
@@ -235,33 +237,14 @@ pub fn controls<T: Clone + PartialEq>(
 ) -> Option<Travel> {
     let mut asked = shortcut(ui);
     let undo = ("⟲", t!("files-undo"), t!("files-undo-hover"));
-    if travel_button(ui, undo, history.undo_steps() > 0, compact) {
+    if icon_button(ui, undo, history.undo_steps() > 0, compact) {
         asked = Some(Travel::Undo);
     }
     let redo = ("⟳", t!("files-redo"), t!("files-redo-hover"));
-    if travel_button(ui, redo, history.redo_steps() > 0, compact) {
+    if icon_button(ui, redo, history.redo_steps() > 0, compact) {
         asked = Some(Travel::Redo);
     }
     asked
-}
-
-/// One of Undo and Redo (its arrow, its name and its hover text): whether it was clicked.
-fn travel_button(
-    ui: &mut Ui,
-    (arrow, name, hover): (&str, String, String),
-    enabled: bool,
-    compact: bool,
-) -> bool {
-    let full = format!("{arrow} {name}");
-    let shown = if compact { arrow } else { full.as_str() };
-    let button = ui.add_enabled(enabled, Button::new(shown));
-    button.widget_info(|| WidgetInfo::labeled(Role::Button, enabled, &full));
-    let hover = if compact {
-        format!("{name}: {hover}")
-    } else {
-        hover
-    };
-    button.on_hover_text(hover).clicked()
 }
 
 #[cfg(test)]

@@ -28,6 +28,7 @@ pub mod snippets;
 mod tools;
 mod typed;
 pub mod walkthrough;
+mod widgets;
 
 pub use fonts::install as install_fonts;
 

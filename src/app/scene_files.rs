@@ -4,12 +4,13 @@
 
 use std::path::{Path, PathBuf};
 
-use egui::{TextEdit, Ui};
+use egui::{Label, RichText, Role, TextEdit, Ui, WidgetInfo};
 use refraction_i18n::t;
 
 use super::export;
 use super::file_dialog::{self, Choice, FileDialog, Kind, Purpose, Target, picture_target};
-use super::typed::status;
+use super::paint::verdict_colour;
+use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 use refraction_render::atomic::write_atomically;
 use refraction_scene::Scene;
 
@@ -18,6 +19,13 @@ pub const DEFAULT_SCENE_PATH: &str = "scene.toml";
 
 /// The picture file offered first: SVG, so that a slide can edit the labels.
 pub const DEFAULT_PICTURE_PATH: &str = "scene.svg";
+
+/// The icon the picture export's menu shows in a compact row.
+const PICTURE_ICON: &str = "🖼";
+
+/// Below this width (in points) the row shows the dialog's buttons and the export menu as
+/// icons.
+const COMPACT_BELOW: f32 = 1000.0;
 
 /// The extensions the dialog lists for a scene file.
 const SCENE_FILES: &[&str] = &["toml"];
@@ -73,8 +81,12 @@ impl SceneFiles {
     /// the replace question, while one is up. Returns the scene opened, if one was.
     pub fn show(&mut self, ui: &mut Ui, scene: &Scene) -> Option<Scene> {
         let mut opened = None;
-        ui.horizontal(|ui| {
-            let field = TextEdit::singleline(&mut self.path).desired_width(260.0);
+        // On a projector's narrow window the dialog's buttons and the export menu show only
+        // their icons, so that the row keeps to one line; it wraps rather than cut anything off.
+        let compact = ui.available_width() < COMPACT_BELOW;
+        ui.horizontal_wrapped(|ui| {
+            let width = if compact { 170.0 } else { 260.0 };
+            let field = TextEdit::singleline(&mut self.path).desired_width(width);
             ui.add(field).labelled_by(ui.label(t!("scenes-file")).id);
             if ui.button(t!("scenes-open")).clicked() {
                 opened = self.open_typed();
@@ -86,22 +98,39 @@ impl SceneFiles {
             {
                 self.save(scene);
             }
-            let open = ui
-                .button(t!("files-open-dialog"))
-                .on_hover_text(t!("scenes-open-dialog-hover"));
-            if open.clicked() {
+            let open = (
+                OPEN_ICON,
+                t!("files-open-dialog"),
+                t!("scenes-open-dialog-hover"),
+            );
+            if icon_button(ui, open, true, compact) {
                 self.ask(Use::OpenScene);
             }
-            let save_as = ui
-                .button(t!("files-save-as"))
-                .on_hover_text(t!("files-save-as-hover"));
-            if save_as.clicked() {
+            let save_as = (SAVE_AS_ICON, t!("files-save-as"), t!("files-save-as-hover"));
+            if icon_button(ui, save_as, true, compact) {
                 self.ask(Use::SaveScene);
             }
-            ui.menu_button(t!("controls-export"), |ui| self.export_menu(ui, scene));
-            status(ui, self.status.as_ref());
+            let name = t!("controls-export");
+            let shown = if compact { PICTURE_ICON } else { name.as_str() };
+            let menu = ui.menu_button(shown, |ui| self.export_menu(ui, scene));
+            menu.response
+                .widget_info(|| WidgetInfo::labeled(Role::Button, true, &name));
+            if compact {
+                menu.response.on_hover_text(name);
+            }
+            self.last_outcome(ui);
         });
         opened.or_else(|| self.dialogs(ui, scene))
+    }
+
+    /// What the last save, open or export said, cut to the row's end (all of it on hover).
+    fn last_outcome(&self, ui: &mut Ui) {
+        let text = match &self.status {
+            Some(Ok(done)) => RichText::new(done),
+            Some(Err(why)) => RichText::new(format!("⚠ {why}")).color(verdict_colour(ui, false)),
+            None => return,
+        };
+        ui.add(Label::new(text).truncate());
     }
 
     /// Puts up the file dialog for `usage`, starting from the file in its field.

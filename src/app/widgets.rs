@@ -1,0 +1,30 @@
+//! Small widgets the window's strips share.
+
+use egui::{Button, Role, Ui, WidgetInfo};
+
+/// The icon of a button that opens a file chosen in the file dialog.
+pub const OPEN_ICON: &str = "📂";
+
+/// The icon of a button that saves to a file chosen in the file dialog.
+pub const SAVE_AS_ICON: &str = "💾";
+
+/// A button of an icon and a name that shows only its icon when `compact` (a strip that must
+/// keep to one row on a projector): its name stays its accessible name and leads its hover
+/// text. Returns whether it was clicked.
+pub fn icon_button(
+    ui: &mut Ui,
+    (icon, name, hover): (&str, String, String),
+    enabled: bool,
+    compact: bool,
+) -> bool {
+    let full = format!("{icon} {name}");
+    let shown = if compact { icon } else { full.as_str() };
+    let button = ui.add_enabled(enabled, Button::new(shown));
+    button.widget_info(|| WidgetInfo::labeled(Role::Button, enabled, &full));
+    let hover = if compact {
+        format!("{name}: {hover}")
+    } else {
+        hover
+    };
+    button.on_hover_text(hover).clicked()
+}
