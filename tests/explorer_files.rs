@@ -32,7 +32,7 @@ fn save_then_open_is_bit_exact_and_corrupt_or_foreign_files_change_nothing() {
     assert!(h.query_by_label_contains("saved").is_some());
     click(&mut h, "Flip N");
     assert_ne!(h.state().state(), &start);
-    click(&mut h, "📂 Open");
+    click(&mut h, "🗁 Open");
     let opened = h.state().state().clone();
     assert_eq!(opened, start);
     let bits = |s: &ExplorerState| {
@@ -57,12 +57,12 @@ fn save_then_open_is_bit_exact_and_corrupt_or_foreign_files_change_nothing() {
         ),
     ] {
         std::fs::write(&path, contents).unwrap();
-        click(&mut h, "📂 Open");
+        click(&mut h, "🗁 Open");
         assert!(h.query_by_label_contains(message).is_some(), "{contents}");
         assert_eq!(bits(h.state().state()), bits(&start), "{contents}");
     }
     std::fs::remove_file(&path).unwrap();
-    click(&mut h, "📂 Open");
+    click(&mut h, "🗁 Open");
     assert!(
         h.query_by_label_contains("cannot read state file")
             .is_some()
@@ -135,7 +135,7 @@ fn files_ask_before_replacing_refuse_the_wrong_kind_and_open_through_the_dialog(
     // The open dialog lists the folder's state files (not the PNG) and opens the one chosen.
     click(&mut h, "Flip N");
     let flipped = h.state().state().clone();
-    click(&mut h, "📂 Open…");
+    click(&mut h, "🗁 Open…");
     assert!(h.query_by_label("picture.png").is_none());
     click(&mut h, "lesson.json");
     click(&mut h, "Open file");

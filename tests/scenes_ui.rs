@@ -204,7 +204,7 @@ fn the_open_dialog_lists_scene_files_and_opens_the_one_chosen() {
         "Scene file",
         folder.join("x.toml").to_str().unwrap(),
     );
-    click(&mut h, "📂 Open…");
+    click(&mut h, "🗁 Open…");
     assert!(
         h.query_by_label("notes.png").is_none(),
         "only scene files are listed"
@@ -342,13 +342,13 @@ fn a_click_in_or_beside_the_file_dialog_never_reaches_the_scene_under_it() {
             .iter()
             .map(|hit| scenes.to_screen(hit.point).unwrap())
             .collect();
-        click(&mut h, "📂 Open…");
+        click(&mut h, "🗁 Open…");
         // The dialog's Cancel over a hit point, the dim backdrop over the button that opened
         // the dialog, and the backdrop over a hit point beside the dialog (where the window
         // leaves room for one): each closes the dialog and does nothing else.
         let cancel = h.get_by_label("Cancel").rect();
         let heading = h.get_by_label("Open a file").rect();
-        let opener = h.get_all_by_label("📂 Open…").next().unwrap().rect();
+        let opener = h.get_all_by_label("🗁 Open…").next().unwrap().rect();
         let beside = hits
             .iter()
             .copied()
@@ -368,7 +368,7 @@ fn a_click_in_or_beside_the_file_dialog_never_reaches_the_scene_under_it() {
             .flatten()
         {
             if h.query_by_label("File name").is_none() {
-                click(&mut h, "📂 Open…");
+                click(&mut h, "🗁 Open…");
             }
             // Pressed and released within one frame, as a quick click often is.
             h.hover_at(at);

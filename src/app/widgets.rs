@@ -3,7 +3,7 @@
 use egui::{Button, Role, Ui, WidgetInfo};
 
 /// The icon of a button that opens a file chosen in the file dialog.
-pub const OPEN_ICON: &str = "📂";
+pub const OPEN_ICON: &str = "🗁";
 
 /// The icon of a button that saves to a file chosen in the file dialog.
 pub const SAVE_AS_ICON: &str = "💾";

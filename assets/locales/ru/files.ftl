@@ -53,7 +53,7 @@ files-state-file = Файл состояния
 # «соглашение» — выбор знаков (convention): проверить
 files-save = 💾 Сохранить
 files-save-hover = Записать W, N, μ и соглашение как строку JSON для solve
-files-open = 📂 Открыть
+files-open = 🗁 Открыть
 files-open-hover = Прочитать файл JSON для solve; неверный файл ничего не меняет
 files-open-dialog = Открыть…
 files-open-dialog-hover = Выбрать файл состояния для открытия
