@@ -56,10 +56,9 @@ pub struct SceneFiles {
     status: Option<Result<String, String>>,
     /// The file dialog, while it is up, and what its file is for.
     dialog: Option<(Use, FileDialog)>,
-    /// A file the user is asked about replacing.
+    /// A file the user is asked about replacing (its name says whether with the scene or
+    /// the picture).
     replace: Option<PathBuf>,
-    /// What would be written there.
-    replacing: Use,
 }
 
 impl Default for SceneFiles {
@@ -70,7 +69,6 @@ impl Default for SceneFiles {
             status: None,
             dialog: None,
             replace: None,
-            replacing: Use::SaveScene,
         }
     }
 }
@@ -169,8 +167,8 @@ impl SceneFiles {
         }
         let path = PathBuf::from(self.path.trim());
         match file_dialog::target(&path, Kind::Scene) {
-            Ok(Target::New) => self.write(Use::SaveScene, scene, &path),
-            Ok(Target::Replaces) => self.ask_to_replace(Use::SaveScene, path),
+            Ok(Target::New) => self.write(scene, &path),
+            Ok(Target::Replaces) => self.replace = Some(path),
             Err(e) => self.status = Some(Err(e)),
         }
     }
@@ -205,25 +203,21 @@ impl SceneFiles {
     /// an image of its kind, never over a file of another kind.
     fn export(&mut self, scene: &Scene, path: PathBuf) {
         match picture_target(&path) {
-            Ok(Target::New) => self.write(Use::Picture, scene, &path),
-            Ok(Target::Replaces) => self.ask_to_replace(Use::Picture, path),
+            Ok(Target::New) => self.write(scene, &path),
+            Ok(Target::Replaces) => self.replace = Some(path),
             Err(e) => self.status = Some(Err(e)),
         }
     }
 
-    /// Asks whether to replace `path` with what `usage` writes.
-    fn ask_to_replace(&mut self, usage: Use, path: PathBuf) {
-        self.replacing = usage;
-        self.replace = Some(path);
-    }
-
-    /// Writes `scene` at `path` as `usage` says (its scene file, atomically, or its picture);
-    /// says what happened.
-    fn write(&mut self, usage: Use, scene: &Scene, path: &Path) {
+    /// Writes `scene` at `path` (checked by [`file_dialog::target`]) as its name says: the
+    /// scene file (`.toml`, atomically) or its picture (PNG or SVG); says what happened.
+    fn write(&mut self, scene: &Scene, path: &Path) {
         let shown = path.display().to_string();
-        self.status = Some(match usage {
-            Use::Picture => export::scene_picture(scene, refraction_render::DEFAULT_SIZE, path),
-            Use::OpenScene | Use::SaveScene => scene
+        self.status = Some(match Kind::of_name(path) {
+            Some(Kind::Png | Kind::Svg) => {
+                export::scene_picture(scene, refraction_render::DEFAULT_SIZE, path)
+            }
+            _ => scene
                 .to_toml()
                 .map_err(|e| e.to_string())
                 .and_then(|text| write_atomically(path, text.as_bytes()).map_err(|e| e.to_string()))
@@ -261,7 +255,7 @@ impl SceneFiles {
             }
         }
         if let Some(path) = file_dialog::answer_replace(ui, &mut self.replace, &mut self.status) {
-            self.write(self.replacing, scene, &path);
+            self.write(scene, &path);
         }
         opened
     }
