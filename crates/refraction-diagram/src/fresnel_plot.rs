@@ -12,7 +12,7 @@ use super::palette::Palette;
 use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke, lower_all};
 use refraction_i18n::t;
 use refraction_kernel::Fresnel;
-use refraction_kernel::stable::refract_facing;
+use refraction_kernel::refract_facing;
 
 /// Where the formula comes from, in words (in the current language), shown under the plot.
 #[must_use]
@@ -63,7 +63,7 @@ fn sample_angles(critical_deg: Option<f64>) -> Vec<f64> {
 #[must_use]
 pub fn fresnel_at(mu: f64, degrees: f64) -> Fresnel<f64> {
     let (sin, cos) = degrees.to_radians().sin_cos();
-    let facing = refract_facing::<f64>(DVec3::new(sin, -cos, 0.0), DVec3::Y, mu);
+    let facing = refract_facing(DVec3::new(sin, -cos, 0.0), DVec3::Y, mu);
     facing.transmitted.map_or(Fresnel::TOTAL_REFLECTION, |t| {
         Fresnel::new(mu, facing.cos_i, t.cos_t)
     })

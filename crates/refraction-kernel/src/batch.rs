@@ -2,8 +2,8 @@
 //! vectorises it, with AVX-512 and AVX2 builds of the same loop chosen at run time on x86-64
 //! CPUs that have them.
 //!
-//! Every lane performs exactly the scalar kernel's operations (the shared pieces of
-//! [`super::stable`]), so each T is bit for bit the one [`super::stable::transmit`] returns. A
+//! Every lane performs exactly the scalar kernel's operations (the shared pieces of the stable
+//! kernel), so each T is bit for bit the one [`crate::transmit`] returns. A
 //! lane in total internal reflection computes garbage that is then *selected* away (never
 //! multiplied by a mask), so no NaN reaches its output or its neighbours.
 //!
@@ -56,6 +56,14 @@ pub struct RayBatch<S: Real> {
 
 impl<S: Real> RayBatch<S> {
     /// An empty batch.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::batch::RayBatch;
+    /// let rays = RayBatch::<f64>::new();
+    /// assert!(rays.is_empty() && rays.blocks().is_empty());
+    /// ```
     #[must_use]
     pub fn new() -> Self {
         Self {
@@ -64,8 +72,18 @@ impl<S: Real> RayBatch<S> {
         }
     }
 
-    /// Adds a ray: unit travel direction `d`, unit normal `n`, index ratio `mu` (as accepted by
-    /// [`super::stable::refract_facing`]).
+    /// Adds a ray: unit travel direction `d`, unit normal `n` (either side), index ratio `mu`
+    /// (as accepted by [`crate::transmit`]; not checked).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use refraction_kernel::batch::RayBatch;
+    /// let mut rays = RayBatch::<f32>::new();
+    /// rays.push(Vec3::new(0.6, -0.8, 0.0), Vec3::Y, 1.0 / 1.5);
+    /// assert_eq!(rays.get(0), (Vec3::new(0.6, -0.8, 0.0), Vec3::Y, 1.0 / 1.5));
+    /// ```
     pub fn push(&mut self, d: S::Vec3, n: S::Vec3, mu: S) {
         let lane = self.len % LANES;
         if lane == 0 {
@@ -83,12 +101,35 @@ impl<S: Real> RayBatch<S> {
     }
 
     /// The number of rays.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use refraction_kernel::batch::{LANES, RayBatch};
+    /// let mut rays = RayBatch::<f64>::new();
+    /// for _ in 0..LANES + 1 {
+    ///     rays.push(DVec3::NEG_Y, DVec3::Y, 1.5);
+    /// }
+    /// assert_eq!((rays.len(), rays.blocks().len()), (LANES + 1, 2));
+    /// ```
     #[must_use]
     pub fn len(&self) -> usize {
         self.len
     }
 
     /// Whether the batch holds no ray.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use refraction_kernel::batch::RayBatch;
+    /// let mut rays = RayBatch::<f64>::new();
+    /// assert!(rays.is_empty());
+    /// rays.push(DVec3::NEG_Y, DVec3::Y, 1.5);
+    /// assert!(!rays.is_empty());
+    /// ```
     #[must_use]
     pub fn is_empty(&self) -> bool {
         self.len == 0
@@ -96,6 +137,18 @@ impl<S: Real> RayBatch<S> {
 
     /// The blocks: ray `i` is lane `i % LANES` of block `i / LANES`. The last block's lanes
     /// from `len() % LANES` on (if that is not 0) are padding.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use refraction_kernel::batch::RayBatch;
+    /// let mut rays = RayBatch::<f32>::new();
+    /// rays.push(Vec3::new(0.6, -0.8, 0.0), Vec3::Y, 1.5);
+    /// let block = &rays.blocks()[0];
+    /// assert_eq!((block.d[0][0], block.d[1][0], block.mu[0]), (0.6, -0.8, 1.5));
+    /// assert_eq!(block.mu[1], 1.0); // padding: a ray that goes straight through
+    /// ```
     #[must_use]
     pub fn blocks(&self) -> &[RayBlock<S>] {
         &self.blocks
@@ -105,6 +158,17 @@ impl<S: Real> RayBatch<S> {
     ///
     /// # Panics
     /// If `i >= len()`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use refraction_kernel::batch::RayBatch;
+    /// let mut rays = RayBatch::<f64>::new();
+    /// rays.push(DVec3::NEG_Y, DVec3::Y, 1.5);
+    /// rays.push(DVec3::NEG_X, DVec3::X, 2.0);
+    /// assert_eq!(rays.get(1), (DVec3::NEG_X, DVec3::X, 2.0));
+    /// ```
     #[must_use]
     pub fn get(&self, i: usize) -> (S::Vec3, S::Vec3, S) {
         assert!(i < self.len, "ray {i} of a batch of {}", self.len);
@@ -139,6 +203,17 @@ pub struct Transmissions<S: Real> {
 
 impl<S: Real> Transmissions<S> {
     /// Room for the results of `rays`, every ray marked as not yet computed (zero, not TIR).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use refraction_kernel::batch::{RayBatch, Transmissions};
+    /// let mut rays = RayBatch::<f32>::new();
+    /// rays.push(Vec3::NEG_Y, Vec3::Y, 1.5);
+    /// let out = Transmissions::for_batch(&rays);
+    /// assert_eq!((out.len(), out.get(0)), (1, Some(Vec3::ZERO)));
+    /// ```
     #[must_use]
     pub fn for_batch(rays: &RayBatch<S>) -> Self {
         Self::zeroed(rays.len())
@@ -146,6 +221,15 @@ impl<S: Real> Transmissions<S> {
 
     /// Room for `len` results, each zero and not TIR: for answers computed elsewhere and
     /// written with [`Transmissions::set`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::batch::Transmissions;
+    /// let out = Transmissions::<f64>::zeroed(3);
+    /// assert_eq!(out.len(), 3);
+    /// assert_eq!(out.get(2), Some(glam::DVec3::ZERO));
+    /// ```
     #[must_use]
     pub fn zeroed(len: usize) -> Self {
         let mut out = Self {
@@ -158,12 +242,27 @@ impl<S: Real> Transmissions<S> {
     }
 
     /// The number of results.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::batch::Transmissions;
+    /// assert_eq!(Transmissions::<f32>::zeroed(20).len(), 20);
+    /// ```
     #[must_use]
     pub fn len(&self) -> usize {
         self.len
     }
 
     /// Whether there are no results.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::batch::Transmissions;
+    /// assert!(Transmissions::<f32>::zeroed(0).is_empty());
+    /// assert!(!Transmissions::<f32>::zeroed(1).is_empty());
+    /// ```
     #[must_use]
     pub fn is_empty(&self) -> bool {
         self.len == 0
@@ -173,6 +272,19 @@ impl<S: Real> Transmissions<S> {
     ///
     /// # Panics
     /// If `i >= len()`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use refraction_kernel::batch::{RayBatch, Transmissions, transmit_batch};
+    /// let mut rays = RayBatch::<f32>::new();
+    /// rays.push(Vec3::new(0.8, -0.6, 0.0), Vec3::Y, 1.5); // past the critical angle
+    /// rays.push(Vec3::NEG_Y, Vec3::Y, 1.5);
+    /// let mut out = Transmissions::for_batch(&rays);
+    /// transmit_batch(&rays, &mut out);
+    /// assert_eq!((out.get(0), out.get(1)), (None, Some(Vec3::NEG_Y)));
+    /// ```
     #[must_use]
     pub fn get(&self, i: usize) -> Option<S::Vec3> {
         assert!(i < self.len, "result {i} of {}", self.len);
@@ -185,6 +297,17 @@ impl<S: Real> Transmissions<S> {
     ///
     /// # Panics
     /// If `i >= len()`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use refraction_kernel::batch::Transmissions;
+    /// let mut out = Transmissions::<f64>::zeroed(2);
+    /// out.set(0, Some(DVec3::X));
+    /// out.set(1, None);
+    /// assert_eq!((out.get(0), out.get(1)), (Some(DVec3::X), None));
+    /// ```
     pub fn set(&mut self, i: usize, t: Option<S::Vec3>) {
         assert!(i < self.len, "result {i} of {}", self.len);
         let (block, lane) = (i / LANES, i % LANES);
@@ -197,6 +320,18 @@ impl<S: Real> Transmissions<S> {
 
     /// The blocks to write: T per [`RayBlock`] and its TIR flags, laid out like
     /// [`RayBatch::blocks`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::batch::Transmissions;
+    /// let mut out = Transmissions::<f32>::zeroed(3);
+    /// let (blocks, tir) = out.blocks_mut();
+    /// blocks[0].t[0][2] = 1.0; // x of ray 2
+    /// tir[0][1] = true;
+    /// assert_eq!(out.get(2), Some(glam::Vec3::X));
+    /// assert_eq!(out.get(1), None);
+    /// ```
     pub fn blocks_mut(&mut self) -> (&mut [TransmittedBlock<S>], &mut [[bool; LANES]]) {
         (&mut self.blocks, &mut self.tir)
     }
@@ -212,7 +347,7 @@ impl<S: Real> Transmissions<S> {
     }
 }
 
-/// One lane: [`super::stable::transmit`] without branches. Returns (T or zero, TIR).
+/// One lane: [`crate::transmit`]'s arithmetic without branches. Returns (T or zero, TIR).
 #[inline(always)]
 fn lane<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> (S::Vec3, bool) {
     let unturned = Unturned::new(d, n, mu);
@@ -311,6 +446,13 @@ impl Build {
     pub const ALL: [Self; 3] = [Self::Portable, Self::Avx2, Self::Avx512];
 
     /// The short name used in reports: `"portable"`, `"avx2"`, `"avx512"`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::batch::Build;
+    /// assert_eq!(Build::ALL.map(Build::name), ["portable", "avx2", "avx512"]);
+    /// ```
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
@@ -321,6 +463,15 @@ impl Build {
     }
 
     /// Whether this CPU can run the build.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::batch::Build;
+    /// assert!(Build::Portable.is_available());
+    /// // A CPU with AVX-512 has AVX2 too.
+    /// assert!(!Build::Avx512.is_available() || Build::Avx2.is_available());
+    /// ```
     #[must_use]
     pub fn is_available(self) -> bool {
         match self {
@@ -340,6 +491,15 @@ impl Build {
     }
 
     /// The widest build this CPU can run: the one [`transmit_batch`] uses.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::batch::Build;
+    /// let widest = Build::widest();
+    /// assert!(widest.is_available());
+    /// println!("the batch kernel runs its {} build here", widest.name());
+    /// ```
     #[must_use]
     pub fn widest() -> Self {
         Self::ALL
@@ -351,7 +511,23 @@ impl Build {
 }
 
 /// Refracts every ray of `rays` into `out` (resized to match) with the widest build of the loop
-/// this CPU runs ([`Build::widest`]); each T equals [`super::stable::transmit`]'s bit for bit.
+/// this CPU runs ([`Build::widest`]); each T equals [`crate::transmit`]'s bit for bit. The
+/// preconditions are [`crate::transmit`]'s, not checked.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use refraction_kernel::batch::{RayBatch, Transmissions, transmit_batch};
+/// let mut rays = RayBatch::<f32>::new();
+/// let d = Vec3::new(0.6, -0.8, 0.0);
+/// rays.push(d, Vec3::Y, 1.0 / 1.5);
+/// rays.push(d, -Vec3::Y, 1.0 / 1.5); // the normal on either side
+/// let mut out = Transmissions::default(); // resized to match
+/// transmit_batch(&rays, &mut out);
+/// let t = refraction_kernel::transmit(d, Vec3::Y, 1.0 / 1.5);
+/// assert_eq!((out.get(0), out.get(1)), (t, t));
+/// ```
 pub fn transmit_batch<S: Real>(rays: &RayBatch<S>, out: &mut Transmissions<S>) {
     transmit_batch_with(Build::widest(), rays, out);
 }
@@ -360,6 +536,20 @@ pub fn transmit_batch<S: Real>(rays: &RayBatch<S>, out: &mut Transmissions<S>) {
 ///
 /// # Panics
 /// If `build` is not available on this CPU ([`Build::is_available`]).
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::batch::{Build, RayBatch, Transmissions, transmit_batch_with};
+/// let mut rays = RayBatch::<f64>::new();
+/// rays.push(DVec3::new(0.6, -0.8, 0.0), DVec3::Y, 1.0 / 1.5);
+/// let mut portable = Transmissions::for_batch(&rays);
+/// transmit_batch_with(Build::Portable, &rays, &mut portable);
+/// let mut widest = Transmissions::for_batch(&rays);
+/// transmit_batch_with(Build::widest(), &rays, &mut widest);
+/// assert_eq!(portable, widest);
+/// ```
 pub fn transmit_batch_with<S: Real>(build: Build, rays: &RayBatch<S>, out: &mut Transmissions<S>) {
     assert!(
         build.is_available(),

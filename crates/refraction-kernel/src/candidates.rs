@@ -24,6 +24,14 @@ impl Rejection {
     pub const ALL: [Self; 3] = [Self::WrongBend, Self::WrongSide, Self::Reversed];
 
     /// A short stable name, as used in JSON: `wrong_side`, `wrong_bend`, `reversed`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Rejection;
+    /// let names = Rejection::ALL.map(Rejection::name);
+    /// assert_eq!(names, ["wrong_bend", "wrong_side", "reversed"]);
+    /// ```
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
@@ -34,6 +42,13 @@ impl Rejection {
     }
 
     /// The rule broken, in a sentence a student can follow.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Rejection;
+    /// assert!(Rejection::WrongSide.rule().starts_with("wrong side of the surface"));
+    /// ```
     #[must_use]
     pub fn rule(self) -> &'static str {
         match self {
@@ -68,6 +83,20 @@ pub struct Candidate<S: Real> {
 
 impl<S: Real> Candidate<S> {
     /// Whether this is the refracted ray the kernel returns.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use refraction_kernel::{Convention, Incidence, refract};
+    /// let w = DVec3::new(0.6, -0.8, 0.0);
+    /// let incidence = Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay };
+    /// let answer = refract(&incidence)?;
+    /// let chosen: Vec<_> = answer.candidates.iter().filter(|c| c.is_chosen()).collect();
+    /// assert_eq!(chosen.len(), 1);
+    /// assert_eq!(Some(chosen[0].t), answer.t());
+    /// # Ok::<(), refraction_kernel::InputError>(())
+    /// ```
     #[must_use]
     pub fn is_chosen(&self) -> bool {
         self.rejection.is_none()
@@ -79,30 +108,50 @@ impl<S: Real> Candidate<S> {
 /// (eq. 21).
 ///
 /// `normal_flipped` says whether the kernel turned N̂ around, which decides the chosen root.
+/// [`crate::refract`] calls it and keeps the result in [`crate::Refraction::candidates`].
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::{Rejection, candidates, transmit};
+/// // Air into glass along the ray (Section 2): a = μ, b = −μ·wn − √k, N as given.
+/// let (w, n, mu) = (DVec3::new(0.6, -0.8, 0.0), DVec3::Y, 1.0 / 1.5);
+/// let t = transmit(w, n, mu).unwrap();
+/// let b = -mu * w.dot(n) - (1.0 - mu * mu * (1.0 - w.dot(n).powi(2))).sqrt();
+/// let all = candidates((mu, b), t, w.dot(n), n, false);
+/// let rejections: Vec<_> = all.iter().map(|c| c.rejection).collect();
+/// assert_eq!(
+///     rejections,
+///     [Some(Rejection::WrongSide), None, Some(Rejection::Reversed), Some(Rejection::WrongBend)]
+/// );
+/// assert!(all.iter().all(|c| (c.t.length() - 1.0).abs() < 1e-15)); // all four unit length
+/// ```
 #[must_use]
-pub fn candidates<S: Real>(
-    chosen: (S, S),
-    t: S::Vec3,
-    wn: S,
-    n: S::Vec3,
+pub fn candidates<V: Vector3>(
+    chosen: (V::Scalar, V::Scalar),
+    t: V,
+    wn: V::Scalar,
+    n: V,
     normal_flipped: bool,
-) -> [Candidate<S>; 4] {
+) -> [Candidate<V::Scalar>; 4] {
     let (a, b) = chosen;
+    let two = V::Scalar::TWO;
     let normal_part = n * t.dot(n);
-    let across_surface = t - normal_part * S::TWO;
-    let across_normal = normal_part * S::TWO - t;
+    let across_surface = t - normal_part * two;
+    let across_normal = normal_part * two - t;
     let make = |a, b, t, rejection| Candidate { a, b, t, rejection };
     let mut all = [
         make(a, b, t, None),
         make(
             a,
-            -S::TWO * a * wn - b,
+            -two * a * wn - b,
             across_surface,
             Some(Rejection::WrongSide),
         ),
         make(
             -a,
-            S::TWO * a * wn + b,
+            two * a * wn + b,
             across_normal,
             Some(Rejection::WrongBend),
         ),
@@ -114,7 +163,7 @@ pub fn candidates<S: Real>(
     all.sort_by_key(|c| {
         let same_root_as_chosen = matches!(c.rejection, None | Some(Rejection::WrongBend));
         let plus_root = same_root_as_chosen == normal_flipped;
-        u8::from(c.a < S::ZERO) * 2 + u8::from(!plus_root)
+        u8::from(c.a < V::Scalar::ZERO) * 2 + u8::from(!plus_root)
     });
     all
 }

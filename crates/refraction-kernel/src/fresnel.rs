@@ -110,9 +110,19 @@ impl<S: Real> Fresnel<S> {
     };
 
     /// The Fresnel fractions for μ = μ_i/μ_t (> 0, finite) and the kernel's cosθi, cosθt of a
-    /// transmitted ray (both in [0, 1], as in [`crate::stable::Facing`] and
-    /// [`crate::Transmission`]), with the error bound of the module docs. μ = 1 reflects
-    /// nothing. Never NaN for inputs in range, whatever the cosines.
+    /// transmitted ray (both in [0, 1], as in [`crate::Facing`] and [`crate::Transmission`]),
+    /// with the error bound of the module docs. μ = 1 reflects nothing. Never NaN for inputs in
+    /// range, whatever the cosines.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Fresnel;
+    /// // Normal incidence from air on glass: 4% reflected in either polarisation.
+    /// let f = Fresnel::new(1.0_f64 / 1.5, 1.0, 1.0);
+    /// assert!((f.rs - 0.04).abs() < 1e-15 && (f.rp - 0.04).abs() < 1e-15);
+    /// assert_eq!(f.rs + f.ts, 1.0);
+    /// ```
     #[must_use]
     pub fn new(mu: S, cos_i: S, cos_t: S) -> Self {
         if mu == S::ONE {
@@ -143,6 +153,19 @@ impl<S: Real> Fresnel<S> {
 
     /// The Fresnel fractions of the kernel's answer: [`Self::TOTAL_REFLECTION`] on total
     /// internal reflection, otherwise [`Self::new`] with its μ, cosθi and cosθt.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use refraction_kernel::{Convention, Fresnel, Incidence, refract};
+    /// let from_glass = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.5, mu_t: 1.0, convention: Convention::AlongRay };
+    /// let steep = Fresnel::of(&refract(&from_glass(DVec3::new(0.3, 0.91_f64.sqrt(), 0.0)))?);
+    /// assert!(steep.transmittance() > 0.9);
+    /// let past_critical = refract(&from_glass(DVec3::new(0.8, 0.6, 0.0)))?;
+    /// assert_eq!(Fresnel::of(&past_critical), Fresnel::TOTAL_REFLECTION);
+    /// # Ok::<(), refraction_kernel::InputError>(())
+    /// ```
     #[must_use]
     pub fn of(refraction: &Refraction<S>) -> Self {
         refraction.transmission.map_or(Self::TOTAL_REFLECTION, |t| {
@@ -151,12 +174,29 @@ impl<S: Real> Fresnel<S> {
     }
 
     /// The reflectance of unpolarised light: (R_s + R_p)/2.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Fresnel;
+    /// let f = Fresnel { rs: 0.25, rp: 0.05, ts: 0.75, tp: 0.95 };
+    /// assert_eq!(f.reflectance(), 0.15);
+    /// ```
     #[must_use]
     pub fn reflectance(&self) -> S {
         (self.rs + self.rp) * S::HALF
     }
 
     /// The transmittance of unpolarised light: (T_s + T_p)/2.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Fresnel;
+    /// assert_eq!(Fresnel::<f32>::TOTAL_REFLECTION.transmittance(), 0.0);
+    /// let f = Fresnel { rs: 0.25, rp: 0.05, ts: 0.75, tp: 0.95 };
+    /// assert_eq!(f.transmittance(), 0.85);
+    /// ```
     #[must_use]
     pub fn transmittance(&self) -> S {
         (self.ts + self.tp) * S::HALF
@@ -174,7 +214,7 @@ mod tests {
 
     #[test]
     fn normal_incidence_on_glass_reflects_four_percent_in_both_polarisations() {
-        let f = Fresnel::new(1.0 / 1.5, 1.0, 1.0);
+        let f = Fresnel::new(1.0_f64 / 1.5, 1.0, 1.0);
         assert!((f.rs - 0.04).abs() < 1e-16 && (f.rp - 0.04).abs() < 1e-16);
         assert!((f.ts - 0.96).abs() < 1e-15 && (f.reflectance() - 0.04).abs() < 1e-16);
     }

@@ -19,6 +19,13 @@ pub enum Convention {
 
 impl Convention {
     /// The name used in JSON and on the command line.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Convention;
+    /// assert_eq!(Convention::TowardOrigin.name(), "toward_origin");
+    /// ```
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
@@ -28,6 +35,14 @@ impl Convention {
     }
 
     /// Parses [`Convention::name`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Convention;
+    /// assert_eq!(Convention::from_name("along_ray"), Some(Convention::AlongRay));
+    /// assert_eq!(Convention::from_name("along"), None);
+    /// ```
     #[must_use]
     pub fn from_name(name: &str) -> Option<Self> {
         [Self::AlongRay, Self::TowardOrigin]
@@ -36,6 +51,13 @@ impl Convention {
     }
 
     /// The source section that derives this convention (1 or 2).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Convention;
+    /// assert_eq!(Convention::AlongRay.section(), 2);
+    /// ```
     #[must_use]
     pub fn section(self) -> u8 {
         match self {
@@ -46,6 +68,16 @@ impl Convention {
 
     /// +1 when W is the travel direction, −1 when it points back: the sign that turns W into
     /// the travel direction, and the sign of the chosen `a = ±μ`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use refraction_kernel::Convention;
+    /// let w = Vec3::new(-0.6, 0.8, 0.0); // pbrt's wi: back toward the origin
+    /// let d = w * Convention::TowardOrigin.travel_sign::<f32>();
+    /// assert_eq!(d, Vec3::new(0.6, -0.8, 0.0));
+    /// ```
     #[must_use]
     pub fn travel_sign<S: Real>(self) -> S {
         match self {
@@ -262,13 +294,32 @@ pub(crate) fn check_index<S: Real>(value: S, index: IndexName) -> Result<S, Inpu
     }
 }
 
-/// The index ratio μ = μ_i/μ_t, refused when μ or 1/μ exceeds 1/ε² (beyond that μ² and the
-/// discriminant would leave the precision's range; no physical pair of media comes close).
+/// The largest index ratio precision `S` refracts, and the reciprocal of the smallest: 1/ε².
+/// Beyond it μ² and the discriminant would leave the precision's range; no physical pair of
+/// media comes close.
+fn ratio_limit<S: Real>() -> f64 {
+    1.0 / (S::EPSILON.to_f64() * S::EPSILON.to_f64())
+}
+
+/// Whether an index ratio (widened to f64) is one precision `S` refracts: from ε² to 1/ε²
+/// (false for NaN).
+pub(crate) fn is_accepted_ratio<S: Real>(wide: f64) -> bool {
+    let limit = ratio_limit::<S>();
+    (1.0 / limit..=limit).contains(&wide)
+}
+
+/// Whether `v` is unit length within [`UNIT_LENGTH_TOLERANCE`] (false for a non-finite `v`).
+pub(crate) fn is_unit<V: Vector3>(v: V) -> bool {
+    (v.length().to_f64() - 1.0).abs() <= UNIT_LENGTH_TOLERANCE
+}
+
+/// The index ratio μ = μ_i/μ_t, refused unless it is an accepted ratio ([`is_accepted_ratio`])
+/// as computed in f64, and finite and non-zero as computed in `S`.
 pub(crate) fn index_ratio<S: Real>(mu_i: S, mu_t: S) -> Result<S, InputError> {
-    let limit = 1.0 / (S::EPSILON.to_f64() * S::EPSILON.to_f64());
+    let limit = ratio_limit::<S>();
     let mu = mu_i / mu_t;
     let wide = mu_i.to_f64() / mu_t.to_f64();
-    if wide > limit || wide < 1.0 / limit || !mu.is_finite() || mu == S::ZERO {
+    if !is_accepted_ratio::<S>(wide) || !mu.is_finite() || mu == S::ZERO {
         return Err(InputError::RatioOutOfRange {
             mu: wide,
             precision: S::NAME,

@@ -1,15 +1,42 @@
-//! The two precisions the kernel runs at, behind one small trait.
+//! The two precisions the kernel runs at, behind two small sealed traits.
 //!
 //! glam has separate types for `f32` (`Vec3`) and `f64` (`DVec3`) with the same method names
 //! but no shared trait; [`Real`] and [`Vector3`] name exactly the operations the kernel needs
-//! so that every formula is written once.
+//! so that every formula is written once. They are sealed (a supertrait in a private module):
+//! the error bounds are stated, and tested, for IEEE `f32` and `f64` only, and a method can be
+//! added without breaking anyone's impl.
 
 use std::fmt::{Debug, Display};
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-/// A floating-point scalar the kernel can refract with: `f32` or `f64`.
+/// Seals [`Real`] and [`Vector3`]: `Sealed` is public, so that the two traits may name it, but
+/// in a private module, so that no other crate can implement it (nor them).
+mod sealed {
+    /// Implemented for `f32`, `f64`, `glam::Vec3` and `glam::DVec3` only.
+    pub trait Sealed {}
+}
+
+/// A floating-point scalar the kernel can refract with: `f32` or `f64`, nothing else (the
+/// trait is sealed).
+///
+/// Use it as a bound to write code once for both precisions; the vector of the same precision
+/// is [`Real::Vec3`].
+///
+/// # Examples
+///
+/// ```
+/// use refraction_kernel::{Real, Vector3};
+/// /// cosθi for a unit travel direction and a unit normal facing it, in either precision.
+/// fn cos_incidence<S: Real>(d: S::Vec3, n: S::Vec3) -> S {
+///     (-d.dot(n)).min(S::ONE)
+/// }
+/// let cos = cos_incidence::<f32>(glam::Vec3::new(0.6, -0.8, 0.0), glam::Vec3::Y);
+/// assert_eq!(cos, 0.8);
+/// assert_eq!(<f64 as Real>::NAME, "f64");
+/// ```
 pub trait Real:
-    Copy
+    sealed::Sealed
+    + Copy
     + Debug
     + Display
     + PartialOrd
@@ -23,7 +50,7 @@ pub trait Real:
     + 'static
 {
     /// The 3D vector of this precision (`glam::Vec3` or `glam::DVec3`).
-    type Vec3: Vector3<Self>;
+    type Vec3: Vector3<Scalar = Self>;
     /// 0.
     const ZERO: Self;
     /// 1.
@@ -68,60 +95,71 @@ pub trait Real:
     /// The smaller of two values.
     #[must_use]
     fn min(self, other: Self) -> Self;
-    /// Arccosine in radians (the `trig` variant only).
-    #[must_use]
-    fn acos(self) -> Self;
-    /// Arcsine in radians (the `trig` variant only).
-    #[must_use]
-    fn asin(self) -> Self;
-    /// Sine and cosine of an angle in radians (the `trig` variant only).
-    #[must_use]
-    fn sin_cos(self) -> (Self, Self);
 }
 
-/// The vector operations the kernel uses, implemented by `glam::Vec3` and `glam::DVec3`.
-pub trait Vector3<S>:
-    Copy
+/// The vector operations the kernel uses, implemented by `glam::Vec3` and `glam::DVec3` and
+/// nothing else (the trait is sealed).
+///
+/// The kernel's entry points for a ray tracer ([`crate::transmit`], [`crate::transmit_pbrt`],
+/// [`crate::refract_facing`]) are generic over the vector, so that glam's type alone picks the
+/// precision and no turbofish is needed.
+///
+/// # Examples
+///
+/// ```
+/// use refraction_kernel::Vector3;
+/// /// The part of `v` along the surface with unit normal `n`, in either precision.
+/// fn tangential<V: Vector3>(v: V, n: V) -> V {
+///     v - n * v.dot(n)
+/// }
+/// assert_eq!(tangential(glam::DVec3::new(0.6, -0.8, 0.0), glam::DVec3::Y).y, 0.0);
+/// assert_eq!(tangential(glam::Vec3::new(0.6, -0.8, 0.0), glam::Vec3::Y).x, 0.6);
+/// ```
+pub trait Vector3:
+    sealed::Sealed
+    + Copy
     + Debug
     + PartialEq
     + Add<Output = Self>
     + Sub<Output = Self>
-    + Mul<S, Output = Self>
+    + Mul<<Self as Vector3>::Scalar, Output = Self>
     + Neg<Output = Self>
     + Send
     + Sync
     + 'static
 {
+    /// The scalar of this precision (`f32` for `Vec3`, `f64` for `DVec3`).
+    type Scalar: Real<Vec3 = Self>;
     /// A vector from its components.
     #[must_use]
-    fn new(x: S, y: S, z: S) -> Self;
+    fn new(x: Self::Scalar, y: Self::Scalar, z: Self::Scalar) -> Self;
     /// The components `[x, y, z]`.
     #[must_use]
-    fn to_array(self) -> [S; 3];
+    fn to_array(self) -> [Self::Scalar; 3];
     /// Dot product.
     #[must_use]
-    fn dot(self, other: Self) -> S;
+    fn dot(self, other: Self) -> Self::Scalar;
     /// Cross product.
     #[must_use]
     fn cross(self, other: Self) -> Self;
     /// Squared Euclidean length.
     #[must_use]
-    fn length_squared(self) -> S;
+    fn length_squared(self) -> Self::Scalar;
     /// Euclidean length.
     #[must_use]
-    fn length(self) -> S;
+    fn length(self) -> Self::Scalar;
     /// Each component divided by `s`.
     #[must_use]
-    fn div_scalar(self, s: S) -> Self;
-    /// glam's own `refract` (the GLSL formula): zero on total internal reflection.
-    #[must_use]
-    fn glam_refract(self, normal: Self, eta: S) -> Self;
+    fn div_scalar(self, s: Self::Scalar) -> Self;
 }
 
 // Every method is `#[inline]`: the kernel's generic code is instantiated in the crates that
 // call it, and without the attribute these one-line methods could not be inlined there.
 macro_rules! impl_real {
     ($s:ty, $v:ty, $name:literal) => {
+        impl sealed::Sealed for $s {}
+        impl sealed::Sealed for $v {}
+
         impl Real for $s {
             type Vec3 = $v;
             const ZERO: Self = 0.0;
@@ -172,21 +210,10 @@ macro_rules! impl_real {
             fn min(self, other: Self) -> Self {
                 <$s>::min(self, other)
             }
-            #[inline]
-            fn acos(self) -> Self {
-                <$s>::acos(self)
-            }
-            #[inline]
-            fn asin(self) -> Self {
-                <$s>::asin(self)
-            }
-            #[inline]
-            fn sin_cos(self) -> (Self, Self) {
-                <$s>::sin_cos(self)
-            }
         }
 
-        impl Vector3<$s> for $v {
+        impl Vector3 for $v {
+            type Scalar = $s;
             #[inline]
             fn new(x: $s, y: $s, z: $s) -> Self {
                 <$v>::new(x, y, z)
@@ -215,13 +242,32 @@ macro_rules! impl_real {
             fn div_scalar(self, s: $s) -> Self {
                 self / s
             }
-            #[inline]
-            fn glam_refract(self, normal: Self, eta: $s) -> Self {
-                <$v>::refract(self, normal, eta)
-            }
         }
     };
 }
 
 impl_real!(f32, glam::Vec3, "f32");
 impl_real!(f64, glam::DVec3, "f64");
+
+/// `single(values)` when `S` is `f32`, `double(values)` when it is `f64`: for the variants that
+/// call what [`Real`] and [`Vector3`] leave out because no one else needs it (the trigonometric
+/// variant's angle functions, glam's own `refract`). The traits are sealed, so `S` is one of the
+/// two, told apart by its epsilon; the values go through `f64`, which is exact both ways for an
+/// `f32`, and the optimiser removes the conversions.
+#[cfg(feature = "variants")]
+#[inline(always)]
+pub(crate) fn per_precision<S: Real, const N: usize, const M: usize>(
+    values: [S; N],
+    single: impl FnOnce([f32; N]) -> [f32; M],
+    double: impl FnOnce([f64; N]) -> [f64; M],
+) -> [S; M] {
+    let wide = values.map(Real::to_f64);
+    if S::EPSILON.to_f64() == f64::from(f32::EPSILON) {
+        // Exact: each value is an f32.
+        #[allow(clippy::cast_possible_truncation)]
+        let narrow = wide.map(|x| x as f32);
+        single(narrow).map(|y| S::from_f64(f64::from(y)))
+    } else {
+        double(wide).map(S::from_f64)
+    }
+}

@@ -10,16 +10,20 @@ use super::input::{
 use super::real::{Real, Vector3};
 use super::stable::refract_facing;
 
-/// The transmitted ray and the source's weights for it.
+/// The transmitted ray and the source's weights for it: T = a·W + b·N.
+///
+/// In [`Refraction`] W and N are Ŵ and N̂, the vectors as given, normalised, before any flip
+/// (so a = ±μ by the convention); in [`crate::Facing`] they are the travel direction d and
+/// the facing normal (so a = μ).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Transmission<S: Real> {
     /// The refracted direction of travel T (unit length up to rounding).
     pub t: S::Vec3,
     /// cosθt = √k ≥ 0.
     pub cos_t: S,
-    /// Weight of Ŵ in T = a·Ŵ + b·N̂ (Ŵ, N̂ as given, normalised, before any flip): ±μ.
+    /// Weight of W in T = a·W + b·N: ±μ.
     pub a: S,
-    /// Weight of N̂ in T = a·Ŵ + b·N̂.
+    /// Weight of N in T = a·W + b·N.
     pub b: S,
 }
 
@@ -56,24 +60,70 @@ pub struct Refraction<S: Real> {
 
 impl<S: Real> Refraction<S> {
     /// The refracted direction of travel, or `None` on total internal reflection.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// # use glam::DVec3;
+    /// # use refraction_kernel::{Convention, Incidence, refract};
+    /// let air = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.5, mu_t: 1.0, convention: Convention::AlongRay };
+    /// let t = refract(&air(DVec3::new(0.6, 0.8, 0.0)))?.t().expect("below the critical angle");
+    /// assert!((t.x - 0.9).abs() < 1e-15);
+    /// assert_eq!(refract(&air(DVec3::new(0.8, 0.6, 0.0)))?.t(), None);
+    /// # Ok::<(), refraction_kernel::InputError>(())
+    /// ```
     #[must_use]
     pub fn t(&self) -> Option<S::Vec3> {
         self.transmission.map(|t| t.t)
     }
 
     /// Whether the ray is totally internally reflected.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// # use glam::DVec3;
+    /// # use refraction_kernel::{Convention, Incidence, refract};
+    /// let air = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.5, mu_t: 1.0, convention: Convention::AlongRay };
+    /// let r = refract(&air(DVec3::new(0.8, 0.6, 0.0)))?; // 53.13° > 41.8°
+    /// assert!(r.is_tir() && r.candidates.is_empty());
+    /// assert_eq!(r.reflected, DVec3::new(0.8, -0.6, 0.0));
+    /// # Ok::<(), refraction_kernel::InputError>(())
+    /// ```
     #[must_use]
     pub fn is_tir(&self) -> bool {
         self.transmission.is_none()
     }
 
     /// wn = Ŵ·N̂ as in the source (with the vectors as given).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// # use glam::DVec3;
+    /// # use refraction_kernel::{Convention, Incidence, refract};
+    /// let glass = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay };
+    /// let r = refract(&glass(DVec3::new(0.6, -0.8, 0.0)))?;
+    /// assert_eq!((r.wn(), r.cos_i), (-0.8, 0.8));
+    /// # Ok::<(), refraction_kernel::InputError>(())
+    /// ```
     #[must_use]
     pub fn wn(&self) -> S {
         self.w.dot(self.n)
     }
 
     /// The problem's condition number κ (see [`condition_number`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// # use glam::DVec3;
+    /// # use refraction_kernel::{Convention, Incidence, refract};
+    /// let glass = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay };
+    /// let easy = refract(&glass(DVec3::NEG_Y))?;
+    /// assert_eq!(easy.condition_number(), 1.0 + 1.0 / 1.5);
+    /// # Ok::<(), refraction_kernel::InputError>(())
+    /// ```
     #[must_use]
     pub fn condition_number(&self) -> f64 {
         let cos_t = self.transmission.map_or(0.0, |t| t.cos_t.to_f64());
@@ -86,12 +136,36 @@ impl<S: Real> Refraction<S> {
     }
 
     /// The tolerance for [`Checks`] on this refraction: 32·ε·κ.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// # use glam::DVec3;
+    /// # use refraction_kernel::{Convention, Incidence, refract};
+    /// let glass = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay };
+    /// let r = refract(&glass(DVec3::new(0.6, -0.8, 0.0)))?;
+    /// assert!(r.checks(r.t().unwrap()).obeys_snell(r.tolerance()));
+    /// assert!(r.tolerance() < 1e-12);
+    /// # Ok::<(), refraction_kernel::InputError>(())
+    /// ```
     #[must_use]
     pub fn tolerance(&self) -> f64 {
         32.0 * S::EPSILON.to_f64() * self.condition_number()
     }
 
     /// The residuals of any direction `t` as the refraction of this incoming ray.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// # use glam::DVec3;
+    /// # use refraction_kernel::{Convention, Incidence, refract};
+    /// let glass = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay };
+    /// let r = refract(&glass(DVec3::new(0.6, -0.8, 0.0)))?;
+    /// let unbent = r.checks(r.travel); // a ray that ignored the surface
+    /// assert!(unbent.is_on_correct_side(0.0) && !unbent.obeys_snell(r.tolerance()));
+    /// # Ok::<(), refraction_kernel::InputError>(())
+    /// ```
     #[must_use]
     pub fn checks(&self, t: S::Vec3) -> Checks {
         Checks::of(t, self.travel, self.facing_normal, self.mu)
@@ -108,6 +182,28 @@ impl<S: Real> Refraction<S> {
 /// # Errors
 /// A non-finite or all-zero W or N, an index that is not finite and > 0, or an index ratio
 /// beyond 1/ε² either way: see [`InputError`].
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::{Convention, Incidence, InputError, VectorName, Warning, refract};
+/// // pbrt's convention (W = wi, back toward the origin), a normal of length 2 on the far side.
+/// let incidence = Incidence::<f64> {
+///     w: DVec3::new(-0.6, 0.8, 0.0),
+///     n: DVec3::new(0.0, -2.0, 0.0),
+///     mu_i: 1.0,
+///     mu_t: 1.5,
+///     convention: Convention::TowardOrigin,
+/// };
+/// let r = refract(&incidence)?;
+/// assert!((r.t().unwrap() - DVec3::new(0.4, -(0.84_f64).sqrt(), 0.0)).length() < 1e-15);
+/// assert_eq!(r.warnings.len(), 2); // N was not unit length, and it was turned round
+/// assert_eq!(r.warnings[1], Warning::NormalFlipped);
+/// let no_normal = refract(&Incidence { n: DVec3::ZERO, ..incidence });
+/// assert_eq!(no_normal, Err(InputError::ZeroVector(VectorName::N)));
+/// # Ok::<(), InputError>(())
+/// ```
 pub fn refract<S: Real>(incidence: &Incidence<S>) -> Result<Refraction<S>, InputError> {
     let mut warnings = Vec::new();
     let mu_i = check_index(incidence.mu_i, IndexName::MuI)?;
@@ -127,11 +223,11 @@ pub fn refract<S: Real>(incidence: &Incidence<S>) -> Result<Refraction<S>, Input
         warnings.push(Warning::NormalFlipped);
     }
     let facing = refract_facing(travel, facing_normal, mu);
+    // From d and the facing normal back to Ŵ and N̂ as given.
     let transmission = facing.transmitted.map(|tr| Transmission {
-        t: tr.t,
-        cos_t: tr.cos_t,
-        a: sign * mu,
+        a: sign * tr.a,
         b: if normal_flipped { -tr.b } else { tr.b },
+        ..tr
     });
     let candidates = transmission.map_or_else(Vec::new, |tr| {
         candidates((tr.a, tr.b), tr.t, w.dot(n), n, normal_flipped).to_vec()

@@ -13,22 +13,54 @@ use super::real::{Real, Vector3};
 ///
 /// Section 1 (W toward the origin): a = −μ, b = μ·wn − √k. Section 2 (W along the ray): a = μ,
 /// b = −μ·wn − √k.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::{Convention, seed};
+/// // Air into glass, W along the ray: a = μ, b = −μ·wn − √k = 0.8/1.5 − √0.84.
+/// let (a, b) = seed::weights(DVec3::new(0.6, -0.8, 0.0), DVec3::Y, 1.0 / 1.5, Convention::AlongRay)
+///     .expect("no TIR here");
+/// assert_eq!(a, 1.0 / 1.5);
+/// assert!((b - (0.8 / 1.5 - 0.84_f64.sqrt())).abs() < 1e-15);
+/// ```
 #[inline]
 #[must_use]
-pub fn weights<S: Real>(w: S::Vec3, n: S::Vec3, mu: S, convention: Convention) -> Option<(S, S)> {
+pub fn weights<V: Vector3>(
+    w: V,
+    n: V,
+    mu: V::Scalar,
+    convention: Convention,
+) -> Option<(V::Scalar, V::Scalar)> {
     let wn = w.dot(n);
-    let k = mu * mu * wn * wn - mu * mu + S::ONE;
-    if k < S::ZERO {
+    let k = mu * mu * wn * wn - mu * mu + V::Scalar::ONE;
+    if k < V::Scalar::ZERO {
         return None;
     }
-    let a = convention.travel_sign::<S>() * mu;
+    let a = convention.travel_sign::<V::Scalar>() * mu;
     Some((a, -a * wn - k.sqrt()))
 }
 
 /// The source's T = a·W + b·N for unit `w` and `n`, or `None` on total internal reflection.
+/// N is used as given: the formula assumes it faces the incoming ray.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::{Convention, seed};
+/// let d = DVec3::new(0.6, -0.8, 0.0);
+/// let t = seed::refract(d, DVec3::Y, 1.0 / 1.5, Convention::AlongRay).expect("no TIR here");
+/// assert!((t.x - 0.4).abs() < 1e-15 && t.y < 0.0);
+/// // The classic bug: the outward normal where the ray leaves glass sends it back inside.
+/// let up = DVec3::new(0.4, 0.84_f64.sqrt(), 0.0);
+/// let back = seed::refract(up, DVec3::Y, 1.5, Convention::AlongRay).expect("formula's answer");
+/// assert!(back.y < 0.0);
+/// ```
 #[inline]
 #[must_use]
-pub fn refract<S: Real>(w: S::Vec3, n: S::Vec3, mu: S, convention: Convention) -> Option<S::Vec3> {
+pub fn refract<V: Vector3>(w: V, n: V, mu: V::Scalar, convention: Convention) -> Option<V> {
     weights(w, n, mu, convention).map(|(a, b)| w * a + n * b)
 }
 

@@ -22,35 +22,26 @@
 //!
 //! Error bound (checked against a double-double oracle in the `refraction-bench` crate's
 //! `tests/kernel_accuracy.rs`): for unit `d`, `n` the angle between the returned T and the exact
-//! one is at most 32·ε·κ with κ from [`super::condition_number`]; |T| is within a few ε of 1;
+//! one is at most 32·ε·κ with κ from [`crate::condition_number`]; |T| is within a few ε of 1;
 //! T is exact when μ = 1. At grazing incidence, where |d·n| is below a few ε, which side of the
 //! surface `n` lies on is decided by the sign of the rounded d·n: the problem is ill-posed there
 //! (a rounding of the input moves the ray to the other side), so T may come out on either side.
 
 use super::real::{Real, Vector3};
-
-/// The transmitted ray of [`refract_facing`].
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Transmitted<S: Real> {
-    /// The refracted direction of travel T = μ·d + b·n, built as μ·(d + cosθi·n) − cosθt·n
-    /// (unit length up to a few roundings).
-    pub t: S::Vec3,
-    /// cosθt = √k ≥ 0.
-    pub cos_t: S,
-    /// The weight of the facing normal: T = μ·d + b·n.
-    pub b: S,
-}
+use super::refraction::Transmission;
 
 /// What [`refract_facing`] finds at one interface.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Facing<S: Real> {
-    /// cosθi = −d·n (≥ 0 up to rounding).
+    /// cosθi = −d·n (≥ 0 up to rounding, at most 1).
     pub cos_i: S,
     /// The discriminant k = 1 − μ²(1 − cos²θi), computed stably. Negative on total internal
-    /// reflection; never NaN for unit inputs and μ within the accepted range.
+    /// reflection; never NaN for inputs within [`refract_facing`]'s preconditions.
     pub k: S,
-    /// The transmitted ray, or `None` on total internal reflection (k < 0).
-    pub transmitted: Option<Transmitted<S>>,
+    /// The transmitted ray T = a·d + b·n (a = μ, b the weight of the facing normal, built as
+    /// μ·(d + cosθi·n) − cosθt·n and unit length up to a few roundings), or `None` on total
+    /// internal reflection (k < 0).
+    pub transmitted: Option<Transmission<S>>,
 }
 
 /// cosθi = −d·n for a facing unit normal (d·n ≤ 0, so never below 0), kept at most 1: rounding
@@ -103,33 +94,63 @@ pub(crate) fn normal_weight<S: Real>(mu: S, cos_i: S, cos_t: S, one_minus_mu2: S
     -one_minus_mu2 / (mu * cos_i + cos_t)
 }
 
-/// Refracts the unit travel direction `d` at the unit normal `n`, which must face it (d·n ≤ 0),
-/// with μ = μ_i/μ_t (finite, > 0, μ² finite).
+/// Refracts the unit travel direction `d` at the unit normal `n` that faces it (d·n ≤ 0), with
+/// μ = μ_i/μ_t, and returns the cosines and the discriminant with T: what a ray tracer needs
+/// for [`crate::Fresnel::new`] as well.
 ///
-/// μ = 1 returns T = d bit for bit, without refraction arithmetic. k = 0 transmits (grazing T).
+/// The arithmetic and the error bound are [`crate::transmit`]'s, and so is T, bit for bit.
+/// μ = 1 returns T = d bit for bit, without refraction arithmetic; k = 0 transmits (a grazing
+/// T).
+///
+/// # Preconditions
+///
+/// `d` and `n` unit length, `n` facing `d`, μ finite with ε² ≤ μ ≤ 1/ε² (ε the precision's
+/// machine epsilon). They are not checked: this is also the scene tracer's per-ray call, which
+/// passes the indices a scene file holds. Outside them the answer is unspecified: an `n`
+/// pointing along `d` sends T back into the incident medium, as the textbook formula does, and
+/// other lengths give a wrong T or a false total internal reflection. [`crate::transmit`]
+/// turns the normal and asserts the rest in debug builds; [`crate::refract`] accepts anything
+/// and reports what it corrected.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::{Fresnel, refract_facing};
+/// let mu = 1.0 / 1.5; // air into glass
+/// let facing = refract_facing(DVec3::new(0.6, -0.8, 0.0), DVec3::Y, mu);
+/// assert_eq!(facing.cos_i, 0.8);
+/// let transmitted = facing.transmitted.expect("air to glass always refracts");
+/// assert!((transmitted.t.x - 0.4).abs() < 1e-15); // Snell: sinθt = μ·sinθi
+/// assert!((transmitted.cos_t - 0.84_f64.sqrt()).abs() < 1e-15);
+/// let fresnel = Fresnel::new(mu, facing.cos_i, transmitted.cos_t);
+/// assert!(fresnel.reflectance() > 0.04 && fresnel.reflectance() < 0.06);
+/// ```
 #[inline]
 #[must_use]
-pub fn refract_facing<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Facing<S> {
-    let cos_i = cos_incidence::<S>(d, n);
-    if mu == S::ONE {
+pub fn refract_facing<V: Vector3>(d: V, n: V, mu: V::Scalar) -> Facing<V::Scalar> {
+    let cos_i = cos_incidence::<V::Scalar>(d, n);
+    if mu == V::Scalar::ONE {
         return Facing {
             cos_i,
             k: cos_i * cos_i,
-            transmitted: Some(Transmitted {
+            transmitted: Some(Transmission {
                 t: d,
                 cos_t: cos_i.abs(),
-                b: S::ZERO,
+                a: mu,
+                b: V::Scalar::ZERO,
             }),
         };
     }
-    let one_minus_mu2 = (S::ONE - mu) * (S::ONE + mu);
-    let scaled = tangential::<S>(d, n) * mu;
+    let one_minus_mu2 = (V::Scalar::ONE - mu) * (V::Scalar::ONE + mu);
+    let scaled = tangential::<V::Scalar>(d, n) * mu;
     let k = discriminant(scaled, cos_i, mu, one_minus_mu2);
-    let transmitted = (k >= S::ZERO).then(|| {
+    let transmitted = (k >= V::Scalar::ZERO).then(|| {
         let cos_t = k.sqrt();
-        Transmitted {
+        Transmission {
             t: transmitted_direction(scaled, n, cos_t),
             cos_t,
+            a: mu,
             b: normal_weight(mu, cos_i, cos_t, one_minus_mu2),
         }
     });
@@ -141,19 +162,32 @@ pub fn refract_facing<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Facing<S> {
 }
 
 /// The refracted direction of travel for a unit travel direction `d` and a unit normal `n` on
-/// either side of the surface, or `None` on total internal reflection: the fast path of the
-/// default kernel, with the error bound of this module. μ as in [`refract_facing`].
+/// either side of the surface, or `None` on total internal reflection (k < 0): the fast path of
+/// the default kernel, behind [`crate::transmit`] (which documents it and checks its
+/// preconditions in debug builds), the batch kernel's lanes and the variants.
 ///
 /// Its T is [`refract_facing`]'s for the normal turned to face `d`, bit for bit, without turning
-/// the normal (see [`Unturned`]).
+/// the normal (see `Unturned`).
 #[inline]
 #[must_use]
-pub fn transmit<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Option<S::Vec3> {
+pub(crate) fn transmit<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Option<S::Vec3> {
     if mu == S::ONE {
         return Some(d);
     }
     let unturned = Unturned::new(d, n, mu);
     (unturned.k >= S::ZERO).then(|| unturned.direction(unturned.k.sqrt()))
+}
+
+/// [`transmit`] for a ray that must cross the surface: `None` also at k = 0, where T would lie
+/// in the surface (pbrt-v4's `sin2Theta_t >= 1`); at μ = 1 that is d·n = 0.
+#[inline]
+#[must_use]
+pub(crate) fn transmit_crossing<S: Real>(d: S::Vec3, n: S::Vec3, mu: S) -> Option<S::Vec3> {
+    if mu == S::ONE {
+        return (d.dot(n) != S::ZERO).then_some(d);
+    }
+    let unturned = Unturned::new(d, n, mu);
+    (unturned.k > S::ZERO).then(|| unturned.direction(unturned.k.sqrt()))
 }
 
 /// The pieces of T for a normal on either side, computed without turning it to face the ray:
@@ -202,6 +236,7 @@ impl<S: Real> Unturned<S> {
 }
 
 /// `n` or `−n`, whichever faces the travel direction `d` (d·n ≤ 0).
+#[cfg(feature = "variants")]
 #[inline(always)]
 pub(crate) fn facing<S: Real>(d: S::Vec3, n: S::Vec3) -> S::Vec3 {
     if d.dot(n) > S::ZERO { -n } else { n }

@@ -3,7 +3,7 @@
 
 use super::batch::{RayBatch, Transmissions, for_each_ray, transmit_batch};
 use super::input::Convention;
-use super::real::{Real, Vector3};
+use super::real::{Real, Vector3, per_precision};
 use super::{seed, stable, trig};
 
 /// One way of computing T.
@@ -11,9 +11,10 @@ use super::{seed, stable, trig};
 pub enum Variant {
     /// The source's formula taken literally ([`seed`]).
     Seed,
-    /// The default kernel ([`stable::transmit`]).
+    /// The default kernel ([`crate::transmit`]).
     Stable,
-    /// Through acos, asin, sin and cos ([`trig::transmit`]).
+    /// Through acos, asin, sin and cos: θi = acos(cosθi), θt = asin(μ·sinθi), and T as −N
+    /// rotated by θt toward the surface (Rodrigues' formula).
     Trig,
     /// glam's own `refract`, the GLSL formula, with the normal turned to face the ray.
     Glam,
@@ -32,6 +33,14 @@ impl Variant {
     ];
 
     /// The short name used in reports and JSON.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Variant;
+    /// let names: Vec<_> = Variant::ALL.iter().map(|v| v.name()).collect();
+    /// assert_eq!(names, ["seed", "stable", "trig", "glam", "batch"]);
+    /// ```
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
@@ -45,23 +54,52 @@ impl Variant {
 
     /// T for one ray (unit travel direction `d`, unit normal `n` facing it, μ), or `None` on
     /// total internal reflection. [`Variant::Batch`] answers as [`Variant::Stable`], which it
-    /// equals bit for bit.
+    /// equals bit for bit. No precondition is checked: the `bench` command feeds the variants
+    /// its hard cases as they are.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use refraction_kernel::Variant;
+    /// let d = DVec3::new(0.6, -0.8, 0.0);
+    /// for variant in Variant::ALL {
+    ///     let t = variant.transmit(d, DVec3::Y, 1.0 / 1.5).expect("no TIR here");
+    ///     assert!((t.x - 0.4).abs() < 1e-12, "{variant:?}");
+    /// }
+    /// assert_eq!(Variant::Glam.transmit(DVec3::new(0.8, -0.6, 0.0), DVec3::Y, 1.5), None);
+    /// ```
     #[inline]
     #[must_use]
-    pub fn transmit<S: Real>(self, d: S::Vec3, n: S::Vec3, mu: S) -> Option<S::Vec3> {
+    pub fn transmit<V: Vector3>(self, d: V, n: V, mu: V::Scalar) -> Option<V> {
         match self {
             Self::Seed => seed::refract(d, n, mu, Convention::AlongRay),
-            Self::Stable | Self::Batch => stable::transmit(d, n, mu),
-            Self::Trig => trig::transmit(d, n, mu),
+            Self::Stable | Self::Batch => stable::transmit::<V::Scalar>(d, n, mu),
+            Self::Trig => trig::transmit::<V::Scalar>(d, n, mu),
             Self::Glam => {
-                let t = d.glam_refract(stable::facing::<S>(d, n), mu);
-                (t.to_array() != [S::ZERO; 3]).then_some(t)
+                let t = glam_refract::<V::Scalar>(d, stable::facing::<V::Scalar>(d, n), mu);
+                (t.to_array() != [V::Scalar::ZERO; 3]).then_some(t)
             }
         }
     }
 
     /// T for every ray of `rays` into `out` (resized to match): one call per ray for the scalar
     /// variants, one vectorised pass for [`Variant::Batch`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use refraction_kernel::Variant;
+    /// use refraction_kernel::batch::{RayBatch, Transmissions};
+    /// let mut rays = RayBatch::<f32>::new();
+    /// rays.push(Vec3::new(0.6, -0.8, 0.0), Vec3::Y, 1.0 / 1.5);
+    /// rays.push(Vec3::new(0.8, -0.6, 0.0), Vec3::Y, 1.5); // past the critical angle
+    /// let mut out = Transmissions::for_batch(&rays);
+    /// Variant::Trig.transmit_all(&rays, &mut out);
+    /// assert!((out.get(0).unwrap().x - 0.4).abs() < 1e-6);
+    /// assert_eq!(out.get(1), None);
+    /// ```
     pub fn transmit_all<S: Real>(self, rays: &RayBatch<S>, out: &mut Transmissions<S>) {
         if out.len() != rays.len() {
             *out = Transmissions::for_batch(rays);
@@ -74,6 +112,27 @@ impl Variant {
             Self::Glam => each_ray(rays, out, |d, n, mu| Self::Glam.transmit(d, n, mu)),
         }
     }
+}
+
+/// glam's own `refract` (`Vec3::refract` or `DVec3::refract`: the GLSL formula, zero on total
+/// internal reflection) in the precision of `S`.
+#[inline(always)]
+fn glam_refract<S: Real>(i: S::Vec3, n: S::Vec3, eta: S) -> S::Vec3 {
+    let ([ix, iy, iz], [nx, ny, nz]) = (i.to_array(), n.to_array());
+    let [x, y, z] = per_precision(
+        [ix, iy, iz, nx, ny, nz, eta],
+        |[ix, iy, iz, nx, ny, nz, eta]| {
+            glam::Vec3::new(ix, iy, iz)
+                .refract(glam::Vec3::new(nx, ny, nz), eta)
+                .to_array()
+        },
+        |[ix, iy, iz, nx, ny, nz, eta]| {
+            glam::DVec3::new(ix, iy, iz)
+                .refract(glam::DVec3::new(nx, ny, nz), eta)
+                .to_array()
+        },
+    );
+    S::Vec3::new(x, y, z)
 }
 
 /// Calls `transmit` on each ray in turn, as a ray tracer calls a scalar kernel: one loop per

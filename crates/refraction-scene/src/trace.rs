@@ -13,7 +13,7 @@ use super::bounds::Bounds;
 use super::bvh::Bvh;
 use super::fresnel::Fresnel;
 use super::source::{Light, serialize_wavelength, traced_wavelength};
-use refraction_kernel::{Convention, Incidence, stable};
+use refraction_kernel::{Convention, Incidence, refract_facing};
 
 /// The most segments one trace records; past it the trace stops and says so
 /// ([`Counts::truncated`]), so that no scene can exhaust memory.
@@ -584,7 +584,7 @@ impl Tracer<'_> {
         let mu = hit.mu_i / hit.mu_t;
         self.trace.counts.kernel_calls += 1;
         ray.depth += 1;
-        let kernel = stable::refract_facing::<f64>(hit.w.extend(0.0), facing.extend(0.0), mu);
+        let kernel = refract_facing(hit.w.extend(0.0), facing.extend(0.0), mu);
         let reflected = (hit.w + facing * (2.0 * kernel.cos_i)).normalize();
         let Some(transmitted) = kernel.transmitted else {
             self.trace.counts.total_internal_reflections += 1;

@@ -7,7 +7,7 @@
 //! cancel: the ray goes the wrong way inside and still leaves right, and the summary says so.
 
 use glam::DVec3;
-use refraction_kernel::stable;
+use refraction_kernel::{Convention, Incidence, refract};
 use serde::Serialize;
 
 use super::call::Call;
@@ -55,12 +55,19 @@ struct Path {
     outgoing: DVec3,
 }
 
-/// The right direction after refracting `d` at a surface with normal `n` (either side) and μ:
-/// the transmitted ray, or the reflection on total internal reflection.
+/// The right direction after refracting `d` at a surface with normal `n` (either side, any
+/// length) and μ: the transmitted ray, or the reflection on total internal reflection; `d`
+/// itself for a μ the kernel refuses. The lenient `refract`, not the fast `transmit`: a logged
+/// eta may be any finite number > 0, beyond the ratios `transmit` accepts.
 fn right_step(d: DVec3, n: DVec3, mu: f64) -> DVec3 {
-    let n = unit(n);
-    let facing = if d.dot(n) > 0.0 { -n } else { n };
-    stable::transmit::<f64>(d, facing, mu).unwrap_or_else(|| d - facing * (2.0 * d.dot(facing)))
+    let incidence = Incidence {
+        w: d,
+        n,
+        mu_i: mu,
+        mu_t: 1.0,
+        convention: Convention::AlongRay,
+    };
+    refract(&incidence).map_or(d, |r| r.t().unwrap_or(r.reflected))
 }
 
 /// The sphere all hits lie on with their normals along the radius, if there is one: the centre
