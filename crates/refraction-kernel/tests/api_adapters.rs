@@ -6,7 +6,7 @@ use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use refraction_kernel::api::{Api, mitsuba, pbrt, rtiow};
-use refraction_kernel::{Real, Vector3, condition_number, refract_facing};
+use refraction_kernel::{Real, Vector3, condition_number, refract_facing, transmit_pbrt};
 
 fn unit_vector() -> impl Strategy<Value = DVec3> {
     prop::array::uniform3(-1.0..1.0_f64)
@@ -122,6 +122,14 @@ proptest! {
         for_precisions_mitsuba::<f64>(d, n, eta)?;
     }
 
+    /// The kernel's pbrt-style call against pbrt's own `Refract`: the same etap, the same
+    /// answer about total internal reflection, T within the kernel's bound.
+    #[test]
+    fn transmit_pbrt_answers_as_pbrt_does(wi in unit_vector(), n in unit_vector(), eta in 0.3..3.0_f64) {
+        like_pbrt::<f32>(wi, n, eta)?;
+        like_pbrt::<f64>(wi, n, eta)?;
+    }
+
     #[test]
     fn every_adapter_refracts_like_the_kernel(d in unit_vector(), n in unit_vector(), mu in 0.3..3.0_f64) {
         let n = if d.dot(n) > 0.0 { -n } else { n };
@@ -142,6 +150,38 @@ where
         prop_assert_eq!(bits::<S>(answer.wo), bits::<S>(glam));
     } else {
         prop_assert_eq!(glam.to_array(), [S::ZERO; 3]);
+    }
+    Ok(())
+}
+
+fn like_pbrt<S: Real>(wi: DVec3, n: DVec3, eta: f64) -> Result<(), TestCaseError> {
+    let (wi_s, n_s, eta_s) = (to_s::<S>(wi), to_s::<S>(n), S::from_f64(eta));
+    let (wi, n, eta) = (wide::<S>(wi_s), wide::<S>(n_s), eta_s.to_f64());
+    let eps = S::EPSILON.to_f64();
+    let cos_i = wi.dot(n);
+    // pbrt's compensated dot product may see the other side within a few ε of grazing.
+    if cos_i.abs() < 8.0 * eps {
+        return Ok(());
+    }
+    let mu = if cos_i < 0.0 { eta } else { 1.0 / eta };
+    let k = 1.0 - mu * mu * (1.0 - cos_i * cos_i);
+    match (
+        transmit_pbrt(wi_s, n_s, eta_s),
+        pbrt::refract::<S>(wi_s, n_s, eta_s),
+    ) {
+        (Some(ours), Some(theirs)) => {
+            prop_assert_eq!(ours.etap, theirs.etap);
+            let kappa = condition_number(mu, cos_i.abs(), k.max(0.0).sqrt(), eps);
+            let off = (wide::<S>(ours.t) - wide::<S>(theirs.wt)).length();
+            prop_assert!(off <= 64.0 * eps * kappa, "{off:e}, κ = {kappa:e}");
+        }
+        (None, None) => {}
+        // Rounding may decide differently within a few ulps of the critical angle, and pbrt's
+        // 1 − cos²θi turns rays within about √ε of grazing into `false` when eta is near 1.
+        (ours, theirs) => prop_assert!(
+            k.abs() < 1e3 * eps || cos_i.abs() < 4.0 * eps.sqrt(),
+            "{ours:?} {theirs:?} k = {k:e}"
+        ),
     }
     Ok(())
 }

@@ -24,6 +24,17 @@ use crate::real::{Real, Vector3};
 ///
 /// Nothing is normalised or flipped: I is the unit direction of travel, N a unit normal facing
 /// against it (dot(N, I) < 0), eta = n_from/n_to. Other inputs give whatever the formula gives.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use refraction_kernel::api::glsl;
+/// let (i, n) = (Vec3::new(0.6, -0.8, 0.0), Vec3::Y);
+/// assert_eq!(glsl::refract::<f32>(i, n, 1.0 / 1.5), i.refract(n, 1.0 / 1.5));
+/// // Total internal reflection: the zero vector.
+/// assert_eq!(glsl::refract::<f32>(Vec3::new(0.8, -0.6, 0.0), n, 1.5), Vec3::ZERO);
+/// ```
 #[must_use]
 pub fn refract<S: Real>(i: S::Vec3, n: S::Vec3, eta: S) -> S::Vec3 {
     let [ix, iy, iz] = i.to_array();
@@ -46,6 +57,17 @@ pub fn refract<S: Real>(i: S::Vec3, n: S::Vec3, eta: S) -> S::Vec3 {
 /// N is taken as the normal facing it and eta as μ. The call is within GLSL's contract only
 /// when N faces I (dot(N, I) ≤ 0): GLSL does not flip N, and with N on the far side the formula
 /// returns a vector back on the incident side.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use refraction_kernel::api::glsl;
+/// let i = Vec3::new(0.6, -0.8, 0.0);
+/// assert!(glsl::meaning::<f32>(i, Vec3::Y, 1.0 / 1.5).within_contract);
+/// // An outward normal where the ray leaves: GLSL does not flip it.
+/// assert!(!glsl::meaning::<f32>(-i, Vec3::Y, 1.5).within_contract);
+/// ```
 #[must_use]
 pub fn meaning<S: Real>(i: S::Vec3, n: S::Vec3, eta: S) -> Meaning<S> {
     let faces = n.dot(i) <= S::ZERO;

@@ -94,6 +94,16 @@ fn mulsign_neg<S: Real>(v: S, s: S) -> S {
 ///
 /// `cos_theta_i` is the cosine between the shading normal and `wi` (positive on the exterior
 /// side the normal points to), `eta` = n_interior/n_exterior.
+///
+/// # Examples
+///
+/// ```
+/// use refraction_kernel::api::mitsuba::{Fma, fresnel};
+/// // From outside onto glass at normal incidence: 4% reflected, cosθt = −1 (entering).
+/// let f = fresnel::<f64>(1.0, 1.5, Fma::Unfused);
+/// assert!((f.f - 0.04).abs() < 1e-15);
+/// assert_eq!((f.cos_theta_t, f.eta_ti), (-1.0, 1.0 / 1.5));
+/// ```
 #[must_use]
 pub fn fresnel<S: Real>(cos_theta_i: S, eta: S, fma: Fma) -> Fresnel<S> {
     let outside = cos_theta_i >= S::ZERO;
@@ -128,6 +138,15 @@ pub fn fresnel<S: Real>(cos_theta_i: S, eta: S, fma: Fma) -> Fresnel<S> {
 /// Mitsuba 3's local-frame `refract(wi, cos_theta_t, eta_ti)`:
 /// `(-eta_ti * wi.x, -eta_ti * wi.y, cos_theta_t)`, the transmitted direction of travel (the
 /// normal is +z).
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::api::mitsuba::refract_local;
+/// let wo = refract_local::<f64>(DVec3::new(-0.6, 0.0, 0.8), -0.84_f64.sqrt(), 1.0 / 1.5);
+/// assert!((wo - DVec3::new(0.4, 0.0, -0.84_f64.sqrt())).length() < 1e-15);
+/// ```
 #[must_use]
 pub fn refract_local<S: Real>(wi: S::Vec3, cos_theta_t: S, eta_ti: S) -> S::Vec3 {
     let [x, y, _] = wi.to_array();
@@ -136,6 +155,18 @@ pub fn refract_local<S: Real>(wi: S::Vec3, cos_theta_t: S, eta_ti: S) -> S::Vec3
 
 /// Mitsuba 3's `refract(wi, m, cos_theta_t, eta_ti)` about the normal `m`:
 /// `m·(dot(wi, m)·eta_ti + cos_theta_t) − wi·eta_ti`, bit for bit for the given `fma`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use refraction_kernel::api::mitsuba::{Fma, fresnel, refract};
+/// let (wi, m) = (Vec3::new(-0.6, 0.8, 0.0), Vec3::Y);
+/// let f = fresnel::<f32>(wi.dot(m), 1.5, Fma::Unfused);
+/// let wo = refract::<f32>(wi, m, f.cos_theta_t, f.eta_ti, Fma::Unfused);
+/// // Without FMA it rounds as glam's (GLSL's) refract does.
+/// assert_eq!(wo, (-wi).refract(m, 1.0 / 1.5));
+/// ```
 #[must_use]
 pub fn refract<S: Real>(wi: S::Vec3, m: S::Vec3, cos_theta_t: S, eta_ti: S, fma: Fma) -> S::Vec3 {
     let (w, n) = (wi.to_array(), m.to_array());
@@ -145,6 +176,14 @@ pub fn refract<S: Real>(wi: S::Vec3, m: S::Vec3, cos_theta_t: S, eta_ti: S, fma:
 }
 
 /// Mitsuba 3's local-frame `reflect(wi)`: `(-wi.x, -wi.y, wi.z)`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use refraction_kernel::api::mitsuba::reflect_local;
+/// assert_eq!(reflect_local::<f32>(Vec3::new(-0.6, 0.0, 0.8)), Vec3::new(0.6, 0.0, 0.8));
+/// ```
 #[must_use]
 pub fn reflect_local<S: Real>(wi: S::Vec3) -> S::Vec3 {
     let [x, y, z] = wi.to_array();
@@ -152,6 +191,15 @@ pub fn reflect_local<S: Real>(wi: S::Vec3) -> S::Vec3 {
 }
 
 /// Mitsuba 3's `reflect(wi, m)`: `fmsub(m, 2·dot(wi, m), wi)`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::api::mitsuba::{Fma, reflect};
+/// let r = reflect::<f64>(DVec3::new(-0.6, 0.8, 0.0), DVec3::Y, Fma::Fused);
+/// assert_eq!(r, DVec3::new(0.6, 0.8, 0.0));
+/// ```
 #[must_use]
 pub fn reflect<S: Real>(wi: S::Vec3, m: S::Vec3, fma: Fma) -> S::Vec3 {
     let (w, n) = (wi.to_array(), m.to_array());
@@ -173,6 +221,16 @@ pub struct Answer<S: Real> {
 /// `fresnel` then `refract` for `wi` about the normal `m`. With `m` = +z exactly this is the
 /// local-frame pair the dielectric BSDF calls (`cos_theta_i = wi.z`, `refract(wi, cos_theta_t,
 /// eta_ti)`); any other `m` uses `cos_theta_i = dot(wi, m)` and `refract(wi, m, …)`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use refraction_kernel::api::mitsuba::{Fma, answer};
+/// // Inside glass at 45° from the normal: past the critical angle, F = 1.
+/// let wi = Vec3::new(-0.5_f32.sqrt(), 0.0, -0.5_f32.sqrt());
+/// assert_eq!(answer::<f32>(wi, Vec3::Z, 1.5, Fma::Fused).fresnel.f, 1.0);
+/// ```
 #[must_use]
 pub fn answer<S: Real>(wi: S::Vec3, m: S::Vec3, eta: S, fma: Fma) -> Answer<S> {
     let local = m.to_array() == [S::ZERO, S::ZERO, S::ONE];
@@ -191,6 +249,15 @@ pub fn answer<S: Real>(wi: S::Vec3, m: S::Vec3, eta: S, fma: Fma) -> Answer<S> {
 /// terms: the ray travels along −wi; the facing normal is m when wi is on m's side
 /// (cos_theta_i ≥ 0, the exterior) and −m otherwise; μ = eta_ti. Every such call is within
 /// Mitsuba's contract (for unit vectors).
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use refraction_kernel::api::mitsuba::meaning;
+/// let inside = meaning::<f32>(Vec3::new(-0.6, 0.0, -0.8), Vec3::Z, 1.5);
+/// assert_eq!((inside.normal, inside.mu), (-Vec3::Z, 1.5));
+/// ```
 #[must_use]
 pub fn meaning<S: Real>(wi: S::Vec3, m: S::Vec3, eta: S) -> Meaning<S> {
     let outside = Fma::Unfused.dot(wi.to_array(), m.to_array()) >= S::ZERO;

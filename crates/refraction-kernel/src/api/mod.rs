@@ -90,6 +90,19 @@ pub enum Returned<S: Real> {
 impl<S: Real> Returned<S> {
     /// The transmitted direction, or `None` where the API says nothing is transmitted: GLSL's
     /// zero vector, pbrt's `false`, the book's `cannot_refract`, Mitsuba's F = 1.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use refraction_kernel::api::Api;
+    /// // Leaving glass at 45°, past the critical angle, in every API's convention.
+    /// let up = DVec3::new(0.5_f64.sqrt(), 0.5_f64.sqrt(), 0.0);
+    /// for api in Api::ALL {
+    ///     let returned = api.call(api.arguments::<f64>(up, -DVec3::Y, 1.5));
+    ///     assert_eq!(returned.transmitted(), None, "{api:?}");
+    /// }
+    /// ```
     #[must_use]
     pub fn transmitted(&self) -> Option<S::Vec3> {
         match *self {
@@ -103,6 +116,19 @@ impl<S: Real> Returned<S> {
     /// The vector the refraction formula produced, even where the API says not to use it (the
     /// book's `refract` and Mitsuba's `refract` past the critical angle); `None` for pbrt's
     /// `false`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use refraction_kernel::api::Api;
+    /// let up = DVec3::new(0.5_f64.sqrt(), 0.5_f64.sqrt(), 0.0);
+    /// let call = |api: Api| api.call(api.arguments::<f64>(up, -DVec3::Y, 1.5));
+    /// // Past the critical angle GLSL's formula gives zero, the book's a vector longer than 1.
+    /// assert_eq!(call(Api::Glsl).formula(), Some(DVec3::ZERO));
+    /// assert!(call(Api::Rtiow).formula().unwrap().length() > 1.0);
+    /// assert_eq!(call(Api::Pbrt).formula(), None);
+    /// ```
     #[must_use]
     pub fn formula(&self) -> Option<S::Vec3> {
         match *self {
@@ -119,6 +145,13 @@ impl Api {
     pub const ALL: [Self; 4] = [Self::Glsl, Self::Pbrt, Self::Rtiow, Self::Mitsuba];
 
     /// The name on the command line: `glsl`, `pbrt`, `rtiow` or `mitsuba`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::api::Api;
+    /// assert_eq!(Api::ALL.map(Api::name), ["glsl", "pbrt", "rtiow", "mitsuba"]);
+    /// ```
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
@@ -131,6 +164,15 @@ impl Api {
 
     /// The API for a command-line name (any case): its [`name`](Self::name), or for GLSL one of
     /// `hlsl`, `wgsl`, `glm`, `glam`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::api::Api;
+    /// assert_eq!(Api::from_name("HLSL"), Some(Api::Glsl));
+    /// assert_eq!(Api::from_name("pbrt"), Some(Api::Pbrt));
+    /// assert_eq!(Api::from_name("optix"), None);
+    /// ```
     #[must_use]
     pub fn from_name(name: &str) -> Option<Self> {
         let name = name.to_ascii_lowercase();
@@ -141,6 +183,13 @@ impl Api {
     }
 
     /// The call as a student writes it, for titles and messages.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::api::Api;
+    /// assert_eq!(Api::Glsl.signature(), "GLSL refract(I, N, eta)");
+    /// ```
     #[must_use]
     pub fn signature(self) -> &'static str {
         match self {
@@ -155,6 +204,16 @@ impl Api {
 
     /// What this API returns for `args` (Mitsuba's in a scalar build without FMA, see
     /// [`mitsuba::Fma`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use refraction_kernel::api::{Api, Args, Returned};
+    /// let args = Args::<f32> { incident: Vec3::new(0.6, -0.8, 0.0), normal: Vec3::Y, eta: 1.0 / 1.5 };
+    /// let Returned::Glsl(t) = Api::Glsl.call(args) else { unreachable!() };
+    /// assert_eq!(t, args.incident.refract(args.normal, args.eta)); // glam's own, bit for bit
+    /// ```
     #[must_use]
     pub fn call<S: Real>(self, args: Args<S>) -> Returned<S> {
         let Args {
@@ -176,6 +235,19 @@ impl Api {
     }
 
     /// What `args` mean in this project's terms.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use refraction_kernel::api::{Api, Args};
+    /// // pbrt's wi points back along the ray; its eta is inverted when the ray leaves.
+    /// let args = Args { incident: DVec3::new(-0.6, 0.8, 0.0), normal: DVec3::Y, eta: 1.5 };
+    /// let meaning = Api::Pbrt.meaning(args);
+    /// assert_eq!(meaning.travel, DVec3::new(0.6, -0.8, 0.0));
+    /// assert_eq!(meaning.mu, 1.0 / 1.5);
+    /// assert!(meaning.within_contract);
+    /// ```
     #[must_use]
     pub fn meaning<S: Real>(self, args: Args<S>) -> Meaning<S> {
         let Args {
@@ -195,6 +267,18 @@ impl Api {
     /// surface whose normal `facing` is on d's side (d·facing ≤ 0) with μ = n_from/n_to. For
     /// pbrt and Mitsuba the normal passed is `facing` itself (either side would do with the
     /// matching eta).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use refraction_kernel::api::Api;
+    /// let d = Vec3::new(0.6, -0.8, 0.0);
+    /// let pbrt = Api::Pbrt.arguments::<f32>(d, Vec3::Y, 1.0 / 1.5);
+    /// assert_eq!((pbrt.incident, pbrt.normal, pbrt.eta), (-d, Vec3::Y, 1.5));
+    /// let glsl = Api::Glsl.arguments::<f32>(d, Vec3::Y, 1.0 / 1.5);
+    /// assert_eq!(glsl.incident, d);
+    /// ```
     #[must_use]
     pub fn arguments<S: Real>(self, d: S::Vec3, facing: S::Vec3, mu: S) -> Args<S> {
         match self {

@@ -35,6 +35,20 @@ fn dot<S: Real>(n: [S; 3], v: [S; 3]) -> S {
 /// `wi` points back toward where the ray came from (−ray.d), `n` may face either way and `eta`
 /// is the index on the side `n` points away from over the index on the side it points to (the
 /// material's n_inside/n_outside for an outward `n`). Nothing is normalised.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use refraction_kernel::api::pbrt;
+/// // Leaving glass through its outward normal: pbrt flips n and inverts eta.
+/// let wi = -Vec3::new(0.4, 0.84_f32.sqrt(), 0.0);
+/// let r = pbrt::refract::<f32>(wi, Vec3::Y, 1.5).expect("below the critical angle");
+/// assert_eq!(r.etap, 1.0 / 1.5);
+/// assert!((r.wt - Vec3::new(0.6, 0.8, 0.0)).length() < 1e-6);
+/// // Grazing with eta = 1: sin²θt = 1, which pbrt treats as total internal reflection.
+/// assert_eq!(pbrt::refract::<f32>(-Vec3::X, Vec3::Y, 1.0), None);
+/// ```
 #[must_use]
 pub fn refract<S: Real>(wi: S::Vec3, n: S::Vec3, eta: S) -> Option<Refracted<S>> {
     let (wi, mut n, mut eta) = (wi.to_array(), n.to_array(), eta);
@@ -67,6 +81,16 @@ pub fn refract<S: Real>(wi: S::Vec3, n: S::Vec3, eta: S) -> Option<Refracted<S>>
 /// What a call `Refract(wi, n, eta)` means in this project's terms: the ray travels along −wi;
 /// the facing normal is n when wi is on n's side (Dot(n, wi) ≥ 0) and −n otherwise, and μ is
 /// 1/eta or eta accordingly. Every such call is within pbrt's contract (for unit vectors).
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::api::pbrt;
+/// let wi = DVec3::new(-0.6, 0.8, 0.0);
+/// let m = pbrt::meaning::<f64>(wi, -DVec3::Y, 1.5); // the normal below: pbrt flips it
+/// assert_eq!((m.travel, m.normal, m.mu), (-wi, DVec3::Y, 1.5));
+/// ```
 #[must_use]
 pub fn meaning<S: Real>(wi: S::Vec3, n: S::Vec3, eta: S) -> Meaning<S> {
     let above = dot(n.to_array(), wi.to_array()) >= S::ZERO;

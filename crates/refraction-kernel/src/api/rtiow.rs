@@ -26,6 +26,17 @@ fn dot<S: Real>(u: [S; 3], v: [S; 3]) -> S {
 ///
 /// `uv` is the unit direction of travel, `n` a unit normal facing it (the hit record's
 /// `normal` after `set_face_normal`), `etai_over_etat` = n_from/n_to. Nothing is normalised.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::api::rtiow;
+/// let t = rtiow::refract::<f64>(DVec3::new(0.6, -0.8, 0.0), DVec3::Y, 1.0 / 1.5);
+/// assert!((t.x - 0.4).abs() < 1e-15);
+/// // Past the critical angle it still returns a vector, longer than 1.
+/// assert!(rtiow::refract::<f64>(DVec3::new(0.8, 0.6, 0.0), -DVec3::Y, 1.5).length() > 1.0);
+/// ```
 #[must_use]
 pub fn refract<S: Real>(uv: S::Vec3, n: S::Vec3, etai_over_etat: S) -> S::Vec3 {
     let (u, n) = (uv.to_array(), n.to_array());
@@ -40,6 +51,15 @@ pub fn refract<S: Real>(uv: S::Vec3, n: S::Vec3, etai_over_etat: S) -> S::Vec3 {
 /// `dielectric::scatter`'s test `ri * sin_theta > 1.0`, with the same `cos_theta` as
 /// [`refract`]: when it holds the book reflects instead of refracting (a strict `>`, so
 /// `ri·sinθ = 1` exactly still refracts).
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::api::rtiow;
+/// assert!(rtiow::cannot_refract::<f64>(DVec3::new(0.8, 0.6, 0.0), -DVec3::Y, 1.5));
+/// assert!(!rtiow::cannot_refract::<f64>(DVec3::new(0.6, 0.8, 0.0), -DVec3::Y, 1.5));
+/// ```
 #[must_use]
 pub fn cannot_refract<S: Real>(unit_direction: S::Vec3, normal: S::Vec3, ri: S) -> bool {
     let (u, n) = (unit_direction.to_array(), normal.to_array());
@@ -49,6 +69,15 @@ pub fn cannot_refract<S: Real>(unit_direction: S::Vec3, normal: S::Vec3, ri: S) 
 }
 
 /// The book's `reflect(v, n)`: `v - 2*dot(v,n)*n`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::api::rtiow;
+/// let r = rtiow::reflect::<f64>(DVec3::new(0.6, -0.8, 0.0), DVec3::Y);
+/// assert_eq!(r, DVec3::new(0.6, 0.8, 0.0));
+/// ```
 #[must_use]
 pub fn reflect<S: Real>(v: S::Vec3, n: S::Vec3) -> S::Vec3 {
     let (v, n) = (v.to_array(), n.to_array());
@@ -58,6 +87,16 @@ pub fn reflect<S: Real>(v: S::Vec3, n: S::Vec3) -> S::Vec3 {
 }
 
 /// The book's `unit_vector(v)`: `v / v.length()`, where `operator/` multiplies by `1/t`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::api::rtiow;
+/// // It multiplies by 1/5 rather than dividing by 5: x is not 3/5 = 0.6 but one ulp above.
+/// let v = rtiow::unit_vector::<f64>(DVec3::new(3.0, -4.0, 0.0));
+/// assert_eq!((v.x, v.y), (0.600_000_000_000_000_1, -0.8));
+/// ```
 #[must_use]
 pub fn unit_vector<S: Real>(v: S::Vec3) -> S::Vec3 {
     let a = v.to_array();
@@ -76,6 +115,15 @@ pub struct Answer<S: Real> {
 }
 
 /// [`refract`] and [`cannot_refract`] for one set of arguments.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::api::rtiow;
+/// let a = rtiow::answer::<f64>(DVec3::new(0.8, 0.6, 0.0), -DVec3::Y, 1.5);
+/// assert!(a.cannot_refract); // the book reflects and never uses `a.refracted`
+/// ```
 #[must_use]
 pub fn answer<S: Real>(uv: S::Vec3, n: S::Vec3, etai_over_etat: S) -> Answer<S> {
     Answer {
@@ -87,6 +135,16 @@ pub fn answer<S: Real>(uv: S::Vec3, n: S::Vec3, etai_over_etat: S) -> Answer<S> 
 /// What a call `refract(uv, n, etai_over_etat)` means in this project's terms: uv is the
 /// direction of travel, n is taken as the normal facing it and etai_over_etat as μ. Within the
 /// book's contract only when n faces uv (dot(uv, n) ≤ 0), as `set_face_normal` ensures.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use refraction_kernel::api::rtiow;
+/// let uv = DVec3::new(0.6, 0.8, 0.0);
+/// assert!(rtiow::meaning::<f64>(uv, -DVec3::Y, 1.5).within_contract);
+/// assert!(!rtiow::meaning::<f64>(uv, DVec3::Y, 1.5).within_contract); // set_face_normal skipped
+/// ```
 #[must_use]
 pub fn meaning<S: Real>(uv: S::Vec3, n: S::Vec3, etai_over_etat: S) -> Meaning<S> {
     let faces = n.dot(uv) <= S::ZERO;
