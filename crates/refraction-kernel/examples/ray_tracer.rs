@@ -84,10 +84,9 @@ fn step(label: &str, ball: &Ball, p: Vec3, d: Vec3, inside: bool) -> Option<Vec3
         }
         None => {
             let reflected = d - n * (2.0 * d.dot(n));
-            println!(
-                "  total internal reflection (θi above the critical angle {:.2}°): reflected {reflected:.4}",
-                (n_to / n_from).asin().to_degrees()
-            );
+            let critical = (n_to / n_from).asin().to_degrees();
+            println!("  total internal reflection: θi > θc = {critical:.2}°");
+            println!("  reflected = {reflected:.4}");
         }
     }
     t

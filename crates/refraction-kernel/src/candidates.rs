@@ -90,7 +90,9 @@ impl<S: Real> Candidate<S> {
     /// use glam::DVec3;
     /// use refraction_kernel::{Convention, Incidence, refract};
     /// let w = DVec3::new(0.6, -0.8, 0.0);
-    /// let incidence = Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay };
+    /// let incidence = Incidence::<f64> {
+    ///     w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay,
+    /// };
     /// let answer = refract(&incidence)?;
     /// let chosen: Vec<_> = answer.candidates.iter().filter(|c| c.is_chosen()).collect();
     /// assert_eq!(chosen.len(), 1);

@@ -159,7 +159,9 @@ impl<S: Real> Fresnel<S> {
     /// ```
     /// use glam::DVec3;
     /// use refraction_kernel::{Convention, Fresnel, Incidence, refract};
-    /// let from_glass = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.5, mu_t: 1.0, convention: Convention::AlongRay };
+    /// let from_glass = |w| Incidence::<f64> {
+    ///     w, n: DVec3::Y, mu_i: 1.5, mu_t: 1.0, convention: Convention::AlongRay,
+    /// };
     /// let steep = Fresnel::of(&refract(&from_glass(DVec3::new(0.3, 0.91_f64.sqrt(), 0.0)))?);
     /// assert!(steep.transmittance() > 0.9);
     /// let past_critical = refract(&from_glass(DVec3::new(0.8, 0.6, 0.0)))?;

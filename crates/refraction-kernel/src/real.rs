@@ -64,35 +64,108 @@ pub trait Real:
     /// A short name of the precision, as used in JSON: `"f32"` or `"f64"`.
     const NAME: &'static str;
     /// Square root (correctly rounded, IEEE 754).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Real;
+    /// assert_eq!(<f32 as Real>::sqrt(2.25), 1.5);
+    /// ```
     #[must_use]
     fn sqrt(self) -> Self;
     /// Absolute value.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Real;
+    /// assert_eq!(<f64 as Real>::abs(-0.5), 0.5);
+    /// ```
     #[must_use]
     fn abs(self) -> Self;
     /// Whether the value is neither infinite nor NaN.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Real;
+    /// assert!(<f32 as Real>::is_finite(1e38) && !<f32 as Real>::is_finite(f32::INFINITY));
+    /// ```
     #[must_use]
     fn is_finite(self) -> bool;
     /// Whether the value is NaN.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Real;
+    /// assert!(<f64 as Real>::is_nan(f64::NAN) && !<f64 as Real>::is_nan(0.0));
+    /// ```
     #[must_use]
     fn is_nan(self) -> bool;
     /// Whether the sign bit is set (true for −0.0 and for NaN with the sign bit set).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Real;
+    /// assert!(<f32 as Real>::is_sign_negative(-0.0) && !<f32 as Real>::is_sign_negative(0.0));
+    /// ```
     #[must_use]
     fn is_sign_negative(self) -> bool;
     /// `self · a + b` with one rounding (a true fused multiply-add, in software where the CPU
     /// has none): what C's `fma` and Rust's `mul_add` compute. The API adapters need it to
     /// reproduce pbrt-v4 and Mitsuba 3 bit for bit.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Real;
+    /// // One rounding: (1 + ε)(1 − ε) − 1 = −ε² exactly, which a multiply then an add rounds to 0.
+    /// let e = f64::EPSILON;
+    /// assert_eq!(<f64 as Real>::mul_add(1.0 + e, 1.0 - e, -1.0), -e * e);
+    /// ```
     #[must_use]
     fn mul_add(self, a: Self, b: Self) -> Self;
     /// The nearest value of this precision to `x` (may overflow to ±∞).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Real;
+    /// assert_eq!(<f32 as Real>::from_f64(0.1), 0.1_f32);
+    /// assert_eq!(<f32 as Real>::from_f64(1e300), f32::INFINITY);
+    /// ```
     #[must_use]
     fn from_f64(x: f64) -> Self;
     /// The value widened (exactly) to `f64`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Real;
+    /// assert_eq!(Real::to_f64(0.1_f32), 0.100_000_001_490_116_12);
+    /// ```
     #[must_use]
     fn to_f64(self) -> f64;
     /// The larger of two values.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Real;
+    /// assert_eq!(<f64 as Real>::max(0.5, 2.0), 2.0);
+    /// ```
     #[must_use]
     fn max(self, other: Self) -> Self;
     /// The smaller of two values.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Real;
+    /// assert_eq!(<f32 as Real>::min(0.5, 2.0), 0.5);
+    /// ```
     #[must_use]
     fn min(self, other: Self) -> Self;
 }
@@ -131,24 +204,80 @@ pub trait Vector3:
     /// The scalar of this precision (`f32` for `Vec3`, `f64` for `DVec3`).
     type Scalar: Real<Vec3 = Self>;
     /// A vector from its components.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Vector3;
+    /// use glam::{DVec3, Vec3};
+    /// assert_eq!(<Vec3 as Vector3>::new(1.0, 2.0, 3.0), Vec3::new(1.0, 2.0, 3.0));
+    /// ```
     #[must_use]
     fn new(x: Self::Scalar, y: Self::Scalar, z: Self::Scalar) -> Self;
     /// The components `[x, y, z]`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Vector3;
+    /// use glam::{DVec3, Vec3};
+    /// assert_eq!(Vector3::to_array(DVec3::new(1.0, 2.0, 3.0)), [1.0, 2.0, 3.0]);
+    /// ```
     #[must_use]
     fn to_array(self) -> [Self::Scalar; 3];
     /// Dot product.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Vector3;
+    /// use glam::{DVec3, Vec3};
+    /// assert_eq!(Vector3::dot(Vec3::new(0.6, -0.8, 0.0), Vec3::Y), -0.8);
+    /// ```
     #[must_use]
     fn dot(self, other: Self) -> Self::Scalar;
     /// Cross product.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Vector3;
+    /// use glam::{DVec3, Vec3};
+    /// assert_eq!(Vector3::cross(DVec3::X, DVec3::Y), DVec3::Z);
+    /// ```
     #[must_use]
     fn cross(self, other: Self) -> Self;
     /// Squared Euclidean length.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Vector3;
+    /// use glam::{DVec3, Vec3};
+    /// assert_eq!(Vector3::length_squared(Vec3::new(3.0, 4.0, 0.0)), 25.0);
+    /// ```
     #[must_use]
     fn length_squared(self) -> Self::Scalar;
     /// Euclidean length.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Vector3;
+    /// use glam::{DVec3, Vec3};
+    /// assert_eq!(Vector3::length(DVec3::new(3.0, 4.0, 0.0)), 5.0);
+    /// ```
     #[must_use]
     fn length(self) -> Self::Scalar;
     /// Each component divided by `s`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use refraction_kernel::Vector3;
+    /// use glam::{DVec3, Vec3};
+    /// assert_eq!(Vector3::div_scalar(Vec3::new(3.0, -4.0, 0.0), 5.0), Vec3::new(0.6, -0.8, 0.0));
+    /// ```
     #[must_use]
     fn div_scalar(self, s: Self::Scalar) -> Self;
 }

@@ -66,7 +66,9 @@ impl<S: Real> Refraction<S> {
     /// ```
     /// # use glam::DVec3;
     /// # use refraction_kernel::{Convention, Incidence, refract};
-    /// let air = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.5, mu_t: 1.0, convention: Convention::AlongRay };
+    /// let air = |w| Incidence::<f64> {
+    ///     w, n: DVec3::Y, mu_i: 1.5, mu_t: 1.0, convention: Convention::AlongRay,
+    /// };
     /// let t = refract(&air(DVec3::new(0.6, 0.8, 0.0)))?.t().expect("below the critical angle");
     /// assert!((t.x - 0.9).abs() < 1e-15);
     /// assert_eq!(refract(&air(DVec3::new(0.8, 0.6, 0.0)))?.t(), None);
@@ -84,7 +86,9 @@ impl<S: Real> Refraction<S> {
     /// ```
     /// # use glam::DVec3;
     /// # use refraction_kernel::{Convention, Incidence, refract};
-    /// let air = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.5, mu_t: 1.0, convention: Convention::AlongRay };
+    /// let air = |w| Incidence::<f64> {
+    ///     w, n: DVec3::Y, mu_i: 1.5, mu_t: 1.0, convention: Convention::AlongRay,
+    /// };
     /// let r = refract(&air(DVec3::new(0.8, 0.6, 0.0)))?; // 53.13° > 41.8°
     /// assert!(r.is_tir() && r.candidates.is_empty());
     /// assert_eq!(r.reflected, DVec3::new(0.8, -0.6, 0.0));
@@ -102,7 +106,9 @@ impl<S: Real> Refraction<S> {
     /// ```
     /// # use glam::DVec3;
     /// # use refraction_kernel::{Convention, Incidence, refract};
-    /// let glass = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay };
+    /// let glass = |w| Incidence::<f64> {
+    ///     w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay,
+    /// };
     /// let r = refract(&glass(DVec3::new(0.6, -0.8, 0.0)))?;
     /// assert_eq!((r.wn(), r.cos_i), (-0.8, 0.8));
     /// # Ok::<(), refraction_kernel::InputError>(())
@@ -119,7 +125,9 @@ impl<S: Real> Refraction<S> {
     /// ```
     /// # use glam::DVec3;
     /// # use refraction_kernel::{Convention, Incidence, refract};
-    /// let glass = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay };
+    /// let glass = |w| Incidence::<f64> {
+    ///     w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay,
+    /// };
     /// let easy = refract(&glass(DVec3::NEG_Y))?;
     /// assert_eq!(easy.condition_number(), 1.0 + 1.0 / 1.5);
     /// # Ok::<(), refraction_kernel::InputError>(())
@@ -142,7 +150,9 @@ impl<S: Real> Refraction<S> {
     /// ```
     /// # use glam::DVec3;
     /// # use refraction_kernel::{Convention, Incidence, refract};
-    /// let glass = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay };
+    /// let glass = |w| Incidence::<f64> {
+    ///     w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay,
+    /// };
     /// let r = refract(&glass(DVec3::new(0.6, -0.8, 0.0)))?;
     /// assert!(r.checks(r.t().unwrap()).obeys_snell(r.tolerance()));
     /// assert!(r.tolerance() < 1e-12);
@@ -160,7 +170,9 @@ impl<S: Real> Refraction<S> {
     /// ```
     /// # use glam::DVec3;
     /// # use refraction_kernel::{Convention, Incidence, refract};
-    /// let glass = |w| Incidence::<f64> { w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay };
+    /// let glass = |w| Incidence::<f64> {
+    ///     w, n: DVec3::Y, mu_i: 1.0, mu_t: 1.5, convention: Convention::AlongRay,
+    /// };
     /// let r = refract(&glass(DVec3::new(0.6, -0.8, 0.0)))?;
     /// let unbent = r.checks(r.travel); // a ray that ignored the surface
     /// assert!(unbent.is_on_correct_side(0.0) && !unbent.obeys_snell(r.tolerance()));

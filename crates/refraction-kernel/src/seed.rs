@@ -20,8 +20,8 @@ use super::real::{Real, Vector3};
 /// use glam::DVec3;
 /// use refraction_kernel::{Convention, seed};
 /// // Air into glass, W along the ray: a = μ, b = −μ·wn − √k = 0.8/1.5 − √0.84.
-/// let (a, b) = seed::weights(DVec3::new(0.6, -0.8, 0.0), DVec3::Y, 1.0 / 1.5, Convention::AlongRay)
-///     .expect("no TIR here");
+/// let d = DVec3::new(0.6, -0.8, 0.0);
+/// let (a, b) = seed::weights(d, DVec3::Y, 1.0 / 1.5, Convention::AlongRay).expect("no TIR here");
 /// assert_eq!(a, 1.0 / 1.5);
 /// assert!((b - (0.8 / 1.5 - 0.84_f64.sqrt())).abs() < 1e-15);
 /// ```

@@ -125,7 +125,9 @@ proptest! {
     /// The kernel's pbrt-style call against pbrt's own `Refract`: the same etap, the same
     /// answer about total internal reflection, T within the kernel's bound.
     #[test]
-    fn transmit_pbrt_answers_as_pbrt_does(wi in unit_vector(), n in unit_vector(), eta in 0.3..3.0_f64) {
+    fn transmit_pbrt_answers_as_pbrt_does(
+        wi in unit_vector(), n in unit_vector(), eta in 0.3..3.0_f64,
+    ) {
         like_pbrt::<f32>(wi, n, eta)?;
         like_pbrt::<f64>(wi, n, eta)?;
     }

@@ -210,7 +210,8 @@ impl Api {
     /// ```
     /// use glam::Vec3;
     /// use refraction_kernel::api::{Api, Args, Returned};
-    /// let args = Args::<f32> { incident: Vec3::new(0.6, -0.8, 0.0), normal: Vec3::Y, eta: 1.0 / 1.5 };
+    /// let (incident, normal) = (Vec3::new(0.6, -0.8, 0.0), Vec3::Y);
+    /// let args = Args::<f32> { incident, normal, eta: 1.0 / 1.5 };
     /// let Returned::Glsl(t) = Api::Glsl.call(args) else { unreachable!() };
     /// assert_eq!(t, args.incident.refract(args.normal, args.eta)); // glam's own, bit for bit
     /// ```
