@@ -17,7 +17,7 @@
 //! it (unlike pbrt's `eta`): it is always n_from/n_to. T is unit length, never NaN, exactly `d`
 //! when μ = 1, and within 32·ε·κ of the exact ray ([`condition_number`] κ), also where the
 //! textbook formula loses its digits (near-equal indices at grazing incidence, large μ near
-//! normal incidence). Unit vectors and a finite μ > 0 are preconditions, asserted in debug
+//! normal incidence). Unit vectors and ε² ≤ μ ≤ 1/ε² are preconditions, asserted in debug
 //! builds. Around it:
 //!
 //! - [`transmit_pbrt`]: pbrt-v4's `Refract(wi, n, eta, &etap, &wt)` convention (wi pointing

@@ -109,15 +109,15 @@ pub struct Transmitted<S: Real> {
 ///
 /// `Some(Transmitted { t, etap })`, with `t` as [`transmit`] returns it for d = −`wi` and that μ
 /// (unit length, never NaN for inputs that meet the preconditions); pbrt's `*wt` is the same
-/// direction with pbrt's roundings (its `sin2Theta_i = 1 − cos²θi` loses digits near normal
-/// incidence and cancels at grazing incidence).
+/// direction with pbrt's roundings, which lose digits where this does not: 1 − cos²θi near
+/// normal incidence, 1 − sin²θt between near-equal indices at grazing incidence.
 ///
 /// `None` on total internal reflection: sin²θt = sin²θi/etap² ≥ 1, **including sin²θt = 1
 /// exactly**, where pbrt too returns `false` (and [`transmit`] returns a T along the surface);
-/// with `eta` = 1 that is a `wi` in the surface. pbrt computes sin²θi as 1 − cos²θi, which also
-/// turns rays within about √ε of grazing into `false` when `eta` is near 1; this function does
-/// not. For pbrt's own bits, rounding for rounding, see `api::pbrt::refract` (the `api`
-/// feature).
+/// with `eta` = 1 that is a `wi` in the surface. pbrt's rounded sin²θi = 1 − cos²θi is 1 for
+/// every ray within about √ε of grazing, so with `eta` = 1 it returns `false` for all of them
+/// (for `f32`, cosθi below about 2.4e-4); this function transmits them. For pbrt's own bits,
+/// rounding for rounding, see `api::pbrt::refract` (the `api` feature).
 ///
 /// # Panics
 ///

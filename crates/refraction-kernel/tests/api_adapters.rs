@@ -179,7 +179,7 @@ fn like_pbrt<S: Real>(wi: DVec3, n: DVec3, eta: f64) -> Result<(), TestCaseError
         }
         (None, None) => {}
         // Rounding may decide differently within a few ulps of the critical angle, and pbrt's
-        // 1 − cos²θi turns rays within about √ε of grazing into `false` when eta is near 1.
+        // 1 − cos²θi rounds to 1 within about √ε of grazing, `false` with eta near 1.
         (ours, theirs) => prop_assert!(
             k.abs() < 1e3 * eps || cos_i.abs() < 4.0 * eps.sqrt(),
             "{ours:?} {theirs:?} k = {k:e}"
@@ -294,4 +294,14 @@ fn total_internal_reflection_as_each_api_signals_it() {
     assert_eq!(formula(Api::Pbrt), None);
     assert!(formula(Api::Rtiow).unwrap().length() > 1.1);
     assert!(formula(Api::Mitsuba).unwrap().length() > 1.0);
+}
+
+/// pbrt's rounded 1 − cos²θi is 1 for a ray 1e-4 from grazing in f32, so with eta = 1 its
+/// `Refract` returns `false`; the kernel's pbrt-style call transmits the ray unchanged.
+#[test]
+fn near_grazing_at_eta_one_pbrt_refuses_and_transmit_pbrt_transmits() {
+    let d = Vec3::new(1.0, -1e-4, 0.0).normalize();
+    assert_eq!(pbrt::refract::<f32>(-d, Vec3::Y, 1.0), None);
+    let ours = transmit_pbrt(-d, Vec3::Y, 1.0).expect("the ray crosses the surface");
+    assert_eq!((ours.t, ours.etap), (d, 1.0));
 }
