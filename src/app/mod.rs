@@ -260,6 +260,18 @@ impl Explorer {
         &self.presentation
     }
 
+    /// The presentation settings, to change them as the bar's controls do (they take effect
+    /// on the next frame).
+    pub fn presentation_mut(&mut self) -> &mut Presentation {
+        &mut self.presentation
+    }
+
+    /// Explores `state` from now on, as opening a state file does; the undo history records
+    /// the change once the frame ends.
+    pub fn set_state(&mut self, state: ExplorerState) {
+        self.state = state;
+    }
+
     /// What is drawn over the diagram now: palette, view, the student's T, the highlights.
     #[must_use]
     pub fn overlay(&self) -> Overlay {

@@ -1,9 +1,6 @@
 //! Running the command end to end, for the CLI tests: on a file (`check --api`), or `render`
 //! into a folder of the test's own.
 
-// Every test file compiles this module into its own crate and uses only some of the helpers.
-#![allow(dead_code)]
-
 use std::path::PathBuf;
 use std::process::{Command, Output};
 use std::sync::atomic::{AtomicUsize, Ordering};

@@ -2,7 +2,7 @@
 //! (lavapipe: `.ci/run` installs it), at 1280×720 and 1920×1080, at the desk and in
 //! presentation. A change to the layout shows in review as a changed PNG under
 //! `tests/snapshots/`; after a deliberate change, regenerate them with
-//! `UPDATE_SNAPSHOTS=1 cargo test --test snapshots` and look at each one before committing.
+//! `UPDATE_SNAPSHOTS=1 cargo test --test integration snapshots` and look at each one before committing.
 
 use egui::Vec2;
 use egui_kittest::{Harness, SnapshotOptions};

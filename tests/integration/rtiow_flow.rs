@@ -3,7 +3,7 @@
 //! three injected bugs, a printf log of every refract call, and `check --api rtiow --pattern`
 //! naming each bug on every line it touches.
 
-mod cli;
+use crate::cli;
 
 use cli::{answers, run};
 use glam::DVec3;

@@ -1,7 +1,7 @@
 //! `render` for slides end to end: SVG by the file's extension (the diagram and a scene, labels
 //! as editable text), and `--animate` GIFs with the requested size and frame count.
 
-mod cli;
+use crate::cli;
 
 use cli::render;
 use std::path::{Path, PathBuf};

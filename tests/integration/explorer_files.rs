@@ -2,7 +2,7 @@
 //! saved and opened bit for bit, bad files refused, share strings and code snippets. No display
 //! and no GPU needed.
 
-mod common;
+use crate::common;
 
 use common::{click, harness, leaving_glass, type_into, undo};
 use egui_kittest::kittest::Queryable;

@@ -2,7 +2,7 @@
 //! SVG where they are text), what scripts read does not (`check`'s JSON), and an unknown code
 //! is refused with the codes there are.
 
-mod cli;
+use crate::cli;
 
 use cli::{render, run};
 

@@ -3,7 +3,7 @@
 //! reflects nothing), the Wavefronts switch, and Export animation with its progress and Cancel;
 //! at the desk and in presentation at 1280×720.
 
-mod common;
+use crate::common;
 
 use common::{center_of, click, drag, harness, harness_for, harness_sized as sized, replace_text};
 use egui::{Role, Vec2};

@@ -1,7 +1,7 @@
 //! The explorer's classroom tools driven headlessly with egui_kittest: undo and redo,
 //! presentation mode and themes, the walk-through. No display and no GPU needed.
 
-mod common;
+use crate::common;
 
 use common::{center_of, click, drag, harness, type_into, undo};
 use egui::{Key, Modifiers, Role, Vec2};

@@ -15,7 +15,7 @@
 //!
 //! Run with `--nocapture` to see the measured figures.
 
-mod common;
+use crate::common;
 
 use common::harness_sized;
 use egui::{Rect as EguiRect, Role, Shape};
@@ -141,7 +141,11 @@ fn set_up(h: &mut Harness<'_, Explorer>, present: bool, theme: &str, tool: Optio
         h.key_press(egui::Key::Escape);
         h.run();
     }
-    // A few more frames: panels settle their sizes over a frame or two.
+    settle(h);
+}
+
+/// A few more frames: panels settle their sizes over a frame or two.
+fn settle(h: &mut Harness<'_, Explorer>) {
     for _ in 0..3 {
         h.run();
     }
@@ -482,24 +486,30 @@ fn report(measured: Vec<(String, Measured)>) {
 }
 
 /// The interface view over `states` in the thread's language, at both sizes, at the desk and
-/// in presentation, with each tool open in turn, the themes taken in turn.
+/// in presentation, with each tool open in turn, the themes taken in turn. One window per
+/// size, mode and tool, whose state and theme are switched through the model, as a teacher
+/// switches lessons in one window.
 fn audit_interface(states: &[ExplorerState]) -> Vec<(String, Measured)> {
     let (themes, language) = (themes(), refraction_i18n::locale());
     let mut measured = Vec::new();
     for size in SIZES {
         for present in [false, true] {
             for (t, tool) in tools().into_iter().enumerate() {
+                let mut h = harness_sized(Explorer::new(states[0].clone()), size);
+                set_up(&mut h, present, &themes[t % themes.len()], tool.as_deref());
                 for (i, state) in states.iter().enumerate() {
-                    let theme = &themes[(i + t) % themes.len()];
-                    let mut h = harness_sized(Explorer::new(state.clone()), size);
-                    set_up(&mut h, present, theme, tool.as_deref());
+                    let theme = (i + t) % themes.len();
+                    h.state_mut().set_state(state.clone());
+                    h.state_mut().presentation_mut().theme = Theme::ALL[theme];
+                    settle(&mut h);
                     let what = format!(
-                        "{language} {}×{} {} {}, state {i}, {theme}",
+                        "{language} {}×{} {} {}, state {i}, {}",
                         size.0,
                         size.1,
                         if present { "presentation" } else { "desk" },
                         tool.as_ref()
                             .map_or("no tool".to_owned(), |t| format!("tool {t}")),
+                        themes[theme],
                     );
                     let m = measure(&h, &what, present, tool.is_some(), false);
                     measured.push((what, m));
@@ -516,21 +526,21 @@ fn the_interface_view_owns_the_screen_and_nothing_covers_anything() {
 }
 
 /// The Scenes view, every built-in scene (the droplet at 1,000 rays), in the thread's
-/// language.
+/// language: one window per size and mode, each scene opened in it in turn.
 fn audit_scenes() -> Vec<(String, Measured)> {
     let (themes, language) = (themes(), refraction_i18n::locale());
     let mut measured = Vec::new();
     for size in SIZES {
         for present in [false, true] {
+            let mut h = harness_sized(Explorer::new(ExplorerState::default()), size);
+            set_up(&mut h, present, &themes[0], None);
             for info in refraction_scene::catalogue() {
                 let mut scene = Scene::embedded(info.name).unwrap();
                 if info.name == "droplet" {
                     scene.set_ray_count(1000).unwrap();
                 }
-                let mut explorer = Explorer::new(ExplorerState::default());
-                explorer.open_scene(scene);
-                let mut h = harness_sized(explorer, size);
-                set_up(&mut h, present, &themes[0], None);
+                h.state_mut().open_scene(scene);
+                settle(&mut h);
                 let what = format!(
                     "{language} {}×{} {} scene {}",
                     size.0,

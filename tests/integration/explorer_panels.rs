@@ -1,7 +1,7 @@
 //! The explorer's panels driven headlessly with egui_kittest: the candidates table and typed
 //! values and vectors. No display and no GPU needed.
 
-mod common;
+use crate::common;
 
 use common::{center_of, harness, type_into};
 use egui::Pos2;

@@ -2,7 +2,7 @@
 //! θi and an index typed with a decimal comma, and the language menu, whose choice the next
 //! run keeps and which wins over the system's language.
 
-mod common;
+use crate::common;
 
 use common::{click, harness_for, type_into};
 use egui::Role;

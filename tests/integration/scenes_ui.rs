@@ -1,7 +1,7 @@
 //! The Scenes view driven headlessly with egui_kittest: picking a scene, dragging the source,
 //! clicking a hit point to open it in the single-interface view. No display and no GPU needed.
 
-mod common;
+use crate::common;
 
 use common::{click, drag, harness_for, press_move_release};
 use egui::{Pos2, Vec2};

@@ -2,7 +2,7 @@
 //! convention mix-up named and drawn, whole JSON lines opened, bad ones refused. No display and
 //! no GPU needed.
 
-mod common;
+use crate::common;
 
 use common::{click, harness, type_into};
 use egui_kittest::Harness;

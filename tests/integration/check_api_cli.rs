@@ -1,7 +1,7 @@
 //! `check --api` end to end: answers in the API's terms, the tally of mistakes by code on
 //! stderr, the exit status, `--pattern` with `--strict`, and CSV.
 
-mod cli;
+use crate::cli;
 
 use cli::{answers, run};
 

@@ -2,7 +2,7 @@
 //! the window keeps drawing frames, then the verdict, plot and table appear. No time is
 //! asserted; the test only waits (up to a generous limit) for the measurement to finish.
 
-mod common;
+use crate::common;
 
 use std::time::{Duration, Instant};
 

@@ -1,9 +1,6 @@
 //! Helpers shared by the headless UI tests: the explorer's window at the tests' size, pointer
 //! drags, typing, clicks and undo, and the states several tests start from.
 
-// Every test file compiles this module into its own crate and uses only some of the helpers.
-#![allow(dead_code)]
-
 use egui::{Key, Modifiers, Pos2, Role, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;

@@ -1,6 +1,6 @@
 //! The `render` command end to end: a PNG of the diagram or of a traced scene without a window.
 
-mod cli;
+use crate::cli;
 
 use cli::render;
 use std::path::PathBuf;

@@ -2,7 +2,7 @@
 //! convention switch turning W around, the keyboard turning the selected handle. No display and
 //! no GPU needed.
 
-mod common;
+use crate::common;
 
 use common::{center_of, drag, harness, leaving_glass};
 use egui::{Key, Modifiers, Pos2, Role, Vec2};
