@@ -12,7 +12,7 @@ use super::typed::status;
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 use crate::app::snippets;
 use crate::lines::state_file::{self, LoadError};
-use refraction_diagram::ExplorerState;
+use refraction_model::ExplorerState;
 
 /// The file name offered first.
 pub const DEFAULT_PATH: &str = "refraction-state.json";

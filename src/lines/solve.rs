@@ -12,8 +12,8 @@ use serde::de::IgnoredAny;
 use serde_json::Value;
 
 use crate::lines::fields::{self, Field, Fields};
-use refraction_diagram::fresnel_plot::SpecialAngles;
 use refraction_kernel::{Convention, Fresnel, Incidence, Real, Refraction, Vector3, refract};
+use refraction_model::SpecialAngles;
 
 /// The floating-point precision a problem is solved in.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

@@ -7,7 +7,7 @@ use std::path::Path;
 use glam::DVec3;
 
 use crate::lines::solve::{Precision, Request};
-use refraction_diagram::ExplorerState;
+use refraction_model::ExplorerState;
 
 /// Reads a state from JSON text.
 ///
@@ -60,7 +60,7 @@ pub enum LoadError {
 /// when [`parse`] refuses it.
 pub fn open(path: &Path) -> Result<ExplorerState, LoadError> {
     let shown = || path.display().to_string();
-    let text = refraction_scene::read_capped(path, MAX_STATE_FILE_BYTES, "a state file").map_err(
+    let text = refraction_files::read_capped(path, MAX_STATE_FILE_BYTES, "a state file").map_err(
         |source| LoadError::Read {
             path: shown(),
             source,
@@ -107,7 +107,7 @@ pub fn to_json(state: &ExplorerState) -> String {
 /// The file cannot be written; the message names it.
 pub fn save(state: &ExplorerState, path: &Path) -> Result<(), String> {
     let text = to_json(state) + "\n";
-    refraction_render::atomic::write_atomically(path, text.as_bytes()).map_err(|e| e.to_string())
+    refraction_files::write_atomically(path, text.as_bytes()).map_err(|e| e.to_string())
 }
 
 #[cfg(test)]

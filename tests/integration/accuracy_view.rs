@@ -7,7 +7,7 @@ use crate::common;
 use std::time::{Duration, Instant};
 
 use egui_kittest::kittest::Queryable;
-use refraction_diagram::ExplorerState;
+use refraction_model::ExplorerState;
 
 #[test]
 fn measuring_shows_progress_then_the_verdict() {

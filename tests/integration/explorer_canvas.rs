@@ -8,8 +8,9 @@ use common::{center_of, drag, harness, leaving_glass};
 use egui::{Key, Modifiers, Pos2, Role, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use refraction_diagram::{ExplorerState, Layout};
+use refraction_diagram::Layout;
 use refraction_explorer::app::Explorer;
+use refraction_model::ExplorerState;
 
 /// The screen position of the hit point, from the canvas (named by its summary) and the
 /// diagram's layout for its size.

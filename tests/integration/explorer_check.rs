@@ -8,8 +8,8 @@ use common::{click, harness, type_into};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use glam::DVec3;
-use refraction_diagram::ExplorerState;
 use refraction_explorer::app::Explorer;
+use refraction_model::ExplorerState;
 
 /// The case of the default state as the check panel's fields and a T, checked.
 fn check_t(h: &mut Harness<'_, Explorer>, t: &str) {

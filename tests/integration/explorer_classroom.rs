@@ -7,8 +7,8 @@ use common::{center_of, click, drag, harness, type_into, undo};
 use egui::{Key, Modifiers, Role, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use refraction_diagram::ExplorerState;
 use refraction_explorer::app::Explorer;
+use refraction_model::ExplorerState;
 
 fn redo(h: &mut Harness<'_, Explorer>) {
     h.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z);

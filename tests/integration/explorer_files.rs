@@ -7,7 +7,7 @@ use crate::common;
 use common::{click, harness, leaving_glass, type_into, undo};
 use egui_kittest::kittest::Queryable;
 use glam::DVec3;
-use refraction_diagram::ExplorerState;
+use refraction_model::ExplorerState;
 
 fn temp_file(name: &str) -> std::path::PathBuf {
     std::env::temp_dir().join(format!("explorer-ui-{}-{name}", std::process::id()))

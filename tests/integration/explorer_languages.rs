@@ -7,9 +7,9 @@ use crate::common;
 use common::{click, harness_for, type_into};
 use egui::Role;
 use egui_kittest::kittest::Queryable;
-use refraction_diagram::ExplorerState;
 use refraction_explorer::app::{Explorer, Launch};
 use refraction_i18n::{Locale, t};
+use refraction_model::ExplorerState;
 
 /// An explorer that opens as a real run does, on a German system, with nothing saved.
 fn german_system() -> Explorer {

@@ -7,7 +7,7 @@ use common::{center_of, harness, type_into};
 use egui::Pos2;
 use egui_kittest::kittest::Queryable;
 use glam::DVec3;
-use refraction_diagram::ExplorerState;
+use refraction_model::ExplorerState;
 
 #[test]
 fn the_table_has_four_rows_with_the_right_marks() {

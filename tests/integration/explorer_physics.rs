@@ -10,10 +10,11 @@ use egui::{Role, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use glam::{DVec3, Vec2 as GVec2};
+use refraction_diagram::Diagram;
 use refraction_diagram::intensities::{Polarisation, Shares};
 use refraction_diagram::shapes::Figure;
-use refraction_diagram::{Diagram, ExplorerState};
 use refraction_explorer::app::Explorer;
+use refraction_model::ExplorerState;
 
 const FRESNEL: &str = "Fresnel";
 const EFFECTS: &str = "Effects";

@@ -26,10 +26,11 @@ use refraction_diagram::font::Typeface;
 use refraction_diagram::geometry::Rect;
 use refraction_diagram::palette::Theme;
 use refraction_diagram::shapes::{Figure, Label};
-use refraction_diagram::{Diagram, ExplorerState, Primitive, SceneLayout, ScenePicture};
+use refraction_diagram::{Diagram, Primitive, SceneLayout, ScenePicture};
 use refraction_explorer::app::Explorer;
 use refraction_i18n::{Locale, t};
 use refraction_kernel::Convention;
+use refraction_model::ExplorerState;
 use refraction_scene::Scene;
 
 const SIZES: [(f32, f32); 2] = [(1280.0, 720.0), (1920.0, 1080.0)];

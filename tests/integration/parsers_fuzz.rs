@@ -10,11 +10,11 @@ use std::io::Write;
 
 use glam::DVec3;
 use proptest::prelude::*;
-use refraction_diagram::ExplorerState;
 use refraction_explorer::lines::api_check::{Format, Options, Pattern, Session};
 use refraction_explorer::lines::{check, solve, state_file};
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
+use refraction_model::ExplorerState;
 use serde_json::Value;
 
 const CASES: u32 = 384;

@@ -7,8 +7,8 @@ use common::{click, drag, harness_for, press_move_release};
 use egui::{Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use refraction_diagram::ExplorerState;
 use refraction_explorer::app::{Explorer, View};
+use refraction_model::ExplorerState;
 use refraction_scene::{Scene, Side};
 
 fn droplet() -> Harness<'static, Explorer> {

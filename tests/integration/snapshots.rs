@@ -6,8 +6,8 @@
 
 use egui::Vec2;
 use egui_kittest::{Harness, SnapshotOptions};
-use refraction_diagram::Lesson;
 use refraction_explorer::app::{self, Explorer, Launch};
+use refraction_model::Lesson;
 
 const SIZES: [(f32, f32); 2] = [(1280.0, 720.0), (1920.0, 1080.0)];
 

@@ -17,12 +17,12 @@ use crate::lines::api_check::record::Value;
 use crate::lines::api_check::{Call, Diagnosis, Options, Record, check_record};
 use crate::lines::state_file;
 use crate::lines::vector_text::{spoken, spoken_vector};
-use refraction_diagram::ExplorerState;
-use refraction_diagram::model::INDEX_RANGE;
 use refraction_diagram::overlay::{StudentRay, VectorNames};
 use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::{Api, Args};
+use refraction_model::ExplorerState;
+use refraction_model::INDEX_RANGE;
 use serde_json::Value as Json;
 
 /// The truth fields the panel offers (`path` and `point` belong to logs of whole paths).

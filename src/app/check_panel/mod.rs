@@ -17,12 +17,12 @@ use super::typed::error_label;
 use crate::lines::check::{self, Match, Verdict};
 use crate::lines::solve::{Precision, Request};
 use crate::lines::state_file;
-use refraction_diagram::ExplorerState;
 use refraction_diagram::numbers::vector;
 use refraction_diagram::overlay::StudentRay;
 use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
+use refraction_model::ExplorerState;
 
 /// Whose fields the panel reads.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

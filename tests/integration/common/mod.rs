@@ -5,8 +5,8 @@ use egui::{Key, Modifiers, Pos2, Role, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use glam::DVec3;
-use refraction_diagram::ExplorerState;
 use refraction_explorer::app::Explorer;
+use refraction_model::ExplorerState;
 
 /// The window showing `explorer`, `size` points in the light theme with the window's fonts,
 /// after its first frame.

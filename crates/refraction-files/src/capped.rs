@@ -1,13 +1,9 @@
-//! Reading a text file with a size cap, so that a huge file or an endless one (`/dev/zero`) is
+//! Reading a file with a size cap, so that a huge file or an endless one (`/dev/zero`) is
 //! refused rather than read into memory. Scene files and the explorer's state files are read
 //! this way.
 
 use std::io::{self, Read};
 use std::path::Path;
-
-/// The largest scene file [`crate::Scene::load`] reads: 1 MiB (the built-in scenes are under
-/// 4 KiB).
-pub const MAX_SCENE_FILE_BYTES: u64 = 1 << 20;
 
 /// `bytes` for messages: whole mebibytes as `N MiB`, anything else in bytes.
 fn size_text(bytes: u64) -> String {
