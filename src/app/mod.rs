@@ -34,7 +34,6 @@ pub use fonts::install as install_fonts;
 
 use egui::{Panel, RichText, ScrollArea, Ui};
 
-use crate::lines::state_file;
 use accuracy::AccuracyView;
 use controls::Controls;
 use export::AnimationExport;
@@ -47,6 +46,7 @@ use refraction_diagram::palette::Theme;
 use refraction_i18n::{Locale, t};
 use refraction_model::ExplorerState;
 use refraction_scene::Scene;
+use refraction_tools::state_file;
 pub use scenes::ScenesView;
 use tools::Tools;
 

@@ -5,11 +5,11 @@ use std::io::{self, BufRead, Write};
 use std::path::Path;
 use std::process::ExitCode;
 
-use refraction_explorer::lines::api_check::{Format, Options, Pattern, Session};
-use refraction_explorer::lines::check::{self, Match};
-use refraction_explorer::lines::solve::Precision;
-use refraction_explorer::lines::{self as jsonl, LinesError, solve as solver};
 use refraction_kernel::api::Api;
+use refraction_tools::api_check::{Format, Options, Pattern, Session};
+use refraction_tools::check::{self, Match};
+use refraction_tools::solve::Precision;
+use refraction_tools::{self as jsonl, LinesError, solve as solver};
 
 use super::{fail, output, output_error};
 

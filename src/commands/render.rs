@@ -9,12 +9,12 @@ use refraction_diagram::Overlay;
 use refraction_diagram::animation::Animation;
 use refraction_diagram::palette::Theme;
 use refraction_explorer::app::{self, Launch, View};
-use refraction_explorer::lines::state_file;
 use refraction_i18n::Locale;
 use refraction_model::ExplorerState;
 use refraction_render::animation::AnimationSpec;
 use refraction_render::{self as render, format::ImageFormat};
 use refraction_scene::Scene;
+use refraction_tools::state_file;
 
 use super::output::ProgressLine;
 use super::{fail, output, output_error};

@@ -339,16 +339,16 @@ fn interface_sources() -> Vec<PathBuf> {
     rust_files(&root().join("crates/refraction-diagram/src"), &mut files);
     // The sentences of "Check my T" that the window shows (and `check` prints in English).
     for file in [
-        "src/lines/check.rs",
-        "src/lines/api_check/explain.rs",
-        "src/lines/api_check/code.rs",
-        "src/lines/api_check/call.rs",
-        "src/lines/api_check/csv.rs",
-        "src/lines/api_check/mod.rs",
-        "src/lines/api_check/pattern.rs",
-        "src/lines/api_check/record.rs",
-        "src/lines/api_check/result.rs",
-        "src/lines/vector_text.rs",
+        "crates/refraction-tools/src/check.rs",
+        "crates/refraction-tools/src/api_check/explain.rs",
+        "crates/refraction-tools/src/api_check/code.rs",
+        "crates/refraction-tools/src/api_check/call.rs",
+        "crates/refraction-tools/src/api_check/csv.rs",
+        "crates/refraction-tools/src/api_check/mod.rs",
+        "crates/refraction-tools/src/api_check/pattern.rs",
+        "crates/refraction-tools/src/api_check/record.rs",
+        "crates/refraction-tools/src/api_check/result.rs",
+        "crates/refraction-tools/src/vector_text.rs",
     ] {
         files.push(root().join(file));
     }

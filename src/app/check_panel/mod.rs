@@ -4,7 +4,7 @@
 //! etai_over_etat, refracted`, Mitsuba's `wi, n, eta, wo`, with the optional truth). The
 //! explorer opens that case, drawn in the convention in use (shown in the panel), says what is
 //! wrong and why, and draws the student's vector beside the right one. The verdicts are those of
-//! [`crate::lines::check`] and [`crate::lines::api_check`], so the window and `check` agree.
+//! [`refraction_tools::check`] and [`refraction_tools::api_check`], so the window and `check` agree.
 
 mod api;
 mod bulk;
@@ -14,15 +14,15 @@ use glam::DVec3;
 
 use super::paint::verdict_colour;
 use super::typed::error_label;
-use crate::lines::check::{self, Match, Verdict};
-use crate::lines::solve::{Precision, Request};
-use crate::lines::state_file;
 use refraction_diagram::numbers::vector;
 use refraction_diagram::overlay::StudentRay;
 use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
 use refraction_model::ExplorerState;
+use refraction_tools::check::{self, Match, Verdict};
+use refraction_tools::solve::{Precision, Request};
+use refraction_tools::state_file;
 
 /// Whose fields the panel reads.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -4,8 +4,8 @@
 
 pub mod api;
 
-use crate::lines::solve::Request;
 use refraction_kernel::{Convention, refract};
+use refraction_tools::solve::Request;
 
 /// A number as a float literal that Rust, GLSL and C++ all read back exactly (`1.0`, `0.1`,
 /// `1e-7`; never `1`).
@@ -128,7 +128,7 @@ pub fn test_vector(request: &Request) -> Result<String, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lines::solve::Precision;
+    use refraction_tools::solve::Precision;
 
     fn request(w: [f64; 3], n: [f64; 3], convention: Convention) -> Request {
         Request {

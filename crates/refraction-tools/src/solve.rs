@@ -11,7 +11,7 @@ use serde::Serialize;
 use serde::de::IgnoredAny;
 use serde_json::Value;
 
-use crate::lines::fields::{self, Field, Fields};
+use crate::fields::{self, Field, Fields};
 use refraction_kernel::{Convention, Fresnel, Incidence, Real, Refraction, Vector3, refract};
 use refraction_model::SpecialAngles;
 
@@ -297,13 +297,13 @@ pub fn answer(line: &str) -> Result<String, String> {
 }
 
 /// Answers every non-empty line of `input` on `output`, on every core
-/// ([`crate::lines::threads`]) and in input order (see [`crate::lines::answer_lines`]).
+/// ([`crate::threads`]) and in input order (see [`crate::answer_lines`]).
 /// Returns whether every line was solved.
 ///
 /// # Errors
 /// Reading `input` or writing `output` failed.
-pub fn run(input: impl Read, output: impl Write) -> Result<bool, crate::lines::LinesError> {
-    crate::lines::answer_lines(input, output, crate::lines::threads(), answer, |r| r)
+pub fn run(input: impl Read, output: impl Write) -> Result<bool, crate::LinesError> {
+    crate::answer_lines(input, output, crate::threads(), answer, |r| r)
 }
 
 #[cfg(test)]

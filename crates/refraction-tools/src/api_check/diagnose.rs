@@ -11,9 +11,9 @@ use super::code::Code;
 use super::explain;
 use super::readings::{Reading, Tolerance, readings, undo};
 use super::result::{Returns, Seen, returns, transmitted_by};
-use crate::lines::check::{self, Match};
-use crate::lines::solve::{Precision, Request};
-use crate::lines::vector_text::{angle, length};
+use crate::check::{self, Match};
+use crate::solve::{Precision, Request};
+use crate::vector_text::{angle, length};
 
 /// What a wrong result looks like.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -92,7 +92,7 @@ fn resemblance<S: Real>(call: &Call, r: &Returns, v: DVec3) -> Resemblance {
         .transmitted
         .or_else(|| r.nearby.iter().flatten().next().copied())
         .unwrap_or(DVec3::ZERO);
-    let n = crate::lines::vector_text::unit(call.api.meaning(call.args).normal);
+    let n = crate::vector_text::unit(call.api.meaning(call.args).normal);
     let along = n * (2.0 * p.dot(n));
     let shapes = [
         (p - along, Resemblance::OtherRoot),

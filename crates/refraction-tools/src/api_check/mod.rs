@@ -36,7 +36,7 @@ pub use diagnose::{Diagnosis, diagnose};
 pub use pattern::Pattern;
 pub use record::Record;
 
-use crate::lines::check::{self, Match};
+use crate::check::{self, Match};
 
 /// The JSON answer for one call.
 #[derive(Serialize)]
@@ -296,7 +296,7 @@ impl Session {
     }
 
     /// Answers every non-empty line of `input` on `output` in order, the lines judged on
-    /// `threads` threads (see [`crate::lines::answer_lines`]); returns whether every line was
+    /// `threads` threads (see [`crate::answer_lines`]); returns whether every line was
     /// answered. Call [`Session::finish`] after it.
     ///
     /// # Errors
@@ -306,9 +306,9 @@ impl Session {
         input: impl std::io::Read,
         output: impl std::io::Write,
         threads: usize,
-    ) -> Result<bool, crate::lines::LinesError> {
+    ) -> Result<bool, crate::LinesError> {
         let (reader, books) = (&self.reader, &mut self.books);
-        crate::lines::answer_lines(
+        crate::answer_lines(
             input,
             output,
             threads,

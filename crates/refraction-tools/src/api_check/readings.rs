@@ -7,7 +7,7 @@ use refraction_kernel::api::{Api, Args, Meaning};
 
 use super::call::Call;
 use super::code::Code;
-use crate::lines::vector_text::{angle, length, unit};
+use crate::vector_text::{angle, length, unit};
 
 /// The mistakes a call's arguments can have, in the order they are undone.
 const ARGUMENT_MISTAKES: [Code; 4] = [
@@ -175,8 +175,8 @@ pub fn readings(call: &Call, tolerance: &Tolerance) -> Vec<Reading> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lines::api_check::call::{Got, Truth};
-    use crate::lines::solve::Precision;
+    use crate::api_check::call::{Got, Truth};
+    use crate::solve::Precision;
 
     fn glsl(i: DVec3, n: DVec3, eta: f64, truth: Truth) -> Call {
         Call {

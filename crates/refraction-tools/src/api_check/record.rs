@@ -6,7 +6,7 @@ use refraction_kernel::api::Api;
 use serde_json::Value as Json;
 
 use super::fields::{self, Kind};
-use crate::lines::vector_text::{digits_of, parse_number, parse_vector};
+use crate::vector_text::{digits_of, parse_number, parse_vector};
 
 /// One field's value.
 #[derive(Clone, Debug, PartialEq)]
@@ -141,8 +141,7 @@ impl Record {
     /// # Errors
     /// Malformed JSON (with its column), not an object, or an ill-typed field.
     pub fn from_json_line(api: Api, line: &str) -> Result<Self, String> {
-        let value: Json =
-            serde_json::from_str(line).map_err(|e| crate::lines::fields::json_error(&e))?;
+        let value: Json = serde_json::from_str(line).map_err(|e| crate::fields::json_error(&e))?;
         let listed = || fields::listed(api);
         let object = value
             .as_object()

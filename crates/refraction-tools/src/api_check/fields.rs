@@ -3,7 +3,7 @@
 
 use refraction_kernel::api::Api;
 
-use crate::lines::solve::Precision;
+use crate::solve::Precision;
 
 /// The kind of value a field holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -155,7 +155,7 @@ impl Header {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lines::api_check::record::Value;
+    use crate::api_check::record::Value;
 
     #[test]
     fn vectors_in_one_column_or_three() {

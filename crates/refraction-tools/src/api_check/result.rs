@@ -10,7 +10,7 @@ use serde_json::{Value as Json, json};
 
 use super::call::{Call, Got};
 use super::readings::Tolerance;
-use crate::lines::vector_text::{angle, length};
+use crate::vector_text::{angle, length};
 
 /// What the API returns for the logged arguments, and how sure that is.
 #[derive(Clone, Debug, PartialEq)]

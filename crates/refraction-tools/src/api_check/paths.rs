@@ -13,8 +13,8 @@ use serde::Serialize;
 use super::call::Call;
 use super::code::Code;
 use super::diagnose::Diagnosis;
-use crate::lines::check::MATCH_ANGLE;
-use crate::lines::vector_text::{angle, short, short_vector, unit};
+use crate::check::MATCH_ANGLE;
+use crate::vector_text::{angle, short, short_vector, unit};
 
 /// Hits kept per path for the sphere retrace; longer paths are retraced through their surfaces.
 const MAX_KEPT: usize = 4096;

@@ -8,7 +8,7 @@ use refraction_kernel::api::{Api, Args};
 
 use super::fields::{self, names};
 use super::record::{Record, Value};
-use crate::lines::solve::Precision;
+use crate::solve::Precision;
 
 /// What the command line adds to every line.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -9,7 +9,7 @@ use super::diagnose::Resemblance;
 use super::fields::names;
 use super::readings::{Reading, normal_points_inward};
 use super::result::{Returns, Seen};
-use crate::lines::vector_text::{length, spoken, spoken_vector};
+use crate::vector_text::{length, spoken, spoken_vector};
 use refraction_i18n::t;
 
 /// Everything the explanation draws on.
@@ -343,7 +343,7 @@ fn unexplained(ctx: &Context<'_>) -> String {
     let (call, n) = (ctx.call, names(ctx.call.api));
     let m = call.api.meaning(call.args);
     if let Some(travel) = call.truth.travel {
-        let d = crate::lines::vector_text::angle(m.travel, travel).to_degrees();
+        let d = crate::vector_text::angle(m.travel, travel).to_degrees();
         if (3.0..177.0).contains(&d) {
             return t!("check-unexplained-travel",
                 incident = n.incident,

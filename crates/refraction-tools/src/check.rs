@@ -4,9 +4,9 @@
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
-use crate::lines::fields;
-use crate::lines::solve::{Precision, Request};
-use crate::lines::vector_text;
+use crate::fields;
+use crate::solve::{Precision, Request};
+use crate::vector_text;
 use refraction_i18n::{decimal, t};
 use refraction_kernel::{Incidence, Real, Rejection, Vector3, refract};
 

@@ -1,5 +1,9 @@
-//! JSON Lines: the `solve` and `check` commands' requests and answers, and the explorer's state
-//! file (one `solve` line). [`answer_lines`] is the loop both commands share: one answer per
+//! The refraction explorer's tools, with no window: the JSON Lines of the `solve` and `check`
+//! commands (requests, answers, the verdicts of `check`), `check --api`'s reading of a student's
+//! call in their own API's terms ([`api_check`]: JSON, log patterns, CSV), and the explorer's
+//! state file (one `solve` line). The window's *Check my T* panel calls the same functions, so
+//! the window and the commands agree.
+//! [`answer_lines`] is the loop both commands share: one answer per
 //! non-empty input line, in order, streaming, with bad lines answered rather than fatal.
 
 pub mod api_check;

@@ -6,7 +6,7 @@ use std::path::Path;
 
 use glam::DVec3;
 
-use crate::lines::solve::{Precision, Request};
+use crate::solve::{Precision, Request};
 use refraction_model::ExplorerState;
 
 /// Reads a state from JSON text.
