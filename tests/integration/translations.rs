@@ -85,7 +85,10 @@ fn messages(path: &Path) -> Result<Messages, String> {
 }
 
 fn locale_file(locale: Locale, file: &str) -> PathBuf {
-    root().join("assets/locales").join(locale.code()).join(file)
+    root()
+        .join("crates/refraction-i18n/locales")
+        .join(locale.code())
+        .join(file)
 }
 
 /// English's messages, all files together.
@@ -378,7 +381,7 @@ fn the_window_and_the_diagram_hold_no_text_of_their_own() {
     }
     assert!(
         problems.is_empty(),
-        "{} literals read as text; put them in assets/locales/*/ and ask with t!:\n{}",
+        "{} literals read as text; put them in crates/refraction-i18n/locales/*/ and ask with t!:\n{}",
         problems.len(),
         problems.join("\n")
     );
