@@ -42,7 +42,11 @@ fn open_failed(error: &LoadError) -> String {
             t!("files-cannot-read-state", path = path, reason = reason)
         }
         LoadError::Refused { path, reason } => {
-            t!("files-state-refused", path = path, reason = reason)
+            t!(
+                "files-state-refused",
+                path = path,
+                reason = reason.to_string()
+            )
         }
     }
 }
@@ -91,7 +95,7 @@ impl FilesPanel {
         self.status = Some(
             state_file::save(state, path)
                 .map(|()| t!("files-saved", path = &shown))
-                .map_err(|reason| t!("files-not-saved", reason = reason)),
+                .map_err(|reason| t!("files-not-saved", reason = reason.to_string())),
         );
     }
 
@@ -139,7 +143,7 @@ impl FilesPanel {
                     *state = pasted;
                     t!("files-share-applied")
                 })
-                .map_err(|reason| t!("files-share-refused", reason = reason)),
+                .map_err(|reason| t!("files-share-refused", reason = reason.to_string())),
         );
     }
 

@@ -8,6 +8,7 @@ use std::process::ExitCode;
 use refraction_kernel::api::Api;
 use refraction_tools::api_check::{Format, Options, Pattern, Session};
 use refraction_tools::check::{self, Match};
+use refraction_tools::error::CheckError;
 use refraction_tools::solve::Precision;
 use refraction_tools::{self as jsonl, LinesError, solve as solver};
 
@@ -130,7 +131,7 @@ pub fn check(file: Option<&Path>) -> ExitCode {
     };
     let mut tally: BTreeMap<&'static str, usize> = BTreeMap::new();
     let mut all_ok = true;
-    let finish = |answer: Result<(String, check::Verdict), String>| {
+    let finish = |answer: Result<(String, check::Verdict), CheckError>| {
         let (kind, reply) = match answer {
             Ok((text, verdict)) => {
                 all_ok &= verdict.ok;

@@ -164,7 +164,10 @@ impl<'a> Destination<'a> {
 }
 
 fn initial_state(path: Option<&Path>) -> Result<ExplorerState, String> {
-    path.map_or_else(|| Ok(ExplorerState::default()), state_file::load)
+    path.map_or_else(
+        || Ok(ExplorerState::default()),
+        |p| state_file::open(p).map_err(|e| e.to_string()),
+    )
 }
 
 /// The picture asked for, as the bytes of a `format` file: `scene` traced, or else the state
@@ -256,7 +259,7 @@ pub fn explorer(window: &Window) -> ExitCode {
     let launch = window
         .state
         .as_deref()
-        .map(state_file::load)
+        .map(|p| state_file::open(p).map_err(|e| e.to_string()))
         .transpose()
         .map(|state| Launch {
             state,

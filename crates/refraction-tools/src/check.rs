@@ -4,6 +4,7 @@
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
+use crate::error::{CheckError, RequestError, VectorError};
 use crate::fields;
 use crate::solve::{Precision, Request};
 use crate::vector_text;
@@ -72,8 +73,8 @@ fn wide<S: Real>(v: S::Vec3) -> glam::DVec3 {
     glam::DVec3::from_array(v.to_array().map(Real::to_f64))
 }
 
-fn verdict_in<S: Real>(incidence: &Incidence<S>, yours: [f64; 3]) -> Result<Verdict, String> {
-    let r = refract(incidence).map_err(|e| e.to_string())?;
+fn verdict_in<S: Real>(incidence: &Incidence<S>, yours: [f64; 3]) -> Result<Verdict, RequestError> {
+    let r = refract(incidence)?;
     let (ok, matches, explanation) = if yours.iter().any(|c| !c.is_finite()) {
         (false, None, not_finite(r.is_tir()))
     } else if r.is_tir() {
@@ -198,7 +199,7 @@ fn diagnose_unmatched<S: Real>(
 ///
 /// # Errors
 /// The request cannot be refracted (see [`Request::incidence`] and [`refract`]).
-pub fn check(request: &Request, yours: [f64; 3]) -> Result<Verdict, String> {
+pub fn check(request: &Request, yours: [f64; 3]) -> Result<Verdict, RequestError> {
     match request.precision {
         Precision::F32 => verdict_in(&request.incidence::<f32>()?, yours),
         Precision::F64 => verdict_in(&request.incidence::<f64>()?, yours),
@@ -211,7 +212,7 @@ pub fn check(request: &Request, yours: [f64; 3]) -> Result<Verdict, String> {
 ///
 /// # Errors
 /// A message saying what was found instead of three numbers.
-pub fn parse_vector(text: &str) -> Result<[f64; 3], String> {
+pub fn parse_vector(text: &str) -> Result<[f64; 3], VectorError> {
     vector_text::parse_vector(text).map(|v| v.value)
 }
 
@@ -220,7 +221,7 @@ pub fn parse_vector(text: &str) -> Result<[f64; 3], String> {
 ///
 /// # Errors
 /// A message naming what was found instead.
-pub fn vector_from_json(value: &Value) -> Result<[f64; 3], String> {
+pub fn vector_from_json(value: &Value) -> Result<[f64; 3], VectorError> {
     match value {
         Value::String(text) => parse_vector(text),
         Value::Array(items) if items.len() == 3 => {
@@ -228,19 +229,18 @@ pub fn vector_from_json(value: &Value) -> Result<[f64; 3], String> {
             for (i, (slot, item)) in out.iter_mut().zip(items).enumerate() {
                 *slot = match item {
                     Value::Null => f64::NAN,
-                    other => other.as_f64().ok_or_else(|| {
-                        t!("check-t-yours-item-not-number", index = i.to_string())
-                    })?,
+                    other => other
+                        .as_f64()
+                        .ok_or(VectorError::ItemNotNumber { index: i })?,
                 };
             }
             Ok(out)
         }
-        Value::Array(items) => {
-            let n = items.len();
-            let e = t!("check-field-not-three", field = "t_yours", count = n);
-            Err(e)
-        }
-        _ => Err(t!("check-field-not-a-vector", field = "t_yours")),
+        Value::Array(items) => Err(VectorError::FieldNotThree {
+            field: "t_yours",
+            count: items.len(),
+        }),
+        _ => Err(VectorError::FieldNotAVector { field: "t_yours" }),
     }
 }
 
@@ -258,14 +258,14 @@ pub(crate) struct Answer<'a> {
 ///
 /// # Errors
 /// Malformed JSON, or a missing or ill-typed field; the message names it.
-pub fn parse_line(line: &str) -> Result<(Request, [f64; 3]), String> {
+pub fn parse_line(line: &str) -> Result<(Request, [f64; 3]), CheckError> {
     let fields = fields::read::<Given>(line)?;
     let request = Request::from_fields(&fields)?;
     let yours = fields
         .extra
         .0
-        .ok_or_else(|| t!("check-t-yours-missing"))
-        .and_then(|value| vector_from_json(&value))?;
+        .ok_or(CheckError::MissingYours)
+        .and_then(|value| Ok(vector_from_json(&value)?))?;
     Ok((request, yours))
 }
 
@@ -284,16 +284,19 @@ impl<'de> Deserialize<'de> for Given {
 ///
 /// # Errors
 /// Why the line cannot be judged (malformed JSON, a missing or ill-typed field, bad input).
-pub fn answer(line: &str) -> Result<(String, Verdict), String> {
+pub fn answer(line: &str) -> Result<(String, Verdict), CheckError> {
     let (request, yours) = parse_line(line)?;
     let verdict = check(&request, yours)?;
-    let text = serde_json::to_string(&Answer {
+    let answer = Answer {
         ok: verdict.ok,
         matches: verdict.matches.map(Match::name),
         explanation: &verdict.explanation,
         t: verdict.correct,
-    })
-    .map_err(|e| e.to_string())?;
+    };
+    // serde_json fails only on a map with keys that are not strings or on a Serialize that
+    // fails: the answer has neither.
+    // untranslated: a message for a developer, never shown
+    let text = serde_json::to_string(&answer).expect("an answer serializes");
     Ok((text, verdict))
 }
 
@@ -314,10 +317,16 @@ mod tests {
             assert_eq!(parse_vector(text), Ok([0.1, -0.9, 0.0]), "{text}");
         }
         assert!(parse_vector("nan, 0, 1").unwrap()[0].is_nan());
-        assert!(parse_vector("1, 2").unwrap_err().contains("found 2"));
+        assert!(
+            parse_vector("1, 2")
+                .unwrap_err()
+                .to_string()
+                .contains("found 2")
+        );
         assert!(
             parse_vector("1, x, 2")
                 .unwrap_err()
+                .to_string()
                 .contains("\"x\" is not a number")
         );
     }

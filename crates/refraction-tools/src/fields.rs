@@ -8,10 +8,11 @@
 
 use std::fmt;
 
+use crate::error::JsonError;
+
 use serde::Deserialize;
 use serde::de::value::MapAccessDeserializer;
 use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
-use serde_json::error::Category;
 
 /// How many items of an array are kept: the vectors have three.
 const KEPT_ITEMS: usize = 3;
@@ -216,34 +217,16 @@ impl<'de, X: Deserialize<'de> + Default> Deserialize<'de> for Object<X> {
     }
 }
 
-/// The message for a serde_json error: malformed JSON with its place (`at column C` on one
-/// line, `at line L, column C` in a file of several), or else the message alone (a field's
-/// problem, whose place the message already names).
-pub(crate) fn json_error(error: &serde_json::Error) -> String {
-    let text = error.to_string();
-    let message = text
-        .rfind(" at line ")
-        .map_or(text.as_str(), |i| &text[..i]);
-    match (error.classify(), error.line()) {
-        (Category::Data, _) => message.to_owned(),
-        (_, 0 | 1) => format!("malformed JSON at column {}: {message}", error.column()),
-        (_, line) => format!(
-            "malformed JSON at line {line}, column {}: {message}",
-            error.column()
-        ),
-    }
-}
-
 /// Reads the fields of one line (or of a whole state file).
 ///
 /// # Errors
 /// Malformed JSON with its place, or not a JSON object.
 pub(crate) fn read<X: for<'de> Deserialize<'de> + Default>(
     text: &str,
-) -> Result<Fields<X>, String> {
+) -> Result<Fields<X>, JsonError> {
     serde_json::from_str::<Object<X>>(text)
         .map(|o| o.0)
-        .map_err(|e| json_error(&e))
+        .map_err(|e| JsonError::from(&e))
 }
 
 /// Reads the fields of a parsed JSON value.
@@ -252,10 +235,10 @@ pub(crate) fn read<X: for<'de> Deserialize<'de> + Default>(
 /// Not a JSON object.
 pub(crate) fn from_value<X: for<'de> Deserialize<'de> + Default>(
     value: &serde_json::Value,
-) -> Result<Fields<X>, String> {
+) -> Result<Fields<X>, JsonError> {
     Object::<X>::deserialize(value)
         .map(|o| o.0)
-        .map_err(|e| json_error(&e))
+        .map_err(|e| JsonError::from(&e))
 }
 
 #[cfg(test)]
@@ -284,18 +267,22 @@ mod tests {
         assert_eq!(fields.mu_t, Field::Absent);
         let err = read::<IgnoredAny>("[1, 2]").map(|_| ()).unwrap_err();
         assert_eq!(
-            err,
+            err.to_string(),
             "expected a JSON object with fields w, n, mu_i, mu_t; got an array"
         );
     }
 
     #[test]
     fn malformed_json_names_the_line_only_when_there_are_several() {
-        let err = read::<IgnoredAny>("{\"w\": }").map(|_| ()).unwrap_err();
+        let err = read::<IgnoredAny>("{\"w\": }")
+            .map(|_| ())
+            .unwrap_err()
+            .to_string();
         assert!(err.starts_with("malformed JSON at column 7:"), "{err}");
         let err = read::<IgnoredAny>("{\n  \"w\": [1, 0, 0],\n  \"n\": [0 1 0]\n}")
             .map(|_| ())
-            .unwrap_err();
+            .unwrap_err()
+            .to_string();
         assert!(
             err.starts_with("malformed JSON at line 3, column 11:"),
             "{err}"

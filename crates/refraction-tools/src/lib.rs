@@ -8,6 +8,7 @@
 
 pub mod api_check;
 pub mod check;
+pub mod error;
 mod fields;
 pub mod solve;
 pub mod state_file;
@@ -201,12 +202,12 @@ pub fn threads() -> usize {
 ///
 /// # Errors
 /// Reading `input` or writing `output` failed.
-pub fn answer_lines<W: Send>(
+pub fn answer_lines<W: Send, E: std::fmt::Display>(
     input: impl Read,
     output: impl Write,
     threads: usize,
     work: impl Fn(&str) -> W + Sync,
-    mut finish: impl FnMut(W) -> Result<String, String>,
+    mut finish: impl FnMut(W) -> Result<String, E>,
 ) -> Result<bool, LinesError> {
     let mut input = io::BufReader::with_capacity(READ_BUFFER_BYTES, input);
     // One write per chunk, not one per line (stdout is line-buffered: two system calls a line).
@@ -219,7 +220,7 @@ pub fn answer_lines<W: Send>(
             let reply = match outcome {
                 Outcome::Blank => continue,
                 Outcome::Bad(message) => Err(message),
-                Outcome::Done(result) => finish(result),
+                Outcome::Done(result) => finish(result).map_err(|e| e.to_string()),
             };
             let text = reply.unwrap_or_else(|message| {
                 all_answered = false;
@@ -254,7 +255,7 @@ mod tests {
             &mut out,
             2,
             |line| line.len(),
-            |len| Ok(format!("{{\"len\":{len}}}")),
+            |len| Ok::<_, String>(format!("{{\"len\":{len}}}")),
         )
         .unwrap();
         let lines = String::from_utf8(out)
@@ -299,7 +300,7 @@ mod tests {
             let finish = |parsed: Result<usize, String>| {
                 let k = parsed?;
                 order.push(k);
-                Ok(format!("{{\"k\":{k}}}"))
+                Ok::<_, String>(format!("{{\"k\":{k}}}"))
             };
             let all = answer_lines(text.as_bytes(), &mut out, threads, work, finish).unwrap();
             (all, String::from_utf8(out).unwrap(), order)
@@ -342,7 +343,7 @@ mod tests {
 
     #[test]
     fn read_and_write_errors_are_told_apart() {
-        let echo = |l: &str| Ok(l.to_owned());
+        let echo = |l: &str| Ok::<_, String>(l.to_owned());
         let err = answer_lines(io::BufReader::new(Failing), Vec::new(), 2, echo, |r| r);
         assert!(matches!(err, Err(LinesError::Read(_))), "{err:?}");
         let mut full = [0_u8; 4];

@@ -11,6 +11,7 @@ use serde::Serialize;
 use serde::de::IgnoredAny;
 use serde_json::Value;
 
+use crate::error::RequestError;
 use crate::fields::{self, Field, Fields};
 use refraction_kernel::{Convention, Fresnel, Incidence, Real, Refraction, Vector3, refract};
 use refraction_model::SpecialAngles;
@@ -53,34 +54,33 @@ pub struct Request {
     pub precision: Precision,
 }
 
-fn missing(name: &str) -> String {
-    format!("missing field `{name}`")
-}
-
-fn number(field: &Field, name: &str) -> Result<f64, String> {
-    match field {
-        Field::Number(x) => Ok(*x),
-        Field::Absent => Err(missing(name)),
-        other => Err(format!("`{name}` must be a number, got {}", other.kind())),
+fn wrong_kind(field: &str, expected: &'static str, got: &Field) -> RequestError {
+    RequestError::WrongKind {
+        field: field.to_owned(),
+        expected,
+        got: got.kind(),
     }
 }
 
-fn vector(field: &Field, name: &str) -> Result<[f64; 3], String> {
+fn number(field: &Field, name: &str) -> Result<f64, RequestError> {
+    match field {
+        Field::Number(x) => Ok(*x),
+        Field::Absent => Err(RequestError::Missing(name.to_owned())),
+        other => Err(wrong_kind(name, "a number", other)),
+    }
+}
+
+fn vector(field: &Field, name: &str) -> Result<[f64; 3], RequestError> {
     let (items, len) = match field {
         Field::Array { items, len } => (items, *len),
-        Field::Absent => return Err(missing(name)),
-        other => {
-            return Err(format!(
-                "`{name}` must be an array of 3 numbers, got {}",
-                other.kind()
-            ));
-        }
+        Field::Absent => return Err(RequestError::Missing(name.to_owned())),
+        other => return Err(wrong_kind(name, "an array of 3 numbers", other)),
     };
     if len != 3 {
-        return Err(format!(
-            "`{name}` must be an array of exactly 3 numbers, got {len} element{}",
-            if len == 1 { "" } else { "s" }
-        ));
+        return Err(RequestError::NotThree {
+            field: name.to_owned(),
+            len,
+        });
     }
     let mut out = [0.0; 3];
     for (i, item) in items.iter().enumerate() {
@@ -89,11 +89,11 @@ fn vector(field: &Field, name: &str) -> Result<[f64; 3], String> {
     Ok(out)
 }
 
-fn optional_name<'a>(field: &'a Field, name: &str) -> Result<Option<&'a str>, String> {
+fn optional_name<'a>(field: &'a Field, name: &str) -> Result<Option<&'a str>, RequestError> {
     match field {
         Field::Absent | Field::Null => Ok(None),
         Field::Text(s) => Ok(Some(s)),
-        other => Err(format!("`{name}` must be a string, got {}", other.kind())),
+        other => Err(wrong_kind(name, "a string", other)),
     }
 }
 
@@ -102,32 +102,24 @@ impl Request {
     ///
     /// # Errors
     /// A message naming the field that is missing or ill-typed.
-    pub fn from_value(value: &Value) -> Result<Self, String> {
+    pub fn from_value(value: &Value) -> Result<Self, RequestError> {
         Self::from_fields(&fields::from_value::<IgnoredAny>(value)?)
     }
 
     /// The request in fields read from a line, checked in a fixed order (convention,
     /// precision, w, n, mu_i, mu_t) so that a line with several problems always names the same
     /// one.
-    pub(crate) fn from_fields<X>(fields: &Fields<X>) -> Result<Self, String> {
+    pub(crate) fn from_fields<X>(fields: &Fields<X>) -> Result<Self, RequestError> {
         let convention = match optional_name(&fields.convention, "convention")? {
             None => Convention::default(),
-            Some(name) => Convention::from_name(name).ok_or_else(|| {
-                format!(
-                    "unknown convention \"{name}\": expected \"along_ray\" (W is the direction \
-                     of travel) or \"toward_origin\" (W points back to the ray's origin)"
-                )
-            })?,
+            Some(name) => Convention::from_name(name)
+                .ok_or_else(|| RequestError::UnknownConvention(name.to_owned()))?,
         };
         let precision = match optional_name(&fields.precision, "precision")? {
             None => Precision::default(),
             Some("f64") => Precision::F64,
             Some("f32") => Precision::F32,
-            Some(name) => {
-                return Err(format!(
-                    "unknown precision \"{name}\": expected \"f64\" or \"f32\""
-                ));
-            }
+            Some(name) => return Err(RequestError::UnknownPrecision(name.to_owned())),
         };
         Ok(Self {
             w: vector(&fields.w, "w")?,
@@ -145,7 +137,7 @@ impl Request {
     /// # Errors
     /// Malformed JSON (with its column, and its line when there are several), or a message
     /// naming the field that is missing or ill-typed.
-    pub fn parse(line: &str) -> Result<Self, String> {
+    pub fn parse(line: &str) -> Result<Self, RequestError> {
         Self::from_fields(&fields::read::<IgnoredAny>(line)?)
     }
 
@@ -168,16 +160,20 @@ impl Request {
     ///
     /// # Errors
     /// A number that is finite as written but overflows `S`.
-    pub fn incidence<S: Real>(&self) -> Result<Incidence<S>, String> {
-        let convert = |value: f64, name: String| {
+    pub fn incidence<S: Real>(&self) -> Result<Incidence<S>, RequestError> {
+        let convert = |value: f64, field: String| {
             let converted = S::from_f64(value);
             if value.is_finite() && !converted.is_finite() {
-                Err(format!("{name} = {value:e} is too large for {}", S::NAME))
+                Err(RequestError::TooLarge {
+                    field,
+                    value,
+                    precision: S::NAME,
+                })
             } else {
                 Ok(converted)
             }
         };
-        let vec = |v: [f64; 3], name: &str| -> Result<S::Vec3, String> {
+        let vec = |v: [f64; 3], name: &str| -> Result<S::Vec3, RequestError> {
             Ok(S::Vec3::new(
                 convert(v[0], format!("{name}[0]"))?,
                 convert(v[1], format!("{name}[1]"))?,
@@ -279,16 +275,19 @@ impl<S: Real> From<&Refraction<S>> for Answer<S> {
     }
 }
 
-fn answer_in<S: Real + Serialize>(request: &Request) -> Result<String, String> {
-    let refraction = refract(&request.incidence::<S>()?).map_err(|e| e.to_string())?;
-    serde_json::to_string(&Answer::from(&refraction)).map_err(|e| e.to_string())
+fn answer_in<S: Real + Serialize>(request: &Request) -> Result<String, RequestError> {
+    let refraction = refract(&request.incidence::<S>()?)?;
+    // serde_json fails only on a map with keys that are not strings or on a Serialize that
+    // fails: the answer has neither.
+    // untranslated: a message for a developer, never shown
+    Ok(serde_json::to_string(&Answer::from(&refraction)).expect("an answer serializes"))
 }
 
 /// The JSON answer (without newline) to one input line, or the message for its error line.
 ///
 /// # Errors
 /// Why the line cannot be solved, naming the offending field or value.
-pub fn answer(line: &str) -> Result<String, String> {
+pub fn answer(line: &str) -> Result<String, RequestError> {
     let request = Request::parse(line)?;
     match request.precision {
         Precision::F32 => answer_in::<f32>(&request),
@@ -311,7 +310,7 @@ mod tests {
     use super::*;
 
     fn error_of(line: &str) -> String {
-        answer(line).unwrap_err()
+        answer(line).unwrap_err().to_string()
     }
 
     #[test]

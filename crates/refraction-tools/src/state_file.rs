@@ -6,6 +6,7 @@ use std::path::Path;
 
 use glam::DVec3;
 
+use crate::error::RequestError;
 use crate::solve::{Precision, Request};
 use refraction_model::ExplorerState;
 
@@ -14,7 +15,7 @@ use refraction_model::ExplorerState;
 /// # Errors
 /// Malformed JSON, a missing or ill-typed field, or input the kernel refuses; the message names
 /// what was wrong.
-pub fn parse(text: &str) -> Result<ExplorerState, String> {
+pub fn parse(text: &str) -> Result<ExplorerState, RequestError> {
     // Not trimmed: JSON allows the white space around it, and a leading blank line would shift
     // the line numbers of malformed JSON.
     let request = Request::parse(text)?;
@@ -25,7 +26,7 @@ pub fn parse(text: &str) -> Result<ExplorerState, String> {
         request.mu_t,
         request.convention,
     )
-    .map_err(|e| e.to_string())
+    .map_err(RequestError::from)
 }
 
 /// The largest state file [`load`] reads: 1 MiB (a state is one line of about 150 bytes).
@@ -48,8 +49,8 @@ pub enum LoadError {
     Refused {
         /// The file, as displayed.
         path: String,
-        /// [`parse`]'s message (naming the line and column of malformed JSON).
-        reason: String,
+        /// Why [`parse`] refused it (malformed JSON names its line and column).
+        reason: RequestError,
     },
 }
 
@@ -70,14 +71,6 @@ pub fn open(path: &Path) -> Result<ExplorerState, LoadError> {
         path: shown(),
         reason,
     })
-}
-
-/// [`open`] with the error in words, as the command line reports it.
-///
-/// # Errors
-/// As [`open`]; the message names the file (and malformed JSON its line and column).
-pub fn load(path: &Path) -> Result<ExplorerState, String> {
-    open(path).map_err(|e| e.to_string())
 }
 
 /// The state as a `solve` request (in f64, the explorer's precision).
@@ -104,10 +97,10 @@ pub fn to_json(state: &ExplorerState) -> String {
 /// half-written file.
 ///
 /// # Errors
-/// The file cannot be written; the message names it.
-pub fn save(state: &ExplorerState, path: &Path) -> Result<(), String> {
+/// The file cannot be written (see [`refraction_files::write_atomically`]).
+pub fn save(state: &ExplorerState, path: &Path) -> std::io::Result<()> {
     let text = to_json(state) + "\n";
-    refraction_files::write_atomically(path, text.as_bytes()).map_err(|e| e.to_string())
+    refraction_files::write_atomically(path, text.as_bytes())
 }
 
 #[cfg(test)]
@@ -120,12 +113,21 @@ mod tests {
         let mut state = ExplorerState::default();
         state.set_convention(Convention::TowardOrigin);
         assert_eq!(parse(&to_json(&state)).unwrap(), state);
-        assert_eq!(parse(r#"{"w":[1,0,0]}"#).unwrap_err(), "missing field `n`");
-        let err = parse(r#"{"w":[1,-1,0],"n":[0,1,0],"mu_i":-1,"mu_t":1}"#).unwrap_err();
+        assert_eq!(
+            parse(r#"{"w":[1,0,0]}"#).unwrap_err(),
+            RequestError::Missing("n".into())
+        );
+        let err = parse(r#"{"w":[1,-1,0],"n":[0,1,0],"mu_i":-1,"mu_t":1}"#)
+            .unwrap_err()
+            .to_string();
         assert!(err.starts_with("mu_i is -1"), "{err}");
-        let err = load(Path::new("/nonexistent/state.json")).unwrap_err();
+        let err = open(Path::new("/nonexistent/state.json"))
+            .unwrap_err()
+            .to_string();
         assert!(err.starts_with("cannot read state file /nonexistent/state.json"));
-        let err = save(&state, Path::new("/nonexistent/state.json")).unwrap_err();
+        let err = save(&state, Path::new("/nonexistent/state.json"))
+            .unwrap_err()
+            .to_string();
         assert!(err.contains("/nonexistent/state.json"), "{err}");
     }
 
@@ -139,18 +141,18 @@ mod tests {
             "\n{\n  \"w\": [0.6, -0.8, 0],\n  \"n\": [0, 1 0],\n  \"mu_i\": 1, \"mu_t\": 1.5\n}\n",
         )
         .unwrap();
-        let err = load(&path).unwrap_err();
+        let err = open(&path).unwrap_err().to_string();
         assert!(
             err.contains("state.json: malformed JSON at line 4, column 14"),
             "{err}"
         );
         std::fs::write(&path, " ".repeat(2 << 20)).unwrap();
-        let err = load(&path).unwrap_err();
+        let err = open(&path).unwrap_err().to_string();
         assert!(
             err.contains("state.json") && err.contains("larger than 1 MiB"),
             "{err}"
         );
-        let err = load(&folder).unwrap_err();
+        let err = open(&folder).unwrap_err().to_string();
         assert!(err.contains(&folder.display().to_string()), "{err}");
         std::fs::remove_dir_all(&folder).unwrap();
     }
@@ -169,7 +171,7 @@ mod tests {
         let path =
             std::env::temp_dir().join(format!("state-file-test-{}.json", std::process::id()));
         save(&state, &path).unwrap();
-        let back = load(&path).unwrap();
+        let back = open(&path).unwrap();
         std::fs::remove_file(&path).unwrap();
         assert_eq!(back, state);
         assert_eq!(back.w().z.to_bits(), state.w().z.to_bits());

@@ -8,6 +8,7 @@
 //! an optional type name: `x y z`, `x, y, z`, `[ x, y, z ]`, `(x, y, z)`, `vec3(x, y, z)`,
 //! `glm::vec3(...)`, `Vec3 { x: .., y: .., z: .. }`.
 
+use crate::error::VectorError;
 use glam::DVec3;
 use refraction_i18n::t;
 
@@ -78,7 +79,7 @@ fn hexadecimal(word: &str) -> Option<f64> {
 ///
 /// # Errors
 /// The word is not a number; the message quotes it.
-pub fn parse_number(word: &str) -> Result<Number, String> {
+pub fn parse_number(word: &str) -> Result<Number, VectorError> {
     let word = word.trim();
     if let Some(value) = special(word) {
         return Ok(Number { value, digits: 0 });
@@ -103,7 +104,9 @@ pub fn parse_number(word: &str) -> Result<Number, String> {
                 digits: decimal_digits(mantissa),
             })
         }
-        _ => Err(t!("check-word-not-a-number", word = word)),
+        _ => Err(VectorError::NotANumber {
+            word: word.to_owned(),
+        }),
     }
 }
 
@@ -140,7 +143,7 @@ fn vector_body(text: &str) -> &str {
 }
 
 /// The components of `Vec3 { x: 1, y: 2, z: 3 }`'s body, or `None` when it has no names.
-fn named_components(body: &str) -> Option<Result<Vec<&str>, String>> {
+fn named_components(body: &str) -> Option<Result<Vec<&str>, VectorError>> {
     if !body.contains(':') {
         return None;
     }
@@ -154,13 +157,12 @@ fn named_components(body: &str) -> Option<Result<Vec<&str>, String>> {
         .zip(["x", "y", "z"])
         .map(|(part, expected)| match part.split_once(':') {
             Some((name, value)) if name.trim().eq_ignore_ascii_case(expected) => Ok(value.trim()),
-            _ => {
-                let (x, f) = (expected, *part);
-                let e = t!("check-vector-expected-named", expected = x, found = f);
-                Err(e)
-            }
+            _ => Err(VectorError::ExpectedNamed {
+                expected,
+                found: (*part).to_owned(),
+            }),
         })
-        .collect::<Result<Vec<&str>, String>>();
+        .collect::<Result<Vec<&str>, VectorError>>();
     Some(values.map(|v| if parts.len() == 3 { v } else { parts.clone() }))
 }
 
@@ -168,10 +170,13 @@ fn named_components(body: &str) -> Option<Result<Vec<&str>, String>> {
 ///
 /// # Errors
 /// A message saying what was found instead of three numbers.
-pub fn parse_vector(text: &str) -> Result<Vector, String> {
+pub fn parse_vector(text: &str) -> Result<Vector, VectorError> {
     let trimmed = text.trim();
     let body = vector_body(trimmed.trim_end_matches([';', ',']).trim_end());
-    let within = |e: String| t!("check-vector-within", error = e, text = trimmed);
+    let within = |error: VectorError| VectorError::Within {
+        error: Box::new(error),
+        text: trimmed.to_owned(),
+    };
     let words: Vec<&str> = match named_components(body) {
         Some(named) => named.map_err(within)?,
         None => body
@@ -180,8 +185,10 @@ pub fn parse_vector(text: &str) -> Result<Vector, String> {
             .collect(),
     };
     if words.len() != 3 {
-        let n = words.len();
-        return Err(t!("check-vector-not-three", count = n, text = trimmed));
+        return Err(VectorError::NotThree {
+            count: words.len(),
+            text: trimmed.to_owned(),
+        });
     }
     let mut value = [0.0; 3];
     let mut digits = 0;
@@ -354,15 +361,22 @@ mod tests {
 
     #[test]
     fn what_is_not_a_vector_says_why() {
-        assert!(parse_vector("1, 2").unwrap_err().contains("found 2"));
+        assert!(
+            parse_vector("1, 2")
+                .unwrap_err()
+                .to_string()
+                .contains("found 2")
+        );
         assert!(
             parse_vector("1, x, 2")
                 .unwrap_err()
+                .to_string()
                 .contains("\"x\" is not a number")
         );
         assert!(
             parse_vector("Vec3 { x: 1, w: 2, z: 3 }")
                 .unwrap_err()
+                .to_string()
                 .contains("`y: <number>`")
         );
         assert!(parse_number("in").is_err() && parse_number("f").is_err());

@@ -191,7 +191,7 @@ impl Own {
     /// separate fields in the panel's convention.
     fn read(&self) -> Result<(Request, [f64; 3]), String> {
         if self.yours.trim_start().starts_with(JSON_LINE_START) {
-            return check::parse_line(self.yours.trim());
+            return check::parse_line(self.yours.trim()).map_err(|e| e.to_string());
         }
         let request = Request {
             w: vector_field(&self.w, "W")?,
@@ -210,7 +210,7 @@ impl Own {
     /// Checks the T in the fields; the case to open and the verdict.
     fn check(&mut self) -> Result<Checked, String> {
         let (request, yours) = self.read()?;
-        let verdict = check::check(&request, yours)?;
+        let verdict = check::check(&request, yours).map_err(|e| e.to_string())?;
         let [w, n] = [request.w, request.n].map(DVec3::from_array);
         let case = ExplorerState::new(w, n, request.mu_i, request.mu_t, request.convention)
             .map_err(|e| e.to_string())?;

@@ -28,7 +28,10 @@ struct Expected {
 }
 
 fn expected(request: &Request) -> Result<Expected, String> {
-    let r = refract(&request.incidence::<f64>()?).map_err(|e| e.to_string())?;
+    let r = request
+        .incidence::<f64>()
+        .and_then(|incidence| Ok(refract(&incidence)?))
+        .map_err(|e| e.to_string())?;
     Ok(Expected {
         t: r.t().map(|t| t.to_array()),
         weights: r.transmission.map(|t| (t.a, t.b)),

@@ -52,7 +52,7 @@ fn is_null_text(text: &str) -> bool {
 /// The text is not a value of that kind; the message names the field.
 pub fn from_text(kind: Kind, name: &str, text: &str) -> Result<(Value, u32), String> {
     let text = text.trim();
-    let wrap = |e: String| format!("`{name}`: {e}");
+    let wrap = |e: crate::error::VectorError| format!("`{name}`: {e}");
     match kind {
         Kind::VectorOrNull if is_null_text(text) => Ok((Value::Null, 0)),
         Kind::Vector | Kind::VectorOrNull => parse_vector(text)
@@ -141,7 +141,8 @@ impl Record {
     /// # Errors
     /// Malformed JSON (with its column), not an object, or an ill-typed field.
     pub fn from_json_line(api: Api, line: &str) -> Result<Self, String> {
-        let value: Json = serde_json::from_str(line).map_err(|e| crate::fields::json_error(&e))?;
+        let value: Json = serde_json::from_str(line)
+            .map_err(|e| crate::error::JsonError::from(&e).to_string())?;
         let listed = || fields::listed(api);
         let object = value
             .as_object()
