@@ -9,6 +9,7 @@ mod accuracy_view;
 mod bench_variants;
 mod check_api_cli;
 mod check_cli;
+mod docs_commands;
 mod explorer_canvas;
 mod explorer_check;
 mod explorer_classroom;
