@@ -7,8 +7,8 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use egui::{Context, Event, Modifiers, PointerButton, Pos2, RawInput, Rect, Vec2};
-use refraction_diagram::ExplorerState;
 use refraction_explorer::app::Explorer;
+use refraction_model::ExplorerState;
 use refraction_scene::{Scene, SourceKind, catalogue};
 
 const SCREEN: Vec2 = Vec2::new(1280.0, 720.0);

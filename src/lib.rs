@@ -1,11 +1,9 @@
-//! refraction-explorer: the explorer window and the JSON Lines commands, on top of the layer
-//! crates (see `ARCHITECTURE.md`): [`refraction_kernel`] (the math), [`refraction_bench`] (its
-//! accuracy against time), [`refraction_scene`] (scenes and their tracer),
-//! [`refraction_diagram`] (what is drawn) and [`refraction_render`] (drawn off screen).
+//! refraction-explorer: the explorer window, on top of the layer crates (see `ARCHITECTURE.md`):
+//! [`refraction_kernel`] (the math), [`refraction_model`] (what is explored),
+//! [`refraction_scene`] (scenes and their tracer), [`refraction_diagram`] (what is drawn),
+//! [`refraction_render`] (drawn off screen) and [`refraction_tools`] (`solve`, `check` and
+//! state files). The commands are in the binary (`src/main.rs`, `src/commands/`).
 //!
-//! - [`app`]: the explorer window (eframe, egui, egui_plot);
-//! - [`lines`]: the `solve` and `check` commands' JSON Lines, and the explorer's state as one
-//!   such line.
+//! - [`app`]: the explorer window (eframe, egui, egui_plot).
 
 pub mod app;
-pub mod lines;

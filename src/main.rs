@@ -131,7 +131,7 @@ enum Command {
         /// The precision your code computes in, unless a line says (default: f32 for glsl,
         /// pbrt and mitsuba, f64 for rtiow).
         #[arg(long, value_name = "f32|f64", requires = "api", value_parser = commands::lines::parse_precision)]
-        precision: Option<refraction_explorer::lines::solve::Precision>,
+        precision: Option<refraction_tools::solve::Precision>,
         /// Read printf-style log lines: each {field} takes a number or a vector as programs
         /// print it, {_} anything; lines that do not match are skipped and counted.
         #[arg(long, value_name = "PATTERN", requires = "api", conflicts_with = "csv")]
@@ -234,7 +234,7 @@ fn main() -> ExitCode {
             paths,
         }) => commands::lines::check_api(
             file.as_deref(),
-            &refraction_explorer::lines::api_check::Options {
+            &refraction_tools::api_check::Options {
                 api,
                 inside,
                 outside,

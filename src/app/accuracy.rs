@@ -12,12 +12,13 @@ use egui_plot::{
 };
 
 use super::paint::color;
-use refraction_bench::{Config, Report};
+use refraction_bench::Config;
 use refraction_diagram::accuracy_plot::{
     BOUND, FLOOR, Marker, axes, decade_label, point_label, variant_colour, variant_marker,
 };
 use refraction_diagram::numbers::number;
 use refraction_diagram::palette::Palette;
+use refraction_model::report::Report;
 
 /// What the background measurement has reached.
 #[derive(Debug, Default)]

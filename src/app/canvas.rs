@@ -9,7 +9,8 @@ use glam::Vec2;
 use refraction_i18n::t;
 
 use super::paint::{color, hover_left_out, paint};
-use refraction_diagram::{Diagram, ExplorerState, HandleId, Overlay};
+use refraction_diagram::{Diagram, Overlay};
+use refraction_model::{ExplorerState, HandleId};
 
 /// Degrees per arrow-key press (Shift: a tenth of it).
 const ANGLE_STEP: f64 = 1.0;

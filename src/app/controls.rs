@@ -8,10 +8,11 @@ use egui::{ComboBox, DragValue, Slider, SliderClamping, Ui};
 
 use super::file_dialog::{self, Choice, FileDialog, Purpose, Target};
 use super::typed::{TypedField, format_vector, parse_number, parse_vector, short, status};
-use refraction_diagram::model::{INDEX_RANGE, MATERIALS, material_of};
+use refraction_diagram::Overlay;
 use refraction_diagram::overlay::PanZoom;
-use refraction_diagram::{ExplorerState, HandleId, Lesson, Overlay};
 use refraction_kernel::Convention;
+use refraction_model::{ExplorerState, HandleId, Lesson};
+use refraction_model::{INDEX_RANGE, MATERIALS, material_of};
 
 /// What the controls keep between frames.
 #[derive(Clone, Debug, PartialEq)]

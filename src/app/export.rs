@@ -13,13 +13,14 @@ use egui::{ComboBox, DragValue, ProgressBar, TextEdit, Ui};
 
 use super::file_dialog::{self, Kind, Target};
 use super::typed::status;
+use refraction_diagram::Overlay;
 use refraction_diagram::animation::Animation;
 use refraction_diagram::numbers::number;
 use refraction_diagram::overlay::PanZoom;
-use refraction_diagram::{ExplorerState, Overlay};
+use refraction_files::check_writable;
 use refraction_i18n::t;
+use refraction_model::ExplorerState;
 use refraction_render::animation::{AnimationSpec, FPS_LIMITS, FRAME_LIMITS, export_gif};
-use refraction_render::atomic::check_writable;
 use refraction_render::format::ImageFormat;
 use refraction_render::{RenderError, SIZE_LIMITS};
 use refraction_scene::Scene;

@@ -11,8 +11,8 @@ use super::file_dialog::{Choice, FileDialog, Kind, Purpose, Target, answer_repla
 use super::typed::status;
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 use crate::app::snippets;
-use crate::lines::state_file::{self, LoadError};
-use refraction_diagram::ExplorerState;
+use refraction_model::ExplorerState;
+use refraction_tools::state_file::{self, LoadError};
 
 /// The file name offered first.
 pub const DEFAULT_PATH: &str = "refraction-state.json";
@@ -21,7 +21,7 @@ pub const DEFAULT_PATH: &str = "refraction-state.json";
 /// language) and how to write it.
 type Format = (
     fn() -> String,
-    fn(&crate::lines::solve::Request) -> Result<String, String>,
+    fn(&refraction_tools::solve::Request) -> Result<String, String>,
 );
 
 /// The copy buttons, in order. The programming languages' names are the same in every language.
@@ -42,7 +42,11 @@ fn open_failed(error: &LoadError) -> String {
             t!("files-cannot-read-state", path = path, reason = reason)
         }
         LoadError::Refused { path, reason } => {
-            t!("files-state-refused", path = path, reason = reason)
+            t!(
+                "files-state-refused",
+                path = path,
+                reason = reason.to_string()
+            )
         }
     }
 }
@@ -91,7 +95,7 @@ impl FilesPanel {
         self.status = Some(
             state_file::save(state, path)
                 .map(|()| t!("files-saved", path = &shown))
-                .map_err(|reason| t!("files-not-saved", reason = reason)),
+                .map_err(|reason| t!("files-not-saved", reason = reason.to_string())),
         );
     }
 
@@ -139,7 +143,7 @@ impl FilesPanel {
                     *state = pasted;
                     t!("files-share-applied")
                 })
-                .map_err(|reason| t!("files-share-refused", reason = reason)),
+                .map_err(|reason| t!("files-share-refused", reason = reason.to_string())),
         );
     }
 

@@ -12,11 +12,11 @@ use egui_plot::{Line, LineStyle, Plot, PlotPoint, Text, VLine, uniform_grid_spac
 use refraction_i18n::t;
 
 use super::paint::color;
-use refraction_diagram::ExplorerState;
 use refraction_diagram::fresnel_plot::{FresnelPlot, curve_strokes, percent, source};
 use refraction_diagram::numbers::number;
 use refraction_diagram::palette::Palette;
 use refraction_diagram::shapes::{Dash, Stroke};
+use refraction_model::ExplorerState;
 
 /// The plot's least and most height, in points.
 const PLOT_HEIGHT: (f32, f32) = (150.0, 420.0);

@@ -9,9 +9,9 @@ use egui::{Key, KeyboardShortcut, Modifiers, Ui};
 
 use super::widgets::icon_button;
 
-use refraction_diagram::ExplorerState;
 use refraction_diagram::numbers::significant;
 use refraction_i18n::t;
+use refraction_model::ExplorerState;
 use refraction_scene::Scene;
 
 /// How many steps back the history reaches; older ones are forgotten.
@@ -299,9 +299,7 @@ mod tests {
         );
         assert!(change.in_scene && !change.in_interface);
         let mut turned = start.clone();
-        turned
-            .interface
-            .rotate(refraction_diagram::HandleId::W, 10.0);
+        turned.interface.rotate(refraction_model::HandleId::W, 10.0);
         let words = describe(Travel::Undo, &turned, &start).words;
         assert_eq!(words, "Undid θi 50° → 40°");
     }

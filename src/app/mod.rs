@@ -34,7 +34,6 @@ pub use fonts::install as install_fonts;
 
 use egui::{Panel, RichText, ScrollArea, Ui};
 
-use crate::lines::state_file;
 use accuracy::AccuracyView;
 use controls::Controls;
 use export::AnimationExport;
@@ -42,10 +41,12 @@ use history::{History, Snapshot};
 use panels::{CONTROLS, NUMBERS, Panels};
 use physics::Physics;
 use presentation::Presentation;
+use refraction_diagram::Overlay;
 use refraction_diagram::palette::Theme;
-use refraction_diagram::{ExplorerState, Overlay};
 use refraction_i18n::{Locale, t};
+use refraction_model::ExplorerState;
 use refraction_scene::Scene;
+use refraction_tools::state_file;
 pub use scenes::ScenesView;
 use tools::Tools;
 
@@ -258,6 +259,18 @@ impl Explorer {
     #[must_use]
     pub fn presentation(&self) -> &Presentation {
         &self.presentation
+    }
+
+    /// The presentation settings, to change them as the bar's controls do (they take effect
+    /// on the next frame).
+    pub fn presentation_mut(&mut self) -> &mut Presentation {
+        &mut self.presentation
+    }
+
+    /// Explores `state` from now on, as opening a state file does; the undo history records
+    /// the change once the frame ends.
+    pub fn set_state(&mut self, state: ExplorerState) {
+        self.state = state;
     }
 
     /// What is drawn over the diagram now: palette, view, the student's T, the highlights.

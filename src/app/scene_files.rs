@@ -11,7 +11,7 @@ use super::export;
 use super::file_dialog::{self, Choice, FileDialog, Kind, Purpose, Target, picture_target};
 use super::paint::verdict_colour;
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
-use refraction_render::atomic::write_atomically;
+use refraction_files::write_atomically;
 use refraction_scene::Scene;
 
 /// The scene file offered first.

@@ -21,7 +21,8 @@ use refraction_diagram::numbers::number;
 use refraction_diagram::palette::Palette;
 use refraction_diagram::scene_words::{self, medium_name};
 use refraction_diagram::shapes::{Align, Label};
-use refraction_diagram::{ExplorerState, Primitive, SceneLayout, ScenePicture};
+use refraction_diagram::{Primitive, SceneLayout, ScenePicture};
+use refraction_model::ExplorerState;
 use refraction_scene::{
     DEFAULT_SCENE, EditError, Hit, Scene, SceneInfo, Side, SourceKind, Stop, Trace, catalogue,
     traced_wavelength,

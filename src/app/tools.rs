@@ -8,9 +8,10 @@ use super::check_panel::CheckPanel;
 use super::files_panel::FilesPanel;
 use super::fresnel_panel;
 use super::walkthrough::WalkThrough;
+use refraction_diagram::Focus;
 use refraction_diagram::overlay::StudentRay;
 use refraction_diagram::palette::Palette;
-use refraction_diagram::{ExplorerState, Focus};
+use refraction_model::ExplorerState;
 
 /// The most of the window's width a tool takes in presentation.
 pub const PRESENTATION_TOOL_SHARE: f32 = 0.34;

@@ -5,8 +5,9 @@
 use egui::{Button, Context, RichText, Ui};
 use refraction_i18n::t;
 
+use refraction_diagram::Focus;
 use refraction_diagram::walkthrough::steps;
-use refraction_diagram::{ExplorerState, Focus};
+use refraction_model::ExplorerState;
 
 /// How long the μ → 1 morph takes, in seconds.
 pub const MORPH_SECONDS: f32 = 3.0;

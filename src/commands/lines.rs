@@ -5,11 +5,12 @@ use std::io::{self, BufRead, Write};
 use std::path::Path;
 use std::process::ExitCode;
 
-use refraction_explorer::lines::api_check::{Format, Options, Pattern, Session};
-use refraction_explorer::lines::check::{self, Match};
-use refraction_explorer::lines::solve::Precision;
-use refraction_explorer::lines::{self as jsonl, LinesError, solve as solver};
 use refraction_kernel::api::Api;
+use refraction_tools::api_check::{Format, Options, Pattern, Session};
+use refraction_tools::check::{self, Match};
+use refraction_tools::error::CheckError;
+use refraction_tools::solve::Precision;
+use refraction_tools::{self as jsonl, LinesError, solve as solver};
 
 use super::{fail, output, output_error};
 
@@ -130,7 +131,7 @@ pub fn check(file: Option<&Path>) -> ExitCode {
     };
     let mut tally: BTreeMap<&'static str, usize> = BTreeMap::new();
     let mut all_ok = true;
-    let finish = |answer: Result<(String, check::Verdict), String>| {
+    let finish = |answer: Result<(String, check::Verdict), CheckError>| {
         let (kind, reply) = match answer {
             Ok((text, verdict)) => {
                 all_ok &= verdict.ok;

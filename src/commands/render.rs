@@ -5,15 +5,16 @@ use std::io::{self, IsTerminal};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use refraction_diagram::Overlay;
 use refraction_diagram::animation::Animation;
 use refraction_diagram::palette::Theme;
-use refraction_diagram::{ExplorerState, Overlay};
 use refraction_explorer::app::{self, Launch, View};
-use refraction_explorer::lines::state_file;
 use refraction_i18n::Locale;
+use refraction_model::ExplorerState;
 use refraction_render::animation::AnimationSpec;
-use refraction_render::{self as render, atomic, format::ImageFormat};
+use refraction_render::{self as render, format::ImageFormat};
 use refraction_scene::Scene;
+use refraction_tools::state_file;
 
 use super::output::ProgressLine;
 use super::{fail, output, output_error};
@@ -67,7 +68,7 @@ fn parse_animation(name: &str) -> Result<Animation, String> {
     })
 }
 
-/// Where an image goes: a file, written by [`atomic::write_atomically`], or stdout (`-`).
+/// Where an image goes: a file, written by [`refraction_files::write_atomically`], or stdout (`-`).
 #[derive(Clone, Copy, Debug)]
 pub enum Destination<'a> {
     /// A file (or a FIFO, or a device).
@@ -115,7 +116,7 @@ pub fn format_of(
 impl<'a> Destination<'a> {
     /// Checks `path` as an image destination before any work is done: its format is one of
     /// `formats` ([`format_of`]); a file's folder exists and what is at the path can be
-    /// written ([`atomic::check_writable`]); `-` means stdout where `stdout_allowed`, and
+    /// written ([`refraction_files::check_writable`]); `-` means stdout where `stdout_allowed`, and
     /// stdout must then be neither a terminal nor closed.
     ///
     /// # Errors
@@ -128,7 +129,7 @@ impl<'a> Destination<'a> {
     ) -> Result<Self, String> {
         let format = format_of(path, option, formats)?;
         if path != Path::new("-") {
-            atomic::check_writable(path).map_err(|e| e.to_string())?;
+            refraction_files::check_writable(path).map_err(|e| e.to_string())?;
             return Ok(Self::File(path));
         }
         if !stdout_allowed {
@@ -154,7 +155,7 @@ impl<'a> Destination<'a> {
     /// Writes `bytes` there; `command` names the command in a failure's message.
     pub fn write(self, command: &str, bytes: &[u8]) -> ExitCode {
         match self {
-            Self::File(path) => atomic::write_atomically(path, bytes)
+            Self::File(path) => refraction_files::write_atomically(path, bytes)
                 .map_or_else(|e| fail(command, &e), |()| ExitCode::SUCCESS),
             Self::Stdout => output::to_stdout(bytes)
                 .map_or_else(|e| output_error(command, &e), |()| ExitCode::SUCCESS),
@@ -163,7 +164,10 @@ impl<'a> Destination<'a> {
 }
 
 fn initial_state(path: Option<&Path>) -> Result<ExplorerState, String> {
-    path.map_or_else(|| Ok(ExplorerState::default()), state_file::load)
+    path.map_or_else(
+        || Ok(ExplorerState::default()),
+        |p| state_file::open(p).map_err(|e| e.to_string()),
+    )
 }
 
 /// The picture asked for, as the bytes of a `format` file: `scene` traced, or else the state
@@ -255,7 +259,7 @@ pub fn explorer(window: &Window) -> ExitCode {
     let launch = window
         .state
         .as_deref()
-        .map(state_file::load)
+        .map(|p| state_file::open(p).map_err(|e| e.to_string()))
         .transpose()
         .map(|state| Launch {
             state,

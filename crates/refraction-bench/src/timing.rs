@@ -6,6 +6,7 @@ use std::time::{Duration, Instant};
 
 use refraction_kernel::batch::{RayBatch, Transmissions};
 use refraction_kernel::{Real, Variant};
+use refraction_model::report::Streaming;
 
 /// How long one timing sample should run: long enough to dwarf the clock's resolution.
 const SAMPLE_TIME: Duration = Duration::from_millis(2);
@@ -58,18 +59,6 @@ pub fn variant_pass<'a, S: Real>(variant: Variant, rays: &'a RayBatch<S>) -> Pas
         variant.transmit_all(black_box(rays), &mut out);
         black_box(&mut out);
     })
-}
-
-/// What streaming many more rays than fit in cache costs.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
-pub struct Streaming {
-    /// Rays per pass.
-    pub rays: usize,
-    /// The batch kernel's time per ray, f32.
-    pub batch_ns_per_ray: f64,
-    /// The time per ray of reading the same W, N, μ and writing T and the TIR flag with no
-    /// refraction arithmetic: the memory limit.
-    pub memory_limit_ns_per_ray: f64,
 }
 
 /// Reads every input block and writes every output block once, doing almost no arithmetic.

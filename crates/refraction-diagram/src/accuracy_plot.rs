@@ -12,8 +12,8 @@ use super::layout::SMALLEST_TEXT;
 use super::palette::Palette;
 use super::placer::{Obstacle, Placer};
 use super::shapes::{Align, Dash, Figure, Label, Stroke, lower_all};
-use refraction_bench::{Report, Row};
 use refraction_i18n::t;
+use refraction_model::report::{Report, Row};
 
 /// The default kernel's documented bound, drawn as a reference line: 32·ε·κ.
 pub const BOUND: f64 = 32.0;
@@ -448,7 +448,7 @@ mod tests {
             ],
             rays: 10,
             hard_rays: 10,
-            streaming: refraction_bench::timing::Streaming {
+            streaming: refraction_model::report::Streaming {
                 rays: 10,
                 batch_ns_per_ray: 1.0,
                 memory_limit_ns_per_ray: 0.5,

@@ -6,11 +6,11 @@ use glam::{DVec2, Vec2};
 
 use refraction_i18n::t;
 
-use super::model::{ExplorerState, HandleId};
 use super::overlay::Overlay;
 use super::picture::Diagram;
 use super::shapes::Primitive;
 use super::wavefronts::WaveOptions;
+use refraction_model::{ExplorerState, HandleId};
 
 /// The frames an animation has when none are asked for.
 pub const DEFAULT_FRAMES: usize = 36;

@@ -171,7 +171,7 @@ fn choice_of_b(r: &Refraction<f64>) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ExplorerState;
+    use refraction_model::ExplorerState;
 
     #[test]
     fn equations_follow_the_convention_and_the_flip() {

@@ -183,7 +183,8 @@ mod tests {
 
     #[test]
     fn the_diagram_draws_the_shares_only_when_switched_on_and_p_light_vanishes_at_brewster() {
-        use crate::{Diagram, ExplorerState, Overlay};
+        use crate::{Diagram, Overlay};
+        use refraction_model::ExplorerState;
         let mut state = ExplorerState::default();
         state
             .set_vectors(DVec3::new(1.5, -1.0, 0.0), DVec3::Y)

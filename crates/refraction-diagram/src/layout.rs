@@ -5,8 +5,8 @@
 use glam::{DVec2, Vec2};
 
 use super::geometry::Rect;
-use super::model::INDEX_RANGE;
 use super::overlay::PanZoom;
+use refraction_model::INDEX_RANGE;
 
 /// The world↔canvas map of the drawing area.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,10 +1,10 @@
-//! What the explorer draws, computed from an [`ExplorerState`] and the kernel's answer for it,
+//! What the explorer draws, computed from an [`ExplorerState`](refraction_model::ExplorerState)
+//! and the kernel's answer for it,
 //! or from a traced scene: shapes with colours, widths, dash patterns and anchored labels, in
 //! canvas pixels. No egui and no tiny-skia here: the screen (the explorer's window) and the PNG
 //! (`refraction-render`) both draw [`Diagram::primitives`] and [`ScenePicture::primitives`], so
 //! what a teacher exports is what the class saw.
 //!
-//! - [`model`]: the state and the edits a user makes;
 //! - [`layout`]: where things go on a canvas of a given size;
 //! - [`overlay`]: what is drawn over the state: palette, pan and zoom, a student's T, the
 //!   walk-through's highlights;
@@ -28,7 +28,6 @@ pub mod fresnel_plot;
 pub mod geometry;
 pub mod intensities;
 pub mod layout;
-pub mod model;
 pub mod numbers;
 pub mod overlay;
 pub mod palette;
@@ -44,7 +43,6 @@ pub mod walkthrough;
 pub mod wavefronts;
 
 pub use layout::Layout;
-pub use model::{ExplorerState, HandleId, Lesson};
 pub use overlay::{Focus, Overlay};
 pub use picture::{Diagram, Handle};
 pub use scene_picture::{SceneHandle, SceneHandleId, SceneLayout, ScenePicture};

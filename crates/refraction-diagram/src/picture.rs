@@ -7,7 +7,6 @@ use super::font::Typeface;
 use super::geometry::{Colour, Rect, arc, clip_rect_to_half_plane, clip_segment};
 use super::intensities::{Shares, stroke_for};
 use super::layout::Layout;
-use super::model::{ExplorerState, HandleId, INDEX_RANGE, MATERIALS, material_of};
 use super::numbers::{number, significant};
 use super::overlay::{Overlay, Part};
 use super::palette::Palette;
@@ -16,6 +15,7 @@ use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke, lower_all};
 use super::wavefronts;
 use refraction_i18n::t;
 use refraction_kernel::{Convention, Refraction, Rejection, seed};
+use refraction_model::{ExplorerState, HandleId, INDEX_RANGE, MATERIALS, material_of};
 
 /// A draggable point on the canvas.
 #[derive(Clone, Copy, Debug, PartialEq)]

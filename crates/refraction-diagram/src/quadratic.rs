@@ -107,8 +107,8 @@ mod tests {
             assert!(y0 < v.min(0.0) && y1 > 0.0, "{y0}..{y1}");
         }
     }
-    use crate::{ExplorerState, HandleId};
     use refraction_kernel::Convention;
+    use refraction_model::{ExplorerState, HandleId};
 
     #[test]
     fn the_kernel_roots_are_roots_and_vanish_past_the_critical_angle() {

@@ -78,7 +78,7 @@ pub fn rows(r: &Refraction<f64>) -> Vec<CandidateRow> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ExplorerState;
+    use refraction_model::ExplorerState;
 
     #[test]
     fn all_four_keep_the_squared_laws_and_only_t_keeps_the_rest() {

@@ -258,7 +258,7 @@ fn choice_of_b(r: &Refraction<f64>) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ExplorerState;
+    use refraction_model::ExplorerState;
 
     #[test]
     fn the_steps_follow_the_source_with_live_numbers() {
@@ -300,7 +300,7 @@ mod tests {
         let mut state = ExplorerState::default();
         state.set_mu_i(1.5).unwrap();
         state.set_mu_t(1.0).unwrap();
-        state.rotate(crate::HandleId::W, 40.0);
+        state.rotate(refraction_model::HandleId::W, 40.0);
         let all = steps(state.refraction());
         assert!(all[0].equations[0].substituted.contains("> 1: no angle θt"));
         assert!(all[3].equations[0].substituted.contains("no real (a, b)"));

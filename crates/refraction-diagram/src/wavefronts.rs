@@ -13,11 +13,11 @@ use glam::{DVec2, Vec2};
 
 use super::geometry::{Colour, arc, clip_segment};
 use super::layout::Layout;
-use super::model::ExplorerState;
 use super::numbers::number;
 use super::palette::Palette;
 use super::shapes::{Align, Dash, Figure, Label, Stroke};
 use refraction_i18n::t;
+use refraction_model::ExplorerState;
 
 /// How far from the hit point the fronts are drawn, in world units (W, N and T are 1 long).
 pub const EXTENT: f64 = 1.3;

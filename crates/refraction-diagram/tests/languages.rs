@@ -3,8 +3,9 @@
 
 use glam::Vec2;
 use refraction_diagram::shapes::Figure;
-use refraction_diagram::{Diagram, Lesson, walkthrough};
+use refraction_diagram::{Diagram, walkthrough};
 use refraction_i18n::{Locale, set_locale, t};
+use refraction_model::Lesson;
 
 /// Every label's text: those placed on the canvas and those left out for want of room.
 fn label_texts(diagram: &Diagram) -> Vec<String> {
@@ -116,7 +117,7 @@ fn counts_take_each_languages_plural_forms() {
 
 #[test]
 fn the_walk_through_speaks_german_with_the_kernels_numbers() {
-    let state = refraction_diagram::ExplorerState::default();
+    let state = refraction_model::ExplorerState::default();
     set_locale(Locale::De);
     let steps = walkthrough::steps(state.refraction());
     set_locale(Locale::En);

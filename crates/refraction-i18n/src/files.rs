@@ -2,7 +2,7 @@
 
 use crate::Locale;
 
-/// The files of every language's folder under `assets/locales/`, by what their messages are
+/// The files of every language's folder under the crate's `locales/`, by what their messages are
 /// about: the window, its tools and panels (`explorer`), what is drawn on the diagram, the
 /// scenes and the plots (`diagram`), Check my T and its verdicts (`check`), and files, saving
 /// and exporting (`files`).
@@ -12,10 +12,10 @@ pub const FILES: [&str; 4] = ["explorer.ftl", "diagram.ftl", "check.ftl", "files
 macro_rules! folder {
     ($code:literal) => {
         [
-            include_str!(concat!("../../../assets/locales/", $code, "/explorer.ftl")),
-            include_str!(concat!("../../../assets/locales/", $code, "/diagram.ftl")),
-            include_str!(concat!("../../../assets/locales/", $code, "/check.ftl")),
-            include_str!(concat!("../../../assets/locales/", $code, "/files.ftl")),
+            include_str!(concat!("../locales/", $code, "/explorer.ftl")),
+            include_str!(concat!("../locales/", $code, "/diagram.ftl")),
+            include_str!(concat!("../locales/", $code, "/check.ftl")),
+            include_str!(concat!("../locales/", $code, "/files.ftl")),
         ]
     };
 }

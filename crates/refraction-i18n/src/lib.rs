@@ -1,7 +1,7 @@
 //! The explorer's words in every language it speaks.
 //!
 //! Every sentence a user reads comes from a [Project Fluent](https://projectfluent.org) file:
-//! one folder per language under `assets/locales/` (`en`, `de`, `es`, `fr`, `pt-BR`, `ru`),
+//! one folder per language under the crate's `locales/` (`en`, `de`, `es`, `fr`, `pt-BR`, `ru`),
 //! each with the same files ([`FILES`]), compiled into the binary. Code asks for a message by
 //! its key with [`t!`]; the words come from the language chosen for the current thread
 //! ([`set_locale`]), and from English where a translation lacks the key, so a missing
@@ -48,7 +48,7 @@ impl Locale {
     /// Every language, in the order the language menu lists them.
     pub const ALL: [Self; 6] = [Self::En, Self::De, Self::Es, Self::Fr, Self::PtBr, Self::Ru];
 
-    /// The language's tag and folder name under `assets/locales/` (`pt-BR`).
+    /// The language's tag and folder name under the crate's `locales/` (`pt-BR`).
     #[must_use]
     pub const fn code(self) -> &'static str {
         match self {
@@ -164,6 +164,8 @@ impl From<i64> for Arg<'_> {
 thread_local! {
     static CURRENT: Cell<Locale> = const { Cell::new(Locale::En) };
     static BUNDLES: RefCell<Vec<(Locale, Rc<Bundle>)>> = const { RefCell::new(Vec::new()) };
+    static REPORTED: RefCell<std::collections::HashSet<String>> =
+        RefCell::new(std::collections::HashSet::new());
 }
 
 type Bundle = FluentBundle<FluentResource>;
@@ -181,14 +183,22 @@ pub fn locale() -> Locale {
 }
 
 /// The message `key` in the current language with `args` filled in; English where the
-/// language lacks the key; the key itself, in brackets, where English lacks it too (the
-/// translation tests keep that from happening).
+/// language lacks the key.
+///
+/// # Panics
+/// In debug builds (and so in every test), when the translation is broken: English lacks
+/// the key, a placeable was not filled, or a file does not parse ([`broken`]). A release
+/// build shows `[key]` for a missing key and the placeable's name for a missing value, and
+/// says so on stderr once per problem.
 #[must_use]
 pub fn text(key: &str, args: &[(&str, Arg<'_>)]) -> String {
     let locale = locale();
     format_in(locale, key, args)
         .or_else(|| format_in(Locale::En, key, args))
-        .unwrap_or_else(|| format!("[{key}]"))
+        .unwrap_or_else(|| {
+            broken(&format!("no message `{key}` in English"));
+            format!("[{key}]")
+        })
 }
 
 /// The message `key` in `locale`, or `None` if that language's files lack it.
@@ -205,9 +215,23 @@ fn format_in(locale: Locale, key: &str, args: &[(&str, Arg<'_>)]) -> Option<Stri
     }
     let mut errors = Vec::new();
     let text = bundle.format_pattern(pattern, Some(&fluent_args), &mut errors);
-    // A placeable the caller did not fill shows as `{$name}` in the text, which the
-    // translation tests catch; the errors say nothing more than that.
+    if !errors.is_empty() {
+        broken(&format!("{locale} message `{key}`: {errors:?}"));
+    }
     Some(text.into_owned())
+}
+
+/// A translation that cannot be shown as written: a panic in debug builds, so that a test
+/// or a developer's run finds it at once; a line on stderr in a release build, where a user
+/// is better served by the rest of the window than by a crash.
+fn broken(what: &str) {
+    if cfg!(debug_assertions) {
+        panic!("broken translation: {what}");
+    }
+    // Once per problem, not once per frame that shows it.
+    if REPORTED.with(|reported| reported.borrow_mut().insert(what.to_owned())) {
+        eprintln!("refraction-explorer: broken translation: {what}");
+    }
 }
 
 /// This thread's bundle for `locale`, built on first use.
@@ -222,8 +246,9 @@ fn bundle(locale: Locale) -> Rc<Bundle> {
     })
 }
 
-/// The bundle of `locale`'s files. A file that does not parse contributes the messages that
-/// do (Fluent's own recovery); the translation tests require every file to parse cleanly.
+/// The bundle of `locale`'s files. A file that does not parse, or defines a key twice, is
+/// [`broken`]; in a release build it contributes the messages that do parse (Fluent's own
+/// recovery) and a key defined twice keeps its first definition.
 fn build(locale: Locale) -> Bundle {
     let tag = locale
         .code()
@@ -233,10 +258,14 @@ fn build(locale: Locale) -> Bundle {
     // Isolation marks (U+2068, U+2069) around placeables are for mixing right-to-left text;
     // none of these languages needs them and egui's fonts have no glyph for them.
     bundle.set_use_isolating(false);
-    for source in files::sources(locale) {
-        let resource = FluentResource::try_new((*source).to_owned()).unwrap_or_else(|(r, _)| r);
-        // A key defined twice keeps its first definition; the tests forbid it.
-        let _ = bundle.add_resource(resource);
+    for (file, source) in FILES.iter().zip(files::sources(locale)) {
+        let resource = FluentResource::try_new((*source).to_owned()).unwrap_or_else(|(r, e)| {
+            broken(&format!("{locale}/{file} does not parse: {e:?}"));
+            r
+        });
+        if let Err(errors) = bundle.add_resource(resource) {
+            broken(&format!("{locale}/{file}: {errors:?}"));
+        }
     }
     bundle
 }
@@ -324,6 +353,25 @@ mod tests {
         let english = t!("language-hover");
         assert_ne!(german, english);
         assert!(!english.starts_with('['), "{english}");
-        assert_eq!(t!("no-such-key"), "[no-such-key]");
+    }
+
+    #[test]
+    #[should_panic(expected = "broken translation: no message `no-such-key` in English")]
+    fn a_key_english_lacks_fails_loudly_in_a_debug_build() {
+        let _ = t!("no-such-key");
+    }
+
+    #[test]
+    #[should_panic(expected = "broken translation: en message")]
+    fn a_placeable_not_filled_fails_loudly_in_a_debug_build() {
+        // The first English message with a placeable, asked for without it.
+        let key = FILES
+            .iter()
+            .zip(files::sources(Locale::En))
+            .flat_map(|(_, source)| source.lines())
+            .find(|line| line.contains("{ $") && !line.starts_with([' ', '#']))
+            .and_then(|line| line.split(" =").next())
+            .expect("a message with a placeable");
+        let _ = text(key, &[]);
     }
 }

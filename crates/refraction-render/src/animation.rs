@@ -6,11 +6,12 @@ use std::path::Path;
 use gif::{Encoder, Frame, Repeat};
 use tiny_skia::Pixmap;
 
+use refraction_diagram::Overlay;
 use refraction_diagram::animation::{Animation, DEFAULT_FPS, DEFAULT_FRAMES};
-use refraction_diagram::{ExplorerState, Overlay};
+use refraction_model::ExplorerState;
 
-use crate::atomic::write_atomically;
 use crate::{RenderError, check_size, draw_primitives};
+use refraction_files::write_atomically;
 
 /// The fewest and the most frames an animation may have.
 pub const FRAME_LIMITS: (usize, usize) = (2, 600);

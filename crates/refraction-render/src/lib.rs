@@ -3,7 +3,6 @@
 //! ([`animation`]); every file written atomically ([`atomic`]).
 
 pub mod animation;
-pub mod atomic;
 pub mod format;
 pub mod svg;
 pub mod text;
@@ -13,11 +12,12 @@ use std::path::Path;
 use glam::Vec2;
 use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Transform};
 
-use crate::atomic::write_atomically;
 use crate::format::ImageFormat;
 use refraction_diagram::font::{FontError, Typeface};
 use refraction_diagram::geometry::Colour;
-use refraction_diagram::{Diagram, ExplorerState, Overlay, Primitive, SceneLayout, ScenePicture};
+use refraction_diagram::{Diagram, Overlay, Primitive, SceneLayout, ScenePicture};
+use refraction_files::write_atomically;
+use refraction_model::ExplorerState;
 use refraction_scene::{Scene, Trace};
 
 /// The export size when none is given.
@@ -330,7 +330,7 @@ pub fn export(
 /// As [`still`], an extension that names no still format, or the file cannot be written (the
 /// message names it).
 pub fn export_accuracy_plot(
-    report: &refraction_bench::Report,
+    report: &refraction_model::report::Report,
     width: u32,
     height: u32,
     path: &Path,

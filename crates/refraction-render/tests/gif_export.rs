@@ -1,8 +1,9 @@
 //! The animations as GIF files: each decodes with the requested size and frame count, loops,
 //! and moves.
 
+use refraction_diagram::Overlay;
 use refraction_diagram::animation::{Animation, DEFAULT_FRAMES};
-use refraction_diagram::{ExplorerState, Overlay};
+use refraction_model::ExplorerState;
 use refraction_render::animation::{AnimationSpec, export_gif, gif};
 
 /// One decoded frame: width, height, delay (hundredths of a second) and RGBA pixels.

@@ -16,7 +16,8 @@ use glam::Vec2;
 use resvg::tiny_skia::Pixmap;
 use resvg::usvg::{self, Node};
 
-use refraction_diagram::{Diagram, ExplorerState, Overlay, Primitive};
+use refraction_diagram::{Diagram, Overlay, Primitive};
+use refraction_model::ExplorerState;
 use refraction_render::{interface_svg, render, render_scene, scene_svg};
 use refraction_scene::Scene;
 

@@ -36,6 +36,10 @@ pub const MIN_SIZE: f64 = 1e-6;
 /// The most shapes a scene file may have.
 pub const MAX_SHAPES: usize = 100_000;
 
+/// The largest scene file [`crate::Scene::load`] reads: 1 MiB (the built-in scenes are under
+/// 4 KiB).
+pub const MAX_SCENE_FILE_BYTES: u64 = 1 << 20;
+
 /// The most polygon points a scene file may have, over all its polygons.
 pub const MAX_POINTS: usize = 1_000_000;
 
@@ -748,7 +752,7 @@ impl Scene {
             return Self::embedded(name_or_path);
         }
         let path = std::path::Path::new(name_or_path);
-        let bytes = crate::read_capped_bytes(path, crate::MAX_SCENE_FILE_BYTES, "a scene file")
+        let bytes = refraction_files::read_capped_bytes(path, MAX_SCENE_FILE_BYTES, "a scene file")
             .map_err(|e| LoadError {
                 file: name_or_path.to_owned(),
                 position: None,

@@ -7,11 +7,10 @@
 //! - [`catalogue`]: the scenes built into the binary (from `assets/scenes/`).
 //! - [`Report`]: the JSON of the `trace` command.
 //!
-//! The file format is described in the repository README (section *The file format*).
+//! The file format is described in the repository's user guide (`docs/scenes.md`).
 
 mod bounds;
 mod bvh;
-mod capped;
 mod effects;
 mod embedded;
 mod format;
@@ -28,10 +27,11 @@ mod write;
 use glam::DVec2;
 
 pub use bounds::Bounds;
-pub use capped::{MAX_SCENE_FILE_BYTES, read_capped, read_capped_bytes};
 pub use effects::{Effects, EffectsError};
 pub use embedded::{DEFAULT_SCENE, SceneInfo, catalogue};
-pub use format::{LoadError, MAX_COORDINATE, MAX_POINTS, MAX_SHAPES, MIN_SIZE, Position};
+pub use format::{
+    LoadError, MAX_COORDINATE, MAX_POINTS, MAX_SCENE_FILE_BYTES, MAX_SHAPES, MIN_SIZE, Position,
+};
 pub use fresnel::Fresnel;
 pub use medium::{Dispersion, Medium, REFERENCE_WAVELENGTH_NM, WHITE_WAVELENGTHS_NM};
 pub use outline::{Outline, Piece};

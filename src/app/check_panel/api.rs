@@ -1,5 +1,5 @@
 //! Check my T in a student's API: that API's own argument fields and the optional truth, the
-//! verdict of [`crate::lines::api_check`] (the mistakes with what each means, the explanation in
+//! verdict of [`refraction_tools::api_check`] (the mistakes with what each means, the explanation in
 //! the API's language, what the API returns, the right T), and the case drawn in the API's
 //! convention: the right call's incident vector as the API means it (GLSL's I and the book's
 //! uv along the ray, pbrt's and Mitsuba's wi back toward the origin), μ as the API's eta means.
@@ -11,18 +11,18 @@ use glam::DVec3;
 
 use super::{Checked, Shown, field, headline, right_t};
 use crate::app::snippets::api::{self as snippets, ApiCase, Language};
-use crate::lines::api_check::call::Got;
-use crate::lines::api_check::fields::{self, Kind, names};
-use crate::lines::api_check::record::Value;
-use crate::lines::api_check::{Call, Diagnosis, Options, Record, check_record};
-use crate::lines::state_file;
-use crate::lines::vector_text::{spoken, spoken_vector};
-use refraction_diagram::ExplorerState;
-use refraction_diagram::model::INDEX_RANGE;
 use refraction_diagram::overlay::{StudentRay, VectorNames};
 use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::{Api, Args};
+use refraction_model::ExplorerState;
+use refraction_model::INDEX_RANGE;
+use refraction_tools::api_check::call::Got;
+use refraction_tools::api_check::fields::{self, Kind, names};
+use refraction_tools::api_check::record::Value;
+use refraction_tools::api_check::{Call, Diagnosis, Options, Record, check_record};
+use refraction_tools::state_file;
+use refraction_tools::vector_text::{spoken, spoken_vector};
 use serde_json::Value as Json;
 
 /// The truth fields the panel offers (`path` and `point` belong to logs of whole paths).

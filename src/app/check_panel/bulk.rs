@@ -7,11 +7,11 @@ use egui::{CollapsingHeader, Grid, RichText, TextEdit, Ui};
 use super::{JSON_LINE_START, field};
 use crate::app::paint::verdict_colour;
 use crate::app::typed::error_label;
-use crate::lines::api_check::{
-    Diagnosis, Format, Options, Pattern, Record, SKIPPED, Session, Tally, check_record,
-};
 use refraction_i18n::t;
 use refraction_kernel::api::Api;
+use refraction_tools::api_check::{
+    Diagnosis, Format, Options, Pattern, Record, SKIPPED, Session, Tally, check_record,
+};
 
 /// The most characters the box takes (a paste beyond it is cut there): about 500 log lines.
 pub const MAX_PASTED_CHARS: usize = 65_536;

@@ -4,7 +4,7 @@
 //! etai_over_etat, refracted`, Mitsuba's `wi, n, eta, wo`, with the optional truth). The
 //! explorer opens that case, drawn in the convention in use (shown in the panel), says what is
 //! wrong and why, and draws the student's vector beside the right one. The verdicts are those of
-//! [`crate::lines::check`] and [`crate::lines::api_check`], so the window and `check` agree.
+//! [`refraction_tools::check`] and [`refraction_tools::api_check`], so the window and `check` agree.
 
 mod api;
 mod bulk;
@@ -14,15 +14,15 @@ use glam::DVec3;
 
 use super::paint::verdict_colour;
 use super::typed::error_label;
-use crate::lines::check::{self, Match, Verdict};
-use crate::lines::solve::{Precision, Request};
-use crate::lines::state_file;
-use refraction_diagram::ExplorerState;
 use refraction_diagram::numbers::vector;
 use refraction_diagram::overlay::StudentRay;
 use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
+use refraction_model::ExplorerState;
+use refraction_tools::check::{self, Match, Verdict};
+use refraction_tools::solve::{Precision, Request};
+use refraction_tools::state_file;
 
 /// Whose fields the panel reads.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -191,7 +191,7 @@ impl Own {
     /// separate fields in the panel's convention.
     fn read(&self) -> Result<(Request, [f64; 3]), String> {
         if self.yours.trim_start().starts_with(JSON_LINE_START) {
-            return check::parse_line(self.yours.trim());
+            return check::parse_line(self.yours.trim()).map_err(|e| e.to_string());
         }
         let request = Request {
             w: vector_field(&self.w, "W")?,
@@ -210,7 +210,7 @@ impl Own {
     /// Checks the T in the fields; the case to open and the verdict.
     fn check(&mut self) -> Result<Checked, String> {
         let (request, yours) = self.read()?;
-        let verdict = check::check(&request, yours)?;
+        let verdict = check::check(&request, yours).map_err(|e| e.to_string())?;
         let [w, n] = [request.w, request.n].map(DVec3::from_array);
         let case = ExplorerState::new(w, n, request.mu_i, request.mu_t, request.convention)
             .map_err(|e| e.to_string())?;

@@ -10,9 +10,9 @@ use refraction_kernel::api::{Api, Args};
 use serde_json::Value as Json;
 
 use super::literal;
-use crate::lines::api_check::Code;
-use crate::lines::api_check::fields::names;
-use crate::lines::solve::Precision;
+use refraction_tools::api_check::Code;
+use refraction_tools::api_check::fields::names;
+use refraction_tools::solve::Precision;
 
 /// The language a test is written in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -315,7 +315,7 @@ pub fn test(language: Language, case: &ApiCase<'_>) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lines::api_check::{Options, Record, check_record};
+    use refraction_tools::api_check::{Options, Record, check_record};
 
     /// The test of a logged line, with the verdict's own fields.
     fn snippet(api: Api, line: &str, language: Language) -> String {

@@ -1,0 +1,18 @@
+//! The files of the refraction explorer, read and written safely: every file the project writes
+//! goes through [`write_atomically`] (a crash, a full disk or a planted link never leaves a
+//! half-written or clobbered file), and every file it reads whole goes through [`read_capped`]
+//! (a huge or endless file is refused, not read into memory).
+//!
+//! ```
+//! let folder = tempfile::tempdir()?;
+//! let path = folder.path().join("state.json");
+//! refraction_files::write_atomically(&path, b"{}")?;
+//! assert_eq!(refraction_files::read_capped(&path, 1 << 20, "a state file")?, "{}");
+//! # Ok::<(), std::io::Error>(())
+//! ```
+
+mod atomic;
+mod capped;
+
+pub use atomic::{check_writable, write_atomically};
+pub use capped::{read_capped, read_capped_bytes};

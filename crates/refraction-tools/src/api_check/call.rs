@@ -1,0 +1,293 @@
+//! A logged call made ready to judge: the arguments in the API's own convention, what came
+//! back, the truth the line (or the command line) gives, the precision and the rounding of the
+//! logged numbers.
+
+use glam::DVec3;
+use refraction_i18n::{decimal, t};
+use refraction_kernel::api::{Api, Args};
+
+use super::fields::{self, names};
+use super::record::{Record, Value};
+use crate::solve::Precision;
+
+/// What the command line adds to every line.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Options {
+    /// The API the lines were logged from.
+    pub api: Api,
+    /// `--inside`: the index inside the object, so that `entering` gives `from` and `to`.
+    pub inside: Option<f64>,
+    /// `--outside`: the index outside the object.
+    pub outside: Option<f64>,
+    /// `--precision`: the student's working precision, unless a line says otherwise.
+    pub precision: Option<Precision>,
+}
+
+impl Options {
+    /// Options for `api` with nothing else given.
+    #[must_use]
+    pub fn new(api: Api) -> Self {
+        Self {
+            api,
+            inside: None,
+            outside: None,
+            precision: None,
+        }
+    }
+}
+
+/// What the line says about the ray beyond the call's own arguments.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Truth {
+    /// The index of the medium the ray travels in and of the one it enters.
+    pub from_to: Option<(f64, f64)>,
+    /// The ray's direction of travel as the tracer holds it.
+    pub travel: Option<DVec3>,
+    /// Whether the ray enters the object.
+    pub entering: Option<bool>,
+    /// Whether `from_to` came from `entering` with `--inside` and `--outside`.
+    pub from_entering: bool,
+}
+
+impl Truth {
+    /// μ = from/to, when known.
+    #[must_use]
+    pub fn mu(&self) -> Option<f64> {
+        self.from_to.map(|(from, to)| from / to)
+    }
+
+    /// Whether the line gives no truth at all.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.from_to.is_none() && self.travel.is_none() && self.entering.is_none()
+    }
+}
+
+/// What came back from the call.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Got {
+    /// A vector (possibly zero, NaN or infinite).
+    Vector(DVec3),
+    /// Nothing: pbrt's `false`, or a null `wo` from Mitsuba (it reflected).
+    Nothing,
+}
+
+/// One logged call.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Call {
+    /// The API.
+    pub api: Api,
+    /// The arguments as logged, in the API's convention.
+    pub args: Args<f64>,
+    /// What came back.
+    pub got: Got,
+    /// The truth given.
+    pub truth: Truth,
+    /// The precision the student's code computes in.
+    pub precision: Precision,
+    /// The most significant digits of the line's numbers.
+    pub digits: u32,
+    /// The path this hit belongs to (`--paths`).
+    pub path: Option<String>,
+    /// Where the hit is, if logged.
+    pub point: Option<DVec3>,
+}
+
+fn vector(record: &Record, name: &str) -> Result<Option<DVec3>, String> {
+    match record.get(name) {
+        None => Ok(None),
+        Some(Value::Vector(v)) => Ok(Some(DVec3::from_array(*v))),
+        Some(_) => Err(t!("check-field-not-vector", field = name)),
+    }
+}
+
+/// The argument vector `name` (`what` says what it is), finite and not zero.
+fn required_vector(record: &Record, name: &str, what: String) -> Result<DVec3, String> {
+    let missing = || t!("check-field-missing", field = name, what = what);
+    let v = vector(record, name)?.ok_or_else(missing)?;
+    if !v.is_finite() {
+        let value = v.to_string();
+        return Err(t!("check-field-not-finite", field = name, value = value));
+    }
+    if v == DVec3::ZERO {
+        return Err(t!("check-field-zero-vector", field = name));
+    }
+    Ok(v)
+}
+
+fn number(record: &Record, name: &str) -> Result<Option<f64>, String> {
+    match record.get(name) {
+        None => Ok(None),
+        Some(Value::Number(x)) if x.is_finite() && *x > 0.0 => Ok(Some(*x)),
+        Some(Value::Number(x)) => {
+            let value = decimal(&x.to_string());
+            Err(t!("check-field-not-positive", field = name, value = value))
+        }
+        Some(_) => Err(t!("check-field-not-number-json", field = name)),
+    }
+}
+
+fn flag(record: &Record, name: &str) -> Option<bool> {
+    match record.get(name) {
+        Some(Value::Flag(b)) => Some(*b),
+        _ => None,
+    }
+}
+
+fn label(record: &Record, name: &str) -> Option<String> {
+    match record.get(name) {
+        Some(Value::Label(text)) => Some(text.clone()),
+        _ => None,
+    }
+}
+
+fn truth(record: &Record, options: &Options) -> Result<Truth, String> {
+    let entering = flag(record, "entering");
+    let given = match (number(record, "from")?, number(record, "to")?) {
+        (Some(from), Some(to)) => Some((from, to)),
+        (None, None) => None,
+        _ => return Err(t!("check-from-and-to-together")),
+    };
+    let sides = options.inside.zip(options.outside);
+    let from_sides = entering.zip(sides).map(|(entering, (inside, outside))| {
+        if entering {
+            (outside, inside)
+        } else {
+            (inside, outside)
+        }
+    });
+    let travel = vector(record, "travel")?;
+    if travel.is_some_and(|t| !t.is_finite() || t == DVec3::ZERO) {
+        return Err(t!("check-travel-not-finite"));
+    }
+    Ok(Truth {
+        from_to: given.or(from_sides),
+        travel,
+        entering,
+        from_entering: given.is_none() && from_sides.is_some(),
+    })
+}
+
+fn got(record: &Record, api: Api) -> Result<Got, String> {
+    let name = names(api).result;
+    let returned = flag(record, fields::RETURNED);
+    match (record.get(name), returned) {
+        (_, Some(false)) => Ok(Got::Nothing),
+        (Some(Value::Null), Some(true)) => {
+            let returned = fields::RETURNED;
+            Err(t!("check-result-null", field = name, returned = returned))
+        }
+        (Some(Value::Null), None) => Ok(Got::Nothing),
+        (Some(Value::Vector(v)), _) => Ok(Got::Vector(DVec3::from_array(*v))),
+        (None, _) => Err(t!("check-result-missing", field = name, api = api.name())),
+        (Some(_), _) => Err(t!("check-field-not-vector", field = name)),
+    }
+}
+
+fn precision(record: &Record, options: &Options) -> Result<Precision, String> {
+    match label(record, "precision").as_deref() {
+        None => Ok(options
+            .precision
+            .unwrap_or_else(|| fields::usual_precision(options.api))),
+        Some("f32" | "float") => Ok(Precision::F32),
+        Some("f64" | "double") => Ok(Precision::F64),
+        Some(other) => Err(t!("check-unknown-precision", text = other)),
+    }
+}
+
+impl Call {
+    /// The call a record describes.
+    ///
+    /// # Errors
+    /// A missing or ill-typed field, a non-finite or zero argument vector, an eta that is not
+    /// a finite number > 0; the message names the field.
+    pub fn from_record(record: &Record, options: &Options) -> Result<Self, String> {
+        let api = options.api;
+        let n = names(api);
+        let normal = if api == Api::Mitsuba && record.get(n.normal).is_none() {
+            DVec3::Z
+        } else {
+            required_vector(record, n.normal, t!("check-what-normal"))?
+        };
+        let args = Args {
+            incident: required_vector(record, n.incident, t!("check-what-incident"))?,
+            normal,
+            eta: number(record, n.eta)?.ok_or_else(|| {
+                let (eta, what) = (n.eta, t!("check-what-eta"));
+                t!("check-field-missing", field = eta, what = what)
+            })?,
+        };
+        Ok(Self {
+            api,
+            args,
+            got: got(record, api)?,
+            truth: truth(record, options)?,
+            precision: precision(record, options)?,
+            digits: record.digits,
+            path: label(record, "path"),
+            point: vector(record, "point")?,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn call(api: Api, line: &str, options: &Options) -> Result<Call, String> {
+        Call::from_record(&Record::from_json_line(api, line)?, options)
+    }
+
+    #[test]
+    fn entering_gives_from_and_to_with_the_sides() {
+        let options = Options {
+            inside: Some(1.5),
+            outside: Some(1.0),
+            ..Options::new(Api::Rtiow)
+        };
+        let line =
+            r#"{"uv":[0,-1,0],"n":[0,1,0],"etai_over_etat":1.5,"refracted":[0,-1,0],"entering":0}"#;
+        let c = call(Api::Rtiow, line, &options).unwrap();
+        assert_eq!(c.truth.from_to, Some((1.5, 1.0)));
+        assert!(c.truth.from_entering);
+        assert_eq!(c.precision, Precision::F64);
+    }
+
+    #[test]
+    fn each_api_says_what_is_missing() {
+        let cases = [
+            (
+                Api::Pbrt,
+                r#"{"wi":[0,1,0],"n":[0,1,0],"eta":1.5}"#,
+                "\"returned\": false",
+            ),
+            (
+                Api::Glsl,
+                r#"{"I":[0,0,0],"N":[0,1,0],"eta":1,"result":[0,0,0]}"#,
+                "`I` is the zero vector",
+            ),
+            (
+                Api::Glsl,
+                r#"{"I":[0,-1,0],"N":[0,1,0],"eta":-1,"result":[0,0,0]}"#,
+                "`eta` must be a finite number > 0",
+            ),
+            (
+                Api::Mitsuba,
+                r#"{"wi":[0,0,1],"eta":1.5}"#,
+                "null when it reflected",
+            ),
+        ];
+        for (api, line, message) in cases {
+            let e = call(api, line, &Options::new(api)).unwrap_err();
+            assert!(e.contains(message), "{e}");
+        }
+        let pbrt = r#"{"wi":[0,1,0],"n":[0,1,0],"eta":1.5,"returned":false}"#;
+        assert_eq!(
+            call(Api::Pbrt, pbrt, &Options::new(Api::Pbrt)).unwrap().got,
+            Got::Nothing
+        );
+        let mitsuba = r#"{"wi":[0,0,1],"eta":1.5,"wo":null}"#;
+        let c = call(Api::Mitsuba, mitsuba, &Options::new(Api::Mitsuba)).unwrap();
+        assert_eq!(c.args.normal, DVec3::Z);
+    }
+}

@@ -1,0 +1,205 @@
+//! The verdict on one call: the result mistake (if any) and what the result resembles, the
+//! readings of the arguments, the physically right T, and the answer's fields.
+
+use glam::DVec3;
+use refraction_kernel::api::Meaning;
+use refraction_kernel::{Convention, Real};
+use serde_json::Value as Json;
+
+use super::call::{Call, Got};
+use super::code::Code;
+use super::explain;
+use super::readings::{Reading, Tolerance, readings, undo};
+use super::result::{Returns, Seen, returns, transmitted_by};
+use crate::check::{self, Match};
+use crate::solve::{Precision, Request};
+use crate::vector_text::{angle, length};
+
+/// What a wrong result looks like.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Resemblance {
+    /// The other root: the API's answer mirrored across the surface.
+    OtherRoot,
+    /// The API's answer mirrored across the normal.
+    WrongBend,
+    /// Minus the API's answer.
+    Reversed,
+    /// The API's direction with this length ratio.
+    Length(f64),
+    /// The mirror reflection, although the ray refracts.
+    Reflection,
+    /// What the API returns with this argument mistake.
+    Variant(Code),
+    /// An answer that nothing is transmitted, although the API refracts.
+    Nothing(&'static str),
+    /// NaN or infinite components.
+    NotFinite,
+    /// None of these: this many degrees from the API's answer.
+    Off(f64),
+    /// Past the critical angle: the API formula's own vector (the book's and Mitsuba's refract).
+    Formula,
+    /// Past the critical angle: some other direction.
+    Direction,
+}
+
+/// The verdict on one call.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Diagnosis {
+    /// Whether the call is right: no mistakes.
+    pub ok: bool,
+    /// The mistakes of every equally good explanation, the likeliest first.
+    pub mistakes: Vec<Code>,
+    /// The equally good explanations, each a set of mistakes, the likeliest first.
+    pub alternatives: Vec<Vec<Code>>,
+    /// What happened, in the API's language.
+    pub explanation: String,
+    /// Which candidate of the physical refraction the result is.
+    pub matches: Option<Match>,
+    /// The physically right T (`None` on total internal reflection or when unknown).
+    pub t: Option<[f64; 3]>,
+    /// What the API returns for these arguments, in its own shape.
+    pub api_result: Json,
+    /// The right call's meaning under the likeliest explanation.
+    pub right: Meaning<f64>,
+    /// The direction the ray leaves this hit in, as the student's code sent it.
+    pub outgoing: DVec3,
+}
+
+/// The result mistake and what the result resembles, or `None` when it is the API's answer.
+fn finding<S: Real>(call: &Call, r: &Returns, seen: Seen) -> Option<(Code, Resemblance)> {
+    match seen {
+        Seen::Nothing(_) if r.may_reflect() => None,
+        Seen::Direction(v) if r.is_transmitted(v) => None,
+        Seen::NotFinite(_) if r.may_reflect() => Some((Code::MissedTir, Resemblance::NotFinite)),
+        Seen::Direction(v) if r.transmitted.is_none() => {
+            let formula = r.formula.is_some_and(|f| r.same(v, f));
+            let looks = if formula {
+                Resemblance::Formula
+            } else {
+                Resemblance::Direction
+            };
+            Some((Code::MissedTir, looks))
+        }
+        Seen::Nothing(what) => Some((Code::NotTheApiResult, Resemblance::Nothing(what))),
+        Seen::NotFinite(_) => Some((Code::NotTheApiResult, Resemblance::NotFinite)),
+        Seen::Direction(v) => Some((Code::NotTheApiResult, resemblance::<S>(call, r, v))),
+    }
+}
+
+/// What a wrong direction `v` is, where the API refracts.
+fn resemblance<S: Real>(call: &Call, r: &Returns, v: DVec3) -> Resemblance {
+    let p = r
+        .transmitted
+        .or_else(|| r.nearby.iter().flatten().next().copied())
+        .unwrap_or(DVec3::ZERO);
+    let n = crate::vector_text::unit(call.api.meaning(call.args).normal);
+    let along = n * (2.0 * p.dot(n));
+    let shapes = [
+        (p - along, Resemblance::OtherRoot),
+        (along - p, Resemblance::WrongBend),
+        (-p, Resemblance::Reversed),
+        (r.reflection, Resemblance::Reflection),
+    ];
+    if let Some((_, shape)) = shapes.iter().find(|(w, _)| r.same(v, *w)) {
+        return *shape;
+    }
+    let variants = [
+        Code::EtaInverted,
+        Code::NormalNotFacing,
+        Code::IncidentReversed,
+    ];
+    for code in variants {
+        let other = transmitted_by::<S>(call.api, undo(&[code], call.args));
+        if other.is_some_and(|w| r.same(v, w)) {
+            return Resemblance::Variant(code);
+        }
+    }
+    if angle(v, p) <= r.distance {
+        Resemblance::Length(length(v) / length(p))
+    } else {
+        Resemblance::Off(angle(v, p).to_degrees())
+    }
+}
+
+/// The candidate the result is and the right T, from the project's own kernel.
+fn physical(meaning: &Meaning<f64>, got: Got) -> (Option<Match>, Option<[f64; 3]>) {
+    let request = Request {
+        w: meaning.travel.to_array(),
+        n: meaning.normal.to_array(),
+        mu_i: meaning.mu,
+        mu_t: 1.0,
+        convention: Convention::AlongRay,
+        precision: Precision::F64,
+    };
+    let yours = match got {
+        Got::Vector(v) => v.to_array(),
+        Got::Nothing => [0.0; 3],
+    };
+    check::check(&request, yours).map_or((None, None), |v| (v.matches, v.correct))
+}
+
+/// The explanations as sets of codes, and all their codes in order.
+fn alternatives(readings: &[Reading], result: Option<Code>) -> (Vec<Vec<Code>>, Vec<Code>) {
+    let mut sets: Vec<Vec<Code>> = readings
+        .iter()
+        .map(|r| r.codes.iter().copied().chain(result).collect())
+        .collect();
+    if sets.is_empty() {
+        sets.push(result.into_iter().collect());
+    }
+    sets.retain(|s| !s.is_empty());
+    let mut all: Vec<Code> = Vec::new();
+    for code in sets.iter().flatten() {
+        if !all.contains(code) {
+            all.push(*code);
+        }
+    }
+    (sets, all)
+}
+
+fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
+    let tolerance = Tolerance::new(call.digits, S::EPSILON.to_f64());
+    let returns = returns::<S>(call, &tolerance)?;
+    let seen = returns.see(call.got);
+    let finding = finding::<S>(call, &returns, seen);
+    let readings = readings(call, &tolerance);
+    let right = readings
+        .first()
+        .map_or_else(|| call.api.meaning(call.args), |r| r.meaning);
+    let (matches, t) = physical(&right, call.got);
+    let (alternatives, mistakes) = alternatives(&readings, finding.map(|(code, _)| code));
+    let outgoing = match (seen, call.got) {
+        (Seen::Direction(v) | Seen::NotFinite(v), _) => v,
+        (Seen::Nothing("the reflection"), Got::Vector(v)) => v,
+        (Seen::Nothing(_), _) => returns.reflection,
+    };
+    let explanation = explain::explanation(&explain::Context {
+        call,
+        readings: &readings,
+        finding,
+        returns: &returns,
+        seen,
+    });
+    Ok(Diagnosis {
+        ok: !readings.is_empty() && mistakes.is_empty(),
+        mistakes,
+        alternatives,
+        explanation,
+        matches,
+        t,
+        api_result: returns.json,
+        right,
+        outgoing,
+    })
+}
+
+/// Judges one call in the student's precision.
+///
+/// # Errors
+/// An argument too large for that precision.
+pub fn diagnose(call: &Call) -> Result<Diagnosis, String> {
+    match call.precision {
+        Precision::F32 => diagnose_in::<f32>(call),
+        Precision::F64 => diagnose_in::<f64>(call),
+    }
+}

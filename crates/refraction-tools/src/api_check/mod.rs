@@ -1,0 +1,358 @@
+//! `check --api NAME`: a student's call checked in their own API's conventions. Each line
+//! carries the API's own argument names and what came back (see [`fields`]), with optional
+//! truth (`from`, `to`, `travel`, `entering`); the answer says whether the call is right, which
+//! mistakes explain what came back ([`Code`]), what the API returns for these arguments and the
+//! physically right T.
+//!
+//! The diagnosis tries every combination of the argument mistakes (`eta_inverted`,
+//! `incident_reversed`, `normal_not_facing`, `not_unit_input`) against the API's contract and
+//! the truth, keeps the fewest that fit (all of them when several fit equally, the likeliest
+//! first), and compares what came back with what the API returns for the arguments as logged
+//! (`not_the_api_result`, `missed_tir`), within the rounding of the logged digits.
+//!
+//! For the explorer: [`Record::from_texts`] reads the API's fields from text, [`Call::from_record`]
+//! makes the call, [`diagnose()`] judges it; [`fields::names`] gives each API's field names.
+
+pub mod call;
+pub mod code;
+pub mod csv;
+pub mod diagnose;
+mod explain;
+pub mod fields;
+pub mod paths;
+pub mod pattern;
+pub mod readings;
+pub mod record;
+pub mod result;
+
+use std::collections::BTreeMap;
+
+use refraction_i18n::t;
+use serde::Serialize;
+
+pub use call::{Call, Options};
+pub use code::Code;
+pub use diagnose::{Diagnosis, diagnose};
+pub use pattern::Pattern;
+pub use record::Record;
+
+use crate::check::{self, Match};
+
+/// The JSON answer for one call.
+#[derive(Serialize)]
+struct Answer<'a> {
+    #[serde(flatten)]
+    verdict: check::Answer<'a>,
+    api_result: &'a serde_json::Value,
+    mistakes: Vec<&'static str>,
+    alternatives: Vec<Vec<&'static str>>,
+    // untranslated: serde's path of a function
+    #[serde(skip_serializing_if = "Option::is_none")]
+    path: Option<&'a str>,
+}
+
+/// The answer line for a judged call.
+#[must_use]
+pub fn answer_line(call: &Call, diagnosis: &Diagnosis) -> String {
+    let names = |codes: &[Code]| codes.iter().map(|c| c.name()).collect::<Vec<_>>();
+    let answer = Answer {
+        verdict: check::Answer {
+            ok: diagnosis.ok,
+            matches: diagnosis.matches.map(Match::name),
+            explanation: &diagnosis.explanation,
+            t: diagnosis.t,
+        },
+        api_result: &diagnosis.api_result,
+        mistakes: names(&diagnosis.mistakes),
+        alternatives: diagnosis.alternatives.iter().map(|a| names(a)).collect(),
+        path: call.path.as_deref(),
+    };
+    // Serialising this struct of plain fields cannot fail; a map key is never non-string.
+    serde_json::to_string(&answer).unwrap_or_default()
+}
+
+/// Judges one record.
+///
+/// # Errors
+/// The record is not a complete call (see [`Call::from_record`]) or does not fit the precision.
+pub fn check_record(record: &Record, options: &Options) -> Result<(Call, Diagnosis), String> {
+    let call = Call::from_record(record, options)?;
+    let diagnosis = diagnose(&call)?;
+    Ok((call, diagnosis))
+}
+
+/// Counts of verdicts by mistake, for the summary on stderr.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Tally {
+    counts: BTreeMap<&'static str, usize>,
+}
+
+impl Tally {
+    /// Counts one more `kind`.
+    pub fn add(&mut self, kind: &'static str) {
+        *self.counts.entry(kind).or_default() += 1;
+    }
+
+    /// Counts a verdict: `ok`, or each mistake of its likeliest explanation (`unexplained`
+    /// when none fits).
+    pub fn add_verdict(&mut self, diagnosis: &Diagnosis) {
+        match diagnosis.alternatives.first() {
+            _ if diagnosis.ok => self.add("ok"),
+            Some(codes) => codes.iter().for_each(|c| self.add(c.name())),
+            None => self.add("unexplained"),
+        }
+    }
+
+    /// Each kind counted and its count, in the summary's order.
+    pub fn counts(&self) -> impl Iterator<Item = (&'static str, usize)> + '_ {
+        self.counts.iter().map(|(kind, n)| (*kind, *n))
+    }
+
+    /// `2 ok, 1 eta_inverted, ...`.
+    #[must_use]
+    pub fn summary(&self) -> String {
+        let parts: Vec<String> = self
+            .counts
+            .iter()
+            .map(|(k, n)| format!("{n} {k}"))
+            .collect();
+        parts.join(", ")
+    }
+}
+
+/// How the lines are written.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Format {
+    /// One JSON object per line (the default).
+    JsonLines,
+    /// printf-style lines read with a `--pattern`.
+    Pattern(Pattern),
+    /// CSV with a header line naming the fields.
+    Csv,
+}
+
+/// The tally's name for log lines that did not match the pattern.
+// untranslated: the tally's name, as `check` prints it on stderr (the panel says it in words)
+pub const SKIPPED: &str = "skipped (not matching the pattern)";
+
+/// What a line holds, as far as it can be judged without the run's state (on any thread).
+enum Judged {
+    /// A call and its diagnosis, or why the line holds no call that can be judged (boxed: a
+    /// diagnosis is large, and the chunks hold many of the other kinds).
+    Call(Box<Result<(Call, Diagnosis), String>>),
+    /// A log line the pattern does not match.
+    Unmatched,
+    /// A CSV line read before the header was known: read in order, with the run's state.
+    Deferred(String),
+}
+
+/// How a run reads and judges its lines: everything about it that does not change once the
+/// CSV header is known, so that lines can be judged on several threads.
+#[derive(Debug)]
+struct Reader {
+    options: Options,
+    format: Format,
+    strict: bool,
+    header: std::sync::OnceLock<Result<csv::Header, String>>,
+}
+
+/// What one line holds before it is judged.
+enum Read {
+    /// The fields of a call, or why the line holds none that can be read.
+    Record(Result<Record, String>),
+    /// A log line the pattern does not match.
+    Unmatched,
+    /// A CSV line read before the header was known.
+    Deferred,
+}
+
+impl Reader {
+    /// Reads one line's fields, as far as that can be done without the run's state.
+    fn read(&self, line: &str) -> Read {
+        let api = self.options.api;
+        Read::Record(match &self.format {
+            Format::JsonLines => Record::from_json_line(api, line),
+            Format::Pattern(pattern) => match pattern.capture(line) {
+                Some(texts) => Record::from_texts(api, texts),
+                None => return Read::Unmatched,
+            },
+            Format::Csv => match self.header.get() {
+                None => return Read::Deferred,
+                Some(Ok(header)) => header.record(line),
+                Some(Err(e)) => Err(t!("check-csv-no-header", reason = e)),
+            },
+        })
+    }
+
+    /// Judges one line, or leaves it for [`Books::settle`] when it needs the run's state.
+    fn judge(&self, line: &str) -> Judged {
+        match self.read(line) {
+            Read::Record(record) => Judged::Call(Box::new(
+                record.and_then(|record| check_record(&record, &self.options)),
+            )),
+            Read::Unmatched => Judged::Unmatched,
+            Read::Deferred => Judged::Deferred(line.to_owned()),
+        }
+    }
+
+    /// Takes `line` as the CSV header (called in order, while none is known); why it is
+    /// unusable, if it is.
+    fn take_header(&self, line: &str) -> Option<String> {
+        let header = csv::Header::parse(self.options.api, line);
+        let failed = header.as_ref().err().cloned();
+        // Only this thread sets the header, between chunks: it cannot be set already.
+        let _ = self.header.set(header);
+        failed
+    }
+
+    /// A CSV line read in order: the header if none is known yet, else a record to judge.
+    fn judge_in_order(&self, line: &str) -> Option<Judged> {
+        if self.header.get().is_none() {
+            return self
+                .take_header(line)
+                .map(|e| Judged::Call(Box::new(Err(e))));
+        }
+        Some(self.judge(line))
+    }
+}
+
+/// What a run keeps as it goes: the paths followed, the tally, whether all was right.
+#[derive(Debug)]
+struct Books {
+    paths: Option<paths::Paths>,
+    tally: Tally,
+    all_ok: bool,
+}
+
+impl Books {
+    /// The answer to a judged line, in input order: nothing for a line without a call.
+    fn settle(&mut self, reader: &Reader, judged: Judged) -> Result<String, String> {
+        let judged = match judged {
+            Judged::Call(judged) => *judged,
+            Judged::Unmatched if reader.strict => Err(t!("check-line-not-matching")),
+            Judged::Unmatched => {
+                self.tally.add(SKIPPED);
+                return Ok(String::new());
+            }
+            Judged::Deferred(line) => match reader.judge_in_order(&line) {
+                None => return Ok(String::new()),
+                Some(judged) => return self.settle(reader, judged),
+            },
+        };
+        let ended = match (&judged, &mut self.paths) {
+            (Ok((call, diagnosis)), Some(paths)) => paths.hit(call, diagnosis),
+            _ => Ok(None),
+        };
+        match judged.and_then(|judged| ended.map(|ended| (judged, ended))) {
+            Ok(((call, diagnosis), ended)) => {
+                self.tally.add_verdict(&diagnosis);
+                self.all_ok &= diagnosis.ok;
+                let text = answer_line(&call, &diagnosis);
+                Ok(ended.map_or(text.clone(), |summary| format!("{summary}\n{text}")))
+            }
+            Err(e) => {
+                self.tally.add("unreadable");
+                self.all_ok = false;
+                Err(e)
+            }
+        }
+    }
+}
+
+/// One run of `check --api`: lines in, answer lines out, the tally kept.
+#[derive(Debug)]
+pub struct Session {
+    reader: Reader,
+    books: Books,
+}
+
+impl Session {
+    /// A run for `options` reading lines in `format`; with `strict`, a line that does not match
+    /// the pattern is an error instead of skipped; with `paths`, a summary follows each path.
+    #[must_use]
+    pub fn new(options: Options, format: Format, strict: bool, paths: bool) -> Self {
+        Self {
+            reader: Reader {
+                options,
+                format,
+                strict,
+                header: std::sync::OnceLock::new(),
+            },
+            books: Books {
+                paths: paths.then(paths::Paths::new),
+                tally: Tally::default(),
+                all_ok: true,
+            },
+        }
+    }
+
+    /// Answers one line: a JSON answer, or nothing for a line without a call.
+    ///
+    /// # Errors
+    /// Why the line cannot be judged; the loop answers it with `{"line", "error"}`.
+    pub fn answer(&mut self, line: &str) -> Result<String, String> {
+        let judged = self.reader.judge(line);
+        self.books.settle(&self.reader, judged)
+    }
+
+    /// Answers every non-empty line of `input` on `output` in order, the lines judged on
+    /// `threads` threads (see [`crate::answer_lines`]); returns whether every line was
+    /// answered. Call [`Session::finish`] after it.
+    ///
+    /// # Errors
+    /// Reading `input` or writing `output` failed.
+    pub fn run(
+        &mut self,
+        input: impl std::io::Read,
+        output: impl std::io::Write,
+        threads: usize,
+    ) -> Result<bool, crate::LinesError> {
+        let (reader, books) = (&self.reader, &mut self.books);
+        crate::answer_lines(
+            input,
+            output,
+            threads,
+            |line| reader.judge(line),
+            |judged| books.settle(reader, judged),
+        )
+    }
+
+    /// The record on one line, read in order, for the explorer's pasted logs (so that they
+    /// and the command read lines alike): `None` for a line without a call (a CSV header; a log
+    /// line the pattern does not match, counted as skipped). The caller judges the record.
+    ///
+    /// # Errors
+    /// The line is not a record of the API's fields (the message says why), a log line does
+    /// not match the pattern under `strict`, or the CSV header is unusable.
+    pub fn record(&mut self, line: &str) -> Result<Option<Record>, String> {
+        match self.reader.read(line) {
+            Read::Record(record) => record.map(Some),
+            Read::Unmatched if self.reader.strict => Err(t!("check-line-not-matching")),
+            Read::Unmatched => {
+                self.books.tally.add(SKIPPED);
+                Ok(None)
+            }
+            Read::Deferred => self.reader.take_header(line).map_or(Ok(None), Err),
+        }
+    }
+
+    /// The summary of the last path (with `--paths`), once the input has ended.
+    pub fn finish(&mut self) -> Option<String> {
+        self.books.paths.as_mut().and_then(paths::Paths::finish)
+    }
+
+    /// The verdicts so far.
+    #[must_use]
+    pub fn tally(&self) -> &Tally {
+        &self.books.tally
+    }
+
+    /// Whether every line so far was right and every path finished left right.
+    #[must_use]
+    pub fn all_ok(&self) -> bool {
+        self.books.all_ok && self.books.paths.as_ref().is_none_or(|p| p.all_exit_ok)
+    }
+}
+
+#[cfg(test)]
+mod tests;

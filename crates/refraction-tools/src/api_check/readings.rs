@@ -1,0 +1,239 @@
+//! The argument mistakes: every way of reading a call's arguments as a right call with up to
+//! all four argument mistakes undone, kept when it fits the API's contract and the truth, the
+//! fewest mistakes first and the likeliest of those first.
+
+use glam::DVec3;
+use refraction_kernel::api::{Api, Args, Meaning};
+
+use super::call::Call;
+use super::code::Code;
+use crate::vector_text::{angle, length, unit};
+
+/// The mistakes a call's arguments can have, in the order they are undone.
+const ARGUMENT_MISTAKES: [Code; 4] = [
+    Code::EtaInverted,
+    Code::IncidentReversed,
+    Code::NormalNotFacing,
+    Code::NotUnitInput,
+];
+
+/// How closely logged numbers can be trusted.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tolerance {
+    /// Relative rounding of the logged numbers: half a unit in the last digit written.
+    pub rounding: f64,
+    /// The machine epsilon of the student's working precision.
+    pub epsilon: f64,
+}
+
+impl Tolerance {
+    /// The tolerance for numbers written with `digits` significant digits (0: exact) in a
+    /// precision with machine epsilon `epsilon`.
+    #[must_use]
+    pub fn new(digits: u32, epsilon: f64) -> Self {
+        let rounding = if digits == 0 || digits >= 17 {
+            0.0
+        } else {
+            0.5 * 10f64.powi(1 - i32::try_from(digits).unwrap_or(17))
+        };
+        Self { rounding, epsilon }
+    }
+
+    /// The relative error a number may carry: its rounding, or a few ulps of working precision.
+    #[must_use]
+    pub fn relative(&self) -> f64 {
+        4.0 * self.rounding + 16.0 * self.epsilon
+    }
+
+    /// Whether `v` is unit length within the logged rounding.
+    #[must_use]
+    pub fn is_unit(&self, v: DVec3) -> bool {
+        (length(v) - 1.0).abs() <= self.relative()
+    }
+
+    /// Whether two ratios are the same number as logged.
+    #[must_use]
+    pub fn same_ratio(&self, a: f64, b: f64) -> bool {
+        (a / b - 1.0).abs() <= self.relative()
+    }
+
+    /// Whether two directions are the same as logged (a tracer's own direction may be written
+    /// with fewer digits, and unnormalised).
+    #[must_use]
+    pub fn same_direction(&self, a: DVec3, b: DVec3) -> bool {
+        angle(a, b) <= (8.0 * self.rounding).max(1e-3)
+    }
+}
+
+/// One reading of the arguments: the mistakes it assumes and the call without them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Reading {
+    /// The argument mistakes assumed: eta, incident, normal, unit, in that order.
+    pub codes: Vec<Code>,
+    /// The arguments with those mistakes undone: the right call.
+    pub args: Args<f64>,
+    /// What the right call means.
+    pub meaning: Meaning<f64>,
+}
+
+/// The arguments with `codes` undone.
+#[must_use]
+pub fn undo(codes: &[Code], args: Args<f64>) -> Args<f64> {
+    let mut right = args;
+    for code in codes {
+        match code {
+            Code::EtaInverted => right.eta = 1.0 / right.eta,
+            Code::IncidentReversed => right.incident = -right.incident,
+            Code::NormalNotFacing => right.normal = -right.normal,
+            Code::NotUnitInput => {
+                right.incident = unit(right.incident);
+                right.normal = unit(right.normal);
+            }
+            Code::NotTheApiResult | Code::MissedTir => {}
+        }
+    }
+    right
+}
+
+/// The reading with `codes` if it fits: `not_unit_input` exactly when an input is not unit,
+/// the API's contract, and every truth given.
+fn fit(call: &Call, codes: Vec<Code>, tolerance: &Tolerance) -> Option<Reading> {
+    let unit_input = tolerance.is_unit(call.args.incident) && tolerance.is_unit(call.args.normal);
+    if codes.contains(&Code::NotUnitInput) == unit_input {
+        return None;
+    }
+    let args = undo(&codes, call.args);
+    let meaning = call.api.meaning(args);
+    let truth = &call.truth;
+    let fits = meaning.within_contract
+        && truth
+            .travel
+            .is_none_or(|t| tolerance.same_direction(meaning.travel, t))
+        && truth
+            .mu()
+            .is_none_or(|mu| tolerance.same_ratio(meaning.mu, mu));
+    fits.then_some(Reading {
+        codes,
+        args,
+        meaning,
+    })
+}
+
+/// Whether the logged normal points into the object under `reading` (pbrt and Mitsuba, with
+/// `entering` given): a ray entering travels against the outward normal.
+#[must_use]
+pub fn normal_points_inward(call: &Call, reading: &Reading) -> bool {
+    matches!(call.api, Api::Pbrt | Api::Mitsuba)
+        && call.truth.entering.is_some_and(|entering| {
+            (call.args.normal.dot(reading.meaning.travel) > 0.0) == entering
+        })
+}
+
+/// How unlikely a reading is in this API (lower is likelier), from the issue threads: eta
+/// upside down and an unflipped normal lead in GLSL and the book; the sign of wi leads in pbrt
+/// and Mitsuba, where an inward normal is the likelier of the two ways to get eta's side wrong.
+fn cost(call: &Call, reading: &Reading) -> i32 {
+    let inward = normal_points_inward(call, reading);
+    let one = |code: Code| match (call.api, code) {
+        (Api::Glsl | Api::Rtiow, Code::EtaInverted) => 0,
+        (Api::Glsl | Api::Rtiow, Code::NormalNotFacing) => 2,
+        (Api::Glsl | Api::Rtiow, Code::IncidentReversed) => 4,
+        (Api::Pbrt | Api::Mitsuba, Code::IncidentReversed) => 0,
+        (Api::Pbrt | Api::Mitsuba, Code::NormalNotFacing) if inward => 1,
+        (Api::Pbrt | Api::Mitsuba, Code::EtaInverted) => 2,
+        (Api::Pbrt | Api::Mitsuba, Code::NormalNotFacing) => 4,
+        _ => 6,
+    };
+    reading.codes.iter().map(|&c| one(c)).sum()
+}
+
+/// Every reading with the fewest argument mistakes that fits, the likeliest first; empty when
+/// no combination of the four fits the truth.
+#[must_use]
+pub fn readings(call: &Call, tolerance: &Tolerance) -> Vec<Reading> {
+    for size in 0..=ARGUMENT_MISTAKES.len() {
+        let mut found: Vec<Reading> = (0..1_u32 << ARGUMENT_MISTAKES.len())
+            .filter(|mask| mask.count_ones() as usize == size)
+            .filter_map(|mask| {
+                let codes = ARGUMENT_MISTAKES
+                    .iter()
+                    .enumerate()
+                    .filter(|(i, _)| mask & (1 << i) != 0)
+                    .map(|(_, code)| *code)
+                    .collect();
+                fit(call, codes, tolerance)
+            })
+            .collect();
+        if !found.is_empty() {
+            found.sort_by_key(|r| cost(call, r));
+            return found;
+        }
+    }
+    Vec::new()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::api_check::call::{Got, Truth};
+    use crate::solve::Precision;
+
+    fn glsl(i: DVec3, n: DVec3, eta: f64, truth: Truth) -> Call {
+        Call {
+            api: Api::Glsl,
+            args: Args {
+                incident: i,
+                normal: n,
+                eta,
+            },
+            got: Got::Nothing,
+            truth,
+            precision: Precision::F64,
+            digits: 17,
+            path: None,
+            point: None,
+        }
+    }
+
+    fn codes(call: &Call) -> Vec<Vec<Code>> {
+        let tolerance = Tolerance::new(call.digits, f64::EPSILON);
+        readings(call, &tolerance)
+            .into_iter()
+            .map(|r| r.codes)
+            .collect()
+    }
+
+    #[test]
+    fn a_reversed_incident_or_a_wrong_normal_until_travel_tells() {
+        let d = DVec3::new(0.6, -0.8, 0.0);
+        let call = glsl(-d, DVec3::Y, 1.0 / 1.5, Truth::default());
+        assert_eq!(
+            codes(&call),
+            [vec![Code::NormalNotFacing], vec![Code::IncidentReversed]]
+        );
+        let known = Truth {
+            travel: Some(d),
+            ..Truth::default()
+        };
+        let call = glsl(-d, DVec3::Y, 1.0 / 1.5, known);
+        assert_eq!(codes(&call), [vec![Code::IncidentReversed]]);
+    }
+
+    #[test]
+    fn eta_is_checked_only_against_from_and_to() {
+        let d = DVec3::new(0.6, -0.8, 0.0);
+        assert_eq!(codes(&glsl(d, DVec3::Y, 1.5, Truth::default())), [vec![]]);
+        let truth = Truth {
+            from_to: Some((1.0, 1.5)),
+            ..Truth::default()
+        };
+        assert_eq!(
+            codes(&glsl(d, DVec3::Y, 1.5, truth)),
+            [vec![Code::EtaInverted]]
+        );
+        let long = glsl(d * 2.0, DVec3::Y, 1.5, truth);
+        assert_eq!(codes(&long), [vec![Code::EtaInverted, Code::NotUnitInput]]);
+        let unrelated = glsl(d, DVec3::Y, 1.2, truth);
+        assert!(codes(&unrelated).is_empty());
+    }
+}

@@ -1,0 +1,218 @@
+//! One logged call as named values, read from a JSON line or from the texts a `--pattern` or
+//! CSV header names, with the significant digits its numbers were written with.
+
+use refraction_i18n::t;
+use refraction_kernel::api::Api;
+use serde_json::Value as Json;
+
+use super::fields::{self, Kind};
+use crate::vector_text::{digits_of, parse_number, parse_vector};
+
+/// One field's value.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    /// A number.
+    Number(f64),
+    /// A 3-vector.
+    Vector([f64; 3]),
+    /// true/false.
+    Flag(bool),
+    /// null: nothing came back.
+    Null,
+    /// A word (path id, precision name).
+    Label(String),
+}
+
+/// The fields of one logged call.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Record {
+    values: Vec<(&'static str, Value)>,
+    /// The most significant digits any number in the line was written with (17 when exact).
+    pub digits: u32,
+}
+
+fn flag_text(text: &str) -> Option<bool> {
+    match text.trim().to_ascii_lowercase().as_str() {
+        "true" | "1" | "yes" => Some(true),
+        "false" | "0" | "no" => Some(false),
+        _ => None,
+    }
+}
+
+fn is_null_text(text: &str) -> bool {
+    matches!(
+        text.trim().to_ascii_lowercase().as_str(),
+        "null" | "none" | "nullptr" | "-"
+    )
+}
+
+/// Reads `text` as a value of `kind`, with its significant digits.
+///
+/// # Errors
+/// The text is not a value of that kind; the message names the field.
+pub fn from_text(kind: Kind, name: &str, text: &str) -> Result<(Value, u32), String> {
+    let text = text.trim();
+    let wrap = |e: crate::error::VectorError| format!("`{name}`: {e}");
+    match kind {
+        Kind::VectorOrNull if is_null_text(text) => Ok((Value::Null, 0)),
+        Kind::Vector | Kind::VectorOrNull => parse_vector(text)
+            .map(|v| (Value::Vector(v.value), v.digits))
+            .map_err(wrap),
+        Kind::Number => parse_number(text)
+            .map(|n| (Value::Number(n.value), n.digits))
+            .map_err(wrap),
+        Kind::Flag => flag_text(text)
+            .map(|f| (Value::Flag(f), 0))
+            .ok_or_else(|| t!("check-field-not-flag-got", field = name, text = text)),
+        Kind::Label => Ok((Value::Label(text.to_owned()), 0)),
+    }
+}
+
+fn json_number(value: &Json, name: &str) -> Result<(f64, u32), String> {
+    match value {
+        Json::Number(n) => {
+            let x = n.as_f64().unwrap_or(f64::NAN);
+            Ok((x, digits_of(x)))
+        }
+        Json::Null => Ok((f64::NAN, 0)),
+        Json::String(text) => parse_number(text)
+            .map(|n| (n.value, n.digits))
+            .map_err(|e| format!("`{name}`: {e}")),
+        _ => Err(t!("check-field-not-number-json", field = name)),
+    }
+}
+
+fn json_vector(value: &Json, name: &str) -> Result<(Value, u32), String> {
+    match value {
+        Json::String(text) => from_text(Kind::Vector, name, text),
+        Json::Array(items) if items.len() == 3 => {
+            let mut out = [0.0; 3];
+            let mut digits = 0;
+            for (i, (slot, item)) in out.iter_mut().zip(items).enumerate() {
+                let (x, d) = json_number(item, &format!("{name}[{i}]"))?;
+                *slot = x;
+                digits = digits.max(d);
+            }
+            Ok((Value::Vector(out), digits))
+        }
+        Json::Array(items) => {
+            let n = items.len();
+            Err(t!("check-field-not-three", field = name, count = n))
+        }
+        _ => Err(t!("check-field-not-a-vector", field = name)),
+    }
+}
+
+/// Reads the JSON `value` as a value of `kind`, with its significant digits.
+fn from_json(kind: Kind, name: &str, value: &Json) -> Result<(Value, u32), String> {
+    match (kind, value) {
+        (Kind::VectorOrNull, Json::Null) => Ok((Value::Null, 0)),
+        (Kind::Vector | Kind::VectorOrNull, _) => json_vector(value, name),
+        (Kind::Number, _) => json_number(value, name).map(|(x, d)| (Value::Number(x), d)),
+        (Kind::Flag, Json::Bool(b)) => Ok((Value::Flag(*b), 0)),
+        (Kind::Flag, Json::Number(_) | Json::String(_)) => {
+            let text = value
+                .as_str()
+                .map_or_else(|| value.to_string(), str::to_owned);
+            from_text(kind, name, &text)
+        }
+        (Kind::Label, Json::String(text)) => Ok((Value::Label(text.clone()), 0)),
+        (Kind::Label, Json::Number(n)) => Ok((Value::Label(n.to_string()), 0)),
+        (Kind::Flag, _) => Err(t!("check-field-not-flag", field = name)),
+        (Kind::Label, _) => Err(t!("check-field-not-label", field = name)),
+    }
+}
+
+impl Record {
+    /// The value of field `name`, if the line has it (a JSON null counts as absent except
+    /// where null means something, as for pbrt's `wt`).
+    #[must_use]
+    pub fn get(&self, name: &str) -> Option<&Value> {
+        self.values.iter().find(|(n, _)| *n == name).map(|(_, v)| v)
+    }
+
+    fn push(&mut self, name: &'static str, (value, digits): (Value, u32)) {
+        self.digits = self.digits.max(digits);
+        self.values.push((name, value));
+    }
+
+    /// Reads one JSON line of `api`'s fields; other fields are ignored.
+    ///
+    /// # Errors
+    /// Malformed JSON (with its column), not an object, or an ill-typed field.
+    pub fn from_json_line(api: Api, line: &str) -> Result<Self, String> {
+        let value: Json = serde_json::from_str(line)
+            .map_err(|e| crate::error::JsonError::from(&e).to_string())?;
+        let listed = || fields::listed(api);
+        let object = value
+            .as_object()
+            .ok_or_else(|| t!("check-json-not-object", fields = listed()))?;
+        let mut record = Self::default();
+        for (name, kind) in fields::all(api) {
+            match object.get(name) {
+                None => {}
+                Some(Json::Null) if kind != Kind::VectorOrNull => {}
+                Some(value) => record.push(name, from_json(kind, name, value)?),
+            }
+        }
+        Ok(record)
+    }
+
+    /// Reads the texts a pattern or CSV line gave for `api`'s fields.
+    ///
+    /// # Errors
+    /// An unknown field name or a text that is not a value of its field's kind.
+    pub fn from_texts<'a>(
+        api: Api,
+        texts: impl IntoIterator<Item = (&'a str, &'a str)>,
+    ) -> Result<Self, String> {
+        let mut record = Self::default();
+        for (name, text) in texts {
+            let (field, kind) =
+                fields::find(api, name).ok_or_else(|| t!("check-unknown-field", field = name))?;
+            record.push(field, from_text(kind, name, text)?);
+        }
+        Ok(record)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn json_and_text_give_the_same_record() {
+        let json = Record::from_json_line(
+            Api::Rtiow,
+            r#"{"uv":[0.6,-0.8,0],"n":"0 1 0","etai_over_etat":"0.666667","refracted":[0.4,-0.916515,0],"entering":1,"path":7}"#,
+        )
+        .unwrap();
+        let text = Record::from_texts(
+            Api::Rtiow,
+            [
+                ("uv", "vec3(0.6, -0.8, 0)"),
+                ("n", "[0, 1, 0]"),
+                ("etai_over_etat", "0.666667"),
+                ("refracted", "(0.4, -0.916515, 0)"),
+                ("entering", "true"),
+                ("path", "7"),
+            ],
+        )
+        .unwrap();
+        assert_eq!(json, text);
+        assert_eq!(json.digits, 6);
+        assert_eq!(json.get("entering"), Some(&Value::Flag(true)));
+    }
+
+    #[test]
+    fn null_means_nothing_came_back_only_where_it_can() {
+        let r =
+            Record::from_json_line(Api::Pbrt, r#"{"wi":[0,1,0],"wt":null,"from":null}"#).unwrap();
+        assert_eq!(r.get("wt"), Some(&Value::Null));
+        assert_eq!(r.get("from"), None);
+        let e = Record::from_texts(Api::Glsl, [("wt", "1 2 3")]).unwrap_err();
+        assert!(e.contains("unknown field `wt`"), "{e}");
+        let e = Record::from_json_line(Api::Glsl, r#"{"entering":"maybe"}"#).unwrap_err();
+        assert!(e.contains("`entering` must be true/false"), "{e}");
+    }
+}

@@ -1,0 +1,214 @@
+//! The result side: what the API returns for the arguments as logged (in the student's
+//! precision), how far rounding of the logged numbers can move it, and whether what came back
+//! is that, the API's "nothing transmitted", or something else (and then what it resembles).
+
+use glam::DVec3;
+use refraction_i18n::t;
+use refraction_kernel::api::{Api, Args, Returned};
+use refraction_kernel::{Real, Vector3};
+use serde_json::{Value as Json, json};
+
+use super::call::{Call, Got};
+use super::readings::Tolerance;
+use crate::vector_text::{angle, length};
+
+/// What the API returns for the logged arguments, and how sure that is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Returns {
+    /// The API's answer in its own shape, as JSON (`api_result`).
+    pub json: Json,
+    /// The transmitted direction, `None` where the API signals that nothing is transmitted.
+    pub transmitted: Option<DVec3>,
+    /// The vector the formula produces even past the critical angle (the book, Mitsuba).
+    pub formula: Option<DVec3>,
+    /// The transmitted directions for the arguments moved by their rounding.
+    pub nearby: Vec<Option<DVec3>>,
+    /// Whether rounding of the arguments can change total internal reflection into refraction
+    /// or back.
+    pub borderline: bool,
+    /// How far a vector may be from the API's answer and still be it (Euclidean distance).
+    pub distance: f64,
+    /// The mirror reflection of the ray at this surface.
+    pub reflection: DVec3,
+}
+
+fn wide<S: Real>(v: S::Vec3) -> DVec3 {
+    DVec3::from_array(v.to_array().map(Real::to_f64))
+}
+
+fn narrow<S: Real>(args: Args<f64>) -> Result<Args<S>, String> {
+    let convert = |x: f64| {
+        let y = S::from_f64(x);
+        if y.is_finite() {
+            Ok(y)
+        } else {
+            let (value, precision) = (format!("{x:e}"), S::NAME);
+            Err(t!("check-too-large", value = value, precision = precision))
+        }
+    };
+    let vector = |v: DVec3| -> Result<S::Vec3, String> {
+        Ok(S::Vec3::new(convert(v.x)?, convert(v.y)?, convert(v.z)?))
+    };
+    Ok(Args {
+        incident: vector(args.incident)?,
+        normal: vector(args.normal)?,
+        eta: convert(args.eta)?,
+    })
+}
+
+fn nullable(v: Option<DVec3>) -> Json {
+    v.map_or(Json::Null, |v| json!(v.to_array()))
+}
+
+/// The API's answer in its own field names.
+fn to_json<S: Real>(returned: &Returned<S>) -> Json {
+    match returned {
+        Returned::Glsl(v) => json!(wide::<S>(*v).to_array()),
+        Returned::Pbrt(r) => json!({
+            "returned": r.is_some(),
+            "wt": nullable(r.map(|r| wide::<S>(r.wt))),
+            "etap": r.map(|r| r.etap.to_f64()),
+        }),
+        Returned::Rtiow(a) => json!({
+            "refracted": wide::<S>(a.refracted).to_array(),
+            "cannot_refract": a.cannot_refract,
+        }),
+        Returned::Mitsuba(a) => json!({
+            "wo": wide::<S>(a.wo).to_array(),
+            "F": a.fresnel.f.to_f64(),
+            "cos_theta_t": a.fresnel.cos_theta_t.to_f64(),
+            "eta_it": a.fresnel.eta_it.to_f64(),
+            "eta_ti": a.fresnel.eta_ti.to_f64(),
+        }),
+    }
+}
+
+/// The arguments moved by a relative `step`: eta both ways, each component of each vector
+/// both ways.
+fn moved(args: Args<f64>, step: f64) -> Vec<Args<f64>> {
+    let mut out = vec![
+        Args {
+            eta: args.eta * (1.0 + step),
+            ..args
+        },
+        Args {
+            eta: args.eta * (1.0 - step),
+            ..args
+        },
+    ];
+    for axis in [DVec3::X, DVec3::Y, DVec3::Z] {
+        for sign in [1.0, -1.0] {
+            let nudge = |v: DVec3| v + axis * (sign * step * v.abs().max_element());
+            out.push(Args {
+                incident: nudge(args.incident),
+                ..args
+            });
+            out.push(Args {
+                normal: nudge(args.normal),
+                ..args
+            });
+        }
+    }
+    out
+}
+
+/// What `api` transmits for `args` in precision `S` (`None` also when they overflow `S`).
+pub fn transmitted_by<S: Real>(api: Api, args: Args<f64>) -> Option<DVec3> {
+    narrow::<S>(args)
+        .ok()
+        .and_then(|a| api.call(a).transmitted())
+        .map(wide::<S>)
+}
+
+/// What `api` returns for `call`'s arguments in precision `S`, with the spread rounding allows.
+///
+/// # Errors
+/// An argument too large for `S`.
+pub fn returns<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<Returns, String> {
+    let returned = call.api.call(narrow::<S>(call.args)?);
+    let transmitted = returned.transmitted().map(wide::<S>);
+    let step = (2.0 * tolerance.rounding).max(8.0 * tolerance.epsilon);
+    let nearby: Vec<Option<DVec3>> = moved(call.args, step)
+        .into_iter()
+        .map(|args| transmitted_by::<S>(call.api, args))
+        .collect();
+    let borderline = nearby.iter().any(|t| t.is_some() != transmitted.is_some());
+    let spread = transmitted.map_or(0.0, |t| {
+        nearby
+            .iter()
+            .flatten()
+            .map(|other| (*other - t).length())
+            .fold(0.0, f64::max)
+    });
+    let size = match call.got {
+        Got::Vector(v) if v.is_finite() => v.abs().max_element().max(1.0),
+        _ => 1.0,
+    };
+    let meaning = call.api.meaning(call.args);
+    let (d, n) = (meaning.travel, meaning.normal);
+    Ok(Returns {
+        json: to_json(&returned),
+        transmitted,
+        formula: returned.formula().map(wide::<S>),
+        nearby,
+        borderline,
+        distance: 2.0 * spread + 4.0 * tolerance.rounding * size + 16.0 * tolerance.epsilon,
+        reflection: d - n * (2.0 * d.dot(n) / n.length_squared()),
+    })
+}
+
+/// What came back, as far as judging it goes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Seen {
+    /// A finite non-zero vector that is not an answer to total internal reflection.
+    Direction(DVec3),
+    /// The API's (or a tracer's) answer that nothing is transmitted: `false`, null, the zero
+    /// vector, or the reflection where the API reflects.
+    Nothing(&'static str),
+    /// A vector with NaN or infinite components.
+    NotFinite(DVec3),
+}
+
+impl Returns {
+    /// Whether `v` is the API's transmitted direction (or one rounding allows).
+    #[must_use]
+    pub fn is_transmitted(&self, v: DVec3) -> bool {
+        let close = |t: &DVec3| (v - *t).length() <= self.distance;
+        self.transmitted.iter().any(close)
+            || (self.borderline && self.nearby.iter().flatten().any(close))
+    }
+
+    /// Whether the API may say that nothing is transmitted here.
+    #[must_use]
+    pub fn may_reflect(&self) -> bool {
+        self.transmitted.is_none() || self.borderline
+    }
+
+    /// Whether `v` is the same vector as `other` within the tolerance.
+    #[must_use]
+    pub fn same(&self, v: DVec3, other: DVec3) -> bool {
+        (v - other).length() <= self.distance
+    }
+
+    /// How to judge what came back.
+    #[must_use]
+    pub fn see(&self, got: Got) -> Seen {
+        match got {
+            // untranslated: the answers' names; explain.rs puts them in the language's words
+            Got::Nothing => Seen::Nothing("nothing (false or null)"),
+            Got::Vector(v) if !v.is_finite() => Seen::NotFinite(v),
+            // untranslated: as above
+            Got::Vector(v) if v == DVec3::ZERO => Seen::Nothing("the zero vector"),
+            Got::Vector(v)
+                if self.may_reflect()
+                    && !self.is_transmitted(v)
+                    && angle(v, self.reflection) <= self.distance
+                    && (length(v) - 1.0).abs() <= self.distance =>
+            {
+                // untranslated: as above
+                Seen::Nothing("the reflection")
+            }
+            Got::Vector(v) => Seen::Direction(v),
+        }
+    }
+}

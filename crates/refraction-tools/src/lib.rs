@@ -1,0 +1,353 @@
+//! The refraction explorer's tools, with no window: the JSON Lines of the `solve` and `check`
+//! commands (requests, answers, the verdicts of `check`), `check --api`'s reading of a student's
+//! call in their own API's terms ([`api_check`]: JSON, log patterns, CSV), and the explorer's
+//! state file (one `solve` line). The window's *Check my T* panel calls the same functions, so
+//! the window and the commands agree.
+//! [`answer_lines`] is the loop both commands share: one answer per
+//! non-empty input line, in order, streaming, with bad lines answered rather than fatal.
+
+pub mod api_check;
+pub mod check;
+pub mod error;
+mod fields;
+pub mod solve;
+pub mod state_file;
+pub mod vector_text;
+
+use std::io::{self, BufRead, Read, Write};
+
+/// The longest line `solve` and `check` read, in bytes, its newline not counted: 1 MiB. A
+/// longer line is answered with an error as soon as it passes the limit, without being held in
+/// memory, and the run goes on after its newline.
+pub const MAX_LINE_BYTES: usize = 1 << 20;
+
+/// Why [`answer_lines`] stopped: the input could not be read or the output not written.
+#[derive(Debug, thiserror::Error)]
+pub enum LinesError {
+    /// Reading the input failed.
+    #[error("cannot read the input: {0}")]
+    Read(#[source] io::Error),
+    /// Writing the output failed (a closed pipe included).
+    #[error("cannot write the output: {0}")]
+    Write(#[source] io::Error),
+}
+
+/// The error line for input line `line` (1-based).
+#[must_use]
+pub fn error_line(line: usize, message: &str) -> String {
+    serde_json::json!({ "line": line, "error": message }).to_string()
+}
+
+/// One input line as [`next_line`] read it.
+enum Next {
+    /// A line, in the buffer without its newline.
+    Line,
+    /// A line longer than [`MAX_LINE_BYTES`]; what was read of it is dropped.
+    TooLong,
+    /// The end of the input.
+    End,
+}
+
+/// Reads the next line into `buffer` (cleared first), reading no more than
+/// [`MAX_LINE_BYTES`] + 1 bytes of it.
+fn next_line(input: &mut impl BufRead, buffer: &mut Vec<u8>) -> io::Result<Next> {
+    buffer.clear();
+    let limit = MAX_LINE_BYTES as u64 + 1;
+    if input.by_ref().take(limit).read_until(b'\n', buffer)? == 0 {
+        return Ok(Next::End);
+    }
+    if buffer.last() == Some(&b'\n') {
+        buffer.pop();
+    } else if buffer.len() > MAX_LINE_BYTES {
+        buffer.clear();
+        return Ok(Next::TooLong);
+    }
+    Ok(Next::Line)
+}
+
+/// The message for an over-long line `number`.
+fn too_long(number: usize) -> String {
+    format!(
+        "line {number} is longer than 1 MiB ({MAX_LINE_BYTES} bytes), the longest line read: \
+         skipped to its end"
+    )
+}
+
+/// The most lines read before they are answered together: enough to keep every core busy for
+/// a while, few enough that memory stays flat.
+const CHUNK_LINES: usize = 4096;
+
+/// The most bytes of lines read before they are answered together (one line may take the chunk
+/// past it, by at most [`MAX_LINE_BYTES`]).
+const CHUNK_BYTES: usize = 4 << 20;
+
+/// The read buffer: a file's lines come a chunk at a time (a pipe gives at most what it holds).
+const READ_BUFFER_BYTES: usize = 1 << 20;
+
+/// One input line of a chunk, as it is handed to the workers.
+struct Item {
+    /// Its number, counting every input line from 1.
+    number: usize,
+    /// Where its bytes lie in the chunk's buffer, or why it has none (too long).
+    bytes: Result<std::ops::Range<usize>, String>,
+}
+
+/// What a worker made of one line.
+enum Outcome<W> {
+    /// Blank: no answer.
+    Blank,
+    /// Not answerable (not UTF-8, too long): the message of its error line.
+    Bad(String),
+    /// The work's result.
+    Done(W),
+}
+
+/// A chunk of input lines read into one buffer.
+#[derive(Default)]
+struct Chunk {
+    bytes: Vec<u8>,
+    items: Vec<Item>,
+    /// The chunk ended at a line over the limit: say so before reading past it.
+    ended_too_long: bool,
+    /// The input has ended.
+    ended: bool,
+}
+
+impl Chunk {
+    /// Reads up to [`CHUNK_LINES`] lines or [`CHUNK_BYTES`] bytes, the line numbers following
+    /// `number` (updated). A line over the limit ends the chunk, and so does an empty read
+    /// buffer: the lines read so far are answered before waiting for more input (a log piped
+    /// in as it is written gets its answers as it goes).
+    fn read<R: Read>(input: &mut io::BufReader<R>, number: &mut usize) -> io::Result<Self> {
+        let mut chunk = Self::default();
+        let mut line = Vec::new();
+        while chunk.items.len() < CHUNK_LINES && chunk.bytes.len() < CHUNK_BYTES {
+            let next = next_line(input, &mut line)?;
+            if matches!(next, Next::End) {
+                chunk.ended = true;
+                break;
+            }
+            *number += 1;
+            let bytes = if matches!(next, Next::TooLong) {
+                Err(too_long(*number))
+            } else {
+                let start = chunk.bytes.len();
+                chunk.bytes.extend_from_slice(&line);
+                Ok(start..chunk.bytes.len())
+            };
+            chunk.items.push(Item {
+                number: *number,
+                bytes,
+            });
+            if matches!(next, Next::TooLong) {
+                chunk.ended_too_long = true;
+                break;
+            }
+            if input.buffer().is_empty() {
+                break;
+            }
+        }
+        Ok(chunk)
+    }
+
+    /// `work` on each line, the lines shared out in order among `threads` threads.
+    fn work<W: Send>(&self, threads: usize, work: &(impl Fn(&str) -> W + Sync)) -> Vec<Outcome<W>> {
+        let one = |item: &Item| match &item.bytes {
+            Err(message) => Outcome::Bad(message.clone()),
+            Ok(range) => match std::str::from_utf8(&self.bytes[range.clone()]) {
+                Err(e) => Outcome::Bad(format!(
+                    "the line is not valid UTF-8 (byte {})",
+                    e.valid_up_to() + 1
+                )),
+                Ok(text) if text.trim().is_empty() => Outcome::Blank,
+                Ok(text) => Outcome::Done(work(text.trim())),
+            },
+        };
+        let share = self.items.len().div_ceil(threads.max(1)).max(1);
+        if threads <= 1 || self.items.len() <= share {
+            return self.items.iter().map(one).collect();
+        }
+        std::thread::scope(|scope| {
+            let parts: Vec<_> = self
+                .items
+                .chunks(share)
+                .map(|part| scope.spawn(move || part.iter().map(one).collect::<Vec<_>>()))
+                .collect();
+            // A worker panics only if `work` does; pass that on rather than lose lines.
+            parts
+                .into_iter()
+                .flat_map(|part| part.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+                .collect()
+        })
+    }
+}
+
+/// The number of threads [`answer_lines`] answers on: one per core this process may run on
+/// (`taskset` and container limits included).
+#[must_use]
+pub fn threads() -> usize {
+    std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
+}
+
+/// Writes an answer for every non-empty line of `input` to `output`, in input order. The lines
+/// are read in chunks (at most [`CHUNK_LINES`] lines or about [`CHUNK_BYTES`] bytes, and no
+/// line over [`MAX_LINE_BYTES`] is kept), `work` runs on each line of a chunk on `threads`
+/// threads, then `finish` turns each result into the answer, in order, on this thread (it may
+/// keep a tally or other state). A line that `finish` rejects, that is not UTF-8 or that is
+/// too long is answered with `{"line": K, "error": "..."}` (K counts every input line from 1)
+/// and the run goes on; a too-long line is answered as soon as it passes the limit, and the
+/// rest of it is read past without being kept. An empty answer writes nothing (a log line that
+/// is not a call, a CSV header); an answer may hold several lines. Returns whether every line
+/// was answered without error.
+///
+/// # Errors
+/// Reading `input` or writing `output` failed.
+pub fn answer_lines<W: Send, E: std::fmt::Display>(
+    input: impl Read,
+    output: impl Write,
+    threads: usize,
+    work: impl Fn(&str) -> W + Sync,
+    mut finish: impl FnMut(W) -> Result<String, E>,
+) -> Result<bool, LinesError> {
+    let mut input = io::BufReader::with_capacity(READ_BUFFER_BYTES, input);
+    // One write per chunk, not one per line (stdout is line-buffered: two system calls a line).
+    let mut output = io::BufWriter::with_capacity(READ_BUFFER_BYTES, output);
+    let mut all_answered = true;
+    let mut number = 0;
+    loop {
+        let chunk = Chunk::read(&mut input, &mut number).map_err(LinesError::Read)?;
+        for (item, outcome) in chunk.items.iter().zip(chunk.work(threads, &work)) {
+            let reply = match outcome {
+                Outcome::Blank => continue,
+                Outcome::Bad(message) => Err(message),
+                Outcome::Done(result) => finish(result).map_err(|e| e.to_string()),
+            };
+            let text = reply.unwrap_or_else(|message| {
+                all_answered = false;
+                error_line(item.number, &message)
+            });
+            if !text.is_empty() {
+                writeln!(output, "{text}").map_err(LinesError::Write)?;
+            }
+        }
+        // A chunk's answers go out before more input is awaited (the input may be a live log,
+        // or the rest of an over-long line, which may be endless).
+        output.flush().map_err(LinesError::Write)?;
+        if chunk.ended_too_long {
+            input.skip_until(b'\n').map_err(LinesError::Read)?;
+        }
+        if chunk.ended {
+            break;
+        }
+    }
+    output.flush().map_err(LinesError::Write)?;
+    Ok(all_answered)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn answers(input: impl BufRead) -> (bool, Vec<serde_json::Value>) {
+        let mut out = Vec::new();
+        let all = answer_lines(
+            input,
+            &mut out,
+            2,
+            |line| line.len(),
+            |len| Ok::<_, String>(format!("{{\"len\":{len}}}")),
+        )
+        .unwrap();
+        let lines = String::from_utf8(out)
+            .unwrap()
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect();
+        (all, lines)
+    }
+
+    #[test]
+    fn a_line_over_the_cap_is_answered_and_the_next_one_read() {
+        let long = io::repeat(b' ').take(3 * MAX_LINE_BYTES as u64);
+        let exact = "x".repeat(MAX_LINE_BYTES);
+        let rest = format!("\n{exact}\nab\n");
+        let input = io::BufReader::new(long.chain(rest.as_bytes()));
+        let (all, lines) = answers(input);
+        assert!(!all);
+        assert_eq!(lines.len(), 3, "{lines:?}");
+        assert_eq!(lines[0]["line"], 1);
+        let message = lines[0]["error"].as_str().unwrap();
+        assert!(message.starts_with("line 1 is longer than 1 MiB (1048576 bytes)"));
+        assert_eq!(lines[1]["len"], MAX_LINE_BYTES);
+        assert_eq!(lines[2]["len"], 2);
+    }
+
+    #[test]
+    fn answers_keep_the_input_order_and_line_numbers_on_many_threads() {
+        let mut text = String::new();
+        for k in 1..=3 * CHUNK_LINES {
+            text.push_str(&match k % 7 {
+                0 => String::new(),
+                3 => "\u{7f}bad".to_owned(),
+                _ => k.to_string(),
+            });
+            text.push('\n');
+        }
+        let run = |threads: usize| {
+            let mut out = Vec::new();
+            let mut order = Vec::new();
+            let work = |line: &str| line.parse::<usize>().map_err(|_| format!("not {line}"));
+            let finish = |parsed: Result<usize, String>| {
+                let k = parsed?;
+                order.push(k);
+                Ok::<_, String>(format!("{{\"k\":{k}}}"))
+            };
+            let all = answer_lines(text.as_bytes(), &mut out, threads, work, finish).unwrap();
+            (all, String::from_utf8(out).unwrap(), order)
+        };
+        let (one, many) = (run(1), run(3));
+        assert_eq!(one, many);
+        let (all, out, order) = many;
+        assert!(!all);
+        assert!(
+            order.windows(2).all(|w| w[0] < w[1]),
+            "finish sees the lines in order"
+        );
+        let lines: Vec<serde_json::Value> = out
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect();
+        let blanks = (1..=3 * CHUNK_LINES).filter(|k| k % 7 == 0).count();
+        assert_eq!(lines.len(), 3 * CHUNK_LINES - blanks);
+        assert_eq!(lines[2]["line"], 3, "an error names its line");
+        assert_eq!(lines[2]["error"], "not \u{7f}bad");
+    }
+
+    #[test]
+    fn input_without_a_newline_is_one_error_and_the_end() {
+        let zeros = io::BufReader::new(io::repeat(0).take(5 * MAX_LINE_BYTES as u64));
+        let (all, lines) = answers(zeros);
+        assert!(!all);
+        assert_eq!(lines.len(), 1, "{lines:?}");
+        assert_eq!(lines[0]["line"], 1);
+    }
+
+    /// A reader that fails on its first read, as reading a directory does.
+    struct Failing;
+
+    impl Read for Failing {
+        fn read(&mut self, _: &mut [u8]) -> io::Result<usize> {
+            Err(io::Error::from(io::ErrorKind::IsADirectory))
+        }
+    }
+
+    #[test]
+    fn read_and_write_errors_are_told_apart() {
+        let echo = |l: &str| Ok::<_, String>(l.to_owned());
+        let err = answer_lines(io::BufReader::new(Failing), Vec::new(), 2, echo, |r| r);
+        assert!(matches!(err, Err(LinesError::Read(_))), "{err:?}");
+        let mut full = [0_u8; 4];
+        let err = answer_lines(&b"abcdef\n"[..], &mut full[..], 2, echo, |r| r);
+        assert!(matches!(err, Err(LinesError::Write(_))), "{err:?}");
+    }
+}

@@ -1,0 +1,668 @@
+//! The projector audit: the explorer driven headlessly (egui_kittest) at 1280×720 and
+//! 1920×1080, at the desk and in presentation, over many states (random W, N and μ, total
+//! internal reflection or not, the lessons), with every tool open in turn and each theme, and
+//! the built-in scenes (the droplet at 1,000 rays). For each it measures what a class at the
+//! back of the room sees:
+//!
+//! - the diagram canvas's share of the window (presentation: at least 60 % with the tools
+//!   closed, 45 % with one open);
+//! - the smallest text on screen, in pixels (at least 13 at the desk, 20 in presentation);
+//! - every label inside its canvas, off every arrowhead, handle and hit marker and off every
+//!   other label; the banner's text inside the banner.
+//!
+//! English is audited over every state; each other language (German runs long) over the
+//! lessons' kinds, with every tool, theme, size and mode, and the built-in scenes.
+//!
+//! Run with `--nocapture` to see the measured figures.
+
+use crate::common;
+
+use common::harness_sized;
+use egui::{Rect as EguiRect, Role, Shape};
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT, Queryable};
+use glam::{DVec3, Vec2 as GVec2};
+use refraction_diagram::font::Typeface;
+use refraction_diagram::geometry::Rect;
+use refraction_diagram::palette::Theme;
+use refraction_diagram::shapes::{Figure, Label};
+use refraction_diagram::{Diagram, Primitive, SceneLayout, ScenePicture};
+use refraction_explorer::app::Explorer;
+use refraction_i18n::{Locale, t};
+use refraction_kernel::Convention;
+use refraction_model::ExplorerState;
+use refraction_scene::Scene;
+
+const SIZES: [(f32, f32); 2] = [(1280.0, 720.0), (1920.0, 1080.0)];
+
+/// The tools' switches in the bar, in the thread's language: none open, then each in turn.
+fn tools() -> [Option<String>; 5] {
+    [
+        None,
+        Some(format!("✔ {}", t!("tool-check"))),
+        Some(format!("📖 {}", t!("tool-walk-through"))),
+        Some(format!("💾 {}", t!("tool-files"))),
+        Some(t!("tool-fresnel")),
+    ]
+}
+
+/// The themes' names in the menu, in the thread's language.
+fn themes() -> Vec<String> {
+    Theme::ALL.iter().map(|t| t.label().to_string()).collect()
+}
+
+/// A small deterministic generator, so that a failure names a state that can be rerun.
+struct Random(u64);
+
+impl Random {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    fn between(&mut self, low: f64, high: f64) -> f64 {
+        low + (high - low) * self.next()
+    }
+}
+
+/// The states audited: the lessons' kinds by hand, then random ones.
+fn states() -> Vec<ExplorerState> {
+    let at = |degrees: f64, n: DVec3, mu_i: f64, mu_t: f64| {
+        let a = degrees.to_radians();
+        ExplorerState::new(
+            DVec3::new(a.sin(), -a.cos(), 0.0),
+            n,
+            mu_i,
+            mu_t,
+            Convention::AlongRay,
+        )
+        .unwrap()
+    };
+    let mut states = vec![
+        ExplorerState::default(),
+        at(42.6, DVec3::Y, 1.5, 1.0),
+        at(0.5, DVec3::Y, 1.000293, 1.5),
+        at(40.0, DVec3::NEG_Y, 1.333, 1.000293),
+        at(56.3, DVec3::Y, 1.000293, 1.5),
+    ];
+    let mut random = Random(0x9E37_79B9_7F4A_7C15);
+    for _ in 0..7 {
+        let angle = random.between(-1.5, 1.5);
+        let turn = random.between(-0.6, 0.6);
+        let n =
+            DVec3::new(turn.sin(), turn.cos(), 0.0) * if random.next() < 0.3 { -1.0 } else { 1.0 };
+        let w = DVec3::new(angle.sin(), -angle.cos(), 0.0);
+        let state = ExplorerState::new(
+            w,
+            n,
+            random.between(1.0, 2.5),
+            random.between(1.0, 2.5),
+            Convention::AlongRay,
+        )
+        .unwrap();
+        states.push(state);
+    }
+    assert!(states.iter().any(|s| s.refraction().is_tir()));
+    assert!(states.iter().any(|s| !s.refraction().is_tir()));
+    states
+}
+
+fn click(h: &mut Harness<'_, Explorer>, label: &str) {
+    h.get_by_label(label).click();
+    h.run();
+}
+
+/// Sets up the window as asked, through its own controls.
+fn set_up(h: &mut Harness<'_, Explorer>, present: bool, theme: &str, tool: Option<&str>) {
+    if present {
+        click(h, &t!("presentation-toggle"));
+    }
+    if theme != themes()[0] {
+        h.get_by_role_and_label(Role::ComboBox, &t!("presentation-theme"))
+            .click();
+        h.run();
+        click(h, theme);
+    }
+    if let Some(tool) = tool {
+        click(h, tool);
+    }
+    // Beside the Fresnel tool, the effects it explains are on too: their labels and the
+    // diagram's share are audited with everything a physics lesson turns on.
+    if tool == Some(t!("tool-fresnel").as_str()) {
+        click(h, &t!("effects-menu"));
+        for switch in [
+            t!("effects-intensities"),
+            t!("effects-wavefronts"),
+            t!("effects-huygens"),
+        ] {
+            click(h, &switch);
+        }
+        h.key_press(egui::Key::Escape);
+        h.run();
+    }
+    settle(h);
+}
+
+/// A few more frames: panels settle their sizes over a frame or two.
+fn settle(h: &mut Harness<'_, Explorer>) {
+    for _ in 0..3 {
+        h.run();
+    }
+}
+
+/// What one window showed.
+#[derive(Default)]
+struct Measured {
+    share: f32,
+    smallest_text_px: f32,
+    problems: Vec<String>,
+}
+
+/// The smallest font size of any text on screen, in pixels.
+fn smallest_text(h: &Harness<'_, Explorer>) -> f32 {
+    fn visit(shape: &Shape, smallest: &mut f32) {
+        match shape {
+            Shape::Vec(shapes) => shapes.iter().for_each(|s| visit(s, smallest)),
+            Shape::Text(text) => {
+                let job = &text.galley.job;
+                for section in &job.sections {
+                    let range = &section.byte_range;
+                    let words = job.text.get(range.start.0..range.end.0).unwrap_or_default();
+                    if !words.trim().is_empty() {
+                        *smallest = smallest.min(section.format.font_id.size);
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    let mut smallest = f32::INFINITY;
+    for clipped in &h.output().shapes {
+        visit(&clipped.shape, &mut smallest);
+    }
+    smallest * h.ctx.pixels_per_point()
+}
+
+fn canvas_rect(h: &Harness<'_, Explorer>) -> EguiRect {
+    h.get_by_role(Role::Image).rect()
+}
+
+fn share(h: &Harness<'_, Explorer>) -> f32 {
+    let window = h.ctx.content_rect();
+    canvas_rect(h).area() / window.area()
+}
+
+/// Every control (button, text field, menu, switch) within the window's width: a row that
+/// runs past the window's edge cuts its last controls off.
+fn check_controls_inside<S>(h: &Harness<'_, S>, what: &str, problems: &mut Vec<String>) {
+    let window = h.ctx.content_rect();
+    for role in [
+        Role::Button,
+        Role::TextInput,
+        Role::ComboBox,
+        Role::CheckBox,
+    ] {
+        for node in h.query_all_by_role(role) {
+            let r = node.rect();
+            if r.max.x > window.max.x + 0.5 || r.min.x < window.min.x - 0.5 {
+                let name = node.accesskit_node().label().unwrap_or_default();
+                problems.push(format!("{what}: “{name}” is cut off at the window's edge"));
+            }
+        }
+    }
+}
+
+/// The box of a label's text on its canvas.
+fn text_box(face: &Typeface, label: &Label) -> Rect {
+    let extent = face.measure(&label.text, label.size);
+    let min = label.at - extent * GVec2::new(label.h.fraction(), label.v.fraction());
+    Rect {
+        min,
+        max: min + extent,
+    }
+}
+
+/// Whether two boxes share more than a sliver (a pixel each way).
+fn overlap(a: &Rect, b: &Rect) -> bool {
+    let shrink = |r: &Rect| Rect {
+        min: r.min + GVec2::splat(0.5),
+        max: r.max - GVec2::splat(0.5),
+    };
+    shrink(a).overlaps(&shrink(b))
+}
+
+fn touches_disc(r: &Rect, center: GVec2, radius: f32) -> bool {
+    let nearest = center.clamp(r.min, r.max);
+    nearest.distance(center) < radius - 0.5
+}
+
+fn touches_triangle(r: &Rect, triangle: &[GVec2]) -> bool {
+    let &[a, b, c] = triangle else {
+        return false;
+    };
+    // Points on the triangle's edges and inside it.
+    (0..=8).any(|i| {
+        let s = i as f32 / 8.0;
+        [a.lerp(b, s), b.lerp(c, s), c.lerp(a, s), (a + b + c) / 3.0]
+            .iter()
+            .any(|p| r.contains(*p))
+    })
+}
+
+/// Checks the labels of a picture: inside `canvas`, off the arrowheads, handles (centre,
+/// radius), markers and each other.
+struct Obstacles {
+    heads: Vec<(String, Vec<GVec2>)>,
+    discs: Vec<(String, GVec2, f32)>,
+}
+
+fn check_labels(
+    what: &str,
+    face: &Typeface,
+    canvas: &Rect,
+    labels: &[&Label],
+    obstacles: &Obstacles,
+    problems: &mut Vec<String>,
+) {
+    let boxes: Vec<Rect> = labels.iter().map(|l| text_box(face, l)).collect();
+    for (i, (label, b)) in labels.iter().zip(&boxes).enumerate() {
+        let name = label.text.lines().next().unwrap_or_default();
+        let inside = canvas.contains(b.min + GVec2::splat(0.5))
+            && canvas.contains(b.max - GVec2::splat(0.5));
+        if !inside {
+            problems.push(format!("{what}: “{name}” is cut off by the canvas edge"));
+        }
+        for (head, triangle) in &obstacles.heads {
+            if touches_triangle(b, triangle) {
+                problems.push(format!("{what}: “{name}” covers the arrowhead of {head}"));
+            }
+        }
+        for (disc, center, radius) in &obstacles.discs {
+            if touches_disc(b, *center, *radius) {
+                problems.push(format!("{what}: “{name}” covers {disc}"));
+            }
+        }
+        for (other, ob) in labels.iter().zip(&boxes).skip(i + 1) {
+            if overlap(b, ob) {
+                let other = other.text.lines().next().unwrap_or_default();
+                problems.push(format!("{what}: “{name}” overlaps “{other}”"));
+            }
+        }
+    }
+}
+
+/// The interface diagram as the window drew it, with its labels checked.
+fn audit_diagram(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>) {
+    let face = Typeface::egui_default().unwrap();
+    let rect = canvas_rect(h);
+    let size = GVec2::new(rect.width(), rect.height());
+    let explorer = h.state();
+    let diagram = Diagram::with_overlay(explorer.state(), size, &explorer.overlay());
+    let mut heads = Vec::new();
+    for shape in &diagram.shapes {
+        if let Figure::Arrow { .. } = shape {
+            let mut lowered = Vec::new();
+            shape.lower(&mut lowered);
+            for p in lowered {
+                if let Primitive::Polygon { points, .. } = p {
+                    heads.push(("an arrow".to_owned(), points));
+                }
+            }
+        }
+    }
+    let discs = diagram
+        .handles
+        .iter()
+        .map(|h| (h.id.label().to_owned(), h.center, h.radius))
+        .collect();
+    let labels: Vec<&Label> = diagram
+        .shapes
+        .iter()
+        .filter_map(|s| match s {
+            Figure::Text(l) if l.background.is_some() => Some(l),
+            _ => None,
+        })
+        .collect();
+    let canvas = diagram.layout.canvas;
+    check_labels(
+        what,
+        &face,
+        &canvas,
+        &labels,
+        &Obstacles { heads, discs },
+        problems,
+    );
+    let banner = diagram.layout.banner;
+    for shape in &diagram.shapes {
+        if let Figure::Text(l) = shape
+            && l.background.is_none()
+            && banner.contains(l.at)
+        {
+            let b = text_box(&face, l);
+            if b.max.x > banner.max.x + 0.5 || b.max.y > banner.max.y + 0.5 || b.min.y < -0.5 {
+                let name = l.text.lines().next().unwrap_or_default();
+                problems.push(format!("{what}: the banner “{name}” runs out of its box"));
+            }
+        }
+    }
+}
+
+/// The Scenes canvas as the window drew it, with its labels checked against the hit markers
+/// and handles.
+fn audit_scene(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>) {
+    let face = Typeface::egui_default().unwrap();
+    let rect = canvas_rect(h);
+    let scenes = h.state().scenes();
+    let layout = SceneLayout::for_scene(
+        scenes.scene(),
+        scenes.trace(),
+        GVec2::new(rect.width(), rect.height()),
+    );
+    let picture = ScenePicture::new(scenes.scene(), scenes.trace(), &layout);
+    let handle_at: Vec<GVec2> = picture.handles.iter().map(|h| h.center).collect();
+    let mut discs: Vec<(String, GVec2, f32)> = picture
+        .handles
+        .iter()
+        .map(|h| (format!("{:?} handle", h.id), h.center, h.radius))
+        .collect();
+    let mut labels = Vec::new();
+    for p in &picture.primitives {
+        match p {
+            Primitive::Disc { center, radius, .. }
+                if !handle_at.iter().any(|c| c.distance(*center) < 0.5) =>
+            {
+                discs.push(("a hit marker".to_owned(), *center, *radius));
+            }
+            Primitive::Text(l) if l.background.is_some() => labels.push(l),
+            _ => {}
+        }
+    }
+    let obstacles = Obstacles {
+        heads: Vec::new(),
+        discs,
+    };
+    check_labels(what, &face, &layout.canvas, &labels, &obstacles, problems);
+}
+
+fn measure(
+    h: &Harness<'_, Explorer>,
+    what: &str,
+    present: bool,
+    tool_open: bool,
+    scene: bool,
+) -> Measured {
+    let mut m = Measured {
+        share: share(h),
+        smallest_text_px: smallest_text(h),
+        problems: Vec::new(),
+    };
+    let least_share = match (present, tool_open) {
+        (true, false) => Some(0.60),
+        (true, true) => Some(0.45),
+        _ => None,
+    };
+    if let Some(least) = least_share
+        && m.share < least
+    {
+        m.problems.push(format!(
+            "{what}: the diagram has {:.0} % of the window, less than {:.0} %",
+            m.share * 100.0,
+            least * 100.0
+        ));
+    }
+    let least_text = if present { 20.0 } else { 13.0 };
+    if m.smallest_text_px < least_text {
+        m.problems.push(format!(
+            "{what}: text of {:.1} px, smaller than {least_text} px",
+            m.smallest_text_px
+        ));
+    }
+    check_controls_inside(h, what, &mut m.problems);
+    if scene {
+        audit_scene(h, what, &mut m.problems);
+    } else {
+        audit_diagram(h, what, &mut m.problems);
+    }
+    m
+}
+
+/// The figures of one group of windows, for the report.
+fn summary(name: &str, measured: &[(String, Measured)]) -> String {
+    let least_share = measured
+        .iter()
+        .map(|(_, m)| m.share)
+        .fold(f32::INFINITY, f32::min);
+    let least_text = measured
+        .iter()
+        .map(|(_, m)| m.smallest_text_px)
+        .fold(f32::INFINITY, f32::min);
+    format!(
+        "{name}: {} windows, diagram share at least {:.1} %, smallest text {:.1} px",
+        measured.len(),
+        least_share * 100.0,
+        least_text
+    )
+}
+
+fn report(measured: Vec<(String, Measured)>) {
+    let groups = [
+        ("desk, tools closed", false, false),
+        ("desk, a tool open", false, true),
+        ("presentation, tools closed", true, false),
+        ("presentation, a tool open", true, true),
+    ];
+    for (name, present, tool) in groups {
+        let group: Vec<_> = measured
+            .iter()
+            .filter(|(what, _)| {
+                what.contains("presentation") == present && what.contains("tool ") == tool
+            })
+            .map(|(w, m)| {
+                (
+                    w.clone(),
+                    Measured {
+                        share: m.share,
+                        smallest_text_px: m.smallest_text_px,
+                        problems: Vec::new(),
+                    },
+                )
+            })
+            .collect();
+        if !group.is_empty() {
+            println!("{}", summary(name, &group));
+        }
+    }
+    let problems: Vec<&String> = measured.iter().flat_map(|(_, m)| &m.problems).collect();
+    for p in problems.iter().take(60) {
+        println!("  {p}");
+    }
+    assert!(
+        problems.is_empty(),
+        "{} layout problems (first: {})",
+        problems.len(),
+        problems[0]
+    );
+}
+
+/// The interface view over `states` in the thread's language, at both sizes, at the desk and
+/// in presentation, with each tool open in turn, the themes taken in turn. One window per
+/// size, mode and tool, whose state and theme are switched through the model, as a teacher
+/// switches lessons in one window.
+fn audit_interface(states: &[ExplorerState]) -> Vec<(String, Measured)> {
+    let (themes, language) = (themes(), refraction_i18n::locale());
+    let mut measured = Vec::new();
+    for size in SIZES {
+        for present in [false, true] {
+            for (t, tool) in tools().into_iter().enumerate() {
+                let mut h = harness_sized(Explorer::new(states[0].clone()), size);
+                set_up(&mut h, present, &themes[t % themes.len()], tool.as_deref());
+                for (i, state) in states.iter().enumerate() {
+                    let theme = (i + t) % themes.len();
+                    h.state_mut().set_state(state.clone());
+                    h.state_mut().presentation_mut().theme = Theme::ALL[theme];
+                    settle(&mut h);
+                    let what = format!(
+                        "{language} {}×{} {} {}, state {i}, {}",
+                        size.0,
+                        size.1,
+                        if present { "presentation" } else { "desk" },
+                        tool.as_ref()
+                            .map_or("no tool".to_owned(), |t| format!("tool {t}")),
+                        themes[theme],
+                    );
+                    let m = measure(&h, &what, present, tool.is_some(), false);
+                    measured.push((what, m));
+                }
+            }
+        }
+    }
+    measured
+}
+
+#[test]
+fn the_interface_view_owns_the_screen_and_nothing_covers_anything() {
+    report(audit_interface(&states()));
+}
+
+/// The Scenes view, every built-in scene (the droplet at 1,000 rays), in the thread's
+/// language: one window per size and mode, each scene opened in it in turn.
+fn audit_scenes() -> Vec<(String, Measured)> {
+    let (themes, language) = (themes(), refraction_i18n::locale());
+    let mut measured = Vec::new();
+    for size in SIZES {
+        for present in [false, true] {
+            let mut h = harness_sized(Explorer::new(ExplorerState::default()), size);
+            set_up(&mut h, present, &themes[0], None);
+            for info in refraction_scene::catalogue() {
+                let mut scene = Scene::embedded(info.name).unwrap();
+                if info.name == "droplet" {
+                    scene.set_ray_count(1000).unwrap();
+                }
+                h.state_mut().open_scene(scene);
+                settle(&mut h);
+                let what = format!(
+                    "{language} {}×{} {} scene {}",
+                    size.0,
+                    size.1,
+                    if present { "presentation" } else { "desk" },
+                    info.name
+                );
+                let m = measure(&h, &what, present, false, true);
+                measured.push((what, m));
+            }
+        }
+    }
+    measured
+}
+
+#[test]
+fn the_scenes_view_owns_the_screen_and_labels_leave_the_hit_markers_free() {
+    report(audit_scenes());
+}
+
+/// The audit in `language`: the lessons' kinds (the first states: the default, total
+/// internal reflection, near-normal incidence, leaving water, Brewster's angle) and the scenes.
+fn audit_in(language: Locale) {
+    refraction_i18n::set_locale(language);
+    let mut measured = audit_interface(&states()[..5]);
+    measured.extend(audit_scenes());
+    report(measured);
+}
+
+#[test]
+fn german_keeps_the_layout_rules() {
+    audit_in(Locale::De);
+}
+
+#[test]
+fn spanish_keeps_the_layout_rules() {
+    audit_in(Locale::Es);
+}
+
+#[test]
+fn french_keeps_the_layout_rules() {
+    audit_in(Locale::Fr);
+}
+
+#[test]
+fn brazilian_portuguese_keeps_the_layout_rules() {
+    audit_in(Locale::PtBr);
+}
+
+#[test]
+fn russian_keeps_the_layout_rules() {
+    audit_in(Locale::Ru);
+}
+
+#[test]
+fn the_audit_finds_what_it_looks_for() {
+    // The checks themselves: a label on an arrowhead, on a handle, on another label, or out
+    // of the canvas is found.
+    let face = Typeface::egui_default().unwrap();
+    let canvas = Rect::from_min_size(GVec2::ZERO, GVec2::new(200.0, 100.0));
+    let label = |text: &str, at: GVec2| Label {
+        text: text.to_owned(),
+        at,
+        h: refraction_diagram::Align::Start,
+        v: refraction_diagram::Align::Start,
+        size: 14.0,
+        colour: refraction_diagram::palette::INK,
+        background: Some(refraction_diagram::palette::BACKGROUND),
+    };
+    let (a, b, c) = (
+        label("one", GVec2::new(10.0, 10.0)),
+        label("two", GVec2::new(14.0, 12.0)),
+        label("three", GVec2::new(190.0, 80.0)),
+    );
+    let obstacles = Obstacles {
+        heads: vec![(
+            "T".to_owned(),
+            vec![
+                GVec2::new(12.0, 15.0),
+                GVec2::new(0.0, 0.0),
+                GVec2::new(0.0, 30.0),
+            ],
+        )],
+        discs: vec![("W handle".to_owned(), GVec2::new(20.0, 20.0), 5.0)],
+    };
+    let mut problems = Vec::new();
+    check_labels(
+        "test",
+        &face,
+        &canvas,
+        &[&a, &b, &c],
+        &obstacles,
+        &mut problems,
+    );
+    let all = problems.join("\n");
+    for expected in [
+        "“three” is cut off",
+        "arrowhead of T",
+        "covers W handle",
+        "“one” overlaps “two”",
+    ] {
+        assert!(all.contains(expected), "{expected} not found in:\n{all}");
+    }
+}
+
+#[test]
+fn the_audit_finds_a_row_of_controls_cut_off_at_the_window_edge() {
+    let mut h = Harness::builder()
+        .with_size(egui::Vec2::new(190.0, 100.0))
+        .build_ui(|ui| {
+            ui.horizontal(|ui| {
+                for name in ["Open file", "Save file", "Export picture"] {
+                    let _ = ui.button(name);
+                }
+            });
+        });
+    h.run();
+    let mut problems = Vec::new();
+    check_controls_inside(&h, "row", &mut problems);
+    assert_eq!(
+        problems,
+        ["row: “Export picture” is cut off at the window's edge"]
+    );
+}

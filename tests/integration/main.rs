@@ -1,0 +1,31 @@
+//! The end-to-end tests in one binary: the commands run as a user runs them, and the window
+//! driven headlessly (egui_kittest). One binary links the stack once and runs every test in
+//! parallel.
+
+mod cli;
+mod common;
+
+mod accuracy_view;
+mod bench_variants;
+mod check_api_cli;
+mod check_cli;
+mod docs_commands;
+mod explorer_canvas;
+mod explorer_check;
+mod explorer_classroom;
+mod explorer_files;
+mod explorer_languages;
+mod explorer_panels;
+mod explorer_physics;
+mod hostile_cli;
+mod languages_cli;
+mod layout_audit;
+mod parsers_fuzz;
+mod render_cli;
+mod rtiow_flow;
+mod scenes_ui;
+mod slides_cli;
+mod snapshots;
+mod solve_cli;
+mod trace_cli;
+mod translations;

@@ -1,0 +1,383 @@
+//! The Scenes view driven headlessly with egui_kittest: picking a scene, dragging the source,
+//! clicking a hit point to open it in the single-interface view. No display and no GPU needed.
+
+use crate::common;
+
+use common::{click, drag, harness_for, press_move_release};
+use egui::{Pos2, Vec2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use refraction_explorer::app::{Explorer, View};
+use refraction_model::ExplorerState;
+use refraction_scene::{Scene, Side};
+
+fn droplet() -> Harness<'static, Explorer> {
+    let mut explorer = Explorer::new(ExplorerState::default());
+    explorer.open_scene(Scene::embedded("droplet").unwrap());
+    harness_for(explorer)
+}
+
+#[test]
+fn the_bar_switches_to_scenes_and_the_picker_opens_a_scene() {
+    let mut h = harness_for(Explorer::new(ExplorerState::default()));
+    h.get_by_label("Scenes").click();
+    h.run();
+    assert_eq!(h.state().view(), View::Scenes);
+    assert_eq!(h.state().scenes().scene().name(), "interface");
+    h.get_by_label("Scene").click();
+    h.run();
+    h.get_by_label("Water droplet (rainbow)").click();
+    h.run();
+    let scenes = h.state().scenes();
+    assert_eq!(scenes.scene().name(), "droplet");
+    assert!(scenes.trace().counts.wavelengths > 1);
+    assert!(h.query_by_label_contains("reflections spawned").is_some());
+    assert!(h.query_by_label("Shape 1 handle (water)").is_some());
+}
+
+#[test]
+fn dragging_the_source_retraces_the_scene() {
+    let mut h = droplet();
+    let origin = h.state().scenes().scene().source().origin;
+    let first = h.state().scenes().trace().segments[0];
+    let from = h.get_by_label("Source handle").rect().center();
+    let to = from + Vec2::new(0.0, 40.0);
+    drag(&mut h, from, to);
+    let scenes = h.state().scenes();
+    let moved = scenes.scene().source().origin;
+    assert!(moved.y < origin.y - 0.1, "{origin} → {moved}");
+    assert_ne!(scenes.trace().segments[0], first);
+    let handle = h.get_by_label("Source handle").rect().center();
+    assert!(
+        handle.distance(to) < 2.0,
+        "{handle:?} is not under the pointer {to:?}"
+    );
+}
+
+#[test]
+fn clicking_the_droplets_exit_opens_it_with_the_flipped_normal() {
+    let mut h = droplet();
+    let scenes = h.state().scenes();
+    let exit = *scenes
+        .trace()
+        .hits
+        .iter()
+        .find(|hit| hit.side == Side::Leaving)
+        .unwrap();
+    let at = scenes.to_screen(exit.point).unwrap();
+    press_move_release(&mut h, &[at]);
+    assert_eq!(h.state().view(), View::Interface);
+    let state = h.state().state();
+    let refraction = state.refraction();
+    assert!(refraction.normal_flipped);
+    assert!(state.mu_i() > 1.3 && state.mu_t() < 1.01, "water into air");
+    assert!(h.query_by_label("W handle").is_some());
+}
+
+#[test]
+fn a_click_away_from_every_hit_stays_in_the_scene() {
+    let mut h = droplet();
+    let at = h
+        .state()
+        .scenes()
+        .to_screen(glam::DVec2::new(2.5, -2.2))
+        .unwrap();
+    press_move_release(&mut h, &[at]);
+    assert_eq!(h.state().view(), View::Scenes);
+}
+
+#[test]
+fn undo_puts_the_scene_back_one_drag_at_a_time() {
+    let mut h = droplet();
+    let origin = h.state().scenes().scene().source().origin;
+    let from = h.get_by_label("Source handle").rect().center();
+    let path: Vec<Pos2> = (0..=4)
+        .map(|step| from + Vec2::new(0.0, 10.0 * step as f32))
+        .collect();
+    press_move_release(&mut h, &path);
+    let moved = h.state().scenes().scene().source().origin;
+    assert_ne!(moved, origin);
+    h.get_by_label("⟲ Undo").click();
+    h.run();
+    assert_eq!(h.state().scenes().scene().source().origin, origin);
+    assert_eq!(h.state().scenes().scene().name(), "droplet");
+    h.get_by_label("⟳ Redo").click();
+    h.run();
+    assert_eq!(h.state().scenes().scene().source().origin, moved);
+}
+
+#[test]
+fn an_edited_scene_saves_and_opens_again_and_a_corrupt_file_changes_nothing() {
+    let folder = std::env::temp_dir().join(format!("scene-files-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let saved = folder.join("moved.toml");
+    let mut h = droplet();
+    let from = h.get_by_label("Source handle").rect().center();
+    press_move_release(
+        &mut h,
+        &[
+            from,
+            from + Vec2::new(0.0, 20.0),
+            from + Vec2::new(0.0, 40.0),
+        ],
+    );
+    let edited = h.state().scenes().scene().clone();
+    common::replace_text(&mut h, "Scene file", saved.to_str().unwrap());
+    h.get_by_label("Save file").click();
+    h.run();
+    h.get_by_label("Reset").click();
+    h.run();
+    assert_ne!(h.state().scenes().scene().source(), edited.source());
+    h.get_by_label("Open file").click();
+    h.run();
+    // Equal in everything the file holds; the name comes from the file's name.
+    let opened = h.state().scenes().scene().clone();
+    assert_eq!(opened.name(), "moved");
+    assert_eq!(opened.to_toml(), edited.to_toml());
+    assert_eq!(opened.source(), edited.source());
+
+    let corrupt = folder.join("corrupt.toml");
+    std::fs::write(&corrupt, "title = \"x\"\n[source]\nkind = \"laser\"\n").unwrap();
+    common::replace_text(&mut h, "Scene file", corrupt.to_str().unwrap());
+    h.get_by_label("Open file").click();
+    h.run();
+    assert_eq!(h.state().scenes().scene(), &opened);
+    assert!(
+        h.query_by_label_contains("corrupt.toml:3:").is_some(),
+        "the error names the file, line and column"
+    );
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn a_scene_file_is_replaced_only_when_the_user_says_so_and_never_over_another_kind() {
+    let folder = std::env::temp_dir().join(format!("scene-replace-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let saved = folder.join("lesson.toml");
+    let mut h = droplet();
+    common::replace_text(&mut h, "Scene file", saved.to_str().unwrap());
+    click(&mut h, "Save file");
+    let first = std::fs::read_to_string(&saved).unwrap();
+    assert!(first.contains("[source]"));
+    // Saving again asks first; Cancel keeps the file, Replace writes the scene as edited.
+    std::fs::write(&saved, "# kept\ntitle = \"mine\"\n").unwrap();
+    click(&mut h, "Save file");
+    assert!(h.query_by_label("Replace the file?").is_some());
+    click(&mut h, "Cancel");
+    assert_eq!(
+        std::fs::read_to_string(&saved).unwrap(),
+        "# kept\ntitle = \"mine\"\n"
+    );
+    assert!(h.query_by_label_contains("left as it was").is_some());
+    click(&mut h, "Save file");
+    click(&mut h, "Replace");
+    assert_eq!(std::fs::read_to_string(&saved).unwrap(), first);
+    // Never over a state file or an image, whatever the name says.
+    let state = folder.join("state.json");
+    std::fs::write(&state, "{\"w\":[0,-1,0]}").unwrap();
+    common::replace_text(&mut h, "Scene file", state.to_str().unwrap());
+    click(&mut h, "Save file");
+    assert!(h.query_by_label_contains("ending in .toml").is_some());
+    let disguised = folder.join("picture.toml");
+    std::fs::write(&disguised, b"\x89PNG\r\n\x1a\n").unwrap();
+    common::replace_text(&mut h, "Scene file", disguised.to_str().unwrap());
+    click(&mut h, "Save file");
+    assert!(
+        h.query_by_label_contains("holds a PNG image, not a scene (TOML)")
+            .is_some()
+    );
+    assert_eq!(std::fs::read(&disguised).unwrap(), b"\x89PNG\r\n\x1a\n");
+    assert_eq!(std::fs::read_to_string(&state).unwrap(), "{\"w\":[0,-1,0]}");
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn the_open_dialog_lists_scene_files_and_opens_the_one_chosen() {
+    let folder = std::env::temp_dir().join(format!("scene-dialog-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let prism = Scene::embedded("dispersing-prism").unwrap();
+    std::fs::write(folder.join("prism.toml"), prism.to_toml().unwrap()).unwrap();
+    std::fs::write(folder.join("notes.png"), b"\x89PNG\r\n\x1a\n").unwrap();
+    let mut h = droplet();
+    common::replace_text(
+        &mut h,
+        "Scene file",
+        folder.join("x.toml").to_str().unwrap(),
+    );
+    click(&mut h, "🗁 Open…");
+    assert!(
+        h.query_by_label("notes.png").is_none(),
+        "only scene files are listed"
+    );
+    click(&mut h, "prism.toml");
+    // The dialog's own button (the strip has one of the same name behind it).
+    let buttons = h.get_all_by_role_and_label(egui::Role::Button, "Open file");
+    buttons.last().unwrap().click();
+    h.run();
+    assert_eq!(h.state().scenes().scene().name(), "prism");
+    assert_eq!(h.state().scenes().scene().source(), prism.source());
+    assert!(h.query_by_label("File name").is_none(), "the dialog closed");
+    // Save as… names a new file in the dialog and writes it there.
+    click(&mut h, "💾 Save as…");
+    common::replace_text(&mut h, "File name", "copy.toml");
+    let buttons = h.get_all_by_role_and_label(egui::Role::Button, "Save file");
+    buttons.last().unwrap().click();
+    h.run();
+    let copy = std::fs::read_to_string(folder.join("copy.toml")).unwrap();
+    assert_eq!(copy, prism.to_toml().unwrap());
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn a_scene_picture_without_a_name_is_numbered_and_an_existing_one_is_asked_about() {
+    let folder = std::env::temp_dir().join(format!("scene-pictures-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let mut h = droplet();
+    for _ in 0..2 {
+        click(&mut h, "Export picture");
+        common::replace_text(
+            &mut h,
+            "Picture file (.png or .svg)",
+            folder.to_str().unwrap(),
+        );
+        h.get_by_label_contains("Export 1920×1080").click();
+        h.run();
+    }
+    assert!(folder.join("scene-001.svg").is_file());
+    assert!(folder.join("scene-002.svg").is_file());
+    let named = folder.join("slide.png");
+    std::fs::write(&named, b"\x89PNG\r\n\x1a\nold").unwrap();
+    click(&mut h, "Export picture");
+    common::replace_text(
+        &mut h,
+        "Picture file (.png or .svg)",
+        named.to_str().unwrap(),
+    );
+    h.get_by_label_contains("Export 1920×1080").click();
+    h.run();
+    assert!(h.query_by_label("Replace the file?").is_some());
+    click(&mut h, "Replace");
+    let bytes = std::fs::read(&named).unwrap();
+    assert!(bytes.len() > 1000, "the picture replaced the old file");
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+/// Steps the window until no trace runs in the background (at most a minute).
+fn until_traced(h: &mut Harness<'static, Explorer>) {
+    let start = std::time::Instant::now();
+    while h.state().scenes().tracing().is_some() {
+        assert!(
+            start.elapsed().as_secs() < 60,
+            "the background trace never ended"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        h.step();
+    }
+    h.run();
+}
+
+#[test]
+fn a_huge_trace_runs_in_the_background_with_progress_and_cancel() {
+    // A mirror box that reflects every ray a thousand times, beside three thousand lines that
+    // every ray must be tested against at every step (a line has no box to skip): a trace that
+    // runs to its full work budget, which the window must not wait for.
+    let lines = "[[shapes]]\nline = { point = [50, 0], normal = [1, 0], medium = \"vacuum\" }\n";
+    let text = format!(
+        "title = \"Mirror box\"\n[media.glass]\nindex = 1.5\n{}[[shapes]]\n\
+         polygon = {{ points = [[0, 0], [1, 0], [1, 1], [0, 1]], medium = \"glass\" }}\n\
+         [source]\nkind = \"fan\"\norigin = [-1, 0.5]\ndirection = [1, 0.1]\nrays = 1000\n\
+         spread_deg = 30\n[effects]\npartial_reflection = true\nmax_depth = 1000\n",
+        lines.repeat(3000)
+    );
+    let mut explorer = Explorer::new(ExplorerState::default());
+    explorer.open_scene(Scene::from_toml(&text, "box.toml", "box").unwrap());
+    assert!(
+        explorer.scenes().tracing().is_some(),
+        "traced in the background"
+    );
+    let mut h = harness_for(explorer);
+    assert!(
+        h.state().scenes().trace().segments.is_empty(),
+        "nothing finished yet"
+    );
+    assert!(h.query_by_label_contains("tracing…").is_some());
+    h.get_by_label("Cancel").click();
+    h.run();
+    until_traced(&mut h);
+    let counts = h.state().scenes().trace().counts;
+    assert_eq!(counts.stopped, Some(refraction_scene::Stop::Cancelled));
+    assert!(h.query_by_label_contains("was cancelled").is_some());
+}
+
+#[test]
+fn a_runaway_droplet_stops_at_what_the_screen_can_show_and_says_so() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/crates/refraction-scene/tests/data/deep-droplet.toml"
+    );
+    let scene = Scene::load(path).unwrap_or_else(|e| panic!("{e}"));
+    let mut explorer = Explorer::new(ExplorerState::default());
+    explorer.open_scene(scene);
+    let mut h = harness_for(explorer);
+    until_traced(&mut h);
+    let trace = h.state().scenes().trace();
+    assert_eq!(trace.segments.len(), 200_000);
+    assert!(
+        h.query_by_label_contains("budget of 200000 segments")
+            .is_some()
+    );
+}
+
+#[test]
+fn a_click_in_or_beside_the_file_dialog_never_reaches_the_scene_under_it() {
+    for present in [false, true] {
+        let mut h = droplet();
+        if present {
+            click(&mut h, "🖵 Presentation");
+        }
+        let scenes = h.state().scenes();
+        let hits: Vec<Pos2> = scenes
+            .trace()
+            .hits
+            .iter()
+            .map(|hit| scenes.to_screen(hit.point).unwrap())
+            .collect();
+        click(&mut h, "🗁 Open…");
+        // The dialog's Cancel over a hit point, the dim backdrop over the button that opened
+        // the dialog, and the backdrop over a hit point beside the dialog (where the window
+        // leaves room for one): each closes the dialog and does nothing else.
+        let cancel = h.get_by_label("Cancel").rect();
+        let heading = h.get_by_label("Open a file").rect();
+        let opener = h.get_all_by_label("🗁 Open…").next().unwrap().rect();
+        let beside = hits
+            .iter()
+            .copied()
+            .find(|p| p.y > cancel.max.y + 30.0 || p.y < heading.min.y - 30.0);
+        if !present {
+            assert!(
+                hits.iter().any(|p| cancel.contains(*p)),
+                "a hit lies under Cancel"
+            );
+            assert!(beside.is_some(), "a hit lies beside the dialog");
+        }
+        // (In presentation the larger dialog covers its button.)
+        let opener = Some(opener.center()).filter(|p| p.y < heading.min.y - 20.0);
+        assert_eq!(opener.is_some(), !present);
+        for at in [Some(cancel.center()), opener, beside]
+            .into_iter()
+            .flatten()
+        {
+            if h.query_by_label("File name").is_none() {
+                click(&mut h, "🗁 Open…");
+            }
+            // Pressed and released within one frame, as a quick click often is.
+            h.hover_at(at);
+            h.run();
+            h.drag_at(at);
+            h.drop_at(at);
+            h.run();
+            assert_eq!(h.state().view(), View::Scenes, "a click at {at:?}");
+            assert!(h.query_by_label("File name").is_none(), "the dialog closed");
+        }
+    }
+}
