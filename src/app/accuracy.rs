@@ -36,6 +36,10 @@ pub struct AccuracyView {
 }
 
 /// Grid marks of a log10 axis: every power of ten, and 2× and 5× it in between.
+#[expect(
+    clippy::needless_pass_by_value,
+    reason = "egui_plot calls a grid spacer with the input by value"
+)]
 fn decades(input: GridInput) -> Vec<GridMark> {
     let (low, high) = input.bounds;
     (low.floor() as i32..=high.ceil() as i32)
@@ -146,7 +150,7 @@ impl AccuracyView {
     }
 }
 
-/// Error against time, both log10-transformed (egui_plot has no log axes), framed on whole
+/// Error against time, both log10-transformed (`egui_plot` has no log axes), framed on whole
 /// decades like the `bench --plot` image.
 fn plot(ui: &mut Ui, report: &Report, palette: &Palette) {
     let (x, y) = axes(report);
@@ -201,7 +205,7 @@ fn plot(ui: &mut Ui, report: &Report, palette: &Palette) {
         });
 }
 
-/// egui_plot's shape for a variant's marker.
+/// `egui_plot`'s shape for a variant's marker.
 fn marker_shape(marker: Marker) -> MarkerShape {
     match marker {
         Marker::Circle => MarkerShape::Circle,

@@ -155,16 +155,15 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
             grab.request_focus();
         }
         let press = ui.input(|i| i.pointer.press_origin());
+        let center = to_screen.transform_pos(Pos2::new(handle.center.x, handle.center.y));
         if let (Some(pointer), Some(press)) = (grab.interact_pointer_pos(), press)
             && grab.dragged()
         {
-            let center = to_screen.transform_pos(Pos2::new(handle.center.x, handle.center.y));
             let start = ui.data_mut(|d| *d.get_temp_mut_or(id, center));
             let p = from_screen.transform_pos(dragged_to(start, press, pointer));
             before.drag(state, handle.id, Vec2::new(p.x, p.y));
         } else {
             // Where the handle is when the next drag starts.
-            let center = to_screen.transform_pos(Pos2::new(handle.center.x, handle.center.y));
             ui.data_mut(|d| d.insert_temp(id, center));
         }
         if grab.hovered() || grab.dragged() {

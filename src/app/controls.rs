@@ -15,7 +15,7 @@ use refraction_model::{ExplorerState, HandleId, Lesson};
 use refraction_model::{INDEX_RANGE, MATERIALS, material_of};
 
 /// What the controls keep between frames.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Controls {
     /// The lesson last started, which *Reset* goes back to.
     lesson: Lesson,

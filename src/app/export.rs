@@ -3,11 +3,11 @@
 //! never freezes) with a progress bar and *Cancel*; and the Scenes view's picture export, PNG
 //! or SVG by the file's extension.
 
+use core::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use core::time::Duration;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::thread::JoinHandle;
-use std::time::Duration;
 
 use egui::{ComboBox, DragValue, ProgressBar, TextEdit, Ui};
 
@@ -75,7 +75,7 @@ impl Default for AnimationExport {
 }
 
 /// Why an export wrote nothing, in the current language around the renderer's own reason.
-fn not_exported(reason: &impl std::fmt::Display) -> String {
+fn not_exported(reason: &impl core::fmt::Display) -> String {
     t!("files-not-exported", reason = reason.to_string())
 }
 

@@ -7,7 +7,7 @@
 //! extension, a file name field) rather than taken from a crate: `egui-file-dialog` 0.15, the
 //! newest at the time of writing, is built for egui 0.36 and the explorer uses 0.37, and `rfd`'s
 //! native dialogs need a desktop portal that a projector's kiosk session, Xvfb and the headless
-//! egui_kittest tests do not have. Widgets work in all three, and the tests drive this dialog
+//! `egui_kittest` tests do not have. Widgets work in all three, and the tests drive this dialog
 //! like any other part of the window.
 
 use std::path::{Path, PathBuf};
@@ -57,7 +57,7 @@ impl Kind {
             Some(Self::State)
         } else if text.starts_with(b"<") {
             Some(Self::Svg)
-        } else if std::str::from_utf8(bytes).is_ok_and(looks_like_toml) {
+        } else if core::str::from_utf8(bytes).is_ok_and(looks_like_toml) {
             Some(Self::Scene)
         } else {
             None
@@ -166,7 +166,7 @@ pub fn or_numbered(typed: &str, stem: &str, extension: &str) -> PathBuf {
 /// 999, `stem-1000.ext` and on).
 #[must_use]
 pub fn numbered(folder: &Path, stem: &str, extension: &str) -> PathBuf {
-    (1..)
+    (1..=u64::MAX)
         .map(|i| folder.join(format!("{stem}-{i:03}.{extension}")))
         .find(|p| !p.exists())
         // untranslated: a panic message for developers; some number is always free
@@ -232,7 +232,7 @@ struct Entry {
 
 /// An open or save dialog over the file system, listing one folder at a time: its folders
 /// and the files with one of the dialog's extensions.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct FileDialog {
     purpose: Purpose,
     extensions: &'static [&'static str],

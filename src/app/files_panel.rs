@@ -52,7 +52,7 @@ fn open_failed(error: &LoadError) -> String {
 }
 
 /// The panel's fields and what its last action said.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct FilesPanel {
     path: String,
     pasted: String,
@@ -227,7 +227,7 @@ impl FilesPanel {
 mod tests {
     use super::*;
     use egui_kittest::Harness;
-    use egui_kittest::kittest::Queryable;
+    use egui_kittest::kittest::Queryable as _;
     use refraction_i18n::{Locale, set_locale};
 
     type Panel = (FilesPanel, ExplorerState);

@@ -20,7 +20,7 @@ pub const LIMIT: usize = 1000;
 /// Everything undo restores.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Snapshot {
-    /// The single interface: W, N, μ_i, μ_t and the convention.
+    /// The single interface: W, N, `μ_i`, `μ_t` and the convention.
     pub interface: ExplorerState,
     /// The Scenes view's scene as edited: which scene, its source and its shapes.
     pub scene: Scene,
@@ -130,7 +130,7 @@ pub fn describe(travel: Travel, from: &Snapshot, to: &Snapshot) -> Change {
 }
 
 /// A linear history of values: the present, what came before it and what was undone.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct History<T> {
     past: Vec<T>,
     present: T,
@@ -174,7 +174,7 @@ impl<T: Clone + PartialEq> History<T> {
     }
 
     fn push(&mut self, now: T) {
-        self.past.push(std::mem::replace(&mut self.present, now));
+        self.past.push(core::mem::replace(&mut self.present, now));
         if self.past.len() > LIMIT {
             self.past.remove(0);
         }
@@ -189,7 +189,7 @@ impl<T: Clone + PartialEq> History<T> {
             Travel::Redo => (&mut self.future, &mut self.past),
         };
         let value = from.pop()?;
-        to.push(std::mem::replace(&mut self.present, value));
+        to.push(core::mem::replace(&mut self.present, value));
         Some(self.present.clone())
     }
 
@@ -208,7 +208,7 @@ impl<T: Clone + PartialEq> History<T> {
 
 /// The history's keyboard shortcuts, unless a text field has the keyboard (there Ctrl+Z
 /// undoes typing).
-fn shortcut(ui: &mut Ui) -> Option<Travel> {
+fn shortcut(ui: &Ui) -> Option<Travel> {
     if ui.ctx().text_edit_focused() {
         return None;
     }

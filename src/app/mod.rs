@@ -180,7 +180,10 @@ impl Explorer {
     /// reads a value eframe kept, by key).
     #[must_use]
     pub fn launched(launch: Launch, saved: impl Fn(&str) -> Option<String>) -> Self {
-        let restored = || saved(STORAGE_KEY).and_then(|json| state_file::parse(&json).ok());
+        let restored = || {
+            let json = saved(STORAGE_KEY)?;
+            state_file::parse(&json).ok()
+        };
         let from_state_file = launch.state.is_some();
         let mut explorer = Self::new(launch.state.or_else(restored).unwrap_or_default());
         if let Some(look) = saved(LOOK_KEY) {
@@ -465,7 +468,10 @@ pub fn run(launch: Launch) -> Result<(), eframe::Error> {
         Box::new(move |cc| {
             install_fonts(&cc.egui_ctx);
             cc.egui_ctx.set_theme(egui::Theme::Light);
-            let saved = |key: &str| cc.storage.and_then(|s| s.get_string(key));
+            let saved = |key: &str| {
+                let s = cc.storage?;
+                s.get_string(key)
+            };
             Ok(Box::new(Explorer::launched(launch, saved)))
         }),
     )

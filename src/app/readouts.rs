@@ -141,7 +141,7 @@ fn candidate_table(ui: &mut Ui, rows: &[CandidateRow], palette: &Palette) {
         .spacing([6.0, 3.0])
         .show(ui, |ui| {
             let names = ["a", "b", "T"].map(str::to_owned);
-            let headings = std::iter::once(t!("readouts-candidate"))
+            let headings = core::iter::once(t!("readouts-candidate"))
                 .chain(names)
                 .chain(checks());
             for heading in headings {

@@ -61,7 +61,7 @@ impl Retracer {
         let mut next = self.spare.take().unwrap_or_else(|| empty(scene));
         scene.retrace_within(&mut next, FOREGROUND, &Progress::default());
         if next.counts.stopped != Some(Stop::Tests(FOREGROUND.tests)) {
-            std::mem::swap(shown, &mut next);
+            core::mem::swap(shown, &mut next);
             self.spare = Some(next);
             return;
         }
@@ -118,7 +118,8 @@ impl Retracer {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::time::{Duration, Instant};
+    use core::time::Duration;
+    use std::time::Instant;
 
     fn wait(retracer: &mut Retracer) -> Trace {
         let start = Instant::now();
@@ -127,7 +128,7 @@ mod tests {
                 return trace;
             }
             assert!(
-                start.elapsed() < Duration::from_secs(60),
+                start.elapsed() < Duration::from_mins(1),
                 "the trace never came"
             );
             std::thread::sleep(Duration::from_millis(5));

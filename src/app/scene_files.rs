@@ -46,7 +46,7 @@ enum Use {
 
 /// The scene file and picture fields, the dialog and the replace question while they are up,
 /// and what the last action said.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SceneFiles {
     /// The scene file to save to or open.
     path: String,

@@ -2,13 +2,13 @@
 //! source, its direction and each shape are dragged (the scene is retraced into the same
 //! [`Trace`] on every change) and a click on a hit point opens it in the single-interface view.
 
+use core::time::Duration;
 use egui::emath::RectTransform;
 use egui::{
     CentralPanel, ComboBox, CursorIcon, Painter, Panel, Pos2, ProgressBar, Rect, Response,
     RichText, Role, Sense, Slider, SliderClamping, Ui, WidgetInfo,
 };
 use refraction_i18n::t;
-use std::time::Duration;
 
 use glam::{DVec2, Vec2};
 
@@ -192,7 +192,7 @@ impl ScenesView {
     /// problem of the hit point clicked, if one was.
     pub fn show(&mut self, ui: &mut Ui, palette: &Palette) -> Option<ExplorerState> {
         if let Some(done) = self.retracer.poll() {
-            let shown = std::mem::replace(&mut self.trace, done);
+            let shown = core::mem::replace(&mut self.trace, done);
             self.retracer.recycle(shown);
         }
         Panel::top("scene-controls").show(ui, |ui| {
@@ -254,7 +254,7 @@ impl ScenesView {
 
     /// While a trace runs in the background: its progress and *Cancel*; and why the trace shown
     /// stopped early, if it did.
-    fn trace_status(&mut self, ui: &mut Ui) {
+    fn trace_status(&self, ui: &mut Ui) {
         if let Some(done) = self.retracer.progress() {
             // Wake up to show the progress, and the trace once it is done.
             ui.ctx().request_repaint_after(Duration::from_millis(50));

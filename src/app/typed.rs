@@ -9,7 +9,7 @@ use super::paint::verdict_colour;
 use refraction_i18n::t;
 
 /// One typed field: its text and the error of the last attempt to apply it.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct TypedField {
     /// What is in the field.
     pub text: String,

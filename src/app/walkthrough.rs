@@ -81,7 +81,7 @@ impl WalkThrough {
         self.morph.is_some()
     }
 
-    /// Starts morphing μ_t to μ_i, so that μ = μ_i/μ_t goes to 1.
+    /// Starts morphing `μ_t` to `μ_i`, so that μ = `μ_i/μ_t` goes to 1.
     pub fn start_morph(&mut self, state: &ExplorerState) {
         self.morph = Some(Morph::new(state.mu_t(), state.mu_i(), MORPH_SECONDS));
     }

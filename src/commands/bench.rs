@@ -31,7 +31,7 @@ pub fn run(quick: bool, json: bool, plot: Option<&Path>) -> ExitCode {
     }
     let text = if json {
         match serde_json::to_string(&report) {
-            Ok(text) => text + "\n",
+            Ok(text) => format!("{text}\n"),
             Err(e) => return fail("bench", &e),
         }
     } else {

@@ -1,7 +1,7 @@
 //! `solve` and `check`: JSON Lines in, one answer per line out.
 
 use std::collections::BTreeMap;
-use std::io::{self, BufRead, Write};
+use std::io::{self, BufRead, Write as _};
 use std::path::Path;
 use std::process::ExitCode;
 

@@ -19,7 +19,7 @@ pub const CLOSED_PIPE: u8 = 141;
 
 /// Prints `refraction-explorer COMMAND: MESSAGE` on stderr, with characters that would act on
 /// a terminal escaped (see [`output::printable`]), and returns exit status 2.
-pub fn fail(command: &str, message: &dyn std::fmt::Display) -> ExitCode {
+pub fn fail(command: &str, message: &dyn core::fmt::Display) -> ExitCode {
     let space = if command.is_empty() { "" } else { " " };
     let line = format!("refraction-explorer{space}{command}: {message}");
     // The exit status says it failed even when stderr cannot say why.

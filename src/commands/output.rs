@@ -1,9 +1,9 @@
 //! Writing to stdout and stderr without panicking (`println!` and `eprintln!` panic when the
 //! stream cannot be written), and text from files made safe to print on a terminal.
 
+use core::fmt::Write as _;
 use std::borrow::Cow;
-use std::fmt::Write as _;
-use std::io::{self, IsTerminal, Write};
+use std::io::{self, IsTerminal as _, Write as _};
 
 /// Whether `c` would act on a terminal rather than show: a control character (ESC, BEL, a
 /// newline, ...), or a bidirectional override that reorders the text after it.
@@ -57,7 +57,7 @@ pub fn to_stderr(text: &str) -> io::Result<()> {
 #[cfg(unix)]
 pub fn stdout_closed() -> bool {
     use rustix::fs::{FileType, OFlags};
-    use std::os::unix::fs::MetadataExt;
+    use std::os::unix::fs::MetadataExt as _;
     let stdout = io::stdout();
     let read_write =
         rustix::fs::fcntl_getfl(&stdout).is_ok_and(|flags| flags & OFlags::RWMODE == OFlags::RDWR);

@@ -1,7 +1,7 @@
 //! `render` and the default command: the explorer's diagram or a traced scene as a PNG or an
 //! SVG, an animation of the diagram as a GIF, or the explorer in a window.
 
-use std::io::{self, IsTerminal};
+use std::io::{self, IsTerminal as _};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -182,13 +182,15 @@ fn picture(args: &RenderArgs, format: ImageFormat) -> Result<Vec<u8>, String> {
              problem, SCENE a traced scene",
             state.display()
         )),
-        (Some(scene), None) => Scene::load(scene)
-            .map_err(|e| e.to_string())
-            .and_then(|s| render::scene_file(&s, format, size, out).map_err(|e| e.to_string())),
-        (None, state) => initial_state(state.as_deref()).and_then(|s| {
+        (Some(scene), None) => {
+            let s = Scene::load(scene).map_err(|e| e.to_string())?;
+            render::scene_file(&s, format, size, out).map_err(|e| e.to_string())
+        }
+        (None, state) => {
+            let s = initial_state(state.as_deref())?;
             render::interface_file(&s, &Overlay::default(), format, size, out)
                 .map_err(|e| e.to_string())
-        }),
+        }
     }
 }
 

@@ -1,6 +1,6 @@
 //! `trace`: a scene's counts, or its whole trace as JSON.
 
-use std::io::{self, Write};
+use std::io::{self, Write as _};
 use std::process::ExitCode;
 
 use refraction_scene::{Report, Scene, catalogue};

@@ -7,7 +7,7 @@ use glam::DVec3;
 use refraction_kernel::{Convention, seed};
 use serde_json::{Value, json};
 
-fn line(w: DVec3, n: DVec3, mu_i: f64, mu_t: f64, convention: &str, yours: Value) -> String {
+fn line(w: DVec3, n: DVec3, mu_i: f64, mu_t: f64, convention: &str, yours: &Value) -> String {
     json!({"w": w.to_array(), "n": n.to_array(), "mu_i": mu_i, "mu_t": mu_t,
            "convention": convention, "t_yours": yours})
     .to_string()
@@ -26,10 +26,10 @@ fn check_names_each_mistake_and_goes_on_past_bad_lines() {
     let steep = DVec3::new(0.3, -(1.0_f64 - 0.09).sqrt(), 0.0);
     let swapped_ratio = seed::refract(steep, up, 1.5_f64, Convention::AlongRay).unwrap();
     // Glass to air at 53°: past the critical angle (41.8°).
-    let tir = |yours| line(DVec3::new(0.8, -0.6, 0.0), up, 1.5, 1.0, "along_ray", yours);
+    let tir = |yours: &Value| line(DVec3::new(0.8, -0.6, 0.0), up, 1.5, 1.0, "along_ray", yours);
     let lines = [
         (
-            line(d, up, 1.0, 1.5, "along_ray", json!(right.to_array())),
+            line(d, up, 1.0, 1.5, "along_ray", &json!(right.to_array())),
             Some("chosen"),
             true,
         ),
@@ -40,7 +40,7 @@ fn check_names_each_mistake_and_goes_on_past_bad_lines() {
                 1.5,
                 1.0,
                 "along_ray",
-                json!(outward_bug.to_array()),
+                &json!(outward_bug.to_array()),
             ),
             Some("wrong_side"),
             false,
@@ -52,13 +52,13 @@ fn check_names_each_mistake_and_goes_on_past_bad_lines() {
                 1.0,
                 1.5,
                 "toward_origin",
-                json!(mixed_conventions.to_array()),
+                &json!(mixed_conventions.to_array()),
             ),
             Some("wrong_bend"),
             false,
         ),
         (
-            line(d, up, 1.0, 1.5, "along_ray", json!((-right).to_array())),
+            line(d, up, 1.0, 1.5, "along_ray", &json!((-right).to_array())),
             Some("reversed"),
             false,
         ),
@@ -69,7 +69,7 @@ fn check_names_each_mistake_and_goes_on_past_bad_lines() {
                 1.0,
                 1.5,
                 "along_ray",
-                json!(format!(
+                &json!(format!(
                     "vec3({}, {}, {})",
                     swapped_ratio.x, swapped_ratio.y, swapped_ratio.z
                 )),
@@ -77,9 +77,9 @@ fn check_names_each_mistake_and_goes_on_past_bad_lines() {
             None,
             false,
         ),
-        (tir(json!([null, null, null])), None, false),
+        (tir(&json!([null, null, null])), None, false),
         (
-            tir(json!([0.8, 0.6, 0.0])),
+            tir(&json!([0.8, 0.6, 0.0])),
             Some("total_internal_reflection"),
             true,
         ),
@@ -90,13 +90,16 @@ fn check_names_each_mistake_and_goes_on_past_bad_lines() {
                 1.0,
                 1.5,
                 "along_ray",
-                json!((right * 2.0).to_array()),
+                &json!((right * 2.0).to_array()),
             ),
             Some("chosen"),
             false,
         ),
     ];
-    let mut input: String = lines.iter().map(|(l, _, _)| format!("{l}\n")).collect();
+    let mut input: String = lines
+        .iter()
+        .flat_map(|(l, _, _)| [l.as_str(), "\n"])
+        .collect();
     input.push_str("{\"w\":[1,0,0]}\nnot json\n");
     let path = std::env::temp_dir().join(format!("check-{}.jsonl", std::process::id()));
     std::fs::write(&path, input).unwrap();
@@ -163,7 +166,7 @@ fn a_file_of_right_answers_exits_zero() {
         .stderr(std::process::Stdio::piped())
         .spawn()
         .unwrap();
-    use std::io::Write;
+    use std::io::Write as _;
     child
         .stdin
         .take()

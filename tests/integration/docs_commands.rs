@@ -1,5 +1,5 @@
 //! The commands of the README and the user guide, run as they are written, as rustdoc runs the
-//! examples of its docs: every line of a ```sh block that starts with `refraction-explorer` is
+//! examples of its docs: every line of a `sh` code block that starts with `refraction-explorer` is
 //! run (the built binary in its place) in a folder of its own where `docs/` is the
 //! repository's, and must end with the exit status its `# exit N` comment gives (0 without
 //! one). A command that opens the window is checked as far as it can be without a display:
@@ -12,7 +12,7 @@ use crate::cli;
 
 const BIN: &str = env!("CARGO_BIN_EXE_refraction-explorer");
 
-/// One command of a ```sh block.
+/// One command of a `sh` code block.
 #[derive(Debug, PartialEq)]
 struct Example {
     /// Where it is written: `docs/check.md:12`.
@@ -45,7 +45,7 @@ fn words(line: &str) -> Option<(Vec<String>, String)> {
             (None, '|' | '$' | '\\' | '&' | ';' | '`') => return None,
             (None, c) if c.is_whitespace() => {
                 if started {
-                    words.push(std::mem::take(&mut word));
+                    words.push(core::mem::take(&mut word));
                 }
                 started = false;
             }
@@ -65,7 +65,9 @@ fn words(line: &str) -> Option<(Vec<String>, String)> {
 fn example(place: String, line: &str) -> Result<Example, String> {
     let (words, comment) = words(line).ok_or_else(|| format!("{place}: unsupported shell"))?;
     let exit = match comment.trim().strip_prefix("exit ") {
-        Some(code) => code.parse().map_err(|_| format!("{place}: bad `# exit`"))?,
+        Some(code) => code
+            .parse()
+            .map_err(|e| format!("{place}: bad `# exit`: {e}"))?,
         None => 0,
     };
     let mut example = Example {
@@ -86,7 +88,7 @@ fn example(place: String, line: &str) -> Result<Example, String> {
     Ok(example)
 }
 
-/// Every `refraction-explorer` line of the ```sh blocks of `file`.
+/// Every `refraction-explorer` line of the `sh` code blocks of `file`.
 fn examples_in(file: &Path) -> Vec<Result<Example, String>> {
     let text = std::fs::read_to_string(file).unwrap();
     let name = file.strip_prefix(root()).unwrap_or(file).display();
@@ -219,7 +221,10 @@ fn every_page_of_the_guide_is_run() {
         .filter_map(|entry| {
             let name = entry.ok()?.file_name().into_string().ok()?;
             let page = root().join("docs").join(&name);
-            (name.ends_with(".md") && !examples_in(&page).is_empty()).then_some(name)
+            let markdown = Path::new(&name)
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("md"));
+            (markdown && !examples_in(&page).is_empty()).then_some(name)
         })
         .collect();
     pages.sort();

@@ -1,4 +1,4 @@
-//! The explorer's diagram driven headlessly with egui_kittest: dragging the handles, the
+//! The explorer's diagram driven headlessly with `egui_kittest`: dragging the handles, the
 //! convention switch turning W around, the keyboard turning the selected handle. No display and
 //! no GPU needed.
 
@@ -7,7 +7,7 @@ use crate::common;
 use common::{center_of, drag, harness, leaving_glass};
 use egui::{Key, Modifiers, Pos2, Role, Vec2};
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::Queryable as _;
 use refraction_diagram::Layout;
 use refraction_explorer::app::Explorer;
 use refraction_model::ExplorerState;

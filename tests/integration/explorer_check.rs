@@ -1,4 +1,4 @@
-//! The explorer's "Check my T" panel driven headlessly with egui_kittest: every sign and
+//! The explorer's "Check my T" panel driven headlessly with `egui_kittest`: every sign and
 //! convention mix-up named and drawn, whole JSON lines opened, bad ones refused. No display and
 //! no GPU needed.
 
@@ -6,7 +6,7 @@ use crate::common;
 
 use common::{click, harness, type_into};
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::Queryable as _;
 use glam::DVec3;
 use refraction_explorer::app::Explorer;
 use refraction_model::ExplorerState;
@@ -355,6 +355,10 @@ fn a_glsl_call_with_eta_upside_down_is_named_drawn_in_glsls_convention_and_copie
 }
 
 #[test]
+#[expect(
+    clippy::literal_string_with_formatting_args,
+    reason = "a log pattern: its braces name fields"
+)]
 fn a_pasted_rtiow_log_gives_a_row_per_call_and_a_click_opens_one() {
     let mut h = harness(ExplorerState::default());
     click(&mut h, "✔ Check my T");

@@ -1,4 +1,4 @@
-//! The explorer's classroom tools driven headlessly with egui_kittest: undo and redo,
+//! The explorer's classroom tools driven headlessly with `egui_kittest`: undo and redo,
 //! presentation mode and themes, the walk-through. No display and no GPU needed.
 
 use crate::common;
@@ -6,7 +6,7 @@ use crate::common;
 use common::{center_of, click, drag, harness, type_into, undo};
 use egui::{Key, Modifiers, Role, Vec2};
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::Queryable as _;
 use refraction_explorer::app::Explorer;
 use refraction_model::ExplorerState;
 

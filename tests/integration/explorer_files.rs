@@ -1,11 +1,11 @@
-//! The explorer's "Save, open, share" panel driven headlessly with egui_kittest: state files
+//! The explorer's "Save, open, share" panel driven headlessly with `egui_kittest`: state files
 //! saved and opened bit for bit, bad files refused, share strings and code snippets. No display
 //! and no GPU needed.
 
 use crate::common;
 
 use common::{click, harness, leaving_glass, type_into, undo};
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::Queryable as _;
 use glam::DVec3;
 use refraction_model::ExplorerState;
 
@@ -20,7 +20,7 @@ fn save_then_open_is_bit_exact_and_corrupt_or_foreign_files_change_nothing() {
         w,
         DVec3::new(-0.0, 1.0, 0.0),
         1.000_293,
-        std::f64::consts::E,
+        core::f64::consts::E,
         Default::default(),
     )
     .unwrap();

@@ -6,7 +6,7 @@ use crate::common;
 
 use common::{click, harness_for, type_into};
 use egui::Role;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::Queryable as _;
 use refraction_explorer::app::{Explorer, Launch};
 use refraction_i18n::{Locale, t};
 use refraction_model::ExplorerState;

@@ -1,11 +1,11 @@
-//! The explorer's panels driven headlessly with egui_kittest: the candidates table and typed
+//! The explorer's panels driven headlessly with `egui_kittest`: the candidates table and typed
 //! values and vectors. No display and no GPU needed.
 
 use crate::common;
 
 use common::{center_of, harness, type_into};
 use egui::Pos2;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::Queryable as _;
 use glam::DVec3;
 use refraction_model::ExplorerState;
 

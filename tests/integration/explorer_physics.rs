@@ -1,4 +1,4 @@
-//! The physics a teacher reaches for next, driven headlessly with egui_kittest: the Fresnel
+//! The physics a teacher reaches for next, driven headlessly with `egui_kittest`: the Fresnel
 //! tool with its cursor following the drag, the Intensities switch (p light at Brewster's angle
 //! reflects nothing), the Wavefronts switch, and Export animation with its progress and Cancel;
 //! at the desk and in presentation at 1280×720.
@@ -8,7 +8,7 @@ use crate::common;
 use common::{center_of, click, drag, harness, harness_for, harness_sized as sized, replace_text};
 use egui::{Role, Vec2};
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::Queryable as _;
 use glam::{DVec3, Vec2 as GVec2};
 use refraction_diagram::Diagram;
 use refraction_diagram::intensities::{Polarisation, Shares};
@@ -219,7 +219,7 @@ fn wait_for(h: &mut Harness<'_, Explorer>, words: &str) {
         if h.query_by_label_contains(words).is_some() {
             return;
         }
-        std::thread::sleep(std::time::Duration::from_millis(100));
+        std::thread::sleep(core::time::Duration::from_millis(100));
         h.step();
     }
     panic!("the window never said {words:?}");

@@ -1,12 +1,13 @@
 //! The commands under careless or hostile use: unwritable and closed streams, an over-long
 //! line, huge files, control characters from files, bad output paths found before the work.
 
+use core::time::Duration;
 use std::fs::{self, File};
-use std::io::{BufRead, BufReader, Write};
-use std::os::unix::fs::FileTypeExt;
+use std::io::{BufRead as _, BufReader, Write as _};
+use std::os::unix::fs::FileTypeExt as _;
 use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 const BIN: &str = env!("CARGO_BIN_EXE_refraction-explorer");
 const GOOD: &str = r#"{"w":[0.6,-0.8,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5}"#;

@@ -1,4 +1,4 @@
-//! The projector audit: the explorer driven headlessly (egui_kittest) at 1280×720 and
+//! The projector audit: the explorer driven headlessly (`egui_kittest`) at 1280×720 and
 //! 1920×1080, at the desk and in presentation, over many states (random W, N and μ, total
 //! internal reflection or not, the lessons), with every tool open in turn and each theme, and
 //! the built-in scenes (the droplet at 1,000 rays). For each it measures what a class at the
@@ -20,7 +20,7 @@ use crate::common;
 use common::harness_sized;
 use egui::{Rect as EguiRect, Role, Shape};
 use egui_kittest::Harness;
-use egui_kittest::kittest::{NodeT, Queryable};
+use egui_kittest::kittest::{NodeT as _, Queryable as _};
 use glam::{DVec3, Vec2 as GVec2};
 use refraction_diagram::font::Typeface;
 use refraction_diagram::geometry::Rect;
@@ -48,7 +48,7 @@ fn tools() -> [Option<String>; 5] {
 
 /// The themes' names in the menu, in the thread's language.
 fn themes() -> Vec<String> {
-    Theme::ALL.iter().map(|t| t.label().to_string()).collect()
+    Theme::ALL.iter().map(|t| t.label().clone()).collect()
 }
 
 /// A small deterministic generator, so that a failure names a state that can be rerun.
@@ -104,8 +104,14 @@ fn states() -> Vec<ExplorerState> {
         .unwrap();
         states.push(state);
     }
-    assert!(states.iter().any(|s| s.refraction().is_tir()));
-    assert!(states.iter().any(|s| !s.refraction().is_tir()));
+    assert!(
+        states.iter().any(|s| s.refraction().is_tir()),
+        "a state past the critical angle"
+    );
+    assert!(
+        states.iter().any(|s| !s.refraction().is_tir()),
+        "a state that refracts"
+    );
     states
 }
 
@@ -315,7 +321,7 @@ fn audit_diagram(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<Strin
     let discs = diagram
         .handles
         .iter()
-        .map(|h| (h.id.label().to_owned(), h.center, h.radius))
+        .map(|h| (h.id.label().clone(), h.center, h.radius))
         .collect();
     let labels: Vec<&Label> = diagram
         .shapes
@@ -446,7 +452,8 @@ fn summary(name: &str, measured: &[(String, Measured)]) -> String {
     )
 }
 
-fn report(measured: Vec<(String, Measured)>) {
+#[expect(clippy::print_stdout, reason = "the measured figures, for --nocapture")]
+fn report(measured: &[(String, Measured)]) {
     let groups = [
         ("desk, tools closed", false, false),
         ("desk, a tool open", false, true),
@@ -509,7 +516,7 @@ fn audit_interface(states: &[ExplorerState]) -> Vec<(String, Measured)> {
                         size.1,
                         if present { "presentation" } else { "desk" },
                         tool.as_ref()
-                            .map_or("no tool".to_owned(), |t| format!("tool {t}")),
+                            .map_or_else(|| "no tool".to_owned(), |t| format!("tool {t}")),
                         themes[theme],
                     );
                     let m = measure(&h, &what, present, tool.is_some(), false);
@@ -523,7 +530,7 @@ fn audit_interface(states: &[ExplorerState]) -> Vec<(String, Measured)> {
 
 #[test]
 fn the_interface_view_owns_the_screen_and_nothing_covers_anything() {
-    report(audit_interface(&states()));
+    report(&audit_interface(&states()));
 }
 
 /// The Scenes view, every built-in scene (the droplet at 1,000 rays), in the thread's
@@ -559,7 +566,7 @@ fn audit_scenes() -> Vec<(String, Measured)> {
 
 #[test]
 fn the_scenes_view_owns_the_screen_and_labels_leave_the_hit_markers_free() {
-    report(audit_scenes());
+    report(&audit_scenes());
 }
 
 /// The audit in `language`: the lessons' kinds (the first states: the default, total
@@ -568,7 +575,7 @@ fn audit_in(language: Locale) {
     refraction_i18n::set_locale(language);
     let mut measured = audit_interface(&states()[..5]);
     measured.extend(audit_scenes());
-    report(measured);
+    report(&measured);
 }
 
 #[test]

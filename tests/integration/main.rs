@@ -1,6 +1,10 @@
 //! The end-to-end tests in one binary: the commands run as a user runs them, and the window
-//! driven headlessly (egui_kittest). One binary links the stack once and runs every test in
+//! driven headlessly (`egui_kittest`). One binary links the stack once and runs every test in
 //! parallel.
+#![expect(
+    clippy::unwrap_used,
+    reason = "test helpers: a failed unwrap is a failed test, with its message"
+)]
 
 mod cli;
 mod common;

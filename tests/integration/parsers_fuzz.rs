@@ -3,10 +3,10 @@
 //! a `--pattern` and the log lines it reads, CSV). `cargo fuzz` needs a nightly toolchain and
 //! the cargo-fuzz tool, so these are proptest runs over arbitrary bytes and strings and over
 //! structured mutations of valid inputs, a few hundred cases each in the ordinary test run.
-//! None may panic, and every answer must be JSON whose numbers are all there: serde_json writes
+//! None may panic, and every answer must be JSON whose numbers are all there: `serde_json` writes
 //! a NaN or an infinity as `null`, so a `null` where a number belongs is a non-finite number.
 
-use std::io::Write;
+use std::io::Write as _;
 
 use glam::DVec3;
 use proptest::prelude::*;
@@ -239,7 +239,7 @@ proptest! {
         let lines: Vec<&[u8]> = input.split(|&b| b == b'\n').collect();
         let expected = lines
             .iter()
-            .filter(|line| std::str::from_utf8(line).map_or(true, |t| !t.trim().is_empty()))
+            .filter(|line| core::str::from_utf8(line).map_or(true, |t| !t.trim().is_empty()))
             .count();
         let mut output = Vec::new();
         solve::run(&input[..], &mut output).expect("writing to memory cannot fail");
@@ -362,7 +362,7 @@ proptest! {
         let mut session = Session::new(Options::new(api), Format::JsonLines, false, false);
         match session.answer(&line) {
             Ok(reply) => assert_api_answer(&reply, &line),
-            Err(message) => prop_assert!(!message.to_string().is_empty()),
+            Err(message) => prop_assert!(!message.clone().is_empty()),
         }
     }
 
@@ -390,7 +390,7 @@ proptest! {
             for log_line in [line.as_str(), noise.as_str()] {
                 match session.answer(log_line) {
                     Ok(reply) => assert_api_answer(&reply, log_line),
-                    Err(message) => prop_assert!(!message.to_string().is_empty()),
+                    Err(message) => prop_assert!(!message.clone().is_empty()),
                 }
             }
             if let Some(summary) = session.finish() {
@@ -409,7 +409,7 @@ proptest! {
                 .prop_map(|cells| cells.join(",")),
         ], 0..6),
     ) {
-        let text = std::iter::once(header).chain(rows).collect::<Vec<_>>().join("\n");
+        let text = core::iter::once(header).chain(rows).collect::<Vec<_>>().join("\n");
         let mut session = Session::new(Options::new(api), Format::Csv, false, false);
         let mut out = Vec::new();
         session.run(text.as_bytes(), &mut out, 2).expect("memory cannot fail");

@@ -15,7 +15,7 @@ enum Bug {
     None,
     /// `ri = rec.front_face ? refraction_index : 1.0/refraction_index`.
     EtaInverted,
-    /// `set_face_normal` keeps the outward normal (front_face still right).
+    /// `set_face_normal` keeps the outward normal (`front_face` still right).
     OutwardNormal,
     /// `r_out_parallel = +sqrt(...) * n` in the student's own refract.
     FlippedSqrt,

@@ -1,4 +1,4 @@
-//! The Scenes view driven headlessly with egui_kittest: picking a scene, dragging the source,
+//! The Scenes view driven headlessly with `egui_kittest`: picking a scene, dragging the source,
 //! clicking a hit point to open it in the single-interface view. No display and no GPU needed.
 
 use crate::common;
@@ -6,7 +6,7 @@ use crate::common;
 use common::{click, drag, harness_for, press_move_release};
 use egui::{Pos2, Vec2};
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::Queryable as _;
 use refraction_explorer::app::{Explorer, View};
 use refraction_model::ExplorerState;
 use refraction_scene::{Scene, Side};
@@ -270,7 +270,7 @@ fn until_traced(h: &mut Harness<'static, Explorer>) {
             start.elapsed().as_secs() < 60,
             "the background trace never ended"
         );
-        std::thread::sleep(std::time::Duration::from_millis(20));
+        std::thread::sleep(core::time::Duration::from_millis(20));
         h.step();
     }
     h.run();

@@ -1,6 +1,6 @@
 //! The `solve` command end to end: the binary reading JSON Lines on stdin.
 
-use std::io::Write;
+use std::io::Write as _;
 use std::process::{Command, Stdio};
 
 use serde_json::Value;
@@ -143,14 +143,13 @@ fn every_bad_line_is_answered_and_the_run_goes_on() {
 #[test]
 fn many_lines_stream_in_order() {
     let count = 20_000;
-    let input: String = (0..count)
-        .map(|i| {
-            format!(
-                "{{\"w\":[{},-1,0],\"n\":[0,1,0],\"mu_i\":1,\"mu_t\":1.5}}\n",
-                f64::from(i) / 1000.0
-            )
-        })
-        .collect();
+    let mut input = String::new();
+    for i in 0..count {
+        let x = f64::from(i) / 1000.0;
+        input.push_str(&format!(
+            "{{\"w\":[{x},-1,0],\"n\":[0,1,0],\"mu_i\":1,\"mu_t\":1.5}}\n"
+        ));
+    }
     let (code, lines) = solve(&input);
     assert_eq!(code, 0);
     assert_eq!(lines.len(), count as usize);
@@ -198,7 +197,7 @@ fn fresnel_fractions_and_special_angles_in_both_precisions() {
 
 #[test]
 fn a_line_piped_in_is_answered_before_the_input_ends() {
-    use std::io::{BufRead, BufReader};
+    use std::io::{BufRead as _, BufReader};
     let mut child = solve_process();
     let mut stdin = child.stdin.take().unwrap();
     let mut answers = BufReader::new(child.stdout.take().unwrap());

@@ -3,13 +3,13 @@
 //! `bench` command times. Regressions show here in review; the README quotes the `bench` command's
 //! figures.
 
+use core::hint::black_box;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use refraction_bench::accuracy::prepare;
 use refraction_bench::peer::Packed;
 use refraction_bench::sets;
 use refraction_kernel::batch::{Build, RayBatch, Transmissions, transmit_batch_with};
 use refraction_kernel::{Real, Variant};
-use std::hint::black_box;
 
 const RAYS: usize = 4096;
 

@@ -2,7 +2,7 @@
 
 use crate::oracle::{self, Exact};
 use refraction_kernel::batch::{RayBatch, Transmissions};
-use refraction_kernel::{Convention, Real, Variant, Vector3};
+use refraction_kernel::{Convention, Real, Variant, Vector3 as _};
 
 use super::sets::Problem;
 
@@ -97,7 +97,7 @@ pub fn errors_of<S: Real>(out: &Transmissions<S>, prepared: &Prepared<S>) -> Err
     let mut max_eps_kappa = 0.0_f64;
     let mut tir_mismatches = 0;
     for (i, reference) in prepared.references.iter().enumerate() {
-        let candidates = std::iter::once(&reference.exact).chain(&reference.other_side);
+        let candidates = core::iter::once(&reference.exact).chain(&reference.other_side);
         match (out.get(i), reference.exact.t) {
             (Some(t), Some(_)) => {
                 let (angle, kappa) = candidates

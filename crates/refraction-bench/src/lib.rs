@@ -29,7 +29,7 @@ pub trait Subject<S: Real> {
 
 impl<S: Real> Subject<S> for Variant {
     fn name(&self) -> &'static str {
-        Variant::name(*self)
+        Self::name(*self)
     }
 
     fn pass<'a>(&self, rays: &'a RayBatch<S>) -> Pass<'a> {
@@ -90,7 +90,7 @@ pub fn cpu_description() -> String {
                 .map(|m| m.trim().to_owned())
         })
         .unwrap_or_else(|| std::env::consts::ARCH.to_owned());
-    let threads = std::thread::available_parallelism().map_or(1, std::num::NonZero::get);
+    let threads = std::thread::available_parallelism().map_or(1, core::num::NonZero::get);
     let mut features = Vec::new();
     #[cfg(target_arch = "x86_64")]
     for (name, present) in [

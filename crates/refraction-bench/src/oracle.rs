@@ -22,7 +22,7 @@ pub struct Exact {
     pub cos_i: TwoFloat,
     /// cosθt = √k, or 0 on total internal reflection.
     pub cos_t: TwoFloat,
-    /// μ = μ_i/μ_t.
+    /// μ = `μ_i/μ_t`.
     pub mu: TwoFloat,
 }
 
@@ -68,13 +68,13 @@ pub fn fresnel_at(mu: TwoFloat, cos_i: TwoFloat) -> ExactFresnel {
 /// The Fresnel power fractions in double-double, for s and p polarisation.
 #[derive(Clone, Copy, Debug)]
 pub struct ExactFresnel {
-    /// Reflectance R_s.
+    /// Reflectance `R_s`.
     pub rs: TwoFloat,
-    /// Reflectance R_p.
+    /// Reflectance `R_p`.
     pub rp: TwoFloat,
-    /// Transmittance T_s.
+    /// Transmittance `T_s`.
     pub ts: TwoFloat,
-    /// Transmittance T_p.
+    /// Transmittance `T_p`.
     pub tp: TwoFloat,
 }
 
@@ -87,7 +87,7 @@ impl ExactFresnel {
         tp: TwoFloat::from_f64(0.0),
     };
 
-    /// The four fractions in the order R_s, R_p, T_s, T_p.
+    /// The four fractions in the order `R_s`, `R_p`, `T_s`, `T_p`.
     #[must_use]
     pub fn to_array(&self) -> [TwoFloat; 4] {
         [self.rs, self.rp, self.ts, self.tp]

@@ -3,7 +3,7 @@
 
 use glam::{DQuat, DVec3};
 use rand::rngs::SmallRng;
-use rand::{RngExt, SeedableRng};
+use rand::{RngExt as _, SeedableRng as _};
 
 /// One refraction problem: a unit travel direction, a unit normal facing it, two indices.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -139,9 +139,9 @@ pub fn hard_cases() -> Vec<Problem> {
 #[must_use]
 pub fn rotations(count: usize, seed: u64) -> Vec<DQuat> {
     let mut rng = SmallRng::seed_from_u64(seed);
-    std::iter::once(DQuat::IDENTITY)
+    core::iter::once(DQuat::IDENTITY)
         .chain((1..count).map(|_| {
-            let v: [f64; 4] = std::array::from_fn(|_| rng.random_range(-1.0..1.0));
+            let v: [f64; 4] = core::array::from_fn(|_| rng.random_range(-1.0..1.0));
             DQuat::from_array(v).normalize()
         }))
         .collect()

@@ -1,8 +1,9 @@
 //! Time per ray: repeated runs over an in-cache working set, median of the samples; and one
 //! streaming figure beside the time of merely moving the same bytes.
 
-use std::hint::black_box;
-use std::time::{Duration, Instant};
+use core::hint::black_box;
+use core::time::Duration;
+use std::time::Instant;
 
 use refraction_kernel::batch::{RayBatch, Transmissions};
 use refraction_kernel::{Real, Variant};
@@ -25,7 +26,7 @@ fn repeats(pass: &mut Pass<'_>) -> u32 {
 }
 
 /// For each of `passes` over the same `len` rays, the median over `samples` samples of its time
-/// per ray, each sample repeating the pass to last about [`SAMPLE_TIME`]. The samples are taken
+/// per ray, each sample repeating the pass to last about `SAMPLE_TIME` (2 ms). The samples are taken
 /// in turn (A, B, C, A, B, C, ...), so that a change in the machine's speed during the run
 /// (other work starting or stopping) touches every pass alike and their ratios stay meaningful.
 #[must_use]
@@ -53,7 +54,7 @@ pub fn medians_ns_per_ray(len: usize, samples: usize, passes: &mut [Pass<'_>]) -
 
 /// A timed pass of `variant` over `rays` into an output of its own.
 #[must_use]
-pub fn variant_pass<'a, S: Real>(variant: Variant, rays: &'a RayBatch<S>) -> Pass<'a> {
+pub fn variant_pass<S: Real>(variant: Variant, rays: &RayBatch<S>) -> Pass<'_> {
     let mut out = Transmissions::for_batch(rays);
     Box::new(move || {
         variant.transmit_all(black_box(rays), &mut out);

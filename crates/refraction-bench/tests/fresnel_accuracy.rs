@@ -8,8 +8,8 @@
 //!   cosθt: the error of the Fresnel forms themselves, within a few ε everywhere;
 //! - **end to end**: against the exact fractions for the input W, N and indices. The rounding
 //!   of μ and of the cosines adds the fractions' sensitivity to their input, which the test
-//!   measures with the oracle as κ_F (below): end to end is within a few ε plus a few κ_F·ε.
-//!   κ_F is near 1 almost everywhere and unbounded at the critical angle, where R has an
+//!   measures with the oracle as `κ_F` (below): end to end is within a few ε plus a few `κ_F·ε`.
+//!   `κ_F` is near 1 almost everywhere and unbounded at the critical angle, where R has an
 //!   infinite slope, and near grazing incidence between near-equal indices, which is close to
 //!   it: there the problem, not the formula, decides the digits.
 
@@ -18,7 +18,7 @@ use std::collections::BTreeMap;
 use glam::{DQuat, DVec3};
 use refraction_bench::oracle::{self, ExactFresnel};
 use refraction_bench::sets::{self, Problem};
-use refraction_kernel::{Convention, Fresnel, Incidence, Real, Refraction, Vector3, refract};
+use refraction_kernel::{Convention, Fresnel, Incidence, Real, Refraction, Vector3 as _, refract};
 use twofloat::TwoFloat;
 
 /// The bound on the own error, in ε. The kernel's `fresnel` module docs count roundings; on
@@ -26,7 +26,7 @@ use twofloat::TwoFloat;
 /// agree with Snell's law only to a few ε (cosθt comes from the tangential part of W near
 /// normal incidence, not from cosθi), which the two read differently by up to about 2ε.
 const OWN_BOUND: f64 = 6.0;
-/// The end-to-end bound, in ε, is this plus [`SENSITIVITY_FACTOR`]·κ_F.
+/// The end-to-end bound, in ε, is this plus [`SENSITIVITY_FACTOR`]·`κ_F`.
 const END_TO_END_BOUND: f64 = 4.0;
 /// How many ε of input error the kernel's μ and cosines carry, at most (the kernel's own
 /// accuracy test bounds them). The worst seen is 4.4ε, in f32 just inside the critical angle at
@@ -43,7 +43,7 @@ const PAIRS: [(f64, f64); 5] = [
     (1.0, 1.000_293),
 ];
 
-/// Rays at Brewster's angle (tanθB = μ_t/μ_i) and 1e-3 to 1e-12 (relative) either side of it.
+/// Rays at Brewster's angle (tanθB = `μ_t/μ_i`) and 1e-3 to 1e-12 (relative) either side of it.
 fn brewster_cases() -> Vec<Problem> {
     let mut cases = Vec::new();
     for (mu_i, mu_t) in PAIRS {
@@ -68,7 +68,7 @@ fn brewster_cases() -> Vec<Problem> {
 }
 
 /// The largest errors seen in each family of cases, in ε: own, end to end, and end to end
-/// divided by 1 + κ_F.
+/// divided by 1 + `κ_F`.
 type Worst = BTreeMap<&'static str, [f64; 3]>;
 
 fn wide<S: Real>(v: S::Vec3) -> [f64; 3] {
@@ -84,7 +84,7 @@ fn difference_in_eps(a: &ExactFresnel, b: &ExactFresnel, eps: f64) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// κ_F: how far the exact fractions move, in `eps`, when μ moves by `eps` (relative) or cosθi
+/// `κ_F`: how far the exact fractions move, in `eps`, when μ moves by `eps` (relative) or cosθi
 /// by `eps` (absolute) either way: the problem's own sensitivity to the kernel's roundings.
 fn sensitivity(mu: TwoFloat, cos_i: TwoFloat, eps: f64) -> f64 {
     let at = oracle::fresnel_at(mu, cos_i);
@@ -181,7 +181,10 @@ fn check<S: Real>(case: &Problem, rotation: DQuat, worst: &mut Worst) {
     } else {
         // Within rounding of the critical angle the TIR decision itself may differ (the
         // kernel's accuracy test bounds where); R is within √ε of 1 either way.
-        assert!(exact.k.abs().hi() <= 32.0 * eps * (1.0 + given.mu_i / given.mu_t));
+        assert!(
+            exact.k.abs().hi() <= 32.0 * eps * (1.0 + given.mu_i / given.mu_t),
+            "a graze: k is zero within its rounding"
+        );
         0.0
     };
     let kappa = sensitivity(exact.mu, exact.cos_i, eps);
@@ -199,6 +202,7 @@ fn check<S: Real>(case: &Problem, rotation: DQuat, worst: &mut Worst) {
     }
 }
 
+#[expect(clippy::print_stdout, reason = "the table, for --nocapture")]
 fn check_all<S: Real>() -> Worst {
     let mut cases = sets::hard_cases();
     cases.extend(brewster_cases());

@@ -1,10 +1,14 @@
 //! The default kernel against the double-double oracle on the hard cases, at both precisions,
 //! in an axis-aligned frame and in many random rotations of it.
+#![expect(
+    clippy::unwrap_used,
+    reason = "test helpers: a failed unwrap is a failed test, with its message"
+)]
 
 use glam::{DQuat, DVec3};
 use refraction_bench::oracle;
 use refraction_bench::sets::{self, Problem};
-use refraction_kernel::{Convention, Incidence, Real, Vector3, refract};
+use refraction_kernel::{Convention, Incidence, Real, Vector3 as _, refract};
 
 /// The bench's hard cases, plus two the bench leaves out because only the full kernel API
 /// accepts them: normals on the far side and inputs far from unit length.
@@ -96,7 +100,7 @@ fn check<S: Real>(case: &Problem, rotation: DQuat, convention: Convention) {
                 "{context}: error {err:e} = {:.1} eps*kappa (kappa {kappa:e})",
                 err / (eps * kappa)
             );
-            assert!(wide(t).iter().all(|c| c.is_finite()));
+            assert!(wide(t).iter().all(|c| c.is_finite()), "T is finite");
         }
         (None, None) => {}
         (mine, _) => assert!(

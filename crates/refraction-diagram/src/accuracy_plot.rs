@@ -1,6 +1,6 @@
 //! The `bench` report as a picture: maximum hard-set error (in ε·κ) against time per ray, both
 //! on log scales, one marker per variant and precision. Drawn by the PNG renderer for
-//! `bench --plot`; the explorer's "Accuracy vs time" view plots the same numbers with egui_plot
+//! `bench --plot`; the explorer's "Accuracy vs time" view plots the same numbers with `egui_plot`
 //! and the same [`LogAxis`].
 
 use glam::Vec2;
@@ -336,7 +336,7 @@ impl<'a> Plot<'a> {
             ),
             (
                 t!("diagram-accuracy-time-axis"),
-                Vec2::new((plot.min.x + plot.max.x) / 2.0, size.y - small * 1.2),
+                Vec2::new(f32::midpoint(plot.min.x, plot.max.x), size.y - small * 1.2),
                 (Align::Center, Align::End),
                 small,
             ),

@@ -8,7 +8,7 @@ use refraction_kernel::{Convention, Refraction, seed};
 use super::numbers::{number, vector};
 
 /// One equation of the source, as written there and with numbers.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Equation {
     /// The source's number, e.g. `2.21` (section.equation).
     pub number: String,

@@ -10,7 +10,7 @@ use glam::Vec2;
 use skrifa::instance::{LocationRef, Size};
 use skrifa::outline::{DrawSettings, OutlinePen};
 use skrifa::raw::ReadError;
-use skrifa::{FontRef, GlyphId, MetadataProvider};
+use skrifa::{FontRef, GlyphId, MetadataProvider as _};
 
 /// The embedded font could not be read: a broken build, never bad input.
 #[derive(Debug, thiserror::Error)]

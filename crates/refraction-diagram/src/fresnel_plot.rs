@@ -33,7 +33,7 @@ fn sample_angles(critical_deg: Option<f64>) -> Vec<f64> {
     angles
 }
 
-/// The kernel's Fresnel fractions for μ = μ_i/μ_t at `degrees` (0 to 90) from the normal.
+/// The kernel's Fresnel fractions for μ = `μ_i/μ_t` at `degrees` (0 to 90) from the normal.
 #[must_use]
 pub fn fresnel_at(mu: f64, degrees: f64) -> Fresnel<f64> {
     let (sin, cos) = degrees.to_radians().sin_cos();
@@ -66,13 +66,13 @@ const CURVES: [(fn() -> String, Share); 4] = [
 /// What the Fresnel view shows for one state.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FresnelPlot {
-    /// μ_i, the index the ray comes from.
+    /// `μ_i`, the index the ray comes from.
     pub mu_i: f64,
-    /// μ_t, the index it enters.
+    /// `μ_t`, the index it enters.
     pub mu_t: f64,
     /// Brewster's and the critical angle.
     pub angles: SpecialAngles,
-    /// R_s, R_p, unpolarised R and T against θi, in that order.
+    /// `R_s`, `R_p`, unpolarised R and T against θi, in that order.
     pub curves: Vec<Curve>,
     /// The current angle of incidence, in degrees.
     pub cursor_deg: f64,
@@ -263,7 +263,7 @@ impl PlotPainter<'_> {
             let at = Vec2::new(x + f.text * 3.0, y);
             let ink = self.palette.ink;
             self.text(
-                curve.name.to_owned(),
+                curve.name.clone(),
                 at,
                 (Align::Start, Align::Center),
                 0.8,

@@ -159,7 +159,7 @@ pub fn convex_pieces(points: &[Vec2]) -> Vec<Vec<Vec2>> {
     if turns.iter().all(|t| *t >= 0.0) || turns.iter().all(|t| *t <= 0.0) {
         return vec![corners];
     }
-    let orientation: f32 = (0..n)
+    let orientation = (0..n)
         .map(|i| corners[i].perp_dot(corners[(i + 1) % n]))
         .sum::<f32>()
         .signum();
@@ -246,7 +246,7 @@ pub fn dash(points: &[Vec2], pattern: &[f32]) -> Vec<Vec<Vec2>> {
             (from, remaining, left) = (next, remaining - step, left - step);
             if left <= 0.0 {
                 if on {
-                    pieces.push(std::mem::take(&mut current));
+                    pieces.push(core::mem::take(&mut current));
                 }
                 index = (index + 1) % pattern.len();
                 left = pattern[index];
@@ -265,10 +265,10 @@ pub fn dash(points: &[Vec2], pattern: &[f32]) -> Vec<Vec<Vec2>> {
 pub fn arc(center: Vec2, radius: f32, from: Vec2, to: Vec2) -> Vec<Vec2> {
     let start = from.y.atan2(from.x);
     let mut sweep = to.y.atan2(to.x) - start;
-    if sweep > std::f32::consts::PI {
-        sweep -= std::f32::consts::TAU;
-    } else if sweep < -std::f32::consts::PI {
-        sweep += std::f32::consts::TAU;
+    if sweep > core::f32::consts::PI {
+        sweep -= core::f32::consts::TAU;
+    } else if sweep < -core::f32::consts::PI {
+        sweep += core::f32::consts::TAU;
     }
     let steps = 32;
     (0..=steps)

@@ -106,7 +106,7 @@ impl Theme {
 }
 
 /// Every colour the diagram uses, and the dash patterns of the rays that have no other.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Palette {
     /// The canvas background.
     pub background: Colour,

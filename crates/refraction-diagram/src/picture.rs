@@ -204,7 +204,7 @@ impl DiagramBuilder<'_> {
     /// and the index scale), every label stays off the arrowheads, the handles' grab areas and
     /// the labels placed before it, and one with no free spot is left out (returned second).
     fn finish(mut self, handles: &[Handle]) -> (Vec<Figure>, Vec<Label>) {
-        let mut labels = std::mem::take(&mut self.labels);
+        let mut labels = core::mem::take(&mut self.labels);
         labels.sort_by_key(|(rank, _)| *rank);
         let Some(face) = self.face.as_ref() else {
             // No font (a broken build): nothing can be measured, so nothing is moved.
@@ -603,19 +603,16 @@ impl DiagramBuilder<'_> {
             self.shared_ray(reflected, full, &name, shares.reflected);
             return;
         }
-        match r.transmission {
-            Some(tr) => {
-                let t = self.flat(tr.t);
-                let theta_t = number(tr.cos_t.clamp(-1.0, 1.0).acos().to_degrees(), 1);
-                let text = format!("θt = {theta_t}°");
-                self.angle(Part::AngleT, (-normal, t), text, palette.t);
-                let thin = self.stroke(1.6, palette.reflected, palette.reflected_dash);
-                self.ray(reflected, 0.7, thin, &t!("diagram-reflected"), 0.8);
-            }
-            None => {
-                let bold = self.stroke(4.5, palette.reflected, palette.reflected_dash);
-                self.ray(reflected, 1.0, bold, &t!("diagram-reflected-all"), 1.0);
-            }
+        if let Some(tr) = r.transmission {
+            let t = self.flat(tr.t);
+            let theta_t = number(tr.cos_t.clamp(-1.0, 1.0).acos().to_degrees(), 1);
+            let text = format!("θt = {theta_t}°");
+            self.angle(Part::AngleT, (-normal, t), text, palette.t);
+            let thin = self.stroke(1.6, palette.reflected, palette.reflected_dash);
+            self.ray(reflected, 0.7, thin, &t!("diagram-reflected"), 0.8);
+        } else {
+            let bold = self.stroke(4.5, palette.reflected, palette.reflected_dash);
+            self.ray(reflected, 1.0, bold, &t!("diagram-reflected-all"), 1.0);
         }
     }
 
@@ -629,7 +626,8 @@ impl DiagramBuilder<'_> {
         };
         // A student's API names the vectors its own way while their call is shown.
         let names = self.overlay.student.as_ref().and_then(|s| s.names.clone());
-        let (w_text, n_text) = names.map_or((own, "N".to_owned()), |n| (n.incident, n.normal));
+        let (w_text, n_text) =
+            names.map_or_else(|| (own, "N".to_owned()), |n| (n.incident, n.normal));
         let w_dir = self.state.direction(HandleId::W);
         let n_dir = self.state.direction(HandleId::N);
         let w_stroke = self.stroke(3.0, palette.w, Dash::Solid);
@@ -658,16 +656,15 @@ impl DiagramBuilder<'_> {
     /// the ray's tip would be (p light at Brewster's angle).
     fn shared_ray(&mut self, d: DVec2, full: Stroke, name: &str, share: f64) {
         let text = Shares::label(name, share);
-        match stroke_for(full, share) {
-            Some(stroke) => self.ray(d, 1.0, stroke, &text, 0.9),
-            None => {
-                let away = self.layout.view.direction(d);
-                let at = self.at(d * 0.7);
-                let anchor = (Align::away(away.x), Align::away(away.y));
-                let colour = self.palette.text_shade(full.colour);
-                let text = t!("diagram-no-reflected-ray", label = text);
-                self.label_coloured(text, at, anchor, 0.9, colour);
-            }
+        if let Some(stroke) = stroke_for(full, share) {
+            self.ray(d, 1.0, stroke, &text, 0.9);
+        } else {
+            let away = self.layout.view.direction(d);
+            let at = self.at(d * 0.7);
+            let anchor = (Align::away(away.x), Align::away(away.y));
+            let colour = self.palette.text_shade(full.colour);
+            let text = t!("diagram-no-reflected-ray", label = text);
+            self.label_coloured(text, at, anchor, 0.9, colour);
         }
     }
 
@@ -754,11 +751,11 @@ impl Diagram {
         let handles = vec![w, n, mu_i, mu_t];
         let (shapes, left_out) = b.finish(&handles);
         Self {
+            layout,
             shapes,
             handles,
-            left_out,
-            layout,
             summary,
+            left_out,
         }
     }
 

@@ -64,8 +64,8 @@ fn convex_overlaps(points: &[Vec2], r: &Rect) -> bool {
         .iter()
         .zip(points.iter().cycle().skip(1))
         .map(|(a, b)| (*b - *a).perp());
-    !std::iter::once(Vec2::X)
-        .chain(std::iter::once(Vec2::Y))
+    !core::iter::once(Vec2::X)
+        .chain(core::iter::once(Vec2::Y))
         .chain(edges)
         .filter(|axis| axis.length_squared() > 0.0)
         .any(apart)
@@ -147,12 +147,12 @@ impl<'f> Placer<'f> {
     /// placed, or gives it back unchanged (`Err`) when no spot is free: it is then left out.
     ///
     /// # Errors
-    /// No free spot within [`MOST_STEPS`] steps, or the label is larger than `bounds`.
+    /// No free spot within 12 steps, or the label is larger than `bounds`.
     pub fn place(&mut self, mut label: Label, bounds: &Rect) -> Result<Label, Label> {
         let step = label.size * 0.6;
         // Measured once: the text's extent does not depend on where it goes.
         let extent = self.face.measure(&label.text, label.size);
-        let offsets = std::iter::once(Vec2::ZERO)
+        let offsets = core::iter::once(Vec2::ZERO)
             .chain((1..=MOST_STEPS).flat_map(|k| DIRECTIONS.map(|d| d * step * k as f32)));
         let spot = offsets.map(|offset| label.at + offset).find_map(|at| {
             let r = boxed(&label, extent, at);
@@ -201,7 +201,7 @@ pub fn wrap(face: &Typeface, text: &str, size: f32, width: f32) -> String {
         for word in paragraph.split(' ') {
             let word_width = face.width(word, size);
             if !line.is_empty() && line_width + space + word_width > width {
-                lines.push(std::mem::replace(&mut line, word.to_owned()));
+                lines.push(core::mem::replace(&mut line, word.to_owned()));
                 line_width = word_width;
             } else {
                 if !line.is_empty() {

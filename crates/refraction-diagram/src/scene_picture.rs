@@ -456,7 +456,7 @@ impl ScenePictureBuilder<'_> {
     /// Places the waiting labels inside the drawing area, off the hit markers, the handles and
     /// the aim's arrowhead, through the [`Placer`]; returns those left out.
     fn place(&mut self, handles: &[SceneHandle]) -> Vec<Label> {
-        let labels = std::mem::take(&mut self.labels);
+        let labels = core::mem::take(&mut self.labels);
         let Some(face) = self.face.as_ref() else {
             // No font (a broken build): nothing can be measured, so nothing is moved.
             self.out.extend(labels.into_iter().map(Primitive::Text));
@@ -536,7 +536,7 @@ impl ScenePictureBuilder<'_> {
             let mut run: Vec<Vec2> = Vec::new();
             for (pair, canvas) in world.windows(2).zip(points.windows(2)) {
                 if on_border(pair[0], pair[1]) {
-                    self.edge(std::mem::take(&mut run));
+                    self.edge(core::mem::take(&mut run));
                 } else {
                     if run.is_empty() {
                         run.push(canvas[0]);
@@ -607,7 +607,7 @@ impl ScenePictureBuilder<'_> {
                 let a = faded(opacity(mean));
                 let (from, to) = (self.layout.at(s.from), self.layout.at(s.to));
                 if a != alpha {
-                    self.ray(std::mem::take(&mut run), colour.with_alpha(alpha), width);
+                    self.ray(core::mem::take(&mut run), colour.with_alpha(alpha), width);
                     alpha = a;
                 }
                 if run.is_empty() {
@@ -652,7 +652,7 @@ impl ScenePictureBuilder<'_> {
             else {
                 continue;
             };
-            if std::mem::replace(cell, true) {
+            if core::mem::replace(cell, true) {
                 continue;
             }
             self.out.push(Primitive::Disc {
@@ -814,7 +814,7 @@ fn drawing_order(trace: &Trace) -> Box<dyn Iterator<Item = usize> + '_> {
     Box::new(order.into_iter())
 }
 
-/// `n` well mixed (the finaliser of SplitMix64, by Sebastiano Vigna): sorting by it shuffles,
+/// `n` well mixed (the finaliser of `SplitMix64`, by Sebastiano Vigna): sorting by it shuffles,
 /// the same way every time.
 fn shuffled(n: u64) -> u64 {
     let mut z = n.wrapping_add(0x9E37_79B9_7F4A_7C15);
@@ -855,22 +855,19 @@ fn legend(scene: &Scene, trace: &Trace, p: &Palette) -> Vec<(String, Colour)> {
     let ink = p.ink;
     let mut pieces = vec![(format!("{} ", t!("diagram-legend-colour")), ink)];
     let colours = scene.source().colours(scene.effects().dispersion);
-    match colours.as_slice() {
-        [Light::White] => {
-            let nm = reference_wavelength();
-            let text = t!("diagram-legend-white-traced", wavelength = nm);
-            pieces.push((text, p.white_light));
+    if let [Light::White] = colours.as_slice() {
+        let nm = reference_wavelength();
+        let text = t!("diagram-legend-white-traced", wavelength = nm);
+        pieces.push((text, p.white_light));
+    } else {
+        if colours.len() > 1 {
+            let then = t!("diagram-legend-white-then");
+            pieces.push((format!("{then} "), p.white_light));
         }
-        _ => {
-            if colours.len() > 1 {
-                let then = t!("diagram-legend-white-then");
-                pieces.push((format!("{then} "), p.white_light));
-            }
-            for nm in colours.iter().filter_map(|light| light.wavelength_nm()) {
-                pieces.push((format!("{} ", number(nm, 0)), wavelength_colour(nm)));
-            }
-            pieces.push((t!("diagram-legend-nm"), ink));
+        for nm in colours.iter().filter_map(|light| light.wavelength_nm()) {
+            pieces.push((format!("{} ", number(nm, 0)), wavelength_colour(nm)));
         }
+        pieces.push((t!("diagram-legend-nm"), ink));
     }
     if scene.effects().intensities() {
         pieces.push((format!(" · {}", t!("diagram-legend-opacity")), ink));

@@ -8,7 +8,7 @@ use refraction_i18n::t;
 use refraction_kernel::{Convention, Refraction};
 
 /// One step of the walk-through.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Step {
     /// A short title in the current language, e.g. `The two roots for a`.
     pub title: String,

@@ -3,7 +3,7 @@
 //!
 //! The transmitted fronts are not drawn from the kernel's T: they are built as Huygens did.
 //! Two points B and A on the surface, L apart, are reached by one incoming front a time
-//! Δt = L·sinθi/v_i apart; in that time the wavelet from B grows to r = v_t·Δt in the second
+//! Δt = `L·sinθi/v_i` apart; in that time the wavelet from B grows to r = `v_t·Δt` in the second
 //! medium, and the new front is the tangent from A to that wavelet. Its normal (from B to the
 //! point of tangency) makes cosα = r/L with the surface, and the test below checks that it is
 //! the kernel's T. When r > L there is no tangent: total internal reflection, and the fronts
@@ -150,7 +150,7 @@ fn huygens(d: DVec2, n: DVec2, mu_i: f64, mu_t: f64) -> Option<Huygens> {
 }
 
 /// The piece of the line {p : p·normal = offset} within [`EXTENT`] of the hit point and on
-/// `side` of the surface (p·surface_normal has the sign of `side`), if any.
+/// `side` of the surface (`p·surface_normal` has the sign of `side`), if any.
 fn chord(normal: DVec2, offset: f64, surface_normal: DVec2, side: f64) -> Option<(DVec2, DVec2)> {
     let half = (EXTENT * EXTENT - offset * offset).sqrt();
     if half.is_nan() || half <= 0.0 {

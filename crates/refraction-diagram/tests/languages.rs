@@ -21,7 +21,10 @@ fn label_texts(diagram: &Diagram) -> Vec<String> {
 /// thread goes back to English before the test looks at it.
 fn total_internal_reflection_in(locale: Locale) -> Diagram {
     let state = Lesson::BeyondCritical.state();
-    assert!(state.refraction().is_tir());
+    assert!(
+        state.refraction().is_tir(),
+        "the state is past the critical angle"
+    );
     set_locale(locale);
     let diagram = Diagram::new(&state, Vec2::new(1600.0, 1000.0));
     set_locale(Locale::En);

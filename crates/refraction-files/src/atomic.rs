@@ -16,7 +16,7 @@
 //! - **a directory, a block device or a socket** is refused.
 
 use std::fs::{self, File, OpenOptions, Permissions};
-use std::io::{self, Write};
+use std::io::{self, Write as _};
 use std::path::Path;
 
 /// How the file at a path is to be written.
@@ -36,7 +36,7 @@ fn refuse(kind: io::ErrorKind, why: String) -> io::Error {
 /// written into; `None` where the platform cannot tell.
 #[cfg(unix)]
 fn special(kind: fs::FileType) -> Option<(&'static str, bool)> {
-    use std::os::unix::fs::FileTypeExt;
+    use std::os::unix::fs::FileTypeExt as _;
     if kind.is_fifo() {
         Some(("a FIFO", true))
     } else if kind.is_char_device() {
@@ -211,7 +211,7 @@ pub fn check_writable(path: &Path) -> io::Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::os::unix::fs::{FileTypeExt, PermissionsExt, symlink};
+    use std::os::unix::fs::{FileTypeExt as _, PermissionsExt as _, symlink};
     use std::path::PathBuf;
 
     fn folder(name: &str) -> PathBuf {

@@ -2,7 +2,7 @@
 //! refused rather than read into memory. Scene files and the explorer's state files are read
 //! this way.
 
-use std::io::{self, Read};
+use std::io::{self, Read as _};
 use std::path::Path;
 
 /// `bytes` for messages: whole mebibytes as `N MiB`, anything else in bytes.

@@ -18,8 +18,8 @@
 
 mod files;
 
+use core::cell::{Cell, RefCell};
 use std::borrow::Cow;
-use std::cell::{Cell, RefCell};
 use std::rc::Rc;
 
 use fluent_bundle::{FluentArgs, FluentBundle, FluentResource, FluentValue};
@@ -110,14 +110,14 @@ impl Locale {
     }
 }
 
-impl std::fmt::Display for Locale {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+impl core::fmt::Display for Locale {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.write_str(self.code())
     }
 }
 
 /// A value for a message's placeable (`{ $mu }`).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Arg<'a> {
     /// Text put in as it is: names, and numbers already written (with [`decimal`]).
     Text(Cow<'a, str>),
@@ -187,7 +187,7 @@ pub fn locale() -> Locale {
 ///
 /// # Panics
 /// In debug builds (and so in every test), when the translation is broken: English lacks
-/// the key, a placeable was not filled, or a file does not parse ([`broken`]). A release
+/// the key, a placeable was not filled, or a file does not parse. A release
 /// build shows `[key]` for a missing key and the placeable's name for a missing value, and
 /// says so on stderr once per problem.
 #[must_use]
@@ -224,6 +224,14 @@ fn format_in(locale: Locale, key: &str, args: &[(&str, Arg<'_>)]) -> Option<Stri
 /// A translation that cannot be shown as written: a panic in debug builds, so that a test
 /// or a developer's run finds it at once; a line on stderr in a release build, where a user
 /// is better served by the rest of the window than by a crash.
+#[expect(
+    clippy::manual_assert,
+    reason = "a panic in debug builds only, with the release build's fallback after it"
+)]
+#[expect(
+    clippy::print_stderr,
+    reason = "a release build's one way to say so without a crash or a lost message"
+)]
 fn broken(what: &str) {
     if cfg!(debug_assertions) {
         panic!("broken translation: {what}");

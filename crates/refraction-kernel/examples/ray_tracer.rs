@@ -4,6 +4,7 @@
 //! from a source inside the glass that total internal reflection keeps in.
 //!
 //! Run with `cargo run -p refraction-kernel --example ray_tracer`.
+#![expect(clippy::print_stdout, reason = "an example prints what it computed")]
 
 use glam::Vec3;
 
@@ -68,26 +69,23 @@ fn step(label: &str, ball: &Ball, p: Vec3, d: Vec3, inside: bool) -> Option<Vec3
     );
     println!("  d  = {d:.4}, θi = {:.2}°", theta_i.to_degrees());
     let t = ball.refract(p, d, inside);
-    match t {
-        Some(t) => {
-            let theta_t = t.dot(n).abs().acos();
-            println!(
-                "  T  = {t:.4}, θt = {:.2}°, |T| = {:.7}",
-                theta_t.to_degrees(),
-                t.length()
-            );
-            println!(
-                "  Snell: n_from·sinθi = {:.6}, n_to·sinθt = {:.6}",
-                n_from * theta_i.sin(),
-                n_to * theta_t.sin()
-            );
-        }
-        None => {
-            let reflected = d - n * (2.0 * d.dot(n));
-            let critical = (n_to / n_from).asin().to_degrees();
-            println!("  total internal reflection: θi > θc = {critical:.2}°");
-            println!("  reflected = {reflected:.4}");
-        }
+    if let Some(t) = t {
+        let theta_t = t.dot(n).abs().acos();
+        println!(
+            "  T  = {t:.4}, θt = {:.2}°, |T| = {:.7}",
+            theta_t.to_degrees(),
+            t.length()
+        );
+        println!(
+            "  Snell: n_from·sinθi = {:.6}, n_to·sinθt = {:.6}",
+            n_from * theta_i.sin(),
+            n_to * theta_t.sin()
+        );
+    } else {
+        let reflected = d - n * (2.0 * d.dot(n));
+        let critical = (n_to / n_from).asin().to_degrees();
+        println!("  total internal reflection: θi > θc = {critical:.2}°");
+        println!("  reflected = {reflected:.4}");
     }
     t
 }

@@ -1,7 +1,7 @@
 //! Residuals that say whether a direction is a physical refracted ray, usable by tests, by the
 //! explorer's candidates table and by a student checking their own T.
 
-use super::real::{Real, Vector3};
+use super::real::{Real as _, Vector3};
 
 /// How far a candidate direction is from satisfying each law of refraction.
 ///
@@ -12,7 +12,7 @@ use super::real::{Real, Vector3};
 pub struct Checks {
     /// | |T| − 1 |.
     pub unit_length: f64,
-    /// Signed Snell: |T_tan − μ·d_tan|, the tangential part of T against μ times that of the
+    /// Signed Snell: |`T_tan` − `μ·d_tan`|, the tangential part of T against μ times that of the
     /// travel direction d. Fails for every rejected candidate.
     pub snell: f64,
     /// Squared Snell (source eq. 10): |(1 − cos²θi)·μ² − (1 − (T·n)²)|. All four candidates pass.
@@ -21,13 +21,13 @@ pub struct Checks {
     pub coplanarity: f64,
     /// T·n for the normal n that faces the ray: ≤ 0 when T crosses into the new medium.
     pub normal_part: f64,
-    /// T_tan·d_tan: ≥ 0 when T bends the same way the ray was going along the surface.
+    /// `T_tan·d_tan`: ≥ 0 when T bends the same way the ray was going along the surface.
     pub tangential_part: f64,
 }
 
 impl Checks {
     /// The residuals of `t` as the refraction of the unit travel direction `d` at the unit
-    /// normal `n` facing it (d·n ≤ 0) with μ = μ_i/μ_t: how a ray tracer's author checks their
+    /// normal `n` facing it (d·n ≤ 0) with μ = `μ_i/μ_t`: how a ray tracer's author checks their
     /// own T.
     ///
     /// # Examples
@@ -164,7 +164,7 @@ impl Checks {
 /// κ = 1 + μ + (μ²·sinθi·cosθi + μ·sinθi)/max(cosθt, ε): how much a relative perturbation of
 /// the inputs of size ε can turn T. The default kernel's angular error is at most 32·ε·κ.
 ///
-/// `cos_i` and `cos_t` are the cosines of the incidence and refraction angles (cos_t ≥ 0, and 0
+/// `cos_i` and `cos_t` are the cosines of the incidence and refraction angles (`cos_t` ≥ 0, and 0
 /// at or beyond the critical angle); `epsilon` is the working precision's machine epsilon.
 ///
 /// # Examples

@@ -4,27 +4,27 @@
 //!
 //! # The forms and why
 //!
-//! With μ = μ_i/μ_t, a = μ·cosθi and c = cosθt (both ≥ 0), the textbook amplitudes divided
-//! through by μ_t are r_s = (a − c)/(a + c) and r_p = (cosθi − μ·cosθt)/(cosθi + μ·cosθt), and
+//! With μ = `μ_i/μ_t`, a = μ·cosθi and c = cosθt (both ≥ 0), the textbook amplitudes divided
+//! through by `μ_t` are `r_s` = (a − c)/(a + c) and `r_p` = (cosθi − μ·cosθt)/(cosθi + μ·cosθt), and
 //! the power fractions are R = r², T = 1 − R. Taken literally these lose digits in three
-//! places: r_s's numerator cancels when μ is near 1, r_p's at Brewster's angle, and T = 1 − R
+//! places: `r_s`'s numerator cancels when μ is near 1, `r_p`'s at Brewster's angle, and T = 1 − R
 //! keeps none of its relative accuracy where T is small (near grazing incidence and near the
 //! critical angle, exactly where a class looks at how the transmitted light fades). Instead:
 //!
-//! - **R_s.** The numerator is rewritten with its conjugate, as the kernel's weight b is:
+//! - **`R_s`.** The numerator is rewritten with its conjugate, as the kernel's weight b is:
 //!   a − c = (a² − c²)/(a + c) and, since c² = cos²θt = μ²cos²θi + 1 − μ²,
-//!   a² − c² = −(1 − μ)(1 + μ). So r_s = −(1 − μ)(1 + μ)/(a + c)²: a product and quotient of
+//!   a² − c² = −(1 − μ)(1 + μ). So `r_s` = −(1 − μ)(1 + μ)/(a + c)²: a product and quotient of
 //!   terms that do not cancel (1 − μ is exact for ½ ≤ μ ≤ 2 by Sterbenz's lemma), zero exactly
 //!   at μ = 1.
-//! - **R_p.** Fresnel's sine and tangent laws, r_s = −sin(θi − θt)/sin(θi + θt) and
-//!   r_p = tan(θi − θt)/tan(θi + θt), give r_p = −r_s·q with
+//! - **`R_p`.** Fresnel's sine and tangent laws, `r_s` = −sin(θi − θt)/sin(θi + θt) and
+//!   `r_p` = tan(θi − θt)/tan(θi + θt), give `r_p` = −`r_s·q` with
 //!   q = cos(θi + θt)/cos(θi − θt) = (cosθi·cosθt − μ·sin²θi)/(cosθi·cosθt + μ·sin²θi), using
-//!   sinθt = μ·sinθi. The zero of r_p at Brewster's angle (θi + θt = 90°) is the zero of q's
+//!   sinθt = μ·sinθi. The zero of `r_p` at Brewster's angle (θi + θt = 90°) is the zero of q's
 //!   numerator alone, where it belongs; the denominator cos(θi − θt) is at least min(μ, 1/μ).
 //!   μ·sin²θi comes from the cosine of the larger angle, which keeps the digits:
 //!   μ·(1 − cosθi)(1 + cosθi) for μ ≤ 1, (1 − cosθt)(1 + cosθt)/μ for μ > 1 (for large μ near
 //!   normal incidence cosθi rounds to 1 and only cosθt still knows the angle).
-//! - **T.** T_s = 4ac/(a + c)² and T_p = 4·cosθi·μcosθt/(cosθi + μcosθt)²: products and sums
+//! - **T.** `T_s` = 4ac/(a + c)² and `T_p` = 4·cosθi·μcosθt/(cosθi + μcosθt)²: products and sums
 //!   of non-negative numbers, accurate relative to themselves however small.
 //! - **R + T = 1.** Of each pair the smaller share is kept as computed and the larger is
 //!   1 − smaller: subtracting at most ½ from 1 costs the larger at most ½ε more, and the two
@@ -32,9 +32,9 @@
 //!
 //! # Error bound
 //!
-//! Counting roundings (u = ε/2 each): r_s carries at most 9u relative error, so R_s (kept only
-//! when ≤ ½) is within 5ε; T_s and T_p likewise within 4ε; q is within about 11u absolute, which
-//! puts R_p within 16ε in the worst case. These assume cosines that satisfy Snell's law
+//! Counting roundings (u = ε/2 each): `r_s` carries at most 9u relative error, so `R_s` (kept only
+//! when ≤ ½) is within 5ε; `T_s` and `T_p` likewise within 4ε; q is within about 11u absolute, which
+//! puts `R_p` within 16ε in the worst case. These assume cosines that satisfy Snell's law
 //! exactly. The kernel's satisfy it to a few ε (near normal incidence cosθt comes from the
 //! tangential part of W, not from cosθi), and the forms, trusting μ, read that slack
 //! differently from the textbook, which trusts cosθt: up to about 2ε more. The
@@ -53,16 +53,16 @@ use super::refraction::Refraction;
 /// The fractions of the incident power reflected and transmitted at one interface, for light
 /// polarised perpendicular (s) and parallel (p) to the plane of incidence. Each in [0, 1];
 /// `rs + ts` and `rp + tp` are 1 within ½ε.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Fresnel<S> {
-    /// Reflectance R_s.
+    /// Reflectance `R_s`.
     pub rs: S,
-    /// Reflectance R_p.
+    /// Reflectance `R_p`.
     pub rp: S,
-    /// Transmittance T_s.
+    /// Transmittance `T_s`.
     pub ts: S,
-    /// Transmittance T_p.
+    /// Transmittance `T_p`.
     pub tp: S,
 }
 
@@ -109,7 +109,7 @@ impl<S: Real> Fresnel<S> {
         tp: S::ONE,
     };
 
-    /// The Fresnel fractions for μ = μ_i/μ_t (> 0, finite) and the kernel's cosθi, cosθt of a
+    /// The Fresnel fractions for μ = `μ_i/μ_t` (> 0, finite) and the kernel's cosθi, cosθt of a
     /// transmitted ray (both in [0, 1], as in [`crate::Facing`] and [`crate::Transmission`]),
     /// with the error bound of the module docs. μ = 1 reflects nothing. Never NaN for inputs in
     /// range, whatever the cosines.
@@ -175,7 +175,7 @@ impl<S: Real> Fresnel<S> {
         })
     }
 
-    /// The reflectance of unpolarised light: (R_s + R_p)/2.
+    /// The reflectance of unpolarised light: (`R_s` + `R_p)/2`.
     ///
     /// # Examples
     ///
@@ -189,7 +189,7 @@ impl<S: Real> Fresnel<S> {
         (self.rs + self.rp) * S::HALF
     }
 
-    /// The transmittance of unpolarised light: (T_s + T_p)/2.
+    /// The transmittance of unpolarised light: (`T_s` + `T_p)/2`.
     ///
     /// # Examples
     ///

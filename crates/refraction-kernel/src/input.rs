@@ -96,9 +96,9 @@ pub struct Incidence<S: Real> {
     pub w: S::Vec3,
     /// The surface normal N (any non-zero length, either side of the surface).
     pub n: S::Vec3,
-    /// μ_i: the index of refraction of the medium the ray travels in (finite, > 0).
+    /// `μ_i`: the index of refraction of the medium the ray travels in (finite, > 0).
     pub mu_i: S,
-    /// μ_t: the index of refraction of the medium the ray enters (finite, > 0).
+    /// `μ_t`: the index of refraction of the medium the ray enters (finite, > 0).
     pub mu_t: S,
     /// Which way W points.
     pub convention: Convention,
@@ -125,9 +125,9 @@ impl VectorName {
 /// The two indices of an [`Incidence`], for naming them in messages.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum IndexName {
-    /// μ_i, the medium the ray travels in.
+    /// `μ_i`, the medium the ray travels in.
     MuI,
-    /// μ_t, the medium the ray enters.
+    /// `μ_t`, the medium the ray enters.
     MuT,
 }
 
@@ -161,9 +161,9 @@ pub enum InputError {
         /// Its value, widened to f64.
         value: f64,
     },
-    /// μ = μ_i/μ_t is so extreme that μ² would leave the working precision's range.
+    /// μ = `μ_i/μ_t` is so extreme that μ² would leave the working precision's range.
     RatioOutOfRange {
-        /// μ_i/μ_t computed in f64.
+        /// `μ_i/μ_t` computed in f64.
         mu: f64,
         /// The precision's name.
         precision: &'static str,
@@ -208,7 +208,7 @@ impl fmt::Display for InputError {
     }
 }
 
-impl std::error::Error for InputError {}
+impl core::error::Error for InputError {}
 
 /// Something about valid input that is probably a bug in the caller's code.
 #[derive(Clone, Debug, PartialEq)]
@@ -246,7 +246,7 @@ pub const UNIT_LENGTH_TOLERANCE: f64 = 1e-6;
 
 /// A vector checked and brought to unit length.
 ///
-/// Vectors whose computed length is within 2ε of 1 are kept bit for bit, so that μ_i == μ_t
+/// Vectors whose computed length is within 2ε of 1 are kept bit for bit, so that `μ_i` == `μ_t`
 /// returns W exactly; others are scaled by their largest component first (so that lengths near
 /// 1e-30 or 1e30 neither underflow nor overflow) and then divided by their length.
 pub(crate) fn normalise<S: Real>(
@@ -313,7 +313,7 @@ pub(crate) fn is_unit<V: Vector3>(v: V) -> bool {
     (v.length().to_f64() - 1.0).abs() <= UNIT_LENGTH_TOLERANCE
 }
 
-/// The index ratio μ = μ_i/μ_t, refused unless it is an accepted ratio ([`is_accepted_ratio`])
+/// The index ratio μ = `μ_i/μ_t`, refused unless it is an accepted ratio ([`is_accepted_ratio`])
 /// as computed in f64, and finite and non-zero as computed in `S`.
 pub(crate) fn index_ratio<S: Real>(mu_i: S, mu_t: S) -> Result<S, InputError> {
     let limit = ratio_limit::<S>();

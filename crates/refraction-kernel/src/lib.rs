@@ -14,14 +14,14 @@
 //!
 //! The same call takes `glam::DVec3` and an `f64` μ. The normal is turned to face the ray, so
 //! a sphere's outward normal serves on the way in and on the way out; μ is not inverted with
-//! it (unlike pbrt's `eta`): it is always n_from/n_to. T is unit length, never NaN, exactly `d`
+//! it (unlike pbrt's `eta`): it is always `n_from/n_to`. T is unit length, never NaN, exactly `d`
 //! when μ = 1, and within 32·ε·κ of the exact ray ([`condition_number`] κ), also where the
 //! textbook formula loses its digits (near-equal indices at grazing incidence, large μ near
 //! normal incidence). Unit vectors and ε² ≤ μ ≤ 1/ε² are preconditions, asserted in debug
 //! builds. Around it:
 //!
 //! - [`transmit_pbrt`]: pbrt-v4's `Refract(wi, n, eta, &etap, &wt)` convention (wi pointing
-//!   away from the surface, eta = n_inside/n_outside, flipped with the normal), returning the
+//!   away from the surface, eta = `n_inside/n_outside`, flipped with the normal), returning the
 //!   relative index `etap` with T.
 //! - [`refract_facing`]: the same T for a normal that faces the ray, with cosθi, cosθt and the
 //!   discriminant, for [`Fresnel::new`].

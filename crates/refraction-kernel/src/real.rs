@@ -6,8 +6,8 @@
 //! the error bounds are stated, and tested, for IEEE `f32` and `f64` only, and a method can be
 //! added without breaking anyone's impl.
 
-use std::fmt::{Debug, Display};
-use std::ops::{Add, Div, Mul, Neg, Sub};
+use core::fmt::{Debug, Display};
+use core::ops::{Add, Div, Mul, Neg, Sub};
 
 /// Seals [`Real`] and [`Vector3`]: `Sealed` is public, so that the two traits may name it, but
 /// in a private module, so that no other crate can implement it (nor them).
@@ -285,7 +285,7 @@ pub trait Vector3:
 // Every method is `#[inline]`: the kernel's generic code is instantiated in the crates that
 // call it, and without the attribute these one-line methods could not be inlined there.
 macro_rules! impl_real {
-    ($s:ty, $v:ty, $name:literal) => {
+    ($s:ty, $v:ty, $name:literal, $from:path) => {
         impl sealed::Sealed for $s {}
         impl sealed::Sealed for $v {}
 
@@ -322,12 +322,10 @@ macro_rules! impl_real {
                 <$s>::mul_add(self, a, b)
             }
             #[inline]
-            #[allow(clippy::cast_possible_truncation, trivial_numeric_casts)]
             fn from_f64(x: f64) -> Self {
-                x as $s
+                $from(x)
             }
             #[inline]
-            #[allow(trivial_numeric_casts)]
             fn to_f64(self) -> f64 {
                 f64::from(self)
             }
@@ -375,8 +373,22 @@ macro_rules! impl_real {
     };
 }
 
-impl_real!(f32, glam::Vec3, "f32");
-impl_real!(f64, glam::DVec3, "f64");
+/// f64 to f32 rounds to nearest, as a cast does (values past f32's range become infinite).
+#[expect(
+    clippy::cast_possible_truncation,
+    reason = "rounding to f32 is the conversion asked for"
+)]
+const fn round_to_f32(x: f64) -> f32 {
+    x as f32
+}
+
+/// f64 to f64: no conversion.
+const fn same_f64(x: f64) -> f64 {
+    x
+}
+
+impl_real!(f32, glam::Vec3, "f32", round_to_f32);
+impl_real!(f64, glam::DVec3, "f64", same_f64);
 
 /// `single(values)` when `S` is `f32`, `double(values)` when it is `f64`: for the variants that
 /// call what [`Real`] and [`Vector3`] leave out because no one else needs it (the trigonometric
@@ -393,7 +405,7 @@ pub(crate) fn per_precision<S: Real, const N: usize, const M: usize>(
     let wide = values.map(Real::to_f64);
     if S::EPSILON.to_f64() == f64::from(f32::EPSILON) {
         // Exact: each value is an f32.
-        #[allow(clippy::cast_possible_truncation)]
+        #[expect(clippy::cast_possible_truncation)]
         let narrow = wide.map(|x| x as f32);
         single(narrow).map(|y| S::from_f64(f64::from(y)))
     } else {

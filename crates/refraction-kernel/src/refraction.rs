@@ -7,7 +7,7 @@ use super::input::{
     Convention, Incidence, IndexName, InputError, VectorName, Warning, check_index, index_ratio,
     normalise,
 };
-use super::real::{Real, Vector3};
+use super::real::{Real, Vector3 as _};
 use super::stable::refract_facing;
 
 /// The transmitted ray and the source's weights for it: T = a·W + b·N.
@@ -38,7 +38,7 @@ pub struct Refraction<S: Real> {
     pub travel: S::Vec3,
     /// The unit normal that faces the incoming ray (d·n ≤ 0): N̂ or −N̂.
     pub facing_normal: S::Vec3,
-    /// μ = μ_i/μ_t (exactly 1 when μ_i == μ_t).
+    /// μ = `μ_i/μ_t` (exactly 1 when `μ_i` == `μ_t`).
     pub mu: S,
     /// Which way W points.
     pub convention: Convention,
@@ -188,7 +188,7 @@ impl<S: Real> Refraction<S> {
 ///
 /// W and N may have any non-zero finite length (a length more than 1e-6 away from 1 is a
 /// [`Warning`]) and N may face either way: the kernel uses the side that faces the incoming ray
-/// and says so. μ_i == μ_t returns T = the travel direction exactly. The angular error of T is
+/// and says so. `μ_i` == `μ_t` returns T = the travel direction exactly. The angular error of T is
 /// at most 32·ε·κ ([`Refraction::condition_number`]); no output is NaN.
 ///
 /// # Errors

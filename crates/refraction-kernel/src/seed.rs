@@ -6,7 +6,7 @@
 //! cancels at grazing incidence between near-equal indices and near normal incidence at large μ.
 
 use super::input::Convention;
-use super::real::{Real, Vector3};
+use super::real::{Real as _, Vector3};
 
 /// The source's (a, b) for unit `w` and `n` in the given convention, or `None` when its
 /// discriminant μ²wn² − μ² + 1 is negative (total internal reflection).

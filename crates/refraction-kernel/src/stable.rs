@@ -2,7 +2,7 @@
 //! b root rearranged so that nothing cancels where the problem itself is well-conditioned.
 //!
 //! Work in the travel form: `d` is the unit direction of travel, `n` the unit normal that faces
-//! it (d·n ≤ 0), cosθi = −d·n, μ = μ_i/μ_t. The source's discriminant k = μ²wn² − μ² + 1 and the
+//! it (d·n ≤ 0), cosθi = −d·n, μ = `μ_i/μ_t`. The source's discriminant k = μ²wn² − μ² + 1 and the
 //! GLSL form 1 − μ²(1 − cos²θi) lose accuracy in two places:
 //! - equal or near-equal indices at grazing incidence: 1 − cos²θi is fine, but μ² − 1 and
 //!   μ²cos²θi cancel. Here k = (μ·cosθi)² + (1 − μ)(1 + μ), where 1 − μ is exact (Sterbenz);
@@ -95,7 +95,7 @@ pub(crate) fn normal_weight<S: Real>(mu: S, cos_i: S, cos_t: S, one_minus_mu2: S
 }
 
 /// Refracts the unit travel direction `d` at the unit normal `n` that faces it (d·n ≤ 0), with
-/// μ = μ_i/μ_t, and returns the cosines and the discriminant with T: what a ray tracer needs
+/// μ = `μ_i/μ_t`, and returns the cosines and the discriminant with T: what a ray tracer needs
 /// for [`crate::Fresnel::new`] as well.
 ///
 /// The arithmetic and the error bound are [`crate::transmit`]'s, and so is T, bit for bit.

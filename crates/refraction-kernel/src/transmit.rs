@@ -1,5 +1,5 @@
 //! The calls a ray tracer makes: [`transmit`] in this project's terms (the direction of travel,
-//! μ = n_from/n_to) and [`transmit_pbrt`] in pbrt-v4's (wi pointing away from the surface, eta a
+//! μ = `n_from/n_to`) and [`transmit_pbrt`] in pbrt-v4's (wi pointing away from the surface, eta a
 //! property of the surface, the relative index `etap` returned). Both run the default kernel's
 //! fast path (the arithmetic and error bound of [`crate::refract_facing`]) and check their
 //! preconditions in debug builds only, because a tracer calls them once per ray.
@@ -15,7 +15,7 @@ use super::stable;
 /// - `n`: the unit surface normal, on **either side** of the surface: the kernel turns it to
 ///   face the ray (−n when d·n > 0), so a sphere's outward normal serves for entering and for
 ///   leaving alike.
-/// - `mu`: μ = n_from/n_to, the index of the medium the ray travels in over the index of the
+/// - `mu`: μ = `n_from/n_to`, the index of the medium the ray travels in over the index of the
 ///   one it enters. Turning the normal does **not** change μ: on leaving glass (1.5) for air,
 ///   μ = 1.5 whichever way `n` points.
 ///
@@ -26,7 +26,7 @@ use super::stable;
 ///
 /// pbrt-v4's `Refract(wi, n, eta, &etap, &wt)` decides the side for you: when cosθi = n·wi < 0
 /// it flips `n` **and** inverts `eta`, because its `eta` belongs to the surface
-/// (n_inside/n_outside for an outward `n`) and its `wi` points away from the surface. This
+/// (`n_inside/n_outside` for an outward `n`) and its `wi` points away from the surface. This
 /// function turns only `n`: `mu` belongs to the crossing and is the caller's to choose on each
 /// side, and `d` points along the ray. pbrt also returns `false` at exactly the critical angle
 /// (sin²θt = 1), where this returns the T that lies in the surface. [`transmit_pbrt`] takes
@@ -82,7 +82,7 @@ pub fn transmit<V: Vector3>(d: V, n: V, mu: V::Scalar) -> Option<V> {
 pub struct Transmitted<S: Real> {
     /// The transmitted direction of travel (pbrt's `*wt`), unit length (see [`transmit`]).
     pub t: S::Vec3,
-    /// The relative index of refraction along the ray, n_to/n_from (pbrt's `*etap`): `eta`
+    /// The relative index of refraction along the ray, `n_to/n_from` (pbrt's `*etap`): `eta`
     /// when `wi` is on the side `n` points to, 1/`eta` when pbrt flips. pbrt divides the
     /// radiance it carries across by etap².
     pub etap: S,
@@ -96,13 +96,13 @@ pub struct Transmitted<S: Real> {
 ///   away from the surface).
 /// - `n`: the unit surface normal, on either side.
 /// - `eta`: the index on the side `n` points away from over the index on the side it points
-///   to: a glass surface with an outward normal has `eta` = n_glass/n_air = 1.5 however the ray
+///   to: a glass surface with an outward normal has `eta` = `n_glass/n_air` = 1.5 however the ray
 ///   crosses it.
 ///
 /// As pbrt-v4 does (commit 5f7a606, `src/pbrt/util/scattering.h`, `Refract`): cosθi = n·wi;
 /// when cosθi < 0 the ray comes from the side `n` points away from, and pbrt flips `n` to −n and
-/// inverts `eta` to 1/`eta`; the returned `etap` is `eta` after that flip, n_to/n_from. The
-/// ray's μ = n_from/n_to of [`transmit`] is then 1/`etap`, computed here without a second
+/// inverts `eta` to 1/`eta`; the returned `etap` is `eta` after that flip, `n_to/n_from`. The
+/// ray's μ = `n_from/n_to` of [`transmit`] is then 1/`etap`, computed here without a second
 /// rounding (μ = `eta` itself when flipped).
 ///
 /// # Returns

@@ -2,7 +2,7 @@
 //! by θt toward the surface. Kept as a variant ([`crate::Variant::Trig`]) to show what the
 //! trig-free form buys; not used by the explorer.
 
-use super::real::{Real, Vector3, per_precision};
+use super::real::{Real, Vector3 as _, per_precision};
 use super::stable::facing;
 
 /// `single(x)` or `double(x)`, whichever is the precision of `S`: [`Real`] leaves the angle

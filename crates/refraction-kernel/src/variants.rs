@@ -146,7 +146,7 @@ fn each_ray<S: Real>(
     transmit: impl Fn(S::Vec3, S::Vec3, S) -> Option<S::Vec3>,
 ) {
     let zero = S::Vec3::new(S::ZERO, S::ZERO, S::ZERO);
-    for_each_ray(rays, out, std::hint::black_box, |d, n, mu| {
+    for_each_ray(rays, out, core::hint::black_box, |d, n, mu| {
         let t = transmit(d, n, mu);
         (t.unwrap_or(zero), t.is_none())
     });

@@ -6,7 +6,7 @@ use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use refraction_kernel::api::{Api, mitsuba, pbrt, rtiow};
-use refraction_kernel::{Real, Vector3, condition_number, refract_facing, transmit_pbrt};
+use refraction_kernel::{Real, Vector3 as _, condition_number, refract_facing, transmit_pbrt};
 
 fn unit_vector() -> impl Strategy<Value = DVec3> {
     prop::array::uniform3(-1.0..1.0_f64)

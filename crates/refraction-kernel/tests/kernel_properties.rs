@@ -3,7 +3,7 @@
 use glam::{DQuat, DVec3};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
-use refraction_kernel::{Convention, Fresnel, Incidence, Real, Refraction, Vector3, refract};
+use refraction_kernel::{Convention, Fresnel, Incidence, Real, Refraction, Vector3 as _, refract};
 
 fn unit_vector() -> impl Strategy<Value = DVec3> {
     prop::array::uniform3(-1.0..1.0_f64)
@@ -133,7 +133,7 @@ fn rotation_equivariant<S: Real>(
 }
 
 /// Energy is conserved, every share is in [0, 1], s light is reflected at least as much as p
-/// (|r_p| = |r_s|·|cos(θi + θt)/cos(θi − θt)|), and the light going back the way it came is
+/// (|`r_p`| = |`r_s|·|cos(θi` + θt)/cos(θi − θt)|), and the light going back the way it came is
 /// transmitted in the same share (reciprocity: T₁₂(θi) = T₂₁(θt)), checked away from grazing.
 fn fresnel_laws<S: Real>(w: DVec3, n: DVec3, mu_i: f64, mu_t: f64) -> Result<(), TestCaseError> {
     let forward = solve::<S>(w, n, mu_i, mu_t, Convention::AlongRay);

@@ -6,7 +6,7 @@
 use glam::DVec3;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
-use refraction_kernel::{Real, UNIT_LENGTH_TOLERANCE, Vector3, transmit, transmit_pbrt};
+use refraction_kernel::{Real, UNIT_LENGTH_TOLERANCE, Vector3 as _, transmit, transmit_pbrt};
 
 fn unit_vector() -> impl Strategy<Value = DVec3> {
     prop::array::uniform3(-1.0..1.0_f64)

@@ -3,16 +3,16 @@
 /// The angles of incidence at which something happens for a pair of media, in degrees.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpecialAngles {
-    /// Brewster's angle, tanθB = μ_t/μ_i, where p light is not reflected at all; `None` for
+    /// Brewster's angle, tanθB = `μ_t/μ_i`, where p light is not reflected at all; `None` for
     /// equal indices (no interface).
     pub brewster_deg: Option<f64>,
-    /// The critical angle, sinθc = μ_t/μ_i, beyond which all light is reflected; `None` unless
-    /// the ray goes into a medium of lower index (μ = μ_i/μ_t > 1).
+    /// The critical angle, sinθc = `μ_t/μ_i`, beyond which all light is reflected; `None` unless
+    /// the ray goes into a medium of lower index (μ = `μ_i/μ_t` > 1).
     pub critical_deg: Option<f64>,
 }
 
 impl SpecialAngles {
-    /// The angles for μ = μ_i/μ_t (finite, > 0), as the kernel holds it.
+    /// The angles for μ = `μ_i/μ_t` (finite, > 0), as the kernel holds it.
     ///
     /// Both come from `atan2`, which keeps its digits where `asin` would not (the critical
     /// angle near 90° when μ is near 1): θB = atan2(1, μ), θc = atan2(1, √((μ − 1)(μ + 1))).

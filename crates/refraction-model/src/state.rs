@@ -148,9 +148,9 @@ pub enum HandleId {
     W,
     /// The tip of N: rotates the surface.
     N,
-    /// μ_i's marker on the index scale.
+    /// `μ_i`'s marker on the index scale.
     MuI,
-    /// μ_t's marker on the index scale.
+    /// `μ_t`'s marker on the index scale.
     MuT,
 }
 
@@ -304,13 +304,13 @@ impl ExplorerState {
         self.n
     }
 
-    /// μ_i, the index of the medium the ray travels in.
+    /// `μ_i`, the index of the medium the ray travels in.
     #[must_use]
     pub fn mu_i(&self) -> f64 {
         self.mu_i
     }
 
-    /// μ_t, the index of the medium the ray enters.
+    /// `μ_t`, the index of the medium the ray enters.
     #[must_use]
     pub fn mu_t(&self) -> f64 {
         self.mu_t
@@ -358,7 +358,7 @@ impl ExplorerState {
         Ok(())
     }
 
-    /// Sets μ_i.
+    /// Sets `μ_i`.
     ///
     /// # Errors
     /// The kernel's message for an index that is not a finite number > 0; the state is unchanged.
@@ -366,7 +366,7 @@ impl ExplorerState {
         self.update(self.w, self.n, mu_i, self.mu_t, self.convention)
     }
 
-    /// Sets μ_t.
+    /// Sets `μ_t`.
     ///
     /// # Errors
     /// As [`ExplorerState::set_mu_i`].
@@ -387,7 +387,7 @@ impl ExplorerState {
         }
     }
 
-    /// The index a μ handle stands for (μ_t for the others).
+    /// The index a μ handle stands for (`μ_t` for the others).
     #[must_use]
     pub fn index(&self, handle: HandleId) -> f64 {
         if handle == HandleId::MuI {
@@ -449,7 +449,7 @@ impl ExplorerState {
         self.point(handle, direction);
     }
 
-    /// The critical angle θc in radians (sin θc = μ_t/μ_i), when there is one (μ_i > μ_t).
+    /// The critical angle θc in radians (sin θc = `μ_t/μ_i`), when there is one (`μ_i` > `μ_t`).
     #[must_use]
     pub fn critical_angle(&self) -> Option<f64> {
         (self.mu_i > self.mu_t).then(|| (self.mu_t / self.mu_i).asin())

@@ -135,7 +135,7 @@ pub fn gif(
 /// written when `progress` cancels.
 ///
 /// # Errors
-/// As [`gif`], or the file cannot be written (the message names it).
+/// As [`gif()`], or the file cannot be written (the message names it).
 pub fn export_gif(
     start: &ExplorerState,
     overlay: &Overlay,

@@ -1,6 +1,6 @@
 //! The diagram off screen: a PNG of [`Diagram::primitives`] drawn with tiny-skia, labels in
 //! egui's own font ([`text`]); the same primitives as SVG ([`svg`]); animations as GIF
-//! ([`animation`]); every file written atomically ([`atomic`]).
+//! ([`animation`]); every file written atomically ([`refraction_files::write_atomically`]).
 
 pub mod animation;
 pub mod format;

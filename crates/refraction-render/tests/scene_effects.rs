@@ -38,8 +38,8 @@ fn computes_only_what_is_asked(name: &str, effects: &Effects, trace: &Trace) {
             "{name}"
         );
     }
-    assert_eq!(c.segments, trace.segments.len());
-    assert_eq!(c.paths, trace.paths.len());
+    assert_eq!(c.segments, trace.segments.len(), "{name}");
+    assert_eq!(c.paths, trace.paths.len(), "{name}");
     assert!(!c.truncated, "{name}");
 }
 
@@ -150,7 +150,7 @@ fn intensities_fall_by_fresnel_and_beer_lambert() {
     };
     let f = trace.hits[0].fresnel.unwrap();
     assert_eq!(air_in.intensity, Some(1.0));
-    let after_entry = (f.ts + f.tp) / 2.0;
+    let after_entry = f64::midpoint(f.ts, f.tp);
     assert!((glass.intensity.unwrap() - after_entry).abs() < 1e-15);
     let absorption = slab.media()[glass.medium].absorption;
     let kept = (-absorption * glass.from.distance(glass.to)).exp();

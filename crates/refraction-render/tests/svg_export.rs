@@ -11,6 +11,10 @@
 //! ([`MAX_DIFFERENT`], [`MAX_MEAN`]) sit two to three times above that, so that a change of
 //! antialiasing does not fail the test while a missing label, a wrong colour or a shifted shape
 //! (thousands of pixels, a mean of several levels) does.
+#![expect(
+    clippy::unwrap_used,
+    reason = "test helpers: a failed unwrap is a failed test, with its message"
+)]
 
 use glam::Vec2;
 use resvg::tiny_skia::Pixmap;
@@ -55,7 +59,11 @@ fn texts(group: &usvg::Group, out: &mut Vec<String>) {
 
 /// The share of visibly different pixels and the mean channel difference.
 fn difference(a: &Pixmap, b: &Pixmap) -> (f64, f64) {
-    assert_eq!((a.width(), a.height()), (b.width(), b.height()));
+    assert_eq!(
+        (a.width(), a.height()),
+        (b.width(), b.height()),
+        "the pictures have one size"
+    );
     let (mut different, mut total) = (0_usize, 0_u64);
     for (p, q) in a.pixels().iter().zip(b.pixels()) {
         let d = [
@@ -87,6 +95,7 @@ fn rasterise(tree: &usvg::Tree) -> Pixmap {
 }
 
 /// Checks the SVG against the PNG of the same drawing; returns the difference figures.
+#[expect(clippy::print_stdout, reason = "the figures, for --nocapture")]
 fn compare(what: &str, document: &str, png: &Pixmap, labels: &[String]) -> (f64, f64) {
     let tree = parse(document);
     let size = tree.size();

@@ -25,13 +25,13 @@ fn trace(c: &mut Criterion) {
         let name = format!("{}/{}_rays", info.name, scene.source().rays);
         let mut trace = scene.trace();
         group.bench_function(format!("{name}/as_file"), |b| {
-            b.iter(|| scene.retrace(std::hint::black_box(&mut trace)));
+            b.iter(|| scene.retrace(core::hint::black_box(&mut trace)));
         });
         group.bench_function(format!("{name}/every_effect"), |b| {
-            b.iter(|| everything.retrace(std::hint::black_box(&mut trace)));
+            b.iter(|| everything.retrace(core::hint::black_box(&mut trace)));
         });
         group.bench_function(format!("{name}/as_file_fresh"), |b| {
-            b.iter(|| std::hint::black_box(scene.trace()));
+            b.iter(|| core::hint::black_box(scene.trace()));
         });
     }
     group.finish();

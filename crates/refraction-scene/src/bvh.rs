@@ -102,7 +102,7 @@ impl Tree {
             .iter()
             .map(|i| i.bounds)
             .reduce(Bounds::union)
-            .unwrap_or(Bounds::point(DVec2::ZERO));
+            .unwrap_or_else(|| Bounds::point(DVec2::ZERO));
         let at = self.nodes.len();
         self.nodes.push(Node {
             bounds,
@@ -318,7 +318,7 @@ impl<'a> Bvh<'a> {
         }
         // Discs and lenses are decided as they are found; polygons, whose test is a search of
         // its own, afterwards, topmost first, and only while they could still be on top.
-        let mut polygons = std::mem::take(&mut self.polygons);
+        let mut polygons = core::mem::take(&mut self.polygons);
         polygons.clear();
         let shapes = self.shapes;
         let enter = |_: &(Option<usize>, Vec<Item>), node: &Node| {
@@ -345,7 +345,7 @@ impl<'a> Bvh<'a> {
             },
         );
         let (mut top, mut polygons) = state;
-        polygons.sort_unstable_by_key(|item| std::cmp::Reverse(item.shape));
+        polygons.sort_unstable_by_key(|item| core::cmp::Reverse(item.shape));
         for &region in &polygons {
             if top > Some(region.shape) {
                 break;
@@ -360,7 +360,7 @@ impl<'a> Bvh<'a> {
         }
         self.polygons = polygons;
         top.and_then(|s| self.shapes[s].medium())
-            .unwrap_or(scene.background())
+            .unwrap_or_else(|| scene.background())
     }
 }
 
@@ -511,7 +511,7 @@ mod tests {
         prop_oneof![
             Just(DVec2::X),
             Just(-DVec2::Y),
-            (0.0_f64..std::f64::consts::TAU).prop_map(DVec2::from_angle),
+            (0.0_f64..core::f64::consts::TAU).prop_map(DVec2::from_angle),
             (point(), point()).prop_filter_map("distinct", |(a, b)| (b - a).try_normalize()),
         ]
     }
@@ -626,7 +626,7 @@ mod tests {
         assert_eq!(first_self_crossing(&spike), Ok(Some((0, 1))));
         let n = 20_000;
         let round: Vec<DVec2> = (0..n)
-            .map(|k| DVec2::from_angle(std::f64::consts::TAU * f64::from(k) / f64::from(n)))
+            .map(|k| DVec2::from_angle(core::f64::consts::TAU * f64::from(k) / f64::from(n)))
             .collect();
         assert_eq!(first_self_crossing(&round), Ok(None));
     }

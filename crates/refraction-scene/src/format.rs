@@ -2,8 +2,8 @@
 //! the file as written ([`spec`](super::spec)) into a [`Scene`]. Every error names the file,
 //! the line and column of the value at fault, and what was expected.
 
+use core::ops::Range;
 use std::collections::BTreeMap;
-use std::ops::Range;
 
 use glam::DVec2;
 use toml::Spanned;
@@ -71,7 +71,7 @@ impl Position {
 
 /// Why a scene could not be loaded.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("{file}{}: {message}", place(.position))]
+#[error("{file}{}: {message}", place(.position.as_ref()))]
 pub struct LoadError {
     /// The file's path, or the embedded scene's name.
     pub file: String,
@@ -82,7 +82,7 @@ pub struct LoadError {
 }
 
 /// A position as it follows the file's name in a message: `:line:column`, or nothing.
-fn place(position: &Option<Position>) -> String {
+fn place(position: Option<&Position>) -> String {
     position.map_or_else(String::new, |Position { line, column }| {
         format!(":{line}:{column}")
     })
@@ -713,10 +713,10 @@ impl Scene {
     /// Bytes that are not UTF-8 (at the line and column of the first bad byte), or any error
     /// of [`Self::from_toml`].
     pub fn from_bytes(bytes: &[u8], file: &str, name: &str) -> Result<Self, LoadError> {
-        let text = std::str::from_utf8(bytes).map_err(|e| {
+        let text = core::str::from_utf8(bytes).map_err(|e| {
             let good = &bytes[..e.valid_up_to()];
             // The prefix is valid UTF-8 by the definition of `valid_up_to`.
-            let good = std::str::from_utf8(good).unwrap_or_default();
+            let good = core::str::from_utf8(good).unwrap_or_default();
             LoadError {
                 file: file.to_owned(),
                 position: Some(Position::of(good, good.len())),

@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-/// The wavelength at which catalogues quote n_d (helium d line, 587.56 nm): the one wavelength
+/// The wavelength at which catalogues quote `n_d` (helium d line, 587.56 nm): the one wavelength
 /// traced when a scene does not ask for dispersion and its light is white.
 pub const REFERENCE_WAVELENGTH_NM: f64 = 587.56;
 
@@ -98,7 +98,7 @@ impl Medium {
 mod tests {
     use super::*;
 
-    /// Schott N-BK7 (Schott optical glass data sheet), n_d = 1.5168.
+    /// Schott N-BK7 (Schott optical glass data sheet), `n_d` = 1.5168.
     fn bk7() -> Dispersion {
         Dispersion::Sellmeier {
             b: vec![1.039_612_12, 0.231_792_344, 1.010_469_45],

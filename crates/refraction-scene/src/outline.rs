@@ -1,7 +1,7 @@
 //! What a renderer draws for a shape: its boundary as segments and circular arcs in world
 //! coordinates, and the same flattened to a polyline.
 
-use std::f64::consts::TAU;
+use core::f64::consts::TAU;
 
 use glam::DVec2;
 use serde::Serialize;

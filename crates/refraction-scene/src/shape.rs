@@ -173,13 +173,13 @@ fn edges(points: &[DVec2]) -> impl Iterator<Item = (DVec2, DVec2)> + '_ {
         .zip(points.iter().copied().cycle().skip(1))
 }
 
-fn nearer(best: Option<Crossing>, t: f64, normal: impl FnOnce() -> DVec2) -> Option<Crossing> {
+fn nearer(best: Option<Crossing>, t: f64, normal: impl FnOnce() -> DVec2) -> Crossing {
     match best {
-        Some(b) if b.t <= t => Some(b),
-        _ => Some(Crossing {
+        Some(b) if b.t <= t => b,
+        _ => Crossing {
             t,
             normal: normal(),
-        }),
+        },
     }
 }
 
@@ -210,7 +210,9 @@ fn lens_crossing(
             let p = origin + t * direction;
             if p.distance_squared(other) <= other_radius * other_radius * (1.0 + 1e-12) {
                 // Normalised: a hit point's rounding, over a small radius, would leave it off unit.
-                best = nearer(best, t, || ((p - center) / radius).normalize_or_zero());
+                best = Some(nearer(best, t, || {
+                    ((p - center) / radius).normalize_or_zero()
+                }));
             }
         }
     }
@@ -243,7 +245,7 @@ impl Shape {
     pub fn first_crossing(&self, origin: DVec2, direction: DVec2) -> Option<Crossing> {
         (0..self.piece_count()).fold(None, |best, piece| {
             self.piece_crossing(piece, origin, direction)
-                .map_or(best, |c| nearer(best, c.t, || c.normal))
+                .map_or(best, |c| Some(nearer(best, c.t, || c.normal)))
         })
     }
 

@@ -1,9 +1,9 @@
 //! The tracer: follows each source ray from interface to interface, one kernel call per hit
 //! between different indices, and computes only the effects the scene asks for.
 
+use core::ops::Range;
+use core::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::fmt;
-use std::ops::Range;
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use glam::{DVec2, DVec3};
 use serde::Serialize;

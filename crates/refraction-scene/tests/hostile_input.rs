@@ -1,6 +1,10 @@
 //! Scene files as a careless or hostile user writes them: extreme but accepted numbers trace to
 //! finite JSON, runaway traces stop at their budget and say so, and no bytes make the loader
 //! panic or hang.
+#![expect(
+    clippy::unwrap_used,
+    reason = "test helpers: a failed unwrap is a failed test, with its message"
+)]
 
 use std::path::Path;
 
@@ -53,7 +57,7 @@ fn traced(scene: &Scene, budget: Budget) -> Trace {
 }
 
 /// Why the trace of `scene` is not all finite numbers, if it is not: a `null` where a number
-/// belongs in its JSON (serde_json writes NaN and infinity as `null`), or a hit whose W or N is
+/// belongs in its JSON (`serde_json` writes NaN and infinity as `null`), or a hit whose W or N is
 /// not unit length.
 fn not_finite(scene: &Scene, budget: Budget) -> Option<String> {
     let trace = traced(scene, budget);
@@ -317,7 +321,7 @@ fn mutation() -> impl Strategy<Value = Mutation> {
 
 fn apply(text: &str, mutation: &Mutation) -> String {
     let lines: Vec<&str> = text.lines().collect();
-    let rejoin = |lines: Vec<&str>| lines.join("\n") + "\n";
+    let rejoin = |lines: Vec<&str>| format!("{}\n", lines.join("\n"));
     match mutation {
         Mutation::Number(at, value) => {
             let spans = numbers(text);

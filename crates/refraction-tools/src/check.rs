@@ -9,7 +9,7 @@ use crate::fields;
 use crate::solve::{Precision, Request};
 use crate::vector_text;
 use refraction_i18n::{decimal, t};
-use refraction_kernel::{Incidence, Real, Rejection, Vector3, refract};
+use refraction_kernel::{Incidence, Real, Rejection, Vector3 as _, refract};
 
 /// Largest angle (radians) between a student's T and a candidate for them to count as the same
 /// ray: logged numbers are often printed with only a few digits.
@@ -148,7 +148,8 @@ fn refracted<S: Real>(
         }
         None => (false, None, diagnose_unmatched::<S>(incidence, r, yours)),
     };
-    (ok, matches, text + unit_note.as_deref().unwrap_or(""))
+    let note = unit_note.unwrap_or_default();
+    (ok, matches, format!("{text}{note}"))
 }
 
 /// The verdict on a T within [`MATCH_ANGLE`] (`off` radians) of the candidate that breaks

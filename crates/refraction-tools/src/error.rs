@@ -6,9 +6,9 @@ use refraction_i18n::t;
 use refraction_kernel::InputError;
 
 /// A text that is not a JSON request object.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum JsonError {
-    /// Not JSON: serde_json's message, at a line (1 for a single line) and column.
+    /// Not JSON: `serde_json`'s message, at a line (1 for a single line) and column.
     #[error("{}", malformed(*line, *column, message))]
     Malformed {
         /// The line of the text, from 1.
@@ -135,7 +135,7 @@ pub enum VectorError {
     #[error("{}", t!("check-vector-within", error = error.to_string(), text = text))]
     Within {
         /// The component's problem.
-        error: Box<VectorError>,
+        error: Box<Self>,
         /// The vector's text.
         text: String,
     },

@@ -33,7 +33,7 @@ pub(crate) enum Field {
     /// its length.
     Array {
         /// The first items.
-        items: Vec<Field>,
+        items: Vec<Self>,
         /// How many items there were.
         len: usize,
     },
@@ -103,7 +103,7 @@ impl<'de> Visitor<'de> for Shallow {
             let more = if self.nested || len >= KEPT_ITEMS {
                 seq.next_element::<IgnoredAny>()?.is_some()
             } else {
-                seq.next_element_seed(Shallow { nested: true })?
+                seq.next_element_seed(Self { nested: true })?
                     .map(|item| items.push(item))
                     .is_some()
             };
@@ -163,7 +163,7 @@ pub(crate) struct Fields<X> {
 /// array, by position.
 struct Object<X>(Fields<X>);
 
-struct ObjectVisitor<X>(std::marker::PhantomData<X>);
+struct ObjectVisitor<X>(core::marker::PhantomData<X>);
 
 impl<'de, X: Deserialize<'de> + Default> Visitor<'de> for ObjectVisitor<X> {
     type Value = Object<X>;
@@ -213,7 +213,7 @@ fn not_an_object<E: de::Error>(kind: &str) -> E {
 
 impl<'de, X: Deserialize<'de> + Default> Deserialize<'de> for Object<X> {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        deserializer.deserialize_any(ObjectVisitor(std::marker::PhantomData))
+        deserializer.deserialize_any(ObjectVisitor(core::marker::PhantomData))
     }
 }
 

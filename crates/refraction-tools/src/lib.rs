@@ -89,7 +89,7 @@ struct Item {
     /// Its number, counting every input line from 1.
     number: usize,
     /// Where its bytes lie in the chunk's buffer, or why it has none (too long).
-    bytes: Result<std::ops::Range<usize>, String>,
+    bytes: Result<core::ops::Range<usize>, String>,
 }
 
 /// What a worker made of one line.
@@ -154,7 +154,7 @@ impl Chunk {
     fn work<W: Send>(&self, threads: usize, work: &(impl Fn(&str) -> W + Sync)) -> Vec<Outcome<W>> {
         let one = |item: &Item| match &item.bytes {
             Err(message) => Outcome::Bad(message.clone()),
-            Ok(range) => match std::str::from_utf8(&self.bytes[range.clone()]) {
+            Ok(range) => match core::str::from_utf8(&self.bytes[range.clone()]) {
                 Err(e) => Outcome::Bad(format!(
                     "the line is not valid UTF-8 (byte {})",
                     e.valid_up_to() + 1
@@ -186,11 +186,11 @@ impl Chunk {
 /// (`taskset` and container limits included).
 #[must_use]
 pub fn threads() -> usize {
-    std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
+    std::thread::available_parallelism().map_or(1, core::num::NonZeroUsize::get)
 }
 
 /// Writes an answer for every non-empty line of `input` to `output`, in input order. The lines
-/// are read in chunks (at most [`CHUNK_LINES`] lines or about [`CHUNK_BYTES`] bytes, and no
+/// are read in chunks (at most 4,096 lines or about 4 MiB, and no
 /// line over [`MAX_LINE_BYTES`] is kept), `work` runs on each line of a chunk on `threads`
 /// threads, then `finish` turns each result into the answer, in order, on this thread (it may
 /// keep a tally or other state). A line that `finish` rejects, that is not UTF-8 or that is
@@ -202,7 +202,7 @@ pub fn threads() -> usize {
 ///
 /// # Errors
 /// Reading `input` or writing `output` failed.
-pub fn answer_lines<W: Send, E: std::fmt::Display>(
+pub fn answer_lines<W: Send, E: core::fmt::Display>(
     input: impl Read,
     output: impl Write,
     threads: usize,
@@ -296,7 +296,10 @@ mod tests {
         let run = |threads: usize| {
             let mut out = Vec::new();
             let mut order = Vec::new();
-            let work = |line: &str| line.parse::<usize>().map_err(|_| format!("not {line}"));
+            let work = |line: &str| {
+                line.parse::<usize>()
+                    .map_err(|e| format!("not {line}: {e}"))
+            };
             let finish = |parsed: Result<usize, String>| {
                 let k = parsed?;
                 order.push(k);
@@ -320,7 +323,10 @@ mod tests {
         let blanks = (1..=3 * CHUNK_LINES).filter(|k| k % 7 == 0).count();
         assert_eq!(lines.len(), 3 * CHUNK_LINES - blanks);
         assert_eq!(lines[2]["line"], 3, "an error names its line");
-        assert_eq!(lines[2]["error"], "not \u{7f}bad");
+        assert_eq!(
+            lines[2]["error"],
+            "not \u{7f}bad: invalid digit found in string"
+        );
     }
 
     #[test]

@@ -107,7 +107,7 @@ impl Request {
     }
 
     /// The request in fields read from a line, checked in a fixed order (convention,
-    /// precision, w, n, mu_i, mu_t) so that a line with several problems always names the same
+    /// precision, w, n, `mu_i`, `mu_t`) so that a line with several problems always names the same
     /// one.
     pub(crate) fn from_fields<X>(fields: &Fields<X>) -> Result<Self, RequestError> {
         let convention = match optional_name(&fields.convention, "convention")? {
@@ -352,7 +352,7 @@ mod tests {
             w: [0.1, -1.0 / 3.0, 1e-300],
             n: [f64::MIN_POSITIVE, 1.0, -0.0],
             mu_i: 1.000_293,
-            mu_t: std::f64::consts::E,
+            mu_t: core::f64::consts::E,
             convention: Convention::TowardOrigin,
             precision: Precision::F32,
         };

@@ -29,7 +29,7 @@ pub fn parse(text: &str) -> Result<ExplorerState, RequestError> {
     .map_err(RequestError::from)
 }
 
-/// The largest state file [`load`] reads: 1 MiB (a state is one line of about 150 bytes).
+/// The largest state file [`open`] reads: 1 MiB (a state is one line of about 150 bytes).
 pub const MAX_STATE_FILE_BYTES: u64 = 1 << 20;
 
 /// Why a state file could not be opened: kept apart so that the window can say it in the
@@ -99,7 +99,7 @@ pub fn to_json(state: &ExplorerState) -> String {
 /// # Errors
 /// The file cannot be written (see [`refraction_files::write_atomically`]).
 pub fn save(state: &ExplorerState, path: &Path) -> std::io::Result<()> {
-    let text = to_json(state) + "\n";
+    let text = format!("{}\n", to_json(state));
     refraction_files::write_atomically(path, text.as_bytes())
 }
 
@@ -164,7 +164,7 @@ mod tests {
             w,
             glam::DVec3::Y,
             1.000_293,
-            std::f64::consts::E,
+            core::f64::consts::E,
             Convention::TowardOrigin,
         )
         .unwrap();

@@ -70,7 +70,7 @@ fn hexadecimal(word: &str) -> Option<f64> {
     let shift = exponent - 4 * i32::try_from(fraction.len()).ok()?;
     // The mantissa has at most 60 bits, so it is exact in f64 up to its last 7: fine for the
     // 53-bit mantissas %a prints; powi of 2 is exact.
-    #[allow(clippy::cast_precision_loss)]
+    #[expect(clippy::cast_precision_loss)]
     let value = digits as f64 * 2f64.powi(shift);
     Some(if negative { -value } else { value })
 }
@@ -206,7 +206,7 @@ pub fn parse_vector(text: &str) -> Result<Vector, VectorError> {
 const NOT_FINITE: &str = "not finite (NaN or infinite)";
 
 /// `x` with 6 significant digits and no trailing zeros, as C's `%g` prints it (`0.666667`,
-/// `1.5`, `1e+201` becomes `1e201`), for explanations; [`NOT_FINITE`] for NaN and ±∞.
+/// `1.5`, `1e+201` becomes `1e201`), for explanations; words for NaN and ±∞.
 #[must_use]
 pub fn short(x: f64) -> String {
     if x == 0.0 {
@@ -218,7 +218,7 @@ pub fn short(x: f64) -> String {
     let exponent = x.abs().log10().floor();
     if (-5.0..6.0).contains(&exponent) {
         // 0 ≤ 5 − exponent ≤ 10 here.
-        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+        #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
         let decimals = (5.0 - exponent) as usize;
         let text = format!("{x:.decimals$}");
         let text = if text.contains('.') {

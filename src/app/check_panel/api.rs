@@ -287,7 +287,7 @@ pub fn copy_buttons(ui: &mut Ui, judged: &Judged) -> Option<String> {
 }
 
 /// The texts of every API's fields, kept apart per API (GLSL's eta is not pbrt's).
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct ApiFields {
     texts: HashMap<(Api, &'static str), String>,
 }

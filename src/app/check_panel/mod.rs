@@ -1,5 +1,5 @@
 //! "Check my T": a student pastes what their ray tracer logged, either in this project's own
-//! fields (W, N, μ_i, μ_t and the T they got, or a whole `check` JSON line) or in their own
+//! fields (W, N, `μ_i`, `μ_t` and the T they got, or a whole `check` JSON line) or in their own
 //! API's (GLSL's `I, N, eta, result`, pbrt's `wi, n, eta, returned, wt`, the book's `uv, n,
 //! etai_over_etat, refracted`, Mitsuba's `wi, n, eta, wo`, with the optional truth). The
 //! explorer opens that case, drawn in the convention in use (shown in the panel), says what is
@@ -27,7 +27,7 @@ use refraction_tools::state_file;
 /// Whose fields the panel reads.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 enum Source {
-    /// This project's W, N, μ_i, μ_t and T.
+    /// This project's W, N, `μ_i`, `μ_t` and T.
     #[default]
     Own,
     /// A student's API call.
@@ -340,7 +340,7 @@ impl CheckPanel {
     /// view (the panel is short at the desk and narrow in presentation).
     fn verdict(&mut self, ui: &mut Ui, state: &ExplorerState) {
         let shown = ui.scope(|ui| self.verdict_ui(ui, state)).response;
-        if std::mem::take(&mut self.reveal) {
+        if core::mem::take(&mut self.reveal) {
             shown.scroll_to_me(Some(egui::Align::Min));
         }
     }

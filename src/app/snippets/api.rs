@@ -1,5 +1,5 @@
 //! A call checked in the student's own API, copied back as a unit test in their language: GLSL,
-//! C++ with pbrt-v4's `Refract` (a GoogleTest case, as pbrt's own tests are), C++ with the
+//! C++ with pbrt-v4's `Refract` (a `GoogleTest` case, as pbrt's own tests are), C++ with the
 //! book's `refract` and `cannot_refract`, or Python (pytest: the student's own `refract` with
 //! the API's signature, or Mitsuba's Python bindings). Each passes the arguments as they were
 //! logged and asserts what the API returns for them (the `api_result` of `check --api`), so the
@@ -19,7 +19,7 @@ use refraction_tools::solve::Precision;
 pub enum Language {
     /// A GLSL function returning whether the built-in `refract` gives the expected vector.
     Glsl,
-    /// C++ with pbrt-v4's `Refract(wi, n, eta, &etap, &wt)`, as a GoogleTest case.
+    /// C++ with pbrt-v4's `Refract(wi, n, eta, &etap, &wt)`, as a `GoogleTest` case.
     CppPbrt,
     /// C++ with the book's `refract(uv, n, etai_over_etat)` and `cannot_refract`.
     CppBook,
@@ -138,7 +138,7 @@ fn header(case: &ApiCase<'_>, comment: &str) -> String {
             literal(case.right.eta),
         ));
     }
-    lines.join("\n") + "\n"
+    format!("{}\n", lines.join("\n"))
 }
 
 fn glsl(case: &ApiCase<'_>) -> String {
@@ -233,19 +233,19 @@ fn python_body(case: &ApiCase<'_>, close: &str) -> String {
     let expected = transmitted(case);
     let near = |name: &str, v: [f64; 3]| format!("    assert {close}({name}, ({}))\n", vector(v));
     match (case.api, expected) {
-        (Api::Glsl, Some(v)) => "    result = refract(I, N, eta)\n".to_owned() + &near("result", v),
+        (Api::Glsl, Some(v)) => format!("    result = refract(I, N, eta)\n{}", near("result", v)),
         (Api::Glsl, None) => "    # Total internal reflection: the zero vector.\n    result = refract(I, N, eta)\n    assert close(result, (0.0, 0.0, 0.0))\n".replace("close", close),
-        (Api::Pbrt, Some(v)) => "    result = refract(wi, n, eta)  # (wt, etap), None on TIR\n    assert result is not None\n    wt, etap = result\n".to_owned() + &near("wt", v),
+        (Api::Pbrt, Some(v)) => format!("    result = refract(wi, n, eta)  # (wt, etap), None on TIR\n    assert result is not None\n    wt, etap = result\n{}", near("wt", v)),
         (Api::Pbrt, None) => "    # Total internal reflection: pbrt's Refract returns false.\n    assert refract(wi, n, eta) is None\n".to_owned(),
         (Api::Rtiow, v) => {
             let tail = v.map_or_else(
                 || "    assert cannot_refract\n".to_owned(),
-                |v| "    assert not cannot_refract\n    refracted = refract(uv, n, etai_over_etat)\n".to_owned() + &near("refracted", v),
+                |v| format!("    assert not cannot_refract\n    refracted = refract(uv, n, etai_over_etat)\n{}", near("refracted", v)),
             );
-            "    cos_theta = min(-sum(a * b for a, b in zip(uv, n)), 1.0)\n    \
-             cannot_refract = etai_over_etat * math.sqrt(1.0 - cos_theta * cos_theta) > 1.0\n"
-                .to_owned()
-                + &tail
+            format!(
+                "    cos_theta = min(-sum(a * b for a, b in zip(uv, n)), 1.0)\n    \
+                 cannot_refract = etai_over_etat * math.sqrt(1.0 - cos_theta * cos_theta) > 1.0\n{tail}"
+            )
         }
         (Api::Mitsuba, v) => {
             let local = case.args.normal.to_array() == [0.0, 0.0, 1.0];
@@ -257,7 +257,7 @@ fn python_body(case: &ApiCase<'_>, close: &str) -> String {
             let f = number_at(case.returned, "F").unwrap_or(1.0);
             let tail = v.map_or_else(
                 || "    assert F == 1.0  # total internal reflection: it never transmits\n".to_owned(),
-                |v| format!("    assert abs(F - {}) < {}\n    wo = {refract}\n", literal(f), tolerance(case.precision)) + &near("wo", v),
+                |v| format!("    assert abs(F - {}) < {}\n    wo = {refract}\n{}", literal(f), tolerance(case.precision), near("wo", v)),
             );
             format!("    F, cos_theta_t, eta_it, eta_ti = mi.fresnel({cos}, eta)\n{tail}")
         }

@@ -70,7 +70,7 @@ pub fn rust(request: &Request) -> Result<String, String> {
 }
 
 /// The built-in `refract(I, N, eta)` call of GLSL and glm for this case: I is the travel
-/// direction (−W for `toward_origin`), N is turned to face it, and eta = μ_i/μ_t.
+/// direction (−W for `toward_origin`), N is turned to face it, and eta = `μ_i/μ_t`.
 fn shading_call(request: &Request, vec3: &str, refract_fn: &str) -> Result<String, String> {
     let expected = expected(request)?;
     let incident = match request.convention {

@@ -1,9 +1,9 @@
 //! Running the command end to end, for the CLI tests: on a file (`check --api`), or `render`
 //! into a folder of the test's own.
 
+use core::sync::atomic::{AtomicUsize, Ordering};
 use std::path::PathBuf;
 use std::process::{Command, Output};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 use serde_json::Value;
 

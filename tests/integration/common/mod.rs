@@ -3,7 +3,7 @@
 
 use egui::{Key, Modifiers, Pos2, Role, Vec2};
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::Queryable as _;
 use glam::DVec3;
 use refraction_explorer::app::Explorer;
 use refraction_model::ExplorerState;

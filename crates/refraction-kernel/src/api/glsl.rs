@@ -15,7 +15,7 @@
 //! glam's.
 
 use super::Meaning;
-use crate::real::{Real, Vector3};
+use crate::real::{Real, Vector3 as _};
 
 /// What GLSL's `refract(I, N, eta)` returns, bit for bit as glam's `Vec3::refract` /
 /// `DVec3::refract` computes it: `eta·I − (eta·dot(N, I) + √k)·N` with
@@ -23,7 +23,7 @@ use crate::real::{Real, Vector3};
 /// reflection, or NaN input).
 ///
 /// Nothing is normalised or flipped: I is the unit direction of travel, N a unit normal facing
-/// against it (dot(N, I) < 0), eta = n_from/n_to. Other inputs give whatever the formula gives.
+/// against it (dot(N, I) < 0), eta = `n_from/n_to`. Other inputs give whatever the formula gives.
 ///
 /// # Examples
 ///

@@ -21,10 +21,10 @@
 //!
 //! The docstrings disagree with the code in one place: `refract(wi, m, cos_theta_t, eta_ti)`
 //! calls `eta_ti` "transmitted / incident", but `fresnel` returns, and the code uses,
-//! n_incident/n_transmitted (μ).
+//! `n_incident/n_transmitted` (μ).
 
 use super::Meaning;
-use crate::real::{Real, Vector3};
+use crate::real::{Real, Vector3 as _};
 
 /// Whether Dr.Jit's `fmadd` is fused (one rounding) or a multiply then an add.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -63,16 +63,16 @@ impl Fma {
 }
 
 /// The four values `fresnel(cos_theta_i, eta)` returns.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Fresnel<S: Real> {
     /// F, the Fresnel reflectance: the probability that the BSDF samples reflection (1 on total
     /// internal reflection, so it never transmits there).
     pub f: S,
-    /// cosθt, negative when the ray enters (cos_theta_i ≥ +0), ±0 on total internal reflection.
+    /// cosθt, negative when the ray enters (`cos_theta_i` ≥ +0), ±0 on total internal reflection.
     pub cos_theta_t: S,
-    /// n_transmitted/n_incident along the ray.
+    /// `n_transmitted/n_incident` along the ray.
     pub eta_it: S,
-    /// n_incident/n_transmitted along the ray: μ, the scale of the tangential part.
+    /// `n_incident/n_transmitted` along the ray: μ, the scale of the tangential part.
     pub eta_ti: S,
 }
 
@@ -93,7 +93,7 @@ fn mulsign_neg<S: Real>(v: S, s: S) -> S {
 /// What Mitsuba 3's `fresnel(cos_theta_i, eta)` returns, bit for bit for the given `fma`.
 ///
 /// `cos_theta_i` is the cosine between the shading normal and `wi` (positive on the exterior
-/// side the normal points to), `eta` = n_interior/n_exterior.
+/// side the normal points to), `eta` = `n_interior/n_exterior`.
 ///
 /// # Examples
 ///
@@ -247,7 +247,7 @@ pub fn answer<S: Real>(wi: S::Vec3, m: S::Vec3, eta: S, fma: Fma) -> Answer<S> {
 
 /// What a `fresnel`/`refract` pair for `wi`, normal `m` and `eta` means in this project's
 /// terms: the ray travels along −wi; the facing normal is m when wi is on m's side
-/// (cos_theta_i ≥ 0, the exterior) and −m otherwise; μ = eta_ti. Every such call is within
+/// (`cos_theta_i` ≥ 0, the exterior) and −m otherwise; μ = `eta_ti`. Every such call is within
 /// Mitsuba's contract (for unit vectors).
 ///
 /// # Examples

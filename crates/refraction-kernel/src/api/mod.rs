@@ -1,6 +1,6 @@
 //! Other people's `refract`: what four graphics APIs return for given arguments, bit for bit,
 //! and what those arguments mean in this project's terms (the direction of travel d, the normal
-//! facing it, μ = n_from/n_to), so that a student's call can be checked in their own API.
+//! facing it, μ = `n_from/n_to`), so that a student's call can be checked in their own API.
 //!
 //! - [`glsl`]: GLSL's `refract(I, N, eta)`, the same in HLSL, WGSL, glm and glam.
 //! - [`pbrt`]: pbrt-v4's `Refract(wi, n, eta, &etap, &wt)`.
@@ -28,7 +28,7 @@ pub mod mitsuba;
 pub mod pbrt;
 pub mod rtiow;
 
-use crate::real::{Real, Vector3};
+use crate::real::{Real, Vector3 as _};
 
 /// A graphics API whose refraction call a student makes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -65,7 +65,7 @@ pub struct Meaning<S: Real> {
     /// The normal the API refracts about, on the side d comes from when the call is within
     /// the contract.
     pub normal: S::Vec3,
-    /// μ = n_from/n_to, as the API understands the arguments.
+    /// μ = `n_from/n_to`, as the API understands the arguments.
     pub mu: S,
     /// Whether the normal as passed is on the side the ray comes from.
     pub normal_on_incident_side: bool,
@@ -265,7 +265,7 @@ impl Api {
     }
 
     /// The right arguments, in this API's convention, for a ray travelling along `d` onto a
-    /// surface whose normal `facing` is on d's side (d·facing ≤ 0) with μ = n_from/n_to. For
+    /// surface whose normal `facing` is on d's side (d·facing ≤ 0) with μ = `n_from/n_to`. For
     /// pbrt and Mitsuba the normal passed is `facing` itself (either side would do with the
     /// matching eta).
     ///

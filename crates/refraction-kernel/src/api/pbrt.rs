@@ -10,14 +10,14 @@
 //! `FMA` is `std::fma`. pbrt's `Float` is `float` unless built with `PBRT_FLOAT_AS_DOUBLE`.
 
 use super::Meaning;
-use crate::real::{Real, Vector3};
+use crate::real::{Real, Vector3 as _};
 
 /// What `Refract` writes when it returns `true`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Refracted<S: Real> {
     /// `*wt`: the transmitted direction of travel (not normalised).
     pub wt: S::Vec3,
-    /// `*etap`: the relative index along the ray, n_to/n_from (eta, or 1/eta after the flip).
+    /// `*etap`: the relative index along the ray, `n_to/n_from` (eta, or 1/eta after the flip).
     pub etap: S,
 }
 
@@ -34,7 +34,7 @@ fn dot<S: Real>(n: [S; 3], v: [S; 3]) -> S {
 ///
 /// `wi` points back toward where the ray came from (−ray.d), `n` may face either way and `eta`
 /// is the index on the side `n` points away from over the index on the side it points to (the
-/// material's n_inside/n_outside for an outward `n`). Nothing is normalised.
+/// material's `n_inside/n_outside` for an outward `n`). Nothing is normalised.
 ///
 /// # Examples
 ///

@@ -12,7 +12,7 @@
 //! throughout, without fused operations.
 
 use super::Meaning;
-use crate::real::{Real, Vector3};
+use crate::real::{Real, Vector3 as _};
 
 /// The book's `dot(u, v)`: `u.e[0]*v.e[0] + u.e[1]*v.e[1] + u.e[2]*v.e[2]`, left to right.
 fn dot<S: Real>(u: [S; 3], v: [S; 3]) -> S {
@@ -25,7 +25,7 @@ fn dot<S: Real>(u: [S; 3], v: [S; 3]) -> S {
 /// never uses because [`cannot_refract`] holds there.
 ///
 /// `uv` is the unit direction of travel, `n` a unit normal facing it (the hit record's
-/// `normal` after `set_face_normal`), `etai_over_etat` = n_from/n_to. Nothing is normalised.
+/// `normal` after `set_face_normal`), `etai_over_etat` = `n_from/n_to`. Nothing is normalised.
 ///
 /// # Examples
 ///
@@ -133,7 +133,7 @@ pub fn answer<S: Real>(uv: S::Vec3, n: S::Vec3, etai_over_etat: S) -> Answer<S> 
 }
 
 /// What a call `refract(uv, n, etai_over_etat)` means in this project's terms: uv is the
-/// direction of travel, n is taken as the normal facing it and etai_over_etat as μ. Within the
+/// direction of travel, n is taken as the normal facing it and `etai_over_etat` as μ. Within the
 /// book's contract only when n faces uv (dot(uv, n) ≤ 0), as `set_face_normal` ensures.
 ///
 /// # Examples

@@ -388,7 +388,7 @@ fn right_sentence(ctx: &Context<'_>) -> String {
         ),
         (_, None) => t!("check-right", call = call, returned = returned),
     };
-    right + &unchecked_note(ctx.call)
+    format!("{right}{}", unchecked_note(ctx.call))
 }
 
 /// The explanation of one verdict.

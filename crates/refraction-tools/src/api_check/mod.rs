@@ -248,7 +248,7 @@ impl Books {
                 self.tally.add_verdict(&diagnosis);
                 self.all_ok &= diagnosis.ok;
                 let text = answer_line(&call, &diagnosis);
-                Ok(ended.map_or(text.clone(), |summary| format!("{summary}\n{text}")))
+                Ok(ended.map_or_else(|| text.clone(), |summary| format!("{summary}\n{text}")))
             }
             Err(e) => {
                 self.tally.add("unreadable");

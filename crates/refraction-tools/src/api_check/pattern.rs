@@ -218,6 +218,10 @@ mod tests {
     }
 
     #[test]
+    #[expect(
+        clippy::literal_string_with_formatting_args,
+        reason = "a log pattern: its braces name fields"
+    )]
     fn the_book_s_printf_line_in_every_vector_form() {
         let pattern = rtiow("LOG {uv} | {n} | {etai_over_etat} | {refracted} | {entering}");
         for (uv, n) in [

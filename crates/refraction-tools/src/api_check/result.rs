@@ -5,7 +5,7 @@
 use glam::DVec3;
 use refraction_i18n::t;
 use refraction_kernel::api::{Api, Args, Returned};
-use refraction_kernel::{Real, Vector3};
+use refraction_kernel::{Real, Vector3 as _};
 use serde_json::{Value as Json, json};
 
 use super::call::{Call, Got};

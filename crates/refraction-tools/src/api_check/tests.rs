@@ -47,8 +47,10 @@ fn line(api: Api, args: Args<f64>, result: Vec<(&'static str, Value)>, truth: Va
     for (name, value) in result {
         object[name] = value;
     }
-    for (name, value) in truth.as_object().unwrap() {
-        object[name] = value.clone();
+    if let Value::Object(truth) = truth {
+        for (name, value) in truth {
+            object[name] = value;
+        }
     }
     object.to_string()
 }
