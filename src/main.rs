@@ -98,24 +98,28 @@ impl From<ThemeName> for Theme {
 }
 
 #[derive(Subcommand)]
+#[expect(
+    clippy::doc_markdown,
+    reason = "clap prints these comments as the commands' help, where backticks would show"
+)]
 enum Command {
     /// Read refraction problems as JSON Lines on stdin; write one JSON answer per line.
     ///
-    /// Input: {"w":[x,y,z],"n":[x,y,z],"`mu_i":1,"mu_t":1.5`} with optional
-    /// "convention" ("`along_ray`" | "`toward_origin`") and "precision" ("f64" | "f32").
+    /// Input: {"w":[x,y,z],"n":[x,y,z],"mu_i":1,"mu_t":1.5} with optional
+    /// "convention" ("along_ray" | "toward_origin") and "precision" ("f64" | "f32").
     /// Exit status 0 when every line was solved, 1 when any line was an error.
     Solve,
     /// Check the T your ray tracer produced: JSON Lines with the `solve` fields plus
-    /// "`t_yours`" (an array, or a string such as "vec3(0.1, -0.9, 0)"), from FILE or stdin.
+    /// "t_yours" (an array, or a string such as "vec3(0.1, -0.9, 0)"), from FILE or stdin.
     ///
-    /// Answers each line with "ok", "matches" (chosen, `wrong_side`, `wrong_bend`, reversed,
-    /// `total_internal_reflection` or null) and "explanation"; a summary of the mistakes goes to
+    /// Answers each line with "ok", "matches" (chosen, wrong_side, wrong_bend, reversed,
+    /// total_internal_reflection or null) and "explanation"; a summary of the mistakes goes to
     /// stderr. Exit status 0 when every line is ok, 1 otherwise.
     ///
     /// With --api, each line is the call your code made in that API's own terms (glsl:
     /// {"I","N","eta","result"}; pbrt: {"wi","n","eta","returned","wt"}; rtiow:
-    /// {"`uv","n","etai_over_etat","refracted`"}; mitsuba: {"wi","n","eta","wo"}), with optional
-    /// truth "from", "to", "travel", "entering"; the answer adds "`api_result`" and "mistakes".
+    /// {"uv","n","etai_over_etat","refracted"}; mitsuba: {"wi","n","eta","wo"}), with optional
+    /// truth "from", "to", "travel", "entering"; the answer adds "api_result" and "mistakes".
     Check {
         /// JSON Lines file to read (stdin when absent).
         file: Option<PathBuf>,
@@ -143,7 +147,7 @@ enum Command {
         #[arg(long, requires = "pattern")]
         strict: bool,
         /// Consecutive lines with the same "path" are one ray's hits: after each path, a
-        /// summary line {"`path","hits","first_wrong","exit_ok","explanation`"}.
+        /// summary line {"path","hits","first_wrong","exit_ok","explanation"}.
         #[arg(long, requires = "api")]
         paths: bool,
     },

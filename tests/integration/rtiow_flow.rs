@@ -204,7 +204,7 @@ fn a_flipped_square_root_is_named_as_the_student_s_own_refract() {
     for call in calls(&answers) {
         assert_eq!(
             call["mistakes"],
-            serde_json::json!(["not_the_api_result"]),
+            serde_json::json!(["other_root"]),
             "{call}"
         );
         let explanation = call["explanation"].as_str().unwrap();

@@ -8,6 +8,7 @@
 
 pub mod api_check;
 pub mod check;
+pub mod diagnosis;
 pub mod error;
 mod fields;
 pub mod solve;

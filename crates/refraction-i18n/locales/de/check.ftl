@@ -272,3 +272,45 @@ check-word-not-a-number = „{ $word }“ ist keine Zahl
 check-vector-expected-named = erwartet wird `{ $expected }: <Zahl>`, gefunden „{ $found }“
 check-vector-within = { $error } (in „{ $text }“)
 check-vector-not-three = erwartet werden 3 Zahlen wie `0.1, -0.9, 0` oder `vec3(0.1, -0.9, 0.0)`, gefunden { $count } in „{ $text }“
+
+# Fehler, die sich im Ergebnis zeigen
+check-mistake-no-flip-inside = für einen Strahl von der Rückseite der Normale dreht der Code die Normale nicht um und kehrt das Verhältnis nicht um
+check-mistake-normal-term-sign = der Anteil des Ergebnisses entlang der Normale hat das falsche Vorzeichen; der Anteil quer dazu stimmt
+check-mistake-other-root = die andere Wurzel: Vorzeichen der Quadratwurzel umgekehrt, das Ergebnis an der Fläche gespiegelt
+check-mistake-false-tir = Totalreflexion gemeldet, wo der Strahl gebrochen wird
+check-looks-normal-term = die Antwort der API mit negiertem Anteil entlang der Normale: der Term entlang der Normale wird abgezogen statt addiert oder umgekehrt
+check-looks-no-flip = was die Formel ohne Umdrehen der Normale und Umkehren von eta für einen Strahl von der Rückseite der Normale ergibt
+check-looks-etap = die richtige Richtung, aber etap = { $logged }, wo der Aufruf { $used } verwendet hat
+
+# Die Diagnose eines ganzen Logs: wo sich ein Fehler zeigt, und seine Behebung
+check-where-every = { $count ->
+    [one] in der einen geprüften Zeile
+   *[other] in jeder geprüften Zeile ({ $count })
+}
+check-where-inside = { $count ->
+    [one] in der einen Zeile, deren Strahl von innen kommt, und in keiner von außen
+   *[other] in jeder Zeile, deren Strahl von innen kommt ({ $count }), und in keiner von außen
+}
+check-where-outside = { $count ->
+    [one] in der einen Zeile, deren Strahl von außen kommt, und in keiner von innen
+   *[other] in jeder Zeile, deren Strahl von außen kommt ({ $count }), und in keiner von innen
+}
+check-where-past-critical = { $count ->
+    [one] in der einen Zeile jenseits des Grenzwinkels und in keiner anderen
+   *[other] in jeder Zeile jenseits des Grenzwinkels ({ $count }) und in keiner anderen
+}
+check-where-some-sides = in { $count } von { $all } geprüften Zeilen ({ $inside } von innen, { $outside } von außen)
+check-where-some = in { $count } von { $all } geprüften Zeilen
+check-fix-pass = übergib { $code }
+check-fix-write = schreib { $code }
+check-fix-restore = stell { $code } wieder her
+check-fix-generic-eta-inverted = verwende μ = n_from / n_to, den Brechungsindex des Mediums, das der Strahl verlässt, durch den des Mediums, in das er eintritt: Es kehrt sich um, wo der Strahl das Objekt verlässt (into ? nc / nt : nt / nc)
+check-fix-generic-incident-reversed = übergib als W die Ausbreitungsrichtung des Strahls, nicht ihr Negatives
+check-fix-generic-normal-not-facing = wo der Strahl das Objekt verlässt, verwende in jedem Term die Normale, die dem Strahl zugewandt ist (die äußere, umgedreht), oder die äußere mit umgekehrtem Vorzeichen, aber nicht beides
+check-fix-generic-no-flip-inside = dreh für einen Strahl von innen die Normale um und kehr das Verhältnis um, bevor du brichst
+check-fix-generic-normal-term-sign = addiere den Term entlang der Normale: T = μ·W + (μ·cosθi − cosθt)·N, mit N dem Strahl zugewandt
+check-fix-generic-other-root = nimm die Wurzel mit −√k: T = μ·W + (μ·cosθi − √k)·N, mit N dem Strahl zugewandt
+check-fix-generic-missed-tir = reflektiere, wenn k = 1 − μ²·(1 − cos²θi) negativ ist, bevor du die Quadratwurzel ziehst
+check-fix-generic-false-tir = melde Totalreflexion nur, wo k = 1 − μ²·(1 − cos²θi) negativ ist
+check-fix-generic-not-unit-input = normiere W und N, bevor du brichst
+check-fix-generic-not-the-api-result = vergleiche deine Brechung in den genannten Zeilen mit T = μ·W + (μ·cosθi − √k)·N, wie es die Erklärung jeder Zeile sagt

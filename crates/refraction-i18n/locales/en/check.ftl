@@ -266,3 +266,45 @@ check-word-not-a-number = "{ $word }" is not a number
 check-vector-expected-named = expected `{ $expected }: <number>`, found "{ $found }"
 check-vector-within = { $error } (in "{ $text }")
 check-vector-not-three = expected 3 numbers such as `0.1, -0.9, 0` or `vec3(0.1, -0.9, 0.0)`, found { $count } in "{ $text }"
+
+# Mistakes that show in what came back
+check-mistake-no-flip-inside = for a ray from the normal's far side, the code does not turn the normal round and invert the ratio
+check-mistake-normal-term-sign = the part of the result along the normal has the wrong sign; the part across it is right
+check-mistake-other-root = the other root: the square root's sign flipped, the result mirrored across the surface
+check-mistake-false-tir = total internal reflection reported where the ray refracts
+check-looks-normal-term = the API's answer with the part along the normal negated: the term along the normal is subtracted where it is added, or the other way round
+check-looks-no-flip = what the formula gives without turning the normal round and inverting eta for a ray from the normal's far side
+check-looks-etap = the right direction, but etap = { $logged } where the call used { $used }
+
+# The diagnosis of a whole log: where a mistake shows, and its fix
+check-where-every = { $count ->
+    [one] on the one judged line
+   *[other] on every judged line ({ $count })
+}
+check-where-inside = { $count ->
+    [one] on the one line arriving from inside, and on none from outside
+   *[other] on every line arriving from inside ({ $count }), and on none from outside
+}
+check-where-outside = { $count ->
+    [one] on the one line arriving from outside, and on none from inside
+   *[other] on every line arriving from outside ({ $count }), and on none from inside
+}
+check-where-past-critical = { $count ->
+    [one] on the one line past the critical angle, and on no other
+   *[other] on every line past the critical angle ({ $count }), and on no other
+}
+check-where-some-sides = on { $count } of { $all } judged lines ({ $inside } arriving from inside, { $outside } from outside)
+check-where-some = on { $count } of { $all } judged lines
+check-fix-pass = pass { $code }
+check-fix-write = write { $code }
+check-fix-restore = restore { $code }
+check-fix-generic-eta-inverted = use μ = n_from / n_to, the index of the medium the ray leaves over the one it enters: it inverts where the ray leaves the object (into ? nc / nt : nt / nc)
+check-fix-generic-incident-reversed = pass the ray's direction of travel as W, not its negative
+check-fix-generic-normal-not-facing = where the ray leaves the object, use the normal that faces the ray in every term (the outward one turned round), or the outward one with its sign turned, but not both
+check-fix-generic-no-flip-inside = for a ray arriving from inside, turn the normal round and invert the ratio before refracting
+check-fix-generic-normal-term-sign = add the term along the normal: T = μ·W + (μ·cosθi − cosθt)·N, with N facing the ray
+check-fix-generic-other-root = take the root with −√k: T = μ·W + (μ·cosθi − √k)·N, with N facing the ray
+check-fix-generic-missed-tir = reflect when k = 1 − μ²·(1 − cos²θi) is negative, before taking its square root
+check-fix-generic-false-tir = report total internal reflection only where k = 1 − μ²·(1 − cos²θi) is negative
+check-fix-generic-not-unit-input = normalise W and N before refracting
+check-fix-generic-not-the-api-result = compare your refraction with T = μ·W + (μ·cosθi − √k)·N on the lines listed, as each line's explanation says

@@ -269,3 +269,45 @@ check-word-not-a-number = «{ $word }» no es un número
 check-vector-expected-named = se esperaba `{ $expected }: <número>`, se encontró «{ $found }»
 check-vector-within = { $error } (en «{ $text }»)
 check-vector-not-three = se esperaban 3 números como `0.1, -0.9, 0` o `vec3(0.1, -0.9, 0.0)`, se encontraron { $count } en «{ $text }»
+
+# Errores que se ven en lo devuelto
+check-mistake-no-flip-inside = para un rayo que llega del otro lado de la normal, el código no invierte la normal ni el cociente
+check-mistake-normal-term-sign = la parte del resultado a lo largo de la normal tiene el signo equivocado; la parte transversal es correcta
+check-mistake-other-root = la otra raíz: el signo de la raíz cuadrada invertido, el resultado reflejado respecto a la superficie
+check-mistake-false-tir = reflexión total interna indicada donde el rayo se refracta
+check-looks-normal-term = la respuesta de la API con la parte a lo largo de la normal negada: el término a lo largo de la normal se resta donde se suma, o al revés
+check-looks-no-flip = lo que da la fórmula sin invertir la normal ni eta para un rayo que llega del otro lado de la normal
+check-looks-etap = la dirección correcta, pero etap = { $logged } donde la llamada usó { $used }
+
+# El diagnóstico de un registro entero: dónde se ve un error y cómo se corrige
+check-where-every = { $count ->
+    [one] en la única línea juzgada
+   *[other] en todas las líneas juzgadas ({ $count })
+}
+check-where-inside = { $count ->
+    [one] en la única línea cuyo rayo llega desde dentro, y en ninguna desde fuera
+   *[other] en todas las líneas cuyo rayo llega desde dentro ({ $count }), y en ninguna desde fuera
+}
+check-where-outside = { $count ->
+    [one] en la única línea cuyo rayo llega desde fuera, y en ninguna desde dentro
+   *[other] en todas las líneas cuyo rayo llega desde fuera ({ $count }), y en ninguna desde dentro
+}
+check-where-past-critical = { $count ->
+    [one] en la única línea más allá del ángulo crítico, y en ninguna otra
+   *[other] en todas las líneas más allá del ángulo crítico ({ $count }), y en ninguna otra
+}
+check-where-some-sides = en { $count } de { $all } líneas juzgadas ({ $inside } desde dentro, { $outside } desde fuera)
+check-where-some = en { $count } de { $all } líneas juzgadas
+check-fix-pass = pasa { $code }
+check-fix-write = escribe { $code }
+check-fix-restore = restablece { $code }
+check-fix-generic-eta-inverted = usa μ = n_from / n_to, el índice del medio que el rayo deja entre el del medio en que entra: se invierte donde el rayo sale del objeto (into ? nc / nt : nt / nc)
+check-fix-generic-incident-reversed = pasa como W la dirección en que viaja el rayo, no su opuesta
+check-fix-generic-normal-not-facing = donde el rayo sale del objeto, usa en cada término la normal orientada hacia el rayo (la exterior, invertida) o la exterior con el signo cambiado, pero no ambas cosas
+check-fix-generic-no-flip-inside = para un rayo que llega desde dentro, invierte la normal y el cociente antes de refractar
+check-fix-generic-normal-term-sign = suma el término a lo largo de la normal: T = μ·W + (μ·cosθi − cosθt)·N, con N orientada hacia el rayo
+check-fix-generic-other-root = toma la raíz con −√k: T = μ·W + (μ·cosθi − √k)·N, con N orientada hacia el rayo
+check-fix-generic-missed-tir = refleja cuando k = 1 − μ²·(1 − cos²θi) es negativo, antes de tomar su raíz cuadrada
+check-fix-generic-false-tir = indica reflexión total interna solo donde k = 1 − μ²·(1 − cos²θi) es negativo
+check-fix-generic-not-unit-input = normaliza W y N antes de refractar
+check-fix-generic-not-the-api-result = compara tu refracción con T = μ·W + (μ·cosθi − √k)·N en las líneas indicadas, como dice la explicación de cada una

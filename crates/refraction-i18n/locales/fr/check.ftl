@@ -269,3 +269,45 @@ check-word-not-a-number = « { $word } » n’est pas un nombre
 check-vector-expected-named = `{ $expected }: <nombre>` attendu, « { $found } » trouvé
 check-vector-within = { $error } (dans « { $text } »)
 check-vector-not-three = 3 nombres attendus, comme `0.1, -0.9, 0` ou `vec3(0.1, -0.9, 0.0)`, { $count } trouvés dans « { $text } »
+
+# Erreurs visibles dans ce qui est renvoyé
+check-mistake-no-flip-inside = pour un rayon venant de l’autre côté de la normale, le code ne retourne pas la normale et n’inverse pas le rapport
+check-mistake-normal-term-sign = la composante du résultat le long de la normale a le mauvais signe ; la composante transverse est juste
+check-mistake-other-root = l’autre racine : le signe de la racine carrée inversé, le résultat réfléchi par rapport à la surface
+check-mistake-false-tir = réflexion totale interne annoncée là où le rayon est réfracté
+check-looks-normal-term = la réponse de l’API avec la composante le long de la normale opposée : le terme le long de la normale est soustrait au lieu d’être ajouté, ou l’inverse
+check-looks-no-flip = ce que donne la formule sans retourner la normale ni inverser eta pour un rayon venant de l’autre côté de la normale
+check-looks-etap = la bonne direction, mais etap = { $logged } là où l’appel a utilisé { $used }
+
+# Le diagnostic d’un journal entier : où une erreur se voit, et sa correction
+check-where-every = { $count ->
+    [one] sur la seule ligne jugée
+   *[other] sur chaque ligne jugée ({ $count })
+}
+check-where-inside = { $count ->
+    [one] sur la seule ligne dont le rayon arrive de l’intérieur, et sur aucune de l’extérieur
+   *[other] sur chaque ligne dont le rayon arrive de l’intérieur ({ $count }), et sur aucune de l’extérieur
+}
+check-where-outside = { $count ->
+    [one] sur la seule ligne dont le rayon arrive de l’extérieur, et sur aucune de l’intérieur
+   *[other] sur chaque ligne dont le rayon arrive de l’extérieur ({ $count }), et sur aucune de l’intérieur
+}
+check-where-past-critical = { $count ->
+    [one] sur la seule ligne au-delà de l’angle critique, et sur aucune autre
+   *[other] sur chaque ligne au-delà de l’angle critique ({ $count }), et sur aucune autre
+}
+check-where-some-sides = sur { $count } des { $all } lignes jugées ({ $inside } de l’intérieur, { $outside } de l’extérieur)
+check-where-some = sur { $count } des { $all } lignes jugées
+check-fix-pass = passe { $code }
+check-fix-write = écris { $code }
+check-fix-restore = rétablis { $code }
+check-fix-generic-eta-inverted = utilise μ = n_from / n_to, l’indice du milieu que le rayon quitte sur celui du milieu où il entre : il s’inverse là où le rayon sort de l’objet (into ? nc / nt : nt / nc)
+check-fix-generic-incident-reversed = passe comme W la direction de propagation du rayon, pas son opposée
+check-fix-generic-normal-not-facing = là où le rayon sort de l’objet, utilise dans chaque terme la normale tournée vers le rayon (l’extérieure, retournée), ou l’extérieure avec son signe changé, mais pas les deux
+check-fix-generic-no-flip-inside = pour un rayon qui arrive de l’intérieur, retourne la normale et inverse le rapport avant de réfracter
+check-fix-generic-normal-term-sign = ajoute le terme le long de la normale : T = μ·W + (μ·cosθi − cosθt)·N, N tournée vers le rayon
+check-fix-generic-other-root = prends la racine avec −√k : T = μ·W + (μ·cosθi − √k)·N, N tournée vers le rayon
+check-fix-generic-missed-tir = réfléchis quand k = 1 − μ²·(1 − cos²θi) est négatif, avant d’en prendre la racine carrée
+check-fix-generic-false-tir = n’annonce une réflexion totale interne que là où k = 1 − μ²·(1 − cos²θi) est négatif
+check-fix-generic-not-unit-input = normalise W et N avant de réfracter
+check-fix-generic-not-the-api-result = compare ta réfraction avec T = μ·W + (μ·cosθi − √k)·N sur les lignes indiquées, comme le dit l’explication de chacune

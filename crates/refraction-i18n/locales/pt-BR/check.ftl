@@ -270,3 +270,45 @@ check-word-not-a-number = “{ $word }” não é um número
 check-vector-expected-named = esperava-se `{ $expected }: <número>`, encontrou-se “{ $found }”
 check-vector-within = { $error } (em “{ $text }”)
 check-vector-not-three = esperavam-se 3 números como `0.1, -0.9, 0` ou `vec3(0.1, -0.9, 0.0)`, encontraram-se { $count } em “{ $text }”
+
+# Erros que aparecem no que voltou
+check-mistake-no-flip-inside = para um raio que chega do outro lado da normal, o código não inverte a normal nem a razão
+check-mistake-normal-term-sign = a parte do resultado ao longo da normal tem o sinal errado; a parte transversal está certa
+check-mistake-other-root = a outra raiz: o sinal da raiz quadrada trocado, o resultado espelhado em relação à superfície
+check-mistake-false-tir = reflexão interna total indicada onde o raio refrata
+check-looks-normal-term = a resposta da API com a parte ao longo da normal negada: o termo ao longo da normal é subtraído onde é somado, ou o contrário
+check-looks-no-flip = o que a fórmula dá sem inverter a normal e eta para um raio que chega do outro lado da normal
+check-looks-etap = a direção certa, mas etap = { $logged } onde a chamada usou { $used }
+
+# O diagnóstico de um log inteiro: onde um erro aparece e sua correção
+check-where-every = { $count ->
+    [one] na única linha julgada
+   *[other] em todas as linhas julgadas ({ $count })
+}
+check-where-inside = { $count ->
+    [one] na única linha cujo raio chega de dentro, e em nenhuma de fora
+   *[other] em todas as linhas cujo raio chega de dentro ({ $count }), e em nenhuma de fora
+}
+check-where-outside = { $count ->
+    [one] na única linha cujo raio chega de fora, e em nenhuma de dentro
+   *[other] em todas as linhas cujo raio chega de fora ({ $count }), e em nenhuma de dentro
+}
+check-where-past-critical = { $count ->
+    [one] na única linha além do ângulo crítico, e em nenhuma outra
+   *[other] em todas as linhas além do ângulo crítico ({ $count }), e em nenhuma outra
+}
+check-where-some-sides = em { $count } de { $all } linhas julgadas ({ $inside } vindas de dentro, { $outside } de fora)
+check-where-some = em { $count } de { $all } linhas julgadas
+check-fix-pass = passe { $code }
+check-fix-write = escreva { $code }
+check-fix-restore = restaure { $code }
+check-fix-generic-eta-inverted = use μ = n_from / n_to, o índice do meio que o raio deixa sobre o do meio em que entra: ele se inverte onde o raio sai do objeto (into ? nc / nt : nt / nc)
+check-fix-generic-incident-reversed = passe como W a direção em que o raio viaja, não a oposta
+check-fix-generic-normal-not-facing = onde o raio sai do objeto, use em cada termo a normal voltada para o raio (a externa, invertida) ou a externa com o sinal trocado, mas não as duas coisas
+check-fix-generic-no-flip-inside = para um raio que chega de dentro, inverta a normal e a razão antes de refratar
+check-fix-generic-normal-term-sign = some o termo ao longo da normal: T = μ·W + (μ·cosθi − cosθt)·N, com N voltada para o raio
+check-fix-generic-other-root = tome a raiz com −√k: T = μ·W + (μ·cosθi − √k)·N, com N voltada para o raio
+check-fix-generic-missed-tir = reflita quando k = 1 − μ²·(1 − cos²θi) for negativo, antes de tirar a raiz quadrada
+check-fix-generic-false-tir = indique reflexão interna total só onde k = 1 − μ²·(1 − cos²θi) for negativo
+check-fix-generic-not-unit-input = normalize W e N antes de refratar
+check-fix-generic-not-the-api-result = compare sua refração com T = μ·W + (μ·cosθi − √k)·N nas linhas indicadas, como diz a explicação de cada uma

@@ -72,6 +72,37 @@ pub enum Got {
     Nothing,
 }
 
+/// The significant digits a call's numbers were logged with (0: exact): each number is
+/// trusted as far as its own digits go, so a ratio printed in full beside vectors printed
+/// with 6 digits does not make the vectors look wrong.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Digits {
+    /// The incident vector's.
+    pub incident: u32,
+    /// The normal's.
+    pub normal: u32,
+    /// The index ratio's.
+    pub eta: u32,
+    /// What came back.
+    pub result: u32,
+    /// The ray's direction of travel, when logged.
+    pub travel: u32,
+}
+
+impl Digits {
+    /// Every number written with `digits` digits.
+    #[must_use]
+    pub fn all(digits: u32) -> Self {
+        Self {
+            incident: digits,
+            normal: digits,
+            eta: digits,
+            result: digits,
+            travel: digits,
+        }
+    }
+}
+
 /// One logged call.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Call {
@@ -85,12 +116,14 @@ pub struct Call {
     pub truth: Truth,
     /// The precision the student's code computes in.
     pub precision: Precision,
-    /// The most significant digits of the line's numbers.
-    pub digits: u32,
+    /// The significant digits each number was logged with.
+    pub digits: Digits,
     /// The path this hit belongs to (`--paths`).
     pub path: Option<String>,
     /// Where the hit is, if logged.
     pub point: Option<DVec3>,
+    /// pbrt's `etap` as logged: the ratio `Refract` says it used.
+    pub etap: Option<f64>,
 }
 
 fn vector(record: &Record, name: &str) -> Result<Option<DVec3>, String> {
@@ -223,9 +256,20 @@ impl Call {
             got: got(record, api)?,
             truth: truth(record, options)?,
             precision: precision(record, options)?,
-            digits: record.digits,
+            digits: Digits {
+                incident: record.digits(n.incident),
+                normal: record.digits(n.normal),
+                eta: record.digits(n.eta),
+                result: record.digits(n.result),
+                travel: record.digits("travel"),
+            },
             path: label(record, "path"),
             point: vector(record, "point")?,
+            // Judged only where Refract returned true: on false pbrt leaves it unwritten.
+            etap: match record.get(fields::ETAP) {
+                Some(Value::Number(x)) if x.is_finite() => Some(*x),
+                _ => None,
+            },
         })
     }
 }

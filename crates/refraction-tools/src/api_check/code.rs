@@ -19,17 +19,30 @@ pub enum Code {
     MissedTir,
     /// An incident vector or normal that is not unit length.
     NotUnitInput,
+    /// Code that must turn the normal round and invert the ratio for a ray arriving from the
+    /// normal's far side does not (pbrt's `if (cosTheta_i < 0)` block).
+    NoFlipInside,
+    /// The part of the result along the normal has the wrong sign; the part across it is right.
+    NormalTermSign,
+    /// The other root: the square root's sign flipped, the result mirrored across the surface.
+    OtherRoot,
+    /// Total internal reflection reported where the ray refracts.
+    FalseTir,
 }
 
 impl Code {
     /// Every code, in the order the README lists them.
-    pub const ALL: [Self; 6] = [
+    pub const ALL: [Self; 10] = [
         Self::EtaInverted,
         Self::IncidentReversed,
         Self::NormalNotFacing,
-        Self::NotTheApiResult,
+        Self::NoFlipInside,
+        Self::NormalTermSign,
+        Self::OtherRoot,
         Self::MissedTir,
+        Self::FalseTir,
         Self::NotUnitInput,
+        Self::NotTheApiResult,
     ];
 
     /// The name used in JSON and in the tally.
@@ -42,6 +55,10 @@ impl Code {
             Self::NotTheApiResult => "not_the_api_result",
             Self::MissedTir => "missed_tir",
             Self::NotUnitInput => "not_unit_input",
+            Self::NoFlipInside => "no_flip_inside",
+            Self::NormalTermSign => "normal_term_sign",
+            Self::OtherRoot => "other_root",
+            Self::FalseTir => "false_tir",
         }
     }
 
@@ -56,6 +73,16 @@ impl Code {
             Self::NotTheApiResult => t!("check-mistake-not-the-api-result"),
             Self::MissedTir => t!("check-mistake-missed-tir"),
             Self::NotUnitInput => t!("check-mistake-not-unit-input"),
+            Self::NoFlipInside => t!("check-mistake-no-flip-inside"),
+            Self::NormalTermSign => t!("check-mistake-normal-term-sign"),
+            Self::OtherRoot => t!("check-mistake-other-root"),
+            Self::FalseTir => t!("check-mistake-false-tir"),
         }
+    }
+
+    /// The code named `name` in JSON, if there is one.
+    #[must_use]
+    pub fn named(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|c| c.name() == name)
     }
 }

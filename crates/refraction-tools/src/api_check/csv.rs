@@ -166,7 +166,10 @@ mod tests {
         assert_eq!(r.get("I"), Some(&Value::Vector([0.6, -0.8, 0.0])));
         assert_eq!(r.get("N"), Some(&Value::Vector([0.0, 1.0, 0.0])));
         assert_eq!(r.get("to"), Some(&Value::Number(1.5)));
-        assert_eq!(r.digits, 6);
+        assert_eq!(
+            (r.digits("I"), r.digits("eta"), r.digits("result")),
+            (2, 6, 7)
+        );
         let pbrt = Header::parse(Api::Pbrt, "wi_x,wi_y,wi_z,n[0],n[1],n[2],eta,returned").unwrap();
         let r = pbrt.record("0,1,0,0,1,0,1.5,false").unwrap();
         assert_eq!(r.get("returned"), Some(&Value::Flag(false)));

@@ -2,7 +2,7 @@
 //! readings of the arguments, the physically right T, and the answer's fields.
 
 use glam::DVec3;
-use refraction_kernel::api::Meaning;
+use refraction_kernel::api::{Api, Args, Meaning};
 use refraction_kernel::{Convention, Real};
 use serde_json::Value as Json;
 
@@ -12,6 +12,7 @@ use super::explain;
 use super::readings::{Reading, Tolerance, readings, undo};
 use super::result::{Returns, Seen, returns, transmitted_by};
 use crate::check::{self, Match};
+use crate::diagnosis::{Evidence, Side};
 use crate::solve::{Precision, Request};
 use crate::vector_text::{angle, length};
 
@@ -40,6 +41,17 @@ pub enum Resemblance {
     Formula,
     /// Past the critical angle: some other direction.
     Direction,
+    /// The API's answer with the part along the normal negated: μ·d − b·n for μ·d + b·n.
+    NormalTerm,
+    /// What the API's formula gives without its flip for a ray from the normal's far side.
+    NoFlip,
+    /// The right direction, but a relative index other than the one the API used.
+    Etap {
+        /// The index logged.
+        logged: f64,
+        /// The index the API used.
+        used: f64,
+    },
 }
 
 /// The verdict on one call.
@@ -67,9 +79,10 @@ pub struct Diagnosis {
 
 /// The result mistake and what the result resembles, or `None` when it is the API's answer.
 fn finding<S: Real>(call: &Call, r: &Returns, seen: Seen) -> Option<(Code, Resemblance)> {
-    match seen {
+    let direction = match seen {
         Seen::Nothing(_) if r.may_reflect() => None,
         Seen::Direction(v) if r.is_transmitted(v) => None,
+        _ if without_flip(call, r, seen) => Some((Code::NoFlipInside, Resemblance::NoFlip)),
         Seen::NotFinite(_) if r.may_reflect() => Some((Code::MissedTir, Resemblance::NotFinite)),
         Seen::Direction(v) if r.transmitted.is_none() => {
             let formula = r.formula.is_some_and(|f| r.same(v, f));
@@ -80,10 +93,62 @@ fn finding<S: Real>(call: &Call, r: &Returns, seen: Seen) -> Option<(Code, Resem
             };
             Some((Code::MissedTir, looks))
         }
-        Seen::Nothing(what) => Some((Code::NotTheApiResult, Resemblance::Nothing(what))),
+        Seen::Nothing(what) => Some((Code::FalseTir, Resemblance::Nothing(what))),
         Seen::NotFinite(_) => Some((Code::NotTheApiResult, Resemblance::NotFinite)),
-        Seen::Direction(v) => Some((Code::NotTheApiResult, resemblance::<S>(call, r, v))),
+        Seen::Direction(v) => {
+            let looks = resemblance::<S>(call, r, v);
+            let code = match looks {
+                Resemblance::OtherRoot => Code::OtherRoot,
+                Resemblance::NormalTerm => Code::NormalTermSign,
+                _ => Code::NotTheApiResult,
+            };
+            Some((code, looks))
+        }
+    };
+    direction.or_else(|| etap_finding(call, r, S::EPSILON.to_f64()))
+}
+
+/// What pbrt's `Refract` returns for `args` without its `if (cosTheta_i < 0)` flip (`None` for
+/// its `false`), for a ray from the normal's far side; `None` otherwise or for another API.
+fn unflipped(call: &Call) -> Option<Option<DVec3>> {
+    let Args {
+        incident: wi,
+        normal: n,
+        eta,
+    } = call.args;
+    let cos_i = n.dot(wi);
+    if call.api != Api::Pbrt || cos_i >= 0.0 {
+        return None;
     }
+    let sin2_t = (1.0 - cos_i * cos_i).max(0.0) / (eta * eta);
+    Some((sin2_t < 1.0).then(|| {
+        let cos_t = (1.0 - sin2_t).sqrt();
+        -wi / eta + n * (cos_i / eta - cos_t)
+    }))
+}
+
+/// Whether what came back is what the API gives without its flip, and not what it gives.
+fn without_flip(call: &Call, r: &Returns, seen: Seen) -> bool {
+    match (unflipped(call), seen) {
+        (Some(Some(w)), Seen::Direction(v)) => r.same(v, w),
+        (Some(None), Seen::Nothing(_)) => r.transmitted.is_some(),
+        _ => false,
+    }
+}
+
+/// pbrt's logged `etap` against the one its `Refract` used, where the direction is right.
+fn etap_finding(call: &Call, r: &Returns, epsilon: f64) -> Option<(Code, Resemblance)> {
+    let (logged, used) = (call.etap?, r.etap?);
+    let tolerance = Tolerance::new(&call.digits, epsilon);
+    if tolerance.same_ratio(logged, used) {
+        return None;
+    }
+    let never_inverted = unflipped(call).is_some() && tolerance.same_ratio(logged, call.args.eta);
+    Some(if never_inverted {
+        (Code::NoFlipInside, Resemblance::NoFlip)
+    } else {
+        (Code::NotTheApiResult, Resemblance::Etap { logged, used })
+    })
 }
 
 /// What a wrong direction `v` is, where the API refracts.
@@ -102,6 +167,12 @@ fn resemblance<S: Real>(call: &Call, r: &Returns, v: DVec3) -> Resemblance {
     ];
     if let Some((_, shape)) = shapes.iter().find(|(w, _)| r.same(v, *w)) {
         return *shape;
+    }
+    // μ·d + b·n with b negated: μ·d − b·n = 2μ·d − (μ·d + b·n), as written or normalised.
+    let meaning = call.api.meaning(call.args);
+    let term = 2.0 * meaning.mu * crate::vector_text::unit(meaning.travel) - p;
+    if r.same(v, term) || r.same(v, crate::vector_text::unit(term)) {
+        return Resemblance::NormalTerm;
     }
     let variants = [
         Code::EtaInverted,
@@ -158,7 +229,7 @@ fn alternatives(readings: &[Reading], result: Option<Code>) -> (Vec<Vec<Code>>, 
 }
 
 fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
-    let tolerance = Tolerance::new(call.digits, S::EPSILON.to_f64());
+    let tolerance = Tolerance::new(&call.digits, S::EPSILON.to_f64());
     let returns = returns::<S>(call, &tolerance)?;
     let seen = returns.see(call.got);
     let finding = finding::<S>(call, &returns, seen);
@@ -191,6 +262,42 @@ fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
         right,
         outgoing,
     })
+}
+
+/// What a judged call tells the diagnosis of the whole log: its explanations, the side the
+/// ray arrives from (as `entering` says, or for pbrt and Mitsuba, whose normal may face either
+/// way, the normal's side), whether it is past the critical angle, and, where `entering` is
+/// logged for pbrt or Mitsuba, whether the normal is the outward one.
+#[must_use]
+pub fn evidence(call: &Call, diagnosis: &Diagnosis) -> Evidence {
+    let either_side = matches!(call.api, Api::Pbrt | Api::Mitsuba);
+    // pbrt's and Mitsuba's wi points back along the ray: the normal is on the incoming side
+    // when it points the way wi does. GLSL's I and the book's uv point along the ray.
+    let toward_origin = if either_side {
+        call.args.normal.dot(call.args.incident) > 0.0
+    } else {
+        call.args.normal.dot(call.args.incident) < 0.0
+    };
+    let side = match call.truth.entering {
+        Some(true) => Some(Side::Outside),
+        Some(false) => Some(Side::Inside),
+        None if either_side && toward_origin => Some(Side::Outside),
+        None if either_side => Some(Side::Inside),
+        None => None,
+    };
+    let m = &diagnosis.right;
+    let cos = m.travel.dot(m.normal) / (length(m.travel) * length(m.normal));
+    Evidence {
+        ok: diagnosis.ok,
+        alternatives: diagnosis.alternatives.clone(),
+        side,
+        past_critical: m.mu * m.mu * (1.0 - cos * cos) > 1.0,
+        normal_outward: call
+            .truth
+            .entering
+            .filter(|_| either_side)
+            .map(|entering| toward_origin == entering),
+    }
 }
 
 /// Judges one call in the student's precision.

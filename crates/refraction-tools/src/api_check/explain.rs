@@ -136,7 +136,12 @@ fn argument_sentence(ctx: &Context<'_>, reading: &Reading, code: Code) -> String
             incident_length = spoken(length(a.incident)),
             normal_length = spoken(length(a.normal))
         ),
-        Code::NotTheApiResult | Code::MissedTir => String::new(),
+        Code::NotTheApiResult
+        | Code::MissedTir
+        | Code::NoFlipInside
+        | Code::NormalTermSign
+        | Code::OtherRoot
+        | Code::FalseTir => String::new(),
     }
 }
 
@@ -203,6 +208,12 @@ fn detail(ctx: &Context<'_>, looks: Resemblance) -> String {
             t!("check-looks-off", degrees = spoken(degrees))
         }
         Resemblance::Off(_) => t!("check-looks-off-unmeasurable"),
+        Resemblance::NormalTerm => t!("check-looks-normal-term"),
+        Resemblance::NoFlip => t!("check-looks-no-flip"),
+        Resemblance::Etap { logged, used } => t!("check-looks-etap",
+            logged = spoken(logged),
+            used = spoken(used)
+        ),
         Resemblance::Formula | Resemblance::Direction => String::new(),
     }
 }

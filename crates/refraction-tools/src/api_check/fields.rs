@@ -53,6 +53,13 @@ pub fn names(api: Api) -> Names {
 /// pbrt's return value.
 pub const RETURNED: &str = "returned";
 
+/// The relative index pbrt's `Refract` writes to `*etap`: the ratio it used, after its flip.
+pub const ETAP: &str = "etap";
+
+/// The book's name for whether the ray enters the object (`rec.front_face`), read as
+/// `entering`.
+pub const FRONT_FACE: &str = "front_face";
+
 /// The truth and bookkeeping fields every API's lines may carry, with their kinds.
 pub const COMMON: [(&str, Kind); 7] = [
     ("from", Kind::Number),
@@ -80,6 +87,7 @@ pub fn all(api: Api) -> Vec<(&'static str, Kind)> {
     ];
     if api == Api::Pbrt {
         fields.push((RETURNED, Kind::Flag));
+        fields.push((ETAP, Kind::Number));
     }
     fields.extend(COMMON);
     fields
@@ -88,6 +96,10 @@ pub fn all(api: Api) -> Vec<(&'static str, Kind)> {
 /// Field `name` of `api`'s lines with its kind, or `None` when they have no such field.
 #[must_use]
 pub fn find(api: Api, name: &str) -> Option<(&'static str, Kind)> {
+    let name = match (api, name) {
+        (Api::Rtiow, FRONT_FACE) => "entering",
+        _ => name,
+    };
     all(api).into_iter().find(|(field, _)| *field == name)
 }
 

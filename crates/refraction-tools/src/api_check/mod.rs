@@ -37,6 +37,7 @@ pub use pattern::Pattern;
 pub use record::Record;
 
 use crate::check::{self, Match};
+use crate::diagnosis::{LogTally, Summary};
 
 /// The JSON answer for one call.
 #[derive(Serialize)]
@@ -93,13 +94,15 @@ impl Tally {
         *self.counts.entry(kind).or_default() += 1;
     }
 
-    /// Counts a verdict: `ok`, or each mistake of its likeliest explanation (`unexplained`
-    /// when none fits).
+    /// Counts a verdict: `ok`, or every mistake of its explanations, each once, ties
+    /// included (`unexplained` when none fits).
     pub fn add_verdict(&mut self, diagnosis: &Diagnosis) {
-        match diagnosis.alternatives.first() {
-            _ if diagnosis.ok => self.add("ok"),
-            Some(codes) => codes.iter().for_each(|c| self.add(c.name())),
-            None => self.add("unexplained"),
+        if diagnosis.ok {
+            self.add("ok");
+        } else if diagnosis.mistakes.is_empty() {
+            self.add("unexplained");
+        } else {
+            diagnosis.mistakes.iter().for_each(|c| self.add(c.name()));
         }
     }
 
@@ -216,12 +219,14 @@ impl Reader {
     }
 }
 
-/// What a run keeps as it goes: the paths followed, the tally, whether all was right.
+/// What a run keeps as it goes: the paths followed, the tally, whether all was right, and the
+/// counts the diagnosis of the whole log is made from.
 #[derive(Debug)]
 struct Books {
     paths: Option<paths::Paths>,
     tally: Tally,
     all_ok: bool,
+    log: LogTally,
 }
 
 impl Books {
@@ -232,6 +237,7 @@ impl Books {
             Judged::Unmatched if reader.strict => Err(t!("check-line-not-matching")),
             Judged::Unmatched => {
                 self.tally.add(SKIPPED);
+                self.log.skip();
                 return Ok(String::new());
             }
             Judged::Deferred(line) => match reader.judge_in_order(&line) {
@@ -246,12 +252,14 @@ impl Books {
         match judged.and_then(|judged| ended.map(|ended| (judged, ended))) {
             Ok(((call, diagnosis), ended)) => {
                 self.tally.add_verdict(&diagnosis);
+                self.log.add(&diagnose::evidence(&call, &diagnosis));
                 self.all_ok &= diagnosis.ok;
                 let text = answer_line(&call, &diagnosis);
                 Ok(ended.map_or_else(|| text.clone(), |summary| format!("{summary}\n{text}")))
             }
             Err(e) => {
                 self.tally.add("unreadable");
+                self.log.unreadable();
                 self.all_ok = false;
                 Err(e)
             }
@@ -282,6 +290,7 @@ impl Session {
                 paths: paths.then(paths::Paths::new),
                 tally: Tally::default(),
                 all_ok: true,
+                log: LogTally::default(),
             },
         }
     }
@@ -345,6 +354,12 @@ impl Session {
     #[must_use]
     pub fn tally(&self) -> &Tally {
         &self.books.tally
+    }
+
+    /// The diagnosis of the lines so far, taken as one log.
+    #[must_use]
+    pub fn summary(&self) -> Summary {
+        self.books.log.summary(Some(self.reader.options.api))
     }
 
     /// Whether every line so far was right and every path finished left right.

@@ -5,7 +5,7 @@
 use glam::DVec3;
 use refraction_kernel::api::{Api, Args, Meaning};
 
-use super::call::Call;
+use super::call::{Call, Digits};
 use super::code::Code;
 use crate::vector_text::{angle, length, unit};
 
@@ -17,51 +17,81 @@ const ARGUMENT_MISTAKES: [Code; 4] = [
     Code::NotUnitInput,
 ];
 
-/// How closely logged numbers can be trusted.
+/// Relative rounding of a number written with `digits` significant digits: half a unit in
+/// the last digit written. Few digits are a value, not a rounding: a number written with one
+/// or two (`1.5`, `0`, a vector `0.6, -0.8, 0`) is taken as exact, as are 17 digits or more
+/// (and 0, for a number without digits); a format's precision shows in longer numbers.
+fn rounding(digits: u32) -> f64 {
+    if digits <= 2 || digits >= 17 {
+        0.0
+    } else {
+        0.5 * 10f64.powi(1 - i32::try_from(digits).unwrap_or(17))
+    }
+}
+
+/// How closely each logged number can be trusted: its own rounding, or a few ulps of the
+/// student's working precision.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Tolerance {
-    /// Relative rounding of the logged numbers: half a unit in the last digit written.
-    pub rounding: f64,
+    /// Relative rounding of the incident vector as logged.
+    pub incident: f64,
+    /// Relative rounding of the normal.
+    pub normal: f64,
+    /// Relative rounding of the index ratio.
+    pub eta: f64,
+    /// Relative rounding of what came back.
+    pub result: f64,
+    /// Relative rounding of the logged direction of travel.
+    pub travel: f64,
     /// The machine epsilon of the student's working precision.
     pub epsilon: f64,
 }
 
 impl Tolerance {
-    /// The tolerance for numbers written with `digits` significant digits (0: exact) in a
-    /// precision with machine epsilon `epsilon`.
+    /// The tolerance for numbers written with `digits` in a precision with machine epsilon
+    /// `epsilon`.
     #[must_use]
-    pub fn new(digits: u32, epsilon: f64) -> Self {
-        let rounding = if digits == 0 || digits >= 17 {
-            0.0
-        } else {
-            0.5 * 10f64.powi(1 - i32::try_from(digits).unwrap_or(17))
-        };
-        Self { rounding, epsilon }
+    pub fn new(digits: &Digits, epsilon: f64) -> Self {
+        Self {
+            incident: rounding(digits.incident),
+            normal: rounding(digits.normal),
+            eta: rounding(digits.eta),
+            result: rounding(digits.result),
+            travel: rounding(digits.travel),
+            epsilon,
+        }
     }
 
-    /// The relative error a number may carry: its rounding, or a few ulps of working precision.
+    /// The coarsest rounding of the call's arguments, by which they may be moved.
     #[must_use]
-    pub fn relative(&self) -> f64 {
-        4.0 * self.rounding + 16.0 * self.epsilon
+    pub fn arguments(&self) -> f64 {
+        self.incident.max(self.normal).max(self.eta)
     }
 
-    /// Whether `v` is unit length within the logged rounding.
-    #[must_use]
-    pub fn is_unit(&self, v: DVec3) -> bool {
-        (length(v) - 1.0).abs() <= self.relative()
+    /// The relative error a number rounded by `rounding` may carry, or a few ulps.
+    fn relative(&self, rounding: f64) -> f64 {
+        4.0 * rounding + 16.0 * self.epsilon
     }
 
-    /// Whether two ratios are the same number as logged.
+    /// Whether the incident vector and the normal are unit length, each within its own
+    /// rounding.
+    #[must_use]
+    pub fn unit_arguments(&self, args: &Args<f64>) -> bool {
+        (length(args.incident) - 1.0).abs() <= self.relative(self.incident)
+            && (length(args.normal) - 1.0).abs() <= self.relative(self.normal)
+    }
+
+    /// Whether a ratio derived from the logged eta is `mu` as given.
     #[must_use]
     pub fn same_ratio(&self, a: f64, b: f64) -> bool {
-        (a / b - 1.0).abs() <= self.relative()
+        (a / b - 1.0).abs() <= self.relative(self.eta)
     }
 
-    /// Whether two directions are the same as logged (a tracer's own direction may be written
-    /// with fewer digits, and unnormalised).
+    /// Whether the direction of travel derived from the incident vector is the logged one (a
+    /// tracer's own direction may be written with fewer digits, and unnormalised).
     #[must_use]
     pub fn same_direction(&self, a: DVec3, b: DVec3) -> bool {
-        angle(a, b) <= (8.0 * self.rounding).max(1e-3)
+        angle(a, b) <= (8.0 * self.incident.max(self.travel)).max(1e-3)
     }
 }
 
@@ -89,7 +119,13 @@ pub fn undo(codes: &[Code], args: Args<f64>) -> Args<f64> {
                 right.incident = unit(right.incident);
                 right.normal = unit(right.normal);
             }
-            Code::NotTheApiResult | Code::MissedTir => {}
+            // Result mistakes: the arguments are as the call passed them.
+            Code::NotTheApiResult
+            | Code::MissedTir
+            | Code::NoFlipInside
+            | Code::NormalTermSign
+            | Code::OtherRoot
+            | Code::FalseTir => {}
         }
     }
     right
@@ -98,7 +134,7 @@ pub fn undo(codes: &[Code], args: Args<f64>) -> Args<f64> {
 /// The reading with `codes` if it fits: `not_unit_input` exactly when an input is not unit,
 /// the API's contract, and every truth given.
 fn fit(call: &Call, codes: Vec<Code>, tolerance: &Tolerance) -> Option<Reading> {
-    let unit_input = tolerance.is_unit(call.args.incident) && tolerance.is_unit(call.args.normal);
+    let unit_input = tolerance.unit_arguments(&call.args);
     if codes.contains(&Code::NotUnitInput) == unit_input {
         return None;
     }
@@ -189,14 +225,15 @@ mod tests {
             got: Got::Nothing,
             truth,
             precision: Precision::F64,
-            digits: 17,
+            digits: Digits::all(17),
             path: None,
             point: None,
+            etap: None,
         }
     }
 
     fn codes(call: &Call) -> Vec<Vec<Code>> {
-        let tolerance = Tolerance::new(call.digits, f64::EPSILON);
+        let tolerance = Tolerance::new(&call.digits, f64::EPSILON);
         readings(call, &tolerance)
             .into_iter()
             .map(|r| r.codes)

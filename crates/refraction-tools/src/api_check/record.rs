@@ -6,7 +6,7 @@ use refraction_kernel::api::Api;
 use serde_json::Value as Json;
 
 use super::fields::{self, Kind};
-use crate::vector_text::{digits_of, parse_number, parse_vector};
+use crate::vector_text::{digits_of, json_vector_digits, parse_number, parse_vector};
 
 /// One field's value.
 #[derive(Clone, Debug, PartialEq)]
@@ -23,12 +23,10 @@ pub enum Value {
     Label(String),
 }
 
-/// The fields of one logged call.
+/// The fields of one logged call, each with the significant digits it was written with.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Record {
-    values: Vec<(&'static str, Value)>,
-    /// The most significant digits any number in the line was written with (17 when exact).
-    pub digits: u32,
+    values: Vec<(&'static str, Value, u32)>,
 }
 
 fn flag_text(text: &str) -> Option<bool> {
@@ -87,13 +85,10 @@ fn json_vector(value: &Json, name: &str) -> Result<(Value, u32), String> {
         Json::String(text) => from_text(Kind::Vector, name, text),
         Json::Array(items) if items.len() == 3 => {
             let mut out = [0.0; 3];
-            let mut digits = 0;
             for (i, (slot, item)) in out.iter_mut().zip(items).enumerate() {
-                let (x, d) = json_number(item, &format!("{name}[{i}]"))?;
-                *slot = x;
-                digits = digits.max(d);
+                *slot = json_number(item, &format!("{name}[{i}]"))?.0;
             }
-            Ok((Value::Vector(out), digits))
+            Ok((Value::Vector(out), json_vector_digits(out)))
         }
         Json::Array(items) => {
             let n = items.len();
@@ -128,12 +123,25 @@ impl Record {
     /// where null means something, as for pbrt's `wt`).
     #[must_use]
     pub fn get(&self, name: &str) -> Option<&Value> {
-        self.values.iter().find(|(n, _)| *n == name).map(|(_, v)| v)
+        self.values
+            .iter()
+            .find(|(n, ..)| *n == name)
+            .map(|(_, v, _)| v)
+    }
+
+    /// The significant digits field `name` was written with: a vector's most precise
+    /// component; 0 for a field without numbers, one absent, or a number written exactly
+    /// (17 digits or more, `%a`).
+    #[must_use]
+    pub fn digits(&self, name: &str) -> u32 {
+        self.values
+            .iter()
+            .find(|(n, ..)| *n == name)
+            .map_or(0, |(.., digits)| *digits)
     }
 
     fn push(&mut self, name: &'static str, (value, digits): (Value, u32)) {
-        self.digits = self.digits.max(digits);
-        self.values.push((name, value));
+        self.values.push((name, value, digits));
     }
 
     /// Reads one JSON line of `api`'s fields; other fields are ignored.
@@ -200,7 +208,8 @@ mod tests {
         )
         .unwrap();
         assert_eq!(json, text);
-        assert_eq!(json.digits, 6);
+        assert_eq!(json.digits("refracted"), 7, "0.916515: six places");
+        assert_eq!(json.digits("n"), 1, "0 1 0: no places");
         assert_eq!(json.get("entering"), Some(&Value::Flag(true)));
     }
 

@@ -30,6 +30,8 @@ pub struct Returns {
     pub distance: f64,
     /// The mirror reflection of the ray at this surface.
     pub reflection: DVec3,
+    /// The relative index the API says it used (pbrt's `etap`), where it transmits.
+    pub etap: Option<f64>,
 }
 
 fn wide<S: Real>(v: S::Vec3) -> DVec3 {
@@ -127,7 +129,7 @@ pub fn transmitted_by<S: Real>(api: Api, args: Args<f64>) -> Option<DVec3> {
 pub fn returns<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<Returns, String> {
     let returned = call.api.call(narrow::<S>(call.args)?);
     let transmitted = returned.transmitted().map(wide::<S>);
-    let step = (2.0 * tolerance.rounding).max(8.0 * tolerance.epsilon);
+    let step = (2.0 * tolerance.arguments()).max(8.0 * tolerance.epsilon);
     let nearby: Vec<Option<DVec3>> = moved(call.args, step)
         .into_iter()
         .map(|args| transmitted_by::<S>(call.api, args))
@@ -152,8 +154,12 @@ pub fn returns<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<Returns, S
         formula: returned.formula().map(wide::<S>),
         nearby,
         borderline,
-        distance: 2.0 * spread + 4.0 * tolerance.rounding * size + 16.0 * tolerance.epsilon,
+        distance: 2.0 * spread + 4.0 * tolerance.result * size + 16.0 * tolerance.epsilon,
         reflection: d - n * (2.0 * d.dot(n) / n.length_squared()),
+        etap: match &returned {
+            Returned::Pbrt(Some(r)) => Some(r.etap.to_f64()),
+            _ => None,
+        },
     })
 }
 
