@@ -14,6 +14,7 @@ use refraction_diagram::palette::Theme;
 use refraction_explorer::app::View;
 use refraction_i18n::Locale;
 use refraction_scene::DEFAULT_SCENE;
+use refraction_tools::api_check::Dialect;
 
 /// Makes refraction visible: a trig-free refraction kernel, its four sign candidates, and an
 /// interactive explorer (opened when no subcommand is given).
@@ -109,17 +110,22 @@ enum Command {
     /// "convention" ("along_ray" | "toward_origin") and "precision" ("f64" | "f32").
     /// Exit status 0 when every line was solved, 1 when any line was an error.
     Solve,
-    /// Check the T your ray tracer produced: JSON Lines with the `solve` fields plus
-    /// "t_yours" (an array, or a string such as "vec3(0.1, -0.9, 0)"), from FILE or stdin.
+    /// Check the T your ray tracer produced, line by line and as a whole log: which mistake in
+    /// your code explains the lines that are wrong, and its fix.
+    ///
+    /// Without --api, each line (JSON Lines from FILE or stdin, a --pattern log or --csv) has
+    /// the `solve` fields "w", "n", "mu_i", "mu_t" (or "entering" with --inside and
+    /// --outside), "t_yours" (your T: an array, a string such as "vec3(0.1, -0.9, 0)", or null
+    /// where your code reported total internal reflection) and optionally "ratio" (the ratio
+    /// your code used). With --api, each line is the call your code made in that API's own
+    /// terms (glsl: I, N, eta, result; pbrt: wi, n, eta, returned, wt, etap; rtiow: uv, n,
+    /// etai_over_etat, refracted, front_face; mitsuba: wi, n, eta, wo), with optional truth
+    /// "from", "to", "travel", "entering".
     ///
     /// Answers each line with "ok", "matches" (chosen, wrong_side, wrong_bend, reversed,
-    /// total_internal_reflection or null) and "explanation"; a summary of the mistakes goes to
-    /// stderr. Exit status 0 when every line is ok, 1 otherwise.
-    ///
-    /// With --api, each line is the call your code made in that API's own terms (glsl:
-    /// {"I","N","eta","result"}; pbrt: {"wi","n","eta","returned","wt"}; rtiow:
-    /// {"uv","n","etai_over_etat","refracted"}; mitsuba: {"wi","n","eta","wo"}), with optional
-    /// truth "from", "to", "travel", "entering"; the answer adds "api_result" and "mistakes".
+    /// total_internal_reflection or null), "explanation" and "mistakes"; the tally and the
+    /// diagnosis of the whole log go to stderr (and with --summary to a JSON file). Exit
+    /// status 0 when every line is ok, 1 otherwise.
     Check {
         /// JSON Lines file to read (stdin when absent).
         file: Option<PathBuf>,
@@ -127,22 +133,27 @@ enum Command {
         #[arg(long, value_name = "NAME", value_parser = commands::lines::parse_api)]
         api: Option<refraction_kernel::api::Api>,
         /// The index inside the object: with --outside, "entering" gives "from" and "to".
-        #[arg(long, value_name = "X", requires_all = ["api", "outside"])]
+        #[arg(long, value_name = "X", requires = "outside", value_parser = commands::lines::parse_index)]
         inside: Option<f64>,
         /// The index outside the object.
-        #[arg(long, value_name = "Y", requires_all = ["api", "inside"])]
+        #[arg(long, value_name = "Y", requires = "inside", value_parser = commands::lines::parse_index)]
         outside: Option<f64>,
         /// The precision your code computes in, unless a line says (default: f32 for glsl,
-        /// pbrt and mitsuba, f64 for rtiow).
-        #[arg(long, value_name = "f32|f64", requires = "api", value_parser = commands::lines::parse_precision)]
+        /// pbrt and mitsuba, f64 for rtiow and without --api).
+        #[arg(long, value_name = "f32|f64", value_parser = commands::lines::parse_precision)]
         precision: Option<refraction_tools::solve::Precision>,
         /// Read printf-style log lines: each {field} takes a number or a vector as programs
         /// print it, {_} anything; lines that do not match are skipped and counted.
-        #[arg(long, value_name = "PATTERN", requires = "api", conflicts_with = "csv")]
+        #[arg(long, value_name = "PATTERN", conflicts_with = "csv")]
         pattern: Option<String>,
         /// Read CSV with a header line naming the fields.
-        #[arg(long, requires = "api")]
+        #[arg(long)]
         csv: bool,
+        /// Also write the diagnosis of the whole log to this JSON file: {"lines", "judged",
+        /// "ok", "skipped", "diagnosis": [{"code", "lines", "where", "fix"}, ...]}, the verdict
+        /// first ("none" when nothing is wrong).
+        #[arg(long, value_name = "FILE.json")]
+        summary: Option<PathBuf>,
         /// With --pattern, answer a line that does not match with an error instead of skipping it.
         #[arg(long, requires = "pattern")]
         strict: bool,
@@ -224,11 +235,8 @@ fn main() -> ExitCode {
     match cli.command {
         Some(Command::Solve) => commands::lines::solve(),
         Some(Command::Check {
-            file, api: None, ..
-        }) => commands::lines::check(file.as_deref()),
-        Some(Command::Check {
             file,
-            api: Some(api),
+            api,
             inside,
             outside,
             precision,
@@ -236,10 +244,11 @@ fn main() -> ExitCode {
             csv,
             strict,
             paths,
-        }) => commands::lines::check_api(
+            summary,
+        }) => commands::lines::check(
             file.as_deref(),
             &refraction_tools::api_check::Options {
-                api,
+                dialect: api.map_or(Dialect::Physics, Dialect::Api),
                 inside,
                 outside,
                 precision,
@@ -249,6 +258,7 @@ fn main() -> ExitCode {
                 csv,
                 strict,
                 paths,
+                summary: summary.as_deref(),
             },
         ),
         Some(Command::Bench { quick, json, plot }) => {

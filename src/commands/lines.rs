@@ -1,14 +1,11 @@
 //! `solve` and `check`: JSON Lines in, one answer per line out.
 
-use std::collections::BTreeMap;
 use std::io::{self, BufRead, Write as _};
 use std::path::Path;
 use std::process::ExitCode;
 
 use refraction_kernel::api::Api;
 use refraction_tools::api_check::{Format, Options, Pattern, Session};
-use refraction_tools::check::{self, Match};
-use refraction_tools::error::CheckError;
 use refraction_tools::solve::Precision;
 use refraction_tools::{self as jsonl, LinesError, solve as solver};
 
@@ -67,7 +64,7 @@ fn open_input(file: Option<&Path>) -> Result<(Box<dyn BufRead>, String), ExitCod
     }
 }
 
-/// How `check --api` reads its lines.
+/// How `check` reads its lines and what it writes besides the answers.
 pub struct Reading<'a> {
     /// `--pattern`.
     pub pattern: Option<&'a str>,
@@ -77,18 +74,41 @@ pub struct Reading<'a> {
     pub strict: bool,
     /// `--paths`.
     pub paths: bool,
+    /// `--summary`: the file the diagnosis of the whole log goes to.
+    pub summary: Option<&'a Path>,
 }
 
-/// Runs `check --api` on `file` or stdin, with a tally of the mistakes on stderr.
-pub fn check_api(file: Option<&Path>, options: &Options, reading: &Reading<'_>) -> ExitCode {
+/// Reads `--inside` and `--outside`: an index of refraction, a finite number > 0.
+///
+/// # Errors
+/// Anything else; the message says what was given.
+pub fn parse_index(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(x) if x.is_finite() && x > 0.0 => Ok(x),
+        Ok(x) => Err(format!(
+            "an index of refraction must be a finite number > 0, not {x}"
+        )),
+        Err(e) => Err(format!("\"{text}\" is not a number: {e}")),
+    }
+}
+
+/// Runs `check` (with `--api`, in that API's terms) on `file` or stdin: an answer per line on
+/// stdout, the tally and the diagnosis of the whole log on stderr, and with `--summary` the
+/// diagnosis as JSON in that file.
+pub fn check(file: Option<&Path>, options: &Options, reading: &Reading<'_>) -> ExitCode {
     let format = match (reading.pattern, reading.csv) {
-        (Some(text), _) => match Pattern::parse(options.api, text) {
+        (Some(text), _) => match Pattern::parse(options.dialect, text) {
             Ok(pattern) => Format::Pattern(pattern),
             Err(e) => return fail("check", &e),
         },
         (None, true) => Format::Csv,
         (None, false) => Format::JsonLines,
     };
+    if let Some(path) = reading.summary
+        && let Err(e) = refraction_files::check_writable(path)
+    {
+        return fail("check", &format!("cannot write {}: {e}", path.display()));
+    }
     let (input, name) = match open_input(file) {
         Ok(input) => input,
         Err(code) => return code,
@@ -104,62 +124,33 @@ pub fn check_api(file: Option<&Path>, options: &Options, reading: &Reading<'_>) 
             }
             Ok(answered)
         });
-    match result {
-        Ok(answered) => finished(&session.tally().summary(), answered && session.all_ok()),
-        Err(e) => stopped("check", &name, &e),
+    let answered = match result {
+        Ok(answered) => answered,
+        Err(e) => return stopped("check", &name, &e),
+    };
+    let summary = session.summary();
+    if let Some(path) = reading.summary {
+        let json = format!("{}\n", serde_json::json!(summary));
+        if let Err(e) = refraction_files::write_atomically(path, json.as_bytes()) {
+            return fail("check", &format!("cannot write {}: {e}", path.display()));
+        }
     }
+    let mut tally = format!("check: {}", session.tally().summary());
+    for sentence in summary.sentences() {
+        tally = format!("{tally}\ncheck: {sentence}");
+    }
+    finished(&tally, answered && session.all_ok())
 }
 
 /// The exit status of a `check` run that read all its input: the tally goes to stderr (losing
 /// it is a failure, status 2), then status 0 if `all_ok` and 1 if not.
 fn finished(tally: &str, all_ok: bool) -> ExitCode {
-    if output::to_stderr(&format!("check: {tally}")).is_err() {
+    if output::to_stderr(tally).is_err() {
         // The tally is part of check's output: losing it is a failure.
         ExitCode::from(2)
     } else if all_ok {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
-    }
-}
-
-/// Runs `check` on `file` or stdin, with a tally of the mistakes on stderr.
-pub fn check(file: Option<&Path>) -> ExitCode {
-    let (input, name) = match open_input(file) {
-        Ok(input) => input,
-        Err(code) => return code,
-    };
-    let mut tally: BTreeMap<&'static str, usize> = BTreeMap::new();
-    let mut all_ok = true;
-    let finish = |answer: Result<(String, check::Verdict), CheckError>| {
-        let (kind, reply) = match answer {
-            Ok((text, verdict)) => {
-                all_ok &= verdict.ok;
-                let kind = match (verdict.ok, verdict.matches) {
-                    (true, _) => "ok",
-                    (false, Some(Match::Chosen)) => "not unit length",
-                    (false, Some(m)) => m.name(),
-                    (false, None) => "matching no candidate",
-                };
-                (kind, Ok(text))
-            }
-            Err(e) => ("unreadable", Err(e)),
-        };
-        *tally.entry(kind).or_default() += 1;
-        reply
-    };
-    let result = jsonl::answer_lines(
-        input,
-        io::stdout().lock(),
-        jsonl::threads(),
-        check::answer,
-        finish,
-    );
-    match result {
-        Ok(answered) => {
-            let summary: Vec<String> = tally.iter().map(|(k, n)| format!("{n} {k}")).collect();
-            finished(&summary.join(", "), answered && all_ok)
-        }
-        Err(e) => stopped("check", &name, &e),
     }
 }

@@ -32,7 +32,7 @@ pub enum Side {
 }
 
 /// What one judged line tells the diagnosis of the whole log.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Evidence {
     /// Whether the line is right.
     pub ok: bool,
@@ -85,7 +85,7 @@ impl Census {
 }
 
 /// The counts a log's diagnosis is made from, added to line by line.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct LogTally {
     failing: BTreeMap<Kind, usize>,
     judged: Census,
@@ -97,7 +97,7 @@ pub struct LogTally {
 }
 
 /// One finding of the diagnosis: a mistake (or none), the lines it explains and the fix.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Finding {
     /// The mistake's code, `none` for a log without one.
     pub code: &'static str,
@@ -117,7 +117,7 @@ pub struct Finding {
 }
 
 /// The `--summary` file: the counts and the ranked diagnosis, the verdict first.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Summary {
     /// Lines read (the non-empty ones).
     pub lines: usize,
@@ -129,6 +129,54 @@ pub struct Summary {
     pub skipped: usize,
     /// The findings, the verdict first.
     pub diagnosis: Vec<Finding>,
+}
+
+impl Finding {
+    /// The finding in a sentence: the verdict's (`first`) or a later one's.
+    #[must_use]
+    pub fn sentence(&self, first: bool) -> String {
+        let Some(code) = Code::named(self.code) else {
+            return t!("check-diagnosis-none", place = &self.place);
+        };
+        let (name, meaning, place, fix) = (self.code, code.meaning(), &self.place, &self.fix);
+        let mut text = if first {
+            t!(
+                "check-diagnosis-verdict",
+                code = name,
+                meaning = meaning,
+                place = place,
+                fix = fix
+            )
+        } else {
+            t!(
+                "check-diagnosis-also",
+                code = name,
+                meaning = meaning,
+                place = place,
+                fix = fix
+            )
+        };
+        if !self.alike.is_empty() {
+            let (alike, fields) = (self.alike.join(", "), self.tell_apart.join(", "));
+            text = format!(
+                "{text} {}",
+                t!("check-diagnosis-alike", alike = alike, fields = fields)
+            );
+        }
+        text
+    }
+}
+
+impl Summary {
+    /// The diagnosis in sentences, the verdict first.
+    #[must_use]
+    pub fn sentences(&self) -> Vec<String> {
+        self.diagnosis
+            .iter()
+            .enumerate()
+            .map(|(i, finding)| finding.sentence(i == 0))
+            .collect()
+    }
 }
 
 /// A hypothesis being ranked: a set of mistakes and the failing lines it explains.
@@ -370,14 +418,23 @@ fn prior(api: Option<Api>, code: Code) -> u32 {
     }
 }
 
-/// The logged fields that would tell the mistakes `a` from `b`.
+/// The logged fields that would tell the mistakes `a` from `b`: the ray's direction of travel
+/// shows which way the incident vector points; whether the ray enters shows which mistakes
+/// depend on the side (the ratio, the normal's side, the flip, the root where only leaving rays
+/// fail).
 fn telling_fields(a: &[Code], b: &[Code]) -> Vec<&'static str> {
     let differ = |code: Code| a.contains(&code) != b.contains(&code);
     let mut fields = Vec::new();
-    if differ(Code::IncidentReversed) || differ(Code::NormalNotFacing) {
+    if differ(Code::IncidentReversed) {
         fields.push("travel");
     }
-    if differ(Code::EtaInverted) || differ(Code::NoFlipInside) {
+    let sided = [
+        Code::EtaInverted,
+        Code::NoFlipInside,
+        Code::OtherRoot,
+        Code::NormalNotFacing,
+    ];
+    if sided.into_iter().any(differ) {
         fields.push("entering");
     }
     fields

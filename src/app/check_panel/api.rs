@@ -402,7 +402,10 @@ mod tests {
     fn every_api_shows_its_own_fields_and_the_truth() {
         let [own, truth] = shown_fields(Api::Pbrt);
         let own: Vec<&str> = own.iter().map(|(n, _)| *n).collect();
-        assert_eq!(own, ["wi", "n", "eta", "wt", "returned", "precision"]);
+        assert_eq!(
+            own,
+            ["wi", "n", "eta", "wt", "returned", "etap", "precision"]
+        );
         let truth: Vec<&str> = truth.iter().map(|(n, _)| *n).collect();
         assert_eq!(truth, TRUTH);
     }

@@ -314,3 +314,9 @@ check-fix-generic-missed-tir = reflektiere, wenn k = 1 − μ²·(1 − cos²θi
 check-fix-generic-false-tir = melde Totalreflexion nur, wo k = 1 − μ²·(1 − cos²θi) negativ ist
 check-fix-generic-not-unit-input = normiere W und N, bevor du brichst
 check-fix-generic-not-the-api-result = vergleiche deine Brechung in den genannten Zeilen mit T = μ·W + (μ·cosθi − √k)·N, wie es die Erklärung jeder Zeile sagt
+check-physics-no-indices = keine Brechungsindizes: gib `mu_i` und `mu_t` an, oder `entering` mit --inside und --outside
+check-physics-unknown-convention = unbekannte Konvention "{ $text }": erwartet "along_ray" oder "toward_origin"
+check-diagnosis-none = Kein Fehler: Das Log stimmt { $place }.
+check-diagnosis-verdict = Der Fehler: { $code } ({ $meaning }), { $place }. Behebung: { $fix }.
+check-diagnosis-also = Außerdem: { $code } ({ $meaning }), { $place }. Behebung: { $fix }.
+check-diagnosis-alike = Das Log kann ihn nicht von { $alike } unterscheiden; protokolliere { $fields }, um sie zu unterscheiden.

@@ -308,3 +308,9 @@ check-fix-generic-missed-tir = reflect when k = 1 − μ²·(1 − cos²θi) is 
 check-fix-generic-false-tir = report total internal reflection only where k = 1 − μ²·(1 − cos²θi) is negative
 check-fix-generic-not-unit-input = normalise W and N before refracting
 check-fix-generic-not-the-api-result = compare your refraction with T = μ·W + (μ·cosθi − √k)·N on the lines listed, as each line's explanation says
+check-physics-no-indices = no indices: give `mu_i` and `mu_t`, or `entering` with --inside and --outside
+check-physics-unknown-convention = unknown convention "{ $text }": expected "along_ray" or "toward_origin"
+check-diagnosis-none = No mistake: the log is right { $place }.
+check-diagnosis-verdict = The bug: { $code } ({ $meaning }), { $place }. Fix: { $fix }.
+check-diagnosis-also = Also: { $code } ({ $meaning }), { $place }. Fix: { $fix }.
+check-diagnosis-alike = The log cannot tell it from { $alike }; log { $fields } to tell them apart.

@@ -311,3 +311,9 @@ check-fix-generic-missed-tir = refleja cuando k = 1 − μ²·(1 − cos²θi) e
 check-fix-generic-false-tir = indica reflexión total interna solo donde k = 1 − μ²·(1 − cos²θi) es negativo
 check-fix-generic-not-unit-input = normaliza W y N antes de refractar
 check-fix-generic-not-the-api-result = compara tu refracción con T = μ·W + (μ·cosθi − √k)·N en las líneas indicadas, como dice la explicación de cada una
+check-physics-no-indices = faltan los índices: da `mu_i` y `mu_t`, o `entering` con --inside y --outside
+check-physics-unknown-convention = convención desconocida "{ $text }": se esperaba "along_ray" o "toward_origin"
+check-diagnosis-none = Ningún error: el registro es correcto { $place }.
+check-diagnosis-verdict = El error: { $code } ({ $meaning }), { $place }. Corrección: { $fix }.
+check-diagnosis-also = Además: { $code } ({ $meaning }), { $place }. Corrección: { $fix }.
+check-diagnosis-alike = El registro no lo distingue de { $alike }; registra { $fields } para distinguirlos.

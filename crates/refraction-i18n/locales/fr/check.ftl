@@ -311,3 +311,9 @@ check-fix-generic-missed-tir = réfléchis quand k = 1 − μ²·(1 − cos²θi
 check-fix-generic-false-tir = n’annonce une réflexion totale interne que là où k = 1 − μ²·(1 − cos²θi) est négatif
 check-fix-generic-not-unit-input = normalise W et N avant de réfracter
 check-fix-generic-not-the-api-result = compare ta réfraction avec T = μ·W + (μ·cosθi − √k)·N sur les lignes indiquées, comme le dit l’explication de chacune
+check-physics-no-indices = pas d’indices : donne `mu_i` et `mu_t`, ou `entering` avec --inside et --outside
+check-physics-unknown-convention = convention inconnue « { $text } » : attendu "along_ray" ou "toward_origin"
+check-diagnosis-none = Aucune erreur : le journal est juste { $place }.
+check-diagnosis-verdict = L’erreur : { $code } ({ $meaning }), { $place }. Correction : { $fix }.
+check-diagnosis-also = Aussi : { $code } ({ $meaning }), { $place }. Correction : { $fix }.
+check-diagnosis-alike = Le journal ne la distingue pas de { $alike } ; journalise { $fields } pour les distinguer.

@@ -312,3 +312,9 @@ check-fix-generic-missed-tir = reflita quando k = 1 − μ²·(1 − cos²θi) f
 check-fix-generic-false-tir = indique reflexão interna total só onde k = 1 − μ²·(1 − cos²θi) for negativo
 check-fix-generic-not-unit-input = normalize W e N antes de refratar
 check-fix-generic-not-the-api-result = compare sua refração com T = μ·W + (μ·cosθi − √k)·N nas linhas indicadas, como diz a explicação de cada uma
+check-physics-no-indices = faltam os índices: dê `mu_i` e `mu_t`, ou `entering` com --inside e --outside
+check-physics-unknown-convention = convenção desconhecida "{ $text }": esperava "along_ray" ou "toward_origin"
+check-diagnosis-none = Nenhum erro: o log está certo { $place }.
+check-diagnosis-verdict = O erro: { $code } ({ $meaning }), { $place }. Correção: { $fix }.
+check-diagnosis-also = Também: { $code } ({ $meaning }), { $place }. Correção: { $fix }.
+check-diagnosis-alike = O log não o distingue de { $alike }; registre { $fields } para distingui-los.

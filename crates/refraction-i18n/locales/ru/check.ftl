@@ -325,3 +325,9 @@ check-fix-generic-missed-tir = отражайте, когда k = 1 − μ²·(1
 check-fix-generic-false-tir = сообщайте о полном внутреннем отражении только там, где k = 1 − μ²·(1 − cos²θi) отрицательно
 check-fix-generic-not-unit-input = нормируйте W и N перед преломлением
 check-fix-generic-not-the-api-result = сравните своё преломление с T = μ·W + (μ·cosθi − √k)·N в указанных строках, как сказано в объяснении каждой
+check-physics-no-indices = нет показателей преломления: укажите `mu_i` и `mu_t` или `entering` вместе с --inside и --outside
+check-physics-unknown-convention = неизвестное соглашение "{ $text }": ожидалось "along_ray" или "toward_origin"
+check-diagnosis-none = Ошибок нет: журнал верен { $place }.
+check-diagnosis-verdict = Ошибка: { $code } ({ $meaning }), { $place }. Исправление: { $fix }.
+check-diagnosis-also = Кроме того: { $code } ({ $meaning }), { $place }. Исправление: { $fix }.
+check-diagnosis-alike = По журналу её нельзя отличить от { $alike }; запишите { $fields }, чтобы различить их.

@@ -6,15 +6,15 @@ use glam::DVec3;
 use refraction_i18n::{decimal, t};
 use refraction_kernel::api::{Api, Args};
 
-use super::fields::{self, names};
+use super::fields::{self, Dialect, names};
 use super::record::{Record, Value};
 use crate::solve::Precision;
 
 /// What the command line adds to every line.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Options {
-    /// The API the lines were logged from.
-    pub api: Api,
+    /// The API the lines were logged from, or any renderer's own refraction.
+    pub dialect: Dialect,
     /// `--inside`: the index inside the object, so that `entering` gives `from` and `to`.
     pub inside: Option<f64>,
     /// `--outside`: the index outside the object.
@@ -24,15 +24,21 @@ pub struct Options {
 }
 
 impl Options {
-    /// Options for `api` with nothing else given.
+    /// Options for `dialect` (an API, or [`Dialect::Physics`]) with nothing else given.
     #[must_use]
-    pub fn new(api: Api) -> Self {
+    pub fn new(dialect: impl Into<Dialect>) -> Self {
         Self {
-            api,
+            dialect: dialect.into(),
             inside: None,
             outside: None,
             precision: None,
         }
+    }
+
+    /// `--inside` and `--outside`, when both are given.
+    #[must_use]
+    pub fn sides(&self) -> Option<(f64, f64)> {
+        self.inside.zip(self.outside)
     }
 }
 
@@ -181,7 +187,7 @@ fn truth(record: &Record, options: &Options) -> Result<Truth, String> {
         (None, None) => None,
         _ => return Err(t!("check-from-and-to-together")),
     };
-    let sides = options.inside.zip(options.outside);
+    let sides = options.sides();
     let from_sides = entering.zip(sides).map(|(entering, (inside, outside))| {
         if entering {
             (outside, inside)
@@ -221,7 +227,7 @@ fn precision(record: &Record, options: &Options) -> Result<Precision, String> {
     match label(record, "precision").as_deref() {
         None => Ok(options
             .precision
-            .unwrap_or_else(|| fields::usual_precision(options.api))),
+            .unwrap_or_else(|| fields::usual_precision(options.dialect))),
         Some("f32" | "float") => Ok(Precision::F32),
         Some("f64" | "double") => Ok(Precision::F64),
         Some(other) => Err(t!("check-unknown-precision", text = other)),
@@ -235,7 +241,11 @@ impl Call {
     /// A missing or ill-typed field, a non-finite or zero argument vector, an eta that is not
     /// a finite number > 0; the message names the field.
     pub fn from_record(record: &Record, options: &Options) -> Result<Self, String> {
-        let api = options.api;
+        let Dialect::Api(api) = options.dialect else {
+            // untranslated: a programmer's mistake, never a user's
+            const NO_API: &str = "a call needs an API: judge any renderer's lines with physics";
+            return Err(NO_API.into());
+        };
         let n = names(api);
         let normal = if api == Api::Mitsuba && record.get(n.normal).is_none() {
             DVec3::Z

@@ -5,7 +5,7 @@
 use refraction_i18n::t;
 use refraction_kernel::api::Api;
 
-use super::fields::{self, Kind, names};
+use super::fields::{self, Dialect, Kind, names};
 use super::record::Record;
 
 /// What one column holds.
@@ -22,7 +22,7 @@ enum Column {
 /// A parsed CSV header.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Header {
-    api: Api,
+    dialect: Dialect,
     columns: Vec<Column>,
 }
 
@@ -55,8 +55,8 @@ pub fn cells(line: &str) -> Result<Vec<String>, String> {
     Ok(out.into_iter().map(|c| c.trim().to_owned()).collect())
 }
 
-fn column(api: Api, name: &str) -> Column {
-    if let Some((field, _)) = fields::find(api, name) {
+fn column(dialect: Dialect, name: &str) -> Column {
+    if let Some((field, _)) = fields::find(dialect, name) {
         return Column::Field(field);
     }
     for (axis, suffixes) in [
@@ -70,7 +70,7 @@ fn column(api: Api, name: &str) -> Column {
         for suffix in suffixes {
             let vector = name
                 .strip_suffix(suffix)
-                .and_then(|base| fields::find(api, base));
+                .and_then(|base| fields::find(dialect, base));
             if let Some((field, Kind::Vector | Kind::VectorOrNull)) = vector {
                 return Column::Component(field, axis);
             }
@@ -80,12 +80,13 @@ fn column(api: Api, name: &str) -> Column {
 }
 
 impl Header {
-    /// Reads the header line for `api`.
+    /// Reads the header line for `dialect`.
     ///
     /// # Errors
     /// A missing argument or result column, a vector with only some of its components.
-    pub fn parse(api: Api, line: &str) -> Result<Self, String> {
-        let columns: Vec<Column> = cells(line)?.iter().map(|c| column(api, c)).collect();
+    pub fn parse(dialect: impl Into<Dialect>, line: &str) -> Result<Self, String> {
+        let dialect = dialect.into();
+        let columns: Vec<Column> = cells(line)?.iter().map(|c| column(dialect, c)).collect();
         let has = |field: &str| {
             columns.iter().any(|c| match c {
                 Column::Field(f) => *f == field,
@@ -93,18 +94,26 @@ impl Header {
                 Column::Ignored => false,
             })
         };
-        let n = names(api);
-        let needed = [n.incident, n.normal, n.eta, n.result];
+        let needed = match dialect {
+            Dialect::Api(api) => {
+                let n = names(api);
+                vec![n.incident, n.normal, n.eta, n.result]
+            }
+            Dialect::Physics => vec!["w", "n", "t_yours"],
+        };
         for field in needed {
-            let optional = (api == Api::Mitsuba && field == n.normal)
-                || (api == Api::Pbrt && field == n.result && has(fields::RETURNED));
+            let optional = match dialect {
+                Dialect::Api(Api::Mitsuba) => field == "n",
+                Dialect::Api(Api::Pbrt) => field == "wt" && has(fields::RETURNED),
+                _ => false,
+            };
             if !optional && !has(field) {
-                let (f, h, l) = (field, line.trim(), fields::listed(api));
+                let (f, h, l) = (field, line.trim(), fields::listed(dialect));
                 let e = t!("check-csv-no-column", field = f, names = h, expected = l);
                 return Err(e);
             }
         }
-        for (field, _) in fields::all(api) {
+        for (field, _) in fields::all(dialect) {
             let axes = (0..3)
                 .filter(|&axis| columns.contains(&Column::Component(field, axis)))
                 .count();
@@ -112,7 +121,7 @@ impl Header {
                 return Err(t!("check-csv-partial-vector", field = field, count = axes));
             }
         }
-        Ok(Self { api, columns })
+        Ok(Self { dialect, columns })
     }
 
     /// Reads one data line.
@@ -148,7 +157,7 @@ impl Header {
                 texts.push((field, components.join(" ")));
             }
         }
-        Record::from_texts(self.api, texts.iter().map(|(f, t)| (*f, t.as_str())))
+        Record::from_texts(self.dialect, texts.iter().map(|(f, t)| (*f, t.as_str())))
     }
 }
 

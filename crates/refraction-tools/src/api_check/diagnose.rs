@@ -108,9 +108,15 @@ fn finding<S: Real>(call: &Call, r: &Returns, seen: Seen) -> Option<(Code, Resem
     direction.or_else(|| etap_finding(call, r, S::EPSILON.to_f64()))
 }
 
-/// What pbrt's `Refract` returns for `args` without its `if (cosTheta_i < 0)` flip (`None` for
-/// its `false`), for a ray from the normal's far side; `None` otherwise or for another API.
-fn unflipped(call: &Call) -> Option<Option<DVec3>> {
+/// What a formula returns: a direction, or that nothing is transmitted.
+enum Outcome {
+    Direction(DVec3),
+    Nothing,
+}
+
+/// What pbrt's `Refract` returns for `args` without its `if (cosTheta_i < 0)` flip, for a ray
+/// from the normal's far side; `None` otherwise or for another API.
+fn unflipped(call: &Call) -> Option<Outcome> {
     let Args {
         incident: wi,
         normal: n,
@@ -121,17 +127,18 @@ fn unflipped(call: &Call) -> Option<Option<DVec3>> {
         return None;
     }
     let sin2_t = (1.0 - cos_i * cos_i).max(0.0) / (eta * eta);
-    Some((sin2_t < 1.0).then(|| {
-        let cos_t = (1.0 - sin2_t).sqrt();
-        -wi / eta + n * (cos_i / eta - cos_t)
-    }))
+    if sin2_t >= 1.0 {
+        return Some(Outcome::Nothing);
+    }
+    let cos_t = (1.0 - sin2_t).sqrt();
+    Some(Outcome::Direction(-wi / eta + n * (cos_i / eta - cos_t)))
 }
 
 /// Whether what came back is what the API gives without its flip, and not what it gives.
 fn without_flip(call: &Call, r: &Returns, seen: Seen) -> bool {
     match (unflipped(call), seen) {
-        (Some(Some(w)), Seen::Direction(v)) => r.same(v, w),
-        (Some(None), Seen::Nothing(_)) => r.transmitted.is_some(),
+        (Some(Outcome::Direction(w)), Seen::Direction(v)) => r.same(v, w),
+        (Some(Outcome::Nothing), Seen::Nothing(_)) => r.transmitted.is_some(),
         _ => false,
     }
 }

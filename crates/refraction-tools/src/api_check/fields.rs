@@ -5,6 +5,43 @@ use refraction_kernel::api::Api;
 
 use crate::solve::Precision;
 
+/// Whose fields a line carries: a call of a named API, or any renderer's own refraction,
+/// judged against the physics (`check` without `--api`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dialect {
+    /// The API's own argument and result names.
+    Api(Api),
+    /// `w`, `n`, `mu_i`, `mu_t` (the `solve` fields), the student's `t_yours`, and the `ratio`
+    /// their code used.
+    Physics,
+}
+
+impl From<Api> for Dialect {
+    fn from(api: Api) -> Self {
+        Self::Api(api)
+    }
+}
+
+impl Dialect {
+    /// The API, for a call of one.
+    #[must_use]
+    pub fn api(self) -> Option<Api> {
+        match self {
+            Self::Api(api) => Some(api),
+            Self::Physics => None,
+        }
+    }
+
+    /// The name messages give it: the API's (`glsl`), or `check` for any renderer's.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Api(api) => api.name(),
+            Self::Physics => "check",
+        }
+    }
+}
+
 /// The kind of value a field holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
@@ -71,9 +108,25 @@ pub const COMMON: [(&str, Kind); 7] = [
     ("precision", Kind::Label),
 ];
 
-/// Every field `api`'s lines may carry, with its kind: the API's own first.
+/// The fields of any renderer's lines (`check` without `--api`), besides [`COMMON`]: the
+/// `solve` fields, the T the student's code produced and the ratio it used.
+pub const PHYSICS: [(&str, Kind); 7] = [
+    ("w", Kind::Vector),
+    ("n", Kind::Vector),
+    ("mu_i", Kind::Number),
+    ("mu_t", Kind::Number),
+    ("t_yours", Kind::VectorOrNull),
+    ("ratio", Kind::Number),
+    ("convention", Kind::Label),
+];
+
+/// Every field a line in `dialect` may carry, with its kind: the API's own first.
 #[must_use]
-pub fn all(api: Api) -> Vec<(&'static str, Kind)> {
+pub fn all(dialect: impl Into<Dialect>) -> Vec<(&'static str, Kind)> {
+    let api = match dialect.into() {
+        Dialect::Api(api) => api,
+        Dialect::Physics => return PHYSICS.iter().chain(&COMMON).copied().collect(),
+    };
     let n = names(api);
     let result = match api {
         Api::Glsl | Api::Rtiow => Kind::Vector,
@@ -93,32 +146,35 @@ pub fn all(api: Api) -> Vec<(&'static str, Kind)> {
     fields
 }
 
-/// Field `name` of `api`'s lines with its kind, or `None` when they have no such field.
+/// Field `name` of the lines in `dialect` with its kind, or `None` when they have no such
+/// field.
 #[must_use]
-pub fn find(api: Api, name: &str) -> Option<(&'static str, Kind)> {
-    let name = match (api, name) {
-        (Api::Rtiow, FRONT_FACE) => "entering",
+pub fn find(dialect: impl Into<Dialect>, name: &str) -> Option<(&'static str, Kind)> {
+    let dialect = dialect.into();
+    let name = match (dialect, name) {
+        (Dialect::Api(Api::Rtiow), FRONT_FACE) => "entering",
         _ => name,
     };
-    all(api).into_iter().find(|(field, _)| *field == name)
+    all(dialect).into_iter().find(|(field, _)| *field == name)
 }
 
-/// The field names of `api`, for messages: `I, N, eta, result, from, to, ...`.
+/// The field names of `dialect`, for messages: `I, N, eta, result, from, to, ...`.
 #[must_use]
-pub fn listed(api: Api) -> String {
-    all(api)
+pub fn listed(dialect: impl Into<Dialect>) -> String {
+    all(dialect)
         .iter()
         .map(|(name, _)| *name)
         .collect::<Vec<_>>()
         .join(", ")
 }
 
-/// The precision a student's `api` code usually runs in: `float` for shaders, glam's `Vec3`,
-/// pbrt (without `PBRT_FLOAT_AS_DOUBLE`) and Mitsuba's `scalar_rgb`; `double` for the book.
+/// The precision a student's code usually runs in: `float` for shaders, glam's `Vec3`, pbrt
+/// (without `PBRT_FLOAT_AS_DOUBLE`) and Mitsuba's `scalar_rgb`; `double` for the book and for
+/// any renderer's own (`check`'s default, as `solve`'s).
 #[must_use]
-pub fn usual_precision(api: Api) -> Precision {
-    match api {
-        Api::Rtiow => Precision::F64,
-        Api::Glsl | Api::Pbrt | Api::Mitsuba => Precision::F32,
+pub fn usual_precision(dialect: impl Into<Dialect>) -> Precision {
+    match dialect.into() {
+        Dialect::Api(Api::Rtiow) | Dialect::Physics => Precision::F64,
+        Dialect::Api(Api::Glsl | Api::Pbrt | Api::Mitsuba) => Precision::F32,
     }
 }

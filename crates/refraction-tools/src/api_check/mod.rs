@@ -21,6 +21,7 @@ mod explain;
 pub mod fields;
 pub mod paths;
 pub mod pattern;
+pub mod physics;
 pub mod readings;
 pub mod record;
 pub mod result;
@@ -33,11 +34,12 @@ use serde::Serialize;
 pub use call::{Call, Options};
 pub use code::Code;
 pub use diagnose::{Diagnosis, diagnose};
+pub use fields::Dialect;
 pub use pattern::Pattern;
 pub use record::Record;
 
 use crate::check::{self, Match};
-use crate::diagnosis::{LogTally, Summary};
+use crate::diagnosis::{Evidence, LogTally, Summary};
 
 /// The JSON answer for one call.
 #[derive(Serialize)]
@@ -138,11 +140,70 @@ pub enum Format {
 // untranslated: the tally's name, as `check` prints it on stderr (the panel says it in words)
 pub const SKIPPED: &str = "skipped (not matching the pattern)";
 
+/// A judged line: an API call and its diagnosis, or any renderer's refraction and its verdict.
+#[derive(Clone, Debug)]
+pub enum Judgement {
+    /// A call of a named API (boxed: a diagnosis is large).
+    Api(Box<(Call, Diagnosis)>),
+    /// Any renderer's own refraction (`check` without `--api`).
+    Physics(physics::Judged),
+}
+
+impl Judgement {
+    /// Whether the line is right.
+    #[must_use]
+    pub fn ok(&self) -> bool {
+        match self {
+            Self::Api(judged) => judged.1.ok,
+            Self::Physics(judged) => judged.verdict.ok,
+        }
+    }
+
+    /// The answer line.
+    #[must_use]
+    pub fn answer_line(&self) -> String {
+        match self {
+            Self::Api(judged) => answer_line(&judged.0, &judged.1),
+            Self::Physics(judged) => physics::answer_line(judged),
+        }
+    }
+
+    /// What the diagnosis of the whole log needs from the line.
+    #[must_use]
+    pub fn evidence(&self) -> Evidence {
+        match self {
+            Self::Api(judged) => diagnose::evidence(&judged.0, &judged.1),
+            Self::Physics(judged) => judged.evidence.clone(),
+        }
+    }
+
+    /// Counts the line in `tally`: the mistakes of a call, `check`'s kinds of a refraction.
+    fn count(&self, tally: &mut Tally) {
+        match self {
+            Self::Api(judged) => tally.add_verdict(&judged.1),
+            Self::Physics(judged) => tally.add(physics::tally_kind(judged)),
+        }
+    }
+}
+
+/// Judges one record in `options`' dialect.
+///
+/// # Errors
+/// The record is not a complete call or case, or does not fit the precision.
+pub fn judge_record(record: &Record, options: &Options) -> Result<Judgement, String> {
+    match options.dialect {
+        Dialect::Api(_) => check_record(record, options).map(|j| Judgement::Api(Box::new(j))),
+        Dialect::Physics => physics::Case::from_record(record, options)
+            .and_then(|case| physics::judge(&case))
+            .map(Judgement::Physics),
+    }
+}
+
 /// What a line holds, as far as it can be judged without the run's state (on any thread).
 enum Judged {
-    /// A call and its diagnosis, or why the line holds no call that can be judged (boxed: a
-    /// diagnosis is large, and the chunks hold many of the other kinds).
-    Call(Box<Result<(Call, Diagnosis), String>>),
+    /// A judged line, or why the line holds nothing that can be judged (boxed: a judgement is
+    /// large, and the chunks hold many of the other kinds).
+    Line(Box<Result<Judgement, String>>),
     /// A log line the pattern does not match.
     Unmatched,
     /// A CSV line read before the header was known: read in order, with the run's state.
@@ -172,11 +233,11 @@ enum Read {
 impl Reader {
     /// Reads one line's fields, as far as that can be done without the run's state.
     fn read(&self, line: &str) -> Read {
-        let api = self.options.api;
+        let dialect = self.options.dialect;
         Read::Record(match &self.format {
-            Format::JsonLines => Record::from_json_line(api, line),
+            Format::JsonLines => Record::from_json_line(dialect, line),
             Format::Pattern(pattern) => match pattern.capture(line) {
-                Some(texts) => Record::from_texts(api, texts),
+                Some(texts) => Record::from_texts(dialect, texts),
                 None => return Read::Unmatched,
             },
             Format::Csv => match self.header.get() {
@@ -190,8 +251,8 @@ impl Reader {
     /// Judges one line, or leaves it for [`Books::settle`] when it needs the run's state.
     fn judge(&self, line: &str) -> Judged {
         match self.read(line) {
-            Read::Record(record) => Judged::Call(Box::new(
-                record.and_then(|record| check_record(&record, &self.options)),
+            Read::Record(record) => Judged::Line(Box::new(
+                record.and_then(|record| judge_record(&record, &self.options)),
             )),
             Read::Unmatched => Judged::Unmatched,
             Read::Deferred => Judged::Deferred(line.to_owned()),
@@ -201,7 +262,7 @@ impl Reader {
     /// Takes `line` as the CSV header (called in order, while none is known); why it is
     /// unusable, if it is.
     fn take_header(&self, line: &str) -> Option<String> {
-        let header = csv::Header::parse(self.options.api, line);
+        let header = csv::Header::parse(self.options.dialect, line);
         let failed = header.as_ref().err().cloned();
         // Only this thread sets the header, between chunks: it cannot be set already.
         let _ = self.header.set(header);
@@ -213,7 +274,7 @@ impl Reader {
         if self.header.get().is_none() {
             return self
                 .take_header(line)
-                .map(|e| Judged::Call(Box::new(Err(e))));
+                .map(|e| Judged::Line(Box::new(Err(e))));
         }
         Some(self.judge(line))
     }
@@ -233,7 +294,7 @@ impl Books {
     /// The answer to a judged line, in input order: nothing for a line without a call.
     fn settle(&mut self, reader: &Reader, judged: Judged) -> Result<String, String> {
         let judged = match judged {
-            Judged::Call(judged) => *judged,
+            Judged::Line(judged) => *judged,
             Judged::Unmatched if reader.strict => Err(t!("check-line-not-matching")),
             Judged::Unmatched => {
                 self.tally.add(SKIPPED);
@@ -246,15 +307,15 @@ impl Books {
             },
         };
         let ended = match (&judged, &mut self.paths) {
-            (Ok((call, diagnosis)), Some(paths)) => paths.hit(call, diagnosis),
+            (Ok(Judgement::Api(judged)), Some(paths)) => paths.hit(&judged.0, &judged.1),
             _ => Ok(None),
         };
         match judged.and_then(|judged| ended.map(|ended| (judged, ended))) {
-            Ok(((call, diagnosis), ended)) => {
-                self.tally.add_verdict(&diagnosis);
-                self.log.add(&diagnose::evidence(&call, &diagnosis));
-                self.all_ok &= diagnosis.ok;
-                let text = answer_line(&call, &diagnosis);
+            Ok((judgement, ended)) => {
+                judgement.count(&mut self.tally);
+                self.log.add(&judgement.evidence());
+                self.all_ok &= judgement.ok();
+                let text = judgement.answer_line();
                 Ok(ended.map_or_else(|| text.clone(), |summary| format!("{summary}\n{text}")))
             }
             Err(e) => {
@@ -339,6 +400,7 @@ impl Session {
             Read::Unmatched if self.reader.strict => Err(t!("check-line-not-matching")),
             Read::Unmatched => {
                 self.books.tally.add(SKIPPED);
+                self.books.log.skip();
                 Ok(None)
             }
             Read::Deferred => self.reader.take_header(line).map_or(Ok(None), Err),
@@ -359,7 +421,7 @@ impl Session {
     /// The diagnosis of the lines so far, taken as one log.
     #[must_use]
     pub fn summary(&self) -> Summary {
-        self.books.log.summary(Some(self.reader.options.api))
+        self.books.log.summary(self.reader.options.dialect.api())
     }
 
     /// Whether every line so far was right and every path finished left right.

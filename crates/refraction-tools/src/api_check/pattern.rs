@@ -6,9 +6,8 @@
 //! must run to its end (trailing spaces aside).
 
 use refraction_i18n::t;
-use refraction_kernel::api::Api;
 
-use super::fields::{self, Kind};
+use super::fields::{self, Dialect, Kind};
 use super::record::from_text;
 
 /// Most attempts spent matching one line before it counts as not matching.
@@ -61,7 +60,8 @@ impl Pattern {
     ///
     /// # Errors
     /// An unknown field, an unclosed `{`, two fields with nothing between them, or no field.
-    pub fn parse(api: Api, text: &str) -> Result<Self, String> {
+    pub fn parse(dialect: impl Into<Dialect>, text: &str) -> Result<Self, String> {
+        let dialect = dialect.into();
         let mut pieces = Vec::new();
         let mut chars = text.chars().peekable();
         while let Some(c) = chars.next() {
@@ -83,7 +83,7 @@ impl Pattern {
                             None => return Err(t!("check-pattern-unclosed", pattern = text)),
                         }
                     }
-                    pieces.push(Self::field(api, name.trim())?);
+                    pieces.push(Self::field(dialect, name.trim())?);
                 }
                 _ => push_literal(&mut pieces, c),
             }
@@ -101,14 +101,14 @@ impl Pattern {
     }
 
     #[rustfmt::skip] // the t! keys stay where the translation tests find them
-    fn field(api: Api, name: &str) -> Result<Piece, String> {
+    fn field(dialect: Dialect, name: &str) -> Result<Piece, String> {
         if name == "_" {
             return Ok(Piece::Anything);
         }
-        fields::find(api, name)
+        fields::find(dialect, name)
             .map(|(name, kind)| Piece::Field(name, kind))
             .ok_or_else(|| {
-                let (a, listed) = (api.name(), fields::listed(api));
+                let (a, listed) = (dialect.name(), fields::listed(dialect));
                 t!("check-pattern-unknown-field", field = name, api = a, expected = listed)
             })
     }
@@ -212,6 +212,7 @@ impl Matching<'_, '_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use refraction_kernel::api::Api;
 
     fn rtiow(pattern: &str) -> Pattern {
         Pattern::parse(Api::Rtiow, pattern).unwrap()

@@ -2,10 +2,9 @@
 //! CSV header names, with the significant digits its numbers were written with.
 
 use refraction_i18n::t;
-use refraction_kernel::api::Api;
 use serde_json::Value as Json;
 
-use super::fields::{self, Kind};
+use super::fields::{self, Dialect, Kind};
 use crate::vector_text::{digits_of, json_vector_digits, parse_number, parse_vector};
 
 /// One field's value.
@@ -148,15 +147,16 @@ impl Record {
     ///
     /// # Errors
     /// Malformed JSON (with its column), not an object, or an ill-typed field.
-    pub fn from_json_line(api: Api, line: &str) -> Result<Self, String> {
+    pub fn from_json_line(dialect: impl Into<Dialect>, line: &str) -> Result<Self, String> {
+        let dialect = dialect.into();
         let value: Json = serde_json::from_str(line)
             .map_err(|e| crate::error::JsonError::from(&e).to_string())?;
-        let listed = || fields::listed(api);
+        let listed = || fields::listed(dialect);
         let object = value
             .as_object()
             .ok_or_else(|| t!("check-json-not-object", fields = listed()))?;
         let mut record = Self::default();
-        for (name, kind) in fields::all(api) {
+        for (name, kind) in fields::all(dialect) {
             match object.get(name) {
                 None => {}
                 Some(Json::Null) if kind != Kind::VectorOrNull => {}
@@ -171,13 +171,13 @@ impl Record {
     /// # Errors
     /// An unknown field name or a text that is not a value of its field's kind.
     pub fn from_texts<'a>(
-        api: Api,
+        dialect: impl Into<Dialect>,
         texts: impl IntoIterator<Item = (&'a str, &'a str)>,
     ) -> Result<Self, String> {
-        let mut record = Self::default();
+        let (dialect, mut record) = (dialect.into(), Self::default());
         for (name, text) in texts {
-            let (field, kind) =
-                fields::find(api, name).ok_or_else(|| t!("check-unknown-field", field = name))?;
+            let (field, kind) = fields::find(dialect, name)
+                .ok_or_else(|| t!("check-unknown-field", field = name))?;
             record.push(field, from_text(kind, name, text)?);
         }
         Ok(record)
@@ -187,6 +187,7 @@ impl Record {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use refraction_kernel::api::Api;
 
     #[test]
     fn json_and_text_give_the_same_record() {
