@@ -19,9 +19,6 @@ pub struct Number {
     pub value: f64,
     /// Significant digits as written (17 for a hexadecimal float, which is exact).
     pub digits: u32,
-    /// Decimal places as written: digits after the point, less the exponent (17 for a
-    /// hexadecimal float).
-    pub places: u32,
 }
 
 /// A parsed 3-vector and how precisely it was written.
@@ -29,30 +26,29 @@ pub struct Number {
 pub struct Vector {
     /// The components.
     pub value: [f64; 3],
-    /// The digits of a number of magnitude 1 written to the components' most decimal places
-    /// (one more than those places, at most 17): a unit vector's components are all below 1,
-    /// so a `%g` component that lost its trailing zeros (`0.90353`) or a small one (`0.0412`)
-    /// does not make the vector look coarser than its format printed it.
+    /// The significant digits of a number of magnitude 1 written as precisely as the vector
+    /// (at most 17): its format's precision (its components' most significant digits) carried
+    /// to the magnitude of its largest component, which sets its rounding. `0.428525,
+    /// -0.90353, 0` gives 7 (half a unit in the sixth decimal place), as does a `%g` vector
+    /// with a tiny component (`1.23457e-05`), which is no coarser for it.
     pub digits: u32,
 }
 
-/// Decimal places of a decimal literal: digits after the point, less the exponent.
-fn decimal_places(mantissa: &str, exponent: i32) -> u32 {
-    let fraction = mantissa.split_once('.').map_or(0, |(_, f)| f.len());
-    let places = i32::try_from(fraction)
-        .unwrap_or(i32::MAX)
-        .saturating_sub(exponent);
-    u32::try_from(places.max(0)).unwrap_or(0)
-}
-
-/// The digits a vector written with components of `places` decimal places is trusted to.
-fn vector_digits(places: impl IntoIterator<Item = u32>) -> u32 {
-    places
-        .into_iter()
-        .map(|p| p.saturating_add(1))
-        .max()
-        .unwrap_or(0)
-        .min(17)
+/// The digits a vector with these components, written with these significant digits, is
+/// trusted to (see [`Vector::digits`]): 0 when every component is zero.
+fn vector_digits(components: [f64; 3], digits: [u32; 3]) -> u32 {
+    let largest = components.iter().map(|c| c.abs()).fold(0.0, f64::max);
+    if largest == 0.0 || !largest.is_finite() {
+        return 0;
+    }
+    // floor(log10) of a finite non-zero f64 lies within ±324.
+    #[expect(clippy::cast_possible_truncation)]
+    let magnitude = largest.log10().floor() as i32;
+    let format = digits.into_iter().max().unwrap_or(0);
+    let carried = i32::try_from(format)
+        .unwrap_or(17)
+        .saturating_sub(magnitude);
+    u32::try_from(carried.clamp(0, 17)).unwrap_or(17)
 }
 
 fn special(word: &str) -> Option<f64> {
@@ -107,18 +103,10 @@ fn hexadecimal(word: &str) -> Option<f64> {
 pub fn parse_number(word: &str) -> Result<Number, VectorError> {
     let word = word.trim();
     if let Some(value) = special(word) {
-        return Ok(Number {
-            value,
-            digits: 0,
-            places: 0,
-        });
+        return Ok(Number { value, digits: 0 });
     }
     if let Some(value) = hexadecimal(word) {
-        return Ok(Number {
-            value,
-            digits: 17,
-            places: 17,
-        });
+        return Ok(Number { value, digits: 17 });
     }
     let stripped = ["_f32", "_f64", "f32", "f64", "f", "F"]
         .iter()
@@ -131,13 +119,10 @@ pub fn parse_number(word: &str) -> Result<Number, VectorError> {
         && stripped.chars().any(|c| c.is_ascii_digit());
     match stripped.parse::<f64>() {
         Ok(value) if is_decimal => {
-            let mut parts = stripped.split(['e', 'E']);
-            let mantissa = parts.next().unwrap_or(stripped);
-            let exponent = parts.next().and_then(|e| e.parse().ok()).unwrap_or(0);
+            let mantissa = stripped.split(['e', 'E']).next().unwrap_or(stripped);
             Ok(Number {
                 value,
                 digits: decimal_digits(mantissa),
-                places: decimal_places(mantissa, exponent),
             })
         }
         _ => Err(VectorError::NotANumber {
@@ -157,22 +142,10 @@ pub fn digits_of(x: f64) -> u32 {
     decimal_digits(text.split('e').next().unwrap_or(&text))
 }
 
-/// The decimal places of `x` written in its shortest form that reads back exactly (how a JSON
-/// vector's precision is judged once parsed).
-#[must_use]
-pub fn places_of(x: f64) -> u32 {
-    if !x.is_finite() {
-        return 0;
-    }
-    let text = format!("{x:e}");
-    let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
-    decimal_places(mantissa, exponent.parse().unwrap_or(0))
-}
-
 /// The digits a JSON vector with these components is trusted to (see [`Vector::digits`]).
 #[must_use]
 pub fn json_vector_digits(components: [f64; 3]) -> u32 {
-    vector_digits(components.iter().map(|&x| places_of(x)))
+    vector_digits(components, components.map(digits_of))
 }
 
 /// The text between a type name's opening bracket and its closing one, or the text itself.
@@ -245,15 +218,15 @@ pub fn parse_vector(text: &str) -> Result<Vector, VectorError> {
         });
     }
     let mut value = [0.0; 3];
-    let mut places = [0; 3];
-    for ((slot, place), word) in value.iter_mut().zip(&mut places).zip(&words) {
+    let mut digits = [0; 3];
+    for ((slot, written), word) in value.iter_mut().zip(&mut digits).zip(&words) {
         let number = parse_number(word).map_err(within)?;
         *slot = number.value;
-        *place = number.places;
+        *written = number.digits;
     }
     Ok(Vector {
         value,
-        digits: vector_digits(places),
+        digits: vector_digits(value, digits),
     })
 }
 
@@ -411,10 +384,19 @@ mod tests {
         assert_eq!(parse_number("0.642788").unwrap().digits, 6);
         assert_eq!(parse_number("-0.000500000").unwrap().digits, 6);
         assert_eq!(parse_number("1.5e-05").unwrap().digits, 2);
-        assert_eq!(parse_number("1.5e-05").unwrap().places, 6);
-        // A vector: one more than its components' most decimal places (unit scale).
+        // A vector: its format's digits carried to its largest component (unit scale).
         assert_eq!(parse_vector("0.5 0.25 0.123456").unwrap().digits, 7);
         assert_eq!(parse_vector("0.90353 0.0412 0").unwrap().digits, 6);
+        assert_eq!(
+            parse_vector("0.0412345 -0.998123 1.23457e-05")
+                .unwrap()
+                .digits,
+            7
+        );
+        assert_eq!(
+            parse_vector("0.000000 1.000000 0.000000").unwrap().digits,
+            7
+        );
         assert_eq!(parse_vector("0 1 0").unwrap().digits, 1);
         assert_eq!(digits_of(0.1), 1);
         assert_eq!(digits_of(0.6427876096865393), 16);
