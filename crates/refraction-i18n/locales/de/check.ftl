@@ -278,6 +278,7 @@ check-mistake-no-flip-inside = für einen Strahl von der Rückseite der Normale 
 check-mistake-normal-term-sign = der Anteil des Ergebnisses entlang der Normale hat das falsche Vorzeichen; der Anteil quer dazu stimmt
 check-mistake-other-root = die andere Wurzel: Vorzeichen der Quadratwurzel umgekehrt, das Ergebnis an der Fläche gespiegelt
 check-mistake-false-tir = Totalreflexion gemeldet, wo der Strahl gebrochen wird
+check-physics-explained = Genau das ergibt eine Brechung mit diesem Fehler: { $mistakes }.
 check-looks-normal-term = die Antwort der API mit negiertem Anteil entlang der Normale: der Term entlang der Normale wird abgezogen statt addiert oder umgekehrt
 check-looks-no-flip = was die Formel ohne Umdrehen der Normale und Umkehren von eta für einen Strahl von der Rückseite der Normale ergibt
 check-looks-etap = die richtige Richtung, aber etap = { $logged }, wo der Aufruf { $used } verwendet hat
@@ -301,9 +302,9 @@ check-where-past-critical = { $count ->
 }
 check-where-some-sides = in { $count } von { $all } geprüften Zeilen ({ $inside } von innen, { $outside } von außen)
 check-where-some = in { $count } von { $all } geprüften Zeilen
-check-fix-pass = übergib { $code }
-check-fix-write = schreib { $code }
-check-fix-restore = stell { $code } wieder her
+check-fix-pass = übergib `{ $code }`
+check-fix-write = schreib `{ $code }`
+check-fix-restore = stell `{ $code }` wieder her
 check-fix-generic-eta-inverted = verwende μ = n_from / n_to, den Brechungsindex des Mediums, das der Strahl verlässt, durch den des Mediums, in das er eintritt: Es kehrt sich um, wo der Strahl das Objekt verlässt (into ? nc / nt : nt / nc)
 check-fix-generic-incident-reversed = übergib als W die Ausbreitungsrichtung des Strahls, nicht ihr Negatives
 check-fix-generic-normal-not-facing = wo der Strahl das Objekt verlässt, verwende in jedem Term die Normale, die dem Strahl zugewandt ist (die äußere, umgedreht), oder die äußere mit umgekehrtem Vorzeichen, aber nicht beides

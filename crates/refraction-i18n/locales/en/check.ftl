@@ -272,6 +272,7 @@ check-mistake-no-flip-inside = for a ray from the normal's far side, the code do
 check-mistake-normal-term-sign = the part of the result along the normal has the wrong sign; the part across it is right
 check-mistake-other-root = the other root: the square root's sign flipped, the result mirrored across the surface
 check-mistake-false-tir = total internal reflection reported where the ray refracts
+check-physics-explained = That is what a refraction gives with this mistake: { $mistakes }.
 check-looks-normal-term = the API's answer with the part along the normal negated: the term along the normal is subtracted where it is added, or the other way round
 check-looks-no-flip = what the formula gives without turning the normal round and inverting eta for a ray from the normal's far side
 check-looks-etap = the right direction, but etap = { $logged } where the call used { $used }
@@ -295,9 +296,9 @@ check-where-past-critical = { $count ->
 }
 check-where-some-sides = on { $count } of { $all } judged lines ({ $inside } arriving from inside, { $outside } from outside)
 check-where-some = on { $count } of { $all } judged lines
-check-fix-pass = pass { $code }
-check-fix-write = write { $code }
-check-fix-restore = restore { $code }
+check-fix-pass = pass `{ $code }`
+check-fix-write = write `{ $code }`
+check-fix-restore = restore `{ $code }`
 check-fix-generic-eta-inverted = use μ = n_from / n_to, the index of the medium the ray leaves over the one it enters: it inverts where the ray leaves the object (into ? nc / nt : nt / nc)
 check-fix-generic-incident-reversed = pass the ray's direction of travel as W, not its negative
 check-fix-generic-normal-not-facing = where the ray leaves the object, use the normal that faces the ray in every term (the outward one turned round), or the outward one with its sign turned, but not both

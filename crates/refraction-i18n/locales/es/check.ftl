@@ -275,6 +275,7 @@ check-mistake-no-flip-inside = para un rayo que llega del otro lado de la normal
 check-mistake-normal-term-sign = la parte del resultado a lo largo de la normal tiene el signo equivocado; la parte transversal es correcta
 check-mistake-other-root = la otra raíz: el signo de la raíz cuadrada invertido, el resultado reflejado respecto a la superficie
 check-mistake-false-tir = reflexión total interna indicada donde el rayo se refracta
+check-physics-explained = Eso es lo que da una refracción con este error: { $mistakes }.
 check-looks-normal-term = la respuesta de la API con la parte a lo largo de la normal negada: el término a lo largo de la normal se resta donde se suma, o al revés
 check-looks-no-flip = lo que da la fórmula sin invertir la normal ni eta para un rayo que llega del otro lado de la normal
 check-looks-etap = la dirección correcta, pero etap = { $logged } donde la llamada usó { $used }
@@ -298,9 +299,9 @@ check-where-past-critical = { $count ->
 }
 check-where-some-sides = en { $count } de { $all } líneas juzgadas ({ $inside } desde dentro, { $outside } desde fuera)
 check-where-some = en { $count } de { $all } líneas juzgadas
-check-fix-pass = pasa { $code }
-check-fix-write = escribe { $code }
-check-fix-restore = restablece { $code }
+check-fix-pass = pasa `{ $code }`
+check-fix-write = escribe `{ $code }`
+check-fix-restore = restablece `{ $code }`
 check-fix-generic-eta-inverted = usa μ = n_from / n_to, el índice del medio que el rayo deja entre el del medio en que entra: se invierte donde el rayo sale del objeto (into ? nc / nt : nt / nc)
 check-fix-generic-incident-reversed = pasa como W la dirección en que viaja el rayo, no su opuesta
 check-fix-generic-normal-not-facing = donde el rayo sale del objeto, usa en cada término la normal orientada hacia el rayo (la exterior, invertida) o la exterior con el signo cambiado, pero no ambas cosas

@@ -275,6 +275,7 @@ check-mistake-no-flip-inside = pour un rayon venant de l’autre côté de la no
 check-mistake-normal-term-sign = la composante du résultat le long de la normale a le mauvais signe ; la composante transverse est juste
 check-mistake-other-root = l’autre racine : le signe de la racine carrée inversé, le résultat réfléchi par rapport à la surface
 check-mistake-false-tir = réflexion totale interne annoncée là où le rayon est réfracté
+check-physics-explained = C’est ce que donne une réfraction avec cette erreur : { $mistakes }.
 check-looks-normal-term = la réponse de l’API avec la composante le long de la normale opposée : le terme le long de la normale est soustrait au lieu d’être ajouté, ou l’inverse
 check-looks-no-flip = ce que donne la formule sans retourner la normale ni inverser eta pour un rayon venant de l’autre côté de la normale
 check-looks-etap = la bonne direction, mais etap = { $logged } là où l’appel a utilisé { $used }
@@ -298,9 +299,9 @@ check-where-past-critical = { $count ->
 }
 check-where-some-sides = sur { $count } des { $all } lignes jugées ({ $inside } de l’intérieur, { $outside } de l’extérieur)
 check-where-some = sur { $count } des { $all } lignes jugées
-check-fix-pass = passe { $code }
-check-fix-write = écris { $code }
-check-fix-restore = rétablis { $code }
+check-fix-pass = passe `{ $code }`
+check-fix-write = écris `{ $code }`
+check-fix-restore = rétablis `{ $code }`
 check-fix-generic-eta-inverted = utilise μ = n_from / n_to, l’indice du milieu que le rayon quitte sur celui du milieu où il entre : il s’inverse là où le rayon sort de l’objet (into ? nc / nt : nt / nc)
 check-fix-generic-incident-reversed = passe comme W la direction de propagation du rayon, pas son opposée
 check-fix-generic-normal-not-facing = là où le rayon sort de l’objet, utilise dans chaque terme la normale tournée vers le rayon (l’extérieure, retournée), ou l’extérieure avec son signe changé, mais pas les deux

@@ -276,6 +276,7 @@ check-mistake-no-flip-inside = para um raio que chega do outro lado da normal, o
 check-mistake-normal-term-sign = a parte do resultado ao longo da normal tem o sinal errado; a parte transversal está certa
 check-mistake-other-root = a outra raiz: o sinal da raiz quadrada trocado, o resultado espelhado em relação à superfície
 check-mistake-false-tir = reflexão interna total indicada onde o raio refrata
+check-physics-explained = É isso que uma refração dá com este erro: { $mistakes }.
 check-looks-normal-term = a resposta da API com a parte ao longo da normal negada: o termo ao longo da normal é subtraído onde é somado, ou o contrário
 check-looks-no-flip = o que a fórmula dá sem inverter a normal e eta para um raio que chega do outro lado da normal
 check-looks-etap = a direção certa, mas etap = { $logged } onde a chamada usou { $used }
@@ -299,9 +300,9 @@ check-where-past-critical = { $count ->
 }
 check-where-some-sides = em { $count } de { $all } linhas julgadas ({ $inside } vindas de dentro, { $outside } de fora)
 check-where-some = em { $count } de { $all } linhas julgadas
-check-fix-pass = passe { $code }
-check-fix-write = escreva { $code }
-check-fix-restore = restaure { $code }
+check-fix-pass = passe `{ $code }`
+check-fix-write = escreva `{ $code }`
+check-fix-restore = restaure `{ $code }`
 check-fix-generic-eta-inverted = use μ = n_from / n_to, o índice do meio que o raio deixa sobre o do meio em que entra: ele se inverte onde o raio sai do objeto (into ? nc / nt : nt / nc)
 check-fix-generic-incident-reversed = passe como W a direção em que o raio viaja, não a oposta
 check-fix-generic-normal-not-facing = onde o raio sai do objeto, use em cada termo a normal voltada para o raio (a externa, invertida) ou a externa com o sinal trocado, mas não as duas coisas

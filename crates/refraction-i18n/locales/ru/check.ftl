@@ -281,6 +281,7 @@ check-mistake-no-flip-inside = для луча с обратной сторон�
 check-mistake-normal-term-sign = составляющая результата вдоль нормали имеет неверный знак; поперечная составляющая верна
 check-mistake-other-root = другой корень: знак квадратного корня обращён, результат отражён относительно поверхности
 check-mistake-false-tir = полное внутреннее отражение указано там, где луч преломляется
+check-physics-explained = Именно это даёт преломление с такой ошибкой: { $mistakes }.
 check-looks-normal-term = ответ API с обращённой составляющей вдоль нормали: член вдоль нормали вычитается вместо сложения или наоборот
 check-looks-no-flip = то, что даёт формула без разворота нормали и обращения eta для луча с обратной стороны нормали
 check-looks-etap = верное направление, но etap = { $logged }, тогда как вызов использовал { $used }
@@ -312,9 +313,9 @@ check-where-past-critical = { $count ->
 }
 check-where-some-sides = в { $count } из { $all } проверенных строк ({ $inside } изнутри, { $outside } снаружи)
 check-where-some = в { $count } из { $all } проверенных строк
-check-fix-pass = передавайте { $code }
-check-fix-write = пишите { $code }
-check-fix-restore = верните { $code }
+check-fix-pass = передавайте `{ $code }`
+check-fix-write = пишите `{ $code }`
+check-fix-restore = верните `{ $code }`
 check-fix-generic-eta-inverted = используйте μ = n_from / n_to, показатель среды, которую луч покидает, к показателю среды, в которую он входит: он обращается там, где луч выходит из объекта (into ? nc / nt : nt / nc)
 check-fix-generic-incident-reversed = передавайте как W направление распространения луча, а не противоположное
 check-fix-generic-normal-not-facing = там, где луч выходит из объекта, используйте в каждом члене нормаль, обращённую к лучу (внешнюю, развёрнутую), или внешнюю с обращённым знаком, но не то и другое вместе

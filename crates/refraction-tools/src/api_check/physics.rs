@@ -289,8 +289,21 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
         past_critical: r.is_tir(),
         normal_outward: None,
     };
+    let explanation = match alternatives.first() {
+        Some(codes) if !ok && verdict.matches.is_none() => {
+            let meanings: Vec<String> = codes.iter().map(|c| c.meaning()).collect();
+            let mistakes = meanings.join("; ");
+            let said = t!("check-physics-explained", mistakes = mistakes);
+            format!("{} {said}", verdict.explanation)
+        }
+        _ => verdict.explanation.clone(),
+    };
     Ok(Judged {
-        verdict: Verdict { ok, ..verdict },
+        verdict: Verdict {
+            ok,
+            explanation,
+            ..verdict
+        },
         alternatives,
         evidence,
     })
