@@ -1,6 +1,6 @@
 //! What the diagnosis of a whole log costs: the per-line work `check --api` does (read a log
-//! line with a pattern, judge the call, count its evidence) on one thread, and the ranking of a
-//! log's counts into findings. `cargo bench -p refraction-tools --bench diagnosis`.
+//! line with a pattern, judge the call, count its evidence) on one thread, a line that almost
+//! matches the pattern against one that does, and the ranking of a log's counts into findings. `cargo bench -p refraction-tools --bench diagnosis`.
 //!
 //! Measured whole, a 1,000,000-line log of the book's calls takes as long with the diagnosis
 //! as without it (`check --summary` against `check` before it, release build, 2 cores).
@@ -44,6 +44,22 @@ fn lines(c: &mut Criterion) {
     });
 }
 
+/// A log line that matches the pattern, and one of the same length that almost does (its last
+/// literal differs): a renderer's log is mostly lines of its other kinds.
+fn near_misses(c: &mut Criterion) {
+    let pattern = Pattern::parse(Api::Rtiow, PATTERN).expect("the pattern reads");
+    let matching = LINES[0];
+    let near = matching.replace("refracted=", "reflected=");
+    let mut group = c.benchmark_group("pattern_line");
+    group.bench_function("matching", |b| {
+        b.iter(|| black_box(pattern.capture(black_box(matching))));
+    });
+    group.bench_function("near_miss", |b| {
+        b.iter(|| black_box(pattern.capture(black_box(&near))));
+    });
+    group.finish();
+}
+
 fn ranking(c: &mut Criterion) {
     let kinds = [
         Evidence {
@@ -74,5 +90,5 @@ fn ranking(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, lines, ranking);
+criterion_group!(benches, lines, near_misses, ranking);
 criterion_main!(benches);

@@ -168,9 +168,12 @@ impl Finding {
 }
 
 impl Summary {
-    /// The diagnosis in sentences, the verdict first.
+    /// The diagnosis in sentences, the verdict first (one saying so when no line was judged).
     #[must_use]
     pub fn sentences(&self) -> Vec<String> {
+        if self.diagnosis.is_empty() {
+            return vec![t!("check-diagnosis-no-lines", lines = self.lines)];
+        }
         self.diagnosis
             .iter()
             .enumerate()
@@ -234,8 +237,11 @@ impl LogTally {
         self.normal_outward[1] > 0 && self.normal_outward[0] == 0
     }
 
-    /// The findings, the verdict first.
+    /// The findings, the verdict first; none when no line was judged.
     fn findings(&self, api: Option<Api>) -> Vec<Finding> {
+        if self.judged.total() == 0 {
+            return Vec::new();
+        }
         if self.failing.is_empty() {
             return vec![Finding {
                 code: "none",
@@ -645,6 +651,21 @@ mod tests {
         assert_eq!(codes(&s), ["not_the_api_result"]);
         assert_eq!(s.diagnosis[0].lines, 1);
         assert_eq!(s.ok, 2);
+    }
+
+    #[test]
+    fn a_log_with_no_judged_line_has_no_diagnosis_and_says_so() {
+        let mut t = LogTally::default();
+        t.skip();
+        t.skip();
+        let s = t.summary(Some(Api::Glsl));
+        assert!(s.diagnosis.is_empty());
+        assert_eq!((s.lines, s.skipped, s.judged), (2, 2, 0));
+        assert!(
+            s.sentences()[0].contains("No line was judged"),
+            "{:?}",
+            s.sentences()
+        );
     }
 
     #[test]

@@ -278,6 +278,7 @@ check-mistake-no-flip-inside = für einen Strahl von der Rückseite der Normale 
 check-mistake-normal-term-sign = der Anteil des Ergebnisses entlang der Normale hat das falsche Vorzeichen; der Anteil quer dazu stimmt
 check-mistake-other-root = die andere Wurzel: Vorzeichen der Quadratwurzel umgekehrt, das Ergebnis an der Fläche gespiegelt
 check-mistake-false-tir = Totalreflexion gemeldet, wo der Strahl gebrochen wird
+check-diagnosis-no-lines = Keine Zeile wurde geprüft ({ $lines } gelesen): prüfe das Muster, die CSV-Kopfzeile oder die Felder der Zeilen.
 check-physics-explained = Genau das ergibt eine Brechung mit diesem Fehler: { $mistakes }.
 check-looks-normal-term = die Antwort der API mit negiertem Anteil entlang der Normale: der Term entlang der Normale wird abgezogen statt addiert oder umgekehrt
 check-looks-no-flip = was die Formel ohne Umdrehen der Normale und Umkehren von eta für einen Strahl von der Rückseite der Normale ergibt

@@ -272,6 +272,7 @@ check-mistake-no-flip-inside = for a ray from the normal's far side, the code do
 check-mistake-normal-term-sign = the part of the result along the normal has the wrong sign; the part across it is right
 check-mistake-other-root = the other root: the square root's sign flipped, the result mirrored across the surface
 check-mistake-false-tir = total internal reflection reported where the ray refracts
+check-diagnosis-no-lines = No line was judged ({ $lines } read): check the pattern, the CSV header or the fields the lines carry.
 check-physics-explained = That is what a refraction gives with this mistake: { $mistakes }.
 check-looks-normal-term = the API's answer with the part along the normal negated: the term along the normal is subtracted where it is added, or the other way round
 check-looks-no-flip = what the formula gives without turning the normal round and inverting eta for a ray from the normal's far side

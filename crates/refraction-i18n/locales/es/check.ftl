@@ -275,6 +275,7 @@ check-mistake-no-flip-inside = para un rayo que llega del otro lado de la normal
 check-mistake-normal-term-sign = la parte del resultado a lo largo de la normal tiene el signo equivocado; la parte transversal es correcta
 check-mistake-other-root = la otra raíz: el signo de la raíz cuadrada invertido, el resultado reflejado respecto a la superficie
 check-mistake-false-tir = reflexión total interna indicada donde el rayo se refracta
+check-diagnosis-no-lines = No se juzgó ninguna línea ({ $lines } leídas): revisa el patrón, la cabecera CSV o los campos de las líneas.
 check-physics-explained = Eso es lo que da una refracción con este error: { $mistakes }.
 check-looks-normal-term = la respuesta de la API con la parte a lo largo de la normal negada: el término a lo largo de la normal se resta donde se suma, o al revés
 check-looks-no-flip = lo que da la fórmula sin invertir la normal ni eta para un rayo que llega del otro lado de la normal

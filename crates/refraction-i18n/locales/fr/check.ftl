@@ -275,6 +275,7 @@ check-mistake-no-flip-inside = pour un rayon venant de l’autre côté de la no
 check-mistake-normal-term-sign = la composante du résultat le long de la normale a le mauvais signe ; la composante transverse est juste
 check-mistake-other-root = l’autre racine : le signe de la racine carrée inversé, le résultat réfléchi par rapport à la surface
 check-mistake-false-tir = réflexion totale interne annoncée là où le rayon est réfracté
+check-diagnosis-no-lines = Aucune ligne n’a été jugée ({ $lines } lues) : vérifie le motif, l’en-tête CSV ou les champs des lignes.
 check-physics-explained = C’est ce que donne une réfraction avec cette erreur : { $mistakes }.
 check-looks-normal-term = la réponse de l’API avec la composante le long de la normale opposée : le terme le long de la normale est soustrait au lieu d’être ajouté, ou l’inverse
 check-looks-no-flip = ce que donne la formule sans retourner la normale ni inverser eta pour un rayon venant de l’autre côté de la normale

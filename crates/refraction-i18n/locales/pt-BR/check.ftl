@@ -276,6 +276,7 @@ check-mistake-no-flip-inside = para um raio que chega do outro lado da normal, o
 check-mistake-normal-term-sign = a parte do resultado ao longo da normal tem o sinal errado; a parte transversal está certa
 check-mistake-other-root = a outra raiz: o sinal da raiz quadrada trocado, o resultado espelhado em relação à superfície
 check-mistake-false-tir = reflexão interna total indicada onde o raio refrata
+check-diagnosis-no-lines = Nenhuma linha foi julgada ({ $lines } lidas): confira o padrão, o cabeçalho CSV ou os campos das linhas.
 check-physics-explained = É isso que uma refração dá com este erro: { $mistakes }.
 check-looks-normal-term = a resposta da API com a parte ao longo da normal negada: o termo ao longo da normal é subtraído onde é somado, ou o contrário
 check-looks-no-flip = o que a fórmula dá sem inverter a normal e eta para um raio que chega do outro lado da normal
