@@ -43,28 +43,40 @@ pub fn error_line(line: usize, message: &str) -> String {
 enum Next {
     /// A line, in the buffer without its newline.
     Line,
-    /// A line longer than [`MAX_LINE_BYTES`]; what was read of it is dropped.
-    TooLong,
+    /// A line longer than [`MAX_LINE_BYTES`] (its newline not counted); what was read of it is
+    /// dropped, and its rest is still to be read past when `rest_unread`.
+    TooLong { rest_unread: bool },
     /// The end of the input.
     End,
 }
 
-/// Reads the next line into `buffer` (cleared first), reading no more than
-/// [`MAX_LINE_BYTES`] + 1 bytes of it.
+/// Reads the next line into `buffer` (cleared first) without its newline (`\n` or `\r\n`),
+/// reading no more than [`MAX_LINE_BYTES`] + 2 bytes of it.
 fn next_line(input: &mut impl BufRead, buffer: &mut Vec<u8>) -> io::Result<Next> {
     buffer.clear();
-    let limit = MAX_LINE_BYTES as u64 + 1;
+    let limit = MAX_LINE_BYTES as u64 + 2;
     if input.by_ref().take(limit).read_until(b'\n', buffer)? == 0 {
         return Ok(Next::End);
     }
-    if buffer.last() == Some(&b'\n') {
+    let ended = buffer.last() == Some(&b'\n');
+    if ended {
         buffer.pop();
-    } else if buffer.len() > MAX_LINE_BYTES {
+        if buffer.last() == Some(&b'\r') {
+            buffer.pop();
+        }
+    }
+    if buffer.len() > MAX_LINE_BYTES {
         buffer.clear();
-        return Ok(Next::TooLong);
+        return Ok(Next::TooLong {
+            rest_unread: !ended,
+        });
     }
     Ok(Next::Line)
 }
+
+/// A UTF-8 byte order mark, as Excel's "CSV UTF-8" and some editors put before a file's first
+/// line: not part of the text.
+const BYTE_ORDER_MARK: &[u8] = b"\xEF\xBB\xBF";
 
 /// The message for an over-long line `number`.
 fn too_long(number: usize) -> String {
@@ -108,7 +120,8 @@ enum Outcome<W> {
 struct Chunk {
     bytes: Vec<u8>,
     items: Vec<Item>,
-    /// The chunk ended at a line over the limit: say so before reading past it.
+    /// The chunk ended at a line over the limit whose rest is unread: say so before reading
+    /// past it.
     ended_too_long: bool,
     /// The input has ended.
     ended: bool,
@@ -129,19 +142,23 @@ impl Chunk {
                 break;
             }
             *number += 1;
-            let bytes = if matches!(next, Next::TooLong) {
+            let text = match line.strip_prefix(BYTE_ORDER_MARK) {
+                Some(rest) if *number == 1 => rest,
+                _ => &line,
+            };
+            let bytes = if let Next::TooLong { .. } = next {
                 Err(too_long(*number))
             } else {
                 let start = chunk.bytes.len();
-                chunk.bytes.extend_from_slice(&line);
+                chunk.bytes.extend_from_slice(text);
                 Ok(start..chunk.bytes.len())
             };
             chunk.items.push(Item {
                 number: *number,
                 bytes,
             });
-            if matches!(next, Next::TooLong) {
-                chunk.ended_too_long = true;
+            if let Next::TooLong { rest_unread } = next {
+                chunk.ended_too_long = rest_unread;
                 break;
             }
             if input.buffer().is_empty() {
@@ -198,8 +215,10 @@ pub fn threads() -> usize {
 /// too long is answered with `{"line": K, "error": "..."}` (K counts every input line from 1)
 /// and the run goes on; a too-long line is answered as soon as it passes the limit, and the
 /// rest of it is read past without being kept. An empty answer writes nothing (a log line that
-/// is not a call, a CSV header); an answer may hold several lines. Returns whether every line
-/// was answered without error.
+/// is not a call, a CSV header); an answer may hold several lines. `refused` hears of each line
+/// the loop answers itself (not UTF-8, too long), so that a tally can count it. A UTF-8 byte
+/// order mark before the first line is not part of it. Returns whether every line was answered
+/// without error.
 ///
 /// # Errors
 /// Reading `input` or writing `output` failed.
@@ -209,6 +228,7 @@ pub fn answer_lines<W: Send, E: core::fmt::Display>(
     threads: usize,
     work: impl Fn(&str) -> W + Sync,
     mut finish: impl FnMut(W) -> Result<String, E>,
+    mut refused: impl FnMut(),
 ) -> Result<bool, LinesError> {
     let mut input = io::BufReader::with_capacity(READ_BUFFER_BYTES, input);
     // One write per chunk, not one per line (stdout is line-buffered: two system calls a line).
@@ -220,7 +240,10 @@ pub fn answer_lines<W: Send, E: core::fmt::Display>(
         for (item, outcome) in chunk.items.iter().zip(chunk.work(threads, &work)) {
             let reply = match outcome {
                 Outcome::Blank => continue,
-                Outcome::Bad(message) => Err(message),
+                Outcome::Bad(message) => {
+                    refused();
+                    Err(message)
+                }
                 Outcome::Done(result) => finish(result).map_err(|e| e.to_string()),
             };
             let text = reply.unwrap_or_else(|message| {
@@ -257,6 +280,7 @@ mod tests {
             2,
             |line| line.len(),
             |len| Ok::<_, String>(format!("{{\"len\":{len}}}")),
+            || {},
         )
         .unwrap();
         let lines = String::from_utf8(out)
@@ -284,6 +308,48 @@ mod tests {
     }
 
     #[test]
+    fn the_newline_is_not_counted_whether_it_is_lf_or_crlf() {
+        // Issue 23: a 1 MiB line was refused with CRLF and taken with LF.
+        let exact = "x".repeat(MAX_LINE_BYTES);
+        let over = "y".repeat(MAX_LINE_BYTES + 1);
+        let input = format!("{exact}\r\n{over}\r\nab\r\n{over}\ncd");
+        let (all, lines) = answers(input.as_bytes());
+        assert!(!all);
+        assert_eq!(lines.len(), 5, "{lines:?}");
+        assert_eq!(lines[0]["len"], MAX_LINE_BYTES);
+        assert_eq!(lines[1]["line"], 2, "the line over the cap is refused");
+        assert_eq!(lines[2]["len"], 2, "and the next one read whole");
+        assert_eq!(lines[3]["line"], 4);
+        assert_eq!(lines[4]["len"], 2);
+    }
+
+    #[test]
+    fn a_byte_order_mark_before_the_first_line_is_not_part_of_it() {
+        // Issue 23: Excel's "CSV UTF-8" starts with one.
+        let (all, lines) = answers(&b"\xEF\xBB\xBFabc\n\xEF\xBB\xBFab\n"[..]);
+        assert!(all);
+        assert_eq!(lines[0]["len"], 3);
+        assert_eq!(lines[1]["len"], 5, "only the first line's is dropped");
+    }
+
+    #[test]
+    fn lines_the_loop_refuses_are_told_to_the_caller() {
+        let mut refused = 0;
+        let input = &b"ok\n\xFF\xFE\nok\n"[..];
+        let all = answer_lines(
+            input,
+            Vec::new(),
+            1,
+            str::len,
+            |len| Ok::<_, String>(len.to_string()),
+            || refused += 1,
+        )
+        .unwrap();
+        assert!(!all);
+        assert_eq!(refused, 1, "the line that is not UTF-8");
+    }
+
+    #[test]
     fn answers_keep_the_input_order_and_line_numbers_on_many_threads() {
         let mut text = String::new();
         for k in 1..=3 * CHUNK_LINES {
@@ -306,7 +372,8 @@ mod tests {
                 order.push(k);
                 Ok::<_, String>(format!("{{\"k\":{k}}}"))
             };
-            let all = answer_lines(text.as_bytes(), &mut out, threads, work, finish).unwrap();
+            let all =
+                answer_lines(text.as_bytes(), &mut out, threads, work, finish, || {}).unwrap();
             (all, String::from_utf8(out).unwrap(), order)
         };
         let (one, many) = (run(1), run(3));
@@ -351,10 +418,17 @@ mod tests {
     #[test]
     fn read_and_write_errors_are_told_apart() {
         let echo = |l: &str| Ok::<_, String>(l.to_owned());
-        let err = answer_lines(io::BufReader::new(Failing), Vec::new(), 2, echo, |r| r);
+        let err = answer_lines(
+            io::BufReader::new(Failing),
+            Vec::new(),
+            2,
+            echo,
+            |r| r,
+            || {},
+        );
         assert!(matches!(err, Err(LinesError::Read(_))), "{err:?}");
         let mut full = [0_u8; 4];
-        let err = answer_lines(&b"abcdef\n"[..], &mut full[..], 2, echo, |r| r);
+        let err = answer_lines(&b"abcdef\n"[..], &mut full[..], 2, echo, |r| r, || {});
         assert!(matches!(err, Err(LinesError::Write(_))), "{err:?}");
     }
 }

@@ -17,8 +17,8 @@ use refraction_model::ExplorerState;
 /// what was wrong.
 pub fn parse(text: &str) -> Result<ExplorerState, RequestError> {
     // Not trimmed: JSON allows the white space around it, and a leading blank line would shift
-    // the line numbers of malformed JSON.
-    let request = Request::parse(text)?;
+    // the line numbers of malformed JSON. A byte order mark some editors write is not JSON.
+    let request = Request::parse(text.strip_prefix('\u{feff}').unwrap_or(text))?;
     ExplorerState::new(
         DVec3::from_array(request.w),
         DVec3::from_array(request.n),
@@ -113,6 +113,12 @@ mod tests {
         let mut state = ExplorerState::default();
         state.set_convention(Convention::TowardOrigin);
         assert_eq!(parse(&to_json(&state)).unwrap(), state);
+        let marked = format!("\u{feff}{}", to_json(&state));
+        assert_eq!(
+            parse(&marked).unwrap(),
+            state,
+            "a byte order mark is read past"
+        );
         assert_eq!(
             parse(r#"{"w":[1,0,0]}"#).unwrap_err(),
             RequestError::Missing("n".into())

@@ -255,6 +255,7 @@ check-too-large = { $value } ist zu groß für { $precision }
 check-csv-unclosed-quote = nicht geschlossenes Anführungszeichen in der CSV-Zeile
 check-csv-no-column = die CSV-Kopfzeile hat keine Spalte `{ $field }`: Sie nennt { $names }; erwartet wird { $expected }
 check-csv-partial-vector = die CSV-Kopfzeile hat nur { $count } der 3 Komponenten von `{ $field }`
+check-csv-duplicate-column = die CSV-Kopfzeile nennt `{ $column }` mehr als einmal
 check-csv-cells = { $count ->
     [one] { $count } Zelle, wo die Kopfzeile { $columns } Spalten hat
    *[other] { $count } Zellen, wo die Kopfzeile { $columns } Spalten hat

@@ -252,6 +252,7 @@ check-too-large = { $value } is too large for { $precision }
 check-csv-unclosed-quote = unclosed quote in the CSV line
 check-csv-no-column = the CSV header has no column `{ $field }`: it names { $names }; expected { $expected }
 check-csv-partial-vector = the CSV header has only { $count } of `{ $field }`'s 3 components
+check-csv-duplicate-column = the CSV header names `{ $column }` more than once
 check-csv-cells = { $count } cells where the header has { $columns } columns
 check-csv-no-header = no usable CSV header: { $reason }
 check-pattern-unclosed = unclosed `{"{"}` in the pattern "{ $pattern }"

@@ -252,6 +252,7 @@ check-too-large = { $value } es demasiado grande para { $precision }
 check-csv-unclosed-quote = comilla sin cerrar en la línea CSV
 check-csv-no-column = la cabecera CSV no tiene la columna `{ $field }`: nombra { $names }; se esperaba { $expected }
 check-csv-partial-vector = la cabecera CSV solo tiene { $count } de las 3 componentes de `{ $field }`
+check-csv-duplicate-column = la cabecera CSV nombra `{ $column }` más de una vez
 check-csv-cells = { $count ->
     [one] { $count } celda donde la cabecera tiene { $columns } columnas
    *[other] { $count } celdas donde la cabecera tiene { $columns } columnas

@@ -252,6 +252,7 @@ check-too-large = { $value } est trop grand pour { $precision }
 check-csv-unclosed-quote = guillemet non fermé dans la ligne CSV
 check-csv-no-column = l’en-tête CSV n’a pas de colonne `{ $field }` : il nomme { $names } ; attendu : { $expected }
 check-csv-partial-vector = l’en-tête CSV n’a que { $count } des 3 composantes de `{ $field }`
+check-csv-duplicate-column = l’en-tête CSV nomme `{ $column }` plus d’une fois
 check-csv-cells = { $count ->
     [one] { $count } cellule là où l’en-tête a { $columns } colonnes
    *[other] { $count } cellules là où l’en-tête a { $columns } colonnes

@@ -253,6 +253,7 @@ check-too-large = { $value } é grande demais para { $precision }
 check-csv-unclosed-quote = aspas não fechadas na linha CSV
 check-csv-no-column = o cabeçalho CSV não tem a coluna `{ $field }`: ele nomeia { $names }; esperava-se { $expected }
 check-csv-partial-vector = o cabeçalho CSV tem só { $count } das 3 componentes de `{ $field }`
+check-csv-duplicate-column = o cabeçalho CSV nomeia `{ $column }` mais de uma vez
 check-csv-cells = { $count ->
     [one] { $count } célula onde o cabeçalho tem { $columns } colunas
    *[other] { $count } células onde o cabeçalho tem { $columns } colunas

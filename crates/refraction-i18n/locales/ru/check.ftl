@@ -256,6 +256,7 @@ check-too-large = { $value } слишком велико для { $precision }
 check-csv-unclosed-quote = незакрытая кавычка в строке CSV
 check-csv-no-column = в заголовке CSV нет столбца `{ $field }`: в нём { $names }; ожидается { $expected }
 check-csv-partial-vector = в заголовке CSV есть только { $count } из 3 компонент `{ $field }`
+check-csv-duplicate-column = в заголовке CSV `{ $column }` указан больше одного раза
 check-csv-cells = { $count ->
     [one] { $count } ячейка, а в заголовке { $columns } столбцов
     [few] { $count } ячейки, а в заголовке { $columns } столбцов

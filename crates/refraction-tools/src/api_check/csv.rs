@@ -86,7 +86,21 @@ impl Header {
     /// A missing argument or result column, a vector with only some of its components.
     pub fn parse(dialect: impl Into<Dialect>, line: &str) -> Result<Self, String> {
         let dialect = dialect.into();
-        let columns: Vec<Column> = cells(line)?.iter().map(|c| column(dialect, c)).collect();
+        let headings = cells(line)?;
+        let columns: Vec<Column> = headings.iter().map(|c| column(dialect, c)).collect();
+        // A field named twice would be read from either column: refuse it, as JSON's are.
+        let clash = |a: &Column, b: &Column| match (a, b) {
+            (Column::Field(f), Column::Field(g) | Column::Component(g, _))
+            | (Column::Component(f, _), Column::Field(g)) => f == g,
+            (Column::Component(f, x), Column::Component(g, y)) => f == g && x == y,
+            _ => false,
+        };
+        for (i, c) in columns.iter().enumerate() {
+            if columns[..i].iter().any(|earlier| clash(c, earlier)) {
+                let heading = headings[i].as_str();
+                return Err(t!("check-csv-duplicate-column", column = heading));
+            }
+        }
         let has = |field: &str| {
             columns.iter().any(|c| match c {
                 Column::Field(f) => *f == field,
@@ -188,6 +202,10 @@ mod tests {
     fn bad_headers_and_lines_say_why() {
         let e = Header::parse(Api::Rtiow, "uv,n,refracted").unwrap_err();
         assert!(e.contains("no column `etai_over_etat`"), "{e}");
+        let e = Header::parse(Api::Glsl, "I,N,eta,result,N").unwrap_err();
+        assert!(e.contains("`N` more than once"), "{e}");
+        let e = Header::parse(Api::Glsl, "I,I.x,I.y,I.z,N,eta,result").unwrap_err();
+        assert!(e.contains("`I.x` more than once"), "{e}");
         let e = Header::parse(Api::Glsl, "I.x,I.y,N,eta,result").unwrap_err();
         assert!(e.contains("only 2 of `I`'s 3 components"), "{e}");
         let header = Header::parse(Api::Glsl, "I,N,eta,result").unwrap();

@@ -378,13 +378,22 @@ impl Session {
         threads: usize,
     ) -> Result<bool, crate::LinesError> {
         let (reader, books) = (&self.reader, &mut self.books);
-        crate::answer_lines(
+        let mut refused = 0;
+        let answered = crate::answer_lines(
             input,
             output,
             threads,
             |line| reader.judge(line),
             |judged| books.settle(reader, judged),
-        )
+            || refused += 1,
+        );
+        // Lines the loop refused itself (not UTF-8, too long) are unreadable ones.
+        for _ in 0..refused {
+            books.tally.add("unreadable");
+            books.log.unreadable();
+        }
+        books.all_ok &= refused == 0;
+        answered
     }
 
     /// The record on one line, read in order, for the explorer's pasted logs (so that they

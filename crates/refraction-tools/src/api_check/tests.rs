@@ -6,7 +6,7 @@ use refraction_kernel::api::{Api, Args, Returned};
 use serde_json::{Value, json};
 
 use super::fields::names;
-use super::{Code, Format, Options, Session};
+use super::{Code, Format, Options, Pattern, Session};
 
 fn wide(v: Vec3) -> [f64; 3] {
     v.as_dvec3().to_array()
@@ -593,4 +593,19 @@ fn explanations_come_in_the_threads_language_with_its_decimal_comma() {
             .contains("pass 1/1.5 = 0.666667"),
         "English again once the language is set back"
     );
+}
+
+/// Issue 23: a line that is not UTF-8 was left out of the tally of a pattern run.
+#[test]
+fn a_line_that_is_not_utf8_is_counted_as_unreadable() {
+    let pattern =
+        Pattern::parse(Api::Rtiow, "uv={uv} n={n} r={etai_over_etat} t={refracted}").unwrap();
+    let mut session = Session::new(options(Api::Rtiow), Format::Pattern(pattern), false, false);
+    let mut input = b"uv=0 -1 0 n=0 1 0 r=1 t=0 -1 0\n".to_vec();
+    input.extend_from_slice(b"uv=\xFF\xFE\n");
+    let mut out = Vec::new();
+    let answered = session.run(&input[..], &mut out, 1).unwrap();
+    assert!(!answered && !session.all_ok());
+    assert_eq!(session.tally().summary(), "1 ok, 1 unreadable");
+    assert_eq!(session.summary().skipped, 1, "not judged");
 }
