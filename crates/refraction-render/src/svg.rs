@@ -67,11 +67,15 @@ fn trimmed(x: f32, decimals: usize) -> String {
     }
 }
 
-/// Text escaped for XML character data and attribute values.
+/// Text escaped for XML character data and attribute values. A character XML 1.0 cannot carry
+/// (a control character other than tab, newline and carriage return, U+FFFE, U+FFFF), as a
+/// scene's title or a medium's name may hold, becomes U+FFFD: the document stays well-formed.
 fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for ch in text.chars() {
         match ch {
+            '\t' | '\n' | '\r' => out.push(ch),
+            '\u{0}'..='\u{1f}' | '\u{fffe}' | '\u{ffff}' => out.push('\u{fffd}'),
             '&' => out.push_str("&amp;"),
             '<' => out.push_str("&lt;"),
             '>' => out.push_str("&gt;"),
@@ -286,6 +290,7 @@ mod tests {
                     colour,
                 },
                 Primitive::Text(label("a < b & \"c\"\nsecond")),
+                Primitive::Text(label("\u{1b}[31mred\u{0}")),
             ]
         })
         .unwrap();
@@ -299,7 +304,10 @@ mod tests {
             doc.contains(r##"fill="#112233" fill-opacity="0.502""##),
             "{doc}"
         );
-        assert_eq!(doc.matches("<tspan").count(), 2);
+        assert_eq!(doc.matches("<tspan").count(), 3);
+        // XML 1.0 cannot carry ESC or NUL: they become U+FFFD.
+        assert!(doc.contains(">\u{fffd}[31mred\u{fffd}<"), "{doc}");
+        assert!(!doc.contains('\u{1b}') && !doc.contains('\u{0}'), "{doc}");
     }
 
     #[test]

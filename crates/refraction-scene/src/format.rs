@@ -111,11 +111,13 @@ fn invalid<T>(span: Range<usize>, message: impl Into<String>) -> Result<T, Inval
     })
 }
 
-/// The range of vacuum wavelengths a source may have, in nm.
-const WAVELENGTHS_NM: Range<f64> = 200.0..2500.0;
+/// The range of vacuum wavelengths a source may have, in nm, both ends included, as the message
+/// says.
+const WAVELENGTHS_NM: core::ops::RangeInclusive<f64> = 200.0..=2500.0;
 
-/// The range of indices of refraction a medium may have at the traced wavelengths.
-const INDICES: Range<f64> = 0.01..100.0;
+/// The range of indices of refraction a medium may have at the traced wavelengths, both ends
+/// included, as the message says.
+const INDICES: core::ops::RangeInclusive<f64> = 0.01..=100.0;
 
 /// The default ray count of a beam or fan.
 const DEFAULT_RAYS: usize = 9;
@@ -280,7 +282,9 @@ impl MediaTable {
                         format!(
                             "medium `{}` has index {n} at {nm} nm: expected a number from {} to \
                              {} (check its coefficients and units: λ in µm)",
-                            medium.name, INDICES.start, INDICES.end
+                            medium.name,
+                            INDICES.start(),
+                            INDICES.end()
                         ),
                     );
                 }
@@ -534,8 +538,8 @@ fn source_light(spec: &Spanned<SourceSpec>) -> Result<Light, Invalid> {
             format!(
                 "`wavelength_nm` is {}: expected {} to {} nm",
                 shown(*nm.get_ref()),
-                WAVELENGTHS_NM.start,
-                WAVELENGTHS_NM.end
+                WAVELENGTHS_NM.start(),
+                WAVELENGTHS_NM.end()
             ),
         ),
     }
@@ -790,6 +794,15 @@ direction = [1, 0]
     }
 
     #[test]
+    fn the_ends_of_the_ranges_the_messages_give_are_taken() {
+        // Issue 23: `index = 100` was refused while the message said "0.01 to 100".
+        let edges = format!(
+            "{MINIMAL}wavelength_nm = 2500\n[media.dense]\nindex = 100\n[media.thin]\nindex = 0.01\n"
+        );
+        Scene::from_toml(&edges, "x.toml", "x").unwrap_or_else(|e| panic!("{e}"));
+    }
+
+    #[test]
     fn a_minimal_file_loads_with_defaults() {
         let scene = Scene::from_toml(MINIMAL, "x.toml", "x").unwrap();
         assert_eq!(scene.media()[scene.background()].name, "vacuum");
@@ -991,6 +1004,7 @@ direction = [1, 0]
                 "-1",
             ),
             ("[media.g]\nindex = 1000\n", "index 1000", "1000"),
+            ("[media.g]\nindex = 100.5\n", "index 100.5", "100.5"),
             (
                 "[effects]\nfresnel = true\nmax_depth = 100000\n",
                 "max_depth",
