@@ -33,15 +33,18 @@ pub const MAX_COORDINATE: f64 = 1e5;
 /// size is [`MAX_COORDINATE`].
 pub const MIN_SIZE: f64 = 1e-6;
 
-/// The most shapes a scene file may have.
-pub const MAX_SHAPES: usize = 100_000;
+/// The most shapes a scene file may have: a file of this many circles fits under
+/// [`MAX_SCENE_FILE_BYTES`], so the limit is one a file can reach.
+pub const MAX_SHAPES: usize = 10_000;
 
 /// The largest scene file [`crate::Scene::load`] reads: 1 MiB (the built-in scenes are under
 /// 4 KiB).
 pub const MAX_SCENE_FILE_BYTES: u64 = 1 << 20;
 
-/// The most polygon points a scene file may have, over all its polygons.
-pub const MAX_POINTS: usize = 1_000_000;
+/// The most polygon points a scene file may have, over all its polygons: this many, written
+/// with two decimals, fit under [`MAX_SCENE_FILE_BYTES`], so the limit is one a file can
+/// reach.
+pub const MAX_POINTS: usize = 50_000;
 
 /// A line and column in a file, both counted from 1 (columns in characters).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -1103,7 +1106,7 @@ direction = [1, 0]
         let e = shapes(&tables, &media).unwrap_err();
         assert_eq!(e.span, MAX_SHAPES..MAX_SHAPES + 1);
         assert!(
-            e.message.contains("more than 100000 shapes"),
+            e.message.contains("more than 10000 shapes"),
             "{}",
             e.message
         );
@@ -1129,10 +1132,50 @@ direction = [1, 0]
         let e = shapes(&many, &media).unwrap_err();
         assert_eq!(e.span, 2..3);
         assert!(
-            e.message.contains("more than 1000000 polygon points"),
+            e.message.contains("more than 50000 polygon points"),
             "{}",
             e.message
         );
+    }
+
+    /// Issue 23: the limits were out of reach of a 1 MiB file (1,000,000 points, 100,000
+    /// shapes); a file at each limit fits and loads.
+    #[test]
+    fn a_file_at_each_limit_fits_under_the_size_cap_and_loads() {
+        use core::fmt::Write as _;
+        let mut points = String::from(MINIMAL);
+        points.push_str("[media.g]\nindex = 1.5\n");
+        let per = MAX_POINTS / 5;
+        for k in 0..5 {
+            let corners: Vec<String> = (0..per)
+                .map(|i| {
+                    let a = core::f64::consts::TAU * i as f64 / per as f64;
+                    let x = 300.0 * f64::from(k) + 100.0 * a.cos();
+                    format!("[{x:.2},{:.2}]", 100.0 * a.sin())
+                })
+                .collect();
+            let _ = writeln!(
+                points,
+                "[[shapes]]\npolygon = {{ points = [{}], medium = \"g\" }}",
+                corners.join(",")
+            );
+        }
+        let mut circles = format!("{MINIMAL}[media.g]\nindex = 1.5\n");
+        for k in 0..MAX_SHAPES {
+            let (x, y) = (k % 100, k / 100);
+            let _ = writeln!(
+                circles,
+                "[[shapes]]\ncircle = {{ center = [{x}, {y}], radius = 0.25, medium = \"g\" }}"
+            );
+        }
+        for text in [points, circles] {
+            assert!(
+                text.len() as u64 <= MAX_SCENE_FILE_BYTES,
+                "{} bytes",
+                text.len()
+            );
+            Scene::from_toml(&text, "x.toml", "x").unwrap_or_else(|e| panic!("{e}"));
+        }
     }
 
     #[test]

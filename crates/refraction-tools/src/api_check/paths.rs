@@ -138,6 +138,13 @@ impl Path {
             normal: diagnosis.right.normal,
             mu: diagnosis.right.mu,
         };
+        // Where the logged ray still is the right one, the retrace takes it up: rounding in
+        // the logged numbers then cannot pile up over a long path, and a ray already sent wrong
+        // (much farther off than that) is still followed on its own.
+        let incoming = unit(diagnosis.right.travel);
+        if angle(incoming, self.through_surfaces) <= MATCH_ANGLE / 4.0 {
+            self.through_surfaces = incoming;
+        }
         self.through_surfaces = right_step(self.through_surfaces, hit.normal, hit.mu);
         if self.kept.len() < MAX_KEPT {
             self.kept.push(hit);
