@@ -206,17 +206,6 @@ fn parse() -> Result<Cli, ExitCode> {
     })
 }
 
-/// The name of a subcommand whose product is its stdout, which must not be closed.
-fn writes_stdout(command: &Command) -> Option<&'static str> {
-    match command {
-        Command::Solve => Some("solve"),
-        Command::Check { .. } => Some("check"),
-        Command::Bench { .. } => Some("bench"),
-        Command::Trace { .. } => Some("trace"),
-        Command::Render(_) => None,
-    }
-}
-
 fn main() -> ExitCode {
     let cli = match parse() {
         Ok(cli) => cli,
@@ -227,10 +216,6 @@ fn main() -> ExitCode {
     let draws = matches!(cli.command, None | Some(Command::Render(_)));
     if let Some(language) = cli.lang.filter(|_| draws) {
         refraction_i18n::set_locale(language);
-    }
-    let refused = cli.command.as_ref().and_then(writes_stdout);
-    if let Some(status) = refused.and_then(commands::refuse_closed_stdout) {
-        return status;
     }
     match cli.command {
         Some(Command::Solve) => commands::lines::solve(),

@@ -36,15 +36,3 @@ pub fn output_error(command: &str, error: &std::io::Error) -> ExitCode {
         fail(command, &format!("cannot write the output: {error}"))
     }
 }
-
-/// Refuses to run `command`, whose product is its stdout, when stdout was closed (`>&-`):
-/// everything written would be lost.
-pub fn refuse_closed_stdout(command: &str) -> Option<ExitCode> {
-    output::stdout_closed().then(|| {
-        fail(
-            command,
-            &"standard output is closed, so the output would be lost: redirect it to a file, \
-              or to /dev/null to discard it",
-        )
-    })
-}

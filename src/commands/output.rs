@@ -51,30 +51,6 @@ pub fn to_stderr(text: &str) -> io::Result<()> {
     err.flush()
 }
 
-/// Whether stdout was closed when the program started (`>&-`). The Rust runtime opens
-/// `/dev/null` read-write in place of a closed standard descriptor, so a write to it would
-/// succeed and the output be lost; a shell's `>/dev/null` opens it write-only.
-#[cfg(unix)]
-pub fn stdout_closed() -> bool {
-    use rustix::fs::{FileType, OFlags};
-    use std::os::unix::fs::MetadataExt as _;
-    let stdout = io::stdout();
-    let read_write =
-        rustix::fs::fcntl_getfl(&stdout).is_ok_and(|flags| flags & OFlags::RWMODE == OFlags::RDWR);
-    let null = std::fs::metadata("/dev/null").map(|m| m.rdev());
-    read_write
-        && rustix::fs::fstat(&stdout).is_ok_and(|s| {
-            FileType::from_raw_mode(s.st_mode) == FileType::CharacterDevice
-                && null.is_ok_and(|rdev| rdev == s.st_rdev)
-        })
-}
-
-/// Whether stdout was closed when the program started: not detectable here.
-#[cfg(not(unix))]
-pub fn stdout_closed() -> bool {
-    false
-}
-
 /// A progress line on stderr, `WHAT  42%`, drawn over itself, when stderr is a terminal (a
 /// log file gets no progress noise); the first failed write is kept, stops the line, and is
 /// reported by [`ProgressLine::finish`].

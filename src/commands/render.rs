@@ -146,9 +146,6 @@ impl<'a> Destination<'a> {
                 format.extension()
             ));
         }
-        if output::stdout_closed() {
-            return Err(format!("{option} -: standard output is closed"));
-        }
         Ok(Self::Stdout)
     }
 

@@ -19,6 +19,10 @@ pub fn parse(text: &str) -> Result<ExplorerState, RequestError> {
     // Not trimmed: JSON allows the white space around it, and a leading blank line would shift
     // the line numbers of malformed JSON. A byte order mark some editors write is not JSON.
     let request = Request::parse(text.strip_prefix('\u{feff}').unwrap_or(text))?;
+    // The explorer works in f64, but a state that says f32 keeps f32's limits, as `solve`.
+    if request.precision == Precision::F32 {
+        request.incidence::<f32>()?;
+    }
     ExplorerState::new(
         DVec3::from_array(request.w),
         DVec3::from_array(request.n),
@@ -113,6 +117,16 @@ mod tests {
         let mut state = ExplorerState::default();
         state.set_convention(Convention::TowardOrigin);
         assert_eq!(parse(&to_json(&state)).unwrap(), state);
+        // Issue 23: `render --state` took what `solve` refuses in f32.
+        let huge = r#"{"w":[1e300,-1,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5,"precision":"f32"}"#;
+        assert!(
+            parse(huge)
+                .unwrap_err()
+                .to_string()
+                .contains("too large for f32"),
+            "{huge}"
+        );
+        assert!(parse(&huge.replace("f32", "f64")).is_ok());
         let marked = format!("\u{feff}{}", to_json(&state));
         assert_eq!(
             parse(&marked).unwrap(),
