@@ -47,6 +47,9 @@ libfuzzer_sys::fuzz_target!(|data: &[u8]| {
         answer::assert_json(std::str::from_utf8(&out).expect("answers are UTF-8"));
         let summary = session.summary();
         assert!(summary.judged <= summary.lines, "{summary:?}");
-        summary.sentences().iter().for_each(|s| message::assert_message(s));
+        summary
+            .sentences()
+            .iter()
+            .for_each(|s| message::assert_message(s));
     }
 });
