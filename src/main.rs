@@ -197,12 +197,30 @@ enum Command {
     Render(commands::render::RenderArgs),
 }
 
-/// The parsed command line, or the exit status after clap's help, version or usage error was
-/// printed (2 if even that could not be written).
+/// The command line, or the exit status after `--help`, `--version` or a usage error. A usage
+/// error is one line, as every other error is: clap's first line, without its usage block.
 fn parse() -> Result<Cli, ExitCode> {
-    Cli::try_parse().map_err(|e| match e.print() {
-        Ok(()) => ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2)),
-        Err(_) => ExitCode::from(2),
+    Cli::try_parse().map_err(|e| {
+        use clap::error::ErrorKind;
+        if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion)
+            || e.exit_code() == 0
+        {
+            return match e.print() {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(_) => ExitCode::from(2),
+            };
+        }
+        // clap's message, up to its usage block, on one line.
+        let rendered = e.render().to_string();
+        let said: Vec<&str> = rendered
+            .lines()
+            .map(str::trim)
+            .take_while(|l| !l.starts_with("Usage:") && !l.starts_with("For more information"))
+            .filter(|l| !l.is_empty() && !l.starts_with("tip:"))
+            .collect();
+        let said = said.join(" ");
+        let said = said.strip_prefix("error: ").unwrap_or(&said);
+        commands::fail("", &format!("{said} (--help lists the options)"))
     })
 }
 

@@ -21,6 +21,8 @@ pub const CLOSED_PIPE: u8 = 141;
 /// a terminal escaped (see [`output::printable`]), and returns exit status 2.
 pub fn fail(command: &str, message: &dyn core::fmt::Display) -> ExitCode {
     let space = if command.is_empty() { "" } else { " " };
+    let message = message.to_string();
+    let message = refraction_tools::brief(&message);
     let line = format!("refraction-explorer{space}{command}: {message}");
     // The exit status says it failed even when stderr cannot say why.
     let _ = output::to_stderr(&output::printable(&line));

@@ -379,3 +379,41 @@ fn bench_to_a_full_disk_exits_non_zero_without_panicking() {
     assert_eq!(output.status.code(), Some(2), "{output:?}");
     assert!(stderr(&output).contains("No space left on device"));
 }
+
+#[test]
+fn a_usage_error_is_one_line_as_every_other_error_is() {
+    // Issue 23: clap's usage errors took three lines (the error, its usage block, a tip).
+    for args in [
+        &["solve", "--bogus"][..],
+        &["check", "--api"],
+        &["nonsense"],
+        &["render", "--size", "wide", "--out", "x.png"],
+    ] {
+        let output = run(args, "");
+        assert_eq!(output.status.code(), Some(2), "{args:?}");
+        let said = stderr(&output);
+        assert_eq!(said.lines().count(), 1, "{args:?}: {said}");
+        assert!(
+            said.starts_with("refraction-explorer: ") && said.contains("--help lists the options"),
+            "{args:?}: {said}"
+        );
+        assert!(!said.contains("Usage:"), "{args:?}: {said}");
+    }
+    let help = run(&["solve", "--help"], "");
+    assert_eq!(help.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&help.stdout).contains("Usage:"));
+}
+
+#[test]
+fn a_message_quoting_a_megabyte_of_input_is_cut_to_a_few_hundred_characters() {
+    // Issue 23: an error echoed up to about 1 MB of the line it refused.
+    let line = format!("{{\"w\":\"{}\"}}\n", "a".repeat(900_000));
+    let output = run(&["check"], &line);
+    let answer = String::from_utf8_lossy(&output.stdout);
+    assert!(answer.len() < 1_000, "{} bytes", answer.len());
+    assert!(answer.contains("characters left out"), "{answer}");
+    let path = folder("long-name").join(format!("{}.png", "n".repeat(5_000)));
+    let output = run(&["render", "--out", &path.display().to_string()], "");
+    assert_eq!(output.status.code(), Some(2));
+    assert!(stderr(&output).len() < 1_000, "{}", stderr(&output));
+}

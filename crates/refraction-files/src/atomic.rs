@@ -119,11 +119,49 @@ fn folder_of(path: &Path) -> io::Result<&Path> {
     })
 }
 
-/// A new exclusively created, unpredictably named temporary file in `folder`, with the
-/// permissions a new file gets (0666 less the umask: the temporary crate's default is 0600).
-fn temporary_in(folder: &Path) -> io::Result<tempfile::NamedTempFile> {
+/// The start of the names of the temporary files written for `path`: hidden, and naming the
+/// file they will become, so that those a killed writer left can be told and cleaned.
+fn temporary_prefix(path: &Path) -> String {
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
+    format!(".refraction-{}-", name.unwrap_or_default())
+}
+
+/// How old a temporary file of ours must be to count as left by a writer that was killed
+/// (`kill -9` skips the removal): no writer takes this long between creating and renaming it.
+const STALE: core::time::Duration = core::time::Duration::from_mins(10);
+
+/// Removes the temporary files for `path` in `folder` that a killed writer left behind: only
+/// regular files named as [`temporary_prefix`] names them and older than [`STALE`]. What cannot
+/// be removed is left; the write goes on either way.
+fn clean_stale(folder: &Path, path: &Path) {
+    let prefix = temporary_prefix(path);
+    let Ok(entries) = fs::read_dir(folder) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        // The temporary crate writes the suffix as given, in lower case.
+        let ours =
+            name.starts_with(&prefix) && Path::new(&name).extension().is_some_and(|e| e == "tmp");
+        let stale = entry.metadata().is_ok_and(|m| {
+            m.is_file()
+                && m.modified()
+                    .is_ok_and(|t| t.elapsed().is_ok_and(|age| age > STALE))
+        });
+        if ours && stale {
+            // Best effort: a file another user owns in a shared folder stays.
+            fs::remove_file(entry.path()).ok();
+        }
+    }
+}
+
+/// A new exclusively created, unpredictably named temporary file in `folder` for `path`, with
+/// the permissions a new file gets (0666 less the umask: the temporary crate's default is
+/// 0600).
+fn temporary_in(folder: &Path, path: &Path) -> io::Result<tempfile::NamedTempFile> {
     let mut builder = tempfile::Builder::new();
-    builder.prefix(".refraction-").suffix(".tmp");
+    let prefix = temporary_prefix(path);
+    builder.prefix(&prefix).suffix(".tmp");
     #[cfg(unix)]
     builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
     builder.tempfile_in(folder).map_err(|e| {
@@ -146,7 +184,9 @@ fn replace(
     permissions: Option<Permissions>,
     write: impl FnOnce(&mut File) -> io::Result<()>,
 ) -> io::Result<()> {
-    let mut temporary = temporary_in(folder_of(path)?)?;
+    let folder = folder_of(path)?;
+    clean_stale(folder, path);
+    let mut temporary = temporary_in(folder, path)?;
     if let Some(permissions) = permissions {
         temporary.as_file().set_permissions(permissions)?;
     }
@@ -201,7 +241,9 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> io::Result<()> {
 /// As [`write_atomically`]'s refusals, with the same messages.
 pub fn check_writable(path: &Path) -> io::Result<()> {
     match target(path) {
-        Ok(Target::Replace(_)) => folder_of(path).and_then(temporary_in).map(drop),
+        Ok(Target::Replace(_)) => folder_of(path)
+            .and_then(|folder| temporary_in(folder, path))
+            .map(drop),
         Ok(Target::Stream) => Ok(()),
         Err(e) => Err(e),
     }
@@ -227,6 +269,34 @@ mod tests {
             .collect();
         names.sort();
         names
+    }
+
+    #[test]
+    fn a_temporary_file_a_killed_writer_left_is_cleaned_on_the_next_write() {
+        // Issue 23: kill -9 between creating and renaming leaves a hidden temporary file.
+        let folder = folder("stale");
+        let old = std::time::SystemTime::now() - 2 * STALE;
+        for name in [
+            ".refraction-out.txt-left.tmp",
+            ".refraction-out.txt-busy.tmp",
+            ".refraction-other.txt-left.tmp",
+        ] {
+            let file = File::create(folder.join(name)).unwrap();
+            if name.contains("left") {
+                file.set_modified(old).unwrap();
+            }
+        }
+        write_atomically(&folder.join("out.txt"), b"new").unwrap();
+        assert_eq!(
+            entries(&folder),
+            [
+                ".refraction-other.txt-left.tmp",
+                ".refraction-out.txt-busy.tmp",
+                "out.txt"
+            ],
+            "only this file's stale one goes; a recent one may be another writer's"
+        );
+        fs::remove_dir_all(&folder).unwrap();
     }
 
     #[test]

@@ -81,3 +81,90 @@ fn the_file_is_written_atomically_and_not_at_all_when_cancelled() {
     assert_eq!(std::fs::read_dir(&folder).unwrap().count(), 1);
     std::fs::remove_dir_all(&folder).unwrap();
 }
+
+/// The frames of `animation` drawn one by one on this thread, as RGBA pixels.
+fn drawn_alone(animation: Animation, frames: usize, size: (u32, u32)) -> Vec<Vec<u8>> {
+    let start = ExplorerState::default();
+    (0..frames)
+        .map(|index| {
+            let frame = animation.frame(&start, index, frames);
+            let pixmap = refraction_render::draw_primitives(size.0, size.1, |size, _| {
+                frame.primitives(size, &Overlay::default())
+            })
+            .unwrap();
+            pixmap.data().to_vec()
+        })
+        .collect()
+}
+
+/// How far apart two RGBA images are: the sum of their channels' differences.
+fn distance(a: &[u8], b: &[u8]) -> u64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| u64::from(x.abs_diff(*y)))
+        .sum()
+}
+
+#[test]
+fn frames_drawn_on_several_threads_are_written_in_order() {
+    // Issue 23: frames are drawn a batch at a time on every core; each must land in its place.
+    let (frames, size) = (7, (160, 90));
+    let spec = AnimationSpec {
+        frames,
+        ..AnimationSpec::new(Animation::Sweep, size)
+    };
+    let mut told = Vec::new();
+    let bytes = gif(
+        &ExplorerState::default(),
+        &Overlay::default(),
+        &spec,
+        |done, all| {
+            told.push((done, all));
+            true
+        },
+    )
+    .unwrap();
+    let expected: Vec<(usize, usize)> = (1..=frames).map(|done| (done, frames)).collect();
+    assert_eq!(told, expected, "progress is told once a frame, in order");
+    let alone = drawn_alone(Animation::Sweep, frames, size);
+    let (_, _, decoded) = decode(&bytes);
+    for (index, frame) in decoded.iter().enumerate() {
+        let nearest = (0..frames)
+            .min_by_key(|&other| distance(&frame.3, &alone[other]))
+            .unwrap();
+        assert_eq!(
+            nearest, index,
+            "frame {index} of the GIF is frame {nearest} drawn alone"
+        );
+    }
+}
+
+#[test]
+fn frames_drawn_on_other_threads_speak_the_language_of_the_thread_that_asked() {
+    let spec = AnimationSpec {
+        frames: 3,
+        ..AnimationSpec::new(Animation::Mu, (320, 180))
+    };
+    let in_language = |locale| {
+        refraction_i18n::set_locale(locale);
+        let bytes = gif(
+            &ExplorerState::default(),
+            &Overlay::default(),
+            &spec,
+            |_, _| true,
+        );
+        refraction_i18n::set_locale(refraction_i18n::Locale::En);
+        decode(&bytes.unwrap()).2
+    };
+    let (english, german) = (
+        in_language(refraction_i18n::Locale::En),
+        in_language(refraction_i18n::Locale::De),
+    );
+    assert_eq!(english.len(), german.len());
+    for (index, (en, de)) in english.iter().zip(&german).enumerate() {
+        assert_ne!(
+            en.3, de.3,
+            "frame {index} has the words of the asking thread's language"
+        );
+    }
+}

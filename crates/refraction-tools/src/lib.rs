@@ -33,10 +33,31 @@ pub enum LinesError {
     Write(#[source] io::Error),
 }
 
-/// The error line for input line `line` (1-based).
+/// The error line for input line `line` (1-based), its message [`brief`].
 #[must_use]
 pub fn error_line(line: usize, message: &str) -> String {
-    serde_json::json!({ "line": line, "error": message }).to_string()
+    serde_json::json!({ "line": line, "error": brief(message) }).to_string()
+}
+
+/// The most characters a message keeps: it may quote the input it refuses, and a line can be
+/// a megabyte long.
+pub const MAX_MESSAGE_CHARS: usize = 600;
+
+/// `message` cut to about [`MAX_MESSAGE_CHARS`]: its beginning and its end (where a message
+/// says what was wrong with what it quoted), the middle left out and counted.
+#[must_use]
+pub fn brief(message: &str) -> std::borrow::Cow<'_, str> {
+    let count = message.chars().count();
+    if count <= MAX_MESSAGE_CHARS {
+        return std::borrow::Cow::Borrowed(message);
+    }
+    let (head, tail) = (MAX_MESSAGE_CHARS * 3 / 4, MAX_MESSAGE_CHARS / 6);
+    let start: String = message.chars().take(head).collect();
+    let end: String = message.chars().skip(count - tail).collect();
+    let left_out = count - head - tail;
+    std::borrow::Cow::Owned(format!(
+        "{start} … ({left_out} characters left out) … {end}"
+    ))
 }
 
 /// One input line as [`next_line`] read it.
@@ -305,6 +326,24 @@ mod tests {
         assert!(message.starts_with("line 1 is longer than 1 MiB (1048576 bytes)"));
         assert_eq!(lines[1]["len"], MAX_LINE_BYTES);
         assert_eq!(lines[2]["len"], 2);
+    }
+
+    #[test]
+    fn a_message_quoting_a_huge_input_keeps_its_ends() {
+        // Issue 23: an error echoed up to a megabyte of the line it refused.
+        let message = format!("\"{}\" is not a number", "9".repeat(1_000_000));
+        let short = brief(&message);
+        assert!(
+            short.chars().count() < MAX_MESSAGE_CHARS + 60,
+            "{}",
+            short.len()
+        );
+        assert!(
+            short.starts_with("\"999") && short.ends_with("\" is not a number"),
+            "{short}"
+        );
+        assert!(short.contains("characters left out"), "{short}");
+        assert_eq!(brief("short"), "short");
     }
 
     #[test]
