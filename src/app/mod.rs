@@ -321,6 +321,10 @@ impl Explorer {
         paint::share_palette(ui.ctx(), self.presentation.palette());
         self.tools.walk.animate(ui.ctx(), &mut self.state);
         self.physics.animate(ui.ctx());
+        if ui.input(|i| !i.raw.dropped_files.is_empty()) {
+            self.tools.take_dropped(ui.ctx());
+            self.view = View::Interface;
+        }
         Panel::top("views").show(ui, |ui| self.bar(ui));
         match self.view {
             View::Interface => self.show_interface(ui),

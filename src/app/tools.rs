@@ -66,7 +66,7 @@ impl Tool {
 }
 
 /// The tools and which one is open.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Debug, Default)]
 pub struct Tools {
     /// The open tool, if any.
     pub open: Option<Tool>,
@@ -128,6 +128,16 @@ impl Tools {
                 Tool::Fresnel => fresnel_panel::show(ui, state, palette),
             });
         });
+    }
+
+    /// Opens a file dropped on the window as a log in Check my T, which opens (a renderer's
+    /// log is what a student drops; a state or scene has its own Open).
+    pub fn take_dropped(&mut self, ctx: &egui::Context) {
+        let dropped = ctx.input(|i| i.raw.dropped_files.first().map(|f| f.path().to_path_buf()));
+        if let Some(path) = dropped {
+            self.open = Some(Tool::Check);
+            self.check.open_log(&path);
+        }
     }
 
     /// What the walk-through highlights, while it is open.

@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{click, harness, type_into};
+use common::{click, harness, paste_log, reach, type_into};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use glam::DVec3;
@@ -166,24 +166,6 @@ fn check_my_t_opens_a_whole_json_line_and_refuses_bad_ones_without_changing_the_
         h.query_by_label_contains("μt: “x” is not a number")
             .is_some()
     );
-}
-
-/// Scrolls the panel to the widget labelled `label` and clicks it (the panel is short).
-fn reach(h: &mut Harness<'_, Explorer>, label: &str) {
-    h.get_by_label(label).scroll_to_me();
-    h.run();
-    click(h, label);
-}
-
-/// Replaces the text of the multi-line box of pasted log lines.
-fn paste_log(h: &mut Harness<'_, Explorer>, text: &str) {
-    let role = egui::Role::MultilineTextInput;
-    h.get_by_role_and_label(role, "Log lines").focus();
-    h.run();
-    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
-    h.run();
-    h.get_by_role_and_label(role, "Log lines").type_text(text);
-    h.run();
 }
 
 /// The text fields the panel shows now, by their labels.

@@ -100,22 +100,7 @@ pub fn variant_colour(variant: &str, palette: &Palette) -> Colour {
     palette.series[series]
 }
 
-/// The shape of a variant's markers, so that no two variants differ by colour alone.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Marker {
-    /// A circle.
-    Circle,
-    /// A square.
-    Square,
-    /// A diamond.
-    Diamond,
-    /// An upward triangle.
-    Triangle,
-    /// A plus sign.
-    Plus,
-    /// A cross.
-    Cross,
-}
+pub use super::plot::Marker;
 
 /// The marker of a variant: each kernel variant and the peer its own.
 #[must_use]

@@ -364,6 +364,7 @@ pub fn primitives(plot: &FresnelPlot, size: Vec2, palette: &Palette) -> Vec<Prim
 mod tests {
     use super::*;
     use crate::palette::Theme;
+    use crate::shapes::texts;
 
     fn state(w: DVec3, mu_i: f64, mu_t: f64) -> ExplorerState {
         let mut s = ExplorerState::default();
@@ -371,16 +372,6 @@ mod tests {
         s.set_mu_i(mu_i).unwrap();
         s.set_mu_t(mu_t).unwrap();
         s
-    }
-
-    fn texts(primitives: &[Primitive]) -> Vec<String> {
-        primitives
-            .iter()
-            .filter_map(|p| match p {
-                Primitive::Text(l) => Some(l.text.clone()),
-                _ => None,
-            })
-            .collect()
     }
 
     #[test]

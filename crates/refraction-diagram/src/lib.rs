@@ -13,7 +13,9 @@
 //! - [`shapes`], [`geometry`], [`palette`], [`font`]: its vocabulary;
 //! - [`placer`]: the one label placer of every view: labels inside the canvas, off what they name;
 //! - [`table`], [`equations`], [`quadratic`]: the numbers shown beside it;
+//! - [`plot`]: what the plots share: axes, markers whose shapes differ, a legend clear of the data;
 //! - [`accuracy_plot`]: the `bench` report as error against time;
+//! - [`failure_map`]: a judged log's error against the angle of incidence, a panel per side;
 //! - [`animation`]: the frames of the animations exported for slides;
 //! - [`fresnel_plot`]: reflectance and transmittance against the angle of incidence;
 //! - [`intensities`]: the share of the light each ray carries, for s, p or unpolarised light;
@@ -23,6 +25,7 @@
 pub mod accuracy_plot;
 pub mod animation;
 pub mod equations;
+pub mod failure_map;
 pub mod font;
 pub mod fresnel_plot;
 pub mod geometry;
@@ -33,6 +36,7 @@ pub mod overlay;
 pub mod palette;
 pub mod picture;
 pub mod placer;
+pub mod plot;
 pub mod quadratic;
 pub mod scene_picture;
 pub mod scene_words;

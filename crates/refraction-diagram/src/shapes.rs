@@ -186,6 +186,18 @@ pub enum Primitive {
     Text(Label),
 }
 
+/// The words of every text among `primitives`, in drawing order.
+#[must_use]
+pub fn texts(primitives: &[Primitive]) -> Vec<&str> {
+    primitives
+        .iter()
+        .filter_map(|p| match p {
+            Primitive::Text(label) => Some(label.text.as_str()),
+            _ => None,
+        })
+        .collect()
+}
+
 fn polylines(points: &[Vec2], stroke: &Stroke, out: &mut Vec<Primitive>) {
     for piece in dash(points, &stroke.dash.pattern(stroke.width)) {
         out.push(Primitive::Polyline {

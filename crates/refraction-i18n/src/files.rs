@@ -4,9 +4,16 @@ use crate::Locale;
 
 /// The files of every language's folder under the crate's `locales/`, by what their messages are
 /// about: the window, its tools and panels (`explorer`), what is drawn on the diagram, the
-/// scenes and the plots (`diagram`), Check my T and its verdicts (`check`), and files, saving
-/// and exporting (`files`).
-pub const FILES: [&str; 4] = ["explorer.ftl", "diagram.ftl", "check.ftl", "files.ftl"];
+/// scenes and the plots (`diagram`), Check my T and its verdicts (`check`), files, saving and
+/// exporting (`files`), and a whole log judged in the window: opening it, its diagnosis, its
+/// failure map and its failing lines saved as tests (`logs`).
+pub const FILES: [&str; 5] = [
+    "explorer.ftl",
+    "diagram.ftl",
+    "check.ftl",
+    "files.ftl",
+    "logs.ftl",
+];
 
 /// One language's files, in the order of [`FILES`].
 macro_rules! folder {
@@ -16,19 +23,20 @@ macro_rules! folder {
             include_str!(concat!("../locales/", $code, "/diagram.ftl")),
             include_str!(concat!("../locales/", $code, "/check.ftl")),
             include_str!(concat!("../locales/", $code, "/files.ftl")),
+            include_str!(concat!("../locales/", $code, "/logs.ftl")),
         ]
     };
 }
 
-const EN: [&str; 4] = folder!("en");
-const DE: [&str; 4] = folder!("de");
-const ES: [&str; 4] = folder!("es");
-const FR: [&str; 4] = folder!("fr");
-const PT_BR: [&str; 4] = folder!("pt-BR");
-const RU: [&str; 4] = folder!("ru");
+const EN: [&str; 5] = folder!("en");
+const DE: [&str; 5] = folder!("de");
+const ES: [&str; 5] = folder!("es");
+const FR: [&str; 5] = folder!("fr");
+const PT_BR: [&str; 5] = folder!("pt-BR");
+const RU: [&str; 5] = folder!("ru");
 
 /// The text of `locale`'s files, in the order of [`FILES`].
-pub(crate) fn sources(locale: Locale) -> &'static [&'static str; 4] {
+pub(crate) fn sources(locale: Locale) -> &'static [&'static str; 5] {
     match locale {
         Locale::En => &EN,
         Locale::De => &DE,

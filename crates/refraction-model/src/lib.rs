@@ -1,8 +1,8 @@
 //! What the refraction explorer shows, with no drawing and no window: the state being explored
 //! ([`ExplorerState`]: W, N, the two indices and the convention, always valid, with the
 //! kernel's answer), the lessons that start one, the angles at which something happens for a
-//! pair of media ([`SpecialAngles`]), and the figures the `bench` command measures
-//! ([`report::Report`]).
+//! pair of media ([`SpecialAngles`]), the figures the `bench` command measures
+//! ([`report::Report`]) and those of a judged log that its failure map draws ([`log_map`]).
 //!
 //! It sits below the diagram, which draws it, and the tools, which read and write it (a state
 //! file is one `solve` line), so neither needs the other.
@@ -19,6 +19,7 @@
 //! # Ok::<(), refraction_kernel::InputError>(())
 //! ```
 
+pub mod log_map;
 pub mod report;
 mod special_angles;
 mod state;

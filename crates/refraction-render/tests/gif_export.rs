@@ -91,7 +91,7 @@ fn drawn_alone(animation: Animation, frames: usize, size: (u32, u32)) -> Vec<Vec
             let pixmap = refraction_render::draw_primitives(size.0, size.1, |size, _| {
                 frame.primitives(size, &Overlay::default())
             })
-            .unwrap();
+            .expect("the frame draws");
             pixmap.data().to_vec()
         })
         .collect()

@@ -20,16 +20,7 @@ use refraction_kernel::api::Api;
 use serde::Serialize;
 
 use crate::api_check::Code;
-
-/// Which side of the surface a ray arrives from.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum Side {
-    /// From outside the object (entering it).
-    Outside,
-    /// From inside the object (leaving it), or from the normal's far side where only the
-    /// normal tells.
-    Inside,
-}
+pub use refraction_model::log_map::Side;
 
 /// What one judged line tells the diagnosis of the whole log.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]

@@ -170,12 +170,7 @@ fn picture(
 impl Judged {
     fn new(call: Call, diagnosis: Diagnosis) -> Self {
         let m = diagnosis.right;
-        let facing = if m.travel.dot(m.normal) > 0.0 {
-            -m.normal
-        } else {
-            m.normal
-        };
-        let right = call.api.arguments::<f64>(m.travel, facing, m.mu);
+        let right = snippets::right_args(&call, &diagnosis);
         let picture = picture(call.api, right, m.mu, call.truth.from_to);
         Self {
             call,
@@ -215,15 +210,7 @@ impl Judged {
 
     /// The case a unit test is written from.
     fn case(&self) -> ApiCase<'_> {
-        ApiCase {
-            api: self.call.api,
-            args: self.call.args,
-            returned: &self.diagnosis.api_result,
-            precision: self.call.precision,
-            mistakes: &self.diagnosis.mistakes,
-            right: self.right,
-            t: self.diagnosis.t,
-        }
+        ApiCase::of(&self.call, &self.diagnosis)
     }
 
     /// The verdict: headline, each mistake with what it means, the explanation, what the API

@@ -8,6 +8,7 @@
 
 mod api;
 mod bulk;
+mod log_files;
 
 use egui::{RichText, TextEdit, Ui};
 use glam::DVec3;
@@ -20,6 +21,7 @@ use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
 use refraction_model::ExplorerState;
+use refraction_tools::api_check::{Dialect, Record, physics};
 use refraction_tools::check::{self, Match, Verdict};
 use refraction_tools::solve::{Precision, Request};
 use refraction_tools::state_file;
@@ -82,7 +84,7 @@ struct Own {
 }
 
 /// The panel's fields and its last verdict.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Debug, Default)]
 pub struct CheckPanel {
     source: Source,
     own: Own,
@@ -185,6 +187,16 @@ impl Own {
         self.mu_i = request.mu_i.to_string();
         self.mu_t = request.mu_t.to_string();
         self.convention = request.convention;
+    }
+
+    /// Fills the case fields and "Your T" from a line of any renderer's log (the zero vector
+    /// where its code reported total internal reflection, as `check` reads it).
+    fn fill_case(&mut self, case: &physics::Case) {
+        self.fill(&case.request);
+        self.yours = case.yours.map_or_else(
+            || "0, 0, 0".to_owned(),
+            |t| format!("{}, {}, {}", t[0], t[1], t[2]),
+        );
     }
 
     /// The case and the student's T from the fields: a whole JSON line in "Your T", or the
@@ -388,11 +400,34 @@ impl CheckPanel {
             self.check(state);
         }
         self.verdict(ui, state);
-        if let Source::Api(api) = self.source
-            && let Some(record) = self.bulk.show(ui, api)
-        {
-            self.api.fill_from(api, &record);
-            self.check(state);
+        let dialect = match self.source {
+            Source::Own => Dialect::Physics,
+            Source::Api(api) => Dialect::Api(api),
+        };
+        if let Some(record) = self.bulk.show(ui, dialect) {
+            self.open_row(&record, dialect, state);
         }
+    }
+
+    /// Opens a row of the log in the panel's fields and checks it there.
+    fn open_row(&mut self, record: &Record, dialect: Dialect, state: &mut ExplorerState) {
+        match dialect {
+            Dialect::Api(api) => self.api.fill_from(api, record),
+            Dialect::Physics => {
+                match physics::Case::from_record(record, &self.bulk.options(dialect)) {
+                    Ok(case) => self.own.fill_case(&case),
+                    Err(e) => {
+                        self.outcome = Some(Err(e));
+                        return;
+                    }
+                }
+            }
+        }
+        self.check(state);
+    }
+
+    /// Opens the log file at `path` (dropped on the window) in the log section.
+    pub fn open_log(&mut self, path: &std::path::Path) {
+        self.bulk.open_file(path);
     }
 }

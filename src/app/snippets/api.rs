@@ -10,8 +10,8 @@ use refraction_kernel::api::{Api, Args};
 use serde_json::Value as Json;
 
 use super::literal;
-use refraction_tools::api_check::Code;
 use refraction_tools::api_check::fields::names;
+use refraction_tools::api_check::{Call, Code, Diagnosis};
 use refraction_tools::solve::Precision;
 
 /// The language a test is written in.
@@ -68,6 +68,36 @@ pub struct ApiCase<'a> {
     pub right: Args<f64>,
     /// The physically right T (`None` on total internal reflection).
     pub t: Option<[f64; 3]>,
+}
+
+impl<'a> ApiCase<'a> {
+    /// The case of a judged call: its arguments and what the API returns for them, and the
+    /// right call for its ray ([`right_args`]).
+    #[must_use]
+    pub fn of(call: &'a Call, diagnosis: &'a Diagnosis) -> Self {
+        Self {
+            api: call.api,
+            args: call.args,
+            returned: &diagnosis.api_result,
+            precision: call.precision,
+            mistakes: &diagnosis.mistakes,
+            right: right_args(call, diagnosis),
+            t: diagnosis.t,
+        }
+    }
+}
+
+/// The right arguments for a judged call's ray in its API's convention: the normal facing the
+/// ray, and the ratio the ray's media give.
+#[must_use]
+pub fn right_args(call: &Call, diagnosis: &Diagnosis) -> Args<f64> {
+    let m = diagnosis.right;
+    let facing = if m.travel.dot(m.normal) > 0.0 {
+        -m.normal
+    } else {
+        m.normal
+    };
+    call.api.arguments::<f64>(m.travel, facing, m.mu)
 }
 
 fn vector(v: impl Into<[f64; 3]>) -> String {
@@ -141,7 +171,34 @@ fn header(case: &ApiCase<'_>, comment: &str) -> String {
     format!("{}\n", lines.join("\n"))
 }
 
-fn glsl(case: &ApiCase<'_>) -> String {
+/// A test's name: the one checked call's, or a logged line's in a file of many.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Name {
+    /// The call checked in the panel.
+    Checked,
+    /// The call on this line of a log (from 1).
+    Line(usize),
+}
+
+impl Name {
+    /// The name in `snake_case` after `prefix` (`test_refract`, `test_refract_line_42`).
+    fn snake(self, prefix: &str) -> String {
+        match self {
+            Self::Checked => prefix.to_owned(),
+            Self::Line(line) => format!("{prefix}_line_{line}"),
+        }
+    }
+
+    /// The name in `CamelCase` (`CheckedCall`, `Line42`), as `GoogleTest` names its cases.
+    fn camel(self) -> String {
+        match self {
+            Self::Checked => "CheckedCall".to_owned(),
+            Self::Line(line) => format!("Line{line}"),
+        }
+    }
+}
+
+fn glsl(case: &ApiCase<'_>, name: Name) -> String {
     let Args {
         incident,
         normal,
@@ -152,10 +209,11 @@ fn glsl(case: &ApiCase<'_>) -> String {
         |v| format!("vec3({})", vector(v)),
     );
     format!(
-        "{}bool test_refract() {{\n    vec3 I = vec3({});\n    vec3 N = vec3({});\n    \
+        "{}bool {}() {{\n    vec3 I = vec3({});\n    vec3 N = vec3({});\n    \
          float eta = {};\n    vec3 expected = {expected};\n    vec3 result = refract(I, N, eta);\n    \
          return all(lessThanEqual(abs(result - expected), vec3({})));\n}}\n",
         header(case, "//"),
+        name.snake("test_refract"),
         vector(incident),
         vector(normal),
         literal(eta),
@@ -163,7 +221,11 @@ fn glsl(case: &ApiCase<'_>) -> String {
     )
 }
 
-fn cpp_pbrt(case: &ApiCase<'_>) -> String {
+/// What a C++ file of pbrt tests includes once.
+const PBRT_PREAMBLE: &str =
+    "#include <gtest/gtest.h>\n#include <pbrt/util/scattering.h>\n\nusing namespace pbrt;\n\n";
+
+fn cpp_pbrt(case: &ApiCase<'_>, name: Name) -> String {
     let Args {
         incident,
         normal,
@@ -186,17 +248,20 @@ fn cpp_pbrt(case: &ApiCase<'_>) -> String {
         ),
     };
     format!(
-        "{}#include <gtest/gtest.h>\n#include <pbrt/util/scattering.h>\n\nusing namespace pbrt;\n\n\
-         TEST(Refract, CheckedCall) {{\n    Vector3f wi({});\n    Normal3f n({});\n    \
+        "{}TEST(Refract, {}) {{\n    Vector3f wi({});\n    Normal3f n({});\n    \
          Float eta = {};\n    Float etap;\n    Vector3f wt;\n{checks}}}\n",
         header(case, "//"),
+        name.camel(),
         vector(incident),
         vector(normal),
         literal(eta),
     )
 }
 
-fn cpp_book(case: &ApiCase<'_>) -> String {
+/// What a C++ file of the book's tests includes once.
+const BOOK_PREAMBLE: &str = "#include <cassert>\n#include <cmath>\n#include \"vec3.h\"\n\n";
+
+fn cpp_book(case: &ApiCase<'_>, name: Name) -> String {
     let Args {
         incident,
         normal,
@@ -214,19 +279,19 @@ fn cpp_book(case: &ApiCase<'_>) -> String {
         },
     );
     format!(
-        "{}#include <cassert>\n#include <cmath>\n#include \"vec3.h\"\n\nint main() {{\n    \
+        "{}static void {}() {{\n    \
          vec3 uv({});\n    vec3 n({});\n    double etai_over_etat = {};\n    \
          // dielectric::scatter's test (material.h).\n    \
          double cos_theta = std::fmin(dot(-uv, n), 1.0);\n    \
          double sin_theta = std::sqrt(1.0 - cos_theta * cos_theta);\n    \
-         bool cannot_refract = etai_over_etat * sin_theta > 1.0;\n{checks}    return 0;\n}}\n",
+         bool cannot_refract = etai_over_etat * sin_theta > 1.0;\n{checks}}}\n",
         header(case, "//"),
+        name.snake("test_refract"),
         vector(incident),
         vector(normal),
         literal(eta),
     )
 }
-
 /// The Python lines that call and assert, per API: the student's own `refract` with the
 /// API's signature, or Mitsuba's bindings.
 fn python_body(case: &ApiCase<'_>, close: &str) -> String {
@@ -264,33 +329,40 @@ fn python_body(case: &ApiCase<'_>, close: &str) -> String {
     }
 }
 
-fn python(case: &ApiCase<'_>) -> String {
+/// What a Python file of `api`'s tests imports and defines once, for `precision`.
+fn python_preamble(api: Api, precision: Precision) -> String {
+    let imports = match api {
+        Api::Mitsuba => {
+            "import drjit as dr\nimport mitsuba as mi\n\nmi.set_variant(\"scalar_rgb\")\n"
+                .to_owned()
+        }
+        _ => format!(
+            "import math\n\nfrom renderer import refract  # your {}: change the module\n",
+            api.signature()
+        ),
+    };
+    let tol = tolerance(precision);
+    format!(
+        "{imports}\n\ndef close(a, b):\n    return all(abs(x - y) <= {tol} for x, y in zip(a, b))\n"
+    )
+}
+
+fn python(case: &ApiCase<'_>, name: Name) -> String {
     let n = names(case.api);
     let Args {
         incident,
         normal,
         eta,
     } = case.args;
-    let (imports, vec) = match case.api {
-        Api::Mitsuba => (
-            "import drjit as dr\nimport mitsuba as mi\n\nmi.set_variant(\"scalar_rgb\")\n"
-                .to_owned(),
-            "mi.Vector3f",
-        ),
-        _ => (
-            format!(
-                "import math\n\nfrom renderer import refract  # your {}: change the module\n",
-                case.api.signature()
-            ),
-            "",
-        ),
+    let vec = if case.api == Api::Mitsuba {
+        "mi.Vector3f"
+    } else {
+        ""
     };
-    let tol = tolerance(case.precision);
-    let close =
-        format!("def close(a, b):\n    return all(abs(x - y) <= {tol} for x, y in zip(a, b))\n");
     format!(
-        "{}{imports}\n\n{close}\n\ndef test_refract():\n    {} = {vec}({})\n    {} = {vec}({})\n    {} = {}\n{}",
+        "\n\n{}def {}():\n    {} = {vec}({})\n    {} = {vec}({})\n    {} = {}\n{}",
         header(case, "#"),
+        name.snake("test_refract"),
         n.incident,
         vector(incident),
         n.normal,
@@ -301,15 +373,61 @@ fn python(case: &ApiCase<'_>) -> String {
     )
 }
 
+/// The test of one case in `language`, named `name` (without what its file includes once).
+fn one(language: Language, case: &ApiCase<'_>, name: Name) -> String {
+    match language {
+        Language::Glsl => glsl(case, name),
+        Language::CppPbrt => cpp_pbrt(case, name),
+        Language::CppBook => cpp_book(case, name),
+        Language::Python => python(case, name),
+    }
+}
+
+/// A file of tests in `language`, one per case and named by it, with what they include once
+/// before them and, for the book's C++, a `main` that runs them.
+#[must_use]
+pub fn file(language: Language, cases: &[(Name, ApiCase<'_>)]) -> String {
+    let Some((_, first)) = cases.first() else {
+        return String::new();
+    };
+    let mut text = match language {
+        Language::Glsl => String::new(),
+        Language::CppPbrt => PBRT_PREAMBLE.to_owned(),
+        Language::CppBook => BOOK_PREAMBLE.to_owned(),
+        Language::Python => {
+            // One tolerance for the file: the loosest precision's, so no f32 line fails by
+            // its rounding.
+            let loosest = cases
+                .iter()
+                .map(|(_, c)| c.precision)
+                .find(|p| *p == Precision::F32)
+                .unwrap_or(first.precision);
+            python_preamble(first.api, loosest)
+        }
+    };
+    let tests: Vec<String> = cases
+        .iter()
+        .map(|(name, case)| one(language, case, *name))
+        .collect();
+    let between = if language == Language::Python {
+        ""
+    } else {
+        "\n"
+    };
+    text.push_str(&tests.join(between));
+    if language == Language::CppBook {
+        text.push('\n');
+        text.push_str(&super::cpp_main(
+            cases.iter().map(|(name, _)| name.snake("test_refract")),
+        ));
+    }
+    text
+}
+
 /// The checked call as a unit test in `language`.
 #[must_use]
 pub fn test(language: Language, case: &ApiCase<'_>) -> String {
-    match language {
-        Language::Glsl => glsl(case),
-        Language::CppPbrt => cpp_pbrt(case),
-        Language::CppBook => cpp_book(case),
-        Language::Python => python(case),
-    }
+    file(language, &[(Name::Checked, *case)])
 }
 
 #[cfg(test)]

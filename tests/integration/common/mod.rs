@@ -129,3 +129,21 @@ pub fn smallest_text_px(h: &Harness<'_, Explorer>, away_from: egui::Rect) -> f32
         .fold(f32::INFINITY, f32::min);
     smallest * h.ctx.pixels_per_point()
 }
+
+/// Scrolls the panel to the widget labelled `label` and clicks it (the panel is short).
+pub fn reach(h: &mut Harness<'_, Explorer>, label: &str) {
+    h.get_by_label(label).scroll_to_me();
+    h.run();
+    click(h, label);
+}
+
+/// Replaces the text of the multi-line box of pasted log lines.
+pub fn paste_log(h: &mut Harness<'_, Explorer>, text: &str) {
+    let role = egui::Role::MultilineTextInput;
+    h.get_by_role_and_label(role, "Log lines").focus();
+    h.run();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run();
+    h.get_by_role_and_label(role, "Log lines").type_text(text);
+    h.run();
+}

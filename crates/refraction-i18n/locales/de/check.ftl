@@ -201,7 +201,6 @@ check-copy-as-test = Als Unit-Test kopieren:
 ## Das Panel: eingefügte Log-Zeilen
 
 check-paste-lines = 📋 Log-Zeilen einfügen
-check-paste-lines-hint = JSON Lines mit den Feldern von { $api }, CSV mit einer Kopfzeile, die sie nennt, oder printf-Zeilen mit einem Muster wie LOG {"{"}uv{"}"} | {"{"}n{"}"} | {"{"}etai_over_etat{"}"} | {"{"}refracted{"}"}. Höchstens { $characters } Zeichen; die ersten { $count } Zeilen werden geprüft.
 check-pattern = Muster
 check-log-lines = Log-Zeilen
 check-lines-button = Zeilen prüfen

@@ -198,7 +198,6 @@ check-copy-as-test = Copy as a unit test:
 ## The panel: pasted log lines
 
 check-paste-lines = 📋 Paste log lines
-check-paste-lines-hint = JSON Lines of { $api }'s fields, CSV with a header naming them, or printf lines with a pattern such as LOG {"{"}uv{"}"} | {"{"}n{"}"} | {"{"}etai_over_etat{"}"} | {"{"}refracted{"}"}. At most { $characters } characters; the first { $count } lines are checked.
 check-pattern = Pattern
 check-log-lines = Log lines
 check-lines-button = Check the lines

@@ -198,7 +198,6 @@ check-copy-as-test = Copiar como prueba unitaria:
 ## El panel: líneas de registro pegadas
 
 check-paste-lines = 📋 Pegar líneas de registro
-check-paste-lines-hint = JSON Lines con los campos de { $api }, CSV con una cabecera que los nombre, o líneas de printf con un patrón como LOG {"{"}uv{"}"} | {"{"}n{"}"} | {"{"}etai_over_etat{"}"} | {"{"}refracted{"}"}. Como mucho { $characters } caracteres; se comprueban las primeras { $count } líneas.
 check-pattern = Patrón
 check-log-lines = Líneas de registro
 check-lines-button = Comprobar las líneas

@@ -198,7 +198,6 @@ check-copy-as-test = Copier comme test unitaire :
 ## Le panneau : lignes de journal collées
 
 check-paste-lines = 📋 Coller des lignes de journal
-check-paste-lines-hint = JSON Lines avec les champs de { $api }, CSV avec un en-tête qui les nomme, ou lignes printf avec un motif comme LOG {"{"}uv{"}"} | {"{"}n{"}"} | {"{"}etai_over_etat{"}"} | {"{"}refracted{"}"}. Au plus { $characters } caractères ; les { $count } premières lignes sont vérifiées.
 check-pattern = Motif
 check-log-lines = Lignes de journal
 check-lines-button = Vérifier les lignes

@@ -199,7 +199,6 @@ check-copy-as-test = Copiar como teste unitário:
 ## O painel: linhas de log coladas
 
 check-paste-lines = 📋 Colar linhas de log
-check-paste-lines-hint = JSON Lines com os campos de { $api }, CSV com um cabeçalho que os nomeie, ou linhas de printf com um padrão como LOG {"{"}uv{"}"} | {"{"}n{"}"} | {"{"}etai_over_etat{"}"} | {"{"}refracted{"}"}. No máximo { $characters } caracteres; as primeiras { $count } linhas são verificadas.
 check-pattern = Padrão
 check-log-lines = Linhas de log
 check-lines-button = Verificar as linhas

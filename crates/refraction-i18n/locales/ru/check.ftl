@@ -198,7 +198,6 @@ check-copy-as-test = Скопировать как модульный тест:
 ## Панель: вставленные строки журнала
 
 check-paste-lines = 📋 Вставить строки журнала
-check-paste-lines-hint = JSON Lines с полями { $api }, CSV с заголовком, который их называет, или строки printf по шаблону вроде LOG {"{"}uv{"}"} | {"{"}n{"}"} | {"{"}etai_over_etat{"}"} | {"{"}refracted{"}"}. Не более { $characters } символов; проверяются первые { $count } строк.
 check-pattern = Шаблон
 check-log-lines = Строки журнала
 check-lines-button = Проверить строки

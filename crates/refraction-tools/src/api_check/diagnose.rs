@@ -15,6 +15,7 @@ use crate::check::{self, Match};
 use crate::diagnosis::{Evidence, Side};
 use crate::solve::{Precision, Request};
 use crate::vector_text::{angle, length};
+use refraction_model::log_map::{self, LinePoint};
 
 /// What a wrong result looks like.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -304,6 +305,28 @@ pub fn evidence(call: &Call, diagnosis: &Diagnosis) -> Evidence {
             .entering
             .filter(|_| either_side)
             .map(|entering| toward_origin == entering),
+    }
+}
+
+/// The call on the log's failure map: the angle of incidence of the right call, and how far
+/// the direction the student's code sent the ray in is from the right one (T, or the
+/// reflected ray past the critical angle; none is known when the call's ray is unknown).
+#[must_use]
+pub fn point(call: &Call, diagnosis: &Diagnosis) -> LinePoint {
+    let evidence = evidence(call, diagnosis);
+    let m = &diagnosis.right;
+    let right = match diagnosis.t {
+        Some(t) => Some(DVec3::from_array(t)),
+        None => evidence
+            .past_critical
+            .then(|| log_map::reflected(m.travel, m.normal)),
+    };
+    LinePoint {
+        incidence_deg: log_map::incidence_deg(m.travel, m.normal),
+        error_deg: right.map_or(0.0, |right| log_map::angle_deg(diagnosis.outgoing, right)),
+        side: evidence.side,
+        past_critical: evidence.past_critical,
+        ok: diagnosis.ok,
     }
 }
 

@@ -177,6 +177,34 @@ impl Judgement {
         }
     }
 
+    /// Every mistake that explains the line, each once, the likeliest first (empty when the
+    /// line is right, or when nothing explains it).
+    #[must_use]
+    pub fn mistakes(&self) -> Vec<Code> {
+        match self {
+            Self::Api(judged) => judged.1.mistakes.clone(),
+            Self::Physics(judged) => judged.mistakes(),
+        }
+    }
+
+    /// What happened on the line, in a sentence or two.
+    #[must_use]
+    pub fn explanation(&self) -> &str {
+        match self {
+            Self::Api(judged) => &judged.1.explanation,
+            Self::Physics(judged) => &judged.verdict.explanation,
+        }
+    }
+
+    /// The line on the log's failure map.
+    #[must_use]
+    pub fn point(&self) -> refraction_model::log_map::LinePoint {
+        match self {
+            Self::Api(judged) => diagnose::point(&judged.0, &judged.1),
+            Self::Physics(judged) => judged.point,
+        }
+    }
+
     /// Counts the line in `tally`: the mistakes of a call, `check`'s kinds of a refraction.
     fn count(&self, tally: &mut Tally) {
         match self {
@@ -414,6 +442,38 @@ impl Session {
             }
             Read::Deferred => self.reader.take_header(line).map_or(Ok(None), Err),
         }
+    }
+
+    /// Reads and judges one line, in order, for the explorer's pasted and opened logs, and
+    /// counts it as the command does (in the tally and the diagnosis of the whole log): the
+    /// record and its judgement, or `None` for a line without a call (a CSV header, a log line
+    /// the pattern does not match).
+    ///
+    /// # Errors
+    /// Why the line cannot be judged (counted as unreadable), as [`Session::record`] and
+    /// [`judge_record`] say.
+    pub fn judge_line(&mut self, line: &str) -> Result<Option<(Record, Judgement)>, String> {
+        let judged = self.record(line).and_then(|record| {
+            record
+                .map(|record| {
+                    judge_record(&record, &self.reader.options).map(|judged| (record, judged))
+                })
+                .transpose()
+        });
+        match &judged {
+            Ok(Some((_, judgement))) => {
+                judgement.count(&mut self.books.tally);
+                self.books.log.add(&judgement.evidence());
+                self.books.all_ok &= judgement.ok();
+            }
+            Ok(None) => {}
+            Err(_) => {
+                self.books.tally.add("unreadable");
+                self.books.log.unreadable();
+                self.books.all_ok = false;
+            }
+        }
+        judged
     }
 
     /// The summary of the last path (with `--paths`), once the input has ended.

@@ -22,6 +22,7 @@ use crate::check::{self, MATCH_ANGLE, Match, Verdict};
 use crate::diagnosis::{Evidence, Side};
 use crate::solve::{Precision, Request};
 use crate::vector_text::{angle, length};
+use refraction_model::log_map::{self, LinePoint};
 
 /// One line of any renderer's log, ready to judge.
 #[derive(Clone, Debug, PartialEq)]
@@ -239,6 +240,8 @@ pub struct Judged {
     pub alternatives: Vec<Vec<Code>>,
     /// What the diagnosis of the whole log needs from it.
     pub evidence: Evidence,
+    /// The line on the log's failure map.
+    pub point: LinePoint,
 }
 
 impl Judged {
@@ -252,6 +255,20 @@ impl Judged {
             }
         }
         all
+    }
+}
+
+/// The case on the log's failure map: the student's code sends the ray along its T, or
+/// reflects it where it reported total internal reflection.
+fn map_point(case: &Case, r: &Refraction<f64>, evidence: &Evidence) -> LinePoint {
+    let sent = case.yours.map_or(r.reflected, DVec3::from_array);
+    let right = r.t().unwrap_or(r.reflected);
+    LinePoint {
+        incidence_deg: log_map::incidence_deg(r.travel, r.facing_normal),
+        error_deg: log_map::angle_deg(sent, right),
+        side: evidence.side,
+        past_critical: evidence.past_critical,
+        ok: evidence.ok,
     }
 }
 
@@ -298,6 +315,7 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
         }
         _ => verdict.explanation.clone(),
     };
+    let point = map_point(case, &r, &evidence);
     Ok(Judged {
         verdict: Verdict {
             ok,
@@ -306,6 +324,7 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
         },
         alternatives,
         evidence,
+        point,
     })
 }
 
@@ -424,6 +443,23 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn each_line_lands_on_the_failure_map_at_its_incidence_and_error() {
+        let right = judge(&case(&logged(20.0, true, &[]))).unwrap().point;
+        assert!(right.ok && right.error_deg < 1e-6, "{right:?}");
+        assert!((right.incidence_deg - 20.0).abs() < 1e-9, "{right:?}");
+        assert_eq!(right.side, Some(Side::Inside));
+        let wrong = judge(&case(&logged(20.0, true, &[Code::NormalTermSign])))
+            .unwrap()
+            .point;
+        assert!(!wrong.ok && wrong.error_deg > 10.0, "{wrong:?}");
+        let past = judge(&case(&logged(60.0, true, &[]))).unwrap().point;
+        assert!(
+            past.ok && past.past_critical && past.error_deg < 1e-6,
+            "{past:?}"
+        );
     }
 
     #[test]

@@ -648,3 +648,54 @@ fn a_long_path_of_right_hits_leaves_right() {
     assert_eq!(s["hits"], 100_000, "{s}");
     assert_eq!(s["exit_ok"], true, "{s}");
 }
+
+#[test]
+fn a_judged_line_counts_as_the_command_counts_it_and_lands_on_the_failure_map() {
+    // The explorer's opened logs: judge_line counts each line in the tally and the diagnosis,
+    // and its point says where it lands on the failure map.
+    let mut session = Session::new(options(Api::Glsl), Format::JsonLines, false, false);
+    let right = injected(Api::Glsl, true, |args| args);
+    let inverted = injected(Api::Glsl, false, |args| Args {
+        eta: 1.0 / args.eta,
+        ..args
+    });
+    let (_, judged) = session.judge_line(&right).unwrap().unwrap();
+    let point = judged.point();
+    assert!(point.ok && point.error_deg < 1e-3, "{point:?}");
+    let (d, n, _) = situation(true);
+    let expected = refraction_model::log_map::incidence_deg(d, n);
+    assert!((point.incidence_deg - expected).abs() < 1e-9, "{point:?}");
+    let (_, judged) = session.judge_line(&inverted).unwrap().unwrap();
+    let point = judged.point();
+    assert!(!point.ok && point.error_deg > 5.0, "{point:?}");
+    assert_eq!(point.side, Some(crate::diagnosis::Side::Inside));
+    assert!(session.judge_line("{\"I\": 1}").is_err());
+    assert_eq!(
+        session.tally().summary(),
+        "1 eta_inverted, 1 ok, 1 unreadable"
+    );
+    let summary = session.summary();
+    assert_eq!((summary.lines, summary.judged, summary.ok), (3, 2, 1));
+    assert_eq!(summary.diagnosis[0].code, "eta_inverted");
+}
+
+#[test]
+fn a_reported_total_internal_reflection_lands_where_its_reflection_goes() {
+    // Past the critical angle the right direction is the reflected ray; GLSL's zero vector is
+    // reflected by the caller, so a right TIR line is off by nothing.
+    let (a, mu) = (60_f64.to_radians(), 1.5);
+    let d = DVec3::new(a.sin(), -a.cos(), 0.0);
+    let args = Api::Glsl.arguments(d, DVec3::Y, mu);
+    let text = line(
+        Api::Glsl,
+        args,
+        returned(Api::Glsl, args),
+        json!({"entering": false}),
+    );
+    let mut session = Session::new(options(Api::Glsl), Format::JsonLines, false, false);
+    let (_, judged) = session.judge_line(&text).unwrap().unwrap();
+    let point = judged.point();
+    assert!(point.ok && point.past_critical, "{point:?}");
+    assert!(point.error_deg < 1e-3, "{point:?}");
+    assert!((point.incidence_deg - 60.0).abs() < 1e-9, "{point:?}");
+}

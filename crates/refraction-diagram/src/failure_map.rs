@@ -1,0 +1,278 @@
+//! A judged log's failure map: for every judged line, how far the direction the student's code
+//! sent the ray in is from the right one, against the angle of incidence, in one panel per side
+//! the rays arrive from, with the lines whose right answer is total internal reflection marked.
+//! A bug is one line of code, wrong the same way on every call it touches, so the map shows its
+//! pattern at a glance: every ray from inside wrong, only those past the critical angle, or all.
+
+use glam::Vec2;
+use refraction_i18n::t;
+use refraction_model::log_map::{LinePoint, Side};
+
+use super::font::Typeface;
+use super::geometry::Rect;
+use super::palette::Palette;
+use super::plot::{Axis, Chart, LegendEntry, Marker, MarkerStyle, legend};
+use super::shapes::{Align, Figure, Label, Primitive, lower_all};
+
+/// The sides a map has a panel for, in order, where some line arrives from it.
+const SIDES: [Option<Side>; 3] = [Some(Side::Outside), Some(Side::Inside), None];
+
+/// The smallest text the map draws, in canvas pixels (points on screen): the projector rules'
+/// least at zoom 1.
+pub const SMALLEST_TEXT: f32 = 13.0;
+
+/// How a line's marker is drawn: hollow in the normal's colour when right, filled in the
+/// alarm colour when wrong; a square where the right answer is total internal reflection.
+fn style(point: &LinePoint, palette: &Palette) -> MarkerStyle {
+    MarkerStyle {
+        shape: if point.past_critical {
+            Marker::Square
+        } else {
+            Marker::Circle
+        },
+        colour: if point.ok { palette.n } else { palette.alarm },
+        filled: !point.ok,
+    }
+}
+
+/// The legend's entries, in the map's colours.
+fn entries(palette: &Palette) -> [LegendEntry; 3] {
+    let entry = |shape, colour, filled, text| LegendEntry {
+        marker: MarkerStyle {
+            shape,
+            colour,
+            filled,
+        },
+        text,
+    };
+    [
+        entry(
+            Marker::Circle,
+            palette.n,
+            false,
+            t!("diagram-failure-right"),
+        ),
+        entry(
+            Marker::Circle,
+            palette.alarm,
+            true,
+            t!("diagram-failure-wrong"),
+        ),
+        entry(
+            Marker::Square,
+            palette.ink,
+            false,
+            t!("diagram-failure-past-critical"),
+        ),
+    ]
+}
+
+/// A panel's title: the side, how many lines arrive from it and how many of them are wrong.
+fn title(side: Option<Side>, lines: usize, wrong: usize) -> String {
+    let side = match side {
+        Some(Side::Outside) => "outside",
+        Some(Side::Inside) => "inside",
+        None => "unknown",
+    };
+    t!(
+        "diagram-failure-panel",
+        side = side,
+        lines = lines,
+        wrong = wrong
+    )
+}
+
+/// The sides some line arrives from, in the order of the map's panels.
+fn sides_of(points: &[LinePoint]) -> Vec<Option<Side>> {
+    SIDES
+        .into_iter()
+        .filter(|side| points.iter().any(|p| p.side == *side))
+        .collect()
+}
+
+/// How many panels the map of `points` has: one per side some line arrives from.
+#[must_use]
+pub fn sides(points: &[LinePoint]) -> usize {
+    sides_of(points).len()
+}
+
+/// What the map of `points` shows, in words (its accessible name): each panel's title.
+#[must_use]
+pub fn describe(points: &[LinePoint]) -> String {
+    let panels: Vec<String> = sides_of(points)
+        .into_iter()
+        .map(|side| {
+            let mine = points.iter().filter(|p| p.side == side);
+            let (lines, wrong) = mine.fold((0, 0), |(n, w), p| (n + 1, w + usize::from(!p.ok)));
+            title(side, lines, wrong)
+        })
+        .collect();
+    t!("diagram-failure-about", panels = panels.join("; "))
+}
+
+/// The failure map of `points` on a canvas of `size` pixels, in `palette`'s colours, as
+/// primitives for any backend: a panel per side that some line arrives from, stacked, sharing
+/// one error axis.
+#[must_use]
+pub fn primitives(
+    points: &[LinePoint],
+    size: Vec2,
+    face: &Typeface,
+    palette: &Palette,
+) -> Vec<Primitive> {
+    let mut figures = vec![Figure::Fill {
+        points: Rect::from_min_size(Vec2::ZERO, size).corners().to_vec(),
+        colour: palette.background,
+    }];
+    let sides = sides_of(points);
+    let text = (size.y / (9.0 * sides.len().max(1) as f32)).clamp(SMALLEST_TEXT, 24.0);
+    if sides.is_empty() {
+        figures.push(Figure::Text(Label {
+            text: t!("diagram-failure-empty"),
+            at: size / 2.0,
+            h: Align::Center,
+            v: Align::Center,
+            size: text,
+            colour: palette.ink,
+            background: None,
+        }));
+        return lower_all(&figures);
+    }
+    let largest = points.iter().map(|p| p.error_deg).fold(0.0, f64::max);
+    let y = Axis::from_zero(largest, 1.0);
+    let x = Axis {
+        min: 0.0,
+        max: 90.0,
+        step: 15.0,
+    };
+    let band = size.y / sides.len() as f32;
+    for (i, side) in sides.iter().enumerate() {
+        let top = band * i as f32;
+        let chart = Chart {
+            area: Rect {
+                min: Vec2::new(text * 4.0, top + text * 2.6),
+                max: Vec2::new(size.x - text * 1.0, top + band - text * 3.2),
+            },
+            x,
+            y,
+            text,
+        };
+        let legend = (i == 0).then_some((face, palette));
+        figures.extend(panel(&chart, *side, points, palette, legend));
+    }
+    lower_all(&figures)
+}
+
+/// One side's panel: its axes, its lines' markers (the right ones first, so that the wrong ones
+/// lie on top), its title and, in the first panel, the legend (measured with its face).
+fn panel(
+    chart: &Chart,
+    side: Option<Side>,
+    points: &[LinePoint],
+    palette: &Palette,
+    legend_in: Option<(&Typeface, &Palette)>,
+) -> Vec<Figure> {
+    let mine: Vec<&LinePoint> = points.iter().filter(|p| p.side == side).collect();
+    let wrong = mine.iter().filter(|p| !p.ok).count();
+    let mut figures = chart.axes(
+        ("°", "°"),
+        (
+            &t!("diagram-failure-incidence-axis"),
+            &t!("diagram-failure-error-axis"),
+        ),
+        palette,
+    );
+    let heading = title(side, mine.len(), wrong);
+    let at = Vec2::new(chart.area.max.x, chart.area.min.y - chart.text * 0.5);
+    figures.push(Figure::Text(Label {
+        text: heading,
+        at,
+        h: Align::End,
+        v: Align::End,
+        size: chart.text,
+        colour: palette.ink,
+        background: None,
+    }));
+    let radius = (chart.text * 0.3).max(3.5);
+    let mut centres = Vec::with_capacity(mine.len());
+    for ok in [true, false] {
+        for point in mine.iter().filter(|p| p.ok == ok) {
+            let center = chart.at(point.incidence_deg, point.error_deg);
+            figures.extend(style(point, palette).figures(center, radius, palette.background));
+            centres.push(center);
+        }
+    }
+    if let Some((face, palette)) = legend_in {
+        figures.extend(legend(chart, &entries(palette), &centres, face, palette));
+    }
+    figures
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shapes::texts;
+
+    fn point(incidence_deg: f64, error_deg: f64, side: Side, ok: bool) -> LinePoint {
+        LinePoint {
+            incidence_deg,
+            error_deg,
+            side: Some(side),
+            past_critical: incidence_deg > 41.8 && side == Side::Inside,
+            ok,
+        }
+    }
+
+    #[test]
+    fn a_panel_per_side_says_how_many_of_its_lines_are_wrong() {
+        // A pbrt log without its flip: every ray from inside wrong, every one from outside right.
+        let points: Vec<LinePoint> = (0..30)
+            .flat_map(|i| {
+                let deg = f64::from(i) * 3.0;
+                [
+                    point(deg, 0.0, Side::Outside, true),
+                    point(deg, 20.0 + deg / 3.0, Side::Inside, false),
+                ]
+            })
+            .collect();
+        let face = Typeface::egui_default().unwrap();
+        let drawn = primitives(&points, Vec2::new(480.0, 400.0), &face, &Palette::STANDARD);
+        let words = texts(&drawn);
+        assert!(
+            words.contains(&"Arriving from outside: 30 lines, none wrong"),
+            "{words:?}"
+        );
+        assert!(
+            words.contains(&"Arriving from inside: 30 lines, 30 wrong"),
+            "{words:?}"
+        );
+        assert!(
+            words.iter().filter(|w| **w == "wrong").count() == 1,
+            "one legend: {words:?}"
+        );
+        let wrong_markers = drawn
+            .iter()
+            .filter(
+                |p| matches!(p, Primitive::Disc { fill, .. } if *fill == Palette::STANDARD.alarm),
+            )
+            .count();
+        // The ones past the critical angle are squares (polygons), the rest discs.
+        let past = points.iter().filter(|p| p.past_critical).count();
+        assert_eq!(
+            wrong_markers,
+            30 - past + 1,
+            "the wrong discs and the legend's sample"
+        );
+        assert!(drawn.iter().all(|p| match p {
+            Primitive::Text(label) => label.size >= SMALLEST_TEXT,
+            _ => true,
+        }));
+    }
+
+    #[test]
+    fn a_log_without_judged_lines_says_so() {
+        let face = Typeface::egui_default().unwrap();
+        let drawn = primitives(&[], Vec2::new(300.0, 200.0), &face, &Palette::STANDARD);
+        assert_eq!(texts(&drawn), ["No line was judged."]);
+    }
+}

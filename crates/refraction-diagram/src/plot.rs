@@ -1,0 +1,432 @@
+//! What the explorer's plots share: a plotting area on a canvas with linear axes (ticks, grid,
+//! frame and titles), markers whose shapes tell series apart without colour, and a legend
+//! drawn inside the plotting area in the corner the data leaves freest.
+
+use glam::Vec2;
+
+use super::font::Typeface;
+use super::geometry::{Colour, Rect};
+use super::numbers::number;
+use super::palette::Palette;
+use super::shapes::{Align, Dash, Figure, Label, Stroke};
+
+/// The shape of a series' markers, so that no two series differ by colour alone.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Marker {
+    /// A circle.
+    Circle,
+    /// A square.
+    Square,
+    /// A diamond.
+    Diamond,
+    /// An upward triangle.
+    Triangle,
+    /// A plus sign.
+    Plus,
+    /// A cross.
+    Cross,
+}
+
+/// How one marker is drawn: its shape, colour and whether it is filled (hollow markers are
+/// filled with the background).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MarkerStyle {
+    /// The shape.
+    pub shape: Marker,
+    /// The outline's (and a filled marker's) colour.
+    pub colour: Colour,
+    /// Whether the inside is the colour too.
+    pub filled: bool,
+}
+
+impl MarkerStyle {
+    /// The figures of this marker at `center`, `radius` pixels from centre to edge, over a
+    /// `background`.
+    #[must_use]
+    pub fn figures(&self, center: Vec2, radius: f32, background: Colour) -> Vec<Figure> {
+        let outline = Stroke {
+            width: (radius / 3.0).max(1.5),
+            colour: self.colour,
+            dash: Dash::Solid,
+        };
+        let fill = if self.filled { self.colour } else { background };
+        let corners = |points: &[(f32, f32)]| -> Vec<Vec2> {
+            points
+                .iter()
+                .map(|&(x, y)| center + Vec2::new(x, y) * radius)
+                .collect()
+        };
+        let polygon = |points: Vec<Vec2>| {
+            let mut closed = points.clone();
+            closed.push(points[0]);
+            vec![
+                Figure::Fill {
+                    points,
+                    colour: fill,
+                },
+                Figure::Line {
+                    points: closed,
+                    stroke: outline,
+                },
+            ]
+        };
+        let bars = |ends: [(f32, f32); 4]| {
+            let e = corners(&ends);
+            let stroke = Stroke {
+                width: outline.width * 1.4,
+                ..outline
+            };
+            vec![
+                Figure::Line {
+                    points: vec![e[0], e[1]],
+                    stroke,
+                },
+                Figure::Line {
+                    points: vec![e[2], e[3]],
+                    stroke,
+                },
+            ]
+        };
+        match self.shape {
+            Marker::Circle => vec![Figure::Disc {
+                center,
+                radius,
+                fill,
+                outline,
+            }],
+            Marker::Square => polygon(corners(&[
+                (-0.85, -0.85),
+                (0.85, -0.85),
+                (0.85, 0.85),
+                (-0.85, 0.85),
+            ])),
+            Marker::Diamond => {
+                polygon(corners(&[(0.0, -1.2), (1.2, 0.0), (0.0, 1.2), (-1.2, 0.0)]))
+            }
+            Marker::Triangle => polygon(corners(&[(0.0, -1.15), (1.1, 0.85), (-1.1, 0.85)])),
+            Marker::Plus => bars([(-1.1, 0.0), (1.1, 0.0), (0.0, -1.1), (0.0, 1.1)]),
+            Marker::Cross => bars([(-0.8, -0.8), (0.8, 0.8), (-0.8, 0.8), (0.8, -0.8)]),
+        }
+    }
+}
+
+/// A linear axis: the values at its two ends and the step between its ticks.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Axis {
+    /// The value at the start (left or bottom).
+    pub min: f64,
+    /// The value at the end (right or top).
+    pub max: f64,
+    /// The distance between ticks.
+    pub step: f64,
+}
+
+impl Axis {
+    /// An axis from 0 to a round value at least `largest` (and at least `least`), with about
+    /// four to seven ticks: 1, 2 or 5 times a power of ten apart.
+    #[must_use]
+    pub fn from_zero(largest: f64, least: f64) -> Self {
+        let largest = if largest.is_finite() {
+            largest.max(least)
+        } else {
+            least
+        };
+        let rough = largest / 5.0;
+        let decade = 10_f64.powf(rough.log10().floor());
+        let step = [1.0, 2.0, 5.0, 10.0]
+            .into_iter()
+            .map(|m| m * decade)
+            .find(|s| largest / s <= 6.0)
+            .unwrap_or(10.0 * decade);
+        Self {
+            min: 0.0,
+            max: (largest / step).ceil() * step,
+            step,
+        }
+    }
+
+    /// The fraction of the way from `min` to `max` that `value` lies, clamped to [0, 1].
+    #[must_use]
+    pub fn fraction(&self, value: f64) -> f32 {
+        let span = self.max - self.min;
+        if span > 0.0 {
+            ((value - self.min) / span).clamp(0.0, 1.0) as f32
+        } else {
+            0.0
+        }
+    }
+
+    /// The tick values from `min` to `max`.
+    #[must_use]
+    pub fn ticks(&self) -> Vec<f64> {
+        let count = ((self.max - self.min) / self.step).round().max(0.0) as usize;
+        (0..=count)
+            .map(|i| self.min + self.step * i as f64)
+            .collect()
+    }
+
+    /// The decimals a tick label needs to tell the ticks apart.
+    #[must_use]
+    pub fn decimals(&self) -> usize {
+        let places = -self.step.log10().floor();
+        if places > 0.0 { places as usize } else { 0 }
+    }
+}
+
+/// A plot's area on a canvas, its axes and its text size.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Chart {
+    /// The plotting area, in canvas pixels.
+    pub area: Rect,
+    /// The horizontal axis.
+    pub x: Axis,
+    /// The vertical axis (its minimum at the bottom).
+    pub y: Axis,
+    /// The size of the tick labels, in pixels.
+    pub text: f32,
+}
+
+impl Chart {
+    /// The canvas point of the value (`x`, `y`), clamped to the area.
+    #[must_use]
+    pub fn at(&self, x: f64, y: f64) -> Vec2 {
+        let (min, max) = (self.area.min, self.area.max);
+        Vec2::new(
+            min.x + (max.x - min.x) * self.x.fraction(x),
+            max.y - (max.y - min.y) * self.y.fraction(y),
+        )
+    }
+
+    /// The grid, the frame, the tick labels with their `unit` suffixes (`°`, ` %`) and the
+    /// axis titles, in `palette`'s colours.
+    #[must_use]
+    pub fn axes(
+        &self,
+        units: (&str, &str),
+        titles: (&str, &str),
+        palette: &Palette,
+    ) -> Vec<Figure> {
+        let grid = Stroke {
+            width: 1.0,
+            colour: palette.guide.with_alpha(90),
+            dash: Dash::Solid,
+        };
+        let mut figures = Vec::new();
+        let label = |text: String, at: Vec2, h: Align, v: Align, size: f32| {
+            Figure::Text(Label {
+                text,
+                at,
+                h,
+                v,
+                size,
+                colour: palette.ink,
+                background: None,
+            })
+        };
+        let (x0, x1, y0, y1) = (self.x.min, self.x.max, self.y.min, self.y.max);
+        for x in self.x.ticks() {
+            figures.push(Figure::Line {
+                points: vec![self.at(x, y0), self.at(x, y1)],
+                stroke: grid,
+            });
+            let text = format!("{}{}", number(x, self.x.decimals()), units.0);
+            let below = self.at(x, y0) + Vec2::new(0.0, self.text * 0.35);
+            figures.push(label(text, below, Align::Center, Align::Start, self.text));
+        }
+        for y in self.y.ticks() {
+            figures.push(Figure::Line {
+                points: vec![self.at(x0, y), self.at(x1, y)],
+                stroke: grid,
+            });
+            let text = format!("{}{}", number(y, self.y.decimals()), units.1);
+            let left = self.at(x0, y) - Vec2::new(self.text * 0.4, 0.0);
+            figures.push(label(text, left, Align::End, Align::Center, self.text));
+        }
+        figures.push(Figure::Line {
+            points: vec![self.at(x0, y1), self.at(x0, y0), self.at(x1, y0)],
+            stroke: Stroke {
+                width: 1.5,
+                colour: palette.ink,
+                dash: Dash::Solid,
+            },
+        });
+        let under = Vec2::new(self.area.center().x, self.area.max.y + self.text * 1.6);
+        figures.push(label(
+            titles.0.to_owned(),
+            under,
+            Align::Center,
+            Align::Start,
+            self.text,
+        ));
+        let over = Vec2::new(self.area.min.x, self.area.min.y - self.text * 0.5);
+        figures.push(label(
+            titles.1.to_owned(),
+            over,
+            Align::Start,
+            Align::End,
+            self.text,
+        ));
+        figures
+    }
+}
+
+/// One entry of a legend: its marker and its words.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LegendEntry {
+    /// The marker drawn before the words.
+    pub marker: MarkerStyle,
+    /// The words.
+    pub text: String,
+}
+
+/// The legend of `entries` inside `chart`'s area, in the corner whose box covers the fewest
+/// of `points` (the data it must not hide), on a box of the label background.
+#[must_use]
+pub fn legend(
+    chart: &Chart,
+    entries: &[LegendEntry],
+    points: &[Vec2],
+    face: &Typeface,
+    palette: &Palette,
+) -> Vec<Figure> {
+    let size = chart.text;
+    let row = face.line_height(size) * 1.15;
+    let radius = size * 0.35;
+    let widest = entries
+        .iter()
+        .map(|e| face.width(&e.text, size))
+        .fold(0.0, f32::max);
+    let pad = size * 0.5;
+    let extent = Vec2::new(
+        pad * 2.0 + radius * 2.0 + size * 0.5 + widest,
+        pad * 2.0 + row * entries.len() as f32,
+    );
+    let area = chart.area;
+    let inset = Vec2::splat(size * 0.3);
+    let corners = [
+        Vec2::new(area.max.x - extent.x, area.min.y) + Vec2::new(-inset.x, inset.y),
+        area.min + inset,
+        area.max - extent - inset,
+        Vec2::new(area.min.x, area.max.y - extent.y) + Vec2::new(inset.x, -inset.y),
+    ];
+    let covered = |min: &Vec2| {
+        let r = Rect::from_min_size(*min, extent);
+        points.iter().filter(|p| r.contains(**p)).count()
+    };
+    let min = corners
+        .iter()
+        .min_by_key(|c| covered(c))
+        .copied()
+        .unwrap_or(corners[0]);
+    let r = Rect::from_min_size(min, extent);
+    let mut figures = vec![Figure::Fill {
+        points: r.corners().to_vec(),
+        colour: palette.label_background,
+    }];
+    for (i, entry) in entries.iter().enumerate() {
+        let y = min.y + pad + row * (i as f32 + 0.5);
+        let center = Vec2::new(min.x + pad + radius, y);
+        figures.extend(entry.marker.figures(center, radius, palette.background));
+        figures.push(Figure::Text(Label {
+            text: entry.text.clone(),
+            at: Vec2::new(center.x + radius + size * 0.5, y),
+            h: Align::Start,
+            v: Align::Center,
+            size,
+            colour: palette.ink,
+            background: None,
+        }));
+    }
+    figures
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_axis_from_zero_ends_on_a_round_value_with_a_few_ticks() {
+        for (largest, max, step) in [
+            (0.0, 1.0, 0.2),
+            (0.7, 1.0, 0.2),
+            (3.2, 4.0, 1.0),
+            (28.5, 30.0, 5.0),
+            (90.0, 100.0, 20.0),
+            (180.0, 200.0, 50.0),
+            (f64::NAN, 1.0, 0.2),
+        ] {
+            let axis = Axis::from_zero(largest, 1.0);
+            assert!((axis.max - max).abs() < 1e-9, "{largest}: {axis:?}");
+            assert!((axis.step - step).abs() < 1e-9, "{largest}: {axis:?}");
+            let ticks = axis.ticks();
+            assert!((4..=9).contains(&ticks.len()), "{largest}: {ticks:?}");
+        }
+        assert_eq!(Axis::from_zero(0.7, 1.0).decimals(), 1);
+        assert_eq!(Axis::from_zero(30.0, 1.0).decimals(), 0);
+    }
+
+    #[test]
+    fn every_marker_shape_is_drawn_and_a_hollow_one_takes_the_background() {
+        let shapes = [
+            Marker::Circle,
+            Marker::Square,
+            Marker::Diamond,
+            Marker::Triangle,
+            Marker::Plus,
+            Marker::Cross,
+        ];
+        let drawn: Vec<Vec<Figure>> = shapes
+            .iter()
+            .map(|&shape| {
+                let style = MarkerStyle {
+                    shape,
+                    colour: Colour::hex(0x0072B2),
+                    filled: false,
+                };
+                style.figures(Vec2::new(10.0, 10.0), 5.0, Colour::hex(0xFFFFFF))
+            })
+            .collect();
+        for (i, a) in drawn.iter().enumerate() {
+            assert!(!a.is_empty());
+            for b in &drawn[i + 1..] {
+                assert_ne!(a, b, "two shapes look alike");
+            }
+        }
+        assert!(matches!(
+            drawn[1][0],
+            Figure::Fill { colour, .. } if colour == Colour::hex(0xFFFFFF)
+        ));
+    }
+
+    #[test]
+    fn the_legend_takes_the_corner_the_data_leaves_free() {
+        let face = Typeface::egui_default().unwrap();
+        let chart = Chart {
+            area: Rect {
+                min: Vec2::new(50.0, 20.0),
+                max: Vec2::new(450.0, 220.0),
+            },
+            x: Axis::from_zero(90.0, 1.0),
+            y: Axis::from_zero(10.0, 1.0),
+            text: 14.0,
+        };
+        let entries = [LegendEntry {
+            marker: MarkerStyle {
+                shape: Marker::Circle,
+                colour: Colour::hex(0x0072B2),
+                filled: true,
+            },
+            text: "right".to_owned(),
+        }];
+        // Data crowding the top right: the legend goes to the top left.
+        let crowd: Vec<Vec2> = (0..40)
+            .map(|i| Vec2::new(440.0 - i as f32, 30.0 + (i % 5) as f32))
+            .collect();
+        let figures = legend(&chart, &entries, &crowd, &face, &Palette::STANDARD);
+        let Figure::Fill { points, .. } = &figures[0] else {
+            panic!("the legend starts with its box")
+        };
+        assert!(points[0].x < 100.0 && points[0].y < 40.0, "{points:?}");
+        assert!(points.iter().all(|p| chart.area.contains(*p)), "{points:?}");
+    }
+}
