@@ -11,7 +11,7 @@ use refraction_model::log_map::{LinePoint, Side};
 use super::font::Typeface;
 use super::geometry::Rect;
 use super::palette::Palette;
-use super::plot::{Axis, Chart, LegendEntry, Marker, MarkerStyle, legend};
+use super::plot::{Axis, Chart, LegendEntry, Marker, MarkerStyle, legend_row};
 use super::shapes::{Align, Figure, Label, Primitive, lower_all};
 
 /// The sides a map has a panel for, in order, where some line arrives from it.
@@ -110,9 +110,36 @@ pub fn describe(points: &[LinePoint]) -> String {
     t!("diagram-failure-about", panels = panels.join("; "))
 }
 
+/// The text size of a map `width` pixels wide: a line of a panel's title fits.
+#[must_use]
+pub fn text_size(width: f32) -> f32 {
+    (width / 45.0).clamp(SMALLEST_TEXT, 20.0)
+}
+
+/// The height a map of `points` wants on a canvas `width` pixels wide: its caption, its
+/// legend and a panel per side, each tall enough to read its errors.
+#[must_use]
+pub fn height(points: &[LinePoint], width: f32) -> f32 {
+    let text = text_size(width);
+    text * 5.0 + sides(points).max(1) as f32 * (text * 5.5 + 110.0)
+}
+
+/// A text of the map in its ink.
+fn words(text: String, at: Vec2, h: Align, size: f32, palette: &Palette) -> Figure {
+    Figure::Text(Label {
+        text,
+        at,
+        h,
+        v: Align::Start,
+        size,
+        colour: palette.ink,
+        background: None,
+    })
+}
+
 /// The failure map of `points` on a canvas of `size` pixels, in `palette`'s colours, as
-/// primitives for any backend: a panel per side that some line arrives from, stacked, sharing
-/// one error axis.
+/// primitives for any backend: a caption saying what the axes are, the legend, and a panel per
+/// side that some line arrives from, stacked, sharing one error axis.
 #[must_use]
 pub fn primitives(
     points: &[LinePoint],
@@ -125,85 +152,82 @@ pub fn primitives(
         colour: palette.background,
     }];
     let sides = sides_of(points);
-    let text = (size.y / (9.0 * sides.len().max(1) as f32)).clamp(SMALLEST_TEXT, 24.0);
+    let text = text_size(size.x);
     if sides.is_empty() {
-        figures.push(Figure::Text(Label {
-            text: t!("diagram-failure-empty"),
-            at: size / 2.0,
-            h: Align::Center,
-            v: Align::Center,
-            size: text,
-            colour: palette.ink,
-            background: None,
-        }));
+        let empty = t!("diagram-failure-empty");
+        figures.push(words(
+            empty,
+            Vec2::new(size.x / 2.0, text),
+            Align::Center,
+            text,
+            palette,
+        ));
         return lower_all(&figures);
     }
+    let margin = text * 0.5;
+    let caption = t!("diagram-failure-caption");
+    let caption = super::placer::wrap(face, &caption, text, size.x - 2.0 * margin);
+    let caption_height = face.measure(&caption, text).y;
+    figures.push(words(
+        caption,
+        Vec2::splat(margin),
+        Align::Start,
+        text,
+        palette,
+    ));
+    let at = Vec2::new(margin, margin + caption_height + text * 0.3);
+    let (legend, legend_height) = legend_row(
+        &entries(palette),
+        at,
+        size.x - 2.0 * margin,
+        text,
+        face,
+        palette,
+    );
+    figures.extend(legend);
+    let top = at.y + legend_height + text * 0.4;
+    let band = (size.y - top) / sides.len() as f32;
     let largest = points.iter().map(|p| p.error_deg).fold(0.0, f64::max);
-    let y = Axis::from_zero(largest, 1.0);
+    // A tick label every two text lines at the most.
+    let area_height = band - text * 5.0;
+    let most = (area_height / (text * 2.0)).floor().clamp(1.0, 6.0) as usize;
+    let y = Axis::from_zero(largest, 1.0, most);
     let x = Axis {
         min: 0.0,
         max: 90.0,
-        step: 15.0,
+        step: if size.x < text * 40.0 { 30.0 } else { 15.0 },
     };
-    let band = size.y / sides.len() as f32;
     for (i, side) in sides.iter().enumerate() {
-        let top = band * i as f32;
+        let band_top = top + band * i as f32;
         let chart = Chart {
             area: Rect {
-                min: Vec2::new(text * 4.0, top + text * 2.6),
-                max: Vec2::new(size.x - text * 1.0, top + band - text * 3.2),
+                min: Vec2::new(text * 3.6, band_top + text * 2.3),
+                max: Vec2::new(size.x - text * 1.2, band_top + band - text * 2.6),
             },
             x,
             y,
             text,
         };
-        let legend = (i == 0).then_some((face, palette));
-        figures.extend(panel(&chart, *side, points, palette, legend));
+        let mine: Vec<&LinePoint> = points.iter().filter(|p| p.side == *side).collect();
+        let wrong = mine.iter().filter(|p| !p.ok).count();
+        let heading = title(*side, mine.len(), wrong);
+        let at = Vec2::new(margin, band_top + text * 0.2);
+        figures.push(words(heading, at, Align::Start, text, palette));
+        figures.extend(panel(&chart, &mine, palette));
     }
     lower_all(&figures)
 }
 
-/// One side's panel: its axes, its lines' markers (the right ones first, so that the wrong ones
-/// lie on top), its title and, in the first panel, the legend (measured with its face).
-fn panel(
-    chart: &Chart,
-    side: Option<Side>,
-    points: &[LinePoint],
-    palette: &Palette,
-    legend_in: Option<(&Typeface, &Palette)>,
-) -> Vec<Figure> {
-    let mine: Vec<&LinePoint> = points.iter().filter(|p| p.side == side).collect();
-    let wrong = mine.iter().filter(|p| !p.ok).count();
-    let mut figures = chart.axes(
-        ("°", "°"),
-        (
-            &t!("diagram-failure-incidence-axis"),
-            &t!("diagram-failure-error-axis"),
-        ),
-        palette,
-    );
-    let heading = title(side, mine.len(), wrong);
-    let at = Vec2::new(chart.area.max.x, chart.area.min.y - chart.text * 0.5);
-    figures.push(Figure::Text(Label {
-        text: heading,
-        at,
-        h: Align::End,
-        v: Align::End,
-        size: chart.text,
-        colour: palette.ink,
-        background: None,
-    }));
+/// One side's panel: its axes and its lines' markers, the right ones first, so that the wrong
+/// ones lie on top.
+fn panel(chart: &Chart, mine: &[&LinePoint], palette: &Palette) -> Vec<Figure> {
+    let mut figures = chart.axes(("°", "°"), palette);
     let radius = (chart.text * 0.3).max(3.5);
-    let mut centres = Vec::with_capacity(mine.len());
     for ok in [true, false] {
         for point in mine.iter().filter(|p| p.ok == ok) {
             let center = chart.at(point.incidence_deg, point.error_deg);
             figures.extend(style(point, palette).figures(center, radius, palette.background));
-            centres.push(center);
         }
-    }
-    if let Some((face, palette)) = legend_in {
-        figures.extend(legend(chart, &entries(palette), &centres, face, palette));
     }
     figures
 }
@@ -236,7 +260,8 @@ mod tests {
             })
             .collect();
         let face = Typeface::egui_default().unwrap();
-        let drawn = primitives(&points, Vec2::new(480.0, 400.0), &face, &Palette::STANDARD);
+        let size = Vec2::new(480.0, height(&points, 480.0));
+        let drawn = primitives(&points, size, &face, &Palette::STANDARD);
         let words = texts(&drawn);
         assert!(
             words.contains(&"Arriving from outside: 30 lines, none wrong"),
@@ -249,6 +274,10 @@ mod tests {
         assert!(
             words.iter().filter(|w| **w == "wrong").count() == 1,
             "one legend: {words:?}"
+        );
+        assert!(
+            words[0].starts_with("How far"),
+            "the caption first: {words:?}"
         );
         let wrong_markers = drawn
             .iter()
@@ -267,6 +296,29 @@ mod tests {
             Primitive::Text(label) => label.size >= SMALLEST_TEXT,
             _ => true,
         }));
+        // No text covers another, and every text lies inside the canvas.
+        let boxes: Vec<Rect> = drawn
+            .iter()
+            .filter_map(|p| match p {
+                Primitive::Text(label) => {
+                    let extent = face.measure(&label.text, label.size);
+                    let min = label.at - extent * Vec2::new(label.h.fraction(), label.v.fraction());
+                    Some(Rect::from_min_size(min, extent))
+                }
+                _ => None,
+            })
+            .collect();
+        let canvas = Rect::from_min_size(Vec2::ZERO, size);
+        for (i, a) in boxes.iter().enumerate() {
+            assert!(
+                canvas.contains(a.min) && canvas.contains(a.max),
+                "{:?} {a:?}",
+                words[i]
+            );
+            for (j, b) in boxes.iter().enumerate().skip(i + 1) {
+                assert!(!a.overlaps(b), "{:?} covers {:?}", words[i], words[j]);
+            }
+        }
     }
 
     #[test]

@@ -122,21 +122,21 @@ pub struct Axis {
 }
 
 impl Axis {
-    /// An axis from 0 to a round value at least `largest` (and at least `least`), with about
-    /// four to seven ticks: 1, 2 or 5 times a power of ten apart.
+    /// An axis from 0 to a round value at least `largest` (and at least `least`), in at most
+    /// `most` steps (and at least two where `most` allows), 1, 2 or 5 times a power of ten.
     #[must_use]
-    pub fn from_zero(largest: f64, least: f64) -> Self {
+    pub fn from_zero(largest: f64, least: f64, most: usize) -> Self {
         let largest = if largest.is_finite() {
             largest.max(least)
         } else {
             least
         };
-        let rough = largest / 5.0;
+        let rough = largest / most.max(1) as f64;
         let decade = 10_f64.powf(rough.log10().floor());
         let step = [1.0, 2.0, 5.0, 10.0]
             .into_iter()
             .map(|m| m * decade)
-            .find(|s| largest / s <= 6.0)
+            .find(|s| largest / s <= most.max(1) as f64)
             .unwrap_or(10.0 * decade);
         Self {
             min: 0.0,
@@ -197,15 +197,10 @@ impl Chart {
         )
     }
 
-    /// The grid, the frame, the tick labels with their `unit` suffixes (`°`, ` %`) and the
-    /// axis titles, in `palette`'s colours.
+    /// The grid, the frame and the tick labels with their `unit` suffixes (`°`, ` %`), in
+    /// `palette`'s colours.
     #[must_use]
-    pub fn axes(
-        &self,
-        units: (&str, &str),
-        titles: (&str, &str),
-        palette: &Palette,
-    ) -> Vec<Figure> {
+    pub fn axes(&self, units: (&str, &str), palette: &Palette) -> Vec<Figure> {
         let grid = Stroke {
             width: 1.0,
             colour: palette.guide.with_alpha(90),
@@ -240,7 +235,10 @@ impl Chart {
             });
             let text = format!("{}{}", number(y, self.y.decimals()), units.1);
             let left = self.at(x0, y) - Vec2::new(self.text * 0.4, 0.0);
-            figures.push(label(text, left, Align::End, Align::Center, self.text));
+            // The lowest sits on the axis, clear of the first tick label under it.
+            let lowest = (y - y0).abs() < self.y.step * 1e-6;
+            let v = if lowest { Align::End } else { Align::Center };
+            figures.push(label(text, left, Align::End, v, self.text));
         }
         figures.push(Figure::Line {
             points: vec![self.at(x0, y1), self.at(x0, y0), self.at(x1, y0)],
@@ -250,22 +248,6 @@ impl Chart {
                 dash: Dash::Solid,
             },
         });
-        let under = Vec2::new(self.area.center().x, self.area.max.y + self.text * 1.6);
-        figures.push(label(
-            titles.0.to_owned(),
-            under,
-            Align::Center,
-            Align::Start,
-            self.text,
-        ));
-        let over = Vec2::new(self.area.min.x, self.area.min.y - self.text * 0.5);
-        figures.push(label(
-            titles.1.to_owned(),
-            over,
-            Align::Start,
-            Align::End,
-            self.text,
-        ));
         figures
     }
 }
@@ -340,6 +322,43 @@ pub fn legend(
     figures
 }
 
+/// The legend of `entries` as a row from `at` (its top left), wrapped at `width`; its figures
+/// and its height.
+#[must_use]
+pub fn legend_row(
+    entries: &[LegendEntry],
+    at: Vec2,
+    width: f32,
+    size: f32,
+    face: &Typeface,
+    palette: &Palette,
+) -> (Vec<Figure>, f32) {
+    let row = face.line_height(size) * 1.2;
+    let radius = size * 0.35;
+    let gap = size * 1.2;
+    let mut figures = Vec::new();
+    let mut pen = at;
+    for entry in entries {
+        let extent = radius * 2.0 + size * 0.4 + face.width(&entry.text, size);
+        if pen.x > at.x && pen.x + extent > at.x + width {
+            pen = Vec2::new(at.x, pen.y + row);
+        }
+        let center = pen + Vec2::new(radius, row / 2.0);
+        figures.extend(entry.marker.figures(center, radius, palette.background));
+        figures.push(Figure::Text(Label {
+            text: entry.text.clone(),
+            at: Vec2::new(center.x + radius + size * 0.4, center.y),
+            h: Align::Start,
+            v: Align::Center,
+            size,
+            colour: palette.ink,
+            background: None,
+        }));
+        pen.x += extent + gap;
+    }
+    (figures, pen.y + row - at.y)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -355,14 +374,16 @@ mod tests {
             (180.0, 200.0, 50.0),
             (f64::NAN, 1.0, 0.2),
         ] {
-            let axis = Axis::from_zero(largest, 1.0);
+            let axis = Axis::from_zero(largest, 1.0, 6);
             assert!((axis.max - max).abs() < 1e-9, "{largest}: {axis:?}");
             assert!((axis.step - step).abs() < 1e-9, "{largest}: {axis:?}");
             let ticks = axis.ticks();
             assert!((4..=9).contains(&ticks.len()), "{largest}: {ticks:?}");
         }
-        assert_eq!(Axis::from_zero(0.7, 1.0).decimals(), 1);
-        assert_eq!(Axis::from_zero(30.0, 1.0).decimals(), 0);
+        assert_eq!(Axis::from_zero(0.7, 1.0, 6).decimals(), 1);
+        assert_eq!(Axis::from_zero(30.0, 1.0, 6).decimals(), 0);
+        // A short axis takes fewer, wider steps.
+        assert_eq!(Axis::from_zero(180.0, 1.0, 2).ticks(), [0.0, 100.0, 200.0]);
     }
 
     #[test]
@@ -406,8 +427,8 @@ mod tests {
                 min: Vec2::new(50.0, 20.0),
                 max: Vec2::new(450.0, 220.0),
             },
-            x: Axis::from_zero(90.0, 1.0),
-            y: Axis::from_zero(10.0, 1.0),
+            x: Axis::from_zero(90.0, 1.0, 6),
+            y: Axis::from_zero(10.0, 1.0, 6),
             text: 14.0,
         };
         let entries = [LegendEntry {

@@ -15,6 +15,7 @@ use crate::app::typed::error_label;
 use refraction_diagram::font::Typeface;
 use refraction_diagram::{Primitive, failure_map};
 use refraction_i18n::t;
+use refraction_kernel::api::Api;
 use refraction_model::log_map::LinePoint;
 use refraction_tools::api_check::{
     Dialect, Format, Judgement, Options, Pattern, Record, SKIPPED, Session, Tally, fields,
@@ -39,8 +40,8 @@ pub const MAX_TESTS: usize = 100;
 /// The longest explanation a row shows (the whole one is in its tooltip and in the panel).
 const SHORT_EXPLANATION: usize = 90;
 
-/// The failure map's height per side it shows, in points.
-const MAP_PANEL_HEIGHT: f32 = 190.0;
+/// The most height the box of pasted lines takes before it scrolls, in points.
+const BOX_HEIGHT: f32 = 160.0;
 
 /// One line with a call, judged.
 #[derive(Clone, Debug)]
@@ -115,6 +116,20 @@ fn how_written(dialect: Dialect, pattern: &str, text: &str) -> Result<(Format, S
     } else {
         Ok((Format::Csv, t!("check-read-as-csv")))
     }
+}
+
+/// A pattern that reads a log of `dialect`'s calls, as its hint shows it: `name={name}` for
+/// each API's own arguments and result, or for any renderer's W, N, `entering` and T.
+fn example_pattern(dialect: Dialect) -> String {
+    let names = match dialect.api() {
+        Some(api) => {
+            let n = fields::names(api);
+            [n.incident, n.normal, n.eta, n.result]
+        }
+        None => ["w", "n", "entering", "t_yours"],
+    };
+    let fields: Vec<String> = names.iter().map(|f| format!("{f}={{{f}}}")).collect();
+    fields.join(" ")
 }
 
 /// An index typed into the field named `name`: empty for none, else a finite number above 0.
@@ -285,9 +300,8 @@ impl Table {
     /// The failure map across the panel's width, drawn from the diagram's primitives (so it
     /// looks as an export would), with an accessible name that says what it shows.
     fn map(&mut self, ui: &mut Ui) {
-        let sides = failure_map::sides(&self.points).max(1);
         let width = ui.available_width().clamp(240.0, 900.0);
-        let size = Vec2::new(width, MAP_PANEL_HEIGHT * sides as f32);
+        let size = Vec2::new(width, failure_map::height(&self.points, width));
         let (response, painter) = ui.allocate_painter(egui::vec2(size.x, size.y), Sense::hover());
         let palette = window_palette(ui);
         let fresh = self
@@ -395,23 +409,38 @@ impl Bulk {
             return;
         }
         let name = ui.label(t!("check-log-lines"));
-        ui.add(
-            TextEdit::multiline(&mut self.text)
-                .char_limit(MAX_PASTED_CHARS)
-                .desired_rows(4)
-                .desired_width(f32::INFINITY)
-                .code_editor(),
-        )
-        .labelled_by(name.id);
+        // A pasted log is long: the box scrolls rather than push the table out of view.
+        egui::ScrollArea::vertical()
+            // untranslated: egui's id of the scroll area
+            .id_salt("pasted log lines")
+            .max_height(BOX_HEIGHT)
+            .min_scrolled_height(BOX_HEIGHT * 0.75)
+            .show(ui, |ui| {
+                ui.add(
+                    TextEdit::multiline(&mut self.text)
+                        .char_limit(MAX_PASTED_CHARS)
+                        .desired_rows(4)
+                        .desired_width(f32::INFINITY)
+                        .code_editor(),
+                )
+                .labelled_by(name.id);
+            });
     }
 
     /// The section's body: the hint, the indices and the pattern, the box (or the file
     /// opened), *Check* and *Open log…*, the table and its dialogs; the record of the row
     /// clicked.
     fn body(&mut self, ui: &mut Ui, dialect: Dialect) -> Option<Record> {
-        let fields = fields::listed(dialect);
+        let (fields, example) = (fields::listed(dialect), example_pattern(dialect));
         let (c, n) = (MAX_PASTED_CHARS, MAX_LINES);
-        ui.label(t!("logs-hint", fields = fields, characters = c, count = n));
+        let hint = t!(
+            "logs-hint",
+            fields = fields,
+            example = example,
+            characters = c,
+            count = n
+        );
+        ui.label(hint);
         self.reading.show(ui);
         self.source(ui);
         let asked = ui

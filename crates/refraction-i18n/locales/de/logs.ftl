@@ -1,7 +1,7 @@
 # Ein ganzes Protokoll im Fenster geprüft: sein Abschnitt in „Mein T prüfen“, die Datei, aus
 # der es gelesen wird, seine Diagnose, seine Fehlerkarte und seine falschen Zeilen als Tests.
 
-logs-hint = Zeilen mit den Feldern { $fields }: JSON Lines, CSV mit einer Kopfzeile, die sie nennt, oder printf-Zeilen, gelesen mit einem Muster wie REFR d={"{"}w{"}"} nl={"{"}n{"}"} into={"{"}entering{"}"} tdir={"{"}t_yours{"}"}. Höchstens { $characters } Zeichen einfügen oder eine Protokolldatei öffnen; die ersten { $count } Zeilen werden aufgelistet, jede Zeile geht in die Diagnose ein.
+logs-hint = Zeilen mit den Feldern { $fields }: JSON Lines, CSV mit einer Kopfzeile, die sie nennt, oder printf-Zeilen, gelesen mit einem Muster wie { $example }. Höchstens { $characters } Zeichen einfügen oder eine Protokolldatei öffnen; die ersten { $count } Zeilen werden aufgelistet, jede Zeile geht in die Diagnose ein.
 logs-inside = Brechzahl innen
 logs-outside = außen
 logs-indices-hint = die Brechzahl des Körpers und seiner Umgebung, für Zeilen, die entering protokollieren
@@ -44,7 +44,6 @@ diagram-failure-panel = { $side ->
     [0] keine falsch
    *[other] { $wrong } falsch
 }
-diagram-failure-incidence-axis = Einfallswinkel θi
-diagram-failure-error-axis = Abweichung
+diagram-failure-caption = Wie weit die Richtung, in die jede geprüfte Zeile den Strahl schickt, von der richtigen abweicht, gegen den Einfallswinkel θi:
 diagram-failure-empty = Keine Zeile wurde geprüft.
 diagram-failure-about = Fehlerkarte. { $panels }

@@ -1,7 +1,7 @@
 # A whole log judged in the window: its section in Check my T, the file it is read from, its
 # diagnosis, its failure map and its failing lines saved as tests.
 
-logs-hint = Lines of the fields { $fields }: JSON Lines, CSV with a header naming them, or printf lines read with a pattern such as REFR d={"{"}w{"}"} nl={"{"}n{"}"} into={"{"}entering{"}"} tdir={"{"}t_yours{"}"}. Paste at most { $characters } characters, or open a log file; the first { $count } lines are listed, and every line is diagnosed.
+logs-hint = Lines of the fields { $fields }: JSON Lines, CSV with a header naming them, or printf lines read with a pattern such as { $example }. Paste at most { $characters } characters, or open a log file; the first { $count } lines are listed, and every line is diagnosed.
 logs-inside = Index inside
 logs-outside = outside
 logs-indices-hint = the object's index and its surroundings', for lines that log entering
@@ -44,7 +44,6 @@ diagram-failure-panel = { $side ->
     [0] none wrong
    *[other] { $wrong } wrong
 }
-diagram-failure-incidence-axis = angle of incidence θi
-diagram-failure-error-axis = off by
+diagram-failure-caption = How far the direction each judged line sent the ray in is off from the right one, against the angle of incidence θi:
 diagram-failure-empty = No line was judged.
 diagram-failure-about = Failure map. { $panels }

@@ -1,7 +1,7 @@
 # Un registro entero juzgado en la ventana: su sección en «Comprobar mi T», el archivo del que
 # se lee, su diagnóstico, su mapa de fallos y sus líneas erróneas guardadas como pruebas.
 
-logs-hint = Líneas con los campos { $fields }: JSON Lines, CSV con una cabecera que los nombre, o líneas de printf leídas con un patrón como REFR d={"{"}w{"}"} nl={"{"}n{"}"} into={"{"}entering{"}"} tdir={"{"}t_yours{"}"}. Pega como mucho { $characters } caracteres o abre un archivo de registro; se listan las primeras { $count } líneas y todas entran en el diagnóstico.
+logs-hint = Líneas con los campos { $fields }: JSON Lines, CSV con una cabecera que los nombre, o líneas de printf leídas con un patrón como { $example }. Pega como mucho { $characters } caracteres o abre un archivo de registro; se listan las primeras { $count } líneas y todas entran en el diagnóstico.
 logs-inside = Índice dentro
 logs-outside = fuera
 logs-indices-hint = el índice del objeto y el de su entorno, para las líneas que registran entering
@@ -45,7 +45,6 @@ diagram-failure-panel = { $side ->
     [one] { $wrong } errónea
    *[other] { $wrong } erróneas
 }
-diagram-failure-incidence-axis = ángulo de incidencia θi
-diagram-failure-error-axis = desvío
+diagram-failure-caption = Cuánto se desvía de la correcta la dirección en que cada línea juzgada envía el rayo, frente al ángulo de incidencia θi:
 diagram-failure-empty = No se juzgó ninguna línea.
 diagram-failure-about = Mapa de fallos. { $panels }

@@ -1,7 +1,7 @@
 # Un journal entier jugé dans la fenêtre : sa section dans « Vérifier mon T », le fichier d’où
 # il est lu, son diagnostic, sa carte des erreurs et ses lignes fausses enregistrées en tests.
 
-logs-hint = Lignes portant les champs { $fields } : JSON Lines, CSV avec un en-tête qui les nomme, ou lignes de printf lues avec un motif comme REFR d={"{"}w{"}"} nl={"{"}n{"}"} into={"{"}entering{"}"} tdir={"{"}t_yours{"}"}. Collez au plus { $characters } caractères ou ouvrez un fichier journal ; les { $count } premières lignes sont listées et toutes entrent dans le diagnostic.
+logs-hint = Lignes portant les champs { $fields } : JSON Lines, CSV avec un en-tête qui les nomme, ou lignes de printf lues avec un motif comme { $example }. Collez au plus { $characters } caractères ou ouvrez un fichier journal ; les { $count } premières lignes sont listées et toutes entrent dans le diagnostic.
 logs-inside = Indice à l’intérieur
 logs-outside = à l’extérieur
 logs-indices-hint = l’indice de l’objet et celui de son milieu, pour les lignes qui journalisent entering
@@ -45,7 +45,6 @@ diagram-failure-panel = { $side ->
     [one] { $wrong } fausse
    *[other] { $wrong } fausses
 }
-diagram-failure-incidence-axis = angle d’incidence θi
-diagram-failure-error-axis = écart
+diagram-failure-caption = L’écart entre la direction où chaque ligne jugée envoie le rayon et la bonne, en fonction de l’angle d’incidence θi :
 diagram-failure-empty = Aucune ligne n’a été jugée.
 diagram-failure-about = Carte des erreurs. { $panels }

@@ -1,7 +1,7 @@
 # Um log inteiro julgado na janela: sua seção em “Verificar meu T”, o arquivo de onde é lido,
 # seu diagnóstico, seu mapa de falhas e suas linhas erradas salvas como testes.
 
-logs-hint = Linhas com os campos { $fields }: JSON Lines, CSV com um cabeçalho que os nomeia, ou linhas de printf lidas com um padrão como REFR d={"{"}w{"}"} nl={"{"}n{"}"} into={"{"}entering{"}"} tdir={"{"}t_yours{"}"}. Cole no máximo { $characters } caracteres ou abra um arquivo de log; as primeiras { $count } linhas são listadas e todas entram no diagnóstico.
+logs-hint = Linhas com os campos { $fields }: JSON Lines, CSV com um cabeçalho que os nomeia, ou linhas de printf lidas com um padrão como { $example }. Cole no máximo { $characters } caracteres ou abra um arquivo de log; as primeiras { $count } linhas são listadas e todas entram no diagnóstico.
 logs-inside = Índice dentro
 logs-outside = fora
 logs-indices-hint = o índice do objeto e o do meio em volta, para as linhas que registram entering
@@ -45,7 +45,6 @@ diagram-failure-panel = { $side ->
     [one] { $wrong } errada
    *[other] { $wrong } erradas
 }
-diagram-failure-incidence-axis = ângulo de incidência θi
-diagram-failure-error-axis = desvio
+diagram-failure-caption = Quanto a direção em que cada linha julgada envia o raio se afasta da correta, em função do ângulo de incidência θi:
 diagram-failure-empty = Nenhuma linha foi julgada.
 diagram-failure-about = Mapa de falhas. { $panels }
