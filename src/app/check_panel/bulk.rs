@@ -15,7 +15,6 @@ use crate::app::typed::error_label;
 use refraction_diagram::font::Typeface;
 use refraction_diagram::{Primitive, failure_map};
 use refraction_i18n::t;
-use refraction_kernel::api::Api;
 use refraction_model::log_map::LinePoint;
 use refraction_tools::api_check::{
     Dialect, Format, Judgement, Options, Pattern, Record, SKIPPED, Session, Tally, fields,
