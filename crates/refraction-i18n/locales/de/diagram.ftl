@@ -152,6 +152,8 @@ diagram-eq-no-root = keine reelle Lösung zur Auswahl
 diagram-eq-no-theta-t = { $given }, also wäre sinθt = { $sin_t } > 1: es gibt keinen Winkel θt
 diagram-eq-with-chosen = { $lhs } = { $rhs } mit dem gewählten (a, b)
 diagram-eq-no-ab-with-12 = kein reelles (a, b) erfüllt sie zusammen mit Gl. 12
+# Der Name des Sinus in den Formeln von „Schritt für Schritt“, wie ihn die Schulen der Sprache schreiben.
+diagram-math-sin = sin
 
 ## Schritt für Schritt
 

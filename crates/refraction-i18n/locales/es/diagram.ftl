@@ -152,6 +152,8 @@ diagram-eq-no-root = no hay raíz real que elegir
 diagram-eq-no-theta-t = { $given }, así que senθt sería { $sin_t } > 1: no existe ningún ángulo θt
 diagram-eq-with-chosen = { $lhs } = { $rhs } con el (a, b) elegido
 diagram-eq-no-ab-with-12 = ningún (a, b) real la cumple junto con la ec. 12
+# El nombre del seno en las fórmulas del paso a paso, tal como lo escriben los colegios en este idioma.
+diagram-math-sin = sen
 
 ## Paso a paso
 

@@ -152,6 +152,8 @@ diagram-eq-no-root = aucune racine réelle à choisir
 diagram-eq-no-theta-t = { $given }, donc sinθt vaudrait { $sin_t } > 1 : aucun angle θt n’existe
 diagram-eq-with-chosen = { $lhs } = { $rhs } avec le (a, b) choisi
 diagram-eq-no-ab-with-12 = aucun (a, b) réel ne la vérifie avec l’éq. 12
+# Le nom du sinus dans les formules du pas à pas, tel que l’écrivent les écoles de la langue.
+diagram-math-sin = sin
 
 ## Pas à pas
 

@@ -152,6 +152,8 @@ diagram-eq-no-root = nenhuma raiz real para escolher
 diagram-eq-no-theta-t = { $given }, então senθt seria { $sin_t } > 1: não existe ângulo θt
 diagram-eq-with-chosen = { $lhs } = { $rhs } com o (a, b) escolhido
 diagram-eq-no-ab-with-12 = nenhum (a, b) real a satisfaz junto com a eq. 12
+# O nome do seno nas fórmulas do passo a passo, como as escolas da língua o escrevem.
+diagram-math-sin = sen
 
 ## Passo a passo
 
