@@ -4,7 +4,7 @@
 
 ## La barra superior
 
-view-interface = Superficie de separación
+view-interface = Una superficie
 view-scenes = Escenas
 view-accuracy = Precisión/tiempo
 # Nombra, en un mensaje de error, una escena conservada de la última ejecución.
@@ -137,7 +137,7 @@ scenes-save-hover = la escena editada, en el formato de escenas (TOML)
 scenes-open-dialog-hover = Elegir un archivo de escena para abrir
 scenes-saved = se guardó { $path }
 scenes-opened = se abrió { $path }
-scenes-hint = Arrastra la fuente (ámbar), su dirección (el anillo al final de la flecha discontinua) o el tirador de una forma; haz clic en un punto de impacto para abrirlo en «Superficie de separación».
+scenes-hint = Arrastra la fuente (ámbar), su dirección (el anillo al final de la flecha discontinua) o el tirador de una forma; haz clic en un punto de impacto para abrirlo en «Una superficie».
 scenes-picture-file = Archivo de imagen (.png o .svg)
 scenes-picture-hint = un nombre .png o .svg, o numerado scene-001.svg
 scenes-export-size = Exportar { $width }×{ $height }
@@ -154,7 +154,7 @@ scenes-hit =
        *[leaving] salida: el kernel invierte N
     })
     μi = { $mu_i }, μt = { $mu_t }, { $wavelength } nm
-    clic: abrir en «Superficie de separación»
+    clic: abrir en «Una superficie»
 
 ## La vista de precisión
 
