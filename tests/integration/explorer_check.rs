@@ -462,7 +462,7 @@ fn check_my_t_gives_its_verdict_in_german_with_decimal_commas() {
         .t;
     type_into(&mut h, "Dein T", &vector_text(wrong_side));
     let headline = h
-        .query_by_label("✖ Dein T ist: falsche Seite (die andere Wurzel für b)")
+        .query_by_label("✖ Dein T ist: falsche Seite (die andere Lösung für b)")
         .is_some();
     let explained = h
         .query_by_label_contains("Dein T läuft zurück in das Medium")

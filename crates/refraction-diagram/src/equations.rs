@@ -12,8 +12,9 @@ use super::numbers::{number, vector};
 pub struct Equation {
     /// The source's number, e.g. `2.21` (section.equation).
     pub number: String,
-    /// The equation as the source writes it.
-    pub formula: &'static str,
+    /// The equation as the source writes it, with the sine named as the language's schools
+    /// write it (`sin`, `sen`).
+    pub formula: String,
     /// The same with the current numbers, and what follows from them.
     pub substituted: String,
 }
@@ -75,7 +76,7 @@ pub fn equations(r: &Refraction<f64>) -> Vec<Equation> {
     .into_iter()
     .map(|(number, formula, substituted)| Equation {
         number: format!("{}.{number}", r.convention.section()),
-        formula,
+        formula: formula.to_owned(),
         substituted,
     })
     .collect()

@@ -147,10 +147,10 @@ pub fn steps(r: &Refraction<f64>) -> Vec<Step> {
 }
 
 /// An equation of the source that the key-equation list does not carry.
-fn equation(r: &Refraction<f64>, number: u8, formula: &'static str, values: String) -> Equation {
+fn equation(r: &Refraction<f64>, number: u8, formula: &str, values: String) -> Equation {
     Equation {
         number: format!("{}.{number}", r.convention.section()),
-        formula,
+        formula: formula.to_owned(),
         substituted: values,
     }
 }
@@ -160,9 +160,10 @@ fn other_equations(r: &Refraction<f64>) -> [Equation; 6] {
     let wording = wording(r.convention);
     let a = chosen_a(r);
     let wn = r.wn();
+    let sin = t!("diagram-math-sin");
     [
         // untranslated: a formula.
-        equation(r, 4, "sin(θi)·μ = sin(θt)", snell(r)),
+        equation(r, 4, &format!("{sin}(θi)·μ = {sin}(θt)"), snell(r)),
         // untranslated: a formula.
         equation(r, 6, "(1 − cos²θi)·μ² = 1 − cos²θt", squared(r)),
         equation(
@@ -191,15 +192,15 @@ fn sin_i(r: &Refraction<f64>) -> f64 {
 
 /// Eq. 4: sinθt from Snell's law, or why there is no θt.
 fn snell(r: &Refraction<f64>) -> String {
-    let sin_i = sin_i(r);
+    let (sin_i, sin) = (sin_i(r), t!("diagram-math-sin"));
     let sin_t = r.mu * sin_i;
     // untranslated: a formula with numbers.
-    let given = format!("μ = μi/μt = {}; sinθi = {}", n(r.mu), n(sin_i));
+    let given = format!("μ = μi/μt = {}; {sin}θi = {}", n(r.mu), n(sin_i));
     if sin_t > 1.0 {
         t!("diagram-eq-no-theta-t", given = given, sin_t = n(sin_t))
     } else {
         // untranslated: a formula with numbers.
-        let then = format!("sinθt = {}", n(sin_t));
+        let then = format!("{sin}θt = {}", n(sin_t));
         t!("diagram-eq-so", given = given, then = then)
     }
 }
@@ -258,6 +259,7 @@ fn choice_of_b(r: &Refraction<f64>) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use refraction_i18n::{Locale, set_locale};
     use refraction_model::ExplorerState;
 
     #[test]
@@ -304,5 +306,58 @@ mod tests {
         let all = steps(state.refraction());
         assert!(all[0].equations[0].substituted.contains("> 1: no angle θt"));
         assert!(all[3].equations[0].substituted.contains("no real (a, b)"));
+    }
+
+    /// The steps of `state` in `locale`; the thread speaks English again after.
+    fn steps_in(locale: Locale, state: &ExplorerState) -> Vec<Step> {
+        set_locale(locale);
+        let all = steps(state.refraction());
+        set_locale(Locale::En);
+        all
+    }
+
+    #[test]
+    fn the_sine_and_the_equation_labels_are_written_as_each_languages_schools_write_them() {
+        let mut state = ExplorerState::default();
+        let english = steps_in(Locale::En, &state);
+        assert_eq!(english[0].equations[0].formula, "sin(θi)·μ = sin(θt)");
+        assert!(english[0].equations[0].substituted.contains("; sinθi = 0."));
+        assert!(english[3].explanation.contains("Squared Snell (eq. 10)"));
+        let spanish = steps_in(Locale::Es, &state);
+        assert_eq!(spanish[0].equations[0].formula, "sen(θi)·μ = sen(θt)");
+        let substituted = &spanish[0].equations[0].substituted;
+        assert!(substituted.contains("; senθi = 0,"), "{substituted}");
+        assert!(substituted.contains(", así que senθt = "), "{substituted}");
+        assert!(spanish[0].explanation.contains("μi·senθi = μt·senθt"));
+        assert!(spanish[3].explanation.contains("(ec. 10)"));
+        let russian = steps_in(Locale::Ru, &state);
+        assert_eq!(russian[0].equations[0].formula, "sin(θi)·μ = sin(θt)");
+        assert!(russian[3].explanation.contains("(ур. 10)"));
+        assert!(
+            russian[4]
+                .explanation
+                .contains("Подстановка ур. 12 в ур. 10")
+        );
+        let german = steps_in(Locale::De, &state);
+        assert!(german[3].explanation.contains("(Gl. 10)"));
+        let french = steps_in(Locale::Fr, &state);
+        assert!(french[3].explanation.contains("(éq. 10)"));
+        // Past the critical angle the equations' own words cite eq. 12 too.
+        state.set_mu_i(1.5).unwrap();
+        state.set_mu_t(1.0).unwrap();
+        state.rotate(refraction_model::HandleId::W, 40.0);
+        let russian = steps_in(Locale::Ru, &state);
+        let substituted = &russian[3].equations[0].substituted;
+        assert!(substituted.ends_with("вместе с ур. 12"), "{substituted}");
+        let portuguese = steps_in(Locale::PtBr, &state);
+        let substituted = &portuguese[0].equations[0].substituted;
+        assert!(
+            substituted.contains(", então senθt seria "),
+            "{substituted}"
+        );
+        for all in [&english, &spanish, &russian, &portuguese] {
+            let words: String = all.iter().map(|s| s.explanation.as_str()).collect();
+            assert!(!words.contains("eq.10"), "{words}");
+        }
     }
 }

@@ -138,3 +138,43 @@ fn the_walk_through_speaks_german_with_the_kernels_numbers() {
             .contains(", also sinθt = ")
     );
 }
+
+/// What `text` says in each of `locales`, the thread back in English after.
+fn in_each(locales: &[Locale], text: impl Fn() -> String) -> Vec<String> {
+    let all = locales
+        .iter()
+        .map(|&locale| {
+            set_locale(locale);
+            text()
+        })
+        .collect();
+    set_locale(Locale::En);
+    all
+}
+
+#[test]
+fn the_fresnel_tool_and_the_checks_write_the_schools_notation() {
+    let locales = [
+        Locale::En,
+        Locale::De,
+        Locale::Es,
+        Locale::Fr,
+        Locale::PtBr,
+        Locale::Ru,
+    ];
+    let brewster = in_each(&locales, || t!("fresnel-brewster", angle = "56,3"));
+    let tangents = ["tan θB", "tan θB", "tg θB", "tan θB", "tg θB", "tg θB"];
+    for (text, tangent) in brewster.iter().zip(tangents) {
+        assert!(text.contains(&format!("({tangent} = μt/μi)")), "{text}");
+    }
+    let critical = in_each(&locales, || t!("fresnel-critical", angle = "41,8"));
+    let sines = ["sin θc", "sin θc", "sen θc", "sin θc", "sen θc", "sin θc"];
+    for (text, sine) in critical.iter().zip(sines) {
+        assert!(text.contains(&format!("({sine} = μt/μi)")), "{text}");
+    }
+    let snell = in_each(&locales, || t!("readouts-check-snell"));
+    assert_eq!(
+        snell,
+        ["eq.10", "Gl. 10", "ec. 10", "éq. 10", "eq. 10", "ур. 10"]
+    );
+}

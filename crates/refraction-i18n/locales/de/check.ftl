@@ -7,13 +7,13 @@ check-vector-not-finite = ein nicht endlicher Vektor (Komponenten NaN oder unend
 
 ## Urteile über ein T in den Feldern dieses Projekts (auch die Erklärungen des Befehls `check`)
 
-check-verdict-wrong-side = Dein T läuft zurück in das Medium, aus dem der Strahl kam: die andere Wurzel für b (+, wo die Quadratwurzel - braucht). Meist liegt es an einer Normalen, die in Strahlrichtung zeigt, etwa der äußeren Normalen einer Kugel dort, wo der Strahl sie verlässt, die nicht umgedreht wurde.
-check-verdict-wrong-bend = Dein T wird in die falsche Richtung gebrochen: Das Vorzeichen von a ist vertauscht, sodass es für mu -> 1 nicht zum einfallenden Strahl wird. Meist sind die Konventionen vermischt: W zurück zum Ursprung (Abschnitt 1, a = -mu) in die Formel für W entlang des Strahls (Abschnitt 2, a = +mu) eingesetzt, oder umgekehrt.
+check-verdict-wrong-side = Dein T läuft zurück in das Medium, aus dem der Strahl kam: die andere Lösung für b (+, wo die Quadratwurzel - braucht). Meist liegt es an einer Normalen, die in Strahlrichtung zeigt, etwa der äußeren Normalen einer Kugel dort, wo der Strahl sie verlässt, die nicht umgekehrt wurde.
+check-verdict-wrong-bend = Dein T wird in die falsche Richtung gebrochen: Das Vorzeichen von a ist umgekehrt, sodass es für mu -> 1 nicht zum einfallenden Strahl wird. Meist sind die Konventionen vermischt: W zurück zum Ursprung (Abschnitt 1, a = -mu) in die Formel für W entlang des Strahls (Abschnitt 2, a = +mu) eingesetzt, oder umgekehrt.
 check-verdict-reversed = Dein T ist -T und zeigt dorthin zurück, woher der Strahl kam: Beide Vorzeichen sind falsch. Meist wird die Richtung zum Ursprung statt der Laufrichtung zurückgegeben, oder W wurde zweimal negiert.
-check-verdict-not-finite-tir = Dein T hat Komponenten NaN oder unendlich. Dieser Strahl wird totalreflektiert (k < 0): Dein Code hat die Wurzel aus einem negativen k gezogen, statt k vorher zu prüfen.
+check-verdict-not-finite-tir = Dein T hat Komponenten NaN oder unendlich. Dieser Strahl wird totalreflektiert (k < 0): Dein Code hat die Quadratwurzel aus einem negativen k gezogen, statt k vorher zu prüfen.
 check-verdict-not-finite-refracts = Dein T hat Komponenten NaN oder unendlich, obwohl dieser Strahl normal gebrochen wird (k >= 0): Suche nach einer Division durch null oder einem nicht initialisierten Vektor.
 check-verdict-tir-right = Richtig: Dieser Strahl wird totalreflektiert (k < 0), und dein Code gab die Reflexion zurück (oder den Nullvektor, mit dem GLSL das anzeigt).
-check-verdict-tir-but-refracted = Dieser Strahl wird totalreflektiert (k = { $k } < 0): Es gibt keinen gebrochenen Strahl, aber dein Code gab einen zurück. Prüfe k, bevor du die Wurzel ziehst.
+check-verdict-tir-but-refracted = Dieser Strahl wird totalreflektiert (k = { $k } < 0): Es gibt keinen gebrochenen Strahl, aber dein Code gab einen zurück. Prüfe k, bevor du die Quadratwurzel ziehst.
 check-verdict-zero-vector = Dein T ist der Nullvektor, den GLSL bei Totalreflexion zurückgibt, aber dieser Strahl wird gebrochen (k >= 0). Prüfe das Vorzeichen von k und das Verhältnis der Brechungsindizes.
 check-verdict-not-unit = Außerdem hat dein T die Länge { $length }, nicht 1: Normiere W und N vor der Brechung (die Formel setzt Einheitsvektoren voraus) oder T danach.
 check-verdict-along-refracted = Dein T zeigt entlang des gebrochenen Strahls (auf { $off } rad genau).
@@ -29,11 +29,10 @@ check-t-yours-missing = das Feld `t_yours` fehlt (das T, das dein Code berechnet
 
 ## Erklärungen zu einem API-Aufruf (`check --api` und das Panel): wie jede API spricht
 
-# Der Besitzer steht in „Bei … ist eta …“: RTIOW ist das Buch „Ray Tracing in One Weekend“.
 check-api-owner = { $api ->
     [glsl] GLSL
     [pbrt] pbrt
-    [rtiow] RTIOW
+    [rtiow] dem Buch
    *[mitsuba] Mitsuba
 }
 check-api-call = { $api ->
@@ -71,7 +70,6 @@ check-api-usual = { $api ->
 check-situation-entering = beim Eintritt in das Objekt (von n = { $from } nach n = { $to })
 check-situation-leaving = beim Austritt aus dem Objekt (von n = { $from } nach n = { $to })
 check-situation-going = von n = { $from } nach n = { $to }
-# Ohne Artikel, weil sie in verschiedenen Fällen stehen („ergab …“, „… zurück“).
 check-nothing-zero-vector = Nullvektor
 check-nothing-reflection = Reflexion
 check-nothing-false-or-null = nichts (false oder null)
@@ -81,14 +79,14 @@ check-field-from-and-to = from und to (oder entering mit --inside und --outside)
 check-normal-fix-rtiow = die Normale des Trefferdatensatzes nach set_face_normal
 check-normal-inward-entering = sie zeigt ins Objekt, und der Strahl tritt ein
 check-normal-inward-leaving = sie zeigt ins Objekt, und der Strahl tritt aus
-check-looks-other-root = die andere Wurzel, mit umgekehrtem Vorzeichen der Quadratwurzel ({ $hint })
-check-looks-wrong-bend = der Anteil entlang der Oberfläche umgedreht
+check-looks-other-root = die andere Lösung, mit umgekehrtem Vorzeichen der Quadratwurzel ({ $hint })
+check-looks-wrong-bend = der Anteil entlang der Oberfläche umgekehrt
 check-looks-reversed = minus die Antwort der API
 check-looks-length = dieselbe Richtung mit der { $ratio }-fachen Länge: Dein Code skaliert oder normiert anders
 check-looks-reflection = die Reflexion, obwohl dieser Strahl gebrochen wird (protokolliere nur die Brechung, keine von Fresnel oder Schlick gewählte Reflexion)
 check-looks-variant = was { $call } mit { $variant } zurückgibt: Deine Implementierung tut das intern
 check-variant-eta-inverted = invertiertem eta
-check-variant-normal-flipped = umgedrehter Normale
+check-variant-normal-flipped = umgekehrter Normale
 check-variant-incident-reversed = umgekehrtem Einfallsvektor
 check-looks-nothing = { $what }, also wird nichts durchgelassen, obwohl dieser Strahl gebrochen wird (k = { $k } >= 0)
 check-looks-not-finite = Komponenten NaN oder unendlich, obwohl dieser Strahl gebrochen wird
@@ -102,22 +100,21 @@ check-unchecked-travel = travel, um zu prüfen, wohin { $incident } zeigt
 
 ## Erklärungen zu einem API-Aufruf: die Sätze
 
-check-eta-inverted = Bei { $owner } ist { $eta } { $means }: Du hast { $value } für einen Strahl { $situation } übergeben; übergib 1/{ $value } = { $inverse }.
-check-eta-inverted-this-ray = Bei { $owner } ist { $eta } { $means }: Du hast { $value } für diesen Strahl übergeben; übergib 1/{ $value } = { $inverse }.
-check-incident-reversed = Bei { $owner } ist { $incident } { $means }; deiner zeigt in die Gegenrichtung: Übergib -{ $incident } = { $reversed }.
-check-incident-reversed-travel = Bei { $owner } ist { $incident } { $means }; deiner zeigt in die Gegenrichtung (der Strahl läuft entlang { $travel }): Übergib -{ $incident } = { $reversed }.
+check-eta-inverted = In { $owner } ist { $eta } { $means }: Du hast { $value } für einen Strahl { $situation } übergeben; übergib 1/{ $value } = { $inverse }.
+check-eta-inverted-this-ray = In { $owner } ist { $eta } { $means }: Du hast { $value } für diesen Strahl übergeben; übergib 1/{ $value } = { $inverse }.
+check-incident-reversed = In { $owner } ist { $incident } { $means }; deiner zeigt in die Gegenrichtung: Übergib -{ $incident } = { $reversed }.
+check-incident-reversed-travel = In { $owner } ist { $incident } { $means }; deiner zeigt in die Gegenrichtung (der Strahl läuft entlang { $travel }): Übergib -{ $incident } = { $reversed }.
 check-not-unit-input = { $call } setzt Einheitsvektoren { $incident } und { $normal } voraus und normiert sie nicht: |{ $incident }| = { $incident_length }, |{ $normal }| = { $normal_length }; normiere sie vorher.
-check-normal-against = { $call } braucht { $normal } entgegen { $incident } (dot({ $normal }, { $incident }) < 0) und dreht sie nicht um; bei dir ist dot({ $normal }, { $incident }) = { $dot }, wie bei einer äußeren Normalen dort, wo der Strahl das Objekt verlässt: Übergib -{ $normal } = { $flipped } ({ $fix }).
-check-normal-either-side = { $call } nimmt { $normal } auf beiden Seiten, aber { $eta } muss dazu passen: Es ist { $means }. Dein { $normal } zeigt in die andere Richtung als das, für das { $eta } = { $value } gedacht war{ $inward }; übergib -{ $normal } = { $flipped } mit demselben { $eta } (oder behalte { $normal } und übergib 1/{ $eta }).
+check-normal-against = { $call } braucht { $normal } entgegen { $incident } (dot({ $normal }, { $incident }) < 0) und kehrt sie nicht um; bei dir ist dot({ $normal }, { $incident }) = { $dot }, wie bei einer äußeren Normalen dort, wo der Strahl das Objekt verlässt: Übergib -{ $normal } = { $flipped } ({ $fix }).
+check-normal-either-side = { $call } nimmt { $normal } auf beiden Seiten, aber { $eta } muss dazu passen: Es ist { $means }. Deine Normale { $normal } zeigt in die andere Richtung als die, für die { $eta } = { $value } gedacht war{ $inward }; übergib -{ $normal } = { $flipped } mit demselben { $eta } (oder behalte { $normal } und übergib 1/{ $eta }).
 check-tir-glsl = Das refract von GLSL gibt hier den Nullvektor zurück (k = { $k } < 0: Totalreflexion); prüfe darauf und reflektiere stattdessen.
 check-tir-pbrt = Das Refract von pbrt gibt hier false zurück (sin2Theta_t = { $sin2 } >= 1: Totalreflexion); reflektiere stattdessen.
 check-tir-rtiow = Das cannot_refract von dielectric::scatter gilt hier (ri * sin_theta = { $sine } > 1): Das Buch reflektiert, statt refract aufzurufen.
 check-tir-mitsuba = fresnel gibt hier F = 1 zurück (cos_theta_t_sqr = { $k } < 0): Mitsuba reflektiert immer.
 check-tir-got-formula = Dein Code hat trotzdem den Vektor der Formel verwendet, { $vector } mit der Länge { $length }: kein Strahl.
 check-tir-got-direction = Dein Code gab eine Richtung zurück, { $vector }, wo es keine gibt.
-check-tir-got-not-finite = Dein Code gab Komponenten NaN oder unendlich zurück (die Wurzel aus einem negativen k oder normalize() des Nullvektors).
+check-tir-got-not-finite = Dein Code gab Komponenten NaN oder unendlich zurück (die Quadratwurzel aus einem negativen k oder normalize() des Nullvektors).
 check-result-differs = { $call } gibt für diese Argumente { $returned } zurück, aber der Aufruf ergab { $got }: { $detail }. Deine eigene Implementierung weicht von der API ab.
-# „Referenz“ für die optionalen Felder der Wahrheit (truth: from, to, travel, entering); bitte prüfen.
 check-ties-no-field = Kein Referenzfeld unterscheidet sie: { $call } liest beide gleich; der übliche Aufruf übergibt { $usual }.
 check-ties-give = Gib { $fields } an, um sie zu unterscheiden.
 check-ties = Ebenso möglich: stattdessen { $readings }. { $hint }
@@ -126,7 +123,7 @@ check-unexplained-travel = Das protokollierte { $incident } liegt { $degrees } G
 check-unexplained-eta = { $eta } = { $value } passt weder zu n_from/n_to = { $mu } noch zu dessen Kehrwert, so wie { $call } es liest: Das sind nicht die Brechungsindizes dieser Grenzfläche.
 check-unexplained = Keine Kombination von Argumentfehlern bringt diesen Aufruf in Einklang mit der angegebenen Referenz.
 check-right-tir = Richtig: { $call } zeigt hier Totalreflexion an ({ $returned }), und der Aufruf ergab { $what }.
-check-right-for-ray = Richtig: { $call } gibt für diese Argumente { $returned } zurück, ein Strahl { $situation }.
+check-right-for-ray = Richtig: Für einen Strahl { $situation } gibt { $call } mit diesen Argumenten { $returned } zurück.
 check-right = Richtig: { $call } gibt für diese Argumente { $returned } zurück.
 
 ## Die Fehler eines API-Aufrufs, je in einer Zeile
@@ -147,7 +144,7 @@ check-convention-along-ray = Abschnitt 2: W entlang des Strahls
 check-convention-along-ray-about = W ist die Richtung, in die der Strahl läuft, zur Oberfläche hin (I bei GLSL, uv im Buch).
 check-convention-toward-origin = Abschnitt 1: W zum Ursprung
 check-convention-toward-origin-about = W zeigt zurück dorthin, woher der Strahl kam (wi bei pbrt und Mitsuba).
-check-convention-note = { $about } μ = μi/μt; N auf beliebiger Seite (der Kern dreht sie zum Strahl).
+check-convention-note = { $about } μ = μi/μt; N auf beliebiger Seite (der Kernel dreht sie zum Strahl).
 check-paste-hint = Füge ein, was dein Raytracer protokolliert hat. Vektoren als 0.1, -0.9, 0 oder [0.1,-0.9,0] oder vec3(0.1, -0.9, 0.0); oder füge eine ganze JSON-Zeile mit t_yours in „Dein T“ ein.
 check-use-current-case = Aktuellen Fall übernehmen
 check-use-current-case-own-hover = W, N, μ und die Konvention aus dem Explorer übernehmen
@@ -160,8 +157,8 @@ check-student-own = dein T: { $verdict }
 check-headline-own = Dein T ist: { $verdict }
 check-match-refracted = der gebrochene Strahl T
 check-match-not-unit = die Richtung von T, aber nicht Länge 1
-check-match-wrong-side = falsche Seite (die andere Wurzel für b)
-check-match-wrong-bend = falsche Brechung (das andere Vorzeichen von a)
+check-match-wrong-side = falsche Seite (die andere Lösung für b)
+check-match-wrong-bend = falsch gebrochen (das andere Vorzeichen von a)
 check-match-reversed = umgekehrt (−T: beide Vorzeichen falsch)
 check-match-tir = Totalreflexion, richtig beantwortet
 check-match-none = keiner der vier Kandidaten
@@ -178,10 +175,10 @@ check-drawn-incident = { $api ->
    *[mitsuba] wi (von der Oberfläche weg)
 }
 check-drawn-about = { $api ->
-    [glsl] I ist die Richtung, in die der Strahl läuft, gezeichnet als W entlang des Strahls (Abschnitt 2). N muss I entgegen zeigen: GLSL dreht sie nicht um. eta = n_from/n_to = μi/μt. Der Nullvektor bedeutet Totalreflexion.
-    [pbrt] wi zeigt zurück dorthin, woher der Strahl kam (−ray.d), gezeichnet als W zum Ursprung (Abschnitt 1). n darf auf beiden Seiten liegen: pbrt dreht sie um und invertiert eta, wenn wi darunter liegt. eta = der Index hinter n durch den davor (μt/μi, wenn n zu wi zeigt). false bedeutet Totalreflexion.
+    [glsl] I ist die Richtung, in die der Strahl läuft, gezeichnet als W entlang des Strahls (Abschnitt 2). N muss I entgegen zeigen: GLSL kehrt sie nicht um. eta = n_from/n_to = μi/μt. Der Nullvektor bedeutet Totalreflexion.
+    [pbrt] wi zeigt zurück dorthin, woher der Strahl kam (−ray.d), gezeichnet als W zum Ursprung (Abschnitt 1). n darf auf beiden Seiten liegen: pbrt kehrt sie um und invertiert eta, wenn wi darunter liegt. eta = der Index hinter n durch den davor (μt/μi, wenn n zu wi zeigt). false bedeutet Totalreflexion.
     [rtiow] uv ist die Einheitsrichtung, in die der Strahl läuft, gezeichnet als W entlang des Strahls (Abschnitt 2). n muss uv entgegen zeigen (front_face). etai_over_etat = n_from/n_to = μi/μt. refract prüft nicht auf Totalreflexion: Das cannot_refract des Aufrufers reflektiert.
-   *[mitsuba] wi zeigt von der Oberfläche weg, zurück entlang des Strahls, gezeichnet als W zum Ursprung (Abschnitt 1). n ist +z (das lokale Koordinatensystem), wenn leer. eta = int_ior/ext_ior, der Index hinter n durch den davor (μt/μi, wenn n zu wi zeigt). F = 1 bedeutet Totalreflexion: wo ist null.
+   *[mitsuba] wi zeigt von der Oberfläche weg, zurück entlang des Strahls, gezeichnet als W zum Ursprung (Abschnitt 1). n ist +z (das lokale Koordinatensystem), wenn leer. eta = int_ior/ext_ior, der Index hinter n durch den davor (μt/μi, wenn n zu wi zeigt). F = 1 bedeutet Totalreflexion: `wo` ist null.
 }
 check-convention-about = Konvention: { $about }
 check-your-call = Dein Aufruf
@@ -193,7 +190,7 @@ check-student-wrong = falsch
 check-api-right-headline = Richtig: was { $signature } für diesen Strahl bedeutet
 check-api-mistakes = Fehler: { $codes }
 check-api-unexplained-headline = Durch keinen einzelnen Fehler erklärt
-check-api-returns = { $owner } gibt { $value } zurück
+check-api-returns = Ergebnis in { $owner }: { $value }
 check-api-drawn = Gezeichnet: der richtige Aufruf, { $incident } = { $incident_value }, { $normal } = { $normal_value }, { $eta } = { $eta_value } (μi = { $mu_i }, μt = { $mu_t }).
 check-api-not-drawn = Nicht gezeichnet: { $why }.
 check-copy-as-test = Als Unit-Test kopieren:
@@ -252,13 +249,16 @@ check-result-missing = das Feld `{ $field }` fehlt (was der Aufruf zurückgab{ $
 check-unknown-precision = unbekannte Genauigkeit „{ $text }“: erwartet wird "f32" oder "f64"
 check-too-large = { $value } ist zu groß für { $precision }
 check-csv-unclosed-quote = nicht geschlossenes Anführungszeichen in der CSV-Zeile
-check-csv-no-column = die CSV-Kopfzeile hat keine Spalte `{ $field }`: Sie nennt { $names }; erwartet wird { $expected }
+check-csv-no-column = die CSV-Kopfzeile hat keine Spalte `{ $field }`, nur { $names }; erwartet wird { $expected }
 check-csv-partial-vector = die CSV-Kopfzeile hat nur { $count } der 3 Komponenten von `{ $field }`
 check-csv-duplicate-column = die CSV-Kopfzeile nennt `{ $column }` mehr als einmal
 check-csv-cells = { $count ->
-    [one] { $count } Zelle, wo die Kopfzeile { $columns } Spalten hat
-   *[other] { $count } Zellen, wo die Kopfzeile { $columns } Spalten hat
-}
+    [one] { $count } Zelle
+   *[other] { $count } Zellen
+}, wo die Kopfzeile { $columns ->
+    [one] { $columns } Spalte
+   *[other] { $columns } Spalten
+} hat
 check-csv-no-header = keine brauchbare CSV-Kopfzeile: { $reason }
 check-pattern-unclosed = nicht geschlossenes `{"{"}` im Muster „{ $pattern }“
 check-pattern-adjacent = zwei Felder ohne etwas dazwischen im Muster „{ $pattern }“
@@ -274,14 +274,14 @@ check-vector-within = { $error } (in „{ $text }“)
 check-vector-not-three = erwartet werden 3 Zahlen wie `0.1, -0.9, 0` oder `vec3(0.1, -0.9, 0.0)`, gefunden { $count } in „{ $text }“
 
 # Fehler, die sich im Ergebnis zeigen
-check-mistake-no-flip-inside = für einen Strahl von der Rückseite der Normale dreht der Code die Normale nicht um und kehrt das Verhältnis nicht um
+check-mistake-no-flip-inside = für einen Strahl von der Rückseite der Normale kehrt der Code weder die Normale noch das Verhältnis um
 check-mistake-normal-term-sign = der Anteil des Ergebnisses entlang der Normale hat das falsche Vorzeichen; der Anteil quer dazu stimmt
-check-mistake-other-root = die andere Wurzel: Vorzeichen der Quadratwurzel umgekehrt, das Ergebnis an der Fläche gespiegelt
+check-mistake-other-root = die andere Lösung: Vorzeichen der Quadratwurzel umgekehrt, das Ergebnis an der Fläche gespiegelt
 check-mistake-false-tir = Totalreflexion gemeldet, wo der Strahl gebrochen wird
 check-diagnosis-no-lines = Keine Zeile wurde geprüft ({ $lines } gelesen): prüfe das Muster, die CSV-Kopfzeile oder die Felder der Zeilen.
 check-physics-explained = Genau das ergibt eine Brechung mit diesem Fehler: { $mistakes }.
 check-looks-normal-term = die Antwort der API mit negiertem Anteil entlang der Normale: der Term entlang der Normale wird abgezogen statt addiert oder umgekehrt
-check-looks-no-flip = was die Formel ohne Umdrehen der Normale und Umkehren von eta für einen Strahl von der Rückseite der Normale ergibt
+check-looks-no-flip = was die Formel ohne Umkehren der Normale und von eta für einen Strahl von der Rückseite der Normale ergibt
 check-looks-etap = die richtige Richtung, aber etap = { $logged }, wo der Aufruf { $used } verwendet hat
 
 # Die Diagnose eines ganzen Logs: wo sich ein Fehler zeigt, und seine Behebung
@@ -308,10 +308,10 @@ check-fix-write = schreib `{ $code }`
 check-fix-restore = stell `{ $code }` wieder her
 check-fix-generic-eta-inverted = verwende μ = n_from / n_to, den Brechungsindex des Mediums, das der Strahl verlässt, durch den des Mediums, in das er eintritt: Es kehrt sich um, wo der Strahl das Objekt verlässt (into ? nc / nt : nt / nc)
 check-fix-generic-incident-reversed = übergib als W die Ausbreitungsrichtung des Strahls, nicht ihr Negatives
-check-fix-generic-normal-not-facing = wo der Strahl das Objekt verlässt, verwende in jedem Term die Normale, die dem Strahl zugewandt ist (die äußere, umgedreht), oder die äußere mit umgekehrtem Vorzeichen, aber nicht beides
-check-fix-generic-no-flip-inside = dreh für einen Strahl von innen die Normale um und kehr das Verhältnis um, bevor du brichst
+check-fix-generic-normal-not-facing = wo der Strahl das Objekt verlässt, verwende in jedem Term die Normale, die dem Strahl zugewandt ist (die äußere, umgekehrt), oder die äußere mit umgekehrtem Vorzeichen, aber nicht beides
+check-fix-generic-no-flip-inside = kehr für einen Strahl von innen die Normale und das Verhältnis um, bevor du brichst
 check-fix-generic-normal-term-sign = addiere den Term entlang der Normale: T = μ·W + (μ·cosθi − cosθt)·N, mit N dem Strahl zugewandt
-check-fix-generic-other-root = nimm die Wurzel mit −√k: T = μ·W + (μ·cosθi − √k)·N, mit N dem Strahl zugewandt
+check-fix-generic-other-root = nimm die Lösung mit −√k: T = μ·W + (μ·cosθi − √k)·N, mit N dem Strahl zugewandt
 check-fix-generic-missed-tir = reflektiere, wenn k = 1 − μ²·(1 − cos²θi) negativ ist, bevor du die Quadratwurzel ziehst
 check-fix-generic-false-tir = melde Totalreflexion nur, wo k = 1 − μ²·(1 − cos²θi) negativ ist
 check-fix-generic-not-unit-input = normiere W und N, bevor du brichst

@@ -4,7 +4,7 @@
 
 ## Das Diagramm der Grenzfläche
 
-diagram-ghost-wrong-side = andere b-Wurzel: falsche Seite
+diagram-ghost-wrong-side = andere b-Lösung: falsche Seite
 diagram-ghost-wrong-bend = anderes a-Vorzeichen: falsch gebrochen
 diagram-ghost-reversed = beide Vorzeichen falsch: −T
 diagram-medium = { $mu } = { $index } ({ $name })
@@ -18,17 +18,16 @@ diagram-material-diamond = Diamant
 diagram-material-custom = eigener Wert
 diagram-banner-tir =
     TOTALREFLEXION
-    k = { $k } < 0: keine reelle Wurzel für b, kein gebrochener Strahl; alles Licht wird reflektiert (θi = { $theta_i }°)
+    k = { $k } < 0: keine reelle Lösung für b, kein gebrochener Strahl; alles Licht wird reflektiert (θi = { $theta_i }°)
 diagram-banner-toward-origin = W zeigt zurück zum Ursprung, also a = −μ
 diagram-banner-along-ray = W ist die Ausbreitungsrichtung, also a = +μ
 diagram-banner-section = Abschnitt { $section }: { $words }
 diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T existiert
 diagram-critical-angle = Grenzwinkel θc = { $angle }°
-diagram-kernel-normal = −N: die Normale des Kerns
+diagram-kernel-normal = −N: die Normale des Kernels
 diagram-outward-normal-bug =
-    Formel der Quelle mit N wie gegeben: Wurzel der falschen Seite,
+    Formel der Quelle mit N wie gegeben: Lösung der falschen Seite,
     das falsche T des Fehlers mit äußerer Normale
-# Kurz, weil es über einer schmalen Skala steht (Brechungsindex μ).
 diagram-index-scale = Index μ
 diagram-incoming-ray = einfallender Strahl
 diagram-reflected = reflektiert
@@ -39,15 +38,15 @@ diagram-w-toward-origin = W (zum Ursprung)
 diagram-transmitted = T: durchgelassen
 diagram-no-reflected-ray = { $label }: kein reflektierter Strahl
 
-## Griffe (was ein Bildschirmleser sagt)
+## Anfasser (was ein Bildschirmleser sagt)
 
-diagram-handle-w = W-Griff
-diagram-handle-n = N-Griff
-diagram-handle-mu-i = μi-Griff
-diagram-handle-mu-t = μt-Griff
-diagram-handle-source = Griff der Quelle
-diagram-handle-aim = Griff der Quellrichtung
-diagram-handle-shape = Griff von Form { $number } ({ $medium })
+diagram-handle-w = W-Anfasser
+diagram-handle-n = N-Anfasser
+diagram-handle-mu-i = μi-Anfasser
+diagram-handle-mu-t = μt-Anfasser
+diagram-handle-source = Anfasser der Quelle
+diagram-handle-aim = Anfasser der Quellrichtung
+diagram-handle-shape = Anfasser von Form { $number } ({ $medium })
 
 ## Lektionen, Farbschemata, Licht, Animationen
 
@@ -73,9 +72,9 @@ diagram-role-chosen = T (gewählt)
 diagram-role-wrong-side = falsche Seite
 diagram-role-wrong-bend = falsch gebrochen
 diagram-role-reversed = umgekehrt
-diagram-rule-wrong-side = falsche Seite der Fläche: die andere Wurzel für b schickt den Strahl zurück in das Medium, aus dem er kam
-diagram-rule-wrong-bend = falsch gebrochen: das andere Vorzeichen von a kehrt den Anteil entlang der Fläche um, sodass er für μ → 1 nicht zum einfallenden Strahl wird
-diagram-rule-reversed = beides falsch (falsches Vorzeichen von a und falsche Wurzel für b): es ist −T und zeigt dorthin zurück, woher der Strahl kam
+diagram-rule-wrong-side = falsche Seite der Fläche: die andere Lösung für b schickt den Strahl zurück in das Medium, aus dem er kam
+diagram-rule-wrong-bend = falsch gebrochen: das andere Vorzeichen von a kehrt den Anteil entlang der Fläche um, sodass der Kandidat für μ → 1 nicht zum einfallenden Strahl wird
+diagram-rule-reversed = beides falsch (falsches Vorzeichen von a und falsche Lösung für b): es ist −T und zeigt dorthin zurück, woher der Strahl kam
 
 ## Eine verfolgte Szene
 
@@ -86,8 +85,8 @@ diagram-stopped-at = angehalten nach { $count ->
        *[other] { $count } Segmenten
     }
 diagram-count-kernel-calls = { $count ->
-        [one] { $count } Kernaufruf
-       *[other] { $count } Kernaufrufe
+        [one] { $count } Kernel-Aufruf
+       *[other] { $count } Kernel-Aufrufe
     }
 diagram-count-tir = { $count ->
         [one] { $count } Totalreflexion
@@ -124,7 +123,7 @@ diagram-legend-nm = nm
 diagram-legend-opacity = Deckkraft: Intensität
 diagram-legend-hits = Treffer:
 diagram-hit-entering = eintretend
-diagram-hit-leaving = austretend (N umgedreht)
+diagram-hit-leaving = austretend (N umgekehrt)
 diagram-hit-tir = Totalreflexion
 
 ## Wellen
@@ -148,11 +147,13 @@ diagram-eq-no-b-with-10 = kein reelles b erfüllt sie zusammen mit Gl. 10
 diagram-eq-so = { $given }, also { $then }
 diagram-eq-negative-root = √({ $k }) einer negativen Zahl: kein reelles b (Totalreflexion)
 diagram-eq-or = oder
-diagram-eq-outward-normal-bug = mit N wie gegeben b = { $b }: die falsche Wurzel, T läuft zurück (der Fehler mit äußerer Normale); der Kern nimmt −N und erhält b = { $kernel_b } für N
-diagram-eq-no-root = keine reelle Wurzel zur Auswahl
+diagram-eq-outward-normal-bug = mit N wie gegeben b = { $b }: die falsche Lösung, T läuft zurück (der Fehler mit äußerer Normale); der Kernel nimmt −N und erhält b = { $kernel_b } für N
+diagram-eq-no-root = keine reelle Lösung zur Auswahl
 diagram-eq-no-theta-t = { $given }, also wäre sinθt = { $sin_t } > 1: es gibt keinen Winkel θt
 diagram-eq-with-chosen = { $lhs } = { $rhs } mit dem gewählten (a, b)
 diagram-eq-no-ab-with-12 = kein reelles (a, b) erfüllt sie zusammen mit Gl. 12
+# Der Name des Sinus in den Formeln von „Schritt für Schritt“, wie ihn die Schulen der Sprache schreiben.
+diagram-math-sin = sin
 
 ## Schritt für Schritt
 
@@ -163,19 +164,18 @@ diagram-step-square-text = Durch das Quadrieren können die Kosinus (Skalarprodu
 diagram-step-decomposition = T als a·W + b·N
 diagram-step-decomposition-text = T liegt in der Ebene von W und N, also ist T = a·W + b·N; die Kosinus werden Skalarprodukte mit wn = W·N, und cosθt = −a·wn − b. Der Strahl läuft entlang { $travel }.
 diagram-step-constraints = Die zwei quadrierten Bedingungen
-# „Scheinlösungen“ für die drei verworfenen Kandidaten (englisch „ghosts“); bitte prüfen.
 diagram-step-constraints-text = Das quadrierte Brechungsgesetz (Gl. 10) und die Einheitslänge (Gl. 12) sind zwei quadratische Gleichungen in a und b. Vier Paare (a, b) erfüllen beide: T und die drei Scheinlösungen. Nichts in ihnen unterscheidet die vier.
-diagram-step-roots-a = Die zwei Wurzeln für a
+diagram-step-roots-a = Die zwei Lösungen für a
 diagram-step-roots-a-text = Setzt man Gl. 12 in Gl. 10 ein, bleibt a² = μ²: a = +μ oder a = −μ. Das andere Vorzeichen spiegelt T an der Normalen: es wird falsch gebrochen.
 diagram-step-choice-a = Wahl von a: der Grenzfall μ = 1
-# „μ gegen 1 animieren“ ist der Name der Schaltfläche im Fenster; bitte mit explorer.ftl abgleichen.
+# „μ gegen 1 animieren“ ist der Name der Schaltfläche im Fenster.
 diagram-step-choice-a-text = Bei μ = 1 wird nichts gebrochen, also muss T die Ausbreitungsrichtung sein, { $travel }. Nur a = { $a } ergibt das; das andere Vorzeichen gäbe das Spiegelbild. Mit „μ gegen 1 animieren“ sieht man, wie T gegen { $travel } strebt und die Scheinlösungen nicht.
 diagram-step-choice-a-typo = (Der Text von Abschnitt 2 sagt danach „once we decide upon using the a = −μ solution“: gemeint ist a = +μ, die gewählte Lösung.)
-diagram-step-roots-b = Die zwei Wurzeln für b
-diagram-step-roots-b-text = Bei festem a ist Gl. 12 quadratisch in b mit den Wurzeln −a·wn ± √k (k = μ²wn² − μ² + 1). Die andere Wurzel spiegelt T an der Fläche, zurück in das Medium, aus dem der Strahl kam. k < 0 heißt: keine reelle Wurzel, Totalreflexion.
+diagram-step-roots-b = Die zwei Lösungen für b
+diagram-step-roots-b-text = Bei festem a ist Gl. 12 quadratisch in b mit den Lösungen −a·wn ± √k (k = μ²wn² − μ² + 1). Die andere Lösung spiegelt T an der Fläche, zurück in das Medium, aus dem der Strahl kam. k < 0 heißt: keine reelle Lösung, Totalreflexion.
 diagram-step-choice-b = Wahl von b
-diagram-step-choice-b-text = Von den zwei Wurzeln wird nur die mit −√k bei μ = 1 zu b = 0, wenn T der unveränderte einfallende Strahl sein muss; die andere schickt T zurück über die Fläche.
-diagram-step-choice-b-flipped = Die Wurzel mit −√k geht bei μ = 1 gegen b = 0, T wird also der einfallende Strahl. Hier zeigt N aber entlang des Strahls (eine äußere Normale, wo der Strahl das Medium verlässt): mit N wie gegeben liegt diese Wurzel auf der falschen Seite. Der Kern dreht N zuerst um.
+diagram-step-choice-b-text = Von den zwei Lösungen wird nur die mit −√k bei μ = 1 zu b = 0, wenn T der unveränderte einfallende Strahl sein muss; die andere schickt T zurück über die Fläche.
+diagram-step-choice-b-flipped = Die Lösung mit −√k geht bei μ = 1 gegen b = 0, T wird also der einfallende Strahl. Hier zeigt N aber entlang des Strahls (eine äußere Normale, wo der Strahl das Medium verlässt): mit N wie gegeben liegt diese Lösung auf der falschen Seite. Der Kernel kehrt N zuerst um.
 
 ## Die Fresnel-Ansicht
 
@@ -189,14 +189,14 @@ diagram-curve-r = R (unpolarisiert, reflektiert)
 diagram-curve-t = T (unpolarisiert, durchgelassen)
 diagram-fresnel-source =
     Fresnelsche Formeln für die reflektierte Leistung (Hecht, Optik, Kap. 4): R_s = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², R_p = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
-    aus den eigenen cosθi und cosθt des Kerns, ohne Trigonometrie; unpolarisiertes Licht ist der Mittelwert von s und p. Jenseits des Grenzwinkels wird alles Licht reflektiert.
+    aus den eigenen cosθi und cosθt des Kernels, ohne Trigonometrie; unpolarisiertes Licht ist der Mittelwert von s und p. Jenseits des Grenzwinkels wird alles Licht reflektiert.
 
 ## Der Genauigkeitsplot
 
 diagram-accuracy-title = Genauigkeit gegen Zeit auf diesem Rechner
 diagram-accuracy-error-axis = größter Fehler der schweren Fälle, in ε·κ (log)
 diagram-accuracy-time-axis = Zeit pro Strahl, ns (log)
-diagram-accuracy-bound = Schranke des Standardkerns, 32 ε·κ
+diagram-accuracy-bound = Schranke des Standard-Kernels, 32 ε·κ
 diagram-accuracy-markers = hohl: f32, gefüllt: f64
 
 ## Die eingebauten Szenen (Titel, Beschreibungen und die Namen ihrer Medien)
@@ -208,9 +208,9 @@ diagram-scene-droplet-about = Weißes Licht tritt in einen Tropfen ein, wird inn
 diagram-scene-fibre = Lichtleiter
 diagram-scene-fibre-about = Wiederholte Totalreflexion führt das Licht durch den Kern; die steilsten Strahlen treten in den Mantel aus.
 diagram-scene-interface = Eine Grenzfläche
-diagram-scene-interface-about = Ein Strahl in Luft trifft unter 45 Grad auf ebenes Glas (n = 1,5) und wird zur Normalen hin gebrochen.
+diagram-scene-interface-about = Ein Strahl in Luft trifft unter 45 Grad auf ebenes Glas (n = 1,5) und wird zum Lot hin gebrochen.
 diagram-scene-lens = Sammellinse
-diagram-scene-lens-about = Eine bikonvexe BK7-Linse bündelt einen parallelen Strahl auf einem Schirm; Randstrahlen treffen sich schon davor.
+diagram-scene-lens-about = Eine bikonvexe BK7-Linse fokussiert ein paralleles Strahlenbündel auf einen Schirm; Randstrahlen treffen sich schon davor.
 diagram-scene-right-angle-prism = Umlenkprisma
 diagram-scene-right-angle-prism-about = Totalreflexion an der Hypotenuse lenkt das Bündel um 90 Grad um.
 diagram-scene-slab = Glasplatte

@@ -22,13 +22,13 @@ presentation-theme-hover = Standard oder hoher Kontrast: Schwarz auf Weiß oder 
 presentation-colour-blind = Für Farbenblinde
 presentation-colour-blind-hover = Nur Okabe–Ito-Farben; jeder Strahl hat zudem eigene Strichelung und Beschriftung
 language-menu = Sprache
-language-hover = Die Sprache des Fensters. Sie folgt der des Systems, solange hier keine gewählt ist.
+language-hover = Die Sprache des Fensters. Ohne Wahl hier folgt sie der des Systems.
 effects-menu = Effekte
 effects-menu-hover = Intensitäten (Fresnel) und Wellenfronten über dem Diagramm
 effects-intensities = Intensitäten
 effects-intensities-hover = Reflektierten und durchgelassenen Strahl nach ihrem Anteil am Licht zeichnen (Fresnel), mit Prozentangaben
 effects-wavefronts = Wellenfronten
-effects-wavefronts-hover = Ebene Wellenfronten im Abstand λ/μ in jedem Medium, die mit c/μ laufen: darum knickt der Strahl ab
+effects-wavefronts-hover = Ebene Wellenfronten im Abstand λ/μ in jedem Medium, die mit c/μ laufen: darum wird der Strahl gebrochen
 effects-moving = Bewegt
 effects-huygens = Huygenssche Konstruktion
 effects-huygens-hover = Zwei Punkte einer Wellenfront und die in der Zeit dazwischen gewachsene Elementarwelle
@@ -43,8 +43,8 @@ panel-hide-numbers = Zahlen ausblenden ({ $key })
 ## Unter dem Diagramm
 
 canvas-hint = W, N oder eine μ-Marke ziehen; eine davon (oder das Diagramm) anklicken, um die Pfeiltasten zu nutzen
-canvas-hint-ray = ←/→ dreht um 1° (Shift: 0,1°) · +/− μt · Tab: nächster Anfasser · ziehen zum Verschieben
-canvas-hint-index = ↑/↓ oder +/− ändern den Brechungsindex um 0,01 (Shift: 0,001) · Tab: nächster Anfasser
+canvas-hint-ray = ←/→ dreht um 1° (Umschalt: 0,1°) · +/− μt · Tab: nächster Anfasser · ziehen zum Verschieben
+canvas-hint-index = ↑/↓ oder +/− ändern den Brechungsindex um 0,01 (Umschalt: 0,001) · Tab: nächster Anfasser
 
 ## Der Bereich Steuerung
 
@@ -86,18 +86,17 @@ readouts-discriminant-tir = Diskriminante k = μ²wn² − μ² + 1 = { $k } < 0
 # $section ist der Abschnitt der Quelle (1 oder 2), dessen Gleichung 20 dies ist.
 readouts-quadratic = Gl. { $section }.20, die quadratische Gleichung in b: b² + 2a·wn·b + a² − 1 = 0 mit a = { $a }, wn = { $wn }
 readouts-no-roots = keine reellen Nullstellen: Die Parabel erreicht null nicht mehr
-readouts-roots = Nullstellen b = { $roots } (die b der Kandidaten für dieses a)
+readouts-roots = Lösungen b = { $roots } (die b der Kandidaten für dieses a)
 readouts-plot-zero = null
 readouts-plot-roots = Nullstellen
 readouts-candidates = Die vier Kandidaten
 readouts-candidate = Kandidat
-# Die Spaltenköpfe der Prüfungen: das quadrierte Snelliussche Brechungsgesetz (Gl. 10 der Quelle), die Seite der Fläche, auf der T liegt, die Richtung, in die T abknickt.
-# Unsicher: „Knick“ für „bend“ (Spaltenkopf: ob T zur Normalen hin oder von ihr weg abknickt) – bitte prüfen.
-readouts-check-snell = eq.10
+# Die Spaltenköpfe der Prüfungen: das quadrierte Snelliussche Brechungsgesetz (Gl. 10 der Quelle), die Seite der Fläche, auf der T liegt, die Richtung, in die T gebrochen wird.
+readouts-check-snell = Gl. 10
 readouts-check-side = Seite
-readouts-check-bend = Knick
-readouts-no-candidates = Keine Kandidaten: k < 0, also hat b keine reellen Nullstellen, und es gibt kein T.
-readouts-candidates-note = Alle vier haben die Länge 1 und erfüllen das quadrierte Snelliussche Gesetz (Gl. 10): Durch das Quadrieren lassen sie sich nicht unterscheiden. Nur Seite und Knick (das Argument μ = 1 der Quelle) wählen T aus.
+readouts-check-bend = Brechung
+readouts-no-candidates = Keine Kandidaten: k < 0, also gibt es keine reelle Lösung für b und kein T.
+readouts-candidates-note = Alle vier haben die Länge 1 und erfüllen das quadrierte Snelliussche Gesetz (Gl. 10): Durch das Quadrieren lassen sie sich nicht unterscheiden. Nur Seite und Brechung (das Argument μ = 1 der Quelle) wählen T aus.
 readouts-warnings = Kernel-Warnungen
 readouts-no-warnings = Keine Warnungen: W und N haben die Länge 1, und N zeigt zum Strahl.
 readouts-warning-not-unit = { $vector } hat die Länge { $length }, nicht 1: Er wurde normiert (nicht normierte Vektoren sind ein häufiger Fehler in Raytracern)
@@ -119,7 +118,7 @@ walk-step = Schritt { $number } von { $count }: { $title }
 fresnel-heading = Wie viel Licht reflektiert wird (Fresnel)
 fresnel-axis = Einfallswinkel θi (°)
 fresnel-now = aktuelles θi
-fresnel-click-hint = Ins Diagramm klicken oder darin ziehen, um θi zu setzen.
+fresnel-click-hint = In den Graphen klicken oder darin ziehen, um θi zu setzen.
 fresnel-at = Bei θi = { $angle }°, von μi = { $mu_i } nach μt = { $mu_t }.
 fresnel-brewster = Brewster-Winkel θB = { $angle }°: Dort wird kein p-polarisiertes Licht reflektiert (tan θB = μt/μi).
 fresnel-equal-indices = Gleiche Brechungsindizes: keine Grenzfläche, nichts wird reflektiert.
@@ -160,8 +159,7 @@ scenes-hit =
 ## Die Ansicht Genauigkeit
 
 accuracy-heading = Was Genauigkeit an Zeit kostet
-# Unsicher: „Double-Double-Orakel“ (Referenzrechnung in doppelter Double-Genauigkeit) – bitte prüfen.
-accuracy-intro = Misst auf diesem Rechner die Laufzeit jeder Kernel-Variante in f32 und f64 und ihren Fehler gegenüber einem Double-Double-Orakel bei zufälligen und schwierigen Einfallsrichtungen. Das Diagramm zeigt den größten Fehler der schwierigen Fälle in Einheiten von ε·κ (was der Algorithmus über das hinaus verliert, was das Problem selbst verstärkt) über den Nanosekunden pro Strahl.
+accuracy-intro = Misst auf diesem Rechner die Laufzeit jeder Kernel-Variante in f32 und f64 und ihren Fehler gegenüber einem Double-Double-Orakel bei zufälligen und schwierigen Einfallsrichtungen. Der Graph zeigt den größten Fehler der schwierigen Fälle in Einheiten von ε·κ (was der Algorithmus über das hinaus verliert, was das Problem selbst verstärkt) über den Nanosekunden pro Strahl.
 accuracy-quick = Kurzlauf (wenige Sekunden)
 accuracy-measure = Messen
 accuracy-measuring = Messung… { $percent } %
@@ -180,5 +178,4 @@ accuracy-column-time = ns/Strahl
 accuracy-column-random = max. Fehler zufällig
 accuracy-column-hard = max. Fehler schwierig
 accuracy-column-eps-kappa = schwierig ε·κ
-# Unsicher: „TR“ als Abkürzung für Totalreflexion ist nicht allgemein üblich – bitte prüfen.
-accuracy-column-tir = TR-Abweichungen
+accuracy-column-tir = Abweichungen Totalreflexion

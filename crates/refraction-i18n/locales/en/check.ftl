@@ -101,7 +101,7 @@ check-unchecked-travel = travel to check which way { $incident } points
 ## Explanations of a verdict on an API call: the sentences
 
 check-eta-inverted = { $owner }'s { $eta } is { $means }: you passed { $value } for a ray { $situation }; pass 1/{ $value } = { $inverse }.
-check-eta-inverted-this-ray = { $owner }'s { $eta } is { $means }: you passed { $value } for a ray this ray; pass 1/{ $value } = { $inverse }.
+check-eta-inverted-this-ray = { $owner }'s { $eta } is { $means }: you passed { $value } for this ray; pass 1/{ $value } = { $inverse }.
 check-incident-reversed = { $owner }'s { $incident } is { $means }; yours points the other way: pass -{ $incident } = { $reversed }.
 check-incident-reversed-travel = { $owner }'s { $incident } is { $means }; yours points the other way (the ray travels along { $travel }): pass -{ $incident } = { $reversed }.
 check-not-unit-input = { $call } assumes unit { $incident } and { $normal } and does not normalise them: |{ $incident }| = { $incident_length }, |{ $normal }| = { $normal_length }; normalise them first.
@@ -252,7 +252,13 @@ check-csv-unclosed-quote = unclosed quote in the CSV line
 check-csv-no-column = the CSV header has no column `{ $field }`: it names { $names }; expected { $expected }
 check-csv-partial-vector = the CSV header has only { $count } of `{ $field }`'s 3 components
 check-csv-duplicate-column = the CSV header names `{ $column }` more than once
-check-csv-cells = { $count } cells where the header has { $columns } columns
+check-csv-cells = { $count ->
+    [one] { $count } cell
+   *[other] { $count } cells
+} where the header has { $columns ->
+    [one] { $columns } column
+   *[other] { $columns } columns
+}
 check-csv-no-header = no usable CSV header: { $reason }
 check-pattern-unclosed = unclosed `{"{"}` in the pattern "{ $pattern }"
 check-pattern-adjacent = two fields with nothing between them in the pattern "{ $pattern }"

@@ -155,6 +155,8 @@ diagram-eq-no-root = no real root to choose
 diagram-eq-no-theta-t = { $given }, so sinθt would be { $sin_t } > 1: no angle θt exists
 diagram-eq-with-chosen = { $lhs } = { $rhs } with the chosen (a, b)
 diagram-eq-no-ab-with-12 = no real (a, b) satisfies it with eq. 12
+# The sine's name in the walk-through's formulas, as the language's schools write it.
+diagram-math-sin = sin
 
 ## The walk-through
 

@@ -10,11 +10,11 @@ check-vector-not-finite = un vector no finito (componentes NaN o infinitas)
 check-verdict-wrong-side = Tu T vuelve al medio del que venía el rayo: es la otra raíz para b (+ donde la raíz cuadrada necesita -). La causa habitual es una normal que apunta en el sentido del rayo, como la normal exterior de una esfera donde el rayo sale de ella, usada sin invertirla.
 check-verdict-wrong-bend = Tu T se desvía hacia el lado equivocado: el signo de a está invertido, así que no se convertiría en el rayo incidente cuando mu -> 1. La causa habitual es mezclar las convenciones: W apuntando hacia el origen (Sección 1, a = -mu) usado en la fórmula de W a lo largo del rayo (Sección 2, a = +mu), o al revés.
 check-verdict-reversed = Tu T es -T y apunta hacia donde venía el rayo: ambos signos están mal. La causa habitual es devolver la dirección hacia el origen en lugar de la dirección de propagación, o negar W dos veces.
-check-verdict-not-finite-tir = Tu T tiene componentes NaN o infinitas. Este rayo sufre reflexión total interna (k < 0): tu código tomó la raíz cuadrada de un k negativo en lugar de comprobar k antes.
+check-verdict-not-finite-tir = Tu T tiene componentes NaN o infinitas. Este rayo sufre reflexión total (k < 0): tu código tomó la raíz cuadrada de un k negativo en lugar de comprobar k antes.
 check-verdict-not-finite-refracts = Tu T tiene componentes NaN o infinitas aunque este rayo se refracta con normalidad (k >= 0): busca una división por cero o un vector sin inicializar.
-check-verdict-tir-right = Correcto: este rayo sufre reflexión total interna (k < 0) y tu código devolvió la reflexión (o el vector nulo con el que GLSL lo indica).
-check-verdict-tir-but-refracted = Este rayo sufre reflexión total interna (k = { $k } < 0): no hay rayo refractado, pero tu código devolvió uno. Comprueba k antes de tomar su raíz cuadrada.
-check-verdict-zero-vector = Tu T es el vector nulo, que GLSL devuelve en la reflexión total interna, pero este rayo se refracta (k >= 0). Comprueba el signo de k y el cociente de índices.
+check-verdict-tir-right = Correcto: este rayo sufre reflexión total (k < 0) y tu código devolvió la reflexión (o el vector nulo con el que GLSL lo indica).
+check-verdict-tir-but-refracted = Este rayo sufre reflexión total (k = { $k } < 0): no hay rayo refractado, pero tu código devolvió uno. Comprueba k antes de tomar su raíz cuadrada.
+check-verdict-zero-vector = Tu T es el vector nulo, que GLSL devuelve en la reflexión total, pero este rayo se refracta (k >= 0). Comprueba el signo de k y el cociente de índices.
 check-verdict-not-unit = Además, tu T tiene longitud { $length }, no 1: normaliza W y N antes de refractar (la fórmula supone vectores unitarios) o T después.
 check-verdict-along-refracted = Tu T apunta a lo largo del rayo refractado (con { $off } rad de diferencia como mucho).
 check-verdict-right = Correcto: tu T es el rayo refractado (con { $off } rad de diferencia como mucho).
@@ -107,8 +107,8 @@ check-incident-reversed-travel = En { $owner }, { $incident } es { $means }; el 
 check-not-unit-input = { $call } supone { $incident } y { $normal } unitarios y no los normaliza: |{ $incident }| = { $incident_length }, |{ $normal }| = { $normal_length }; normalízalos antes.
 check-normal-against = { $call } necesita { $normal } opuesta a { $incident } (dot({ $normal }, { $incident }) < 0) y no la invierte; la tuya tiene dot({ $normal }, { $incident }) = { $dot }, como una normal exterior donde el rayo sale del objeto: pasa -{ $normal } = { $flipped } ({ $fix }).
 check-normal-either-side = { $call } acepta { $normal } en cualquier lado, pero { $eta } debe ir de acuerdo con ella: es { $means }. Tu { $normal } apunta al lado contrario de aquella para la que era { $eta } = { $value }{ $inward }; pasa -{ $normal } = { $flipped } con la misma { $eta } (o conserva { $normal } y pasa 1/{ $eta }).
-check-tir-glsl = El refract de GLSL devuelve aquí el vector nulo (k = { $k } < 0: reflexión total interna); compruébalo y refleja en su lugar.
-check-tir-pbrt = El Refract de pbrt devuelve aquí false (sin2Theta_t = { $sin2 } >= 1: reflexión total interna); refleja en su lugar.
+check-tir-glsl = El refract de GLSL devuelve aquí el vector nulo (k = { $k } < 0: reflexión total); compruébalo y refleja en su lugar.
+check-tir-pbrt = El Refract de pbrt devuelve aquí false (sin2Theta_t = { $sin2 } >= 1: reflexión total); refleja en su lugar.
 check-tir-rtiow = Aquí se cumple cannot_refract de dielectric::scatter (ri * sin_theta = { $sine } > 1): el libro refleja en lugar de llamar a refract.
 check-tir-mitsuba = fresnel devuelve aquí F = 1 (cos_theta_t_sqr = { $k } < 0): Mitsuba siempre refleja.
 check-tir-got-formula = Tu código usó de todos modos el vector de la fórmula, { $vector } de longitud { $length }: no es un rayo.
@@ -120,9 +120,9 @@ check-ties-give = Indica { $fields } para distinguirlos.
 check-ties = Igual de posible: { $readings } en su lugar. { $hint }
 check-unchecked = Comprobado solo con las reglas propias de la API: indica { $missing }.
 check-unexplained-travel = El { $incident } registrado está a { $degrees } grados de la dirección { $travel } de este rayo: no es la dirección de este rayo (ni su opuesta).
-check-unexplained-eta = { $eta } = { $value } no encaja ni con n_from/n_to = { $mu } ni con su inverso tal como lo lee { $call }: no son los índices de esta interfaz.
+check-unexplained-eta = { $eta } = { $value } no encaja ni con n_from/n_to = { $mu } ni con su inverso tal como lo lee { $call }: no son los índices de esta superficie de separación.
 check-unexplained = Ninguna combinación de errores en los argumentos hace que esta llamada encaje con la referencia dada.
-check-right-tir = Correcto: { $call } indica aquí reflexión total interna ({ $returned }), y la llamada dio { $what }.
+check-right-tir = Correcto: { $call } indica aquí reflexión total ({ $returned }), y la llamada dio { $what }.
 check-right-for-ray = Correcto: { $call } devuelve { $returned } con estos argumentos, para un rayo { $situation }.
 check-right = Correcto: { $call } devuelve { $returned } con estos argumentos.
 
@@ -132,8 +132,8 @@ check-mistake-eta-inverted = el cociente de índices al revés para la convenci�
 check-mistake-incident-reversed = el vector incidente pasado al revés
 check-mistake-normal-not-facing = la normal en el lado equivocado para esta API (o para la eta pasada)
 check-mistake-not-the-api-result = el resultado no es lo que devuelve la API con estos argumentos: tu propia implementación difiere
-check-mistake-missed-tir = una dirección (o NaN) donde la API indica reflexión total interna
-check-mistake-not-unit-input = el vector incidente o la normal no tiene longitud unidad
+check-mistake-missed-tir = una dirección (o NaN) donde la API indica reflexión total
+check-mistake-not-unit-input = el vector incidente o la normal no es unitario
 
 ## El panel: los campos de este proyecto
 
@@ -144,7 +144,7 @@ check-convention-along-ray = Sección 2: W a lo largo del rayo
 check-convention-along-ray-about = W es la dirección en la que viaja el rayo, hacia la superficie (la I de GLSL, el uv del libro).
 check-convention-toward-origin = Sección 1: W hacia el origen
 check-convention-toward-origin-about = W apunta hacia donde venía el rayo (el wi de pbrt y de Mitsuba).
-check-convention-note = { $about } μ = μi/μt; N en cualquier lado (el núcleo la gira hacia el rayo).
+check-convention-note = { $about } μ = μi/μt; N en cualquier lado (el kernel la gira hacia el rayo).
 check-paste-hint = Pega lo que registró tu trazador de rayos. Vectores como 0.1, -0.9, 0 o [0.1,-0.9,0] o vec3(0.1, -0.9, 0.0); o pega una línea JSON entera con t_yours en «Tu T».
 check-use-current-case = Usar el caso actual
 check-use-current-case-own-hover = Rellenar W, N, μ y la convención desde el explorador
@@ -156,13 +156,13 @@ check-field-not-number = { $field }: «{ $text }» no es un número
 check-student-own = tu T: { $verdict }
 check-headline-own = Tu T coincide con { $verdict }
 check-match-refracted = el rayo refractado T
-check-match-not-unit = la dirección de T, pero sin longitud unidad
+check-match-not-unit = la dirección de T, pero no unitaria
 check-match-wrong-side = lado equivocado (la otra raíz para b)
-check-match-wrong-bend = desviación equivocada (el otro signo de a)
+check-match-wrong-bend = desvío equivocado (el otro signo de a)
 check-match-reversed = invertido (−T: ambos signos mal)
-check-match-tir = reflexión total interna, bien respondida
+check-match-tir = reflexión total, bien respondida
 check-match-none = ninguno de los cuatro candidatos
-check-no-refracted-ray = No hay rayo refractado: reflexión total interna.
+check-no-refracted-ray = No hay rayo refractado: reflexión total.
 check-right-t = La T correcta = { $t }
 check-not-drawn-changed = (El caso ha cambiado desde entonces: el veredicto no se dibuja.)
 
@@ -175,10 +175,10 @@ check-drawn-incident = { $api ->
    *[mitsuba] wi (alejándose de la superficie)
 }
 check-drawn-about = { $api ->
-    [glsl] I es la dirección en la que viaja el rayo, dibujada como W a lo largo del rayo (Sección 2). N debe estar opuesta a I: GLSL no la gira. eta = n_from/n_to = μi/μt. El vector nulo significa reflexión total interna.
-    [pbrt] wi apunta hacia donde venía el rayo (−ray.d), dibujado como W hacia el origen (Sección 1). n puede estar en cualquier lado: pbrt la invierte e invierte eta cuando wi queda por debajo. eta = el índice detrás de n entre el de delante (μt/μi con n hacia wi). false significa reflexión total interna.
-    [rtiow] uv es la dirección unitaria en la que viaja el rayo, dibujada como W a lo largo del rayo (Sección 2). n debe estar opuesta a uv (front_face). etai_over_etat = n_from/n_to = μi/μt. refract no comprueba la reflexión total interna: la refleja cannot_refract de quien llama.
-   *[mitsuba] wi se aleja de la superficie, de vuelta a lo largo del rayo, dibujado como W hacia el origen (Sección 1). n es +z (el sistema local) si se deja vacío. eta = int_ior/ext_ior, el índice detrás de n entre el de delante (μt/μi con n hacia wi). F = 1 significa reflexión total interna: wo es null.
+    [glsl] I es la dirección en la que viaja el rayo, dibujada como W a lo largo del rayo (Sección 2). N debe estar opuesta a I: GLSL no la gira. eta = n_from/n_to = μi/μt. El vector nulo significa reflexión total.
+    [pbrt] wi apunta hacia donde venía el rayo (−ray.d), dibujado como W hacia el origen (Sección 1). n puede estar en cualquier lado: pbrt la invierte e invierte eta cuando wi queda por debajo. eta = el índice detrás de n entre el de delante (μt/μi con n hacia wi). false significa reflexión total.
+    [rtiow] uv es la dirección unitaria en la que viaja el rayo, dibujada como W a lo largo del rayo (Sección 2). n debe estar opuesta a uv (front_face). etai_over_etat = n_from/n_to = μi/μt. refract no comprueba la reflexión total: la refleja cannot_refract de quien llama.
+   *[mitsuba] wi se aleja de la superficie, de vuelta a lo largo del rayo, dibujado como W hacia el origen (Sección 1). n es +z (el sistema local) si se deja vacío. eta = int_ior/ext_ior, el índice detrás de n entre el de delante (μt/μi con n hacia wi). F = 1 significa reflexión total: wo es null.
 }
 check-convention-about = Convención: { $about }
 check-your-call = Tu llamada
@@ -190,7 +190,7 @@ check-student-wrong = incorrecto
 check-api-right-headline = Correcto: lo que { $signature } significa para este rayo
 check-api-mistakes = Errores: { $codes }
 check-api-unexplained-headline = Ningún error por sí solo lo explica
-check-api-returns = { $owner } devuelve { $value }
+check-api-returns = Resultado en { $owner }: { $value }
 check-api-drawn = Dibujado: la llamada correcta, { $incident } = { $incident_value }, { $normal } = { $normal_value }, { $eta } = { $eta_value } (μi = { $mu_i }, μt = { $mu_t }).
 check-api-not-drawn = No dibujado: { $why }.
 check-copy-as-test = Copiar como prueba unitaria:
@@ -253,8 +253,11 @@ check-csv-no-column = la cabecera CSV no tiene la columna `{ $field }`: nombra {
 check-csv-partial-vector = la cabecera CSV solo tiene { $count } de las 3 componentes de `{ $field }`
 check-csv-duplicate-column = la cabecera CSV nombra `{ $column }` más de una vez
 check-csv-cells = { $count ->
-    [one] { $count } celda donde la cabecera tiene { $columns } columnas
-   *[other] { $count } celdas donde la cabecera tiene { $columns } columnas
+    [one] { $count } celda
+   *[other] { $count } celdas
+} donde la cabecera tiene { $columns ->
+    [one] { $columns } columna
+   *[other] { $columns } columnas
 }
 check-csv-no-header = no hay cabecera CSV utilizable: { $reason }
 check-pattern-unclosed = `{"{"}` sin cerrar en el patrón «{ $pattern }»
@@ -274,7 +277,7 @@ check-vector-not-three = se esperaban 3 números como `0.1, -0.9, 0` o `vec3(0.1
 check-mistake-no-flip-inside = para un rayo que llega del otro lado de la normal, el código no invierte la normal ni el cociente
 check-mistake-normal-term-sign = la parte del resultado a lo largo de la normal tiene el signo equivocado; la parte transversal es correcta
 check-mistake-other-root = la otra raíz: el signo de la raíz cuadrada invertido, el resultado reflejado respecto a la superficie
-check-mistake-false-tir = reflexión total interna indicada donde el rayo se refracta
+check-mistake-false-tir = reflexión total indicada donde el rayo se refracta
 check-diagnosis-no-lines = No se juzgó ninguna línea ({ $lines } leídas): revisa el patrón, la cabecera CSV o los campos de las líneas.
 check-physics-explained = Eso es lo que da una refracción con este error: { $mistakes }.
 check-looks-normal-term = la respuesta de la API con la parte a lo largo de la normal negada: el término a lo largo de la normal se resta donde se suma, o al revés
@@ -295,8 +298,8 @@ check-where-outside = { $count ->
    *[other] en todas las líneas cuyo rayo llega desde fuera ({ $count }), y en ninguna desde dentro
 }
 check-where-past-critical = { $count ->
-    [one] en la única línea más allá del ángulo crítico, y en ninguna otra
-   *[other] en todas las líneas más allá del ángulo crítico ({ $count }), y en ninguna otra
+    [one] en la única línea más allá del ángulo límite, y en ninguna otra
+   *[other] en todas las líneas más allá del ángulo límite ({ $count }), y en ninguna otra
 }
 check-where-some-sides = en { $count } de { $all } líneas juzgadas ({ $inside } desde dentro, { $outside } desde fuera)
 check-where-some = en { $count } de { $all } líneas juzgadas
@@ -310,7 +313,7 @@ check-fix-generic-no-flip-inside = para un rayo que llega desde dentro, invierte
 check-fix-generic-normal-term-sign = suma el término a lo largo de la normal: T = μ·W + (μ·cosθi − cosθt)·N, con N orientada hacia el rayo
 check-fix-generic-other-root = toma la raíz con −√k: T = μ·W + (μ·cosθi − √k)·N, con N orientada hacia el rayo
 check-fix-generic-missed-tir = refleja cuando k = 1 − μ²·(1 − cos²θi) es negativo, antes de tomar su raíz cuadrada
-check-fix-generic-false-tir = indica reflexión total interna solo donde k = 1 − μ²·(1 − cos²θi) es negativo
+check-fix-generic-false-tir = indica reflexión total solo donde k = 1 − μ²·(1 − cos²θi) es negativo
 check-fix-generic-not-unit-input = normaliza W y N antes de refractar
 check-fix-generic-not-the-api-result = compara tu refracción con T = μ·W + (μ·cosθi − √k)·N en las líneas indicadas, como dice la explicación de cada una
 check-physics-no-indices = faltan los índices: da `mu_i` y `mu_t`, o `entering` con --inside y --outside

@@ -2,7 +2,7 @@
 # Las etiquetas del diagrama deben ser cortas: el colocador omite las que no caben.
 # Los marcadores llevan números ya escritos con coma decimal.
 
-## El diagrama de la interfaz
+## El diagrama de la superficie de separación
 
 diagram-ghost-wrong-side = otra raíz de b: lado equivocado
 diagram-ghost-wrong-bend = otro signo de a: se desvía mal
@@ -17,14 +17,14 @@ diagram-material-glass = vidrio
 diagram-material-diamond = diamante
 diagram-material-custom = personalizado
 diagram-banner-tir =
-    REFLEXIÓN TOTAL INTERNA
+    REFLEXIÓN TOTAL
     k = { $k } < 0: no hay raíz real para b ni rayo refractado; toda la luz se refleja (θi = { $theta_i }°)
 diagram-banner-toward-origin = W apunta de vuelta al origen, así que a = −μ
 diagram-banner-along-ray = W es la dirección de propagación, así que a = +μ
 diagram-banner-section = Sección { $section }: { $words }
 diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T existe
-diagram-critical-angle = ángulo crítico θc = { $angle }°
-diagram-kernel-normal = −N: la normal que usa el núcleo
+diagram-critical-angle = ángulo límite θc = { $angle }°
+diagram-kernel-normal = −N: la normal que usa el kernel
 diagram-outward-normal-bug =
     fórmula de la fuente con N sin invertir: la raíz del lado equivocado,
     la T errónea del fallo de la normal exterior
@@ -35,18 +35,18 @@ diagram-reflected-light = reflejado ({ $light })
 diagram-reflected-all = rayo reflejado (toda la luz)
 diagram-w-along-ray = W (a lo largo del rayo)
 diagram-w-toward-origin = W (hacia el origen)
-diagram-transmitted = T: transmitido
+diagram-transmitted = T: transmitida
 diagram-no-reflected-ray = { $label }: sin rayo reflejado
 
-## Controles (lo que dice un lector de pantalla)
+## Tiradores (lo que dice un lector de pantalla)
 
-diagram-handle-w = control de W
-diagram-handle-n = control de N
-diagram-handle-mu-i = control de μi
-diagram-handle-mu-t = control de μt
-diagram-handle-source = control de la fuente
-diagram-handle-aim = control de la dirección de la fuente
-diagram-handle-shape = control de la forma { $number } ({ $medium })
+diagram-handle-w = tirador de W
+diagram-handle-n = tirador de N
+diagram-handle-mu-i = tirador de μi
+diagram-handle-mu-t = tirador de μt
+diagram-handle-source = tirador de la fuente
+diagram-handle-aim = tirador de la dirección de la fuente
+diagram-handle-shape = tirador de la forma { $number } ({ $medium })
 
 ## Lecciones, temas, luz, animaciones
 
@@ -63,12 +63,12 @@ diagram-light-s = luz s
 diagram-light-p = luz p
 diagram-light-unpolarised = luz no polarizada
 diagram-animation-mu = μ → 1: T se convierte en W
-diagram-animation-sweep = Barrer θi hasta rasante: aparece la reflexión total interna
+diagram-animation-sweep = Barrer θi hasta rasante: aparece la reflexión total
 diagram-animation-wavefronts = Frentes de onda en movimiento
 
 ## La tabla de candidatos
 
-diagram-role-chosen = T (elegido)
+diagram-role-chosen = T (elegida)
 diagram-role-wrong-side = lado equivocado
 diagram-role-wrong-bend = desvío equivocado
 diagram-role-reversed = invertido
@@ -85,12 +85,12 @@ diagram-stopped-at = detenido tras { $count ->
        *[other] { $count } segmentos
     }
 diagram-count-kernel-calls = { $count ->
-        [one] { $count } llamada al núcleo
-       *[other] { $count } llamadas al núcleo
+        [one] { $count } llamada al kernel
+       *[other] { $count } llamadas al kernel
     }
 diagram-count-tir = { $count ->
-        [one] { $count } reflexión total interna
-       *[other] { $count } reflexiones totales internas
+        [one] { $count } reflexión total
+       *[other] { $count } reflexiones totales
     }
 diagram-count-reflections = { $count ->
         [one] { $count } reflexión generada
@@ -124,7 +124,7 @@ diagram-legend-opacity = opacidad: intensidad
 diagram-legend-hits = impactos:
 diagram-hit-entering = entrando
 diagram-hit-leaving = saliendo (N invertida)
-diagram-hit-tir = reflexión total interna
+diagram-hit-tir = reflexión total
 
 ## Ondas
 
@@ -136,7 +136,7 @@ diagram-huygens-touch =
     la onda secundaria de B crece vt·Δt, el nuevo frente la toca
 diagram-huygens-tir =
     Huygens: la onda secundaria de B supera BA:
-    no hay tangente desde A, reflexión total interna
+    no hay tangente desde A, reflexión total
 
 ## Las ecuaciones clave
 
@@ -145,57 +145,58 @@ diagram-eq-along-ray-a = W apunta en el sentido de T, así que la fuente toma a 
 diagram-eq-no-refracted-ray = no hay (a, b) real: no hay rayo refractado
 diagram-eq-no-b-with-10 = ningún b real la cumple junto con la ec. 10
 diagram-eq-so = { $given }, así que { $then }
-diagram-eq-negative-root = √({ $k }) de un número negativo: no hay b real (reflexión total interna)
+diagram-eq-negative-root = √({ $k }) de un número negativo: no hay b real (reflexión total)
 diagram-eq-or = o
-diagram-eq-outward-normal-bug = con N tal como se da, b = { $b }: la raíz equivocada, T vuelve atrás (el fallo de la normal exterior); el núcleo usa −N y obtiene b = { $kernel_b } para N
+diagram-eq-outward-normal-bug = con N tal como se da, b = { $b }: la raíz equivocada, T vuelve atrás (el fallo de la normal exterior); el kernel usa −N y obtiene b = { $kernel_b } para N
 diagram-eq-no-root = no hay raíz real que elegir
-diagram-eq-no-theta-t = { $given }, así que sinθt sería { $sin_t } > 1: no existe ningún ángulo θt
+diagram-eq-no-theta-t = { $given }, así que senθt sería { $sin_t } > 1: no existe ningún ángulo θt
 diagram-eq-with-chosen = { $lhs } = { $rhs } con el (a, b) elegido
 diagram-eq-no-ab-with-12 = ningún (a, b) real la cumple junto con la ec. 12
+# El nombre del seno en las fórmulas del paso a paso, tal como lo escriben los colegios en este idioma.
+diagram-math-sin = sen
 
 ## Paso a paso
 
 diagram-step-snell = Ley de Snell
-diagram-step-snell-text = El rayo se desvía de modo que μi·sinθi = μt·sinθt; con μ = μi/μt, el seno del ángulo en el nuevo medio es μ veces el anterior.
+diagram-step-snell-text = El rayo se desvía de modo que μi·senθi = μt·senθt; con μ = μi/μt, el seno del ángulo en el nuevo medio es μ veces el anterior.
 diagram-step-square = Elevar al cuadrado y usar cosenos
 diagram-step-square-text = Elevar al cuadrado permite que los cosenos (productos escalares) sustituyan a los senos, pero también deja entrar soluciones falsas: una solución y su opuesta con signo la cumplen ambas.
 diagram-step-decomposition = T como a·W + b·N
 diagram-step-decomposition-text = T está en el plano de W y N, así que es a·W + b·N; los cosenos pasan a ser productos escalares con wn = W·N, y cosθt = −a·wn − b. El rayo viaja según { $travel }.
 diagram-step-constraints = Las dos restricciones al cuadrado
-# «Fantasmas» por los tres candidatos rechazados (en inglés, "ghosts").
 diagram-step-constraints-text = Snell al cuadrado (ec. 10) y la longitud unitaria (ec. 12) son dos ecuaciones cuadráticas en a y b. Cuatro pares (a, b) cumplen ambas: T y los tres fantasmas. Nada en ellas distingue a los cuatro.
 diagram-step-roots-a = Las dos raíces de a
 diagram-step-roots-a-text = Sustituir la ec. 12 en la ec. 10 deja a² = μ²: a = +μ o a = −μ. El otro signo refleja T respecto a la normal: se desvía hacia el lado equivocado.
 diagram-step-choice-a = Elegir a: el límite μ = 1
-# «Animar μ hasta 1» es el nombre del botón en la ventana; compruébese con explorer.ftl.
-diagram-step-choice-a-text = Cuando μ = 1 nada se desvía, así que T debe ser la dirección de propagación, { $travel }. Solo a = { $a } da eso; el otro signo daría la imagen especular. Pulse «Animar μ hasta 1» para ver cómo T converge a { $travel } y los fantasmas no.
+# «Animar μ hasta 1» es el nombre del botón en la ventana.
+diagram-step-choice-a-text = Cuando μ = 1 nada se desvía, así que T debe ser la dirección de propagación, { $travel }. Solo a = { $a } da eso; el otro signo daría la imagen especular. Pulsa «Animar μ hasta 1» para ver cómo T converge a { $travel } y los fantasmas no.
 diagram-step-choice-a-typo = (El texto de la sección 2 dice luego «once we decide upon using the a = −μ solution»: quiere decir a = +μ, la que eligió.)
 diagram-step-roots-b = Las dos raíces de b
-diagram-step-roots-b-text = Con a fijo, la ec. 12 es cuadrática en b con las raíces −a·wn ± √k (k = μ²wn² − μ² + 1). La otra raíz refleja T respecto a la superficie, de vuelta al medio del que venía el rayo. k < 0 significa que no hay raíz real: reflexión total interna.
+diagram-step-roots-b-text = Con a fijo, la ec. 12 es cuadrática en b con las raíces −a·wn ± √k (k = μ²wn² − μ² + 1). La otra raíz refleja T respecto a la superficie, de vuelta al medio del que venía el rayo. k < 0 significa que no hay raíz real: reflexión total.
 diagram-step-choice-b = Elegir b
 diagram-step-choice-b-text = De las dos raíces solo la de −√k se hace b = 0 en μ = 1, cuando T debe ser el rayo incidente sin cambios; la otra manda T de vuelta al otro lado de la superficie.
-diagram-step-choice-b-flipped = La raíz con −√k tiende a b = 0 en μ = 1, así que T se convierte en el rayo incidente. Pero aquí N apunta en el sentido del rayo (una normal exterior donde el rayo sale del medio): con N tal como se da, esa raíz es la del lado equivocado. El núcleo invierte N primero.
+diagram-step-choice-b-flipped = La raíz con −√k tiende a b = 0 en μ = 1, así que T se convierte en el rayo incidente. Pero aquí N apunta en el sentido del rayo (una normal exterior donde el rayo sale del medio): con N tal como se da, esa raíz es la del lado equivocado. El kernel invierte N primero.
 
 ## La vista de Fresnel
 
 diagram-fresnel-title = Cuánta luz se refleja, de μi = { $mu_i } a μt = { $mu_t }
 diagram-fresnel-axis = ángulo de incidencia θi
 diagram-fresnel-brewster = ángulo de Brewster θB = { $angle }°: no se refleja luz p
-diagram-fresnel-critical = ángulo crítico θc = { $angle }°: más allá, todo se refleja
+diagram-fresnel-critical = ángulo límite θc = { $angle }°: más allá, todo se refleja
 diagram-curve-rs = R_s (luz s reflejada)
 diagram-curve-rp = R_p (luz p reflejada)
 diagram-curve-r = R (no polarizada, reflejada)
 diagram-curve-t = T (no polarizada, transmitida)
 diagram-fresnel-source =
     Ecuaciones de Fresnel para la potencia reflejada (Hecht, Óptica, cap. 4): R_s = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², R_p = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
-    a partir de los propios cosθi y cosθt del núcleo, sin trigonometría; la luz no polarizada es la media de s y p. Más allá del ángulo crítico toda la luz se refleja.
+    a partir de los propios cosθi y cosθt del kernel, sin trigonometría; la luz no polarizada es la media de s y p. Más allá del ángulo límite toda la luz se refleja.
 
 ## La gráfica de precisión
 
 diagram-accuracy-title = Precisión frente a tiempo en esta máquina
 diagram-accuracy-error-axis = mayor error del conjunto difícil, en ε·κ (log)
 diagram-accuracy-time-axis = tiempo por rayo, ns (log)
-diagram-accuracy-bound = la cota del núcleo por defecto, 32 ε·κ
+diagram-accuracy-bound = la cota del kernel predeterminado, 32 ε·κ
 diagram-accuracy-markers = hueco: f32, relleno: f64
 
 ## Las escenas incluidas (títulos, descripciones y los nombres de sus medios)
@@ -205,13 +206,13 @@ diagram-scene-dispersing-prism-about = Luz blanca a través de un prisma equilá
 diagram-scene-droplet = Gota de agua (arcoíris)
 diagram-scene-droplet-about = La luz blanca entra en una gota, se refleja dentro y sale; la dispersión abre el arcoíris primario cerca de 138 grados de desviación.
 diagram-scene-fibre = Fibra óptica
-diagram-scene-fibre-about = La reflexión total interna repetida guía la luz a lo largo del núcleo; los rayos más inclinados escapan al revestimiento.
-diagram-scene-interface = Una interfaz
-diagram-scene-interface-about = Un rayo en el aire llega a un vidrio plano (n = 1,5) a 45 grados y se desvía hacia la normal.
+diagram-scene-fibre-about = La reflexión total repetida guía la luz a lo largo del núcleo; los rayos más inclinados escapan al revestimiento.
+diagram-scene-interface = Una superficie de separación
+diagram-scene-interface-about = Un rayo en el aire llega a un vidrio plano (n = 1,5) a 45 grados y se acerca a la normal.
 diagram-scene-lens = Lente convergente
-diagram-scene-lens-about = Una lente biconvexa de BK7 enfoca un haz paralelo sobre una pantalla; los rayos marginales enfocan antes.
+diagram-scene-lens-about = Una lente biconvexa de BK7 enfoca un haz paralelo sobre una pantalla; los rayos marginales convergen antes.
 diagram-scene-right-angle-prism = Prisma de ángulo recto
-diagram-scene-right-angle-prism-about = La reflexión total interna en la hipotenusa desvía el haz 90 grados.
+diagram-scene-right-angle-prism-about = La reflexión total en la hipotenusa desvía el haz 90 grados.
 diagram-scene-slab = Lámina de vidrio
 diagram-scene-slab-about = Caras paralelas: el rayo de salida es paralelo al de entrada, desplazado de lado. Pérdidas de Fresnel en ambas caras, absorción en el interior.
 diagram-medium-core = núcleo

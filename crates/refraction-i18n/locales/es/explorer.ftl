@@ -4,7 +4,7 @@
 
 ## La barra superior
 
-view-interface = Una interfaz
+view-interface = Una superficie
 view-scenes = Escenas
 view-accuracy = Precisión/tiempo
 # Nombra, en un mensaje de error, una escena conservada de la última ejecución.
@@ -22,7 +22,7 @@ presentation-theme-hover = Estándar o alto contraste: negro sobre blanco o blan
 presentation-colour-blind = Apto para daltónicos
 presentation-colour-blind-hover = Solo colores Okabe–Ito; además, cada rayo tiene su propio trazo discontinuo y su etiqueta
 language-menu = Idioma
-language-hover = El idioma de la ventana. Sigue el del sistema salvo que se elija aquí.
+language-hover = El idioma de la ventana. Sigue el del sistema si aquí no se ha escogido otro.
 effects-menu = Efectos
 effects-menu-hover = Intensidades (Fresnel) y frentes de onda sobre el diagrama
 effects-intensities = Intensidades
@@ -43,9 +43,8 @@ panel-hide-numbers = Ocultar los números ({ $key })
 ## Bajo el diagrama
 
 canvas-hint = Arrastra W, N o un marcador μ; haz clic en uno (o en el diagrama) para usar las flechas del teclado
-# Dudoso: “tirador” para “handle” (punto de agarre que se arrastra); revisar.
-canvas-hint-ray = ←/→ gira 1° (Shift: 0,1°) · +/− μt · Tab: siguiente tirador · arrastra para mover
-canvas-hint-index = ↑/↓ o +/− cambian el índice en 0,01 (Shift: 0,001) · Tab: siguiente tirador
+canvas-hint-ray = ←/→ gira 1° (Mayús: 0,1°) · +/− μt · Tab: siguiente tirador · arrastra para mover
+canvas-hint-index = ↑/↓ o +/− cambian el índice en 0,01 (Mayús: 0,001) · Tab: siguiente tirador
 
 ## El panel de controles
 
@@ -60,8 +59,8 @@ controls-convention-along-ray = Sección 2: W es la dirección de propagación
 controls-flip-normal = Invertir N
 controls-flip-normal-hover = Invierte la normal: así es una normal exterior donde un rayo sale del vidrio
 controls-snap = Ajustar W a θc
-controls-snap-hover = Pone W en el ángulo crítico (requiere μi > μt)
-controls-snap-disabled = Solo hay ángulo crítico cuando μi > μt
+controls-snap-hover = Pone W en el ángulo límite (requiere μi > μt)
+controls-snap-disabled = Solo hay ángulo límite cuando μi > μt
 controls-indices = Índices
 # $symbol es μi o μt.
 controls-index-value = Valor de { $symbol }
@@ -75,15 +74,15 @@ controls-export-file = Archivo
 controls-export-file-hint = un nombre .png o .svg, o numerado diagram-001.png
 controls-browse = Examinar…
 controls-export = Exportar imagen
-controls-exported = escrito { $path }
+controls-exported = se escribió { $path }
 # Un valor escrito que no es un número: $name es aquello para lo que se escribió (θi, μt, W).
-typed-not-a-number = { $name }: “{ $text }” no es un número
+typed-not-a-number = { $name }: «{ $text }» no es un número
 typed-not-three-numbers = { $name }: se esperaban tres números x, y, z; se recibieron { $count }
 
 ## El panel de números
 
 readouts-discriminant = Discriminante k = μ²wn² − μ² + 1 = { $k } ≥ 0: T existe
-readouts-discriminant-tir = Discriminante k = μ²wn² − μ² + 1 = { $k } < 0: reflexión total interna
+readouts-discriminant-tir = Discriminante k = μ²wn² − μ² + 1 = { $k } < 0: reflexión total
 # $section es la sección de la fuente (1 o 2) cuya ecuación 20 es esta.
 readouts-quadratic = Ec. { $section }.20, la ecuación cuadrática en b: b² + 2a·wn·b + a² − 1 = 0 con a = { $a }, wn = { $wn }
 readouts-no-roots = sin raíces reales: la parábola ya no llega a cero
@@ -93,13 +92,11 @@ readouts-plot-roots = raíces
 readouts-candidates = Los cuatro candidatos
 readouts-candidate = candidato
 # Los encabezados de columna de las comprobaciones: la ley de Snell al cuadrado (la ec. 10 de la fuente), el lado de la superficie en que está T, el sentido en que se desvía T.
-# Dudoso: “desvío” para “bend” (si T se acerca o se aleja de la normal); revisar.
-readouts-check-snell = eq.10
+readouts-check-snell = ec. 10
 readouts-check-side = lado
 readouts-check-bend = desvío
 readouts-no-candidates = Sin candidatos: k < 0, así que b no tiene raíces reales y no existe T.
 readouts-candidates-note = Los cuatro son unitarios y cumplen la ley de Snell al cuadrado (ec. 10): elevar al cuadrado no permite distinguirlos. Solo el lado y el desvío (el argumento μ = 1 de la fuente) eligen T.
-# Dudoso: “kernel” (la rutina de refracción) se deja como anglicismo; ¿“núcleo”? Revisar aquí y en el resto del archivo.
 readouts-warnings = Avisos del kernel
 readouts-no-warnings = Sin avisos: W y N son unitarios y N mira hacia el rayo.
 readouts-warning-not-unit = { $vector } tiene longitud { $length }, no 1: se normalizó (los vectores sin normalizar son un error común en los trazadores de rayos)
@@ -112,7 +109,7 @@ walk-previous = Paso anterior
 walk-next = Paso siguiente
 walk-animate = Animar μ hasta 1
 walk-animating = Animando μ hasta 1 …
-walk-animate-hover = Transforma μt en μi: el T elegido converge al rayo incidente
+walk-animate-hover = Transforma μt en μi: la T elegida converge al rayo incidente
 walk-animate-disabled = μ ya es 1 (μi = μt), o la animación está en curso
 walk-step = Paso { $number } de { $count }: { $title }
 
@@ -123,11 +120,10 @@ fresnel-axis = ángulo de incidencia θi (°)
 fresnel-now = θi actual
 fresnel-click-hint = Haz clic o arrastra en la gráfica para fijar θi.
 fresnel-at = Con θi = { $angle }°, de μi = { $mu_i } a μt = { $mu_t }.
-# Dudoso: “tan” y “sin” se dejan como en el original; los libros de texto suelen escribir “sen” (y a veces “tg”). Revisar.
-fresnel-brewster = Ángulo de Brewster θB = { $angle }°: ahí no se refleja luz polarizada p (tan θB = μt/μi).
-fresnel-equal-indices = Índices iguales: no hay interfaz, no se refleja nada.
-fresnel-critical = Ángulo crítico θc = { $angle }°: más allá de él, toda la luz se refleja (sin θc = μt/μi).
-fresnel-no-critical = Sin ángulo crítico: la luz pasa a un medio de índice mayor.
+fresnel-brewster = Ángulo de Brewster θB = { $angle }°: ahí no se refleja luz polarizada p (tg θB = μt/μi).
+fresnel-equal-indices = Índices iguales: no hay superficie de separación, no se refleja nada.
+fresnel-critical = Ángulo límite θc = { $angle }°: más allá de él, toda la luz se refleja (sen θc = μt/μi).
+fresnel-no-critical = Sin ángulo límite: la luz pasa a un medio de índice mayor.
 
 ## La vista Escenas
 
@@ -139,9 +135,9 @@ scenes-open = Abrir archivo
 scenes-save = Guardar archivo
 scenes-save-hover = la escena editada, en el formato de escenas (TOML)
 scenes-open-dialog-hover = Elegir un archivo de escena para abrir
-scenes-saved = guardado { $path }
-scenes-opened = abierto { $path }
-scenes-hint = Arrastra la fuente (ámbar), su dirección (el anillo al final de la flecha discontinua) o el tirador de una forma; haz clic en un punto de impacto para abrirlo en “Una interfaz”.
+scenes-saved = se guardó { $path }
+scenes-opened = se abrió { $path }
+scenes-hint = Arrastra la fuente (ámbar), su dirección (el anillo al final de la flecha discontinua) o el tirador de una forma; haz clic en un punto de impacto para abrirlo en «Una superficie».
 scenes-picture-file = Archivo de imagen (.png o .svg)
 scenes-picture-hint = un nombre .png o .svg, o numerado scene-001.svg
 scenes-export-size = Exportar { $width }×{ $height }
@@ -158,18 +154,17 @@ scenes-hit =
        *[leaving] salida: el kernel invierte N
     })
     μi = { $mu_i }, μt = { $mu_t }, { $wavelength } nm
-    clic: abrir en “Una interfaz”
+    clic: abrir en «Una superficie»
 
 ## La vista de precisión
 
 accuracy-heading = Lo que cuesta la precisión en tiempo
-# Dudoso: “oráculo double-double” (referencia calculada en doble-doble precisión); revisar.
 accuracy-intro = Cronometra cada variante del kernel en f32 y f64 en esta máquina y mide su error frente a un oráculo double-double con incidencias aleatorias y difíciles. La gráfica muestra el mayor error del conjunto difícil en unidades de ε·κ (lo que el algoritmo pierde más allá de lo que el propio problema amplifica) frente a los nanosegundos por rayo.
 accuracy-quick = Ejecución rápida (unos segundos)
 accuracy-measure = Medir
 accuracy-measuring = midiendo… { $percent } %
-accuracy-press-measure = Pulsa “Medir” para ejecutar la prueba de rendimiento.
-# $variant nombra una variante del kernel y su precisión, como “stable f32”.
+accuracy-press-measure = Pulsa «Medir» para ejecutar la prueba de rendimiento.
+# $variant nombra una variante del kernel y su precisión, como «stable f32».
 accuracy-verdict = La más rápida dentro de 10× la mejor precisión: { $variant } con { $time } ns por rayo (error del conjunto difícil: { $error } ε·κ).
 accuracy-footnote = { $random } problemas aleatorios y { $hard } difíciles en { $cpu }. Los tiempos dependen de qué más esté haciendo la máquina; `refraction-explorer bench` da las mismas cifras en la línea de comandos.
 accuracy-axis-time = tiempo por rayo, ns (log)
@@ -183,5 +178,4 @@ accuracy-column-time = ns/rayo
 accuracy-column-random = err. máx. aleatorio
 accuracy-column-hard = err. máx. difícil
 accuracy-column-eps-kappa = difícil ε·κ
-# Dudoso: “RTI” como sigla de reflexión total interna; revisar.
-accuracy-column-tir = discrepancias RTI
+accuracy-column-tir = discrepancias en reflexión total

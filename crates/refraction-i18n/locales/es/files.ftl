@@ -10,8 +10,8 @@ files-wrong-extension = { $path }: { $kind ->
         [scene] una escena (TOML)
         [gif] una animación GIF
        *[svg] una imagen SVG
-    } se escribe en un archivo { $extension }; elija un nombre terminado en { $extension }
-files-is-a-folder = { $path } es una carpeta; elija un nombre de archivo
+    } se escribe en un archivo { $extension }; elige un nombre terminado en { $extension }
+files-is-a-folder = { $path } es una carpeta; elige un nombre de archivo
 files-holds-another-kind = { $path } contiene { $found ->
         [state] un estado guardado (JSON)
         [png] una imagen PNG
@@ -25,7 +25,7 @@ files-holds-another-kind = { $path } contiene { $found ->
         [scene] una escena (TOML)
         [gif] una animación GIF
        *[svg] una imagen SVG
-    }: se deja como está; elija otro nombre
+    }: se deja como está; elige otro nombre
 
 ## La pregunta antes de reemplazar un archivo
 
@@ -45,7 +45,7 @@ files-open-file = Abrir archivo
 files-save-file = Guardar archivo
 files-cannot-list = no se puede listar { $path }: { $reason }
 files-not-a-file = { $path } no es un archivo que se pueda abrir
-files-type-a-name = escriba un nombre de archivo en una carpeta existente
+files-type-a-name = escribe un nombre de archivo en una carpeta existente
 
 ## Guardar, abrir, compartir
 
@@ -64,7 +64,6 @@ files-left-as-it-was = { $path } se dejó como estaba
 files-opened = se abrió { $path }
 files-cannot-read-state = no se puede leer el archivo de estado { $path }: { $reason }
 files-state-refused = archivo de estado { $path }: { $reason }
-# «cadena para compartir» por «share string» (un texto que reproduce el estado en otro lugar): por revisar
 files-copy-share = 🔗 Copiar cadena para compartir
 files-copy-share-hover = Reproduce exactamente este estado en otra máquina, bit a bit
 files-share-copied = se copió la cadena para compartir
@@ -83,7 +82,7 @@ files-wrote = se escribió { $path }
 files-not-exported = no se exportó: { $reason }
 files-export-cancelled = cancelado: no se escribió nada
 files-export-crashed = la exportación se detuvo por un error interno
-files-gif-needed = { $path }: una animación se escribe como GIF; dé un nombre terminado en .gif
+files-gif-needed = { $path }: una animación se escribe como GIF; da un nombre terminado en .gif
 files-animation-heading = Animación para una diapositiva
 files-animation = Animación
 files-gif-file = Archivo GIF

@@ -10,11 +10,11 @@ check-vector-not-finite = un vecteur non fini (composantes NaN ou infinies)
 check-verdict-wrong-side = Ton T repart dans le milieu d’où venait le rayon : c’est l’autre racine pour b (+ là où la racine carrée demande -). La cause habituelle est une normale orientée dans le sens du rayon, comme la normale extérieure d’une sphère là où le rayon en sort, utilisée sans être retournée.
 check-verdict-wrong-bend = Ton T est dévié du mauvais côté : le signe de a est inversé, il ne redeviendrait donc pas le rayon incident quand mu -> 1. La cause habituelle est un mélange des conventions : W orienté vers l’origine (Section 1, a = -mu) donné à la formule de W le long du rayon (Section 2, a = +mu), ou l’inverse.
 check-verdict-reversed = Ton T vaut -T et pointe vers là d’où venait le rayon : les deux signes sont faux. La cause habituelle est de renvoyer la direction vers l’origine au lieu de la direction de propagation, ou d’avoir inversé W deux fois.
-check-verdict-not-finite-tir = Ton T a des composantes NaN ou infinies. Ce rayon subit une réflexion totale interne (k < 0) : ton code a pris la racine carrée d’un k négatif au lieu de tester k d’abord.
+check-verdict-not-finite-tir = Ton T a des composantes NaN ou infinies. Ce rayon subit une réflexion totale (k < 0) : ton code a pris la racine carrée d’un k négatif au lieu de tester k d’abord.
 check-verdict-not-finite-refracts = Ton T a des composantes NaN ou infinies alors que ce rayon est réfracté normalement (k >= 0) : cherche une division par zéro ou un vecteur non initialisé.
-check-verdict-tir-right = Juste : ce rayon subit une réflexion totale interne (k < 0) et ton code a renvoyé la réflexion (ou le vecteur nul par lequel GLSL l’indique).
-check-verdict-tir-but-refracted = Ce rayon subit une réflexion totale interne (k = { $k } < 0) : il n’y a pas de rayon réfracté, mais ton code en a renvoyé un. Teste k avant d’en prendre la racine carrée.
-check-verdict-zero-vector = Ton T est le vecteur nul, que GLSL renvoie en cas de réflexion totale interne, mais ce rayon est réfracté (k >= 0). Vérifie le signe de k et le rapport des indices.
+check-verdict-tir-right = Juste : ce rayon subit une réflexion totale (k < 0) et ton code a renvoyé la réflexion (ou le vecteur nul par lequel GLSL l’indique).
+check-verdict-tir-but-refracted = Ce rayon subit une réflexion totale (k = { $k } < 0) : il n’y a pas de rayon réfracté, mais ton code en a renvoyé un. Teste k avant d’en prendre la racine carrée.
+check-verdict-zero-vector = Ton T est le vecteur nul, que GLSL renvoie en cas de réflexion totale, mais ce rayon est réfracté (k >= 0). Vérifie le signe de k et le rapport des indices.
 check-verdict-not-unit = De plus, ton T a pour longueur { $length }, pas 1 : normalise W et N avant la réfraction (la formule suppose des vecteurs unitaires) ou T après.
 check-verdict-along-refracted = Ton T pointe le long du rayon réfracté (à { $off } rad près).
 check-verdict-right = Juste : ton T est le rayon réfracté (à { $off } rad près).
@@ -107,8 +107,8 @@ check-incident-reversed-travel = Dans { $owner }, { $incident } est { $means } 
 check-not-unit-input = { $call } suppose { $incident } et { $normal } unitaires et ne les normalise pas : |{ $incident }| = { $incident_length }, |{ $normal }| = { $normal_length } ; normalise-les d’abord.
 check-normal-against = { $call } exige { $normal } opposée à { $incident } (dot({ $normal }, { $incident }) < 0) et ne la retourne pas ; la tienne a dot({ $normal }, { $incident }) = { $dot }, comme une normale extérieure là où le rayon sort de l’objet : passe -{ $normal } = { $flipped } ({ $fix }).
 check-normal-either-side = { $call } accepte { $normal } de chaque côté, mais { $eta } doit aller avec : c’est { $means }. Ta { $normal } pointe à l’opposé de celle pour laquelle { $eta } = { $value } était prévu{ $inward } ; passe -{ $normal } = { $flipped } avec le même { $eta } (ou garde { $normal } et passe 1/{ $eta }).
-check-tir-glsl = Le refract de GLSL renvoie ici le vecteur nul (k = { $k } < 0 : réflexion totale interne) ; teste ce cas et réfléchis à la place.
-check-tir-pbrt = Le Refract de pbrt renvoie ici false (sin2Theta_t = { $sin2 } >= 1 : réflexion totale interne) ; réfléchis à la place.
+check-tir-glsl = Le refract de GLSL renvoie ici le vecteur nul (k = { $k } < 0 : réflexion totale) ; teste ce cas et réfléchis à la place.
+check-tir-pbrt = Le Refract de pbrt renvoie ici false (sin2Theta_t = { $sin2 } >= 1 : réflexion totale) ; réfléchis à la place.
 check-tir-rtiow = Le cannot_refract de dielectric::scatter est vrai ici (ri * sin_theta = { $sine } > 1) : le livre réfléchit au lieu d’appeler refract.
 check-tir-mitsuba = fresnel renvoie ici F = 1 (cos_theta_t_sqr = { $k } < 0) : Mitsuba réfléchit toujours.
 check-tir-got-formula = Ton code a quand même utilisé le vecteur de la formule, { $vector } de longueur { $length } : ce n’est pas un rayon.
@@ -122,7 +122,7 @@ check-unchecked = Vérifié seulement selon les règles propres de l’API : do
 check-unexplained-travel = Le { $incident } enregistré est à { $degrees } degrés de la direction { $travel } de ce rayon : ce n’est pas la direction de ce rayon (ni son opposée).
 check-unexplained-eta = { $eta } = { $value } ne correspond ni à n_from/n_to = { $mu } ni à son inverse tel que { $call } le lit : ce ne sont pas les indices de cette interface.
 check-unexplained = Aucune combinaison d’erreurs d’arguments ne fait correspondre cet appel à la référence donnée.
-check-right-tir = Juste : { $call } signale ici une réflexion totale interne ({ $returned }), et l’appel a donné { $what }.
+check-right-tir = Juste : { $call } signale ici une réflexion totale ({ $returned }), et l’appel a donné { $what }.
 check-right-for-ray = Juste : { $call } renvoie { $returned } pour ces arguments, pour un rayon { $situation }.
 check-right = Juste : { $call } renvoie { $returned } pour ces arguments.
 
@@ -132,7 +132,7 @@ check-mistake-eta-inverted = le rapport des indices à l’envers pour la conven
 check-mistake-incident-reversed = le vecteur incident passé à l’envers
 check-mistake-normal-not-facing = la normale du mauvais côté pour cette API (ou pour l’eta passé)
 check-mistake-not-the-api-result = le résultat n’est pas ce que l’API renvoie pour ces arguments : ta propre implémentation diffère
-check-mistake-missed-tir = une direction (ou NaN) là où l’API signale une réflexion totale interne
+check-mistake-missed-tir = une direction (ou NaN) là où l’API signale une réflexion totale
 check-mistake-not-unit-input = le vecteur incident ou la normale n’est pas de longueur unité
 
 ## Le panneau : les champs de ce projet
@@ -145,7 +145,7 @@ check-convention-along-ray-about = W est la direction dans laquelle le rayon se 
 check-convention-toward-origin = Section 1 : W vers l’origine
 check-convention-toward-origin-about = W pointe vers là d’où venait le rayon (le wi de pbrt et de Mitsuba).
 check-convention-note = { $about } μ = μi/μt ; N d’un côté ou de l’autre (le noyau la tourne vers le rayon).
-check-paste-hint = Colle ce que ton lancer de rayons a enregistré. Vecteurs sous la forme 0.1, -0.9, 0 ou [0.1,-0.9,0] ou vec3(0.1, -0.9, 0.0) ; ou colle une ligne JSON entière avec t_yours dans « Ton T ».
+check-paste-hint = Colle ce que ton moteur de lancer de rayons a enregistré. Vecteurs sous la forme 0.1, -0.9, 0 ou [0.1,-0.9,0] ou vec3(0.1, -0.9, 0.0) ; ou colle une ligne JSON entière avec t_yours dans « Ton T ».
 check-use-current-case = Prendre le cas actuel
 check-use-current-case-own-hover = Remplir W, N, μ et la convention depuis l’explorateur
 check-use-current-case-api-hover = Remplir les arguments et les indices depuis l’explorateur
@@ -160,9 +160,9 @@ check-match-not-unit = la direction de T, mais pas de longueur unité
 check-match-wrong-side = mauvais côté (l’autre racine pour b)
 check-match-wrong-bend = mauvaise déviation (l’autre signe de a)
 check-match-reversed = inversé (−T : les deux signes faux)
-check-match-tir = réflexion totale interne, bien traitée
+check-match-tir = réflexion totale, bien traitée
 check-match-none = aucun des quatre candidats
-check-no-refracted-ray = Il n’y a pas de rayon réfracté : réflexion totale interne.
+check-no-refracted-ray = Il n’y a pas de rayon réfracté : réflexion totale.
 check-right-t = Le bon T = { $t }
 check-not-drawn-changed = (Le cas a changé depuis : le verdict n’est pas dessiné.)
 
@@ -175,10 +175,10 @@ check-drawn-incident = { $api ->
    *[mitsuba] wi (s’éloignant de la surface)
 }
 check-drawn-about = { $api ->
-    [glsl] I est la direction dans laquelle le rayon se propage, dessinée comme W le long du rayon (Section 2). N doit être opposée à I : GLSL ne la retourne pas. eta = n_from/n_to = μi/μt. Le vecteur nul signifie réflexion totale interne.
-    [pbrt] wi pointe vers là d’où venait le rayon (−ray.d), dessiné comme W vers l’origine (Section 1). n peut être de chaque côté : pbrt la retourne et inverse eta quand wi est en dessous. eta = l’indice derrière n sur celui de devant (μt/μi avec n tournée vers wi). false signifie réflexion totale interne.
-    [rtiow] uv est la direction unitaire dans laquelle le rayon se propage, dessinée comme W le long du rayon (Section 2). n doit être opposée à uv (front_face). etai_over_etat = n_from/n_to = μi/μt. refract ne teste pas la réflexion totale interne : c’est le cannot_refract de l’appelant qui réfléchit.
-   *[mitsuba] wi s’éloigne de la surface, en remontant le rayon, dessiné comme W vers l’origine (Section 1). n vaut +z (le repère local) s’il est laissé vide. eta = int_ior/ext_ior, l’indice derrière n sur celui de devant (μt/μi avec n tournée vers wi). F = 1 signifie réflexion totale interne : wo est null.
+    [glsl] I est la direction dans laquelle le rayon se propage, dessinée comme W le long du rayon (Section 2). N doit être opposée à I : GLSL ne la retourne pas. eta = n_from/n_to = μi/μt. Le vecteur nul signifie réflexion totale.
+    [pbrt] wi pointe vers là d’où venait le rayon (−ray.d), dessiné comme W vers l’origine (Section 1). n peut être de chaque côté : pbrt la retourne et inverse eta quand wi est en dessous. eta = l’indice derrière n sur celui de devant (μt/μi avec n tournée vers wi). false signifie réflexion totale.
+    [rtiow] uv est la direction unitaire dans laquelle le rayon se propage, dessinée comme W le long du rayon (Section 2). n doit être opposée à uv (front_face). etai_over_etat = n_from/n_to = μi/μt. refract ne teste pas la réflexion totale : c’est le cannot_refract de l’appelant qui réfléchit.
+   *[mitsuba] wi s’éloigne de la surface, en remontant le rayon, dessiné comme W vers l’origine (Section 1). n vaut +z (le repère local) s’il est laissé vide. eta = int_ior/ext_ior, l’indice derrière n sur celui de devant (μt/μi avec n tournée vers wi). F = 1 signifie réflexion totale : wo est null.
 }
 check-convention-about = Convention : { $about }
 check-your-call = Ton appel
@@ -190,7 +190,7 @@ check-student-wrong = faux
 check-api-right-headline = Juste : ce que { $signature } signifie pour ce rayon
 check-api-mistakes = Erreurs : { $codes }
 check-api-unexplained-headline = Aucune erreur seule ne l’explique
-check-api-returns = { $owner } renvoie { $value }
+check-api-returns = Résultat dans { $owner } : { $value }
 check-api-drawn = Dessiné : le bon appel, { $incident } = { $incident_value }, { $normal } = { $normal_value }, { $eta } = { $eta_value } (μi = { $mu_i }, μt = { $mu_t }).
 check-api-not-drawn = Non dessiné : { $why }.
 check-copy-as-test = Copier comme test unitaire :
@@ -217,7 +217,7 @@ check-column-ok = ok
 check-column-mistakes = erreurs
 check-column-explanation = explication
 check-row-line = ligne { $line }
-check-row-open-hover = Ouvrir cet appel dans le panneau et le diagramme
+check-row-open-hover = Ouvrir cet appel dans le panneau et le schéma
 check-row-error = erreur
 
 ## Lecture des champs d’un appel, d’une ligne CSV, d’un motif et d’un vecteur (le panneau affiche aussi ces messages)
@@ -253,8 +253,11 @@ check-csv-no-column = l’en-tête CSV n’a pas de colonne `{ $field }` : il n
 check-csv-partial-vector = l’en-tête CSV n’a que { $count } des 3 composantes de `{ $field }`
 check-csv-duplicate-column = l’en-tête CSV nomme `{ $column }` plus d’une fois
 check-csv-cells = { $count ->
-    [one] { $count } cellule là où l’en-tête a { $columns } colonnes
-   *[other] { $count } cellules là où l’en-tête a { $columns } colonnes
+    [one] { $count } cellule
+   *[other] { $count } cellules
+} là où l’en-tête a { $columns ->
+    [one] { $columns } colonne
+   *[other] { $columns } colonnes
 }
 check-csv-no-header = aucun en-tête CSV utilisable : { $reason }
 check-pattern-unclosed = `{"{"}` non fermé dans le motif « { $pattern } »
@@ -272,16 +275,16 @@ check-vector-not-three = 3 nombres attendus, comme `0.1, -0.9, 0` ou `vec3(0.1, 
 
 # Erreurs visibles dans ce qui est renvoyé
 check-mistake-no-flip-inside = pour un rayon venant de l’autre côté de la normale, le code ne retourne pas la normale et n’inverse pas le rapport
-check-mistake-normal-term-sign = la composante du résultat le long de la normale a le mauvais signe ; la composante transverse est juste
-check-mistake-other-root = l’autre racine : le signe de la racine carrée inversé, le résultat réfléchi par rapport à la surface
-check-mistake-false-tir = réflexion totale interne annoncée là où le rayon est réfracté
-check-diagnosis-no-lines = Aucune ligne n’a été jugée ({ $lines } lues) : vérifie le motif, l’en-tête CSV ou les champs des lignes.
-check-physics-explained = C’est ce que donne une réfraction avec cette erreur : { $mistakes }.
-check-looks-normal-term = la réponse de l’API avec la composante le long de la normale opposée : le terme le long de la normale est soustrait au lieu d’être ajouté, ou l’inverse
+check-mistake-normal-term-sign = la composante du résultat le long de la normale a le mauvais signe ; la composante transverse est juste
+check-mistake-other-root = l’autre racine : le signe de la racine carrée inversé, le résultat réfléchi par rapport à la surface
+check-mistake-false-tir = réflexion totale annoncée là où le rayon est réfracté
+check-diagnosis-no-lines = Aucune ligne n’a été jugée ({ $lines } lues) : vérifie le motif, l’en-tête CSV ou les champs des lignes.
+check-physics-explained = C’est ce que donne une réfraction avec cette erreur : { $mistakes }.
+check-looks-normal-term = la réponse de l’API avec la composante le long de la normale opposée : le terme le long de la normale est soustrait au lieu d’être ajouté, ou l’inverse
 check-looks-no-flip = ce que donne la formule sans retourner la normale ni inverser eta pour un rayon venant de l’autre côté de la normale
 check-looks-etap = la bonne direction, mais etap = { $logged } là où l’appel a utilisé { $used }
 
-# Le diagnostic d’un journal entier : où une erreur se voit, et sa correction
+# Le diagnostic d’un journal entier : où une erreur se voit, et sa correction
 check-where-every = { $count ->
     [one] sur la seule ligne jugée
    *[other] sur chaque ligne jugée ({ $count })
@@ -295,27 +298,27 @@ check-where-outside = { $count ->
    *[other] sur chaque ligne dont le rayon arrive de l’extérieur ({ $count }), et sur aucune de l’intérieur
 }
 check-where-past-critical = { $count ->
-    [one] sur la seule ligne au-delà de l’angle critique, et sur aucune autre
-   *[other] sur chaque ligne au-delà de l’angle critique ({ $count }), et sur aucune autre
+    [one] sur la seule ligne au-delà de l’angle limite, et sur aucune autre
+   *[other] sur chaque ligne au-delà de l’angle limite ({ $count }), et sur aucune autre
 }
 check-where-some-sides = sur { $count } des { $all } lignes jugées ({ $inside } de l’intérieur, { $outside } de l’extérieur)
 check-where-some = sur { $count } des { $all } lignes jugées
 check-fix-pass = passe `{ $code }`
 check-fix-write = écris `{ $code }`
 check-fix-restore = rétablis `{ $code }`
-check-fix-generic-eta-inverted = utilise μ = n_from / n_to, l’indice du milieu que le rayon quitte sur celui du milieu où il entre : il s’inverse là où le rayon sort de l’objet (into ? nc / nt : nt / nc)
+check-fix-generic-eta-inverted = utilise μ = n_from / n_to, l’indice du milieu que le rayon quitte sur celui du milieu où il entre : il s’inverse là où le rayon sort de l’objet (into ? nc / nt : nt / nc)
 check-fix-generic-incident-reversed = passe comme W la direction de propagation du rayon, pas son opposée
 check-fix-generic-normal-not-facing = là où le rayon sort de l’objet, utilise dans chaque terme la normale tournée vers le rayon (l’extérieure, retournée), ou l’extérieure avec son signe changé, mais pas les deux
 check-fix-generic-no-flip-inside = pour un rayon qui arrive de l’intérieur, retourne la normale et inverse le rapport avant de réfracter
-check-fix-generic-normal-term-sign = ajoute le terme le long de la normale : T = μ·W + (μ·cosθi − cosθt)·N, N tournée vers le rayon
-check-fix-generic-other-root = prends la racine avec −√k : T = μ·W + (μ·cosθi − √k)·N, N tournée vers le rayon
+check-fix-generic-normal-term-sign = ajoute le terme le long de la normale : T = μ·W + (μ·cosθi − cosθt)·N, N tournée vers le rayon
+check-fix-generic-other-root = prends la racine avec −√k : T = μ·W + (μ·cosθi − √k)·N, N tournée vers le rayon
 check-fix-generic-missed-tir = réfléchis quand k = 1 − μ²·(1 − cos²θi) est négatif, avant d’en prendre la racine carrée
-check-fix-generic-false-tir = n’annonce une réflexion totale interne que là où k = 1 − μ²·(1 − cos²θi) est négatif
+check-fix-generic-false-tir = n’annonce une réflexion totale que là où k = 1 − μ²·(1 − cos²θi) est négatif
 check-fix-generic-not-unit-input = normalise W et N avant de réfracter
 check-fix-generic-not-the-api-result = compare ta réfraction avec T = μ·W + (μ·cosθi − √k)·N sur les lignes indiquées, comme le dit l’explication de chacune
-check-physics-no-indices = pas d’indices : donne `mu_i` et `mu_t`, ou `entering` avec --inside et --outside
-check-physics-unknown-convention = convention inconnue « { $text } » : attendu "along_ray" ou "toward_origin"
-check-diagnosis-none = Aucune erreur : le journal est juste { $place }.
-check-diagnosis-verdict = L’erreur : { $code } ({ $meaning }), { $place }. Correction : { $fix }.
-check-diagnosis-also = Aussi : { $code } ({ $meaning }), { $place }. Correction : { $fix }.
-check-diagnosis-alike = Le journal ne la distingue pas de { $alike } ; journalise { $fields } pour les distinguer.
+check-physics-no-indices = pas d’indices : donne `mu_i` et `mu_t`, ou `entering` avec --inside et --outside
+check-physics-unknown-convention = convention inconnue « { $text } » : attendu "along_ray" ou "toward_origin"
+check-diagnosis-none = Aucune erreur : le journal est juste { $place }.
+check-diagnosis-verdict = L’erreur : { $code } ({ $meaning }), { $place }. Correction : { $fix }.
+check-diagnosis-also = Aussi : { $code } ({ $meaning }), { $place }. Correction : { $fix }.
+check-diagnosis-alike = Le journal ne la distingue pas de { $alike } ; journalise { $fields } pour les distinguer.

@@ -10,8 +10,8 @@ files-wrong-extension = { $path } : { $kind ->
         [scene] une scène (TOML)
         [gif] une animation GIF
        *[svg] une image SVG
-    } s’écrit dans un fichier { $extension } ; choisissez un nom se terminant par { $extension }
-files-is-a-folder = { $path } est un dossier ; choisissez un nom de fichier
+    } s’écrit dans un fichier { $extension } ; choisis un nom se terminant par { $extension }
+files-is-a-folder = { $path } est un dossier ; choisis un nom de fichier
 files-holds-another-kind = { $path } contient { $found ->
         [state] un état enregistré (JSON)
         [png] une image PNG
@@ -25,7 +25,7 @@ files-holds-another-kind = { $path } contient { $found ->
         [scene] une scène (TOML)
         [gif] une animation GIF
        *[svg] une image SVG
-    } : le fichier reste inchangé ; choisissez un autre nom
+    } : le fichier reste inchangé ; choisis un autre nom
 
 ## La question avant de remplacer un fichier
 
@@ -45,7 +45,7 @@ files-open-file = Ouvrir
 files-save-file = Enregistrer
 files-cannot-list = impossible de lister { $path } : { $reason }
 files-not-a-file = { $path } n’est pas un fichier qui peut être ouvert
-files-type-a-name = saisissez un nom de fichier dans un dossier existant
+files-type-a-name = saisis un nom de fichier dans un dossier existant
 
 ## Enregistrer, ouvrir, partager
 
@@ -64,7 +64,6 @@ files-left-as-it-was = { $path } laissé tel quel
 files-opened = { $path } ouvert
 files-cannot-read-state = impossible de lire le fichier d’état { $path } : { $reason }
 files-state-refused = fichier d’état { $path } : { $reason }
-# « chaîne de partage » pour « share string » (un texte qui reproduit l’état ailleurs) : à vérifier
 files-copy-share = 🔗 Copier la chaîne de partage
 files-copy-share-hover = Reproduit exactement cet état sur une autre machine, bit pour bit
 files-share-copied = chaîne de partage copiée
@@ -83,7 +82,7 @@ files-wrote = { $path } écrit
 files-not-exported = non exporté : { $reason }
 files-export-cancelled = annulé : rien n’a été écrit
 files-export-crashed = l’export s’est arrêté sur une erreur interne
-files-gif-needed = { $path } : une animation s’écrit en GIF ; donnez un nom se terminant par .gif
+files-gif-needed = { $path } : une animation s’écrit en GIF ; donne un nom se terminant par .gif
 files-animation-heading = Animation pour une diapositive
 files-animation = Animation
 files-gif-file = Fichier GIF
@@ -105,7 +104,7 @@ files-undid = Annulé : { $changes }
 files-redid = Rétabli : { $changes }
 files-undo-convention = la convention (section { $from } → { $to })
 files-undo-n-turned = N tournée
-files-undo-n-flipped = N inversée
+files-undo-n-flipped = N retournée
 files-undo-scene-edit = la modification de { $scene }
 files-undo-scene = la scène ({ $from } → { $to })
 files-undo-w-or-n-typed = W ou N saisi

@@ -10,11 +10,11 @@ check-vector-not-finite = um vetor não finito (componentes NaN ou infinitas)
 check-verdict-wrong-side = Seu T volta para o meio de onde o raio veio: é a outra raiz para b (+ onde a raiz quadrada pede -). A causa comum é uma normal que aponta no sentido do raio, como a normal externa de uma esfera onde o raio sai dela, usada sem ser invertida.
 check-verdict-wrong-bend = Seu T se desvia para o lado errado: o sinal de a está trocado, então ele não se tornaria o raio incidente quando mu -> 1. A causa comum é misturar as convenções: W apontando de volta para a origem (Seção 1, a = -mu) usado na fórmula de W ao longo do raio (Seção 2, a = +mu), ou o contrário.
 check-verdict-reversed = Seu T é -T e aponta de volta para onde o raio veio: os dois sinais estão errados. A causa comum é devolver a direção para a origem em vez da direção de propagação, ou negar W duas vezes.
-check-verdict-not-finite-tir = Seu T tem componentes NaN ou infinitas. Este raio sofre reflexão total interna (k < 0): seu código tirou a raiz quadrada de um k negativo em vez de testar k antes.
+check-verdict-not-finite-tir = Seu T tem componentes NaN ou infinitas. Este raio sofre reflexão total (k < 0): seu código tirou a raiz quadrada de um k negativo em vez de testar k antes.
 check-verdict-not-finite-refracts = Seu T tem componentes NaN ou infinitas, embora este raio seja refratado normalmente (k >= 0): procure uma divisão por zero ou um vetor não inicializado.
-check-verdict-tir-right = Certo: este raio sofre reflexão total interna (k < 0) e seu código devolveu a reflexão (ou o vetor nulo com que o GLSL indica isso).
-check-verdict-tir-but-refracted = Este raio sofre reflexão total interna (k = { $k } < 0): não há raio refratado, mas seu código devolveu um. Teste k antes de tirar a raiz quadrada.
-check-verdict-zero-vector = Seu T é o vetor nulo, que o GLSL devolve na reflexão total interna, mas este raio é refratado (k >= 0). Verifique o sinal de k e a razão dos índices.
+check-verdict-tir-right = Certo: este raio sofre reflexão total (k < 0) e seu código devolveu a reflexão (ou o vetor nulo com que o GLSL indica isso).
+check-verdict-tir-but-refracted = Este raio sofre reflexão total (k = { $k } < 0): não há raio refratado, mas seu código devolveu um. Teste k antes de tirar a raiz quadrada.
+check-verdict-zero-vector = Seu T é o vetor nulo, que o GLSL devolve na reflexão total, mas este raio é refratado (k >= 0). Verifique o sinal de k e a razão dos índices.
 check-verdict-not-unit = Além disso, seu T tem comprimento { $length }, não 1: normalize W e N antes de refratar (a fórmula supõe vetores unitários) ou T depois.
 check-verdict-along-refracted = Seu T aponta ao longo do raio refratado (com até { $off } rad de diferença).
 check-verdict-right = Certo: seu T é o raio refratado (com até { $off } rad de diferença).
@@ -29,7 +29,6 @@ check-t-yours-missing = falta o campo `t_yours` (o T que seu código produziu)
 
 ## Explicações de um veredicto sobre uma chamada de API (`check --api` e o painel): como cada API fala
 
-# Fica depois de “No …” (“No GLSL”, “No livro”).
 check-api-owner = { $api ->
     [glsl] GLSL
     [pbrt] pbrt
@@ -108,8 +107,8 @@ check-incident-reversed-travel = No { $owner }, { $incident } é { $means }; o s
 check-not-unit-input = { $call } supõe { $incident } e { $normal } unitários e não os normaliza: |{ $incident }| = { $incident_length }, |{ $normal }| = { $normal_length }; normalize-os antes.
 check-normal-against = { $call } precisa de { $normal } oposta a { $incident } (dot({ $normal }, { $incident }) < 0) e não a inverte; a sua tem dot({ $normal }, { $incident }) = { $dot }, como uma normal externa onde o raio sai do objeto: passe -{ $normal } = { $flipped } ({ $fix }).
 check-normal-either-side = { $call } aceita { $normal } de qualquer lado, mas { $eta } deve combinar com ela: é { $means }. Sua { $normal } aponta para o lado oposto daquela para a qual { $eta } = { $value } foi pensado{ $inward }; passe -{ $normal } = { $flipped } com o mesmo { $eta } (ou mantenha { $normal } e passe 1/{ $eta }).
-check-tir-glsl = O refract do GLSL devolve aqui o vetor nulo (k = { $k } < 0: reflexão total interna); teste isso e reflita em vez de refratar.
-check-tir-pbrt = O Refract do pbrt devolve aqui false (sin2Theta_t = { $sin2 } >= 1: reflexão total interna); reflita em vez de refratar.
+check-tir-glsl = O refract do GLSL devolve aqui o vetor nulo (k = { $k } < 0: reflexão total); teste isso e reflita em vez de refratar.
+check-tir-pbrt = O Refract do pbrt devolve aqui false (sin2Theta_t = { $sin2 } >= 1: reflexão total); reflita em vez de refratar.
 check-tir-rtiow = Aqui vale o cannot_refract de dielectric::scatter (ri * sin_theta = { $sine } > 1): o livro reflete em vez de chamar refract.
 check-tir-mitsuba = fresnel devolve aqui F = 1 (cos_theta_t_sqr = { $k } < 0): o Mitsuba sempre reflete.
 check-tir-got-formula = Seu código usou mesmo assim o vetor da fórmula, { $vector } de comprimento { $length }: não é um raio.
@@ -123,7 +122,7 @@ check-unchecked = Verificado só pelas regras da própria API: informe { $missin
 check-unexplained-travel = O { $incident } registrado está a { $degrees } graus da direção { $travel } deste raio: não é a direção deste raio (nem a oposta).
 check-unexplained-eta = { $eta } = { $value } não corresponde nem a n_from/n_to = { $mu } nem ao seu inverso do jeito que { $call } o lê: estes não são os índices desta interface.
 check-unexplained = Nenhuma combinação de erros nos argumentos faz esta chamada corresponder à referência dada.
-check-right-tir = Certo: { $call } indica aqui reflexão total interna ({ $returned }), e a chamada deu { $what }.
+check-right-tir = Certo: { $call } indica aqui reflexão total ({ $returned }), e a chamada deu { $what }.
 check-right-for-ray = Certo: { $call } devolve { $returned } para estes argumentos, para um raio { $situation }.
 check-right = Certo: { $call } devolve { $returned } para estes argumentos.
 
@@ -133,7 +132,7 @@ check-mistake-eta-inverted = a razão dos índices invertida para a convenção 
 check-mistake-incident-reversed = o vetor incidente passado ao contrário
 check-mistake-normal-not-facing = a normal do lado errado para esta API (ou para o eta passado)
 check-mistake-not-the-api-result = o resultado não é o que a API devolve para estes argumentos: sua própria implementação difere
-check-mistake-missed-tir = uma direção (ou NaN) onde a API indica reflexão total interna
+check-mistake-missed-tir = uma direção (ou NaN) onde a API indica reflexão total
 check-mistake-not-unit-input = o vetor incidente ou a normal não tem comprimento unitário
 
 ## O painel: os campos deste projeto
@@ -145,7 +144,7 @@ check-convention-along-ray = Seção 2: W ao longo do raio
 check-convention-along-ray-about = W é a direção em que o raio viaja, em direção à superfície (o I do GLSL, o uv do livro).
 check-convention-toward-origin = Seção 1: W para a origem
 check-convention-toward-origin-about = W aponta de volta para onde o raio veio (o wi do pbrt e do Mitsuba).
-check-convention-note = { $about } μ = μi/μt; N de qualquer lado (o núcleo a vira para o raio).
+check-convention-note = { $about } μ = μi/μt; N de qualquer lado (o kernel a vira para o raio).
 check-paste-hint = Cole o que seu traçador de raios registrou. Vetores como 0.1, -0.9, 0 ou [0.1,-0.9,0] ou vec3(0.1, -0.9, 0.0); ou cole uma linha JSON inteira com t_yours em “Seu T”.
 check-use-current-case = Usar o caso atual
 check-use-current-case-own-hover = Preencher W, N, μ e a convenção a partir do explorador
@@ -161,9 +160,9 @@ check-match-not-unit = a direção de T, mas sem comprimento unitário
 check-match-wrong-side = lado errado (a outra raiz para b)
 check-match-wrong-bend = desvio errado (o outro sinal de a)
 check-match-reversed = invertido (−T: os dois sinais errados)
-check-match-tir = reflexão total interna, respondida corretamente
+check-match-tir = reflexão total, respondida corretamente
 check-match-none = nenhum dos quatro candidatos
-check-no-refracted-ray = Não há raio refratado: reflexão total interna.
+check-no-refracted-ray = Não há raio refratado: reflexão total.
 check-right-t = O T correto = { $t }
 check-not-drawn-changed = (O caso mudou desde então: o veredicto não é desenhado.)
 
@@ -176,10 +175,10 @@ check-drawn-incident = { $api ->
    *[mitsuba] wi (afastando-se da superfície)
 }
 check-drawn-about = { $api ->
-    [glsl] I é a direção em que o raio viaja, desenhada como W ao longo do raio (Seção 2). N deve ficar oposta a I: o GLSL não a vira. eta = n_from/n_to = μi/μt. O vetor nulo significa reflexão total interna.
-    [pbrt] wi aponta de volta para onde o raio veio (−ray.d), desenhado como W para a origem (Seção 1). n pode ficar de qualquer lado: o pbrt a inverte e inverte eta quando wi está abaixo dela. eta = o índice atrás de n sobre o da frente (μt/μi com n voltada para wi). false significa reflexão total interna.
-    [rtiow] uv é a direção unitária em que o raio viaja, desenhada como W ao longo do raio (Seção 2). n deve ficar oposta a uv (front_face). etai_over_etat = n_from/n_to = μi/μt. refract não testa a reflexão total interna: quem reflete é o cannot_refract de quem chama.
-   *[mitsuba] wi se afasta da superfície, de volta ao longo do raio, desenhado como W para a origem (Seção 1). n é +z (o referencial local) quando fica vazio. eta = int_ior/ext_ior, o índice atrás de n sobre o da frente (μt/μi com n voltada para wi). F = 1 significa reflexão total interna: wo é null.
+    [glsl] I é a direção em que o raio viaja, desenhada como W ao longo do raio (Seção 2). N deve ficar oposta a I: o GLSL não a vira. eta = n_from/n_to = μi/μt. O vetor nulo significa reflexão total.
+    [pbrt] wi aponta de volta para onde o raio veio (−ray.d), desenhado como W para a origem (Seção 1). n pode ficar de qualquer lado: o pbrt a inverte e inverte eta quando wi está abaixo dela. eta = o índice atrás de n sobre o da frente (μt/μi com n voltada para wi). false significa reflexão total.
+    [rtiow] uv é a direção unitária em que o raio viaja, desenhada como W ao longo do raio (Seção 2). n deve ficar oposta a uv (front_face). etai_over_etat = n_from/n_to = μi/μt. refract não testa a reflexão total: quem reflete é o cannot_refract de quem chama.
+   *[mitsuba] wi se afasta da superfície, de volta ao longo do raio, desenhado como W para a origem (Seção 1). n é +z (o referencial local) quando fica vazio. eta = int_ior/ext_ior, o índice atrás de n sobre o da frente (μt/μi com n voltada para wi). F = 1 significa reflexão total: wo é null.
 }
 check-convention-about = Convenção: { $about }
 check-your-call = Sua chamada
@@ -191,7 +190,7 @@ check-student-wrong = errado
 check-api-right-headline = Certo: o que { $signature } significa para este raio
 check-api-mistakes = Erros: { $codes }
 check-api-unexplained-headline = Nenhum erro isolado explica isto
-check-api-returns = { $owner } devolve { $value }
+check-api-returns = Resultado no { $owner }: { $value }
 check-api-drawn = Desenhado: a chamada correta, { $incident } = { $incident_value }, { $normal } = { $normal_value }, { $eta } = { $eta_value } (μi = { $mu_i }, μt = { $mu_t }).
 check-api-not-drawn = Não desenhado: { $why }.
 check-copy-as-test = Copiar como teste unitário:
@@ -254,8 +253,11 @@ check-csv-no-column = o cabeçalho CSV não tem a coluna `{ $field }`: ele nomei
 check-csv-partial-vector = o cabeçalho CSV tem só { $count } das 3 componentes de `{ $field }`
 check-csv-duplicate-column = o cabeçalho CSV nomeia `{ $column }` mais de uma vez
 check-csv-cells = { $count ->
-    [one] { $count } célula onde o cabeçalho tem { $columns } colunas
-   *[other] { $count } células onde o cabeçalho tem { $columns } colunas
+    [one] { $count } célula
+   *[other] { $count } células
+} onde o cabeçalho tem { $columns ->
+    [one] { $columns } coluna
+   *[other] { $columns } colunas
 }
 check-csv-no-header = nenhum cabeçalho CSV utilizável: { $reason }
 check-pattern-unclosed = `{"{"}` não fechado no padrão “{ $pattern }”
@@ -275,7 +277,7 @@ check-vector-not-three = esperavam-se 3 números como `0.1, -0.9, 0` ou `vec3(0.
 check-mistake-no-flip-inside = para um raio que chega do outro lado da normal, o código não inverte a normal nem a razão
 check-mistake-normal-term-sign = a parte do resultado ao longo da normal tem o sinal errado; a parte transversal está certa
 check-mistake-other-root = a outra raiz: o sinal da raiz quadrada trocado, o resultado espelhado em relação à superfície
-check-mistake-false-tir = reflexão interna total indicada onde o raio refrata
+check-mistake-false-tir = reflexão total indicada onde o raio refrata
 check-diagnosis-no-lines = Nenhuma linha foi julgada ({ $lines } lidas): confira o padrão, o cabeçalho CSV ou os campos das linhas.
 check-physics-explained = É isso que uma refração dá com este erro: { $mistakes }.
 check-looks-normal-term = a resposta da API com a parte ao longo da normal negada: o termo ao longo da normal é subtraído onde é somado, ou o contrário
@@ -296,8 +298,8 @@ check-where-outside = { $count ->
    *[other] em todas as linhas cujo raio chega de fora ({ $count }), e em nenhuma de dentro
 }
 check-where-past-critical = { $count ->
-    [one] na única linha além do ângulo crítico, e em nenhuma outra
-   *[other] em todas as linhas além do ângulo crítico ({ $count }), e em nenhuma outra
+    [one] na única linha além do ângulo limite, e em nenhuma outra
+   *[other] em todas as linhas além do ângulo limite ({ $count }), e em nenhuma outra
 }
 check-where-some-sides = em { $count } de { $all } linhas julgadas ({ $inside } vindas de dentro, { $outside } de fora)
 check-where-some = em { $count } de { $all } linhas julgadas
@@ -311,7 +313,7 @@ check-fix-generic-no-flip-inside = para um raio que chega de dentro, inverta a n
 check-fix-generic-normal-term-sign = some o termo ao longo da normal: T = μ·W + (μ·cosθi − cosθt)·N, com N voltada para o raio
 check-fix-generic-other-root = tome a raiz com −√k: T = μ·W + (μ·cosθi − √k)·N, com N voltada para o raio
 check-fix-generic-missed-tir = reflita quando k = 1 − μ²·(1 − cos²θi) for negativo, antes de tirar a raiz quadrada
-check-fix-generic-false-tir = indique reflexão interna total só onde k = 1 − μ²·(1 − cos²θi) for negativo
+check-fix-generic-false-tir = indique reflexão total só onde k = 1 − μ²·(1 − cos²θi) for negativo
 check-fix-generic-not-unit-input = normalize W e N antes de refratar
 check-fix-generic-not-the-api-result = compare sua refração com T = μ·W + (μ·cosθi − √k)·N nas linhas indicadas, como diz a explicação de cada uma
 check-physics-no-indices = faltam os índices: dê `mu_i` e `mu_t`, ou `entering` com --inside e --outside

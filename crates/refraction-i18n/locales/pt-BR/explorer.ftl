@@ -18,7 +18,7 @@ tool-fresnel = Fresnel
 presentation-toggle = 🖵 Apresentação
 presentation-toggle-hover = Tela cheia, tudo maior (F11)
 presentation-theme = Tema
-presentation-theme-hover = Padrão ou alto contraste: preto no branco ou branco no preto
+presentation-theme-hover = Padrão ou alto contraste: preto sobre branco ou branco sobre preto
 presentation-colour-blind = Para daltônicos
 presentation-colour-blind-hover = Só cores Okabe–Ito; cada raio também tem seu próprio tracejado e rótulo
 language-menu = Idioma
@@ -43,7 +43,6 @@ panel-hide-numbers = Ocultar os números ({ $key })
 ## Abaixo do diagrama
 
 canvas-hint = Arraste W, N ou um marcador μ; clique em um deles (ou no diagrama) para usar as setas do teclado
-# Verificar: “alça” para “handle” (ponto de arrasto de um objeto).
 canvas-hint-ray = ←/→ gira 1° (Shift: 0,1°) · +/− μt · Tab: próxima alça · arraste para mover
 canvas-hint-index = ↑/↓ ou +/− mudam o índice em 0,01 (Shift: 0,001) · Tab: próxima alça
 
@@ -58,10 +57,10 @@ controls-convention = Convenção
 controls-convention-toward-origin = Seção 1: W aponta de volta para a origem
 controls-convention-along-ray = Seção 2: W é a direção de propagação
 controls-flip-normal = Inverter N
-controls-flip-normal-hover = Inverte a normal: é assim uma normal externa onde um raio sai do vidro
+controls-flip-normal-hover = Inverte a normal, como fica uma normal externa onde um raio sai do vidro
 controls-snap = Ajustar W a θc
-controls-snap-hover = Coloca W no ângulo crítico (requer μi > μt)
-controls-snap-disabled = Só há ângulo crítico quando μi > μt
+controls-snap-hover = Coloca W no ângulo limite (requer μi > μt)
+controls-snap-disabled = Só há ângulo limite quando μi > μt
 controls-indices = Índices
 # $symbol é μi ou μt.
 controls-index-value = Valor de { $symbol }
@@ -83,7 +82,7 @@ typed-not-three-numbers = { $name }: esperados três números x, y, z; recebidos
 ## O painel de números
 
 readouts-discriminant = Discriminante k = μ²wn² − μ² + 1 = { $k } ≥ 0: T existe
-readouts-discriminant-tir = Discriminante k = μ²wn² − μ² + 1 = { $k } < 0: reflexão total interna
+readouts-discriminant-tir = Discriminante k = μ²wn² − μ² + 1 = { $k } < 0: reflexão total
 # $section é a seção da fonte (1 ou 2) cuja equação 20 é esta.
 readouts-quadratic = Eq. { $section }.20, a equação do segundo grau em b: b² + 2a·wn·b + a² − 1 = 0 com a = { $a }, wn = { $wn }
 readouts-no-roots = sem raízes reais: a parábola não chega mais a zero
@@ -93,13 +92,11 @@ readouts-plot-roots = raízes
 readouts-candidates = Os quatro candidatos
 readouts-candidate = candidato
 # Os cabeçalhos de coluna das verificações: a lei de Snell ao quadrado (a eq. 10 da fonte), o lado da superfície em que T está, o sentido em que T se desvia.
-# Verificar: “desvio” para “bend” (se T se aproxima ou se afasta da normal).
-readouts-check-snell = eq.10
+readouts-check-snell = eq. 10
 readouts-check-side = lado
 readouts-check-bend = desvio
 readouts-no-candidates = Nenhum candidato: k < 0, então b não tem raízes reais e T não existe.
 readouts-candidates-note = Os quatro são unitários e satisfazem a lei de Snell ao quadrado (eq. 10): elevar ao quadrado não os distingue. Só o lado e o desvio (o argumento μ = 1 da fonte) escolhem T.
-# Verificar: “kernel” (a rotina de refração) fica como anglicismo; “núcleo”? Aqui e no resto do arquivo.
 readouts-warnings = Avisos do kernel
 readouts-no-warnings = Sem avisos: W e N são unitários e N está voltado para o raio.
 readouts-warning-not-unit = { $vector } tem comprimento { $length }, não 1: foi normalizado (vetores não normalizados são um bug comum em traçadores de raios)
@@ -123,11 +120,10 @@ fresnel-axis = ângulo de incidência θi (°)
 fresnel-now = θi atual
 fresnel-click-hint = Clique ou arraste no gráfico para definir θi.
 fresnel-at = Em θi = { $angle }°, de μi = { $mu_i } para μt = { $mu_t }.
-# Verificar: “tan” e “sin” ficam como no original; os livros didáticos brasileiros escrevem “tg” e “sen”.
-fresnel-brewster = Ângulo de Brewster θB = { $angle }°: ali nenhuma luz polarizada p é refletida (tan θB = μt/μi).
+fresnel-brewster = Ângulo de Brewster θB = { $angle }°: ali nenhuma luz polarizada p é refletida (tg θB = μt/μi).
 fresnel-equal-indices = Índices iguais: não há interface, nada é refletido.
-fresnel-critical = Ângulo crítico θc = { $angle }°: além dele, toda a luz é refletida (sin θc = μt/μi).
-fresnel-no-critical = Sem ângulo crítico: a luz passa para um meio de índice maior.
+fresnel-critical = Ângulo limite θc = { $angle }°: além dele, toda a luz é refletida (sen θc = μt/μi).
+fresnel-no-critical = Sem ângulo limite: a luz passa para um meio de índice maior.
 
 ## A visão Cenas
 
@@ -163,7 +159,6 @@ scenes-hit =
 ## A visão de precisão
 
 accuracy-heading = Quanto tempo custa a precisão
-# Verificar: “oráculo double-double” (referência calculada em precisão double-double).
 accuracy-intro = Cronometra cada variante do kernel em f32 e f64 nesta máquina e mede seu erro em relação a um oráculo double-double em incidências aleatórias e difíceis. O gráfico mostra o maior erro do conjunto difícil em unidades de ε·κ (o que o algoritmo perde além do que o próprio problema amplifica) em função dos nanossegundos por raio.
 accuracy-quick = Execução rápida (alguns segundos)
 accuracy-measure = Medir
@@ -183,5 +178,4 @@ accuracy-column-time = ns/raio
 accuracy-column-random = erro máx. aleatório
 accuracy-column-hard = erro máx. difícil
 accuracy-column-eps-kappa = difícil ε·κ
-# Verificar: “RTI” como sigla de reflexão total interna.
-accuracy-column-tir = divergências RTI
+accuracy-column-tir = divergências de reflexão total

@@ -64,7 +64,6 @@ files-left-as-it-was = { $path } ficou como estava
 files-opened = { $path } aberto
 files-cannot-read-state = não é possível ler o arquivo de estado { $path }: { $reason }
 files-state-refused = arquivo de estado { $path }: { $reason }
-# “texto de compartilhamento” para “share string” (um texto que reproduz o estado em outro lugar): a conferir
 files-copy-share = 🔗 Copiar texto de compartilhamento
 files-copy-share-hover = Reproduz exatamente este estado em outra máquina, bit a bit
 files-share-copied = texto de compartilhamento copiado

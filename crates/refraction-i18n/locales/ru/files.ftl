@@ -50,7 +50,6 @@ files-type-a-name = введите имя файла в существующей
 ## Сохранить, открыть, поделиться
 
 files-state-file = Файл состояния
-# «соглашение» — выбор знаков (convention): проверить
 files-save = 💾 Сохранить
 files-save-hover = Записать W, N, μ и соглашение как строку JSON для solve
 files-open = 🗁 Открыть
@@ -65,7 +64,6 @@ files-left-as-it-was = { $path } оставлен без изменений
 files-opened = открыто: { $path }
 files-cannot-read-state = не удаётся прочитать файл состояния { $path }: { $reason }
 files-state-refused = файл состояния { $path }: { $reason }
-# «строка обмена» для «share string» (текст, который воспроизводит состояние в другом месте): проверить
 files-copy-share = 🔗 Копировать строку обмена
 files-copy-share-hover = Воспроизводит ровно это состояние на другом компьютере, бит в бит
 files-share-copied = строка обмена скопирована
@@ -106,7 +104,7 @@ files-undid = Отменено: { $changes }
 files-redid = Повторено: { $changes }
 files-undo-convention = соглашение (раздел { $from } → { $to })
 files-undo-n-turned = N повёрнута
-files-undo-n-flipped = N перевёрнута
+files-undo-n-flipped = N развёрнута
 files-undo-scene-edit = правка сцены { $scene }
 files-undo-scene = сцена ({ $from } → { $to })
 files-undo-w-or-n-typed = W или N введены

@@ -145,7 +145,7 @@ impl Header {
     pub fn record(&self, line: &str) -> Result<Record, String> {
         let cells = cells(line)?;
         if cells.len() != self.columns.len() {
-            let (count, columns) = (cells.len(), self.columns.len().to_string());
+            let (count, columns) = (cells.len(), self.columns.len());
             return Err(t!("check-csv-cells", count = count, columns = columns));
         }
         let mut texts: Vec<(&str, String)> = Vec::new();

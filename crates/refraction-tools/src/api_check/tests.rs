@@ -580,7 +580,7 @@ fn explanations_come_in_the_threads_language_with_its_decimal_comma() {
     assert_eq!(mistakes(&a), ["eta_inverted"], "the codes stay the JSON's");
     let explanation = a["explanation"].as_str().unwrap();
     assert!(
-        explanation.starts_with("Bei GLSL ist eta n_from/n_to")
+        explanation.starts_with("In GLSL ist eta n_from/n_to")
             && explanation.contains("beim Eintritt in das Objekt (von n = 1 nach n = 1,5)")
             && explanation.contains("übergib 1/1,5 = 0,666667"),
         "{explanation}"
