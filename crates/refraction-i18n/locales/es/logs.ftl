@@ -12,7 +12,7 @@ logs-not-listed = { $count ->
 }
 logs-diagnosis-heading = Diagnóstico del registro entero
 logs-map-heading = Mapa de fallos
-logs-map-hover = Cuánto se aleja la dirección de cada línea juzgada de la correcta, frente al ángulo de incidencia, en un panel por cada lado del que llegan los rayos. Cuadrados: la respuesta correcta es la reflexión total interna.
+logs-map-hover = Cuánto se aleja la dirección de cada línea juzgada de la correcta, frente al ángulo de incidencia, en un panel por cada lado del que llegan los rayos. Cuadrados: la respuesta correcta es la reflexión total.
 logs-open = 🗁 Abrir registro…
 logs-open-hover = Lee un archivo de registro (o suéltalo en la ventana): se juzgan y diagnostican hasta { $most } líneas.
 logs-what-log = registro
@@ -32,7 +32,7 @@ logs-write-failed = No se pudo escribir { $path }: { $reason }
 
 diagram-failure-right = correcta
 diagram-failure-wrong = errónea
-diagram-failure-past-critical = respuesta correcta: reflexión total interna
+diagram-failure-past-critical = respuesta correcta: reflexión total
 diagram-failure-panel = { $side ->
     [outside] Llegan desde fuera
     [inside] Llegan desde dentro
