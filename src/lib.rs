@@ -4,6 +4,6 @@
 //! [`refraction_render`] (drawn off screen) and [`refraction_tools`] (`solve`, `check` and
 //! state files). The commands are in the binary (`src/main.rs`, `src/commands/`).
 //!
-//! - [`app`]: the explorer window (eframe, egui, `egui_plot`).
+//! - [`app`]: the explorer window (eframe, egui); its plots are the diagram crate's.
 
 pub mod app;

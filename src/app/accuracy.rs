@@ -1,21 +1,17 @@
 //! The "Accuracy vs time" view: runs the `bench` measurement in a background thread with a
 //! progress bar (the window never freezes), then plots largest hard-set error against time per
 //! ray on log axes, one marker per variant and precision, and names the fastest variant within
-//! 10× of the best accuracy.
+//! 10× of the best accuracy. The plot is the diagram crate's, as `bench --plot` draws it.
 
 use refraction_i18n::t;
 use std::sync::{Arc, Mutex, PoisonError};
 
 use egui::{Grid, ProgressBar, RichText, Ui};
-use egui_plot::{
-    Corner, GridInput, GridMark, HLine, HoverPosition, Legend, MarkerShape, Plot, Points,
-};
+use glam::Vec2;
 
-use super::paint::color;
 use refraction_bench::Config;
-use refraction_diagram::accuracy_plot::{
-    BOUND, FLOOR, Marker, axes, decade_label, point_label, variant_colour, variant_marker,
-};
+use refraction_diagram::accuracy_plot::{marker_positions, point_label, primitives};
+use refraction_diagram::font::Typeface;
 use refraction_diagram::numbers::number;
 use refraction_diagram::palette::Palette;
 use refraction_model::report::Report;
@@ -33,36 +29,6 @@ pub struct AccuracyView {
     quick: bool,
     running: Option<Arc<Mutex<Progress>>>,
     report: Option<Report>,
-}
-
-/// Grid marks of a log10 axis: every power of ten, and 2× and 5× it in between.
-#[expect(
-    clippy::needless_pass_by_value,
-    reason = "egui_plot calls a grid spacer with the input by value"
-)]
-fn decades(input: GridInput) -> Vec<GridMark> {
-    let (low, high) = input.bounds;
-    (low.floor() as i32..=high.ceil() as i32)
-        .flat_map(|e| {
-            [(1.0, 1.0), (2.0, 0.5), (5.0, 0.5)].map(|(m, step_size)| GridMark {
-                value: f64::from(e) + f64::log10(m),
-                step_size,
-            })
-        })
-        .filter(|mark| (low..=high).contains(&mark.value))
-        .collect()
-}
-
-/// The value of a log10 coordinate as a label: `0.2`, `50`, `1e4`, `5e-3`.
-fn decade_text(mark: GridMark) -> String {
-    let value = 10f64.powf(mark.value);
-    if mark.value.fract() == 0.0 {
-        decade_label(mark.value as i32)
-    } else if (0.01..1e4).contains(&value) {
-        format!("{}", (value * 1e3).round() / 1e3)
-    } else {
-        format!("{value:.0e}")
-    }
 }
 
 impl AccuracyView {
@@ -150,70 +116,41 @@ impl AccuracyView {
     }
 }
 
-/// Error against time, both log10-transformed (`egui_plot` has no log axes), framed on whole
-/// decades like the `bench --plot` image.
+/// The plot as `bench --plot` and `render --view accuracy` draw it (markers by variant,
+/// each named beside it, the bound, whole decades), painted across the view; hovering a marker
+/// shows its figures.
 fn plot(ui: &mut Ui, report: &Report, palette: &Palette) {
-    let (x, y) = axes(report);
-    Plot::new("accuracy-plot")
-        .height((ui.available_height() * 0.6).max(260.0))
-        .legend(Legend::default().position(Corner::LeftTop))
-        .default_x_bounds(x.low, x.high)
-        .default_y_bounds(y.low, y.high)
-        .x_axis_label(t!("accuracy-axis-time"))
-        .y_axis_label(t!("accuracy-axis-error"))
-        .x_grid_spacer(decades)
-        .y_grid_spacer(decades)
-        .x_axis_formatter(|mark, _| decade_text(mark))
-        .y_axis_formatter(|mark, _| decade_text(mark))
-        .label_formatter(|hover| {
-            let (name, at) = match hover {
-                HoverPosition::NearDataPoint {
-                    plot_name,
-                    position,
-                    ..
-                } => (*plot_name, position),
-                HoverPosition::Elsewhere { position } => ("", position),
-            };
-            Some(t!(
-                "accuracy-hover",
-                name = name,
-                time = number(10f64.powf(at.x), 3),
-                error = number(10f64.powf(at.y), 3)
-            ))
-        })
-        .show(ui, |plot| {
-            plot.hline(
-                HLine::new(
-                    t!("accuracy-bound", bound = number(BOUND, 0)),
-                    BOUND.log10(),
-                )
-                .color(color(palette.alarm)),
-            );
-            for row in &report.rows {
-                let at = [
-                    row.ns_per_ray.log10(),
-                    row.max_err_hard_eps_kappa.max(FLOOR).log10(),
-                ];
-                plot.points(
-                    Points::new(point_label(row), vec![at])
-                        .shape(marker_shape(variant_marker(row.variant)))
-                        .filled(row.precision == "f64")
-                        .radius(6.0)
-                        .color(color(variant_colour(row.variant, palette))),
-                );
-            }
-        });
-}
-
-/// `egui_plot`'s shape for a variant's marker.
-fn marker_shape(marker: Marker) -> MarkerShape {
-    match marker {
-        Marker::Circle => MarkerShape::Circle,
-        Marker::Square => MarkerShape::Square,
-        Marker::Diamond => MarkerShape::Diamond,
-        Marker::Triangle => MarkerShape::Up,
-        Marker::Plus => MarkerShape::Plus,
-        Marker::Cross => MarkerShape::Cross,
+    let Ok(face) = Typeface::egui_default() else {
+        return;
+    };
+    let width = ui.available_width();
+    let height = (ui.available_height() * 0.6).clamp(300.0, width * 0.62);
+    let size = Vec2::new(width, height);
+    let about = t!("accuracy-plot-about", count = report.rows.len());
+    let (response, painter, to_screen) =
+        super::paint::figure(ui, size, egui::Sense::hover(), &about);
+    super::paint::paint(
+        &painter,
+        &to_screen,
+        &primitives(report, size, &face, palette),
+    );
+    let Some(pointer) = response.hover_pos() else {
+        return;
+    };
+    let at = to_screen.inverse().transform_pos(pointer);
+    let nearest = marker_positions(report, size)
+        .into_iter()
+        .zip(&report.rows)
+        .map(|(p, row)| (p.distance(Vec2::new(at.x, at.y)), row))
+        .filter(|(d, _)| *d < 16.0)
+        .min_by(|a, b| a.0.total_cmp(&b.0));
+    if let Some((_, row)) = nearest {
+        response.on_hover_text(t!(
+            "accuracy-hover",
+            name = point_label(row),
+            time = number(row.ns_per_ray, 3),
+            error = number(row.max_err_hard_eps_kappa, 3)
+        ));
     }
 }
 
@@ -244,33 +181,4 @@ fn table(ui: &mut Ui, report: &Report) {
             ui.end_row();
         }
     });
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn decade_marks_and_labels() {
-        let marks = decades(GridInput {
-            bounds: (-1.3, 2.2),
-            base_step_size: 0.1,
-        });
-        let whole: Vec<f64> = marks
-            .iter()
-            .filter(|m| m.step_size == 1.0)
-            .map(|m| m.value)
-            .collect();
-        assert_eq!(whole, [-1.0, 0.0, 1.0, 2.0]);
-        assert_eq!(marks.len(), 10);
-        let label = |value| {
-            decade_text(GridMark {
-                value,
-                step_size: 1.0,
-            })
-        };
-        assert_eq!(label(-1.0), "0.1");
-        assert_eq!(label(2.0_f64.log10()), "2");
-        assert_eq!(label(-3.0 + 5.0_f64.log10()), "5e-3");
-    }
 }

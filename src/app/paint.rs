@@ -113,6 +113,23 @@ pub fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[Primiti
     painter.extend(shapes);
 }
 
+/// Room for a figure of the diagram crate's across `size` points of `ui`, named `about` for
+/// screen readers: the response, the painter and the map from the canvas to the screen, to
+/// [`paint`] the figure's primitives with, as the exports draw them.
+pub fn figure(
+    ui: &mut Ui,
+    size: Vec2,
+    sense: egui::Sense,
+    about: &str,
+) -> (Response, Painter, RectTransform) {
+    let (response, painter) = ui.allocate_painter(egui::vec2(size.x, size.y), sense);
+    let canvas = egui::Rect::from_min_size(Pos2::ZERO, egui::vec2(size.x, size.y));
+    let to_screen = RectTransform::from_to(canvas, response.rect);
+    let about = about.to_owned();
+    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Figure, true, &about));
+    (response, painter, to_screen)
+}
+
 /// Shows, beside the pointer, the text of the label the placer left out whose anchor is
 /// nearest the pointer, when it is within `reach` canvas pixels: a label with no free spot is
 /// not drawn over anything, but can still be read. `to_screen` maps canvas to screen points.

@@ -2,7 +2,6 @@
 //! equations with numbers, and the kernel's warnings. Every number is the kernel's.
 
 use egui::{Grid, RichText, Sense, Stroke, Ui, Vec2};
-use egui_plot::{HLine, Line, Plot, Points};
 use refraction_i18n::t;
 
 use super::paint::color;
@@ -49,38 +48,19 @@ fn quadratic(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
         a = number(q.a, 3),
         wn = number(q.wn, 3)
     ));
-    let roots: Vec<[f64; 2]> = q.roots.iter().map(|b| [*b, 0.0]).collect();
-    let caption = if roots.is_empty() {
+    let caption = if q.roots.is_empty() {
         t!("readouts-no-roots")
     } else {
         let values: Vec<String> = q.roots.iter().map(|b| number(*b, 4)).collect();
         let separator = refraction_i18n::locale().list_separator();
         t!("readouts-roots", roots = values.join(separator))
     };
-    let ((x0, x1), (y0, y1)) = q.window();
-    Plot::new("quadratic-in-b")
-        .height(150.0)
-        .allow_drag(false)
-        .allow_zoom(false)
-        .allow_scroll(false)
-        .allow_boxed_zoom(false)
-        .allow_double_click_reset(false)
-        .default_x_bounds(x0, x1)
-        .default_y_bounds(y0, y1)
-        .reset()
-        .show(ui, |plot| {
-            plot.hline(HLine::new(t!("readouts-plot-zero"), 0.0).color(color(palette.guide)));
-            plot.line(
-                Line::new("f(b)", q.samples((x1 - x0) * 0.5, 161))
-                    .color(color(palette.t))
-                    .width(2.0),
-            );
-            plot.points(
-                Points::new(t!("readouts-plot-roots"), roots)
-                    .radius(5.0)
-                    .color(color(palette.warning)),
-            );
-        });
+    // The parabola as the diagram crate draws it, across the panel.
+    let size = glam::Vec2::new(ui.available_width(), 150.0);
+    let text = egui::TextStyle::Body.resolve(ui.style()).size.max(13.0);
+    let (_, painter, to_screen) = super::paint::figure(ui, size, egui::Sense::hover(), &caption);
+    let drawn = refraction_diagram::quadratic::primitives(&q, size, text, palette);
+    super::paint::paint(&painter, &to_screen, &drawn);
     ui.label(caption);
 }
 

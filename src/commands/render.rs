@@ -55,6 +55,22 @@ pub struct RenderArgs {
     /// The animation's frames per second (1 to 50; default 12).
     #[arg(long, value_name = "F", requires = "animate")]
     fps: Option<u32>,
+    /// What to draw of the single interface: the diagram (the default), the Fresnel plot of
+    /// its media with the cursor at its θi, or the accuracy-against-time plot of a quick
+    /// measurement (as the window's views draw them); not with SCENE or --animate.
+    #[arg(long, value_enum, default_value_t = ViewArg::Interface)]
+    view: ViewArg,
+}
+
+/// The views `render --view` draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum ViewArg {
+    /// The interface diagram.
+    Interface,
+    /// Reflectance and transmittance against θi.
+    Fresnel,
+    /// Error against time per ray, measured now (the quick set).
+    Accuracy,
 }
 
 /// The animation named `name` on the command line.
@@ -179,16 +195,51 @@ fn picture(args: &RenderArgs, format: ImageFormat) -> Result<Vec<u8>, String> {
              problem, SCENE a traced scene",
             state.display()
         )),
+        (Some(scene), None) if args.view != ViewArg::Interface => Err(format!(
+            "--view draws the single interface's views, not a scene ({scene}): give --state or \
+             nothing"
+        )),
         (Some(scene), None) => {
             let s = Scene::load(scene).map_err(|e| e.to_string())?;
             render::scene_file(&s, format, size, out).map_err(|e| e.to_string())
         }
         (None, state) => {
             let s = initial_state(state.as_deref())?;
-            render::interface_file(&s, &Overlay::default(), format, size, out)
-                .map_err(|e| e.to_string())
+            view_file(args.view, &s, format, size, out)
         }
     }
+}
+
+/// The single interface's `view` of `state` as the bytes of a `format` file of `size`.
+fn view_file(
+    view: ViewArg,
+    state: &ExplorerState,
+    format: ImageFormat,
+    size: (u32, u32),
+    out: &Path,
+) -> Result<Vec<u8>, String> {
+    let palette = refraction_diagram::palette::Palette::STANDARD;
+    let drawn = match view {
+        ViewArg::Interface => render::interface_file(state, &Overlay::default(), format, size, out),
+        ViewArg::Fresnel => {
+            let plot = refraction_diagram::fresnel_plot::FresnelPlot::of(state);
+            render::still(format, size, out, |canvas, face| {
+                refraction_diagram::fresnel_plot::primitives(&plot, canvas, face, &palette)
+            })
+        }
+        ViewArg::Accuracy => {
+            let mut progress = ProgressLine::on_terminal("measuring...");
+            let config = refraction_bench::Config::QUICK;
+            let report = refraction_bench::run(&config, &mut |f| progress.update(f));
+            if let Some(e) = progress.finish() {
+                return Err(format!("cannot write the progress to stderr: {e}"));
+            }
+            render::still(format, size, out, |canvas, face| {
+                refraction_diagram::accuracy_plot::primitives(&report, canvas, face, &palette)
+            })
+        }
+    };
+    drawn.map_err(|e| e.to_string())
 }
 
 /// The animation asked for as GIF bytes, with a progress line on a terminal. The frames, rate
@@ -198,6 +249,9 @@ fn animation(args: &RenderArgs, animation: Animation) -> Result<Vec<u8>, String>
         return Err(format!(
             "--animate draws the single interface, not a scene ({scene}): give --state or nothing"
         ));
+    }
+    if args.view != ViewArg::Interface {
+        return Err("--animate draws the diagram: leave out --view".to_owned());
     }
     let mut spec = AnimationSpec::new(animation, (args.width, args.height));
     spec.frames = args.frames.unwrap_or(spec.frames);

@@ -31,8 +31,18 @@ fn measuring_shows_progress_then_the_verdict() {
         h.step();
     }
     assert!(h.query_by_label_contains("measuring").is_none());
-    // Each variant and precision is named in the legend and in the table, the SIMD peer too.
+    // Each variant and precision is named beside its marker on the plot (painted, as the
+    // export draws it) and in the table, the SIMD peer too.
+    let painted = common::painted_texts(&h);
     for row in ["stable f32", "batch f64", "trig f32", "ultraviolet f32"] {
-        assert_eq!(h.query_all_by_label(row).count(), 2, "{row}");
+        assert_eq!(h.query_all_by_label(row).count(), 1, "{row} in the table");
+        assert!(
+            painted.iter().any(|t| t == row),
+            "{row} on the plot: {painted:?}"
+        );
     }
+    assert!(
+        h.query_by_label_contains("Accuracy against time: ")
+            .is_some()
+    );
 }

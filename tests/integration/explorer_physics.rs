@@ -68,9 +68,21 @@ fn the_fresnel_tool_names_its_landmarks_and_its_cursor_follows_the_drag() {
         h.query_by_label_contains("No critical angle: the light goes into a medium of higher")
             .is_some()
     );
-    assert!(h.query_by_label_contains("Hecht, Optics").is_some());
+    // The plot is the export's figure, painted: its legend, values and source are its texts.
+    let painted = common::painted_texts(&h);
+    for words in [
+        "Hecht, Optics",
+        "R_p (p light reflected)",
+        "R_p = ",
+        "θi = ",
+    ] {
+        assert!(
+            painted.iter().any(|t| t.contains(words)),
+            "{words}: {painted:?}"
+        );
+    }
     assert!(
-        h.query_by_label_contains("R_p (p light reflected): ")
+        h.query_by_label_contains("Fresnel plot: reflected and transmitted light")
             .is_some()
     );
     let before = format!("At θi = {:.1}°", h.state().state().incidence_degrees());

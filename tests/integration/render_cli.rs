@@ -138,3 +138,35 @@ fn a_bad_scene_or_a_scene_with_a_state_is_one_clear_line() {
     assert!(!folder.join("x.png").exists());
     std::fs::remove_dir_all(&folder).unwrap();
 }
+
+#[test]
+fn the_fresnel_and_accuracy_views_render_as_the_window_draws_them() {
+    // Issue 22: the plots the class sees are the plots it exports.
+    let folder = folder("views");
+    let state = folder.join("glass-to-air.json");
+    std::fs::write(
+        &state,
+        r#"{"w":[0.8,-0.6,0],"n":[0,1,0],"mu_i":1.5,"mu_t":1,"convention":"along_ray"}"#,
+    )
+    .unwrap();
+    let svg = folder.join("fresnel.svg");
+    let args = ["--view", "fresnel", "--state", state.to_str().unwrap()];
+    let output = render(&[&args[..], &["--out", svg.to_str().unwrap()]].concat());
+    assert!(output.status.success(), "{output:?}");
+    let text = std::fs::read_to_string(&svg).unwrap();
+    for words in ["Brewster", "critical angle θc = 41.8°", "Hecht"] {
+        assert!(text.contains(words), "{words} in the SVG");
+    }
+    let png = folder.join("accuracy.png");
+    let output = render(&["--view", "accuracy", "--out", png.to_str().unwrap()]);
+    assert!(output.status.success(), "{output:?}");
+    assert!(std::fs::read(&png).unwrap().starts_with(b"\x89PNG"));
+    fails_in_one_line(
+        &["slab", "--view", "fresnel", "--out", "x.png"],
+        "--view draws the single interface's views",
+    );
+    fails_in_one_line(
+        &["--view", "fresnel", "--animate", "mu", "--out", "x.gif"],
+        "leave out --view",
+    );
+}

@@ -1,7 +1,7 @@
 //! The `bench` report as a picture: maximum hard-set error (in ε·κ) against time per ray, both
 //! on log scales, one marker per variant and precision. Drawn by the PNG renderer for
-//! `bench --plot`; the explorer's "Accuracy vs time" view plots the same numbers with `egui_plot`
-//! and the same [`LogAxis`].
+//! `bench --plot` and `render --view accuracy`, and painted by the explorer's "Accuracy vs
+//! time" view: one plot for the screen and the exports.
 
 use glam::Vec2;
 
@@ -11,6 +11,7 @@ use super::geometry::{Colour, Rect};
 use super::layout::SMALLEST_TEXT;
 use super::palette::Palette;
 use super::placer::{Obstacle, Placer};
+use super::plot::MarkerStyle;
 use super::shapes::{Align, Dash, Figure, Label, Stroke, lower_all};
 use refraction_i18n::t;
 use refraction_model::report::{Report, Row};
@@ -202,6 +203,18 @@ pub fn primitives(
     lower_all(&shapes)
 }
 
+/// Where each row of `report` is marked on a canvas of `size`, in the order of its rows: what
+/// the window hovers over.
+#[must_use]
+pub fn marker_positions(report: &Report, size: Vec2) -> Vec<Vec2> {
+    let plot = Plot::new(report, size, &Palette::STANDARD);
+    report
+        .rows
+        .iter()
+        .map(|row| plot.at(row.ns_per_ray, row.max_err_hard_eps_kappa))
+        .collect()
+}
+
 /// The plot's area on the canvas and its two axes (where a time and an error are drawn),
 /// and its colours.
 struct Plot<'a> {
@@ -257,7 +270,9 @@ impl<'a> Plot<'a> {
                 stroke,
             });
             let left = Vec2::new(plot.min.x - size * 0.5, y);
-            let align = (Align::End, Align::Center);
+            // The lowest sits on the axis, clear of the first time under it.
+            let lowest = f64::from(e) <= self.y.low;
+            let align = (Align::End, if lowest { Align::End } else { Align::Center });
             shapes.push(text(decade_label(e), left, align, size, self.palette.ink));
         }
         shapes
@@ -352,21 +367,12 @@ impl<'a> Plot<'a> {
         let mut labels = Vec::new();
         for (row, p) in report.rows.iter().zip(&points) {
             let colour = variant_colour(row.variant, self.palette);
-            let filled = row.precision == "f64";
-            shapes.push(Figure::Disc {
-                center: *p,
-                radius,
-                fill: if filled {
-                    colour
-                } else {
-                    self.palette.background
-                },
-                outline: Stroke {
-                    width: 2.0,
-                    colour,
-                    dash: Dash::Solid,
-                },
-            });
+            let style = MarkerStyle {
+                shape: variant_marker(row.variant),
+                colour,
+                filled: row.precision == "f64",
+            };
+            shapes.extend(style.figures(*p, radius, self.palette.background));
             let label = Label {
                 text: point_label(row),
                 at: *p + Vec2::new(size * 0.8, 0.0),
@@ -424,13 +430,10 @@ mod tests {
         }
     }
 
-    #[test]
-    fn the_plot_takes_the_palettes_colours() {
-        let report = Report {
-            rows: vec![
-                row("stable", "f64", 3.0, 1.2),
-                row("seed", "f32", 1.5, 900.0),
-            ],
+    /// A report of `rows`, measured on ten rays of each set.
+    fn report(rows: Vec<Row>) -> Report {
+        Report {
+            rows,
             rays: 10,
             hard_rays: 10,
             streaming: refraction_model::report::Streaming {
@@ -439,33 +442,77 @@ mod tests {
                 memory_limit_ns_per_ray: 0.5,
             },
             cpu: "test".to_owned(),
-        };
+        }
+    }
+
+    #[test]
+    fn the_plot_takes_the_palettes_colours() {
+        let report = report(vec![
+            row("stable", "f64", 3.0, 1.2),
+            row("seed", "f32", 1.5, 900.0),
+        ]);
         let face = Typeface::egui_default().unwrap();
         let dark = Palette::new(crate::palette::Theme::HighContrastDark, true);
         let shapes = primitives(&report, Vec2::new(800.0, 500.0), &face, &dark);
         assert!(
             matches!(&shapes[0], Primitive::Polygon { colour, .. } if *colour == dark.background)
         );
-        let outlines: Vec<Colour> = shapes
-            .iter()
-            .filter_map(|p| match p {
-                Primitive::Disc { outline, .. } => Some(*outline),
-                _ => None,
-            })
-            .collect();
-        assert_eq!(
-            outlines,
-            [
-                variant_colour("stable", &dark),
-                variant_colour("seed", &dark)
-            ]
+        // The stable kernel's circle and the seed's cross (its two short bars), in the dark
+        // palette's colours.
+        let stable = variant_colour("stable", &dark);
+        assert!(
+            shapes
+                .iter()
+                .any(|p| matches!(p, Primitive::Disc { outline, .. } if *outline == stable))
         );
-        assert_ne!(outlines[0], variant_colour("stable", &Palette::STANDARD));
+        let seed = variant_colour("seed", &dark);
+        let bars = shapes
+            .iter()
+            .filter(|p| {
+                matches!(p, Primitive::Polyline { colour, points, .. }
+                if *colour == seed && points.len() == 2 && points[0].distance(points[1]) < 20.0)
+            })
+            .count();
+        assert!(bars >= 2, "{bars}");
+        assert_ne!(stable, variant_colour("stable", &Palette::STANDARD));
         for p in &shapes {
             if let Primitive::Text(label) = p {
                 assert_ne!(label.colour, Palette::STANDARD.ink, "{}", label.text);
             }
         }
+    }
+
+    #[test]
+    fn no_text_covers_another_in_any_language() {
+        // Issue 22: at 1280 points the axis title was cut.
+        let rows: Vec<Row> = [
+            ("stable", "f64", 3.0, 1.2),
+            ("stable", "f32", 2.0, 1.0),
+            ("batch", "f32", 0.7, 1.1),
+            ("glam", "f32", 1.9, 2.4e6),
+            ("trig", "f64", 9.0, 3.0),
+            ("seed", "f64", 2.6, 7.0e9),
+            ("ultraviolet", "f32", 2.2, 2.4e6),
+        ]
+        .into_iter()
+        .map(|(v, p, ns, err)| row(v, p, ns, err))
+        .collect();
+        let report = report(rows);
+        let face = Typeface::egui_default().unwrap();
+        for locale in refraction_i18n::Locale::ALL {
+            refraction_i18n::set_locale(locale);
+            for size in [
+                Vec2::new(1280.0, 480.0),
+                Vec2::new(1600.0, 1000.0),
+                Vec2::new(760.0, 420.0),
+            ] {
+                let drawn = primitives(&report, size, &face, &Palette::STANDARD);
+                let canvas = Rect::from_min_size(Vec2::ZERO, size);
+                let problems = crate::placer::text_problems(&drawn, &face, &canvas);
+                assert!(problems.is_empty(), "{locale:?} {size}: {problems:?}");
+            }
+        }
+        refraction_i18n::set_locale(refraction_i18n::Locale::En);
     }
 
     #[test]

@@ -11,7 +11,7 @@ use refraction_model::log_map::{LinePoint, Side};
 use super::font::Typeface;
 use super::geometry::Rect;
 use super::palette::Palette;
-use super::plot::{Axis, Chart, LegendEntry, Marker, MarkerStyle, legend_row};
+use super::plot::{Axis, Chart, LegendEntry, Marker, MarkerStyle, Sample, legend_row};
 use super::shapes::{Align, Figure, Label, Primitive, lower_all};
 
 /// The sides a map has a panel for, in order, where some line arrives from it.
@@ -38,11 +38,11 @@ fn style(point: &LinePoint, palette: &Palette) -> MarkerStyle {
 /// The legend's entries, in the map's colours.
 fn entries(palette: &Palette) -> [LegendEntry; 3] {
     let entry = |shape, colour, filled, text| LegendEntry {
-        marker: MarkerStyle {
+        sample: Sample::Marker(MarkerStyle {
             shape,
             colour,
             filled,
-        },
+        }),
         text,
     };
     [
@@ -297,28 +297,9 @@ mod tests {
             _ => true,
         }));
         // No text covers another, and every text lies inside the canvas.
-        let boxes: Vec<Rect> = drawn
-            .iter()
-            .filter_map(|p| match p {
-                Primitive::Text(label) => {
-                    let extent = face.measure(&label.text, label.size);
-                    let min = label.at - extent * Vec2::new(label.h.fraction(), label.v.fraction());
-                    Some(Rect::from_min_size(min, extent))
-                }
-                _ => None,
-            })
-            .collect();
         let canvas = Rect::from_min_size(Vec2::ZERO, size);
-        for (i, a) in boxes.iter().enumerate() {
-            assert!(
-                canvas.contains(a.min) && canvas.contains(a.max),
-                "{:?} {a:?}",
-                words[i]
-            );
-            for (j, b) in boxes.iter().enumerate().skip(i + 1) {
-                assert!(!a.overlaps(b), "{:?} covers {:?}", words[i], words[j]);
-            }
-        }
+        let problems = crate::placer::text_problems(&drawn, &face, &canvas);
+        assert!(problems.is_empty(), "{problems:?}");
     }
 
     #[test]

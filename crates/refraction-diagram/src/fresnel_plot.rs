@@ -5,9 +5,13 @@
 
 use glam::{DVec3, Vec2};
 
+use super::font::Typeface;
 use super::geometry::{Colour, Rect};
+use super::layout::SMALLEST_TEXT;
 use super::numbers::number;
 use super::palette::Palette;
+use super::placer::wrap;
+use super::plot::{Axis, Chart, LegendEntry, Sample, legend_column, legend_row};
 use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke, lower_all};
 use refraction_i18n::t;
 use refraction_kernel::Fresnel;
@@ -115,30 +119,145 @@ pub struct PlotFrame {
     pub area: Rect,
     /// The text size, in pixels.
     pub text: f32,
+    /// Whether the legend and the values at the cursor stand right of the plot (a wide
+    /// canvas) rather than under it (a narrow strip beside the diagram).
+    pub wide: bool,
+}
+
+/// The rows of text between the title and the plot: the two landmarks' names.
+const ROWS_OF_NAMES: f32 = 3.5;
+
+/// The plot's title, wrapped to `width` at text `size`.
+fn title(plot: &FresnelPlot, face: &Typeface, size: f32, width: f32) -> String {
+    let [mu_i, mu_t] = [plot.mu_i, plot.mu_t].map(|mu| refraction_i18n::decimal(&mu.to_string()));
+    let title = t!("diagram-fresnel-title", mu_i = mu_i, mu_t = mu_t);
+    wrap(face, &title, size, width)
+}
+
+/// The size of the words around the plot (the legend, the values, the source) for text
+/// `text` pixels high.
+fn small(text: f32) -> f32 {
+    (text * 0.85).max(SMALLEST_TEXT)
+}
+
+/// The legend's entries for curves drawn with text `text` pixels high.
+fn legend_entries(plot: &FresnelPlot, palette: &Palette, text: f32) -> Vec<LegendEntry> {
+    plot.curves
+        .iter()
+        .zip(curve_strokes(palette, text))
+        .map(|(curve, stroke)| LegendEntry {
+            sample: Sample::Line(stroke),
+            text: curve.name.clone(),
+        })
+        .collect()
+}
+
+/// The values at the cursor, as the view writes them.
+fn cursor_values(plot: &FresnelPlot) -> [String; 5] {
+    let a = plot.at_cursor;
+    [
+        format!("θi = {}°", number(plot.cursor_deg, 1)),
+        format!("R_s = {}", percent(a.rs)),
+        format!("R_p = {}", percent(a.rp)),
+        format!("R = {}", percent(a.reflectance())),
+        format!("T = {}", percent(a.transmittance())),
+    ]
+}
+
+/// The room the words take around the plot of `plot` on a canvas `width` pixels wide with
+/// text `text` pixels high: above it (the title and the landmarks' names), under it (the
+/// axis, the source and, when not `wide`, the legend and the values) and right of it (the
+/// legend and the values when `wide`, in a column as wide as its widest line).
+fn margins(
+    plot: &FresnelPlot,
+    width: f32,
+    text: f32,
+    wide: bool,
+    face: &Typeface,
+) -> (f32, f32, f32) {
+    let line = width - text;
+    let measure = |words: &str, size: f32| face.measure(&wrap(face, words, size, line), size).y;
+    let source_height = measure(&source(), small(text));
+    let entries = legend_entries(plot, &Palette::STANDARD, text);
+    let under = if wide {
+        text * 3.4 + source_height
+    } else {
+        let (_, legend) = legend_row(
+            &entries,
+            Vec2::ZERO,
+            line,
+            small(text),
+            face,
+            &Palette::STANDARD,
+        );
+        let values = measure(&cursor_values(plot).join("   "), small(text));
+        text * 3.4 + legend + values + source_height + text * 1.2
+    };
+    let title = title(plot, face, text * 1.1, line);
+    let above = text * 0.4 + face.measure(&title, text * 1.1).y + text * ROWS_OF_NAMES;
+    let right = if wide {
+        let legend = entries.iter().map(|e| e.width(small(text), face));
+        let values = cursor_values(plot).map(|v| face.width(&v, text * 0.9));
+        text * 2.2 + legend.chain(values).fold(0.0, f32::max)
+    } else {
+        text * 1.5
+    };
+    (above, under, right)
 }
 
 impl PlotFrame {
-    /// The frame for a canvas of `size` pixels.
+    /// The frame of `plot` on a canvas of `size` pixels, its words measured in `face`: text
+    /// that reads at a glance (never under the projector rules' 13 px), the legend beside the
+    /// plot where the canvas is wide enough, else the legend, the values and the source under
+    /// it, each where the one before ends.
     #[must_use]
-    pub fn new(size: Vec2) -> Self {
-        let text = (size.y / 45.0).clamp(12.0, 30.0);
+    pub fn new(plot: &FresnelPlot, size: Vec2, face: &Typeface) -> Self {
+        let text = (size.y / 30.0).min(size.x / 34.0).clamp(13.0, 30.0);
+        let wide = size.x >= text * 48.0;
+        let (above, under, right) = margins(plot, size.x, text, wide, face);
         Self {
             area: Rect {
-                min: Vec2::new(text * 4.5, text * 5.5),
-                max: Vec2::new(size.x - text * 16.0, size.y - text * 7.0),
+                min: Vec2::new(text * 4.4, above),
+                max: Vec2::new(size.x - right, (size.y - under).max(above + text * 3.0)),
             },
             text,
+            wide,
+        }
+    }
+
+    /// The least height at which the plot of `plot` reads on a canvas `width` pixels wide:
+    /// its words at their size, and a plotting area ten lines of text high.
+    #[must_use]
+    pub fn height_for(plot: &FresnelPlot, width: f32, face: &Typeface) -> f32 {
+        let text = (width / 34.0).clamp(13.0, 30.0);
+        let wide = width >= text * 48.0;
+        let (above, under, _) = margins(plot, width, text, wide, face);
+        above + under + text * 10.0
+    }
+
+    /// The chart of the frame: θi from 0° to 90°, the fraction from 0 to 100 %.
+    fn chart(&self) -> Chart {
+        let narrow = self.area.size().x < self.text * 30.0;
+        Chart {
+            area: self.area,
+            x: Axis {
+                min: 0.0,
+                max: 90.0,
+                step: if narrow { 30.0 } else { 10.0 },
+            },
+            y: Axis {
+                min: 0.0,
+                max: 100.0,
+                step: 20.0,
+            },
+            text: self.text,
         }
     }
 
     /// The canvas point of (θi in degrees, fraction).
     #[must_use]
     pub fn at(&self, degrees: f64, fraction: f64) -> Vec2 {
-        let (min, max) = (self.area.min, self.area.max);
-        Vec2::new(
-            min.x + (max.x - min.x) * (degrees / 90.0) as f32,
-            max.y - (max.y - min.y) * fraction.clamp(0.0, 1.0) as f32,
-        )
+        self.chart().at(degrees, fraction * 100.0)
     }
 
     /// The angle of incidence, in degrees within [0, 90], under the canvas x coordinate `x`.
@@ -170,6 +289,10 @@ pub fn curve_strokes(palette: &Palette, text: f32) -> [Stroke; 4] {
 /// Draws the plot into figures.
 struct PlotPainter<'a> {
     frame: PlotFrame,
+    size: Vec2,
+    /// Where the legend ends, on a narrow canvas (the values start there).
+    below_legend: f32,
+    face: &'a Typeface,
     palette: &'a Palette,
     shapes: Vec<Figure>,
 }
@@ -181,9 +304,9 @@ impl PlotPainter<'_> {
             at,
             h,
             v,
-            size: self.frame.text * scale,
+            size: (self.frame.text * scale).max(SMALLEST_TEXT),
             colour,
-            background: Some(self.palette.label_background),
+            background: None,
         }));
     }
 
@@ -199,80 +322,101 @@ impl PlotPainter<'_> {
     /// The grid, the axes and their labels.
     fn axes(&mut self) {
         let f = self.frame;
-        let grid = self.palette.guide.with_alpha(90);
-        let ink = self.palette.ink;
-        for step in 0..=9 {
-            let deg = f64::from(step) * 10.0;
-            self.line(vec![f.at(deg, 0.0), f.at(deg, 1.0)], 1.0, grid, Dash::Solid);
-            let below = f.at(deg, 0.0) + Vec2::new(0.0, f.text * 0.4);
-            self.text(
-                format!("{deg}°"),
-                below,
-                (Align::Center, Align::Start),
-                0.9,
-                ink,
-            );
-        }
-        for step in 0..=5 {
-            let value = f64::from(step) * 0.2;
-            self.line(
-                vec![f.at(0.0, value), f.at(90.0, value)],
-                1.0,
-                grid,
-                Dash::Solid,
-            );
-            let left = f.at(0.0, value) - Vec2::new(f.text * 0.5, 0.0);
-            let text = format!("{} %", number(value * 100.0, 0));
-            self.text(text, left, (Align::End, Align::Center), 0.9, ink);
-        }
-        let frame = vec![f.at(0.0, 1.0), f.at(0.0, 0.0), f.at(90.0, 0.0)];
-        self.line(frame, 1.5, ink, Dash::Solid);
-        let under = f.at(45.0, 0.0) + Vec2::new(0.0, f.text * 1.9);
+        self.shapes
+            .extend(f.chart().axes(("°", " %"), self.palette));
+        let under = Vec2::new(f.area.center().x, f.area.max.y + f.text * 1.7);
         let axis = t!("diagram-fresnel-axis");
+        let ink = self.palette.ink;
         self.text(axis, under, (Align::Center, Align::Start), 1.0, ink);
     }
 
-    /// A vertical marker at `degrees`, named above the plot on text row `row`.
-    fn marker(&mut self, degrees: f64, text: String, colour: Colour, dash: Dash, row: f32) {
+    /// A vertical marker at `degrees` across the plot, and its name above the plot on text row
+    /// `row` (0: nearer the plot), centred on the marker but kept inside the canvas, so that
+    /// the line never strikes its own name and two names never share a row.
+    fn marker(&mut self, degrees: f64, text: &str, colour: Colour, dash: Dash, row: f32) {
         let f = self.frame;
-        self.line(
-            vec![f.at(degrees, 0.0), f.at(degrees, 1.0)],
-            2.0,
-            colour,
-            dash,
-        );
-        let above = f.at(degrees, 1.0) - Vec2::new(0.0, f.text * (0.4 + 1.3 * row));
+        let (bottom, top) = (f.at(degrees, 0.0), f.at(degrees, 1.0));
+        self.line(vec![bottom, top], 2.0, colour, dash);
+        let size = f.text * 0.9;
+        let width = self.face.width(text, size);
+        let margin = f.text * 0.4;
+        let x = (top.x - width / 2.0).clamp(margin, (self.size.x - margin - width).max(margin));
+        // Clear of the 100 % tick label, whose middle is at the plot's top.
+        let above = Vec2::new(x, top.y - f.text * (0.8 + 1.35 * row));
         let shade = self.palette.text_shade(colour);
-        self.text(text, above, (Align::Center, Align::End), 0.85, shade);
+        self.text(
+            text.to_owned(),
+            above,
+            (Align::Start, Align::End),
+            0.9,
+            shade,
+        );
     }
 
-    /// The curves and their legend on the right.
-    fn curves(&mut self, plot: &FresnelPlot) {
-        let f = self.frame;
-        let strokes = curve_strokes(self.palette, f.text);
-        for (i, (curve, stroke)) in plot.curves.iter().zip(strokes).enumerate() {
-            let points = curve.points.iter().map(|&(d, v)| f.at(d, v)).collect();
-            self.shapes.push(Figure::Line { points, stroke });
-            let y = f.area.min.y + f.text * (1.0 + 1.6 * i as f32);
-            let x = f.area.max.x + f.text * 1.2;
-            let sample = vec![Vec2::new(x, y), Vec2::new(x + f.text * 2.5, y)];
-            self.shapes.push(Figure::Line {
-                points: sample,
-                stroke,
-            });
-            let at = Vec2::new(x + f.text * 3.0, y);
-            let ink = self.palette.ink;
-            self.text(
-                curve.name.clone(),
-                at,
-                (Align::Start, Align::Center),
-                0.8,
-                ink,
+    /// The landmarks: Brewster's angle nearer the plot, the critical angle above it, each
+    /// named in full where the name fits the canvas, else in short.
+    fn landmarks(&mut self, plot: &FresnelPlot) {
+        let palette = self.palette;
+        let (room, face, size) = (
+            self.size.x - self.frame.text,
+            self.face,
+            self.frame.text * 0.9,
+        );
+        let name = |long: String, short: String| {
+            if face.width(&long, size) <= room {
+                long
+            } else {
+                short
+            }
+        };
+        if let Some(b) = plot.angles.brewster_deg {
+            let angle = number(b, 1);
+            let text = name(
+                t!("diagram-fresnel-brewster", angle = &angle),
+                t!("diagram-fresnel-brewster-short", angle = &angle),
             );
+            self.marker(b, &text, palette.n, Dash::Dashed, 0.0);
+        }
+        if let Some(c) = plot.angles.critical_deg {
+            let angle = number(c, 1);
+            let text = name(
+                t!("diagram-fresnel-critical", angle = &angle),
+                t!("diagram-fresnel-critical-short", angle = &angle),
+            );
+            self.marker(c, &text, palette.critical, Dash::DashDot, 1.0);
         }
     }
 
-    /// The cursor at the current θi, with the fractions there.
+    /// The curves, and their legend beside the plot (wide) or under it (narrow).
+    fn curves(&mut self, plot: &FresnelPlot) {
+        let f = self.frame;
+        let strokes = curve_strokes(self.palette, f.text);
+        for (curve, stroke) in plot.curves.iter().zip(strokes) {
+            let points = curve.points.iter().map(|&(d, v)| f.at(d, v)).collect();
+            self.shapes.push(Figure::Line { points, stroke });
+        }
+        let entries = legend_entries(plot, self.palette, f.text);
+        let size = small(f.text);
+        let (legend, height) = if f.wide {
+            let at = Vec2::new(f.area.max.x + f.text * 1.2, f.area.min.y);
+            legend_column(&entries, at, size, self.face, self.palette)
+        } else {
+            let at = Vec2::new(f.text * 0.5, f.area.max.y + f.text * 3.4);
+            legend_row(
+                &entries,
+                at,
+                self.size.x - f.text,
+                size,
+                self.face,
+                self.palette,
+            )
+        };
+        self.below_legend = f.area.max.y + f.text * 3.4 + height;
+        self.shapes.extend(legend);
+    }
+
+    /// The cursor at the current θi, with the fractions there beside the plot (wide) or on a
+    /// line under the legend (narrow).
     fn cursor(&mut self, plot: &FresnelPlot) {
         let f = self.frame;
         let colour = self.palette.w;
@@ -297,17 +441,27 @@ impl PlotPainter<'_> {
                 },
             });
         }
-        let text = format!(
-            "θi = {}°\nR_s = {}\nR_p = {}\nR = {}\nT = {}",
-            number(deg, 1),
-            percent(a.rs),
-            percent(a.rp),
-            percent(a.reflectance()),
-            percent(a.transmittance())
-        );
-        let at = Vec2::new(f.area.max.x + f.text * 1.2, f.area.min.y + f.text * 7.5);
+        let parts = cursor_values(plot);
         let shade = self.palette.text_shade(colour);
-        self.text(text, at, (Align::Start, Align::Start), 0.9, shade);
+        if f.wide {
+            let at = Vec2::new(f.area.max.x + f.text * 1.2, f.area.min.y + f.text * 6.5);
+            self.text(
+                parts.join("\n"),
+                at,
+                (Align::Start, Align::Start),
+                0.9,
+                shade,
+            );
+        } else {
+            let line = wrap(
+                self.face,
+                &parts.join("   "),
+                small(f.text),
+                self.size.x - f.text,
+            );
+            let at = Vec2::new(f.text * 0.5, self.below_legend + f.text * 0.3);
+            self.text(line, at, (Align::Start, Align::Start), 0.85, shade);
+        }
     }
 }
 
@@ -317,41 +471,40 @@ pub fn percent(fraction: f64) -> String {
     format!("{} %", number(fraction * 100.0, 1))
 }
 
-/// The Fresnel view of `plot` on a canvas of `size`, in `palette`, back to front.
+/// The Fresnel view of `plot` on a canvas of `size`, in `palette`, back to front: the title,
+/// the landmarks named above the plot, the curves, the cursor with the values there, the
+/// legend (beside the plot on a wide canvas, under it on a narrow one) and the source.
 #[must_use]
-pub fn primitives(plot: &FresnelPlot, size: Vec2, palette: &Palette) -> Vec<Primitive> {
-    let frame = PlotFrame::new(size);
+pub fn primitives(
+    plot: &FresnelPlot,
+    size: Vec2,
+    face: &Typeface,
+    palette: &Palette,
+) -> Vec<Primitive> {
+    let frame = PlotFrame::new(plot, size, face);
     let mut p = PlotPainter {
         frame,
+        size,
+        below_legend: 0.0,
+        face,
         palette,
         shapes: vec![Figure::Fill {
-            points: vec![
-                Vec2::ZERO,
-                Vec2::new(size.x, 0.0),
-                size,
-                Vec2::new(0.0, size.y),
-            ],
+            points: Rect::from_min_size(Vec2::ZERO, size).corners().to_vec(),
             colour: palette.background,
         }],
     };
-    let [mu_i, mu_t] = [plot.mu_i, plot.mu_t].map(|mu| refraction_i18n::decimal(&mu.to_string()));
-    let title = t!("diagram-fresnel-title", mu_i = mu_i, mu_t = mu_t);
-    let top = Vec2::new(size.x / 2.0, frame.text * 0.5);
-    p.text(title, top, (Align::Center, Align::Start), 1.2, palette.ink);
+    let title = title(plot, face, frame.text * 1.1, size.x - frame.text);
+    let top = Vec2::new(size.x / 2.0, frame.text * 0.4);
+    p.text(title, top, (Align::Center, Align::Start), 1.1, palette.ink);
     p.axes();
-    if let Some(b) = plot.angles.brewster_deg {
-        let text = t!("diagram-fresnel-brewster", angle = number(b, 1));
-        p.marker(b, text, palette.n, Dash::Dashed, 0.0);
-    }
-    if let Some(c) = plot.angles.critical_deg {
-        let text = t!("diagram-fresnel-critical", angle = number(c, 1));
-        p.marker(c, text, palette.critical, Dash::DashDot, 1.0);
-    }
+    p.landmarks(plot);
     p.curves(plot);
     p.cursor(plot);
-    let bottom = Vec2::new(frame.text, size.y - frame.text * 0.5);
+    let size_small = (frame.text * 0.75).max(SMALLEST_TEXT);
+    let source = wrap(face, &source(), size_small, size.x - frame.text);
+    let bottom = Vec2::new(frame.text * 0.5, size.y - frame.text * 0.3);
     p.text(
-        source(),
+        source,
         bottom,
         (Align::Start, Align::End),
         0.75,
@@ -414,10 +567,40 @@ mod tests {
     }
 
     #[test]
+    fn no_text_covers_another_wide_or_narrow_in_any_language() {
+        // Issue 22: in "Glass → air beyond θc" the landmarks' names merged and their own
+        // lines struck them through.
+        let face = Typeface::egui_default().unwrap();
+        let plot_of = || FresnelPlot::of(&state(DVec3::new(0.8, -0.6, 0.0), 1.5, 1.0));
+        for locale in refraction_i18n::Locale::ALL {
+            refraction_i18n::set_locale(locale);
+            let plot = plot_of();
+            for size in [
+                Vec2::new(225.0, 760.0),
+                Vec2::new(385.0, 560.0),
+                Vec2::new(430.0, 900.0),
+                Vec2::new(1200.0, 330.0),
+                Vec2::new(1280.0, 720.0),
+            ] {
+                let drawn = primitives(&plot, size, &face, &Palette::STANDARD);
+                let canvas = Rect::from_min_size(Vec2::ZERO, size);
+                let problems = crate::placer::text_problems(&drawn, &face, &canvas);
+                assert!(problems.is_empty(), "{locale:?} {size}: {problems:?}");
+                assert!(drawn.iter().all(|p| match p {
+                    Primitive::Text(label) => label.size >= SMALLEST_TEXT,
+                    _ => true,
+                }));
+            }
+        }
+        refraction_i18n::set_locale(refraction_i18n::Locale::En);
+    }
+
+    #[test]
     fn the_view_names_its_landmarks_and_its_source_and_maps_x_to_angles() {
         let plot = FresnelPlot::of(&state(DVec3::new(0.3, -0.9, 0.0), 1.5, 1.0));
         let size = Vec2::new(1280.0, 720.0);
-        let primitives = primitives(&plot, size, &Palette::new(Theme::Standard, false));
+        let face = Typeface::egui_default().unwrap();
+        let primitives = primitives(&plot, size, &face, &Palette::new(Theme::Standard, false));
         let texts = texts(&primitives);
         for wanted in [
             "Brewster's angle θB = 33.7°",
@@ -431,7 +614,7 @@ mod tests {
                 "{wanted} in {texts:?}"
             );
         }
-        let frame = PlotFrame::new(size);
+        let frame = PlotFrame::new(&plot, size, &face);
         assert!((frame.degrees_at(frame.at(41.0, 0.5).x) - 41.0).abs() < 1e-3);
         assert_eq!(frame.degrees_at(-100.0), 0.0);
         assert!(primitives.iter().all(|p| match p {

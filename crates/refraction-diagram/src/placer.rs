@@ -81,6 +81,49 @@ fn boxed(label: &Label, extent: Vec2, at: Vec2) -> Rect {
     }
 }
 
+/// What is wrong with the texts among `primitives`, drawn in `face` on `canvas`: each text that
+/// covers another or reaches outside the canvas, in words (empty when nothing is). The views'
+/// tests and the layout audit ask it of every figure they draw.
+#[must_use]
+pub fn text_problems(
+    primitives: &[crate::Primitive],
+    face: &Typeface,
+    canvas: &Rect,
+) -> Vec<String> {
+    let boxes: Vec<(&str, Rect)> = primitives
+        .iter()
+        .filter_map(|p| match p {
+            crate::Primitive::Text(label) if !label.text.trim().is_empty() => {
+                let extent = face.measure(&label.text, label.size);
+                let fraction = Vec2::new(label.h.fraction(), label.v.fraction());
+                let min = label.at - extent * fraction;
+                Some((
+                    label.text.as_str(),
+                    Rect {
+                        min,
+                        max: min + extent,
+                    },
+                ))
+            }
+            _ => None,
+        })
+        .collect();
+    let mut problems = Vec::new();
+    for (i, (text, a)) in boxes.iter().enumerate() {
+        if !(canvas.contains(a.min) && canvas.contains(a.max)) {
+            // untranslated: a test's report to developers
+            problems.push(format!("{text:?} reaches outside the canvas"));
+        }
+        for (other, b) in &boxes[i + 1..] {
+            if a.overlaps(b) {
+                // untranslated: a test's report to developers
+                problems.push(format!("{text:?} covers {other:?}"));
+            }
+        }
+    }
+    problems
+}
+
 /// How far, in steps of 0.6 of the label's size, a label may move from its anchor.
 const MOST_STEPS: usize = 12;
 

@@ -145,6 +145,25 @@ impl Axis {
         }
     }
 
+    /// An axis covering `low` to `high` (any order), its ends on whole steps, in at most
+    /// `most` steps of 1, 2 or 5 times a power of ten.
+    #[must_use]
+    pub fn covering(low: f64, high: f64, most: usize) -> Self {
+        let (low, high) = (low.min(high), low.max(high));
+        let span = Self::from_zero(
+            high - low,
+            f64::EPSILON.max((high - low) * 1e-9),
+            most.max(1),
+        );
+        let step = span.step;
+        let min = (low / step).floor() * step;
+        let mut max = (high / step).ceil() * step;
+        if max <= min {
+            max = min + step;
+        }
+        Self { min, max, step }
+    }
+
     /// The fraction of the way from `min` to `max` that `value` lies, clamped to [0, 1].
     #[must_use]
     pub fn fraction(&self, value: f64) -> f32 {
@@ -252,13 +271,70 @@ impl Chart {
     }
 }
 
-/// One entry of a legend: its marker and its words.
-#[derive(Clone, Debug, PartialEq, Eq)]
+/// What a legend entry shows of its series: a marker or a short piece of its line.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Sample {
+    /// A marker of this style.
+    Marker(MarkerStyle),
+    /// A line drawn with this stroke.
+    Line(Stroke),
+}
+
+impl Sample {
+    /// How wide the sample is, for text `size` pixels high.
+    fn width(self, size: f32) -> f32 {
+        match self {
+            Self::Marker(_) => size * 0.7,
+            Self::Line(_) => size * 2.2,
+        }
+    }
+
+    /// The sample's figures, its left end at `left`, centred on `left.y`.
+    fn figures(self, left: Vec2, size: f32, background: Colour) -> Vec<Figure> {
+        let width = self.width(size);
+        match self {
+            Self::Marker(style) => {
+                let radius = width / 2.0;
+                style.figures(left + Vec2::new(radius, 0.0), radius, background)
+            }
+            Self::Line(stroke) => vec![Figure::Line {
+                points: vec![left, left + Vec2::new(width, 0.0)],
+                stroke,
+            }],
+        }
+    }
+}
+
+/// One entry of a legend: its sample and its words.
+#[derive(Clone, Debug, PartialEq)]
 pub struct LegendEntry {
-    /// The marker drawn before the words.
-    pub marker: MarkerStyle,
+    /// The sample drawn before the words.
+    pub sample: Sample,
     /// The words.
     pub text: String,
+}
+
+impl LegendEntry {
+    /// The entry's width with text `size` pixels high.
+    #[must_use]
+    pub fn width(&self, size: f32, face: &Typeface) -> f32 {
+        self.sample.width(size) + size * 0.4 + face.width(&self.text, size)
+    }
+
+    /// The entry's figures from `left` (the middle of its left edge).
+    fn figures(&self, left: Vec2, size: f32, palette: &Palette) -> Vec<Figure> {
+        let mut figures = self.sample.figures(left, size, palette.background);
+        figures.push(Figure::Text(Label {
+            text: self.text.clone(),
+            at: left + Vec2::new(self.sample.width(size) + size * 0.4, 0.0),
+            h: Align::Start,
+            v: Align::Center,
+            size,
+            colour: palette.ink,
+            background: None,
+        }));
+        figures
+    }
 }
 
 /// The legend of `entries` inside `chart`'s area, in the corner whose box covers the fewest
@@ -273,16 +349,12 @@ pub fn legend(
 ) -> Vec<Figure> {
     let size = chart.text;
     let row = face.line_height(size) * 1.15;
-    let radius = size * 0.35;
     let widest = entries
         .iter()
-        .map(|e| face.width(&e.text, size))
+        .map(|e| e.width(size, face))
         .fold(0.0, f32::max);
     let pad = size * 0.5;
-    let extent = Vec2::new(
-        pad * 2.0 + radius * 2.0 + size * 0.5 + widest,
-        pad * 2.0 + row * entries.len() as f32,
-    );
+    let extent = Vec2::new(pad * 2.0 + widest, pad * 2.0 + row * entries.len() as f32);
     let area = chart.area;
     let inset = Vec2::splat(size * 0.3);
     let corners = [
@@ -307,17 +379,7 @@ pub fn legend(
     }];
     for (i, entry) in entries.iter().enumerate() {
         let y = min.y + pad + row * (i as f32 + 0.5);
-        let center = Vec2::new(min.x + pad + radius, y);
-        figures.extend(entry.marker.figures(center, radius, palette.background));
-        figures.push(Figure::Text(Label {
-            text: entry.text.clone(),
-            at: Vec2::new(center.x + radius + size * 0.5, y),
-            h: Align::Start,
-            v: Align::Center,
-            size,
-            colour: palette.ink,
-            background: None,
-        }));
+        figures.extend(entry.figures(Vec2::new(min.x + pad, y), size, palette));
     }
     figures
 }
@@ -333,30 +395,52 @@ pub fn legend_row(
     face: &Typeface,
     palette: &Palette,
 ) -> (Vec<Figure>, f32) {
-    let row = face.line_height(size) * 1.2;
-    let radius = size * 0.35;
+    let line = face.line_height(size);
     let gap = size * 1.2;
     let mut figures = Vec::new();
-    let mut pen = at;
+    let (mut pen, mut tallest) = (at, line);
     for entry in entries {
-        let extent = radius * 2.0 + size * 0.4 + face.width(&entry.text, size);
+        // An entry wider than the row wraps its words under themselves.
+        let room = width - entry.sample.width(size) - size * 0.4;
+        let entry = LegendEntry {
+            text: super::placer::wrap(face, &entry.text, size, room),
+            ..entry.clone()
+        };
+        let extent = entry.width(size, face);
         if pen.x > at.x && pen.x + extent > at.x + width {
-            pen = Vec2::new(at.x, pen.y + row);
+            pen = Vec2::new(at.x, pen.y + tallest + line * 0.2);
+            tallest = line;
         }
-        let center = pen + Vec2::new(radius, row / 2.0);
-        figures.extend(entry.marker.figures(center, radius, palette.background));
-        figures.push(Figure::Text(Label {
-            text: entry.text.clone(),
-            at: Vec2::new(center.x + radius + size * 0.4, center.y),
-            h: Align::Start,
-            v: Align::Center,
-            size,
-            colour: palette.ink,
-            background: None,
-        }));
+        let height = face.measure(&entry.text, size).y;
+        let mut drawn = entry.figures(pen + Vec2::new(0.0, line / 2.0), size, palette);
+        // The words hang from the sample's line.
+        if let Some(Figure::Text(label)) = drawn.last_mut() {
+            label.v = Align::Start;
+            label.at.y = pen.y;
+        }
+        figures.extend(drawn);
+        tallest = tallest.max(height);
         pen.x += extent + gap;
     }
-    (figures, pen.y + row - at.y)
+    (figures, pen.y + tallest + line * 0.2 - at.y)
+}
+
+/// The legend of `entries` as a column from `at` (its top left); its figures and its height.
+#[must_use]
+pub fn legend_column(
+    entries: &[LegendEntry],
+    at: Vec2,
+    size: f32,
+    face: &Typeface,
+    palette: &Palette,
+) -> (Vec<Figure>, f32) {
+    let row = face.line_height(size) * 1.25;
+    let mut figures = Vec::new();
+    for (i, entry) in entries.iter().enumerate() {
+        let left = at + Vec2::new(0.0, row * (i as f32 + 0.5));
+        figures.extend(entry.figures(left, size, palette));
+    }
+    (figures, row * entries.len() as f32)
 }
 
 #[cfg(test)]
@@ -382,6 +466,8 @@ mod tests {
         }
         assert_eq!(Axis::from_zero(0.7, 1.0, 6).decimals(), 1);
         assert_eq!(Axis::from_zero(30.0, 1.0, 6).decimals(), 0);
+        let around = Axis::covering(-1.3, 0.4, 4);
+        assert_eq!((around.min, around.max, around.step), (-1.5, 0.5, 0.5));
         // A short axis takes fewer, wider steps.
         assert_eq!(Axis::from_zero(180.0, 1.0, 2).ticks(), [0.0, 100.0, 200.0]);
     }
@@ -432,11 +518,11 @@ mod tests {
             text: 14.0,
         };
         let entries = [LegendEntry {
-            marker: MarkerStyle {
+            sample: Sample::Marker(MarkerStyle {
                 shape: Marker::Circle,
                 colour: Colour::hex(0x0072B2),
                 filled: true,
-            },
+            }),
             text: "right".to_owned(),
         }];
         // Data crowding the top right: the legend goes to the top left.

@@ -1,6 +1,12 @@
 //! The source's quadratic in b (eq. 20), whose roots merge and vanish at the critical angle.
 
+use glam::Vec2;
 use refraction_kernel::Refraction;
+
+use super::geometry::Rect;
+use super::palette::Palette;
+use super::plot::{Axis, Chart};
+use super::shapes::{Dash, Figure, Primitive, Stroke, lower_all};
 
 /// b² + 2·a·wn·b + a² − 1 = 0 for the convention's chosen a = ±μ (Section 1:
 /// μ² − 2μ·b·wn + b² = 1; Section 2: μ² + 2μ·b·wn + b² = 1).
@@ -73,6 +79,58 @@ impl Quadratic {
             })
             .collect()
     }
+}
+
+/// The parabola of `q` on a canvas of `size` with text `text` pixels high, in `palette`'s
+/// colours: the zero line, the curve over its window and the kernel's roots on it.
+#[must_use]
+pub fn primitives(q: &Quadratic, size: Vec2, text: f32, palette: &Palette) -> Vec<Primitive> {
+    let ((x0, x1), (y0, y1)) = q.window();
+    let rows = (size.y / (text * 2.2)).floor().clamp(1.0, 5.0) as usize;
+    let chart = Chart {
+        area: Rect {
+            min: Vec2::new(text * 3.0, text * 0.7),
+            max: Vec2::new(size.x - text * 0.8, size.y - text * 1.6),
+        },
+        x: Axis::covering(x0, x1, 5),
+        y: Axis::covering(y0, y1, rows),
+        text,
+    };
+    let mut figures = vec![Figure::Fill {
+        points: Rect::from_min_size(Vec2::ZERO, size).corners().to_vec(),
+        colour: palette.background,
+    }];
+    figures.extend(chart.axes(("", ""), palette));
+    let stroke = |width, colour| Stroke {
+        width,
+        colour,
+        dash: Dash::Solid,
+    };
+    let zero = vec![chart.at(chart.x.min, 0.0), chart.at(chart.x.max, 0.0)];
+    figures.push(Figure::Line {
+        points: zero,
+        stroke: stroke(1.5, palette.guide),
+    });
+    let (left, right) = (chart.x.min, chart.x.max);
+    let curve = q
+        .samples((right - left) * 0.5, 161)
+        .into_iter()
+        .filter(|[b, v]| (left..=right).contains(b) && (chart.y.min..=chart.y.max).contains(v))
+        .map(|[b, v]| chart.at(b, v))
+        .collect();
+    figures.push(Figure::Line {
+        points: curve,
+        stroke: stroke(2.0, palette.t),
+    });
+    for b in &q.roots {
+        figures.push(Figure::Disc {
+            center: chart.at(*b, 0.0),
+            radius: text * 0.35,
+            fill: palette.warning,
+            outline: stroke(1.0, palette.background),
+        });
+    }
+    lower_all(&figures)
 }
 
 #[cfg(test)]

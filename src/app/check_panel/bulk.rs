@@ -301,7 +301,8 @@ impl Table {
     fn map(&mut self, ui: &mut Ui) {
         let width = ui.available_width().clamp(240.0, 900.0);
         let size = Vec2::new(width, failure_map::height(&self.points, width));
-        let (response, painter) = ui.allocate_painter(egui::vec2(size.x, size.y), Sense::hover());
+        let about = failure_map::describe(&self.points);
+        let (_, painter, to_screen) = paint::figure(ui, size, Sense::hover(), &about);
         let palette = window_palette(ui);
         let fresh = self
             .map
@@ -311,15 +312,9 @@ impl Table {
             let drawn = failure_map::primitives(&self.points, size, &face, &palette);
             self.map = Some((size, palette, drawn));
         }
-        let to_screen = egui::emath::RectTransform::from_to(
-            egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(size.x, size.y)),
-            response.rect,
-        );
         if let Some((_, _, drawn)) = &self.map {
             paint::paint(&painter, &to_screen, drawn);
         }
-        let about = failure_map::describe(&self.points);
-        response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Figure, true, about.clone()));
     }
 
     /// The counts, the diagnosis, the map and the rows; the record of the row clicked, if one

@@ -147,3 +147,20 @@ pub fn paste_log(h: &mut Harness<'_, Explorer>, text: &str) {
     h.get_by_role_and_label(role, "Log lines").type_text(text);
     h.run();
 }
+
+/// The words of every text the last frame painted (labels, and the texts of figures painted
+/// from the diagram's primitives, which have no accessible node of their own).
+pub fn painted_texts(h: &Harness<'_, Explorer>) -> Vec<String> {
+    fn texts_in(shape: &egui::Shape, into: &mut Vec<String>) {
+        match shape {
+            egui::Shape::Vec(shapes) => shapes.iter().for_each(|s| texts_in(s, into)),
+            egui::Shape::Text(text) => into.push(text.galley.job.text.clone()),
+            _ => {}
+        }
+    }
+    let mut texts = Vec::new();
+    for clipped in &h.output().shapes {
+        texts_in(&clipped.shape, &mut texts);
+    }
+    texts
+}

@@ -183,6 +183,8 @@ diagram-fresnel-title = Wie viel Licht reflektiert wird, von μi = { $mu_i } nac
 diagram-fresnel-axis = Einfallswinkel θi
 diagram-fresnel-brewster = Brewster-Winkel θB = { $angle }°: kein p-Licht reflektiert
 diagram-fresnel-critical = Grenzwinkel θc = { $angle }°: darüber alles reflektiert
+diagram-fresnel-brewster-short = Brewster-Winkel θB = { $angle }°
+diagram-fresnel-critical-short = Grenzwinkel θc = { $angle }°
 diagram-curve-rs = R_s (s-Licht reflektiert)
 diagram-curve-rp = R_p (p-Licht reflektiert)
 diagram-curve-r = R (unpolarisiert, reflektiert)

@@ -87,8 +87,6 @@ readouts-discriminant-tir = Diskriminante k = μ²wn² − μ² + 1 = { $k } < 0
 readouts-quadratic = Gl. { $section }.20, die quadratische Gleichung in b: b² + 2a·wn·b + a² − 1 = 0 mit a = { $a }, wn = { $wn }
 readouts-no-roots = keine reellen Nullstellen: Die Parabel erreicht null nicht mehr
 readouts-roots = Lösungen b = { $roots } (die b der Kandidaten für dieses a)
-readouts-plot-zero = null
-readouts-plot-roots = Nullstellen
 readouts-candidates = Die vier Kandidaten
 readouts-candidate = Kandidat
 # Die Spaltenköpfe der Prüfungen: das quadrierte Snelliussche Brechungsgesetz (Gl. 10 der Quelle), die Seite der Fläche, auf der T liegt, die Richtung, in die T gebrochen wird.
@@ -115,9 +113,7 @@ walk-step = Schritt { $number } von { $count }: { $title }
 
 ## Das Fresnel-Werkzeug
 
-fresnel-heading = Wie viel Licht reflektiert wird (Fresnel)
-fresnel-axis = Einfallswinkel θi (°)
-fresnel-now = aktuelles θi
+fresnel-plot-about = Fresnel-Diagramm: reflektiertes und durchgelassenes Licht gegen θi, der Cursor bei θi = { $angle }°
 fresnel-click-hint = In den Graphen klicken oder darin ziehen, um θi zu setzen.
 fresnel-at = Bei θi = { $angle }°, von μi = { $mu_i } nach μt = { $mu_t }.
 fresnel-brewster = Brewster-Winkel θB = { $angle }°: Dort wird kein p-polarisiertes Licht reflektiert (tan θB = μt/μi).
@@ -167,12 +163,10 @@ accuracy-press-measure = „Messen“ drücken, um den Benchmark zu starten.
 # $variant benennt eine Kernel-Variante und ihre Genauigkeit, etwa „stable f32“.
 accuracy-verdict = Am schnellsten innerhalb 10× der besten Genauigkeit: { $variant } mit { $time } ns pro Strahl (Fehler schwierige Fälle { $error } ε·κ).
 accuracy-footnote = { $random } zufällige und { $hard } schwierige Probleme auf { $cpu }. Die Zeiten hängen davon ab, was der Rechner sonst tut; `refraction-explorer bench` liefert dieselben Werte auf der Kommandozeile.
-accuracy-axis-time = Zeit pro Strahl, ns (log)
-accuracy-axis-error = größter Fehler schwierige Fälle, ε·κ (log)
+accuracy-plot-about = Genauigkeit gegen Zeit: { $count } Varianten, jede an ihrer Form zu erkennen und daneben benannt
 accuracy-hover =
     { $name }
     { $time } ns, { $error } ε·κ
-accuracy-bound = Schranke des Standard-Kernels, { $bound } ε·κ
 accuracy-column-variant = Variante
 accuracy-column-time = ns/Strahl
 accuracy-column-random = max. Fehler zufällig

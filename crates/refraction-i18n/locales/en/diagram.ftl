@@ -186,6 +186,8 @@ diagram-fresnel-title = How much light is reflected, from μi = { $mu_i } into �
 diagram-fresnel-axis = angle of incidence θi
 diagram-fresnel-brewster = Brewster's angle θB = { $angle }°: no p light reflected
 diagram-fresnel-critical = critical angle θc = { $angle }°: all reflected beyond
+diagram-fresnel-brewster-short = Brewster θB = { $angle }°
+diagram-fresnel-critical-short = critical θc = { $angle }°
 diagram-curve-rs = R_s (s light reflected)
 diagram-curve-rp = R_p (p light reflected)
 diagram-curve-r = R (unpolarised, reflected)

@@ -87,8 +87,6 @@ readouts-discriminant-tir = Discriminant k = μ²wn² − μ² + 1 = { $k } < 0:
 readouts-quadratic = Eq. { $section }.20, the quadratic in b: b² + 2a·wn·b + a² − 1 = 0 with a = { $a }, wn = { $wn }
 readouts-no-roots = no real roots: the parabola no longer reaches zero
 readouts-roots = roots b = { $roots } (the candidates' b for this a)
-readouts-plot-zero = zero
-readouts-plot-roots = roots
 readouts-candidates = The four candidates
 readouts-candidate = candidate
 # The checks' column headings: squared Snell's law (the source's eq. 10), the side of the surface T is on, the way T bends.
@@ -115,9 +113,7 @@ walk-step = Step { $number } of { $count }: { $title }
 
 ## The Fresnel tool
 
-fresnel-heading = How much light is reflected (Fresnel)
-fresnel-axis = angle of incidence θi (°)
-fresnel-now = θi now
+fresnel-plot-about = Fresnel plot: reflected and transmitted light against θi, the cursor at θi = { $angle }°
 fresnel-click-hint = Click or drag on the plot to set θi.
 fresnel-at = At θi = { $angle }°, from μi = { $mu_i } into μt = { $mu_t }.
 fresnel-brewster = Brewster's angle θB = { $angle }°: no p light is reflected there (tan θB = μt/μi).
@@ -167,12 +163,10 @@ accuracy-press-measure = Press Measure to run the benchmark.
 # $variant names a kernel variant and its precision, such as "stable f32".
 accuracy-verdict = Fastest within 10× of the best accuracy: { $variant } at { $time } ns per ray (hard-set error { $error } ε·κ).
 accuracy-footnote = { $random } random and { $hard } hard problems on { $cpu }. Timings depend on what else the machine is doing; `refraction-explorer bench` gives the same figures on the command line.
-accuracy-axis-time = time per ray, ns (log)
-accuracy-axis-error = largest hard-set error, ε·κ (log)
+accuracy-plot-about = Accuracy against time: { $count } variants, each marked by its shape and named beside it
 accuracy-hover =
     { $name }
     { $time } ns, { $error } ε·κ
-accuracy-bound = the default kernel's bound, { $bound } ε·κ
 accuracy-column-variant = variant
 accuracy-column-time = ns/ray
 accuracy-column-random = max err random

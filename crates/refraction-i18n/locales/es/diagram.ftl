@@ -183,6 +183,8 @@ diagram-fresnel-title = Cuánta luz se refleja, de μi = { $mu_i } a μt = { $mu
 diagram-fresnel-axis = ángulo de incidencia θi
 diagram-fresnel-brewster = ángulo de Brewster θB = { $angle }°: no se refleja luz p
 diagram-fresnel-critical = ángulo límite θc = { $angle }°: más allá, todo se refleja
+diagram-fresnel-brewster-short = ángulo de Brewster θB = { $angle }°
+diagram-fresnel-critical-short = ángulo límite θc = { $angle }°
 diagram-curve-rs = R_s (luz s reflejada)
 diagram-curve-rp = R_p (luz p reflejada)
 diagram-curve-r = R (no polarizada, reflejada)

@@ -87,8 +87,6 @@ readouts-discriminant-tir = Discriminante k = μ²wn² − μ² + 1 = { $k } < 0
 readouts-quadratic = Ec. { $section }.20, la ecuación cuadrática en b: b² + 2a·wn·b + a² − 1 = 0 con a = { $a }, wn = { $wn }
 readouts-no-roots = sin raíces reales: la parábola ya no llega a cero
 readouts-roots = raíces b = { $roots } (los b de los candidatos para este a)
-readouts-plot-zero = cero
-readouts-plot-roots = raíces
 readouts-candidates = Los cuatro candidatos
 readouts-candidate = candidato
 # Los encabezados de columna de las comprobaciones: la ley de Snell al cuadrado (la ec. 10 de la fuente), el lado de la superficie en que está T, el sentido en que se desvía T.
@@ -115,9 +113,7 @@ walk-step = Paso { $number } de { $count }: { $title }
 
 ## La herramienta Fresnel
 
-fresnel-heading = Cuánta luz se refleja (Fresnel)
-fresnel-axis = ángulo de incidencia θi (°)
-fresnel-now = θi actual
+fresnel-plot-about = Gráfica de Fresnel: luz reflejada y transmitida frente a θi, el cursor en θi = { $angle }°
 fresnel-click-hint = Haz clic o arrastra en la gráfica para fijar θi.
 fresnel-at = Con θi = { $angle }°, de μi = { $mu_i } a μt = { $mu_t }.
 fresnel-brewster = Ángulo de Brewster θB = { $angle }°: ahí no se refleja luz polarizada p (tg θB = μt/μi).
@@ -167,12 +163,10 @@ accuracy-press-measure = Pulsa «Medir» para ejecutar la prueba de rendimiento.
 # $variant nombra una variante del kernel y su precisión, como «stable f32».
 accuracy-verdict = La más rápida dentro de 10× la mejor precisión: { $variant } con { $time } ns por rayo (error del conjunto difícil: { $error } ε·κ).
 accuracy-footnote = { $random } problemas aleatorios y { $hard } difíciles en { $cpu }. Los tiempos dependen de qué más esté haciendo la máquina; `refraction-explorer bench` da las mismas cifras en la línea de comandos.
-accuracy-axis-time = tiempo por rayo, ns (log)
-accuracy-axis-error = mayor error del conjunto difícil, ε·κ (log)
+accuracy-plot-about = Precisión frente a tiempo: { $count } variantes, cada una marcada por su forma y nombrada al lado
 accuracy-hover =
     { $name }
     { $time } ns, { $error } ε·κ
-accuracy-bound = la cota del kernel predeterminado, { $bound } ε·κ
 accuracy-column-variant = variante
 accuracy-column-time = ns/rayo
 accuracy-column-random = err. máx. aleatorio

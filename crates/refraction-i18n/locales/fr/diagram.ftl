@@ -183,6 +183,8 @@ diagram-fresnel-title = Quelle part de la lumière est réfléchie, de μi = { $
 diagram-fresnel-axis = angle d’incidence θi
 diagram-fresnel-brewster = angle de Brewster θB = { $angle }° : pas de lumière p réfléchie
 diagram-fresnel-critical = angle limite θc = { $angle }° : au-delà, tout est réfléchi
+diagram-fresnel-brewster-short = angle de Brewster θB = { $angle }°
+diagram-fresnel-critical-short = angle limite θc = { $angle }°
 diagram-curve-rs = R_s (lumière s réfléchie)
 diagram-curve-rp = R_p (lumière p réfléchie)
 diagram-curve-r = R (non polarisée, réfléchie)

@@ -87,8 +87,6 @@ readouts-discriminant-tir = Discriminant k = μ²wn² − μ² + 1 = { $k } < 0�
 readouts-quadratic = Éq. { $section }.20, l’équation du second degré en b : b² + 2a·wn·b + a² − 1 = 0 avec a = { $a }, wn = { $wn }
 readouts-no-roots = pas de racine réelle : la parabole n’atteint plus zéro
 readouts-roots = racines b = { $roots } (les b des candidats pour ce a)
-readouts-plot-zero = zéro
-readouts-plot-roots = racines
 readouts-candidates = Les quatre candidats
 readouts-candidate = candidat
 # Les en-têtes de colonne des vérifications : la loi de Snell-Descartes au carré (l’éq. 10 de la source), le côté de la surface où se trouve T, le sens dans lequel T est dévié.
@@ -115,9 +113,7 @@ walk-step = Étape { $number } sur { $count } : { $title }
 
 ## L’outil Fresnel
 
-fresnel-heading = Quelle part de la lumière est réfléchie (Fresnel)
-fresnel-axis = angle d’incidence θi (°)
-fresnel-now = θi actuel
+fresnel-plot-about = Courbe de Fresnel : lumière réfléchie et transmise en fonction de θi, le curseur à θi = { $angle }°
 fresnel-click-hint = Clique ou fais glisser sur le graphique pour régler θi.
 fresnel-at = À θi = { $angle }°, de μi = { $mu_i } vers μt = { $mu_t }.
 fresnel-brewster = Angle de Brewster θB = { $angle }° : aucune lumière polarisée p n’y est réfléchie (tan θB = μt/μi).
@@ -167,12 +163,10 @@ accuracy-press-measure = Appuie sur « Mesurer » pour lancer le banc d’essa
 # $variant désigne une variante du noyau et sa précision, par exemple « stable f32 ».
 accuracy-verdict = La plus rapide à moins de 10× de la meilleure précision : { $variant }, { $time } ns par rayon (erreur sur l’ensemble difficile : { $error } ε·κ).
 accuracy-footnote = { $random } problèmes aléatoires et { $hard } difficiles sur { $cpu }. Les temps dépendent de ce que fait par ailleurs la machine ; `refraction-explorer bench` donne les mêmes chiffres en ligne de commande.
-accuracy-axis-time = temps par rayon, ns (log)
-accuracy-axis-error = plus grande erreur de l’ensemble difficile, ε·κ (log)
+accuracy-plot-about = Précision en fonction du temps : { $count } variantes, chacune marquée par sa forme et nommée à côté
 accuracy-hover =
     { $name }
     { $time } ns, { $error } ε·κ
-accuracy-bound = la borne du noyau par défaut, { $bound } ε·κ
 accuracy-column-variant = variante
 accuracy-column-time = ns/rayon
 accuracy-column-random = err. max aléatoire

@@ -183,6 +183,8 @@ diagram-fresnel-title = Quanta luz é refletida, de μi = { $mu_i } para μt = {
 diagram-fresnel-axis = ângulo de incidência θi
 diagram-fresnel-brewster = ângulo de Brewster θB = { $angle }°: nenhuma luz p refletida
 diagram-fresnel-critical = ângulo limite θc = { $angle }°: além dele, tudo é refletido
+diagram-fresnel-brewster-short = ângulo de Brewster θB = { $angle }°
+diagram-fresnel-critical-short = ângulo limite θc = { $angle }°
 diagram-curve-rs = R_s (luz s refletida)
 diagram-curve-rp = R_p (luz p refletida)
 diagram-curve-r = R (não polarizada, refletida)

@@ -87,8 +87,6 @@ readouts-discriminant-tir = Discriminante k = μ²wn² − μ² + 1 = { $k } < 0
 readouts-quadratic = Eq. { $section }.20, a equação do segundo grau em b: b² + 2a·wn·b + a² − 1 = 0 com a = { $a }, wn = { $wn }
 readouts-no-roots = sem raízes reais: a parábola não chega mais a zero
 readouts-roots = raízes b = { $roots } (os b dos candidatos para este a)
-readouts-plot-zero = zero
-readouts-plot-roots = raízes
 readouts-candidates = Os quatro candidatos
 readouts-candidate = candidato
 # Os cabeçalhos de coluna das verificações: a lei de Snell ao quadrado (a eq. 10 da fonte), o lado da superfície em que T está, o sentido em que T se desvia.
@@ -115,9 +113,7 @@ walk-step = Passo { $number } de { $count }: { $title }
 
 ## A ferramenta Fresnel
 
-fresnel-heading = Quanta luz é refletida (Fresnel)
-fresnel-axis = ângulo de incidência θi (°)
-fresnel-now = θi atual
+fresnel-plot-about = Gráfico de Fresnel: luz refletida e transmitida em função de θi, o cursor em θi = { $angle }°
 fresnel-click-hint = Clique ou arraste no gráfico para definir θi.
 fresnel-at = Em θi = { $angle }°, de μi = { $mu_i } para μt = { $mu_t }.
 fresnel-brewster = Ângulo de Brewster θB = { $angle }°: ali nenhuma luz polarizada p é refletida (tg θB = μt/μi).
@@ -167,12 +163,10 @@ accuracy-press-measure = Pressione “Medir” para executar o benchmark.
 # $variant nomeia uma variante do kernel e sua precisão, como “stable f32”.
 accuracy-verdict = A mais rápida a até 10× da melhor precisão: { $variant }, com { $time } ns por raio (erro no conjunto difícil: { $error } ε·κ).
 accuracy-footnote = { $random } problemas aleatórios e { $hard } difíceis em { $cpu }. Os tempos dependem do que mais a máquina está fazendo; `refraction-explorer bench` dá os mesmos números na linha de comando.
-accuracy-axis-time = tempo por raio, ns (log)
-accuracy-axis-error = maior erro do conjunto difícil, ε·κ (log)
+accuracy-plot-about = Precisão em função do tempo: { $count } variantes, cada uma marcada pela sua forma e nomeada ao lado
 accuracy-hover =
     { $name }
     { $time } ns, { $error } ε·κ
-accuracy-bound = o limite do kernel padrão, { $bound } ε·κ
 accuracy-column-variant = variante
 accuracy-column-time = ns/raio
 accuracy-column-random = erro máx. aleatório

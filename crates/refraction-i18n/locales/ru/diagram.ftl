@@ -201,6 +201,8 @@ diagram-fresnel-title = Какая доля света отражается, и�
 diagram-fresnel-axis = угол падения θi
 diagram-fresnel-brewster = угол Брюстера θB = { $angle }°: p-свет не отражается
 diagram-fresnel-critical = предельный угол θc = { $angle }°: дальше отражается всё
+diagram-fresnel-brewster-short = угол Брюстера θB = { $angle }°
+diagram-fresnel-critical-short = предельный угол θc = { $angle }°
 diagram-curve-rs = R_s (отражённый s-свет)
 diagram-curve-rp = R_p (отражённый p-свет)
 diagram-curve-r = R (неполяризованный, отражённый)

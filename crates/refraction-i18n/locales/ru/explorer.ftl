@@ -87,8 +87,6 @@ readouts-discriminant-tir = Дискриминант k = μ²wn² − μ² + 1 =
 readouts-quadratic = Ур. { $section }.20, квадратное уравнение относительно b: b² + 2a·wn·b + a² − 1 = 0 при a = { $a }, wn = { $wn }
 readouts-no-roots = нет действительных корней: парабола больше не достигает нуля
 readouts-roots = корни b = { $roots } (значения b кандидатов при этом a)
-readouts-plot-zero = ноль
-readouts-plot-roots = корни
 readouts-candidates = Четыре кандидата
 readouts-candidate = кандидат
 # Заголовки столбцов проверок: закон Снеллиуса в квадрате (ур. 10 источника), сторона поверхности, на которой лежит T, направление, в котором T отклоняется.
@@ -115,9 +113,7 @@ walk-step = Шаг { $number } из { $count }: { $title }
 
 ## Инструмент «Френель»
 
-fresnel-heading = Сколько света отражается (Френель)
-fresnel-axis = угол падения θi (°)
-fresnel-now = текущий θi
+fresnel-plot-about = График Френеля: отражённый и прошедший свет в зависимости от θi, курсор при θi = { $angle }°
 fresnel-click-hint = Щёлкните по графику или проведите по нему, чтобы задать θi.
 fresnel-at = При θi = { $angle }°, из μi = { $mu_i } в μt = { $mu_t }.
 fresnel-brewster = Угол Брюстера θB = { $angle }°: здесь p-поляризованный свет не отражается (tg θB = μt/μi).
@@ -167,12 +163,10 @@ accuracy-press-measure = Нажмите «Измерить», чтобы зап�
 # $variant называет вариант ядра и его точность, например «stable f32».
 accuracy-verdict = Самый быстрый в пределах 10× от лучшей точности: { $variant }, { $time } нс на луч (ошибка на трудном наборе: { $error } ε·κ).
 accuracy-footnote = Случайных задач: { $random }, трудных: { $hard }; процессор: { $cpu }. Время зависит от того, чем ещё занят компьютер; `refraction-explorer bench` даёт те же цифры в командной строке.
-accuracy-axis-time = время на луч, нс (лог.)
-accuracy-axis-error = наибольшая ошибка на трудном наборе, ε·κ (лог.)
+accuracy-plot-about = Точность в зависимости от времени: вариантов { $count }, у каждого своя форма метки и подпись рядом
 accuracy-hover =
     { $name }
     { $time } нс, { $error } ε·κ
-accuracy-bound = граница ядра по умолчанию, { $bound } ε·κ
 accuracy-column-variant = вариант
 accuracy-column-time = нс/луч
 accuracy-column-random = макс. ош. случ.
