@@ -1,6 +1,6 @@
 //! What the explorer's plots share: a plotting area on a canvas with linear axes (ticks, grid,
-//! frame and titles), markers whose shapes tell series apart without colour, and a legend
-//! drawn inside the plotting area in the corner the data leaves freest.
+//! frame), markers whose shapes tell series apart without colour, and legends in a row or a
+//! column, their samples the series' markers or lines.
 
 use glam::Vec2;
 
@@ -337,53 +337,6 @@ impl LegendEntry {
     }
 }
 
-/// The legend of `entries` inside `chart`'s area, in the corner whose box covers the fewest
-/// of `points` (the data it must not hide), on a box of the label background.
-#[must_use]
-pub fn legend(
-    chart: &Chart,
-    entries: &[LegendEntry],
-    points: &[Vec2],
-    face: &Typeface,
-    palette: &Palette,
-) -> Vec<Figure> {
-    let size = chart.text;
-    let row = face.line_height(size) * 1.15;
-    let widest = entries
-        .iter()
-        .map(|e| e.width(size, face))
-        .fold(0.0, f32::max);
-    let pad = size * 0.5;
-    let extent = Vec2::new(pad * 2.0 + widest, pad * 2.0 + row * entries.len() as f32);
-    let area = chart.area;
-    let inset = Vec2::splat(size * 0.3);
-    let corners = [
-        Vec2::new(area.max.x - extent.x, area.min.y) + Vec2::new(-inset.x, inset.y),
-        area.min + inset,
-        area.max - extent - inset,
-        Vec2::new(area.min.x, area.max.y - extent.y) + Vec2::new(inset.x, -inset.y),
-    ];
-    let covered = |min: &Vec2| {
-        let r = Rect::from_min_size(*min, extent);
-        points.iter().filter(|p| r.contains(**p)).count()
-    };
-    let min = corners
-        .iter()
-        .min_by_key(|c| covered(c))
-        .copied()
-        .unwrap_or(corners[0]);
-    let r = Rect::from_min_size(min, extent);
-    let mut figures = vec![Figure::Fill {
-        points: r.corners().to_vec(),
-        colour: palette.label_background,
-    }];
-    for (i, entry) in entries.iter().enumerate() {
-        let y = min.y + pad + row * (i as f32 + 0.5);
-        figures.extend(entry.figures(Vec2::new(min.x + pad, y), size, palette));
-    }
-    figures
-}
-
 /// The legend of `entries` as a row from `at` (its top left), wrapped at `width`; its figures
 /// and its height.
 #[must_use]
@@ -506,34 +459,35 @@ mod tests {
     }
 
     #[test]
-    fn the_legend_takes_the_corner_the_data_leaves_free() {
+    fn a_legend_row_wraps_its_entries_and_a_long_one_wraps_its_words() {
         let face = Typeface::egui_default().unwrap();
-        let chart = Chart {
-            area: Rect {
-                min: Vec2::new(50.0, 20.0),
-                max: Vec2::new(450.0, 220.0),
-            },
-            x: Axis::from_zero(90.0, 1.0, 6),
-            y: Axis::from_zero(10.0, 1.0, 6),
-            text: 14.0,
-        };
-        let entries = [LegendEntry {
+        let entry = |text: &str| LegendEntry {
             sample: Sample::Marker(MarkerStyle {
                 shape: Marker::Circle,
                 colour: Colour::hex(0x0072B2),
                 filled: true,
             }),
-            text: "right".to_owned(),
-        }];
-        // Data crowding the top right: the legend goes to the top left.
-        let crowd: Vec<Vec2> = (0..40)
-            .map(|i| Vec2::new(440.0 - i as f32, 30.0 + (i % 5) as f32))
-            .collect();
-        let figures = legend(&chart, &entries, &crowd, &face, &Palette::STANDARD);
-        let Figure::Fill { points, .. } = &figures[0] else {
-            panic!("the legend starts with its box")
+            text: text.to_owned(),
         };
-        assert!(points[0].x < 100.0 && points[0].y < 40.0, "{points:?}");
-        assert!(points.iter().all(|p| chart.area.contains(*p)), "{points:?}");
+        let entries = [
+            entry("right"),
+            entry("wrong"),
+            entry("a very long name indeed for a legend"),
+        ];
+        let (_, one_row) = legend_row(
+            &entries[..2],
+            Vec2::ZERO,
+            400.0,
+            14.0,
+            &face,
+            &Palette::STANDARD,
+        );
+        let (figures, wrapped) =
+            legend_row(&entries, Vec2::ZERO, 120.0, 14.0, &face, &Palette::STANDARD);
+        assert!(wrapped > one_row * 3.0, "{one_row} {wrapped}");
+        let canvas = Rect::from_min_size(Vec2::ZERO, Vec2::new(120.0, wrapped));
+        let drawn = crate::shapes::lower_all(&figures);
+        let problems = crate::placer::text_problems(&drawn, &face, &canvas);
+        assert!(problems.is_empty(), "{problems:?}");
     }
 }
