@@ -10,7 +10,7 @@ use super::font::Typeface;
 use super::geometry::{Colour, Rect};
 use super::layout::SMALLEST_TEXT;
 use super::palette::Palette;
-use super::placer::{Obstacle, Placer};
+use super::placer::{Need, Obstacle, Placer};
 use super::plot::MarkerStyle;
 use super::shapes::{Align, Dash, Figure, Label, Stroke, lower_all};
 use refraction_i18n::t;
@@ -382,10 +382,10 @@ impl<'a> Plot<'a> {
                 colour: self.palette.text_shade(colour),
                 background: None,
             };
-            labels.push((label, canvas));
+            labels.push((label, canvas, Need::Optional));
         }
         let placement = placer.place_all(labels);
-        shapes.extend(placement.placed.into_iter().map(Figure::Text));
+        shapes.extend(placement.figures());
         shapes
     }
 }

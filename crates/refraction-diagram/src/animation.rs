@@ -213,7 +213,7 @@ mod tests {
         let with_waves = frame.primitives(size, &Overlay::default());
         assert!(with_waves.len() > plain.len() + 10);
         // The background still comes first, the handles (the diagram's last discs) stay last
-        // but for the fronts' labels.
+        // but for the labels (and the leader lines of those placed far from their anchors).
         assert_eq!(with_waves[0], plain[0]);
         let last_disc =
             |p: &[Primitive]| p.iter().rposition(|x| matches!(x, Primitive::Disc { .. }));
@@ -223,7 +223,7 @@ mod tests {
         assert!(
             with_waves[waves_disc + 1..]
                 .iter()
-                .all(|p| matches!(p, Primitive::Text(_)))
+                .all(|p| matches!(p, Primitive::Text(_) | Primitive::Polyline { .. }))
         );
     }
 

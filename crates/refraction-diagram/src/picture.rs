@@ -10,7 +10,7 @@ use super::layout::Layout;
 use super::numbers::{number, significant};
 use super::overlay::{Overlay, Part};
 use super::palette::Palette;
-use super::placer::{Obstacle, Placer, wrap};
+use super::placer::{Need, Obstacle, Placer, wrap};
 use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke, lower_all};
 use super::wavefronts;
 use refraction_i18n::t;
@@ -147,7 +147,9 @@ enum Rank {
     Bug,
     /// The three rejected candidates.
     Candidates,
-    /// The construction: the critical angle and T's decomposition into a·W and b·N.
+    /// The critical angle and the wavefronts' names, landmarks a lesson names.
+    Landmark,
+    /// The construction: T's decomposition into a·W and b·N.
     Construction,
     /// The two media's names and indices, in the corners.
     Media,
@@ -214,7 +216,20 @@ impl DiagramBuilder<'_> {
         };
         let mut placer = Placer::new(face);
         for shape in &self.shapes {
-            if let Figure::Arrow { .. } = shape {
+            // A marked point (Huygens's A and B, a student's tip): no label covers it.
+            if let Figure::Disc { center, radius, .. } = shape {
+                placer.avoid(Obstacle::Disc {
+                    center: *center,
+                    radius: radius + 1.5,
+                });
+            }
+            if let Figure::Arrow { from, to, stroke } = shape {
+                // Its shaft and its head: no label covers a ray.
+                placer.avoid(Obstacle::Shaft {
+                    a: *from,
+                    b: *to,
+                    half_width: stroke.width * 0.5 + 1.5,
+                });
                 let mut lowered = Vec::new();
                 shape.lower(&mut lowered);
                 for p in lowered {
@@ -224,6 +239,11 @@ impl DiagramBuilder<'_> {
                 }
             }
         }
+        // The hit point, where every ray meets.
+        placer.avoid(Obstacle::Disc {
+            center: self.at(DVec2::ZERO),
+            radius: self.font() * 0.4,
+        });
         for handle in handles {
             placer.avoid(Obstacle::Box(Diagram::grab_area(handle)));
         }
@@ -232,17 +252,24 @@ impl DiagramBuilder<'_> {
             min: Vec2::new(0.0, self.layout.banner.max.y),
             max: self.layout.canvas.max,
         };
-        let placement = placer.place_all(labels.into_iter().map(|(_, label)| {
+        let mut placement = placer.place_all(labels.into_iter().map(|(rank, label)| {
             let bounds = if drawing.contains(label.at) {
                 drawing
             } else {
                 below_banner
             };
-            (label, bounds)
+            // The labels a lesson teaches are never dropped; the construction and the media's
+            // names give way first.
+            let need = if rank <= Rank::Landmark {
+                Need::Shown
+            } else {
+                Need::Optional
+            };
+            (label, bounds, need)
         }));
-        self.shapes
-            .extend(placement.placed.into_iter().map(Figure::Text));
-        (self.shapes, placement.left_out)
+        let left_out = core::mem::take(&mut placement.left_out);
+        self.shapes.extend(placement.figures());
+        (self.shapes, left_out)
     }
 
     /// An arrow from the hit point along the unit diagram direction `d`, `length` long, with a
@@ -726,7 +753,8 @@ impl Diagram {
         let normal = b.flat(r.facing_normal);
         let toward_source = b.flat(-r.travel);
         b.media(normal);
-        b.rank = Rank::Construction;
+        // The wavefronts' names and the critical angle: what the lessons about them teach.
+        b.rank = Rank::Landmark;
         if let Some(options) = overlay.waves {
             b.waves(&options);
         }
@@ -1043,6 +1071,59 @@ mod tests {
                         assert!(inside, "{l:?} is cut off at {size}");
                         assert!(l.text.chars().all(|c| c == '\n' || face.covers(c)), "{l:?}");
                     }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn no_label_lies_on_a_ray_and_none_a_lesson_teaches_is_left_out() {
+        // Issue 22: "θt" and "a·W" washed out T and W; in the normal-incidence lesson three
+        // labels hid T.
+        use refraction_model::Lesson;
+        let face = Typeface::egui_default().unwrap();
+        let sizes = [
+            Vec2::new(500.0, 560.0),
+            Vec2::new(760.0, 520.0),
+            Vec2::new(1920.0, 1080.0),
+        ];
+        let mut flipped = ExplorerState::default();
+        flipped.flip_normal();
+        let states = Lesson::ALL.map(Lesson::state).into_iter().chain([flipped]);
+        for state in states {
+            for size in sizes {
+                let diagram = Diagram::new(&state, size);
+                let shafts: Vec<Obstacle> = diagram
+                    .shapes
+                    .iter()
+                    .filter_map(|shape| match shape {
+                        Figure::Arrow { from, to, stroke } => Some(Obstacle::Shaft {
+                            a: *from,
+                            b: *to,
+                            half_width: stroke.width * 0.5,
+                        }),
+                        _ => None,
+                    })
+                    .collect();
+                let labels = diagram.shapes.iter().filter_map(|shape| match shape {
+                    Figure::Text(l) if l.background.is_some() => Some(l),
+                    _ => None,
+                });
+                for l in labels {
+                    let extent = face.measure(&l.text, l.size);
+                    let min = l.at - extent * Vec2::new(l.h.fraction(), l.v.fraction());
+                    let text_box = Rect::from_min_size(min, extent);
+                    for shaft in &shafts {
+                        assert!(!shaft.touches(&text_box), "{:?} on a ray at {size}", l.text);
+                    }
+                }
+                let taught = ["T", "W", "N", "θi", "θt", "θc"];
+                for l in &diagram.left_out {
+                    assert!(
+                        !taught.iter().any(|t| l.text.starts_with(t)),
+                        "{:?} left out at {size}",
+                        l.text
+                    );
                 }
             }
         }

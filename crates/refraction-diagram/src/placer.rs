@@ -11,7 +11,7 @@
 use glam::Vec2;
 
 use super::font::Typeface;
-use super::geometry::Rect;
+use super::geometry::{Rect, clip_segment};
 use super::shapes::Label;
 
 /// Something a label must not cover.
@@ -28,6 +28,15 @@ pub enum Obstacle {
     },
     /// A convex polygon: an arrowhead.
     Polygon(Vec<Vec2>),
+    /// A thick line: a ray's shaft, `half_width` pixels either side of `a`–`b`.
+    Shaft {
+        /// One end.
+        a: Vec2,
+        /// The other end.
+        b: Vec2,
+        /// Half the stroke's width, with a margin.
+        half_width: f32,
+    },
 }
 
 impl Obstacle {
@@ -38,6 +47,13 @@ impl Obstacle {
             Self::Box(b) => b.overlaps(r),
             Self::Disc { center, radius } => center.clamp(r.min, r.max).distance(*center) < *radius,
             Self::Polygon(points) => convex_overlaps(points, r),
+            Self::Shaft { a, b, half_width } => {
+                let grown = Rect {
+                    min: r.min - Vec2::splat(*half_width),
+                    max: r.max + Vec2::splat(*half_width),
+                };
+                clip_segment(*a, *b, &grown).is_some()
+            }
         }
     }
 }
@@ -124,8 +140,12 @@ pub fn text_problems(
     problems
 }
 
-/// How far, in steps of 0.6 of the label's size, a label may move from its anchor.
+/// How far, in steps of 0.6 of the label's size, a label may move from its anchor without a
+/// leader line.
 const MOST_STEPS: usize = 12;
+
+/// How far it may move with one.
+const MOST_STEPS_WITH_LEADER: usize = 40;
 
 /// The directions a label tries at each distance from its anchor, nearest first.
 const DIRECTIONS: [Vec2; 8] = [
@@ -155,8 +175,46 @@ pub struct Placer<'f> {
 pub struct Placement {
     /// The labels drawn, moved where they cover nothing.
     pub placed: Vec<Label>,
+    /// The leader lines of the labels placed far from their anchors: from the anchor to the
+    /// nearest point of the label's box, in the label's colour.
+    pub leaders: Vec<(Vec2, Vec2, super::geometry::Colour)>,
     /// The labels left out, at their anchors, for a hover to show.
     pub left_out: Vec<Label>,
+}
+
+impl Placement {
+    /// The placed labels and their leader lines as figures, the leaders first (thin, under
+    /// the words).
+    #[must_use]
+    pub fn figures(self) -> Vec<super::shapes::Figure> {
+        use super::shapes::{Dash, Figure, Stroke};
+        let leaders = self
+            .leaders
+            .into_iter()
+            .map(|(from, to, colour)| Figure::Line {
+                points: vec![from, to],
+                stroke: Stroke {
+                    width: 1.2,
+                    colour,
+                    dash: Dash::Solid,
+                },
+            });
+        leaders
+            .chain(self.placed.into_iter().map(Figure::Text))
+            .collect()
+    }
+}
+
+/// How a label is placed: where it may go and what happens when no free spot is near.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Need {
+    /// Near its anchor, else farther with a leader line, else left out.
+    Optional,
+    /// A label a lesson teaches: as [`Need::Optional`], but with no free spot even far away
+    /// it may cross a ray's shaft (never a handle, an arrowhead, a marked point or another
+    /// label); left out only where the canvas has no room at all. Such labels are placed
+    /// first, so that lesser ones give way.
+    Shown,
 }
 
 impl<'f> Placer<'f> {
@@ -185,45 +243,115 @@ impl<'f> Placer<'f> {
         !self.obstacles.iter().any(|o| o.touches(r)) && !self.placed.iter().any(|p| p.overlaps(r))
     }
 
-    /// Places `label` inside `bounds`: at its anchor if that covers nothing, else at the
-    /// nearest free spot around it, moved inside `bounds` as needed. Returns the label as
-    /// placed, or gives it back unchanged (`Err`) when no spot is free: it is then left out.
-    ///
-    /// # Errors
-    /// No free spot within 12 steps, or the label is larger than `bounds`.
-    pub fn place(&mut self, mut label: Label, bounds: &Rect) -> Result<Label, Label> {
+    /// Free of everything but the rays' shafts: what a label that must be shown settles for
+    /// (it may cross a ray, never a handle, an arrowhead, a marked point or another label).
+    fn free_but_shafts(&self, r: &Rect) -> bool {
+        let solid = self
+            .obstacles
+            .iter()
+            .filter(|o| !matches!(o, Obstacle::Shaft { .. }));
+        !solid.into_iter().any(|o| o.touches(r)) && !self.placed.iter().any(|p| p.overlaps(r))
+    }
+
+    /// The first anchor from `steps` (in steps of 0.6 of the label's size around its anchor)
+    /// whose box, moved inside `bounds`, is `free`; the anchor and its box.
+    fn spot(
+        &self,
+        label: &Label,
+        bounds: &Rect,
+        steps: core::ops::RangeInclusive<usize>,
+        free: impl Fn(&Self, &Rect) -> bool,
+    ) -> Option<(Vec2, Rect)> {
         let step = label.size * 0.6;
         // Measured once: the text's extent does not depend on where it goes.
         let extent = self.face.measure(&label.text, label.size);
-        let offsets = core::iter::once(Vec2::ZERO)
-            .chain((1..=MOST_STEPS).flat_map(|k| DIRECTIONS.map(|d| d * step * k as f32)));
-        let spot = offsets.map(|offset| label.at + offset).find_map(|at| {
-            let r = boxed(&label, extent, at);
+        let offsets = steps.flat_map(|k| {
+            let ring: Vec<Vec2> = if k == 0 {
+                vec![Vec2::ZERO]
+            } else {
+                DIRECTIONS.map(|d| d * step * k as f32).to_vec()
+            };
+            ring
+        });
+        offsets.map(|offset| label.at + offset).find_map(|at| {
+            let r = boxed(label, extent, at);
             let shift = (bounds.min - r.min).max(Vec2::ZERO) + (bounds.max - r.max).min(Vec2::ZERO);
             // The box is measured again at the moved anchor, so that what is checked is
             // exactly what a reader of the label's anchor computes.
             let at = at + shift;
-            let moved = boxed(&label, extent, at);
+            let moved = boxed(label, extent, at);
             let inside = moved.min.cmpge(bounds.min).all() && moved.max.cmple(bounds.max).all();
-            (inside && self.free(&moved)).then_some((at, moved))
-        });
-        match spot {
-            Some((at, r)) => {
-                self.placed.push(r);
-                label.at = at;
-                Ok(label)
-            }
-            None => Err(label),
-        }
+            (inside && free(self, &moved)).then_some((at, moved))
+        })
     }
 
-    /// Places every label of `labels` in order, each inside the bounds given with it.
+    /// Places `label` inside `bounds`: at its anchor if that covers nothing, else at the
+    /// nearest free spot around it, moved inside `bounds` as needed; farther, with a leader
+    /// line from the anchor (the second value), when nothing near is free; a label that is
+    /// [`Need::Shown`] may then cross a shaft.
+    ///
+    /// # Errors
+    /// No free spot, or the label is larger than `bounds`: it is given back unchanged.
+    pub fn place(
+        &mut self,
+        mut label: Label,
+        bounds: &Rect,
+        need: Need,
+    ) -> Result<(Label, Option<Vec2>), Label> {
+        let near = self.spot(&label, bounds, 0..=MOST_STEPS, Self::free);
+        let far = || {
+            self.spot(
+                &label,
+                bounds,
+                MOST_STEPS + 1..=MOST_STEPS_WITH_LEADER,
+                Self::free,
+            )
+        };
+        let found = match near {
+            Some(spot) => Some((spot, false)),
+            None => far().map(|spot| (spot, true)),
+        };
+        let found = match (found, need) {
+            (Some(found), _) => Some(found),
+            (None, Need::Optional) => None,
+            (None, Need::Shown) => {
+                let steps = 0..=MOST_STEPS_WITH_LEADER;
+                self.spot(&label, bounds, steps, Self::free_but_shafts)
+                    .map(|spot| {
+                        let far = spot.0.distance(label.at) > label.size * 0.6 * MOST_STEPS as f32;
+                        (spot, far)
+                    })
+            }
+        };
+        let Some(((at, r), leader)) = found else {
+            return Err(label);
+        };
+        self.placed.push(r);
+        let anchor = label.at;
+        label.at = at;
+        Ok((label, leader.then_some(anchor)))
+    }
+
+    /// Places every label of `labels` in order, each inside the bounds given with it, as
+    /// its need says.
     #[must_use]
-    pub fn place_all(&mut self, labels: impl IntoIterator<Item = (Label, Rect)>) -> Placement {
+    pub fn place_all(
+        &mut self,
+        labels: impl IntoIterator<Item = (Label, Rect, Need)>,
+    ) -> Placement {
         let mut placement = Placement::default();
-        for (label, bounds) in labels {
-            match self.place(label, &bounds) {
-                Ok(l) => placement.placed.push(l),
+        for (label, bounds, need) in labels {
+            match self.place(label, &bounds, need) {
+                Ok((l, leader)) => {
+                    if let Some(anchor) = leader {
+                        let extent = self.face.measure(&l.text, l.size);
+                        let r = boxed(&l, extent, l.at);
+                        placement
+                            .leaders
+                            .push((anchor, anchor.clamp(r.min, r.max), l.colour));
+                    }
+                    placement.placed.push(l);
+                }
                 Err(l) => placement.left_out.push(l),
             }
         }
@@ -287,8 +415,8 @@ mod tests {
     fn a_label_with_room_stays_at_its_anchor() {
         let face = Typeface::egui_default().unwrap();
         let mut placer = Placer::new(&face);
-        let placed = placer.place(label("T", Vec2::new(50.0, 50.0)), &canvas());
-        assert_eq!(placed.unwrap().at, Vec2::new(50.0, 50.0));
+        let placed = placer.place(label("T", Vec2::new(50.0, 50.0)), &canvas(), Need::Optional);
+        assert_eq!(placed.unwrap(), (label("T", Vec2::new(50.0, 50.0)), None));
     }
 
     #[test]
@@ -301,13 +429,21 @@ mod tests {
             Vec2::new(45.0, 65.0),
         ];
         placer.avoid(Obstacle::Polygon(head.clone()));
-        let placed = placer
-            .place(label("your T", Vec2::new(50.0, 50.0)), &canvas())
+        let (placed, _) = placer
+            .place(
+                label("your T", Vec2::new(50.0, 50.0)),
+                &canvas(),
+                Need::Optional,
+            )
             .unwrap();
         let r = placer.text_box(&placed, placed.at);
         assert!(!Obstacle::Polygon(head).touches(&r));
-        let edge = placer
-            .place(label("at the edge", Vec2::new(390.0, 290.0)), &canvas())
+        let (edge, _) = placer
+            .place(
+                label("at the edge", Vec2::new(390.0, 290.0)),
+                &canvas(),
+                Need::Optional,
+            )
             .unwrap();
         let r = placer.text_box(&edge, edge.at);
         assert!(r.max.x <= 400.0 && r.max.y <= 300.0);
@@ -318,15 +454,66 @@ mod tests {
         let face = Typeface::egui_default().unwrap();
         let mut placer = Placer::new(&face);
         placer.avoid(Obstacle::Box(canvas()));
-        let placement = placer.place_all([(label("θi = 40°", Vec2::new(50.0, 50.0)), canvas())]);
+        let placement = placer.place_all([(
+            label("θi = 40°", Vec2::new(50.0, 50.0)),
+            canvas(),
+            Need::Optional,
+        )]);
         assert!(placement.placed.is_empty());
         assert_eq!(placement.left_out[0].text, "θi = 40°");
         let tiny = Rect::from_min_size(Vec2::ZERO, Vec2::splat(5.0));
         assert!(
             Placer::new(&face)
-                .place(label("wide", Vec2::ZERO), &tiny)
+                .place(label("wide", Vec2::ZERO), &tiny, Need::Optional)
                 .is_err()
         );
+        // A label a lesson teaches is shown all the same, over what is not a handle.
+        let mut placer = Placer::new(&face);
+        let shaft = Obstacle::Shaft {
+            a: Vec2::ZERO,
+            b: Vec2::new(400.0, 300.0),
+            half_width: 300.0,
+        };
+        placer.avoid(shaft);
+        let placement =
+            placer.place_all([(label("T", Vec2::new(50.0, 50.0)), canvas(), Need::Shown)]);
+        assert_eq!(placement.placed.len(), 1);
+    }
+
+    #[test]
+    fn a_label_stays_off_a_shaft_and_goes_farther_with_a_leader_when_nothing_near_is_free() {
+        let face = Typeface::egui_default().unwrap();
+        let mut placer = Placer::new(&face);
+        // A thick ray across the canvas through the anchor.
+        let shaft = Obstacle::Shaft {
+            a: Vec2::new(0.0, 50.0),
+            b: Vec2::new(400.0, 50.0),
+            half_width: 3.0,
+        };
+        placer.avoid(shaft.clone());
+        let (near, leader) = placer
+            .place(
+                label("θt", Vec2::new(100.0, 45.0)),
+                &canvas(),
+                Need::Optional,
+            )
+            .unwrap();
+        assert!(!shaft.touches(&placer.text_box(&near, near.at)));
+        assert_eq!(leader, None, "a free spot is near");
+        // Everything near the anchor taken: the label goes farther, with a leader.
+        let mut placer = Placer::new(&face);
+        placer.avoid(Obstacle::Box(Rect::from_min_size(
+            Vec2::ZERO,
+            Vec2::new(300.0, 165.0),
+        )));
+        let placement = placer.place_all([(
+            label("a·W", Vec2::new(100.0, 50.0)),
+            canvas(),
+            Need::Optional,
+        )]);
+        assert_eq!(placement.placed.len(), 1, "{placement:?}");
+        assert_eq!(placement.leaders.len(), 1, "{placement:?}");
+        assert_eq!(placement.leaders[0].0, Vec2::new(100.0, 50.0));
     }
 
     #[test]
@@ -374,6 +561,11 @@ mod tests {
             (point(), 2.0f32..40.0, 2.0f32..40.0)
                 .prop_map(|(p, w, h)| Obstacle::Box(Rect::from_min_size(p, Vec2::new(w, h)))),
             (point(), 1.0f32..15.0).prop_map(|(center, radius)| Obstacle::Disc { center, radius }),
+            (point(), point(), 0.5f32..4.0).prop_map(|(a, b, half_width)| Obstacle::Shaft {
+                a,
+                b,
+                half_width
+            }),
             (point(), 0.0f32..6.3, 5.0f32..20.0).prop_map(|(tip, turn, length)| {
                 let d = Vec2::from_angle(turn) * length;
                 Obstacle::Polygon(vec![
@@ -401,12 +593,12 @@ mod tests {
                 placer.avoid(o.clone());
             }
             let aligns = [Align::Start, Align::Center, Align::End];
-            let labels: Vec<(Label, Rect)> = anchors
+            let labels: Vec<(Label, Rect, Need)> = anchors
                 .iter()
                 .map(|&(x, y, h, v, size, length)| {
                     let mut l = label(&"μ".repeat(length), Vec2::new(x, y));
                     (l.h, l.v, l.size) = (aligns[h], aligns[v], size);
-                    (l, canvas())
+                    (l, canvas(), Need::Optional)
                 })
                 .collect();
             let count = labels.len();

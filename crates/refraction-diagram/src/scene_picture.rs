@@ -15,7 +15,7 @@ use super::layout::{SMALLEST_TEXT, Viewport, font_size};
 use super::numbers::number;
 use super::palette::Palette;
 use super::picture::{GRAB_SCALE, medium_colour};
-use super::placer::{Obstacle, Placer};
+use super::placer::{Need, Obstacle, Placer};
 use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke};
 use super::spectrum::{ray_colour, wavelength_colour};
 use refraction_i18n::t;
@@ -431,6 +431,8 @@ struct ScenePictureBuilder<'a> {
     labels: Vec<Label>,
     /// Where the hit markers and handles start in `out`: what labels must leave free.
     marks_from: usize,
+    /// Where the rays start in `out` (they end where the marks start): labels stay off them.
+    rays_from: usize,
     face: Option<Typeface>,
     out: Vec<Primitive>,
 }
@@ -453,8 +455,39 @@ impl ScenePictureBuilder<'_> {
         });
     }
 
-    /// Places the waiting labels inside the drawing area, off the hit markers, the handles and
-    /// the aim's arrowhead, through the [`Placer`]; returns those left out.
+    /// Tells `placer` to keep labels off the rays: each segment of each ray drawn, or of every
+    /// few where thousands are drawn (their fans are dense; the labels still find the gaps).
+    fn avoid_rays(&self, placer: &mut Placer<'_>) {
+        /// The most ray segments the labels are checked against.
+        const MOST_SEGMENTS: usize = 3000;
+        let rays = &self.out[self.rays_from..self.marks_from];
+        let count: usize = rays
+            .iter()
+            .map(|p| match p {
+                Primitive::Polyline { points, .. } => points.len().saturating_sub(1),
+                _ => 0,
+            })
+            .sum();
+        let stride = count.div_ceil(MOST_SEGMENTS).max(1);
+        let segments = rays.iter().flat_map(|p| match p {
+            Primitive::Polyline { points, width, .. } => points
+                .windows(2)
+                .map(|w| (w[0], w[1], *width))
+                .collect::<Vec<_>>(),
+            _ => Vec::new(),
+        });
+        for (a, b, width) in segments.step_by(stride) {
+            placer.avoid(Obstacle::Shaft {
+                a,
+                b,
+                half_width: width * 0.5 + 1.0,
+            });
+        }
+    }
+
+    /// Places the waiting labels inside the drawing area, off the hit markers, the handles,
+    /// the aim's arrowhead and the rays, through the [`Placer`], with a leader line where the
+    /// nearest free spot is far; none is left out (a scene's labels name what it teaches).
     fn place(&mut self, handles: &[SceneHandle]) -> Vec<Label> {
         let labels = core::mem::take(&mut self.labels);
         let Some(face) = self.face.as_ref() else {
@@ -478,11 +511,14 @@ impl ScenePictureBuilder<'_> {
         for handle in handles {
             placer.avoid(Obstacle::Box(handle.grab_area()));
         }
+        self.avoid_rays(&mut placer);
         let drawing = self.layout.drawing;
-        let placement = placer.place_all(labels.into_iter().map(|l| (l, drawing)));
-        self.out
-            .extend(placement.placed.into_iter().map(Primitive::Text));
-        placement.left_out
+        let mut placement = placer.place_all(labels.into_iter().map(|l| (l, drawing, Need::Shown)));
+        let left_out = core::mem::take(&mut placement.left_out);
+        for figure in placement.figures() {
+            figure.lower(&mut self.out);
+        }
+        left_out
     }
 
     /// The world rectangle in the background medium's shade (rays end at its edge), then each
@@ -919,12 +955,14 @@ impl ScenePicture {
             layout,
             palette: *palette,
             labels: Vec::new(),
+            rays_from: 0,
             marks_from: 0,
             face: Typeface::egui_default().ok(),
             out: Vec::with_capacity(trace.segments.len() + trace.hits.len() / 4 + 64),
         };
         let handles = layout.handles(scene);
         b.shapes(scene);
+        b.rays_from = b.out.len();
         b.rays(trace);
         b.marks_from = b.out.len();
         b.hits(trace);
@@ -1028,6 +1066,46 @@ mod tests {
                     .map(|(_, c)| *c)
             })
             .collect()
+    }
+
+    #[test]
+    fn a_scenes_labels_lie_off_its_rays() {
+        // Issue 22: "F2 flint" covered the prism's fan, "BK7" the lens's converging rays,
+        // "cladding" lay inside the core.
+        let face = Typeface::egui_default().unwrap();
+        for name in [
+            "dispersing-prism",
+            "lens",
+            "fibre",
+            "slab",
+            "right-angle-prism",
+        ] {
+            let (scene, trace) = traced(name);
+            for size in [Vec2::new(760.0, 430.0), Vec2::new(1280.0, 620.0)] {
+                let layout = SceneLayout::new(trace.bounds, size);
+                let picture = ScenePicture::new(&scene, &trace, &layout);
+                let rays: Vec<Obstacle> = trace
+                    .segments
+                    .iter()
+                    .map(|s| Obstacle::Shaft {
+                        a: layout.at(s.from),
+                        b: layout.at(s.to),
+                        half_width: 0.5,
+                    })
+                    .collect();
+                for p in &picture.primitives {
+                    let Primitive::Text(l) = p else { continue };
+                    if l.background.is_none() {
+                        continue;
+                    }
+                    let extent = face.measure(&l.text, l.size);
+                    let min = l.at - extent * Vec2::new(l.h.fraction(), l.v.fraction());
+                    let text_box = Rect::from_min_size(min, extent);
+                    let covered = rays.iter().filter(|r| r.touches(&text_box)).count();
+                    assert_eq!(covered, 0, "{name} at {size}: {:?} covers rays", l.text);
+                }
+            }
+        }
     }
 
     #[test]
