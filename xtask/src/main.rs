@@ -4,8 +4,9 @@
 //! - `cargo xtask dist-assets [OUT_DIR]`: the man pages (one for the program, one per command)
 //!   and the bash, zsh and fish completions, generated from the command line's clap
 //!   definitions ([`refraction_explorer::cli::command`]) so that they always say what `--help`
-//!   says. `OUT_DIR` defaults to `target/dist-assets` in the repository, where the Debian
-//!   package's manifest (`[package.metadata.deb]` in the root `Cargo.toml`) takes them from.
+//!   says, and the icon's PNG sizes, rendered from `packaging/refraction-explorer.svg`.
+//!   `OUT_DIR` defaults to `target/dist-assets` in the repository, where the Debian package's
+//!   manifest (`[package.metadata.deb]` in the root `Cargo.toml`) takes them from.
 
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -16,8 +17,12 @@ use clap_complete::Shell;
 /// What `cargo xtask` without a known task prints.
 const USAGE: &str = "usage: cargo xtask dist-assets [OUT_DIR]\n\n\
     dist-assets  write the man pages (OUT_DIR/man/*.1) and the bash, zsh and fish completions\n\
-    \x20            (OUT_DIR/completions/) generated from the command line's definitions;\n\
-    \x20            OUT_DIR defaults to target/dist-assets in the repository";
+    \x20            (OUT_DIR/completions/) generated from the command line's definitions, and\n\
+    \x20            the icon's PNG sizes (OUT_DIR/icons/); OUT_DIR defaults to\n\
+    \x20            target/dist-assets in the repository";
+
+/// The icon's sizes in pixels, as the freedesktop.org hicolor theme names its folders.
+const ICON_SIZES: [u32; 7] = [16, 24, 32, 48, 64, 128, 256];
 
 /// The shells completions are written for, and the file each one's completion goes to.
 const SHELLS: [(Shell, &str); 3] = [
@@ -58,18 +63,19 @@ fn shown(args: &[&str]) -> String {
     )
 }
 
-/// `target/dist-assets` in the repository (the workspace's root, this crate's parent).
-fn default_out_dir() -> PathBuf {
+/// The repository: the workspace's root, this crate's parent.
+fn repository() -> &'static Path {
     let xtask = Path::new(env!("CARGO_MANIFEST_DIR"));
-    xtask
-        .parent()
-        .unwrap_or(xtask)
-        .join("target")
-        .join("dist-assets")
+    xtask.parent().unwrap_or(xtask)
 }
 
-/// Writes the man pages to `out/man` and the completions to `out/completions`, each folder
-/// emptied first so that a command removed from the program leaves no page behind. Returns
+/// `target/dist-assets` in the repository.
+fn default_out_dir() -> PathBuf {
+    repository().join("target").join("dist-assets")
+}
+
+/// Writes the man pages to `out/man`, the completions to `out/completions` and the icon's
+/// PNG sizes to `out/icons`, each folder emptied first so that a command removed from the program leaves no page behind. Returns
 /// how many files were written.
 ///
 /// # Errors
@@ -77,7 +83,8 @@ fn default_out_dir() -> PathBuf {
 fn dist_assets(out: &Path) -> Result<usize, String> {
     let man = out.join("man");
     let completions = out.join("completions");
-    for dir in [&man, &completions] {
+    let icons = out.join("icons");
+    for dir in [&man, &completions, &icons] {
         if dir.exists() {
             std::fs::remove_dir_all(dir)
                 .map_err(|e| format!("cannot empty {}: {e}", dir.display()))?;
@@ -92,7 +99,44 @@ fn dist_assets(out: &Path) -> Result<usize, String> {
         let path = completions.join(file);
         std::fs::write(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     }
-    Ok(pages + SHELLS.len())
+    Ok(pages + SHELLS.len() + icon_pngs(&icons)?)
+}
+
+/// Renders `packaging/refraction-explorer.svg` at each of [`ICON_SIZES`] into
+/// `dir/hicolor/NxN/apps/refraction-explorer.png`. Returns how many were written.
+///
+/// # Errors
+/// The SVG cannot be read or parsed, or a PNG cannot be encoded or written.
+fn icon_pngs(dir: &Path) -> Result<usize, String> {
+    let source = repository()
+        .join("packaging")
+        .join("refraction-explorer.svg");
+    let svg =
+        std::fs::read(&source).map_err(|e| format!("cannot read {}: {e}", source.display()))?;
+    let tree = resvg::usvg::Tree::from_data(&svg, &resvg::usvg::Options::default())
+        .map_err(|e| format!("cannot parse {}: {e}", source.display()))?;
+    for size in ICON_SIZES {
+        let mut pixmap = tiny_skia::Pixmap::new(size, size)
+            .ok_or_else(|| format!("cannot make a {size}x{size} picture"))?;
+        let scale = size as f32 / tree.size().width();
+        resvg::render(
+            &tree,
+            tiny_skia::Transform::from_scale(scale, scale),
+            &mut pixmap.as_mut(),
+        );
+        let png = pixmap
+            .encode_png()
+            .map_err(|e| format!("cannot encode the {size}x{size} icon: {e}"))?;
+        let folder = dir
+            .join("hicolor")
+            .join(format!("{size}x{size}"))
+            .join("apps");
+        std::fs::create_dir_all(&folder)
+            .map_err(|e| format!("cannot make {}: {e}", folder.display()))?;
+        let path = folder.join("refraction-explorer.png");
+        std::fs::write(&path, png).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    }
+    Ok(ICON_SIZES.len())
 }
 
 /// Writes `refraction-explorer.1` and a `refraction-explorer-COMMAND.1` for each command into
@@ -152,7 +196,25 @@ mod tests {
                 assert!(text.contains(command), "{file} does not offer {command}");
             }
         }
-        assert!(written >= 6 + SHELLS.len(), "only {written} files");
+        for size in ICON_SIZES {
+            let png = out.path().join(format!(
+                "icons/hicolor/{size}x{size}/apps/refraction-explorer.png"
+            ));
+            let picture = tiny_skia::Pixmap::load_png(&png).unwrap();
+            assert_eq!((picture.width(), picture.height()), (size, size), "{size}");
+            // The tile is opaque in the middle and transparent in its rounded corners.
+            let middle = picture.pixel(size / 2, size / 2).unwrap();
+            assert_eq!(middle.alpha(), 255, "{size}: the middle is not opaque");
+            assert_eq!(
+                picture.pixel(0, 0).unwrap().alpha(),
+                0,
+                "{size}: the corner"
+            );
+        }
+        assert!(
+            written >= 6 + SHELLS.len() + ICON_SIZES.len(),
+            "only {written} files"
+        );
     }
 
     /// A second run replaces the first's files rather than adding to them.
