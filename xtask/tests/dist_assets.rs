@@ -9,7 +9,7 @@ fn xtask(args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_xtask"))
         .args(args)
         .output()
-        .unwrap()
+        .expect("the xtask binary runs")
 }
 
 /// `dist-assets OUT_DIR` writes the pages, completions and icons there and says how many.
