@@ -75,20 +75,18 @@ fn default_out_dir() -> PathBuf {
 }
 
 /// Writes the man pages to `out/man`, the completions to `out/completions` and the icon's
-/// PNG sizes to `out/icons`, each folder emptied first so that a command removed from the program leaves no page behind. Returns
-/// how many files were written.
+/// PNG sizes to `out/icons`, after removing the pages and icons an earlier run wrote there (so
+/// that a command removed from the program leaves no page behind). Returns how many files
+/// were written.
 ///
 /// # Errors
-/// A folder that cannot be made or emptied, or a file that cannot be written, named.
+/// A folder that cannot be made, or a file that cannot be removed or written, named.
 fn dist_assets(out: &Path) -> Result<usize, String> {
     let man = out.join("man");
     let completions = out.join("completions");
     let icons = out.join("icons");
+    remove_earlier(out)?;
     for dir in [&man, &completions, &icons] {
-        if dir.exists() {
-            std::fs::remove_dir_all(dir)
-                .map_err(|e| format!("cannot empty {}: {e}", dir.display()))?;
-        }
         std::fs::create_dir_all(dir).map_err(|e| format!("cannot make {}: {e}", dir.display()))?;
     }
     let pages = man_pages(&man)?;
@@ -100,6 +98,38 @@ fn dist_assets(out: &Path) -> Result<usize, String> {
         std::fs::write(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     }
     Ok(pages + SHELLS.len() + icon_pngs(&icons)?)
+}
+
+/// Removes what an earlier run wrote under `out` and this one may not write again: the man
+/// pages (`man/refraction-explorer*.1`) and the icon's PNGs. Nothing else there is touched,
+/// whatever folder `out` is.
+///
+/// # Errors
+/// A file that cannot be removed, named.
+fn remove_earlier(out: &Path) -> Result<(), String> {
+    let mut earlier = Vec::new();
+    if let Ok(pages) = std::fs::read_dir(out.join("man")) {
+        for page in pages.flatten() {
+            let name = page.file_name();
+            let name = name.to_string_lossy();
+            if name.starts_with("refraction-explorer") && name.ends_with(".1") {
+                earlier.push(page.path());
+            }
+        }
+    }
+    if let Ok(sizes) = std::fs::read_dir(out.join("icons").join("hicolor")) {
+        for size in sizes.flatten() {
+            let png = size.path().join("apps").join("refraction-explorer.png");
+            if png.is_file() {
+                earlier.push(png);
+            }
+        }
+    }
+    for path in earlier {
+        std::fs::remove_file(&path)
+            .map_err(|e| format!("cannot remove {}: {e}", path.display()))?;
+    }
+    Ok(())
 }
 
 /// Renders `packaging/refraction-explorer.svg` at each of [`ICON_SIZES`] into
@@ -217,17 +247,25 @@ mod tests {
         );
     }
 
-    /// A second run replaces the first's files rather than adding to them.
+    /// A second run replaces the first's pages and icons, and leaves other files alone.
     #[test]
-    fn dist_assets_start_from_empty_folders() {
+    fn dist_assets_replace_only_their_own_files() {
         let out = tempfile::tempdir().unwrap();
         std::fs::create_dir_all(out.path().join("man")).unwrap();
         std::fs::write(out.path().join("man/refraction-explorer-gone.1"), "old").unwrap();
+        std::fs::write(out.path().join("man/other.1"), "someone else's").unwrap();
+        std::fs::create_dir_all(out.path().join("icons/hicolor/20x20/apps")).unwrap();
+        let old_icon = out
+            .path()
+            .join("icons/hicolor/20x20/apps/refraction-explorer.png");
+        std::fs::write(&old_icon, "old").unwrap();
         let first = dist_assets(out.path()).unwrap();
         assert!(
             !out.path().join("man/refraction-explorer-gone.1").exists(),
             "a stale page survived"
         );
+        assert!(!old_icon.exists(), "a stale icon survived");
+        assert!(out.path().join("man/other.1").exists(), "another file went");
         assert_eq!(dist_assets(out.path()).unwrap(), first, "the count changed");
     }
 }
