@@ -2,8 +2,11 @@
 //! [`refraction_kernel`] (the math), [`refraction_model`] (what is explored),
 //! [`refraction_scene`] (scenes and their tracer), [`refraction_diagram`] (what is drawn),
 //! [`refraction_render`] (drawn off screen) and [`refraction_tools`] (`solve`, `check` and
-//! state files). The commands are in the binary (`src/main.rs`, `src/commands/`).
+//! state files). The commands run in the binary (`src/main.rs`, `src/commands/`).
 //!
 //! - [`app`]: the explorer window (eframe, egui); its plots are the diagram crate's.
+//! - [`cli`]: the command line's definitions (clap), which the binary parses and the `xtask`
+//!   turns into man pages and shell completions.
 
 pub mod app;
+pub mod cli;

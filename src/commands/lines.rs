@@ -4,9 +4,7 @@ use std::io::{self, BufRead, Write as _};
 use std::path::Path;
 use std::process::ExitCode;
 
-use refraction_kernel::api::Api;
 use refraction_tools::api_check::{Format, Options, Pattern, Session};
-use refraction_tools::solve::Precision;
 use refraction_tools::{self as jsonl, LinesError, solve as solver};
 
 use super::{fail, output, output_error};
@@ -25,28 +23,6 @@ pub fn solve() -> ExitCode {
         Ok(true) => ExitCode::SUCCESS,
         Ok(false) => ExitCode::from(1),
         Err(e) => stopped("solve", "standard input", &e),
-    }
-}
-
-/// Reads `--api NAME`.
-///
-/// # Errors
-/// An unknown name; the message lists the known ones.
-pub fn parse_api(name: &str) -> Result<Api, String> {
-    Api::from_name(name).ok_or_else(|| {
-        format!("unknown API \"{name}\": expected glsl (or hlsl, wgsl, glm, glam), pbrt, rtiow or mitsuba")
-    })
-}
-
-/// Reads `--precision f32|f64`.
-///
-/// # Errors
-/// Anything else.
-pub fn parse_precision(name: &str) -> Result<Precision, String> {
-    match name {
-        "f32" | "float" => Ok(Precision::F32),
-        "f64" | "double" => Ok(Precision::F64),
-        _ => Err(format!("unknown precision \"{name}\": expected f32 or f64")),
     }
 }
 
@@ -76,20 +52,6 @@ pub struct Reading<'a> {
     pub paths: bool,
     /// `--summary`: the file the diagnosis of the whole log goes to.
     pub summary: Option<&'a Path>,
-}
-
-/// Reads `--inside` and `--outside`: an index of refraction, a finite number > 0.
-///
-/// # Errors
-/// Anything else; the message says what was given.
-pub fn parse_index(text: &str) -> Result<f64, String> {
-    match text.trim().parse::<f64>() {
-        Ok(x) if x.is_finite() && x > 0.0 => Ok(x),
-        Ok(x) => Err(format!(
-            "an index of refraction must be a finite number > 0, not {x}"
-        )),
-        Err(e) => Err(format!("\"{text}\" is not a number: {e}")),
-    }
 }
 
 /// Runs `check` (with `--api`, in that API's terms) on `file` or stdin: an answer per line on

@@ -9,6 +9,7 @@ use refraction_diagram::Overlay;
 use refraction_diagram::animation::Animation;
 use refraction_diagram::palette::Theme;
 use refraction_explorer::app::{self, Launch, View};
+use refraction_explorer::cli::{RenderArgs, ViewArg};
 use refraction_i18n::Locale;
 use refraction_model::ExplorerState;
 use refraction_render::animation::AnimationSpec;
@@ -21,68 +22,6 @@ use super::{fail, output, output_error};
 
 /// The still formats: what `render` without `--animate` and `bench --plot` write.
 pub const STILL: [ImageFormat; 2] = [ImageFormat::Png, ImageFormat::Svg];
-
-/// What `render` is asked for on the command line.
-#[derive(clap::Args)]
-pub struct RenderArgs {
-    /// A scene to trace and draw instead of the single interface: a built-in scene's name
-    /// (see `trace --list`) or the path of a scene file (TOML).
-    scene: Option<String>,
-    /// The file to write (replaced atomically), or - for standard output (PNG, or GIF with
-    /// --animate). Its extension picks the format: .png or .svg (labels as editable text) for
-    /// a picture, .gif for --animate.
-    #[arg(long, value_name = "FILE.png|FILE.svg|FILE.gif")]
-    out: PathBuf,
-    /// Width in pixels (64 to 8192).
-    #[arg(long, default_value_t = render::DEFAULT_SIZE.0)]
-    width: u32,
-    /// Height in pixels (64 to 8192).
-    #[arg(long, default_value_t = render::DEFAULT_SIZE.1)]
-    height: u32,
-    /// The single-interface problem to draw, as JSON with the fields of `solve` (default: 40°
-    /// from air into glass); not with SCENE.
-    #[arg(long, value_name = "FILE.json")]
-    state: Option<PathBuf>,
-    /// Write an animated GIF of the diagram instead: mu (μt moves to μi, T turns into W),
-    /// sweep (θi from normal incidence to grazing, from the denser medium, so that total
-    /// internal reflection appears) or wavefronts (the fronts moving at c/μ, looping); not
-    /// with SCENE.
-    #[arg(long, value_name = "mu|sweep|wavefronts", value_parser = parse_animation)]
-    animate: Option<Animation>,
-    /// The animation's frames (2 to 600; default 36).
-    #[arg(long, value_name = "N", requires = "animate")]
-    frames: Option<usize>,
-    /// The animation's frames per second (1 to 50; default 12).
-    #[arg(long, value_name = "F", requires = "animate")]
-    fps: Option<u32>,
-    /// What to draw of the single interface: the diagram (the default), the Fresnel plot of
-    /// its media with the cursor at its θi, or the accuracy-against-time plot of a quick
-    /// measurement (as the window's views draw them); not with SCENE or --animate.
-    #[arg(long, value_enum, default_value_t = ViewArg::Interface)]
-    view: ViewArg,
-}
-
-/// The views `render --view` draws.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-enum ViewArg {
-    /// The interface diagram.
-    Interface,
-    /// Reflectance and transmittance against θi.
-    Fresnel,
-    /// Error against time per ray, measured now (the quick set).
-    Accuracy,
-}
-
-/// The animation named `name` on the command line.
-fn parse_animation(name: &str) -> Result<Animation, String> {
-    Animation::from_name(name).ok_or_else(|| {
-        let names: Vec<&str> = Animation::ALL.iter().map(|a| a.name()).collect();
-        format!(
-            "no animation is called {name:?}: the animations are {}",
-            names.join(", ")
-        )
-    })
-}
 
 /// Where an image goes: a file, written by [`refraction_files::write_atomically`], or stdout (`-`).
 #[derive(Clone, Copy, Debug)]

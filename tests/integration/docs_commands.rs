@@ -215,6 +215,11 @@ fn the_accuracy_guides_commands_run_as_written() {
 }
 
 #[test]
+fn the_install_guides_commands_run_as_written() {
+    run_page("docs/install.md");
+}
+
+#[test]
 fn every_page_of_the_guide_is_run() {
     let mut pages: Vec<String> = std::fs::read_dir(root().join("docs"))
         .unwrap()
@@ -234,6 +239,7 @@ fn every_page_of_the_guide_is_run() {
             "accuracy.md",
             "check.md",
             "classroom.md",
+            "install.md",
             "scenes.md",
             "solve.md"
         ],

@@ -1,0 +1,314 @@
+//! The command line's definitions (clap): the options of the explorer window and the
+//! subcommands, with the parsers of their values. The binary (`src/main.rs`) parses them and
+//! runs the commands (`src/commands/`); the `xtask` crate generates the man pages and the shell
+//! completions from [`command`], so that they say what `--help` says.
+#![allow(
+    rustdoc::broken_intra_doc_links,
+    reason = "the doc comments here are clap's help text, printed as written: its JSON examples \
+              (`[x,y,z]`) are not links, and escaping them would show in --help"
+)]
+
+use std::path::PathBuf;
+
+use clap::{CommandFactory as _, Parser, Subcommand, ValueEnum};
+use refraction_diagram::animation::Animation;
+use refraction_diagram::palette::Theme;
+use refraction_i18n::Locale;
+use refraction_kernel::api::Api;
+use refraction_scene::DEFAULT_SCENE;
+use refraction_tools::solve::Precision;
+
+use crate::app::View;
+
+/// The whole command line as clap describes it: what `--help`, the man pages and the shell
+/// completions are made from.
+pub fn command() -> clap::Command {
+    Cli::command()
+}
+
+/// Makes refraction visible: a trig-free refraction kernel, its four sign candidates, and an
+/// interactive explorer (opened when no subcommand is given).
+#[derive(Parser)]
+#[command(version, about)]
+pub struct Cli {
+    /// The subcommand; without one, the explorer window opens.
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    /// Open the explorer on the problem in this JSON file (fields as for `solve`); without it
+    /// the explorer reopens where it was last closed.
+    #[arg(long, value_name = "FILE.json")]
+    pub state: Option<PathBuf>,
+    /// Open the explorer in presentation mode: full screen, everything larger, the side panels
+    /// closed (F11 leaves it).
+    #[arg(long)]
+    pub present: bool,
+    /// The explorer's view to open on (default: the one shown when it was last closed, or
+    /// `one` with --state).
+    #[arg(long, value_enum, value_name = "VIEW")]
+    pub view: Option<ViewName>,
+    /// The explorer's theme (default: the one chosen last time).
+    #[arg(long, value_enum, value_name = "NAME")]
+    pub theme: Option<ThemeName>,
+    /// The language of the explorer and of the text `render` draws: en, de, es, fr, pt-BR or
+    /// ru (default: the one chosen in the explorer last time, else the system's). The JSON of
+    /// `solve` and `check` is the same in every language.
+    #[arg(long, global = true, value_name = "CODE", value_parser = language)]
+    pub lang: Option<Locale>,
+}
+
+/// The language `--lang` names.
+///
+/// # Errors
+/// A code with no translation; the message lists the known ones.
+pub fn language(code: &str) -> Result<Locale, String> {
+    Locale::from_tag(code).ok_or_else(|| {
+        let known: Vec<&str> = Locale::ALL.iter().map(|l| l.code()).collect();
+        format!(
+            "no translation for `{code}`: choose one of {}",
+            known.join(", ")
+        )
+    })
+}
+
+/// The views as the command line names them.
+#[derive(Clone, Copy, ValueEnum)]
+pub enum ViewName {
+    /// One interface: drag W, N and μ.
+    One,
+    /// A traced scene.
+    Scenes,
+    /// Accuracy against time.
+    Accuracy,
+}
+
+impl From<ViewName> for View {
+    fn from(name: ViewName) -> Self {
+        match name {
+            ViewName::One => Self::Interface,
+            ViewName::Scenes => Self::Scenes,
+            ViewName::Accuracy => Self::Accuracy,
+        }
+    }
+}
+
+/// The themes as the command line names them.
+#[derive(Clone, Copy, ValueEnum)]
+pub enum ThemeName {
+    /// Soft media shading on white.
+    Standard,
+    /// Black on white, for a bright room.
+    HighContrastLight,
+    /// White on black, for a dark room.
+    HighContrastDark,
+}
+
+impl From<ThemeName> for Theme {
+    fn from(name: ThemeName) -> Self {
+        match name {
+            ThemeName::Standard => Self::Standard,
+            ThemeName::HighContrastLight => Self::HighContrastLight,
+            ThemeName::HighContrastDark => Self::HighContrastDark,
+        }
+    }
+}
+
+/// The subcommands, for scripts and slides.
+#[derive(Subcommand)]
+#[expect(
+    clippy::doc_markdown,
+    reason = "clap prints these comments as the commands' help, where backticks would show"
+)]
+pub enum Command {
+    /// Read refraction problems as JSON Lines on stdin; write one JSON answer per line.
+    ///
+    /// Input: {"w":[x,y,z],"n":[x,y,z],"mu_i":1,"mu_t":1.5} with optional
+    /// "convention" ("along_ray" | "toward_origin") and "precision" ("f64" | "f32").
+    /// Exit status 0 when every line was solved, 1 when any line was an error.
+    Solve,
+    /// Check the T your ray tracer produced, line by line and as a whole log: which mistake in
+    /// your code explains the lines that are wrong, and its fix.
+    ///
+    /// Without --api, each line (JSON Lines from FILE or stdin, a --pattern log or --csv) has
+    /// the `solve` fields "w", "n", "mu_i", "mu_t" (or "entering" with --inside and
+    /// --outside), "t_yours" (your T: an array, a string such as "vec3(0.1, -0.9, 0)", or null
+    /// where your code reported total internal reflection) and optionally "ratio" (the ratio
+    /// your code used). With --api, each line is the call your code made in that API's own
+    /// terms (glsl: I, N, eta, result; pbrt: wi, n, eta, returned, wt, etap; rtiow: uv, n,
+    /// etai_over_etat, refracted, front_face; mitsuba: wi, n, eta, wo), with optional truth
+    /// "from", "to", "travel", "entering".
+    ///
+    /// Answers each line with "ok", "matches" (chosen, wrong_side, wrong_bend, reversed,
+    /// total_internal_reflection or null), "explanation" and "mistakes"; the tally and the
+    /// diagnosis of the whole log go to stderr (and with --summary to a JSON file). Exit
+    /// status 0 when every line is ok, 1 otherwise.
+    Check {
+        /// JSON Lines file to read (stdin when absent).
+        file: Option<PathBuf>,
+        /// Check calls of this API: glsl (or hlsl, wgsl, glm, glam), pbrt, rtiow, mitsuba.
+        #[arg(long, value_name = "NAME", value_parser = parse_api)]
+        api: Option<Api>,
+        /// The index inside the object: with --outside, "entering" gives "from" and "to".
+        #[arg(long, value_name = "X", requires = "outside", value_parser = parse_index)]
+        inside: Option<f64>,
+        /// The index outside the object.
+        #[arg(long, value_name = "Y", requires = "inside", value_parser = parse_index)]
+        outside: Option<f64>,
+        /// The precision your code computes in, unless a line says (default: f32 for glsl,
+        /// pbrt and mitsuba, f64 for rtiow and without --api).
+        #[arg(long, value_name = "f32|f64", value_parser = parse_precision)]
+        precision: Option<Precision>,
+        /// Read printf-style log lines: each {field} takes a number or a vector as programs
+        /// print it, {_} anything; lines that do not match are skipped and counted.
+        #[arg(long, value_name = "PATTERN", conflicts_with = "csv")]
+        pattern: Option<String>,
+        /// Read CSV with a header line naming the fields.
+        #[arg(long)]
+        csv: bool,
+        /// Also write the diagnosis of the whole log to this JSON file: {"lines", "judged",
+        /// "ok", "skipped", "diagnosis": [{"code", "lines", "where", "fix"}, ...]}, the verdict
+        /// first ("none" when nothing is wrong).
+        #[arg(long, value_name = "FILE.json")]
+        summary: Option<PathBuf>,
+        /// With --pattern, answer a line that does not match with an error instead of skipping it.
+        #[arg(long, requires = "pattern")]
+        strict: bool,
+        /// Consecutive lines with the same "path" are one ray's hits: after each path, a
+        /// summary line {"path","hits","first_wrong","exit_ok","explanation"}.
+        #[arg(long, requires = "api")]
+        paths: bool,
+    },
+    /// Measure what accuracy costs in time: every kernel variant at f32 and f64, timed on
+    /// this machine and compared with a double-double oracle.
+    Bench {
+        /// A shorter run (under 20 s on 2 cores); the default run is steadier.
+        #[arg(long)]
+        quick: bool,
+        /// Print one JSON document instead of the table.
+        #[arg(long)]
+        json: bool,
+        /// Also draw error against time per variant (log scales) into this PNG file (checked
+        /// before the measurement starts).
+        #[arg(long, value_name = "FILE.png")]
+        plot: Option<PathBuf>,
+    },
+    /// Trace a scene: a ray, beam or fan crossing interface after interface.
+    ///
+    /// Prints a summary and the counts of what the tracer computed; with --json, the ray paths
+    /// (points, medium per segment, wavelength, intensity), every hit, the shapes' outlines,
+    /// the world bounds and the counts.
+    Trace {
+        /// A built-in scene's name (see --list) or the path of a scene file (TOML).
+        #[arg(default_value = DEFAULT_SCENE)]
+        scene: String,
+        /// Print the trace as one JSON object.
+        #[arg(long)]
+        json: bool,
+        /// List the built-in scenes (name and title) and exit.
+        #[arg(long)]
+        list: bool,
+    },
+    /// Draw the explorer's diagram, or a traced scene, into a PNG or SVG file, or an animation
+    /// of the diagram into a GIF, without a window.
+    Render(RenderArgs),
+}
+
+/// What `render` is asked for on the command line.
+#[derive(clap::Args)]
+pub struct RenderArgs {
+    /// A scene to trace and draw instead of the single interface: a built-in scene's name
+    /// (see `trace --list`) or the path of a scene file (TOML).
+    pub scene: Option<String>,
+    /// The file to write (replaced atomically), or - for standard output (PNG, or GIF with
+    /// --animate). Its extension picks the format: .png or .svg (labels as editable text) for
+    /// a picture, .gif for --animate.
+    #[arg(long, value_name = "FILE.png|FILE.svg|FILE.gif")]
+    pub out: PathBuf,
+    /// Width in pixels (64 to 8192).
+    #[arg(long, default_value_t = refraction_render::DEFAULT_SIZE.0)]
+    pub width: u32,
+    /// Height in pixels (64 to 8192).
+    #[arg(long, default_value_t = refraction_render::DEFAULT_SIZE.1)]
+    pub height: u32,
+    /// The single-interface problem to draw, as JSON with the fields of `solve` (default: 40°
+    /// from air into glass); not with SCENE.
+    #[arg(long, value_name = "FILE.json")]
+    pub state: Option<PathBuf>,
+    /// Write an animated GIF of the diagram instead: mu (μt moves to μi, T turns into W),
+    /// sweep (θi from normal incidence to grazing, from the denser medium, so that total
+    /// internal reflection appears) or wavefronts (the fronts moving at c/μ, looping); not
+    /// with SCENE.
+    #[arg(long, value_name = "mu|sweep|wavefronts", value_parser = parse_animation)]
+    pub animate: Option<Animation>,
+    /// The animation's frames (2 to 600; default 36).
+    #[arg(long, value_name = "N", requires = "animate")]
+    pub frames: Option<usize>,
+    /// The animation's frames per second (1 to 50; default 12).
+    #[arg(long, value_name = "F", requires = "animate")]
+    pub fps: Option<u32>,
+    /// What to draw of the single interface: the diagram (the default), the Fresnel plot of
+    /// its media with the cursor at its θi, or the accuracy-against-time plot of a quick
+    /// measurement (as the window's views draw them); not with SCENE or --animate.
+    #[arg(long, value_enum, default_value_t = ViewArg::Interface)]
+    pub view: ViewArg,
+}
+
+/// The views `render --view` draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum ViewArg {
+    /// The interface diagram.
+    Interface,
+    /// Reflectance and transmittance against θi.
+    Fresnel,
+    /// Error against time per ray, measured now (the quick set).
+    Accuracy,
+}
+
+/// The animation named `name` on the command line.
+///
+/// # Errors
+/// An unknown name; the message lists the animations.
+pub fn parse_animation(name: &str) -> Result<Animation, String> {
+    Animation::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = Animation::ALL.iter().map(|a| a.name()).collect();
+        format!(
+            "no animation is called {name:?}: the animations are {}",
+            names.join(", ")
+        )
+    })
+}
+
+/// Reads `--api NAME`.
+///
+/// # Errors
+/// An unknown name; the message lists the known ones.
+pub fn parse_api(name: &str) -> Result<Api, String> {
+    Api::from_name(name).ok_or_else(|| {
+        format!("unknown API \"{name}\": expected glsl (or hlsl, wgsl, glm, glam), pbrt, rtiow or mitsuba")
+    })
+}
+
+/// Reads `--precision f32|f64`.
+///
+/// # Errors
+/// Anything else.
+pub fn parse_precision(name: &str) -> Result<Precision, String> {
+    match name {
+        "f32" | "float" => Ok(Precision::F32),
+        "f64" | "double" => Ok(Precision::F64),
+        _ => Err(format!("unknown precision \"{name}\": expected f32 or f64")),
+    }
+}
+
+/// Reads `--inside` and `--outside`: an index of refraction, a finite number > 0.
+///
+/// # Errors
+/// Anything else; the message says what was given.
+pub fn parse_index(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(x) if x.is_finite() && x > 0.0 => Ok(x),
+        Ok(x) => Err(format!(
+            "an index of refraction must be a finite number > 0, not {x}"
+        )),
+        Err(e) => Err(format!("\"{text}\" is not a number: {e}")),
+    }
+}
