@@ -415,6 +415,12 @@ impl Explorer {
     fn show_interface(&mut self, ui: &mut Ui) {
         let presenting = self.presentation.on;
         self.panels.keys(ui, presenting);
+        if presenting && self.tools.open.is_some() {
+            let opened = self.tools.just_opened().is_some();
+            if self.panels.make_room(opened) {
+                self.tools.open = None;
+            }
+        }
         // First, so that the tool has the window's full height beside (or width under) the
         // panels.
         let palette = self.presentation.palette();

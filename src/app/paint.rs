@@ -17,6 +17,13 @@ pub fn color(c: Colour) -> Color32 {
     Color32::from_rgba_unmultiplied(c.r, c.g, c.b, c.a)
 }
 
+/// The diagram colour of an egui colour (its opacity kept).
+#[must_use]
+pub fn colour(c: Color32) -> Colour {
+    let [r, g, b, a] = c.to_srgba_unmultiplied();
+    Colour { r, g, b, a }
+}
+
 /// Where this frame's palette is kept in the context's memory.
 fn palette_id() -> Id {
     Id::unique("window-palette")

@@ -111,6 +111,25 @@ impl Panels {
         }
     }
 
+    /// In presentation a side panel and the open tool do not share the screen: together they
+    /// would squeeze the panel's controls (a label wrapped letter by letter at 1280×720) or
+    /// the diagram below its share. The one opened last stays, the other gives way
+    /// (`tool_opened`: the tool was opened this frame). Returns whether the tool must close.
+    pub fn make_room(&mut self, tool_opened: bool) -> bool {
+        let mut close_tool = false;
+        for panel in [CONTROLS, NUMBERS] {
+            let shown = self.presenting.of(&panel);
+            if *shown {
+                if tool_opened {
+                    *shown = false;
+                } else {
+                    close_tool = true;
+                }
+            }
+        }
+        close_tool
+    }
+
     /// Toggles the panels whose keys were pressed (unless a text field has the keyboard).
     pub fn keys(&mut self, ui: &Ui, presenting: bool) {
         if ui.ctx().text_edit_focused() {

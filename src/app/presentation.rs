@@ -7,6 +7,7 @@ use egui::{
     TextStyle, Ui, ViewportCommand, WidgetInfo,
 };
 
+use super::paint::colour;
 use refraction_diagram::overlay::PanZoom;
 use refraction_diagram::palette::{Palette, Theme};
 use refraction_i18n::{Locale, t};
@@ -58,15 +59,36 @@ pub struct Presentation {
     applied: Option<Applied>,
 }
 
+/// A quieter shade of `text` on `back` that still has a contrast of 4.5:1 with it: the
+/// farthest toward `back`, in steps of a twentieth, that keeps it.
+fn weak(text: Color32, back: Color32) -> Color32 {
+    let (text_c, back_c) = (colour(text), colour(back));
+    let t = (0..=10)
+        .map(|i| f32::from(i as u8) / 20.0)
+        .take_while(|t| text_c.lerp(back_c, *t).contrast(back_c) >= 4.6)
+        .last()
+        .unwrap_or(0.0);
+    let c = text_c.lerp(back_c, t);
+    Color32::from_rgb(c.r, c.g, c.b)
+}
+
 /// The egui look of a theme: the standard light one, or black on white / white on black with
 /// strong borders.
 #[must_use]
 pub fn visuals(theme: Theme) -> egui::Visuals {
     let (mut visuals, text, back) = match theme {
-        Theme::Standard => return egui::Visuals::light(),
+        Theme::Standard => {
+            let mut visuals = egui::Visuals::light();
+            // egui's weak text (the hints) is 60 % of the text over the panel: 2.9:1, under
+            // the 4.5:1 text must have. A grey between them that keeps 4.5:1 and reads as
+            // quieter than the text.
+            visuals.weak_text_color = Some(weak(visuals.text_color(), visuals.panel_fill));
+            return visuals;
+        }
         Theme::HighContrastLight => (egui::Visuals::light(), Color32::BLACK, Color32::WHITE),
         Theme::HighContrastDark => (egui::Visuals::dark(), Color32::WHITE, Color32::BLACK),
     };
+    visuals.weak_text_color = Some(weak(text, back));
     visuals.override_text_color = Some(text);
     visuals.panel_fill = back;
     visuals.window_fill = back;
@@ -274,6 +296,16 @@ mod tests {
         let dark = visuals(Theme::HighContrastDark);
         assert!(dark.dark_mode);
         assert_eq!(dark.panel_fill, Color32::BLACK);
-        assert_eq!(visuals(Theme::Standard), egui::Visuals::light());
+        // Every theme's hints read at 4.5:1 (the standard light look's were 2.9:1).
+        for theme in Theme::ALL {
+            let v = visuals(theme);
+            let ratio = colour(v.weak_text_color()).contrast(colour(v.panel_fill));
+            assert!(ratio >= 4.5, "{theme:?}: {ratio}");
+            assert_ne!(
+                v.weak_text_color(),
+                v.text_color(),
+                "{theme:?}: weak text is quieter"
+            );
+        }
     }
 }

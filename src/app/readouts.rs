@@ -107,7 +107,7 @@ fn role_label(ui: &mut Ui, row: &CandidateRow, palette: &Palette) {
 fn marks(ui: &mut Ui, row: &CandidateRow, palette: &Palette, named: bool) {
     for (passed, name) in passes(row).into_iter().zip(checks()) {
         let ink = if passed { palette.n } else { palette.alarm };
-        ui.label(RichText::new(mark(passed)).color(color(ink)));
+        ui.label(RichText::new(mark(passed)).color(color(palette.text_shade(ink))));
         if named {
             ui.label(name);
         }
@@ -162,7 +162,8 @@ fn candidate_blocks(ui: &mut Ui, rows: &[CandidateRow], palette: &Palette) {
 fn candidates(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     let rows = rows(r);
     if rows.is_empty() {
-        ui.label(RichText::new(t!("readouts-no-candidates")).color(color(palette.alarm)));
+        let alarm = palette.text_shade(palette.alarm);
+        ui.label(RichText::new(t!("readouts-no-candidates")).color(color(alarm)));
         return;
     }
     let line = ui.text_style_height(&egui::TextStyle::Body);

@@ -76,6 +76,8 @@ pub struct Tools {
     pub walk: WalkThrough,
     /// Save, open, share.
     pub files: FilesPanel,
+    /// The tool shown last frame, to tell a tool just opened.
+    shown: Option<Tool>,
 }
 
 impl Tools {
@@ -99,6 +101,7 @@ impl Tools {
         presenting: bool,
         palette: &Palette,
     ) {
+        self.shown = self.open;
         let Some(tool) = self.open else {
             return;
         };
@@ -128,6 +131,12 @@ impl Tools {
                 Tool::Fresnel => fresnel_panel::show(ui, state, palette),
             });
         });
+    }
+
+    /// The tool opened since the last frame, if one was.
+    #[must_use]
+    pub fn just_opened(&self) -> Option<Tool> {
+        self.open.filter(|tool| self.shown != Some(*tool))
     }
 
     /// Opens a file dropped on the window as a log in Check my T, which opens (a renderer's

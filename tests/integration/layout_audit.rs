@@ -132,6 +132,12 @@ fn set_up(h: &mut Harness<'_, Explorer>, present: bool, theme: &str, tool: Optio
         click(h, theme);
     }
     if let Some(tool) = tool {
+        // In presentation the controls are opened first, as a teacher who set up the case
+        // and then opens a tool: the two must not squeeze each other at 1280×720.
+        if present {
+            h.key_press(egui::Key::F2);
+            h.run();
+        }
         click(h, tool);
     }
     // Beside the Fresnel tool, the effects it explains are on too: their labels and the
@@ -163,6 +169,8 @@ fn settle(h: &mut Harness<'_, Explorer>) {
 struct Measured {
     share: f32,
     smallest_text_px: f32,
+    /// The least contrast of the window's text with its panels.
+    contrast: f32,
     problems: Vec<String>,
 }
 
@@ -220,6 +228,95 @@ fn check_controls_inside<S>(h: &Harness<'_, S>, what: &str, problems: &mut Vec<S
     }
 }
 
+/// Texts wrapped letter by letter (a panel squeezed below its controls' width): a galley of
+/// three rows or more whose rows hold two characters at the most.
+fn check_squeezed<S>(h: &Harness<'_, S>, what: &str, problems: &mut Vec<String>) {
+    fn visit(shape: &Shape, what: &str, problems: &mut Vec<String>) {
+        match shape {
+            Shape::Vec(shapes) => shapes.iter().for_each(|s| visit(s, what, problems)),
+            Shape::Text(text) => {
+                let rows = &text.galley.rows;
+                let narrow = rows
+                    .iter()
+                    .all(|r| r.glyphs.iter().filter(|g| !g.chr.is_whitespace()).count() <= 2);
+                if rows.len() >= 3 && narrow {
+                    let words = text.galley.job.text.replace('\n', " ");
+                    problems.push(format!("{what}: “{words}” is wrapped letter by letter"));
+                }
+            }
+            _ => {}
+        }
+    }
+    for clipped in &h.output().shapes {
+        visit(&clipped.shape, what, problems);
+    }
+}
+
+/// The least contrast of the window's text (outside the diagram's canvas) with the panels'
+/// fill, as WCAG measures it; text under 4.5:1 is a problem.
+fn check_contrast(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>) -> f32 {
+    let colour = |c: egui::Color32| {
+        let [r, g, b, a] = c.to_srgba_unmultiplied();
+        refraction_diagram::geometry::Colour { r, g, b, a }
+    };
+    let fill = colour(h.ctx.global_style().visuals.panel_fill);
+    let canvas = canvas_rect(h);
+    // A control switched off (Undo with nothing to undo) is greyed on purpose: WCAG sets no
+    // contrast for inactive controls.
+    let disabled: Vec<EguiRect> = h
+        .query_all_by(|node| node.is_disabled())
+        .map(|node| node.rect())
+        .collect();
+    let mut least = f32::INFINITY;
+    let mut visit = |shape: &Shape, least: &mut f32| {
+        let Shape::Text(text) = shape else { return };
+        let bounds = text.visual_bounding_rect();
+        if canvas.intersects(bounds)
+            || text.galley.job.text.trim().is_empty()
+            || disabled.iter().any(|d| d.expand(2.0).contains_rect(bounds))
+        {
+            return;
+        }
+        let colour_of = |c: egui::Color32| {
+            if c == egui::Color32::PLACEHOLDER {
+                text.fallback_color
+            } else {
+                c
+            }
+        };
+        for section in &text.galley.job.sections {
+            let c = text
+                .override_text_color
+                .unwrap_or_else(|| colour_of(section.format.color));
+            let ratio = colour(c).over(fill).contrast(fill);
+            if ratio < *least {
+                *least = ratio;
+            }
+            if ratio < 4.5 {
+                let words = text
+                    .galley
+                    .job
+                    .text
+                    .lines()
+                    .next()
+                    .unwrap_or_default()
+                    .to_owned();
+                problems.push(format!("{what}: “{words}” has a contrast of {ratio:.1}:1"));
+            }
+        }
+    };
+    fn walk(shape: &Shape, f: &mut dyn FnMut(&Shape, &mut f32), least: &mut f32) {
+        match shape {
+            Shape::Vec(shapes) => shapes.iter().for_each(|s| walk(s, f, least)),
+            other => f(other, least),
+        }
+    }
+    for clipped in &h.output().shapes {
+        walk(&clipped.shape, &mut visit, &mut least);
+    }
+    least
+}
+
 /// The box of a label's text on its canvas.
 fn text_box(face: &Typeface, label: &Label) -> Rect {
     let extent = face.measure(&label.text, label.size);
@@ -262,6 +359,8 @@ fn touches_triangle(r: &Rect, triangle: &[GVec2]) -> bool {
 struct Obstacles {
     heads: Vec<(String, Vec<GVec2>)>,
     discs: Vec<(String, GVec2, f32)>,
+    /// The rays' shafts: what no label may lie on.
+    shafts: Vec<(String, refraction_diagram::placer::Obstacle)>,
 }
 
 fn check_labels(
@@ -290,6 +389,14 @@ fn check_labels(
                 problems.push(format!("{what}: “{name}” covers {disc}"));
             }
         }
+        // A sliver inside the box: a shaft that grazes its padding does not hide the words.
+        let inner = Rect {
+            min: b.min + GVec2::splat(1.0),
+            max: b.max - GVec2::splat(1.0),
+        };
+        if let Some((ray, _)) = obstacles.shafts.iter().find(|(_, s)| s.touches(&inner)) {
+            problems.push(format!("{what}: “{name}” lies on {ray}"));
+        }
         for (other, ob) in labels.iter().zip(&boxes).skip(i + 1) {
             if overlap(b, ob) {
                 let other = other.text.lines().next().unwrap_or_default();
@@ -307,8 +414,23 @@ fn audit_diagram(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<Strin
     let explorer = h.state();
     let diagram = Diagram::with_overlay(explorer.state(), size, &explorer.overlay());
     let mut heads = Vec::new();
+    let mut shafts = Vec::new();
+    // The lesson's own rays, W, N and T: no label may hide them. (A label a lesson teaches
+    // may cross a ghost's or the incoming ray's shaft where a small canvas has no free spot:
+    // it is never dropped.)
+    let palette = explorer.overlay().palette;
+    let main = [palette.w, palette.n, palette.t];
     for shape in &diagram.shapes {
-        if let Figure::Arrow { .. } = shape {
+        if let Figure::Arrow { from, to, stroke } = shape {
+            if main.contains(&stroke.colour) {
+                let shaft = refraction_diagram::placer::Obstacle::Shaft {
+                    a: *from,
+                    b: *to,
+                    half_width: stroke.width * 0.5,
+                    firm: false,
+                };
+                shafts.push(("the shaft of W, N or T".to_owned(), shaft));
+            }
             let mut lowered = Vec::new();
             shape.lower(&mut lowered);
             for p in lowered {
@@ -337,7 +459,11 @@ fn audit_diagram(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<Strin
         &face,
         &canvas,
         &labels,
-        &Obstacles { heads, discs },
+        &Obstacles {
+            heads,
+            discs,
+            shafts,
+        },
         problems,
     );
     let banner = diagram.layout.banner;
@@ -385,9 +511,24 @@ fn audit_scene(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>
             _ => {}
         }
     }
+    let shafts = scenes
+        .trace()
+        .segments
+        .iter()
+        .map(|s| {
+            let shaft = refraction_diagram::placer::Obstacle::Shaft {
+                a: layout.at(s.from),
+                b: layout.at(s.to),
+                half_width: 0.5,
+                firm: false,
+            };
+            ("a ray".to_owned(), shaft)
+        })
+        .collect();
     let obstacles = Obstacles {
         heads: Vec::new(),
         discs,
+        shafts,
     };
     check_labels(what, &face, &layout.canvas, &labels, &obstacles, problems);
 }
@@ -402,6 +543,7 @@ fn measure(
     let mut m = Measured {
         share: share(h),
         smallest_text_px: smallest_text(h),
+        contrast: f32::INFINITY,
         problems: Vec::new(),
     };
     let least_share = match (present, tool_open) {
@@ -426,12 +568,56 @@ fn measure(
         ));
     }
     check_controls_inside(h, what, &mut m.problems);
+    check_squeezed(h, what, &mut m.problems);
+    m.contrast = check_contrast(h, what, &mut m.problems);
     if scene {
         audit_scene(h, what, &mut m.problems);
     } else {
         audit_diagram(h, what, &mut m.problems);
     }
     m
+}
+
+/// The figures of one group of windows as JSON, for the audit's file.
+fn figures(name: &str, measured: &[(String, Measured)]) -> serde_json::Value {
+    let least = |f: fn(&Measured) -> f32| {
+        measured
+            .iter()
+            .map(|(_, m)| f(m))
+            .fold(f32::INFINITY, f32::min)
+    };
+    serde_json::json!({
+        "group": name,
+        "windows": measured.len(),
+        "least_diagram_share": least(|m| m.share),
+        "smallest_text_px": least(|m| m.smallest_text_px),
+        "least_text_contrast": least(|m| m.contrast),
+    })
+}
+
+/// Adds `run`'s figures to the audit's JSON file (one per audit, by name) in the target
+/// folder, which CI prints after the tests.
+fn write_figures(run: &str, groups: &[serde_json::Value], problems: usize) {
+    // The audits run on several threads of this process: one writes at a time.
+    static WRITING: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _writing = WRITING
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    let path = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("layout-audit.json");
+    let mut all: serde_json::Map<String, serde_json::Value> = std::fs::read_to_string(&path)
+        .ok()
+        .and_then(|text| serde_json::from_str(&text).ok())
+        .unwrap_or_default();
+    all.insert(
+        run.to_owned(),
+        serde_json::json!({ "groups": groups, "problems": problems }),
+    );
+    let text = serde_json::Value::Object(all).to_string();
+    // Best effort, and atomic: a reader never sees half a file.
+    let temporary = path.with_extension(format!("{}.tmp", std::process::id()));
+    if std::fs::write(&temporary, text).is_ok() {
+        std::fs::rename(&temporary, &path).ok();
+    }
 }
 
 /// The figures of one group of windows, for the report.
@@ -453,7 +639,8 @@ fn summary(name: &str, measured: &[(String, Measured)]) -> String {
 }
 
 #[expect(clippy::print_stdout, reason = "the measured figures, for --nocapture")]
-fn report(measured: &[(String, Measured)]) {
+fn report(run: &str, measured: &[(String, Measured)]) {
+    let mut found = Vec::new();
     let groups = [
         ("desk, tools closed", false, false),
         ("desk, a tool open", false, true),
@@ -472,6 +659,7 @@ fn report(measured: &[(String, Measured)]) {
                     Measured {
                         share: m.share,
                         smallest_text_px: m.smallest_text_px,
+                        contrast: m.contrast,
                         problems: Vec::new(),
                     },
                 )
@@ -479,9 +667,11 @@ fn report(measured: &[(String, Measured)]) {
             .collect();
         if !group.is_empty() {
             println!("{}", summary(name, &group));
+            found.push(figures(name, &group));
         }
     }
     let problems: Vec<&String> = measured.iter().flat_map(|(_, m)| &m.problems).collect();
+    write_figures(run, &found, problems.len());
     for p in problems.iter().take(60) {
         println!("  {p}");
     }
@@ -530,7 +720,7 @@ fn audit_interface(states: &[ExplorerState]) -> Vec<(String, Measured)> {
 
 #[test]
 fn the_interface_view_owns_the_screen_and_nothing_covers_anything() {
-    report(&audit_interface(&states()));
+    report("interface", &audit_interface(&states()));
 }
 
 /// The Scenes view, every built-in scene (the droplet at 1,000 rays), in the thread's
@@ -566,7 +756,7 @@ fn audit_scenes() -> Vec<(String, Measured)> {
 
 #[test]
 fn the_scenes_view_owns_the_screen_and_labels_leave_the_hit_markers_free() {
-    report(&audit_scenes());
+    report("scenes", &audit_scenes());
 }
 
 /// The audit in `language`: the lessons' kinds (the first states: the default, total
@@ -575,7 +765,7 @@ fn audit_in(language: Locale) {
     refraction_i18n::set_locale(language);
     let mut measured = audit_interface(&states()[..5]);
     measured.extend(audit_scenes());
-    report(&measured);
+    report(&language.to_string(), &measured);
 }
 
 #[test]
@@ -633,6 +823,15 @@ fn the_audit_finds_what_it_looks_for() {
             ],
         )],
         discs: vec![("W handle".to_owned(), GVec2::new(20.0, 20.0), 5.0)],
+        shafts: vec![(
+            "T's shaft".to_owned(),
+            refraction_diagram::placer::Obstacle::Shaft {
+                a: GVec2::new(150.0, 80.0),
+                b: GVec2::new(250.0, 95.0),
+                half_width: 1.0,
+                firm: false,
+            },
+        )],
     };
     let mut problems = Vec::new();
     check_labels(
@@ -649,9 +848,30 @@ fn the_audit_finds_what_it_looks_for() {
         "arrowhead of T",
         "covers W handle",
         "“one” overlaps “two”",
+        "“three” lies on T's shaft",
     ] {
         assert!(all.contains(expected), "{expected} not found in:\n{all}");
     }
+}
+
+#[test]
+fn the_audit_finds_words_wrapped_letter_by_letter() {
+    let mut h = Harness::builder()
+        .with_size(egui::Vec2::new(200.0, 300.0))
+        .build_ui(|ui| {
+            ui.horizontal_top(|ui| {
+                let down = egui::Layout::top_down(egui::Align::Min);
+                ui.allocate_ui_with_layout(egui::vec2(14.0, 300.0), down, |ui| {
+                    ui.add(egui::Label::new("Lesson preset").wrap());
+                });
+                ui.label("Reset");
+            });
+        });
+    h.run();
+    let mut problems = Vec::new();
+    check_squeezed(&h, "test", &mut problems);
+    assert_eq!(problems.len(), 1, "{problems:?}");
+    assert!(problems[0].contains("Lesson preset"), "{problems:?}");
 }
 
 #[test]

@@ -49,6 +49,34 @@ impl Colour {
             a: mix(self.a, other.a),
         }
     }
+
+    /// The colour's relative luminance (WCAG 2): 0 for black, 1 for white; opacity ignored.
+    #[must_use]
+    pub fn luminance(self) -> f32 {
+        let linear = |c: u8| {
+            let c = f32::from(c) / 255.0;
+            if c <= 0.040_45 {
+                c / 12.92
+            } else {
+                ((c + 0.055) / 1.055).powf(2.4)
+            }
+        };
+        0.2126 * linear(self.r) + 0.7152 * linear(self.g) + 0.0722 * linear(self.b)
+    }
+
+    /// The contrast ratio of two opaque colours (WCAG 2), from 1 (the same) to 21 (black and
+    /// white); text reads at 4.5 and above.
+    #[must_use]
+    pub fn contrast(self, other: Self) -> f32 {
+        let (a, b) = (self.luminance(), other.luminance());
+        (a.max(b) + 0.05) / (a.min(b) + 0.05)
+    }
+
+    /// This colour over `background`, its opacity blended in: what the eye sees.
+    #[must_use]
+    pub fn over(self, background: Self) -> Self {
+        background.lerp(Self { a: 255, ..self }, f32::from(self.a) / 255.0)
+    }
 }
 
 /// An axis-aligned rectangle on the canvas (`min` top-left, `max` bottom-right).

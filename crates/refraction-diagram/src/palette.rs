@@ -286,16 +286,43 @@ impl Palette {
     }
 
     /// A shade of an arrow colour for text in that colour: darker on a light background,
-    /// lighter on a dark one.
+    /// lighter on a dark one, by a third at least and as far as it takes to read at 4.5:1 on
+    /// the background (WCAG's least for text).
     #[must_use]
     pub fn text_shade(&self, colour: Colour) -> Colour {
-        colour.lerp(self.text_toward, 0.35)
+        let back = self.background;
+        (7..=20)
+            .map(|i| colour.lerp(self.text_toward, f32::from(i as u8) / 20.0))
+            .find(|shade| shade.over(back).contrast(back) >= 4.6)
+            .unwrap_or(self.text_toward)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn text_in_a_rays_colour_reads_at_four_and_a_half_to_one_in_every_palette() {
+        for theme in Theme::ALL {
+            for safe in [false, true] {
+                let p = Palette::new(theme, safe);
+                for colour in [
+                    p.w,
+                    p.n,
+                    p.t,
+                    p.reflected,
+                    p.warning,
+                    p.critical,
+                    p.alarm,
+                    p.guide,
+                ] {
+                    let ratio = p.text_shade(colour).contrast(p.background);
+                    assert!(ratio >= 4.5, "{theme:?} {safe}: {colour:?} gives {ratio}");
+                }
+            }
+        }
+    }
 
     #[test]
     fn every_palette_keeps_rays_apart_and_text_readable() {

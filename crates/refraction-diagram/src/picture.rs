@@ -224,11 +224,13 @@ impl DiagramBuilder<'_> {
                 });
             }
             if let Figure::Arrow { from, to, stroke } = shape {
-                // Its shaft and its head: no label covers a ray.
+                // Its shaft and its head: no label covers a ray, nor ever W, N or T.
+                let main = [self.palette.w, self.palette.n, self.palette.t];
                 placer.avoid(Obstacle::Shaft {
                     a: *from,
                     b: *to,
                     half_width: stroke.width * 0.5 + 1.5,
+                    firm: main.contains(&stroke.colour),
                 });
                 let mut lowered = Vec::new();
                 shape.lower(&mut lowered);
@@ -1101,6 +1103,7 @@ mod tests {
                             a: *from,
                             b: *to,
                             half_width: stroke.width * 0.5,
+                            firm: false,
                         }),
                         _ => None,
                     })

@@ -36,6 +36,9 @@ pub enum Obstacle {
         b: Vec2,
         /// Half the stroke's width, with a margin.
         half_width: f32,
+        /// Whether a label that must be shown crosses it only as a last resort, where no
+        /// other spot is left (a lesson's own rays: W, N and T).
+        firm: bool,
     },
 }
 
@@ -47,7 +50,9 @@ impl Obstacle {
             Self::Box(b) => b.overlaps(r),
             Self::Disc { center, radius } => center.clamp(r.min, r.max).distance(*center) < *radius,
             Self::Polygon(points) => convex_overlaps(points, r),
-            Self::Shaft { a, b, half_width } => {
+            Self::Shaft {
+                a, b, half_width, ..
+            } => {
                 let grown = Rect {
                     min: r.min - Vec2::splat(*half_width),
                     max: r.max + Vec2::splat(*half_width),
@@ -211,9 +216,9 @@ pub enum Need {
     /// Near its anchor, else farther with a leader line, else left out.
     Optional,
     /// A label a lesson teaches: as [`Need::Optional`], but with no free spot even far away
-    /// it may cross a ray's shaft (never a handle, an arrowhead, a marked point or another
-    /// label); left out only where the canvas has no room at all. Such labels are placed
-    /// first, so that lesser ones give way.
+    /// it may cross a shaft that is not firm, and failing that a firm one (never a handle,
+    /// an arrowhead, a marked point or another label); left out only where the canvas has no
+    /// room at all. Such labels are placed first, so that lesser ones give way.
     Shown,
 }
 
@@ -243,8 +248,19 @@ impl<'f> Placer<'f> {
         !self.obstacles.iter().any(|o| o.touches(r)) && !self.placed.iter().any(|p| p.overlaps(r))
     }
 
-    /// Free of everything but the rays' shafts: what a label that must be shown settles for
-    /// (it may cross a ray, never a handle, an arrowhead, a marked point or another label).
+    /// Free of everything but the shafts that are not firm: what a label that must be shown
+    /// settles for first (it may cross a lesser ray, never a handle, an arrowhead, a marked
+    /// point or another label).
+    fn free_but_lesser_shafts(&self, r: &Rect) -> bool {
+        let solid = self
+            .obstacles
+            .iter()
+            .filter(|o| !matches!(o, Obstacle::Shaft { firm: false, .. }));
+        !solid.into_iter().any(|o| o.touches(r)) && !self.placed.iter().any(|p| p.overlaps(r))
+    }
+
+    /// Free of everything but the rays' shafts: a shown label's last resort where the canvas
+    /// is so small that only crossing W, N or T would keep it.
     fn free_but_shafts(&self, r: &Rect) -> bool {
         let solid = self
             .obstacles
@@ -285,6 +301,67 @@ impl<'f> Placer<'f> {
         })
     }
 
+    /// The free spot inside `bounds` nearest `label`'s anchor, searched on a grid over the
+    /// whole of `bounds` (a label that must be shown tries it before crossing any ray, where
+    /// the rings around its anchor found nothing).
+    fn nearest_anywhere(
+        &self,
+        label: &Label,
+        bounds: &Rect,
+        free: impl Fn(&Self, &Rect) -> bool,
+    ) -> Option<(Vec2, Rect)> {
+        let step = label.size * 0.6;
+        let extent = self.face.measure(&label.text, label.size);
+        let size = bounds.max - bounds.min;
+        // Bounds a label fits in hold no more than a few thousand grid points.
+        let (columns, rows) = ((size.x / step) as usize, (size.y / step) as usize);
+        let mut best: Option<(f32, Vec2, Rect)> = None;
+        for row in 0..=rows {
+            for column in 0..=columns {
+                let r = Rect {
+                    min: bounds.min + Vec2::new(column as f32, row as f32) * step,
+                    max: bounds.min + Vec2::new(column as f32, row as f32) * step + extent,
+                };
+                let pad = Vec2::splat(label.size * PAD);
+                let at = r.min + pad + extent * Vec2::new(label.h.fraction(), label.v.fraction());
+                let moved = boxed(label, extent, at);
+                let inside = moved.min.cmpge(bounds.min).all() && moved.max.cmple(bounds.max).all();
+                let distance = at.distance(label.at);
+                if inside && best.as_ref().is_none_or(|b| distance < b.0) && free(self, &moved) {
+                    best = Some((distance, at, moved));
+                }
+            }
+        }
+        best.map(|(_, at, moved)| (at, moved))
+    }
+
+    /// [`Self::nearest_anywhere`] for `label` as it is, else with its text broken into
+    /// narrower lines (a long label that fits nowhere whole often fits between the rays in
+    /// more lines); the label keeps the narrower text only where that found a spot.
+    fn narrower(
+        &self,
+        label: &mut Label,
+        bounds: &Rect,
+        free: impl Fn(&Self, &Rect) -> bool + Copy,
+    ) -> Option<(Vec2, Rect)> {
+        if let Some(spot) = self.nearest_anywhere(label, bounds, free) {
+            return Some(spot);
+        }
+        let widest = self.face.measure(&label.text, label.size).x;
+        for share in [0.7, 0.5, 0.35] {
+            let text = wrap(self.face, &label.text, label.size, widest * share);
+            let narrow = Label {
+                text,
+                ..label.clone()
+            };
+            if let Some(spot) = self.nearest_anywhere(&narrow, bounds, free) {
+                *label = narrow;
+                return Some(spot);
+            }
+        }
+        None
+    }
+
     /// Places `label` inside `bounds`: at its anchor if that covers nothing, else at the
     /// nearest free spot around it, moved inside `bounds` as needed; farther, with a leader
     /// line from the anchor (the second value), when nothing near is free; a label that is
@@ -315,8 +392,10 @@ impl<'f> Placer<'f> {
             (Some(found), _) => Some(found),
             (None, Need::Optional) => None,
             (None, Need::Shown) => {
-                let steps = 0..=MOST_STEPS_WITH_LEADER;
-                self.spot(&label, bounds, steps, Self::free_but_shafts)
+                let steps = || 0..=MOST_STEPS_WITH_LEADER;
+                self.narrower(&mut label, bounds, Self::free)
+                    .or_else(|| self.narrower(&mut label, bounds, Self::free_but_lesser_shafts))
+                    .or_else(|| self.spot(&label, bounds, steps(), Self::free_but_shafts))
                     .map(|spot| {
                         let far = spot.0.distance(label.at) > label.size * 0.6 * MOST_STEPS as f32;
                         (spot, far)
@@ -473,6 +552,7 @@ mod tests {
             a: Vec2::ZERO,
             b: Vec2::new(400.0, 300.0),
             half_width: 300.0,
+            firm: false,
         };
         placer.avoid(shaft);
         let placement =
@@ -489,6 +569,7 @@ mod tests {
             a: Vec2::new(0.0, 50.0),
             b: Vec2::new(400.0, 50.0),
             half_width: 3.0,
+            firm: false,
         };
         placer.avoid(shaft.clone());
         let (near, leader) = placer
@@ -564,7 +645,8 @@ mod tests {
             (point(), point(), 0.5f32..4.0).prop_map(|(a, b, half_width)| Obstacle::Shaft {
                 a,
                 b,
-                half_width
+                half_width,
+                firm: false,
             }),
             (point(), 0.0f32..6.3, 5.0f32..20.0).prop_map(|(tip, turn, length)| {
                 let d = Vec2::from_angle(turn) * length;

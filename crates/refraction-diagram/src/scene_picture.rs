@@ -481,6 +481,7 @@ impl ScenePictureBuilder<'_> {
                 a,
                 b,
                 half_width: width * 0.5 + 1.0,
+                firm: false,
             });
         }
     }
@@ -1091,6 +1092,7 @@ mod tests {
                         a: layout.at(s.from),
                         b: layout.at(s.to),
                         half_width: 0.5,
+                        firm: false,
                     })
                     .collect();
                 for p in &picture.primitives {
