@@ -32,7 +32,7 @@ libfuzzer_sys::fuzz_target!(|data: &[u8]| {
             };
             match Pattern::parse(dialect, text) {
                 Ok(pattern) => (Format::Pattern(pattern), &rest[end..]),
-                Err(e) => return message::assert_message(&e),
+                Err(e) => return message::assert_message(&e, data),
             }
         }
     };
@@ -50,6 +50,6 @@ libfuzzer_sys::fuzz_target!(|data: &[u8]| {
         summary
             .sentences()
             .iter()
-            .for_each(|s| message::assert_message(s));
+            .for_each(|s| message::assert_message(s, data));
     }
 });

@@ -12,9 +12,9 @@ libfuzzer_sys::fuzz_target!(|data: &[u8]| {
         match refraction_tools::check::answer(line) {
             Ok((text, verdict)) => {
                 answer::assert_json(&text);
-                message::assert_message(&verdict.explanation);
+                message::assert_message(&verdict.explanation, data);
             }
-            Err(e) => message::assert_message(&e.to_string()),
+            Err(e) => message::assert_message(&e.to_string(), data),
         }
     }
 });

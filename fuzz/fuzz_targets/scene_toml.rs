@@ -21,7 +21,7 @@ libfuzzer_sys::fuzz_target!(|data: &[u8]| {
         Err(e) => {
             let message = e.to_string();
             assert!(message.starts_with("fuzz.toml"), "{message}");
-            message::assert_message(&message);
+            message::assert_message(&message, data);
         }
     }
 });

@@ -13,7 +13,7 @@ libfuzzer_sys::fuzz_target!(|data: &[u8]| {
                 let line = state_file::to_json(&state);
                 assert_eq!(state_file::parse(&line).ok(), Some(state), "{line}");
             }
-            Err(e) => message::assert_message(&e.to_string()),
+            Err(e) => message::assert_message(&e.to_string(), data),
         }
     }
 });

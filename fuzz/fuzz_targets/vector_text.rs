@@ -10,7 +10,7 @@ libfuzzer_sys::fuzz_target!(|data: &[u8]| {
     if let Ok(text) = std::str::from_utf8(data) {
         match parse_vector(text) {
             Ok(v) => assert!(v.digits <= 17, "{v:?}"),
-            Err(e) => message::assert_message(&e.to_string()),
+            Err(e) => message::assert_message(&e.to_string(), data),
         }
     }
 });
