@@ -27,6 +27,11 @@ struct Cli {
     /// the explorer reopens where it was last closed.
     #[arg(long, value_name = "FILE.json")]
     state: Option<PathBuf>,
+    /// Open the explorer on a lesson deck at its first step: a built-in deck's name (see
+    /// `lessons`) or a deck file (TOML). Page Down and Page Up step through it, R reveals a
+    /// step's answer.
+    #[arg(long, value_name = "NAME|FILE", conflicts_with = "state")]
+    lesson: Option<String>,
     /// Open the explorer in presentation mode: full screen, everything larger, the side panels
     /// closed (F11 leaves it).
     #[arg(long)]
@@ -193,8 +198,12 @@ enum Command {
         list: bool,
     },
     /// Draw the explorer's diagram, or a traced scene, into a PNG or SVG file, or an animation
-    /// of the diagram into a GIF, without a window.
+    /// of the diagram into a GIF, or a lesson deck into a handout (PDF) or one SVG per step,
+    /// without a window.
     Render(commands::render::RenderArgs),
+    /// List the built-in lesson decks, one per line: NAME, TITLE and the number of steps,
+    /// separated by tabs (the titles in the language of --lang).
+    Lessons,
 }
 
 /// The command line, or the exit status after `--help`, `--version` or a usage error. A usage
@@ -231,7 +240,10 @@ fn main() -> ExitCode {
     };
     // Only what is drawn speaks the language: the JSON and messages of `solve`, `check`,
     // `trace` and `bench` are the same for every user.
-    let draws = matches!(cli.command, None | Some(Command::Render(_)));
+    let draws = matches!(
+        cli.command,
+        None | Some(Command::Render(_) | Command::Lessons)
+    );
     if let Some(language) = cli.lang.filter(|_| draws) {
         refraction_i18n::set_locale(language);
     }
@@ -269,8 +281,10 @@ fn main() -> ExitCode {
         }
         Some(Command::Trace { scene, json, list }) => commands::trace::run(&scene, json, list),
         Some(Command::Render(args)) => commands::render::run(&args),
+        Some(Command::Lessons) => commands::lessons::list(),
         None => commands::render::explorer(&commands::render::Window {
             state: cli.state,
+            lesson: cli.lesson,
             present: cli.present,
             view: cli.view.map(View::from),
             theme: cli.theme.map(Theme::from),

@@ -52,6 +52,8 @@ pub struct ScenesView {
     drawn: Option<(Rect, SceneLayout)>,
     /// The scene file, the picture export and their dialogs.
     files: SceneFiles,
+    /// A lesson step's question is asked: the rays are drawn up to the first surface only.
+    answer_hidden: bool,
 }
 
 impl Default for ScenesView {
@@ -121,7 +123,14 @@ impl ScenesView {
             error: None,
             drawn: None,
             files: SceneFiles::default(),
+            answer_hidden: false,
         }
+    }
+
+    /// Draws the rays only up to the first surface they meet while `hidden` (a lesson step's
+    /// question is asked), the whole trace otherwise.
+    pub fn hide_answer(&mut self, hidden: bool) {
+        self.answer_hidden = hidden;
     }
 
     /// The scene as edited.
@@ -300,18 +309,23 @@ impl ScenesView {
         let dragging = self.handles(ui, &response, &to_screen, &layout, &mut clicked_at);
         self.drag_layout = dragging.then_some(layout);
         self.drawn = Some((rect, layout));
-        let picture = ScenePicture::with_palette(&self.scene, &self.trace, &layout, palette);
+        // The layout fits the whole trace, so that revealing the answer does not move the view.
+        let hidden = self
+            .answer_hidden
+            .then(|| refraction_deck::answer::up_to_first_surface(&self.trace));
+        let shown = hidden.as_ref().unwrap_or(&self.trace);
+        let picture = ScenePicture::with_palette(&self.scene, shown, &layout, palette);
         paint(&painter, &to_screen, &picture.primitives);
         hover_left_out(&response, &to_screen, &picture.left_out, layout.font * 2.0);
         response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &picture.summary));
         let hovered = response
             .hover_pos()
-            .and_then(|p| layout.hit_near(&self.trace, canvas_point(&to_screen, p)));
+            .and_then(|p| layout.hit_near(shown, canvas_point(&to_screen, p)));
         if let Some(hit) = hovered {
             self.show_hit(ui, &painter, (&to_screen, &layout), hit, palette);
         }
         let clicked =
-            clicked_at.and_then(|p| layout.hit_near(&self.trace, canvas_point(&to_screen, p)))?;
+            clicked_at.and_then(|p| layout.hit_near(shown, canvas_point(&to_screen, p)))?;
         let problem = clicked.incidence();
         ExplorerState::new(
             problem.w,

@@ -1,5 +1,6 @@
 //! The classroom tools under the diagram, one at a time: check my T, the walk-through,
-//! save / open / share, and the Fresnel plot. Their switches sit in the top bar.
+//! save / open / share, the Fresnel plot and the lesson deck (shown by the window itself, in
+//! every view: see [`super::deck`]). Their switches sit in the top bar.
 
 use egui::{Panel, ScrollArea, Ui};
 use refraction_i18n::t;
@@ -27,11 +28,19 @@ pub enum Tool {
     Files,
     /// Reflectance and transmittance against θi, with the cursor at the diagram's θi.
     Fresnel,
+    /// The lesson deck: its steps, built from the window and stepped through.
+    Deck,
 }
 
 impl Tool {
     /// Every tool, in the order of the bar.
-    pub const ALL: [Self; 4] = [Self::Check, Self::WalkThrough, Self::Files, Self::Fresnel];
+    pub const ALL: [Self; 5] = [
+        Self::Check,
+        Self::WalkThrough,
+        Self::Files,
+        Self::Fresnel,
+        Self::Deck,
+    ];
 
     /// The switch's label (also its accessible name).
     #[must_use]
@@ -41,6 +50,7 @@ impl Tool {
             Self::WalkThrough => format!("📖 {}", t!("tool-walk-through")),
             Self::Files => format!("💾 {}", t!("tool-files")),
             Self::Fresnel => t!("tool-fresnel"),
+            Self::Deck => format!("📚 {}", t!("tool-deck")),
         }
     }
 
@@ -61,6 +71,8 @@ impl Tool {
             Self::WalkThrough => 140.0,
             Self::Files => 150.0,
             Self::Fresnel => 330.0,
+            // The files row, the buttons and the first steps.
+            Self::Deck => 220.0,
         }
     }
 }
@@ -76,6 +88,8 @@ pub struct Tools {
     pub walk: WalkThrough,
     /// Save, open, share.
     pub files: FilesPanel,
+    /// The tool that was open when the lesson deck's opened: the one a step added then keeps.
+    pub before_deck: Option<Tool>,
 }
 
 impl Tools {
@@ -84,14 +98,15 @@ impl Tools {
         for tool in Tool::ALL {
             let open = self.open == Some(tool);
             if ui.selectable_label(open, tool.label()).clicked() {
+                if tool == Tool::Deck && !open {
+                    self.before_deck = self.open;
+                }
                 self.open = if open { None } else { Some(tool) };
             }
         }
     }
 
-    /// The open tool in a panel: under the diagram at the desk; beside it in presentation,
-    /// where the window is wide for its height and a strip across the bottom would squeeze
-    /// the diagram into a letterbox.
+    /// The open tool in its panel ([`frame`]); the lesson deck's is the window's to show.
     pub fn panel(
         &mut self,
         ui: &mut Ui,
@@ -99,33 +114,16 @@ impl Tools {
         presenting: bool,
         palette: &Palette,
     ) {
-        let Some(tool) = self.open else {
+        let Some(tool) = self.open.filter(|t| *t != Tool::Deck) else {
             return;
         };
-        let window = ui.ctx().content_rect();
-        let panel = if presenting {
-            // At most a third of the width: the diagram keeps half the window (tested).
-            let limit = window.width() * tool.presentation_share();
-            Panel::right(format!("{tool:?}-presentation"))
-                .resizable(true)
-                .default_size(limit)
-                .size_range(limit * 0.5..=limit)
-        } else {
-            // A panel only grows to what its scroll area was given last frame: each tool asks
-            // for the height its verdict or step needs (at most 45 % of the window), and can
-            // be dragged taller.
-            let limit = window.height() * 0.45;
-            let height = tool.height().min(limit);
-            Panel::bottom(format!("{tool:?}"))
-                .resizable(true)
-                .size_range(height..=limit.max(height))
-        };
-        panel.show(ui, |ui| {
+        frame(ui, tool, presenting).show(ui, |ui| {
             ScrollArea::vertical().show(ui, |ui| match tool {
                 Tool::Check => self.check.show(ui, state),
                 Tool::WalkThrough => self.walk.show(ui, state),
                 Tool::Files => self.files.show(ui, state),
                 Tool::Fresnel => fresnel_panel::show(ui, state, palette),
+                Tool::Deck => {}
             });
         });
     }
@@ -152,5 +150,29 @@ impl Tools {
     #[must_use]
     pub fn student(&self, state: &ExplorerState) -> Option<StudentRay> {
         self.check.student(state)
+    }
+}
+
+/// The panel `tool` is shown in: under the diagram at the desk; beside it in presentation,
+/// where the window is wide for its height and a strip across the bottom would squeeze the
+/// diagram into a letterbox.
+pub fn frame(ui: &Ui, tool: Tool, presenting: bool) -> Panel {
+    let window = ui.ctx().content_rect();
+    if presenting {
+        // At most a third of the width: the diagram keeps half the window (tested).
+        let limit = window.width() * tool.presentation_share();
+        Panel::right(format!("{tool:?}-presentation"))
+            .resizable(true)
+            .default_size(limit)
+            .size_range(limit * 0.5..=limit)
+    } else {
+        // A panel only grows to what its scroll area was given last frame: each tool asks
+        // for the height its verdict or step needs (at most 45 % of the window), and can
+        // be dragged taller.
+        let limit = window.height() * 0.45;
+        let height = tool.height().min(limit);
+        Panel::bottom(format!("{tool:?}"))
+            .resizable(true)
+            .size_range(height..=limit.max(height))
     }
 }

@@ -30,9 +30,15 @@ pub struct RenderArgs {
     scene: Option<String>,
     /// The file to write (replaced atomically), or - for standard output (PNG, or GIF with
     /// --animate). Its extension picks the format: .png or .svg (labels as editable text) for
-    /// a picture, .gif for --animate.
-    #[arg(long, value_name = "FILE.png|FILE.svg|FILE.gif")]
+    /// a picture, .gif for --animate; with --lesson, .pdf for the handout, or a folder (DIR/)
+    /// for one SVG per step.
+    #[arg(long, value_name = "FILE.png|FILE.svg|FILE.gif|FILE.pdf|DIR/")]
     out: PathBuf,
+    /// Draw a lesson deck (a built-in deck's name, see `lessons`, or a deck file): a handout
+    /// with one page per step (its diagram, title, question and notes; --out FILE.pdf) or each
+    /// step's diagram as step-01.svg, step-02.svg, … (--out DIR/, at --width × --height).
+    #[arg(long, value_name = "NAME|FILE", conflicts_with_all = ["scene", "state", "animate"])]
+    lesson: Option<String>,
     /// Width in pixels (64 to 8192).
     #[arg(long, default_value_t = render::DEFAULT_SIZE.0)]
     width: u32,
@@ -221,6 +227,9 @@ fn animation(args: &RenderArgs, animation: Animation) -> Result<Vec<u8>, String>
 /// of a traced scene as PNG or SVG, or with `--animate` an animated GIF. The output path, the
 /// size and the animation's frames and rate are checked before anything is traced or drawn.
 pub fn run(args: &RenderArgs) -> ExitCode {
+    if let Some(lesson) = &args.lesson {
+        return super::lessons::render(lesson, &args.out, (args.width, args.height));
+    }
     let formats: &[ImageFormat] = match args.animate {
         Some(_) => &[ImageFormat::Gif],
         None => &STILL,
@@ -242,6 +251,8 @@ pub fn run(args: &RenderArgs) -> ExitCode {
 pub struct Window {
     /// The state file to open on.
     pub state: Option<PathBuf>,
+    /// The lesson deck to open on (`--lesson`).
+    pub lesson: Option<String>,
     /// Start in presentation mode.
     pub present: bool,
     /// The view to show.
@@ -252,9 +263,12 @@ pub struct Window {
     pub language: Option<Locale>,
 }
 
-/// Opens the explorer window as `window` asks; a state file that cannot be read is refused
-/// before any window opens.
+/// Opens the explorer window as `window` asks; a state file or a lesson deck that cannot be
+/// read is refused before any window opens.
 pub fn explorer(window: &Window) -> ExitCode {
+    if let Some(Err(e)) = window.lesson.as_deref().map(refraction_deck::Deck::load) {
+        return fail("", &e);
+    }
     let launch = window
         .state
         .as_deref()
@@ -262,6 +276,7 @@ pub fn explorer(window: &Window) -> ExitCode {
         .transpose()
         .map(|state| Launch {
             state,
+            lesson: window.lesson.clone(),
             present: window.present,
             view: window.view,
             theme: window.theme,

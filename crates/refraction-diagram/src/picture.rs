@@ -285,7 +285,12 @@ impl DiagramBuilder<'_> {
 
     /// The student's T, with its own length and dash, labelled with what it is.
     fn student(&mut self) {
-        let Some(student) = self.overlay.student.as_ref() else {
+        let Some(student) = self
+            .overlay
+            .student
+            .as_ref()
+            .filter(|_| !self.overlay.hide_answer)
+        else {
             return;
         };
         let flat = self.state.plane().project(student.t);
@@ -477,7 +482,8 @@ impl DiagramBuilder<'_> {
     /// The status strip, its text wrapped to fit by [`Diagram::with_overlay`].
     fn banner(&mut self, r: &Refraction<f64>, text: String) {
         let rect = self.layout.banner;
-        let (fill, ink) = if r.is_tir() {
+        // A hidden answer keeps the calm colour: the alarm's would give total reflection away.
+        let (fill, ink) = if r.is_tir() && !self.overlay.hide_answer {
             (self.palette.alarm, self.palette.on_alarm)
         } else {
             (self.palette.calm, self.palette.ink)
@@ -634,7 +640,7 @@ impl DiagramBuilder<'_> {
         self.part_ray(Part::W, w_dir, 1.0, w_stroke, &w_text);
         let n_stroke = self.stroke(3.0, palette.n, Dash::Solid);
         self.part_ray(Part::N, n_dir, 1.0, n_stroke, &n_text);
-        if let Some(tr) = r.transmission {
+        if let Some(tr) = r.transmission.filter(|_| !self.overlay.hide_answer) {
             let t_stroke = self.stroke(4.5, palette.t, Dash::Solid);
             let shares = self.overlay.intensities.map(|p| Shares::of(r, p));
             // Under the *Intensities* switch T is as wide as its share, and says it.
@@ -706,7 +712,11 @@ impl Diagram {
     pub fn with_overlay(state: &ExplorerState, size: Vec2, overlay: &Overlay) -> Self {
         let r = state.refraction();
         let face = Typeface::egui_default().ok();
-        let summary = banner_text(r);
+        let summary = if overlay.hide_answer {
+            t!("deck-answer-hidden")
+        } else {
+            banner_text(r)
+        };
         let (layout, banner) = layout_with_banner(size, &summary, face.as_ref());
         let layout = layout.panned(overlay.pan_zoom);
         let palette = overlay.palette;
@@ -727,20 +737,23 @@ impl Diagram {
         let toward_source = b.flat(-r.travel);
         b.media(normal);
         b.rank = Rank::Construction;
-        if let Some(options) = overlay.waves {
+        // The fronts beyond the surface would show the bend of a hidden answer.
+        if let Some(options) = overlay.waves.filter(|_| !overlay.hide_answer) {
             b.waves(&options);
         }
         b.guides(normal, toward_source);
         b.rank = Rank::Rays;
         b.incoming(r, normal, toward_source);
-        b.rank = Rank::Candidates;
-        b.candidates(r);
-        b.rank = Rank::Bug;
-        b.outward_normal_bug(r);
-        b.rank = Rank::Construction;
-        b.decomposition(r);
-        b.rank = Rank::Rays;
-        b.outgoing(r, normal);
+        if !overlay.hide_answer {
+            b.rank = Rank::Candidates;
+            b.candidates(r);
+            b.rank = Rank::Bug;
+            b.outward_normal_bug(r);
+            b.rank = Rank::Construction;
+            b.decomposition(r);
+            b.rank = Rank::Rays;
+            b.outgoing(r, normal);
+        }
         b.rank = Rank::Vectors;
         let [w_dir, n_dir] = b.vectors(r);
         b.student();
@@ -836,6 +849,29 @@ mod tests {
         );
         assert!(labels.iter().any(|l| l.starts_with("Section 2")));
         assert_eq!(diagram.handles.len(), 4);
+    }
+
+    #[test]
+    fn a_hidden_answer_leaves_out_t_the_reflection_and_the_verdict() {
+        let beyond = refraction_model::Lesson::BeyondCritical.state();
+        let state = ExplorerState::default();
+        let hidden = Overlay {
+            hide_answer: true,
+            ..Overlay::default()
+        };
+        let size = Vec2::new(1000.0, 700.0);
+        let shown = Diagram::new(&state, size);
+        let asked = Diagram::with_overlay(&state, size, &hidden);
+        assert!(texts(&shown).contains(&"T"));
+        for gone in ["T", "reflected"] {
+            assert!(!texts(&asked).iter().any(|t| t.starts_with(gone)), "{gone}");
+        }
+        assert!(!texts(&asked).iter().any(|t| t.contains("θt")));
+        assert!(arrows(&asked).len() < arrows(&shown).len());
+        let tir = Diagram::with_overlay(&beyond, size, &hidden);
+        assert!(tir.summary.contains("hidden"), "{}", tir.summary);
+        assert!(!texts(&tir).iter().any(|t| t.contains("otal internal")));
+        assert_eq!(asked.handles.len(), 4, "the handles stay");
     }
 
     #[test]

@@ -238,12 +238,21 @@ pub fn document(
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" \
          width=\"{width}\" height=\"{height}\" viewBox=\"0 0 {width} {height}\">\n"
     );
-    let mut next = 0;
-    while next < primitives.len() {
-        next = draw_group(&mut out, &face, &primitives, next);
-    }
+    out.push_str(&elements(&face, &primitives));
     out.push_str("</svg>\n");
     Ok(out)
+}
+
+/// The SVG elements of `primitives`, in drawing order, without a document around them: what
+/// [`document`] holds, and what a handout's page nests at its diagram's place.
+#[must_use]
+pub fn elements(face: &Typeface, primitives: &[Primitive]) -> String {
+    let mut out = String::new();
+    let mut next = 0;
+    while next < primitives.len() {
+        next = draw_group(&mut out, face, primitives, next);
+    }
+    out
 }
 
 #[cfg(test)]
