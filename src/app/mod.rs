@@ -388,7 +388,7 @@ impl Explorer {
                 self.command_line_language = None;
             }
             ui.separator();
-            self.tools.bar(ui);
+            self.tools.bar(ui, self.presentation.on);
             if self.view == View::Interface {
                 ui.separator();
                 self.physics.menu(ui);

@@ -2,7 +2,7 @@
 //! save / open / share, the Fresnel plot and the lesson deck (shown by the window itself, in
 //! every view: see [`super::deck`]). Their switches sit in the top bar.
 
-use egui::{Panel, ScrollArea, Ui};
+use egui::{Panel, Role, ScrollArea, Ui, WidgetInfo};
 use refraction_i18n::t;
 
 use super::check_panel::CheckPanel;
@@ -93,11 +93,29 @@ pub struct Tools {
 }
 
 impl Tools {
-    /// The switches for the top bar: clicking the open tool closes it.
-    pub fn bar(&mut self, ui: &mut Ui) {
+    /// The switches for the top bar: clicking the open tool closes it. In presentation, where
+    /// the bar is short of room, the lesson deck's shows its icon only (its name stays its
+    /// accessible name and its hover).
+    pub fn bar(&mut self, ui: &mut Ui, presenting: bool) {
         for tool in Tool::ALL {
             let open = self.open == Some(tool);
-            if ui.selectable_label(open, tool.label()).clicked() {
+            let label = tool.label();
+            let compact = presenting && tool == Tool::Deck;
+            let shown = if compact {
+                label.split_whitespace().next().unwrap_or_default()
+            } else {
+                label.as_str()
+            };
+            let switch = ui.selectable_label(open, shown);
+            if compact {
+                switch.widget_info(|| WidgetInfo::selected(Role::Button, true, open, &label));
+            }
+            let switch = if compact {
+                switch.on_hover_text(&label)
+            } else {
+                switch
+            };
+            if switch.clicked() {
                 if tool == Tool::Deck && !open {
                     self.before_deck = self.open;
                 }

@@ -56,7 +56,7 @@ pub fn buttons(ui: &mut Ui, notes: &Notes, hidden: bool) -> Vec<Command> {
         }
     }
     let window = ui
-        .button(format!("🗒 {}", t!("deck-notes-window")))
+        .button(format!("📝 {}", t!("deck-notes-window")))
         .on_hover_text(t!("deck-notes-window-hover"));
     if window.clicked() {
         asked.push(Command::Notes);

@@ -5,7 +5,7 @@
 
 use std::path::{Path, PathBuf};
 
-use egui::{ComboBox, RichText, TextEdit, Ui};
+use egui::{ComboBox, RichText, Role, TextEdit, Ui, WidgetInfo};
 use refraction_deck::{Deck, builtin};
 use refraction_files::write_atomically;
 use refraction_i18n::t;
@@ -140,15 +140,18 @@ impl DeckPanel {
                 self.dialog = Some(FileDialog::new(Purpose::Save, DECK_FILES, &self.path));
             }
             let mut picked = None;
+            let name = t!("deck-built-in");
             ComboBox::from_id_salt("built-in-decks")
-                .selected_text(t!("deck-built-in"))
+                .selected_text(&name)
                 .show_ui(ui, |ui| {
                     for info in builtin::catalogue() {
                         if ui.selectable_label(false, &info.title).clicked() {
                             picked = builtin::deck(info.name);
                         }
                     }
-                });
+                })
+                .response
+                .widget_info(|| WidgetInfo::labeled(Role::ComboBox, true, &name));
             if let Some(deck) = picked {
                 self.edited = false;
                 action = Some(Action::Open(deck));
