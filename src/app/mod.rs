@@ -341,7 +341,9 @@ impl Explorer {
         Panel::top("views").show(ui, |ui| self.bar(ui));
         self.deck_frame(ui);
         self.deck_panel(ui);
-        self.scenes.hide_answer(self.lesson.hides_answer());
+        let step_shown = self.lesson.current().is_some();
+        self.scenes
+            .for_lesson(step_shown, self.lesson.hides_answer());
         match self.view {
             View::Interface => self.show_interface(ui),
             View::Scenes => {

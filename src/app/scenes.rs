@@ -54,6 +54,8 @@ pub struct ScenesView {
     files: SceneFiles,
     /// A lesson step's question is asked: the rays are drawn up to the first surface only.
     answer_hidden: bool,
+    /// A lesson step is shown: its strip stands above, and the hint line is left out.
+    in_lesson: bool,
 }
 
 impl Default for ScenesView {
@@ -124,12 +126,15 @@ impl ScenesView {
             drawn: None,
             files: SceneFiles::default(),
             answer_hidden: false,
+            in_lesson: false,
         }
     }
 
-    /// Draws the rays only up to the first surface they meet while `hidden` (a lesson step's
-    /// question is asked), the whole trace otherwise.
-    pub fn hide_answer(&mut self, hidden: bool) {
+    /// Shows a lesson step (`shown`): the hint line under the controls is left out, so that
+    /// the step's strip above keeps the scene its room; while `hidden` (the step's question is
+    /// asked) the rays are drawn only up to the first surface they meet.
+    pub fn for_lesson(&mut self, shown: bool, hidden: bool) {
+        self.in_lesson = shown;
         self.answer_hidden = hidden;
     }
 
@@ -255,7 +260,9 @@ impl ScenesView {
         // One line each, whatever the language: a cut line shows its whole text on hover, and
         // the scene keeps the window's height.
         ui.add(egui::Label::new(scene_words::description(&self.scene)).truncate());
-        ui.add(egui::Label::new(RichText::new(t!("scenes-hint")).weak()).truncate());
+        if !self.in_lesson {
+            ui.add(egui::Label::new(RichText::new(t!("scenes-hint")).weak()).truncate());
+        }
         if let Some(error) = &self.error {
             error_label(ui, error);
         }

@@ -59,6 +59,9 @@ impl Tool {
     fn presentation_share(self) -> f32 {
         match self {
             Self::Fresnel => PRESENTATION_TOOL_SHARE * 0.88,
+            // The deck's list and fields read in a narrow strip; the step's diagram needs room
+            // below the step's own strip.
+            Self::Deck => PRESENTATION_TOOL_SHARE * 0.75,
             _ => PRESENTATION_TOOL_SHARE,
         }
     }

@@ -323,33 +323,47 @@ impl Explorer {
     }
 
     /// The strip above the view: the step's number and title, its question and whether the
-    /// answer is shown, and the buttons for a mouse. Returns what its buttons asked.
+    /// answer is shown, and the buttons for a mouse; none while the deck's tool (which shows
+    /// the step in its fields) is open. Returns what its buttons asked.
     fn deck_strip(&self, ui: &mut Ui) -> Vec<Command> {
-        let Some(notes) = self.lesson.notes() else {
+        let Some(notes) = self
+            .lesson
+            .notes()
+            .filter(|_| self.tools.open != Some(Tool::Deck))
+        else {
             return Vec::new();
         };
         let hidden = self.lesson.hides_answer();
+        // On a projector the strip keeps to as few rows as it can: the buttons show their
+        // icons, the question follows the title on its row, the reveal key's hint is the
+        // question's hover, and the words are the body's size (20 pixels and more there).
+        let compact = self.presentation.on;
+        let hint = if hidden {
+            t!("deck-hidden-hint")
+        } else {
+            t!("deck-shown-hint")
+        };
+        let size = |text: RichText| if compact { text } else { text.heading() };
+        let number = t!(
+            "deck-step-number",
+            number = notes.number.to_string(),
+            count = notes.count.to_string()
+        );
         let mut asked = Vec::new();
         Panel::top("deck-step").show(ui, |ui| {
             ui.horizontal_wrapped(|ui| {
-                let number = t!(
-                    "deck-step-number",
-                    number = notes.number.to_string(),
-                    count = notes.count.to_string()
-                );
-                ui.label(RichText::new(number).heading().strong());
-                ui.label(RichText::new(&notes.title).heading());
-                asked.extend(notes::buttons(ui, &notes, hidden));
+                ui.label(size(RichText::new(number).strong()));
+                asked.extend(notes::buttons(ui, &notes, hidden, compact));
+                ui.label(size(RichText::new(&notes.title)));
+                if compact && let Some(question) = &notes.question {
+                    let words = RichText::new(format!("❓ {question}")).strong();
+                    ui.label(words).on_hover_text(&hint);
+                }
             });
-            if let Some(question) = &notes.question {
+            if !compact && let Some(question) = &notes.question {
                 ui.horizontal_wrapped(|ui| {
                     ui.label(RichText::new(format!("❓ {question}")).strong());
-                    let hint = if hidden {
-                        t!("deck-hidden-hint")
-                    } else {
-                        t!("deck-shown-hint")
-                    };
-                    ui.label(RichText::new(hint).weak());
+                    ui.label(RichText::new(&hint).weak());
                 });
             }
         });

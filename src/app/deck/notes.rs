@@ -3,10 +3,11 @@
 //! main window where the backend has one window only, as under a headless test), and the
 //! buttons that step through the deck with a mouse.
 
-use egui::{Button, Context, RichText, ScrollArea, Ui, ViewportBuilder, ViewportId};
+use egui::{Context, RichText, ScrollArea, Ui, ViewportBuilder, ViewportId};
 use refraction_i18n::t;
 
 use super::{Command, Lesson};
+use crate::app::widgets::icon_button;
 
 /// What the notes window shows for one step.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -28,38 +29,50 @@ pub struct Notes {
 }
 
 /// The buttons that step with a mouse: previous, next, reveal (on a step with a question) and
-/// the notes window. Returns what was clicked.
-pub fn buttons(ui: &mut Ui, notes: &Notes, hidden: bool) -> Vec<Command> {
+/// the notes window; only their icons when `compact` (the strip above a projector's diagram),
+/// their names then their accessible names and hovers. Returns what was clicked.
+pub fn buttons(ui: &mut Ui, notes: &Notes, hidden: bool, compact: bool) -> Vec<Command> {
+    let keys = t!("deck-keys");
+    let reveal = if hidden {
+        t!("deck-reveal")
+    } else {
+        t!("deck-hide")
+    };
+    let buttons = [
+        (
+            "⏴",
+            t!("deck-previous"),
+            keys.clone(),
+            notes.number > 1,
+            Command::Previous,
+        ),
+        (
+            "⏵",
+            t!("deck-next"),
+            keys,
+            notes.number < notes.count,
+            Command::Next,
+        ),
+        (
+            "👁",
+            reveal,
+            t!("deck-hidden-hint"),
+            notes.question.is_some(),
+            Command::Reveal,
+        ),
+        (
+            "📝",
+            t!("deck-notes-window"),
+            t!("deck-notes-window-hover"),
+            true,
+            Command::Notes,
+        ),
+    ];
     let mut asked = Vec::new();
-    let first = notes.number > 1;
-    let last = notes.number >= notes.count;
-    let previous = ui
-        .add_enabled(first, Button::new(format!("⏴ {}", t!("deck-previous"))))
-        .on_hover_text(t!("deck-keys"));
-    if previous.clicked() {
-        asked.push(Command::Previous);
-    }
-    let next = ui
-        .add_enabled(!last, Button::new(format!("{} ⏵", t!("deck-next"))))
-        .on_hover_text(t!("deck-keys"));
-    if next.clicked() {
-        asked.push(Command::Next);
-    }
-    if notes.question.is_some() {
-        let words = if hidden {
-            t!("deck-reveal")
-        } else {
-            t!("deck-hide")
-        };
-        if ui.button(words).clicked() {
-            asked.push(Command::Reveal);
+    for (icon, name, hover, enabled, command) in buttons {
+        if icon_button(ui, (icon, name, hover), enabled, compact) {
+            asked.push(command);
         }
-    }
-    let window = ui
-        .button(format!("📝 {}", t!("deck-notes-window")))
-        .on_hover_text(t!("deck-notes-window-hover"));
-    if window.clicked() {
-        asked.push(Command::Notes);
     }
     asked
 }
@@ -92,7 +105,8 @@ fn contents(ui: &mut Ui, notes: &Notes, hidden: bool) -> Vec<Command> {
         |title| t!("deck-notes-next", title = title),
     );
     ui.label(RichText::new(next).weak());
-    ui.horizontal_wrapped(|ui| buttons(ui, notes, hidden)).inner
+    ui.horizontal_wrapped(|ui| buttons(ui, notes, hidden, false))
+        .inner
 }
 
 /// Shows the notes window for `notes` and reads the deck's keys pressed in it. Returns what

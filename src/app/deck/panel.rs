@@ -97,8 +97,9 @@ impl DeckPanel {
         });
         if let Some(deck) = deck {
             let title = ui.label(t!("deck-title-field"));
+            let width = ui.available_width();
             self.edited |= ui
-                .add(TextEdit::singleline(&mut deck.title).desired_width(f32::INFINITY))
+                .add(TextEdit::singleline(&mut deck.title).desired_width(width))
                 .labelled_by(title.id)
                 .changed();
             action = self.steps(ui, deck, current).or(action);
@@ -119,7 +120,8 @@ impl DeckPanel {
         let mut action = None;
         ui.horizontal_wrapped(|ui| {
             let label = ui.label(t!("deck-file"));
-            ui.add(TextEdit::singleline(&mut self.path).desired_width(200.0))
+            let width = ui.available_width().min(200.0);
+            ui.add(TextEdit::singleline(&mut self.path).desired_width(width))
                 .labelled_by(label.id);
             if ui.button(t!("deck-open-file")).clicked() {
                 action = self.open();
@@ -193,7 +195,8 @@ impl DeckPanel {
                     number = (i + 1).to_string(),
                     title = title_of(step, i)
                 );
-                if ui.selectable_label(*current == Some(i), row).clicked() {
+                let row = egui::Button::selectable(*current == Some(i), row).truncate();
+                if ui.add(row).clicked() {
                     action = Some(Action::GoTo(i));
                 }
             });
@@ -301,16 +304,18 @@ impl DeckPanel {
 /// The step's title, question and notes; returns whether any changed.
 fn fields(ui: &mut Ui, step: &mut refraction_deck::Step) -> bool {
     let mut changed = false;
+    // As wide as the panel: a field asked to be wider would run past the window's edge.
+    let width = ui.available_width();
     let title = ui.label(t!("deck-step-title"));
     changed |= ui
-        .add(TextEdit::singleline(&mut step.title).desired_width(f32::INFINITY))
+        .add(TextEdit::singleline(&mut step.title).desired_width(width))
         .labelled_by(title.id)
         .changed();
     let label = ui.label(t!("deck-step-question"));
     let mut question = step.question.clone().unwrap_or_default();
     let field = TextEdit::singleline(&mut question)
         .hint_text(t!("deck-step-question-hint"))
-        .desired_width(f32::INFINITY);
+        .desired_width(width);
     if ui.add(field).labelled_by(label.id).changed() {
         step.question = (!question.trim().is_empty()).then_some(question);
         changed = true;
@@ -320,7 +325,7 @@ fn fields(ui: &mut Ui, step: &mut refraction_deck::Step) -> bool {
         .add(
             TextEdit::multiline(&mut step.notes)
                 .desired_rows(3)
-                .desired_width(f32::INFINITY),
+                .desired_width(width),
         )
         .labelled_by(label.id)
         .changed();
