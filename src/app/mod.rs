@@ -390,7 +390,8 @@ impl Explorer {
                 self.command_line_language = None;
             }
             ui.separator();
-            self.tools.bar(ui, self.presentation.on);
+            self.tools
+                .bar(ui, self.presentation.on, self.lesson.deck.is_some());
             if self.view == View::Interface {
                 ui.separator();
                 self.physics.menu(ui);

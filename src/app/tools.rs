@@ -98,9 +98,14 @@ pub struct Tools {
 impl Tools {
     /// The switches for the top bar: clicking the open tool closes it. In presentation, where
     /// the bar is short of room, the lesson deck's shows its icon only (its name stays its
-    /// accessible name and its hover).
-    pub fn bar(&mut self, ui: &mut Ui, presenting: bool) {
-        for tool in Tool::ALL {
+    /// accessible name and its hover), and only while a deck is open (`deck_open`) or its
+    /// tool is: a deck is built at the desk.
+    pub fn bar(&mut self, ui: &mut Ui, presenting: bool, deck_open: bool) {
+        let deck_shown = !presenting || deck_open || self.open == Some(Tool::Deck);
+        for tool in Tool::ALL
+            .into_iter()
+            .filter(|t| *t != Tool::Deck || deck_shown)
+        {
             let open = self.open == Some(tool);
             let label = tool.label();
             let compact = presenting && tool == Tool::Deck;
