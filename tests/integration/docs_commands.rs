@@ -140,7 +140,11 @@ fn run(example: &Example, folder: &Path, subcommands: &[String]) -> Option<Strin
         if let Some(lesson) = example.args.iter().skip_while(|a| *a != "--lesson").nth(1) {
             let built_in = refraction_deck::builtin::names().contains(&lesson.as_str());
             let path = folder.join(lesson);
-            let named = if built_in { lesson.clone() } else { path.display().to_string() };
+            let named = if built_in {
+                lesson.clone()
+            } else {
+                path.display().to_string()
+            };
             if let Err(e) = refraction_deck::Deck::load(&named) {
                 return Some(format!("{}: {e}", example.place));
             }

@@ -1,9 +1,5 @@
 //! A deck goes through its file and comes back equal: every built-in deck in every language,
 //! and a hand-written deck that uses every field; a file's errors name their line and column.
-#![expect(
-    clippy::unwrap_used,
-    reason = "tests: a failed unwrap is a failed test, with its message"
-)]
 
 use refraction_deck::{Deck, Effect, Light, StepTool, StepView, builtin};
 use refraction_i18n::{Locale, set_locale};
