@@ -38,6 +38,11 @@ pub struct Cli {
     /// the explorer reopens where it was last closed.
     #[arg(long, value_name = "FILE.json")]
     pub state: Option<PathBuf>,
+    /// Open the explorer on a lesson deck at its first step: a built-in deck's name (see
+    /// `lessons`) or a deck file (TOML). Page Down and Page Up step through it, R reveals a
+    /// step's answer.
+    #[arg(long, value_name = "NAME|FILE", conflicts_with = "state")]
+    pub lesson: Option<String>,
     /// Open the explorer in presentation mode: full screen, everything larger, the side panels
     /// closed (F11 leaves it).
     #[arg(long)]
@@ -208,8 +213,12 @@ pub enum Command {
         list: bool,
     },
     /// Draw the explorer's diagram, or a traced scene, into a PNG or SVG file, or an animation
-    /// of the diagram into a GIF, without a window.
+    /// of the diagram into a GIF, or a lesson deck into a handout (PDF) or one SVG per step,
+    /// without a window.
     Render(RenderArgs),
+    /// List the built-in lesson decks, one per line: NAME, TITLE and the number of steps,
+    /// separated by tabs (the titles in the language of --lang).
+    Lessons,
 }
 
 /// What `render` is asked for on the command line.
@@ -220,9 +229,19 @@ pub struct RenderArgs {
     pub scene: Option<String>,
     /// The file to write (replaced atomically), or - for standard output (PNG, or GIF with
     /// --animate). Its extension picks the format: .png or .svg (labels as editable text) for
-    /// a picture, .gif for --animate.
-    #[arg(long, value_name = "FILE.png|FILE.svg|FILE.gif")]
+    /// a picture, .gif for --animate; with --lesson, .pdf for the handout, or a folder (DIR/)
+    /// for one SVG per step.
+    #[arg(long, value_name = "FILE.png|FILE.svg|FILE.gif|FILE.pdf|DIR/")]
     pub out: PathBuf,
+    /// Draw a lesson deck (a built-in deck's name, see `lessons`, or a deck file): a handout
+    /// with one page per step (its diagram, title, question and notes; --out FILE.pdf) or each
+    /// step's diagram as step-01.svg, step-02.svg, … (--out DIR/, at --width × --height).
+    #[arg(
+        long,
+        value_name = "NAME|FILE",
+        conflicts_with_all = ["scene", "state", "animate", "view"]
+    )]
+    pub lesson: Option<String>,
     /// Width in pixels (64 to 8192).
     #[arg(long, default_value_t = refraction_render::DEFAULT_SIZE.0)]
     pub width: u32,

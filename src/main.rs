@@ -50,7 +50,10 @@ fn main() -> ExitCode {
     };
     // Only what is drawn speaks the language: the JSON and messages of `solve`, `check`,
     // `trace` and `bench` are the same for every user.
-    let draws = matches!(cli.command, None | Some(Command::Render(_)));
+    let draws = matches!(
+        cli.command,
+        None | Some(Command::Render(_) | Command::Lessons)
+    );
     if let Some(language) = cli.lang.filter(|_| draws) {
         refraction_i18n::set_locale(language);
     }
@@ -88,8 +91,10 @@ fn main() -> ExitCode {
         }
         Some(Command::Trace { scene, json, list }) => commands::trace::run(&scene, json, list),
         Some(Command::Render(args)) => commands::render::run(&args),
+        Some(Command::Lessons) => commands::lessons::list(),
         None => commands::render::explorer(&commands::render::Window {
             state: cli.state,
+            lesson: cli.lesson,
             present: cli.present,
             view: cli.view.map(View::from),
             theme: cli.theme.map(Theme::from),

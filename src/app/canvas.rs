@@ -133,14 +133,13 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
     let before = Diagram::with_overlay(state, canvas_size, overlay);
     let mut focused = None;
     let w_id = response.id.with(HandleId::W);
-    if response.clicked()
+    // A click on the background selects W. It is asked for after the handles are interacted
+    // with: a handle that sees a click elsewhere gives its focus up, W's too.
+    let select_w = response.clicked()
         && !before
             .handles
             .iter()
-            .any(|h| ui.memory(|m| m.has_focus(response.id.with(h.id))))
-    {
-        ui.memory_mut(|m| m.request_focus(w_id));
-    }
+            .any(|h| ui.memory(|m| m.has_focus(response.id.with(h.id))));
     for handle in &before.handles {
         let area = Diagram::grab_area(handle);
         let rect = Rect::from_min_max(
@@ -179,6 +178,10 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
             keyboard(ui, state, handle.id);
             focused = Some(handle.id);
         }
+    }
+    if select_w {
+        ui.memory_mut(|m| m.request_focus(w_id));
+        focused = Some(HandleId::W);
     }
     let after = Diagram::with_overlay(state, canvas_size, overlay);
     paint(&painter, &to_screen, &after.primitives());

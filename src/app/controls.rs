@@ -17,8 +17,9 @@ use refraction_model::{INDEX_RANGE, MATERIALS, material_of};
 /// What the controls keep between frames.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Controls {
-    /// The lesson last started, which *Reset* goes back to.
-    lesson: Lesson,
+    /// The lesson last started here, which *Reset* goes back to (none yet when the window
+    /// opened on a state file or where it was last closed: then the first lesson).
+    lesson: Option<Lesson>,
     theta_i: TypedField,
     mu_i: TypedField,
     mu_t: TypedField,
@@ -36,7 +37,7 @@ pub struct Controls {
 impl Default for Controls {
     fn default() -> Self {
         Self {
-            lesson: Lesson::AirToGlass,
+            lesson: None,
             theta_i: TypedField::default(),
             mu_i: TypedField::default(),
             mu_t: TypedField::default(),
@@ -123,19 +124,32 @@ fn index_controls(
 }
 
 impl Controls {
+    /// What the lesson box shows for `state`: the lesson whose start it is, else the lesson
+    /// started here as changed, else the user's own case (a state file's, say), never a lesson
+    /// the diagram does not show.
+    fn lesson_shown(&self, state: &ExplorerState) -> String {
+        if let Some(lesson) = Lesson::ALL.into_iter().find(|l| l.state() == *state) {
+            lesson.label()
+        } else if let Some(lesson) = self.lesson {
+            t!("controls-lesson-changed", lesson = lesson.label())
+        } else {
+            t!("controls-lesson-own")
+        }
+    }
+
     /// The lesson presets, *Reset*, and θi typed in degrees.
     fn lesson(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
         ui.heading(t!("controls-lesson"));
         ui.horizontal_wrapped(|ui| {
             ComboBox::from_label(t!("controls-lesson-preset"))
-                .selected_text(self.lesson.label())
+                .selected_text(self.lesson_shown(state))
                 .show_ui(ui, |ui| {
                     for lesson in Lesson::ALL {
                         if ui
-                            .selectable_label(self.lesson == lesson, lesson.label())
+                            .selectable_label(self.lesson == Some(lesson), lesson.label())
                             .clicked()
                         {
-                            self.lesson = lesson;
+                            self.lesson = Some(lesson);
                             *state = lesson.state();
                         }
                     }
@@ -145,7 +159,7 @@ impl Controls {
                 .on_hover_text(t!("controls-reset-hover"))
                 .clicked()
             {
-                *state = self.lesson.state();
+                *state = self.lesson.unwrap_or(Lesson::AirToGlass).state();
             }
         });
         let current = short((state.incidence_degrees() * 1e4).round() / 1e4);
@@ -287,5 +301,30 @@ impl Controls {
                 .map_err(|e| e.to_string())
                 .map(|()| t!("controls-exported", path = path.display().to_string())),
         );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_lesson_box_names_only_the_lesson_the_diagram_shows() {
+        let mut controls = Controls::default();
+        let start = Lesson::AirToGlass.state();
+        assert_eq!(controls.lesson_shown(&start), Lesson::AirToGlass.label());
+        let mut own = start.clone();
+        own.set_incidence_degrees(12.5).unwrap();
+        assert_eq!(controls.lesson_shown(&own), t!("controls-lesson-own"));
+        controls.lesson = Some(Lesson::AirToGlass);
+        assert_eq!(
+            controls.lesson_shown(&own),
+            t!(
+                "controls-lesson-changed",
+                lesson = Lesson::AirToGlass.label()
+            )
+        );
+        let brewster = Lesson::ALL[Lesson::ALL.len() - 1];
+        assert_eq!(controls.lesson_shown(&brewster.state()), brewster.label());
     }
 }

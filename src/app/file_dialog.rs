@@ -28,6 +28,9 @@ pub enum Kind {
     Scene,
     /// A GIF animation (`.gif`).
     Gif,
+    /// A lesson deck (TOML text with a `[deck]` table, `.toml`): told from a scene by its
+    /// contents.
+    Deck,
 }
 
 impl Kind {
@@ -57,6 +60,8 @@ impl Kind {
             Some(Self::State)
         } else if text.starts_with(b"<") {
             Some(Self::Svg)
+        } else if core::str::from_utf8(bytes).is_ok_and(refraction_deck::looks_like_deck) {
+            Some(Self::Deck)
         } else if core::str::from_utf8(bytes).is_ok_and(looks_like_toml) {
             Some(Self::Scene)
         } else {
@@ -70,7 +75,7 @@ impl Kind {
             Self::State => ".json",
             Self::Png => ".png",
             Self::Svg => ".svg",
-            Self::Scene => ".toml",
+            Self::Scene | Self::Deck => ".toml",
             Self::Gif => ".gif",
         }
     }
@@ -84,6 +89,7 @@ impl Kind {
             Self::Svg => "svg",
             Self::Scene => "scene",
             Self::Gif => "gif",
+            Self::Deck => "deck",
         }
     }
 }
@@ -114,7 +120,8 @@ pub enum Target {
 /// something else; the message names the path and what it holds.
 pub fn target(path: &Path, kind: Kind) -> Result<Target, String> {
     let shown = path.display().to_string();
-    if Kind::of_name(path) != Some(kind) {
+    // A deck and a scene share `.toml`: the name says the extension, the contents the kind.
+    if Kind::of_name(path).map(Kind::extension) != Some(kind.extension()) {
         return Err(t!(
             "files-wrong-extension",
             path = &shown,
@@ -480,6 +487,8 @@ mod tests {
             Some(Kind::Scene)
         );
         assert_eq!(Kind::of_contents(b"just some words"), None);
+        let deck = b"[deck]\nversion = 1\n\n[[step]]\ntitle = \"One\"\n";
+        assert_eq!(Kind::of_contents(deck), Some(Kind::Deck));
         assert_eq!(Kind::of_contents(b"\xff\xfe = binary"), None);
         let dir = scratch("scenes");
         let state = dir.join("lesson.toml");
@@ -492,6 +501,18 @@ mod tests {
         let scene_file = dir.join("slab.toml");
         std::fs::write(&scene_file, scene).unwrap();
         assert_eq!(target(&scene_file, Kind::Scene), Ok(Target::Replaces));
+        let refused = target(&scene_file, Kind::Deck).unwrap_err();
+        assert!(
+            refused.contains("holds a scene (TOML), not a lesson deck (TOML)"),
+            "{refused}"
+        );
+        let deck_file = dir.join("lesson.toml");
+        std::fs::write(&deck_file, deck).unwrap();
+        assert_eq!(target(&deck_file, Kind::Deck), Ok(Target::Replaces));
+        assert!(
+            target(&deck_file, Kind::Scene).is_err(),
+            "no scene over a deck"
+        );
         assert!(
             target(&scene_file, Kind::Gif)
                 .unwrap_err()

@@ -10,6 +10,7 @@ mod accuracy;
 mod canvas;
 mod check_panel;
 mod controls;
+pub mod deck;
 mod export;
 mod file_dialog;
 mod files_panel;
@@ -41,6 +42,7 @@ use history::{History, Snapshot};
 use panels::{CONTROLS, NUMBERS, Panels};
 use physics::Physics;
 use presentation::Presentation;
+use refraction_deck::Deck;
 use refraction_diagram::Overlay;
 use refraction_diagram::palette::Theme;
 use refraction_i18n::{Locale, t};
@@ -124,6 +126,10 @@ pub struct Launch {
     pub language: Option<Locale>,
     /// The system's language, which the window speaks unless one is chosen.
     pub system_language: Option<Locale>,
+    /// The lesson deck to open on, at its first step (`--lesson`): a built-in deck's name
+    /// (read in the window's language) or a deck file's path, checked by the command line
+    /// before the window opens.
+    pub lesson: Option<String>,
 }
 
 /// The whole explorer: the state being explored, the view shown, each view's own memory,
@@ -141,6 +147,8 @@ pub struct Explorer {
     panels: Panels,
     physics: Physics,
     animation_export: AnimationExport,
+    /// The lesson deck and the step shown.
+    lesson: deck::Lesson,
     /// What the last undo or redo did, in words.
     travelled: Option<String>,
     /// The language given on the command line, until one is chosen in the bar.
@@ -170,6 +178,7 @@ impl Explorer {
             panels: Panels::default(),
             physics: Physics::default(),
             animation_export: AnimationExport::default(),
+            lesson: deck::Lesson::default(),
             travelled: None,
             command_line_language: None,
             system_language: Some(refraction_i18n::locale()),
@@ -205,6 +214,9 @@ impl Explorer {
         explorer.command_line_language = launch.language;
         explorer.system_language = launch.system_language;
         refraction_i18n::set_locale(explorer.speaking());
+        if let Some(deck) = launch.lesson.and_then(|name| Deck::load(&name).ok()) {
+            explorer.open_deck(deck);
+        }
         explorer
     }
 
@@ -286,6 +298,7 @@ impl Explorer {
             focus: self.tools.focus(&self.state),
             intensities: self.physics.intensities(),
             waves: self.physics.waves(),
+            hide_answer: self.lesson.hides_answer(),
         }
     }
 
@@ -326,6 +339,11 @@ impl Explorer {
             self.view = View::Interface;
         }
         Panel::top("views").show(ui, |ui| self.bar(ui));
+        self.deck_frame(ui);
+        self.deck_panel(ui);
+        let step_shown = self.lesson.current().is_some();
+        self.scenes
+            .for_lesson(step_shown, self.lesson.hides_answer());
         match self.view {
             View::Interface => self.show_interface(ui),
             View::Scenes => {
@@ -372,14 +390,22 @@ impl Explorer {
                 self.command_line_language = None;
             }
             ui.separator();
-            self.tools.bar(ui);
+            self.tools
+                .bar(ui, self.presentation.on, self.lesson.deck.is_some());
             if self.view == View::Interface {
                 ui.separator();
                 self.physics.menu(ui);
             }
-            if let Some(done) = &self.travelled {
+            // What the last undo did, in what is left of the bar's last row, cut with "…"
+            // (the whole on hover): it never grows the bar by a row.
+            if let Some(done) = self
+                .travelled
+                .as_ref()
+                .filter(|_| ui.available_size_before_wrap().x > 160.0)
+            {
                 ui.separator();
-                ui.label(RichText::new(done).weak());
+                ui.add(egui::Label::new(RichText::new(done).weak()).truncate())
+                    .on_hover_text(done);
             }
         });
     }

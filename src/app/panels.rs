@@ -184,13 +184,29 @@ impl Panels {
                 });
             return;
         }
-        let width = ui.available_width();
         let share = if presenting {
             panel.max_share.1
         } else {
             panel.max_share.0
         };
-        let max = (width * share).max(STRIP_WIDTH * 4.0);
+        // On the frame presentation is switched on or off, egui still lays out at the other
+        // zoom: a limit from that frame's width would clamp the width egui keeps for the panel
+        // (the numbers came back narrower after presentation, even after a restart). That
+        // frame keeps the width as it was and is drawn again at once.
+        let ctx = ui.ctx();
+        let zoom = if presenting {
+            super::presentation::ZOOM
+        } else {
+            1.0
+        };
+        let settled = ctx.native_pixels_per_point().unwrap_or(1.0) * zoom;
+        let max = if (ctx.pixels_per_point() - settled).abs() > 1e-3 {
+            // untranslated: egui's reason for drawing the frame again, for its debug output.
+            ctx.request_discard("the zoom changes");
+            f32::INFINITY
+        } else {
+            (ui.available_width() * share).max(STRIP_WIDTH * 4.0)
+        };
         side(id)
             .default_size(panel.default_width.min(max))
             .max_size(max)

@@ -6,7 +6,7 @@ use refraction_i18n::t;
 
 use super::paint::color;
 use refraction_diagram::equations::equations;
-use refraction_diagram::numbers::{number, significant, vector};
+use refraction_diagram::numbers::{number, significant_apart, vector};
 use refraction_diagram::palette::Palette;
 use refraction_diagram::quadratic::Quadratic;
 use refraction_diagram::table::{CandidateRow, rows};
@@ -196,7 +196,8 @@ fn warnings(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     }
 }
 
-/// A kernel warning in words, its length with 4 significant digits (the kernel's own text,
+/// A kernel warning in words, its length with 4 significant digits or as many more as tell it
+/// from 1 (the kernel's own text,
 /// for the command line's JSON, keeps every digit).
 fn warning_text(warning: &Warning) -> String {
     match warning {
@@ -208,7 +209,7 @@ fn warning_text(warning: &Warning) -> String {
             t!(
                 "readouts-warning-not-unit",
                 vector = vector,
-                length = significant(*length, 4)
+                length = significant_apart(*length, 1.0, 4)
             )
         }
         Warning::NormalFlipped => t!("readouts-warning-flipped"),

@@ -52,6 +52,10 @@ pub struct ScenesView {
     drawn: Option<(Rect, SceneLayout)>,
     /// The scene file, the picture export and their dialogs.
     files: SceneFiles,
+    /// A lesson step's question is asked: the rays are drawn up to the first surface only.
+    answer_hidden: bool,
+    /// A lesson step is shown: its strip stands above, and the hint line is left out.
+    in_lesson: bool,
 }
 
 impl Default for ScenesView {
@@ -121,7 +125,17 @@ impl ScenesView {
             error: None,
             drawn: None,
             files: SceneFiles::default(),
+            answer_hidden: false,
+            in_lesson: false,
         }
+    }
+
+    /// Shows a lesson step (`shown`): the hint line under the controls is left out, so that
+    /// the step's strip above keeps the scene its room; while `hidden` (the step's question is
+    /// asked) the rays are drawn only up to the first surface they meet.
+    pub fn for_lesson(&mut self, shown: bool, hidden: bool) {
+        self.in_lesson = shown;
+        self.answer_hidden = hidden;
     }
 
     /// The scene as edited.
@@ -246,7 +260,9 @@ impl ScenesView {
         // One line each, whatever the language: a cut line shows its whole text on hover, and
         // the scene keeps the window's height.
         ui.add(egui::Label::new(scene_words::description(&self.scene)).truncate());
-        ui.add(egui::Label::new(RichText::new(t!("scenes-hint")).weak()).truncate());
+        if !self.in_lesson {
+            ui.add(egui::Label::new(RichText::new(t!("scenes-hint")).weak()).truncate());
+        }
         if let Some(error) = &self.error {
             error_label(ui, error);
         }
@@ -300,18 +316,23 @@ impl ScenesView {
         let dragging = self.handles(ui, &response, &to_screen, &layout, &mut clicked_at);
         self.drag_layout = dragging.then_some(layout);
         self.drawn = Some((rect, layout));
-        let picture = ScenePicture::with_palette(&self.scene, &self.trace, &layout, palette);
+        // The layout fits the whole trace, so that revealing the answer does not move the view.
+        let hidden = self
+            .answer_hidden
+            .then(|| refraction_deck::answer::up_to_first_surface(&self.trace));
+        let shown = hidden.as_ref().unwrap_or(&self.trace);
+        let picture = ScenePicture::with_palette(&self.scene, shown, &layout, palette);
         paint(&painter, &to_screen, &picture.primitives);
         hover_left_out(&response, &to_screen, &picture.left_out, layout.font * 2.0);
         response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &picture.summary));
         let hovered = response
             .hover_pos()
-            .and_then(|p| layout.hit_near(&self.trace, canvas_point(&to_screen, p)));
+            .and_then(|p| layout.hit_near(shown, canvas_point(&to_screen, p)));
         if let Some(hit) = hovered {
             self.show_hit(ui, &painter, (&to_screen, &layout), hit, palette);
         }
         let clicked =
-            clicked_at.and_then(|p| layout.hit_near(&self.trace, canvas_point(&to_screen, p)))?;
+            clicked_at.and_then(|p| layout.hit_near(shown, canvas_point(&to_screen, p)))?;
         let problem = clicked.incidence();
         ExplorerState::new(
             problem.w,

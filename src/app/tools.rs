@@ -1,7 +1,8 @@
 //! The classroom tools under the diagram, one at a time: check my T, the walk-through,
-//! save / open / share, and the Fresnel plot. Their switches sit in the top bar.
+//! save / open / share, the Fresnel plot and the lesson deck (shown by the window itself, in
+//! every view: see [`super::deck`]). Their switches sit in the top bar.
 
-use egui::{Panel, ScrollArea, Ui};
+use egui::{Panel, Role, ScrollArea, Ui, WidgetInfo};
 use refraction_i18n::t;
 
 use super::check_panel::CheckPanel;
@@ -27,11 +28,19 @@ pub enum Tool {
     Files,
     /// Reflectance and transmittance against θi, with the cursor at the diagram's θi.
     Fresnel,
+    /// The lesson deck: its steps, built from the window and stepped through.
+    Deck,
 }
 
 impl Tool {
     /// Every tool, in the order of the bar.
-    pub const ALL: [Self; 4] = [Self::Check, Self::WalkThrough, Self::Files, Self::Fresnel];
+    pub const ALL: [Self; 5] = [
+        Self::Check,
+        Self::WalkThrough,
+        Self::Files,
+        Self::Fresnel,
+        Self::Deck,
+    ];
 
     /// The switch's label (also its accessible name).
     #[must_use]
@@ -41,6 +50,7 @@ impl Tool {
             Self::WalkThrough => format!("📖 {}", t!("tool-walk-through")),
             Self::Files => format!("💾 {}", t!("tool-files")),
             Self::Fresnel => t!("tool-fresnel"),
+            Self::Deck => format!("📚 {}", t!("tool-deck")),
         }
     }
 
@@ -49,6 +59,9 @@ impl Tool {
     fn presentation_share(self) -> f32 {
         match self {
             Self::Fresnel => PRESENTATION_TOOL_SHARE * 0.88,
+            // The deck's list and fields read in a narrow strip; the step's diagram needs room
+            // below the step's own strip.
+            Self::Deck => PRESENTATION_TOOL_SHARE * 0.75,
             _ => PRESENTATION_TOOL_SHARE,
         }
     }
@@ -61,6 +74,8 @@ impl Tool {
             Self::WalkThrough => 140.0,
             Self::Files => 150.0,
             Self::Fresnel => 330.0,
+            // The files row, the buttons and the first steps.
+            Self::Deck => 220.0,
         }
     }
 }
@@ -78,22 +93,48 @@ pub struct Tools {
     pub files: FilesPanel,
     /// The tool shown last frame, to tell a tool just opened.
     shown: Option<Tool>,
+    /// The tool that was open when the lesson deck's opened: the one a step added then keeps.
+    pub before_deck: Option<Tool>,
 }
 
 impl Tools {
-    /// The switches for the top bar: clicking the open tool closes it.
-    pub fn bar(&mut self, ui: &mut Ui) {
-        for tool in Tool::ALL {
+    /// The switches for the top bar: clicking the open tool closes it. In presentation, where
+    /// the bar is short of room, the lesson deck's shows its icon only (its name stays its
+    /// accessible name and its hover), and only while a deck is open (`deck_open`) or its
+    /// tool is: a deck is built at the desk.
+    pub fn bar(&mut self, ui: &mut Ui, presenting: bool, deck_open: bool) {
+        let deck_shown = !presenting || deck_open || self.open == Some(Tool::Deck);
+        for tool in Tool::ALL
+            .into_iter()
+            .filter(|t| *t != Tool::Deck || deck_shown)
+        {
             let open = self.open == Some(tool);
-            if ui.selectable_label(open, tool.label()).clicked() {
+            let label = tool.label();
+            let compact = presenting && tool == Tool::Deck;
+            let shown = if compact {
+                label.split_whitespace().next().unwrap_or_default()
+            } else {
+                label.as_str()
+            };
+            let switch = ui.selectable_label(open, shown);
+            if compact {
+                switch.widget_info(|| WidgetInfo::selected(Role::Button, true, open, &label));
+            }
+            let switch = if compact {
+                switch.on_hover_text(&label)
+            } else {
+                switch
+            };
+            if switch.clicked() {
+                if tool == Tool::Deck && !open {
+                    self.before_deck = self.open;
+                }
                 self.open = if open { None } else { Some(tool) };
             }
         }
     }
 
-    /// The open tool in a panel: under the diagram at the desk; beside it in presentation,
-    /// where the window is wide for its height and a strip across the bottom would squeeze
-    /// the diagram into a letterbox.
+    /// The open tool in its panel ([`frame`]); the lesson deck's is the window's to show.
     pub fn panel(
         &mut self,
         ui: &mut Ui,
@@ -102,33 +143,16 @@ impl Tools {
         palette: &Palette,
     ) {
         self.shown = self.open;
-        let Some(tool) = self.open else {
+        let Some(tool) = self.open.filter(|t| *t != Tool::Deck) else {
             return;
         };
-        let window = ui.ctx().content_rect();
-        let panel = if presenting {
-            // At most a third of the width: the diagram keeps half the window (tested).
-            let limit = window.width() * tool.presentation_share();
-            Panel::right(format!("{tool:?}-presentation"))
-                .resizable(true)
-                .default_size(limit)
-                .size_range(limit * 0.5..=limit)
-        } else {
-            // A panel only grows to what its scroll area was given last frame: each tool asks
-            // for the height its verdict or step needs (at most 45 % of the window), and can
-            // be dragged taller.
-            let limit = window.height() * 0.45;
-            let height = tool.height().min(limit);
-            Panel::bottom(format!("{tool:?}"))
-                .resizable(true)
-                .size_range(height..=limit.max(height))
-        };
-        panel.show(ui, |ui| {
+        frame(ui, tool, presenting).show(ui, |ui| {
             ScrollArea::vertical().show(ui, |ui| match tool {
                 Tool::Check => self.check.show(ui, state),
                 Tool::WalkThrough => self.walk.show(ui, state),
                 Tool::Files => self.files.show(ui, state),
                 Tool::Fresnel => fresnel_panel::show(ui, state, palette),
+                Tool::Deck => {}
             });
         });
     }
@@ -161,5 +185,29 @@ impl Tools {
     #[must_use]
     pub fn student(&self, state: &ExplorerState) -> Option<StudentRay> {
         self.check.student(state)
+    }
+}
+
+/// The panel `tool` is shown in: under the diagram at the desk; beside it in presentation,
+/// where the window is wide for its height and a strip across the bottom would squeeze the
+/// diagram into a letterbox.
+pub fn frame(ui: &Ui, tool: Tool, presenting: bool) -> Panel {
+    let window = ui.ctx().content_rect();
+    if presenting {
+        // At most a third of the width: the diagram keeps half the window (tested).
+        let limit = window.width() * tool.presentation_share();
+        Panel::right(format!("{tool:?}-presentation"))
+            .resizable(true)
+            .default_size(limit)
+            .size_range(limit * 0.5..=limit)
+    } else {
+        // A panel only grows to what its scroll area was given last frame: each tool asks
+        // for the height its verdict or step needs (at most 45 % of the window), and can
+        // be dragged taller.
+        let limit = window.height() * 0.45;
+        let height = tool.height().min(limit);
+        Panel::bottom(format!("{tool:?}"))
+            .resizable(true)
+            .size_range(height..=limit.max(height))
     }
 }

@@ -4,6 +4,7 @@
 //! written: every write goes through [`output`] and a failed one sets the exit status.
 
 pub mod bench;
+pub mod lessons;
 pub mod lines;
 pub mod output;
 pub mod render;

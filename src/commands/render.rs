@@ -214,6 +214,9 @@ fn animation(args: &RenderArgs, animation: Animation) -> Result<Vec<u8>, String>
 /// of a traced scene as PNG or SVG, or with `--animate` an animated GIF. The output path, the
 /// size and the animation's frames and rate are checked before anything is traced or drawn.
 pub fn run(args: &RenderArgs) -> ExitCode {
+    if let Some(lesson) = &args.lesson {
+        return super::lessons::render(lesson, &args.out, (args.width, args.height));
+    }
     let formats: &[ImageFormat] = match args.animate {
         Some(_) => &[ImageFormat::Gif],
         None => &STILL,
@@ -235,6 +238,8 @@ pub fn run(args: &RenderArgs) -> ExitCode {
 pub struct Window {
     /// The state file to open on.
     pub state: Option<PathBuf>,
+    /// The lesson deck to open on (`--lesson`).
+    pub lesson: Option<String>,
     /// Start in presentation mode.
     pub present: bool,
     /// The view to show.
@@ -245,9 +250,12 @@ pub struct Window {
     pub language: Option<Locale>,
 }
 
-/// Opens the explorer window as `window` asks; a state file that cannot be read is refused
-/// before any window opens.
+/// Opens the explorer window as `window` asks; a state file or a lesson deck that cannot be
+/// read is refused before any window opens.
 pub fn explorer(window: &Window) -> ExitCode {
+    if let Some(Err(e)) = window.lesson.as_deref().map(refraction_deck::Deck::load) {
+        return fail("", &e);
+    }
     let launch = window
         .state
         .as_deref()
@@ -255,6 +263,7 @@ pub fn explorer(window: &Window) -> ExitCode {
         .transpose()
         .map(|state| Launch {
             state,
+            lesson: window.lesson.clone(),
             present: window.present,
             view: window.view,
             theme: window.theme,

@@ -136,6 +136,19 @@ fn run(example: &Example, folder: &Path, subcommands: &[String]) -> Option<Strin
         {
             return Some(format!("{}: {e}", example.place));
         }
+        // A deck by its name, or a file from the example's folder, loads as the window would.
+        if let Some(lesson) = example.args.iter().skip_while(|a| *a != "--lesson").nth(1) {
+            let built_in = refraction_deck::builtin::names().contains(&lesson.as_str());
+            let path = folder.join(lesson);
+            let named = if built_in {
+                lesson.clone()
+            } else {
+                path.display().to_string()
+            };
+            if let Err(e) = refraction_deck::Deck::load(&named) {
+                return Some(format!("{}: {e}", example.place));
+            }
+        }
     }
     let open = |name: &Option<String>, write: bool| -> Stdio {
         name.as_ref().map_or_else(Stdio::null, |file| {
@@ -210,6 +223,11 @@ fn the_solve_and_scene_guides_commands_run_as_written() {
 }
 
 #[test]
+fn the_deck_guides_commands_run_as_written() {
+    run_page("docs/decks.md");
+}
+
+#[test]
 fn the_accuracy_guides_commands_run_as_written() {
     run_page("docs/accuracy.md");
 }
@@ -239,6 +257,7 @@ fn every_page_of_the_guide_is_run() {
             "accuracy.md",
             "check.md",
             "classroom.md",
+            "decks.md",
             "install.md",
             "scenes.md",
             "solve.md"

@@ -113,3 +113,38 @@ fn arrow_keys_turn_the_selected_handle_and_tab_moves_on() {
         s.mu_t()
     );
 }
+
+#[test]
+fn a_click_on_the_background_selects_w_for_the_arrow_keys() {
+    // Issue 22: the README promised it, and a click there left nothing selected.
+    let mut h = harness(ExplorerState::default());
+    let canvas = h.get_by_role(Role::Image).rect();
+    let origin = hit_point(&h);
+    // Below the surface, left of every ray and label: the glass's empty background.
+    let spot = Pos2::new(
+        canvas.min.x + 12.0,
+        origin.y + (canvas.max.y - origin.y) * 0.5,
+    );
+    h.hover_at(spot);
+    h.run();
+    h.event(egui::Event::PointerButton {
+        pos: spot,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: Modifiers::NONE,
+    });
+    h.run();
+    h.event(egui::Event::PointerButton {
+        pos: spot,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: Modifiers::NONE,
+    });
+    h.run();
+    h.run();
+    assert!(h.get_by_label("W handle").is_focused());
+    let cos_before = h.state().state().refraction().cos_i;
+    h.key_press(Key::ArrowLeft);
+    h.run();
+    assert!((h.state().state().refraction().cos_i - cos_before).abs() > 1e-6);
+}

@@ -235,7 +235,12 @@ fn each_api_shows_its_own_fields_the_truth_and_its_convention() {
     click(&mut h, "pbrt");
     let w = h.state().state().w();
     let wi = h.get_by_role_and_label(egui::Role::TextInput, "wi");
-    assert_eq!(wi.value().unwrap(), format!("{}, {}, {}", -w.x, -w.y, -w.z));
+    // A zero component reads 0, not "-0" (issue 22).
+    let plain = |x: f64| if x == 0.0 { 0.0 } else { -x };
+    assert_eq!(
+        wi.value().unwrap(),
+        format!("{}, {}, {}", plain(w.x), plain(w.y), plain(w.z))
+    );
 }
 
 /// Types a GLSL call into the panel (the fields as logged) and checks it.

@@ -133,3 +133,60 @@ fn the_walk_through_follows_the_source_highlights_the_diagram_and_animates_mu_to
     click(&mut h, "📖 Walk-through");
     assert_eq!(h.state().overlay().focus, None);
 }
+
+#[test]
+fn what_an_undo_did_never_grows_the_top_bar() {
+    // Issue 22: the Undo message grew the top bar to three rows.
+    for present in [false, true] {
+        let mut h = harness(ExplorerState::default());
+        if present {
+            click(&mut h, "🖵 Presentation");
+            for _ in 0..3 {
+                h.run();
+            }
+        }
+        let top = |h: &Harness<'_, Explorer>| h.get_by_role(Role::Image).rect().min.y;
+        let before = top(&h);
+        h.get_by_label("W handle").focus();
+        h.run();
+        h.key_press(Key::ArrowLeft);
+        h.run();
+        assert_eq!(h.state().history().undo_steps(), 1);
+        undo(&mut h);
+        for _ in 0..3 {
+            h.run();
+        }
+        assert!(h.state().history().undo_steps() == 0);
+        assert!(
+            (top(&h) - before).abs() < 0.5,
+            "presentation {present}: the diagram moved from {before} to {}",
+            top(&h)
+        );
+    }
+}
+
+#[test]
+fn the_numbers_keep_their_desk_width_after_presentation() {
+    // Issue 22: the numbers panel came back narrower after presentation, even after a restart
+    // (egui keeps the narrowed width).
+    let mut h = harness(ExplorerState::default());
+    let width =
+        |h: &Harness<'_, Explorer>| h.get_by_label_contains("Hide the numbers").rect().left();
+    for _ in 0..4 {
+        h.run();
+    }
+    let before = width(&h);
+    for _ in 0..2 {
+        h.key_press(Key::F11);
+        for _ in 0..4 {
+            h.run();
+        }
+    }
+    assert!(!h.state().presentation().on);
+    // Within a point: egui rounds the panel's edge to a pixel at each zoom.
+    assert!(
+        (width(&h) - before).abs() <= 1.0,
+        "the numbers panel's edge moved from {before} to {}",
+        width(&h)
+    );
+}

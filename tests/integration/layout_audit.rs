@@ -893,3 +893,42 @@ fn the_audit_finds_a_row_of_controls_cut_off_at_the_window_edge() {
         ["row: “Export picture” is cut off at the window's edge"]
     );
 }
+
+/// A lesson deck's steps that ask a question, in presentation at 1280×720 in every language:
+/// the step's strip (its number, title and question) above the diagram, its answer hidden,
+/// with the tools closed and with the deck's own tool open; and a scene's step.
+#[test]
+fn a_lesson_step_with_a_question_keeps_the_layout_rules_in_presentation() {
+    let mut measured = Vec::new();
+    for language in Locale::ALL {
+        refraction_i18n::set_locale(language);
+        for tool in [None, Some(format!("📚 {}", t!("tool-deck")))] {
+            let mut explorer = Explorer::new(ExplorerState::default());
+            explorer.open_deck(refraction_deck::Deck::load("total-internal-reflection").unwrap());
+            let mut h = harness_sized(explorer, SIZES[0]);
+            set_up(&mut h, true, &themes()[0], tool.as_deref());
+            // Steps 1 to 3 (a question each, past the critical angle last), then the fibre.
+            for step in 0..5 {
+                let (index, shown) = h.state().lesson().current().unwrap();
+                assert!(shown.hides_answer() && h.state().overlay().hide_answer);
+                let what = format!(
+                    "{language} 1280×720 presentation, lesson step {} {}",
+                    index + 1,
+                    tool.as_ref()
+                        .map_or_else(|| "no tool".to_owned(), |t| format!("tool {t}")),
+                );
+                let scene = h.state().view() == refraction_explorer::app::View::Scenes;
+                measured.push((
+                    what.clone(),
+                    measure(&h, &what, true, tool.is_some(), scene),
+                ));
+                if step < 4 {
+                    h.key_press(egui::Key::PageDown);
+                    settle(&mut h);
+                }
+            }
+        }
+    }
+    refraction_i18n::set_locale(Locale::En);
+    report("lesson steps", &measured);
+}

@@ -27,6 +27,8 @@ mod explorer_physics;
 mod hostile_cli;
 mod languages_cli;
 mod layout_audit;
+mod lesson_deck;
+mod lessons_cli;
 mod parsers_fuzz;
 mod render_cli;
 mod renderers;

@@ -19,7 +19,7 @@ fn dist_assets_writes_into_the_folder_given() {
     let run = xtask(&["dist-assets", out.path().to_str().unwrap()]);
     let said = String::from_utf8_lossy(&run.stderr);
     assert!(run.status.success(), "{said}");
-    assert!(said.contains("wrote 16 files"), "{said}");
+    assert!(said.contains("wrote 17 files"), "{said}");
     for file in [
         "man/refraction-explorer.1",
         "man/refraction-explorer-solve.1",
@@ -27,6 +27,7 @@ fn dist_assets_writes_into_the_folder_given() {
         "man/refraction-explorer-bench.1",
         "man/refraction-explorer-trace.1",
         "man/refraction-explorer-render.1",
+        "man/refraction-explorer-lessons.1",
         "completions/refraction-explorer.bash",
         "completions/_refraction-explorer",
         "completions/refraction-explorer.fish",

@@ -51,6 +51,17 @@ pub(crate) fn n(x: f64) -> String {
     number(x, 4)
 }
 
+/// [`n`] in parentheses when negative: a number squared, multiplied or added in a formula
+/// ("(−0.7071)²", "+ (−0.3832)·b"), where a bare minus would read as an operator.
+pub(crate) fn term(x: f64) -> String {
+    let text = n(x);
+    if text.starts_with('−') {
+        format!("({text})")
+    } else {
+        text
+    }
+}
+
 /// The a the source chooses in `r`'s convention: −μ or +μ.
 pub(crate) fn chosen_a(r: &Refraction<f64>) -> f64 {
     r.convention.travel_sign::<f64>() * r.mu
@@ -89,7 +100,7 @@ fn decomposition(r: &Refraction<f64>) -> String {
             "T = {}·{} + {}·{} = {}",
             n(tr.a),
             vector(r.w, 3),
-            n(tr.b),
+            term(tr.b),
             vector(r.n, 3),
             vector(tr.t, 4)
         ),
@@ -103,11 +114,11 @@ fn unit_length(r: &Refraction<f64>) -> String {
     match r.transmission {
         Some(tr) => format!(
             "{}² + 2·{}·{}·{} + {}² = {}",
-            n(tr.a),
-            n(tr.a),
-            n(tr.b),
-            n(wn),
-            n(tr.b),
+            term(tr.a),
+            term(tr.a),
+            term(tr.b),
+            term(wn),
+            term(tr.b),
             n(tr.a * tr.a + 2.0 * tr.a * tr.b * wn + tr.b * tr.b)
         ),
         None => t!("diagram-eq-no-b-with-10"),
@@ -121,8 +132,8 @@ fn squared_a(r: &Refraction<f64>) -> String {
     let given = format!(
         // untranslated: a formula with numbers.
         "({}² − 1)·{}² = {} = a²·({})",
-        n(wn),
-        n(mu),
+        term(wn),
+        term(mu),
         n(wn2_minus_1 * mu * mu),
         n(wn2_minus_1)
     );

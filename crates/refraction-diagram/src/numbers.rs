@@ -63,6 +63,17 @@ fn point_significant(x: f64, digits: usize) -> String {
     }
 }
 
+/// [`significant`] with at least `digits` digits and as many more (up to 15) as it takes for
+/// the text not to read as `other`: a length of 1.0004 is "1.0004", not 1, since "has length
+/// 1.000, not 1" would contradict itself.
+#[must_use]
+pub fn significant_apart(x: f64, other: f64, digits: usize) -> String {
+    (digits.max(1)..=15)
+        .map(|d| (d, point_significant(x, d)))
+        .find(|(_, text)| text.replace('−', "-").parse::<f64>().ok() != Some(other))
+        .map_or_else(|| significant(x, digits), |(d, _)| significant(x, d))
+}
+
 /// A 3D vector as `(x, y, z)` with [`number`]s, separated as the language separates a list
 /// of numbers (`(0,5; −1,0; 0,0)` where the decimal separator is a comma).
 #[must_use]
@@ -112,6 +123,15 @@ mod tests {
                 .count();
             assert!(digits <= 4, "{x}: {text}");
         }
+    }
+
+    #[test]
+    fn a_length_near_one_gets_the_digits_that_tell_it_from_one() {
+        assert_eq!(significant_apart(1.0004, 1.0, 4), "1.0004");
+        assert_eq!(significant_apart(1.000293, 1.0, 4), "1.0003");
+        assert_eq!(significant_apart(0.99999999, 1.0, 4), "0.99999999");
+        assert_eq!(significant_apart(2.5, 1.0, 4), "2.5");
+        assert_eq!(significant_apart(1.25, 1.0, 4), "1.25");
     }
 
     #[test]

@@ -150,6 +150,9 @@ pub struct Overlay {
     /// The *Wavefronts* switch: the fronts (at their phase) and, if asked, Huygens's
     /// construction; `None` when off.
     pub waves: Option<WaveOptions>,
+    /// A lesson step's question is being asked: T, the reflected ray, the rejected candidates,
+    /// the angle of refraction and the banner's verdict are left out until it is revealed.
+    pub hide_answer: bool,
 }
 
 impl Default for Overlay {
@@ -161,6 +164,7 @@ impl Default for Overlay {
             focus: None,
             intensities: None,
             waves: None,
+            hide_answer: false,
         }
     }
 }

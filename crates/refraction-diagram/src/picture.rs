@@ -314,7 +314,12 @@ impl DiagramBuilder<'_> {
 
     /// The student's T, with its own length and dash, labelled with what it is.
     fn student(&mut self) {
-        let Some(student) = self.overlay.student.as_ref() else {
+        let Some(student) = self
+            .overlay
+            .student
+            .as_ref()
+            .filter(|_| !self.overlay.hide_answer)
+        else {
             return;
         };
         let flat = self.state.plane().project(student.t);
@@ -506,7 +511,8 @@ impl DiagramBuilder<'_> {
     /// The status strip, its text wrapped to fit by [`Diagram::with_overlay`].
     fn banner(&mut self, r: &Refraction<f64>, text: String) {
         let rect = self.layout.banner;
-        let (fill, ink) = if r.is_tir() {
+        // A hidden answer keeps the calm colour: the alarm's would give total reflection away.
+        let (fill, ink) = if r.is_tir() && !self.overlay.hide_answer {
             (self.palette.alarm, self.palette.on_alarm)
         } else {
             (self.palette.calm, self.palette.ink)
@@ -663,7 +669,7 @@ impl DiagramBuilder<'_> {
         self.part_ray(Part::W, w_dir, 1.0, w_stroke, &w_text);
         let n_stroke = self.stroke(3.0, palette.n, Dash::Solid);
         self.part_ray(Part::N, n_dir, 1.0, n_stroke, &n_text);
-        if let Some(tr) = r.transmission {
+        if let Some(tr) = r.transmission.filter(|_| !self.overlay.hide_answer) {
             let t_stroke = self.stroke(4.5, palette.t, Dash::Solid);
             let shares = self.overlay.intensities.map(|p| Shares::of(r, p));
             // Under the *Intensities* switch T is as wide as its share, and says it.
@@ -735,7 +741,11 @@ impl Diagram {
     pub fn with_overlay(state: &ExplorerState, size: Vec2, overlay: &Overlay) -> Self {
         let r = state.refraction();
         let face = Typeface::egui_default().ok();
-        let summary = banner_text(r);
+        let summary = if overlay.hide_answer {
+            t!("deck-answer-hidden")
+        } else {
+            banner_text(r)
+        };
         let (layout, banner) = layout_with_banner(size, &summary, face.as_ref());
         let layout = layout.panned(overlay.pan_zoom);
         let palette = overlay.palette;
@@ -757,20 +767,23 @@ impl Diagram {
         b.media(normal);
         // The wavefronts' names and the critical angle: what the lessons about them teach.
         b.rank = Rank::Landmark;
-        if let Some(options) = overlay.waves {
+        // The fronts beyond the surface would show the bend of a hidden answer.
+        if let Some(options) = overlay.waves.filter(|_| !overlay.hide_answer) {
             b.waves(&options);
         }
         b.guides(normal, toward_source);
         b.rank = Rank::Rays;
         b.incoming(r, normal, toward_source);
-        b.rank = Rank::Candidates;
-        b.candidates(r);
-        b.rank = Rank::Bug;
-        b.outward_normal_bug(r);
-        b.rank = Rank::Construction;
-        b.decomposition(r);
-        b.rank = Rank::Rays;
-        b.outgoing(r, normal);
+        if !overlay.hide_answer {
+            b.rank = Rank::Candidates;
+            b.candidates(r);
+            b.rank = Rank::Bug;
+            b.outward_normal_bug(r);
+            b.rank = Rank::Construction;
+            b.decomposition(r);
+            b.rank = Rank::Rays;
+            b.outgoing(r, normal);
+        }
         b.rank = Rank::Vectors;
         let [w_dir, n_dir] = b.vectors(r);
         b.student();
@@ -810,7 +823,17 @@ impl Diagram {
                 // The scale only gives indices in INDEX_RANGE; the kernel refuses one only when
                 // the other, typed, index puts the ratio out of range, and then the marker
                 // stays at the last good state, as every refused edit does.
-                let _ = state.set_index(handle, self.layout.scale.index_at(p.y));
+                let other = match handle {
+                    HandleId::MuI => HandleId::MuT,
+                    _ => HandleId::MuI,
+                };
+                // Within the scale's step of the other medium's index is the other medium
+                // (air's 1.000293, not vacuum's 1.000 beside it): the ray goes straight on.
+                let mut index = self.layout.scale.index_at(p.y);
+                if (index - state.index(other)).abs() < 0.001 {
+                    index = state.index(other);
+                }
+                let _ = state.set_index(handle, index);
             }
         }
     }
@@ -866,6 +889,28 @@ mod tests {
         );
         assert!(labels.iter().any(|l| l.starts_with("Section 2")));
         assert_eq!(diagram.handles.len(), 4);
+    }
+
+    #[test]
+    fn a_hidden_answer_leaves_out_t_the_reflection_and_the_verdict() {
+        let beyond = refraction_model::Lesson::BeyondCritical.state();
+        let state = ExplorerState::default();
+        let hidden = Overlay {
+            hide_answer: true,
+            ..Overlay::default()
+        };
+        let size = Vec2::new(1000.0, 700.0);
+        let shown = Diagram::new(&state, size);
+        let asked = Diagram::with_overlay(&state, size, &hidden);
+        assert!(texts(&shown).contains(&"T"));
+        assert!(!texts(&asked).contains(&"T"), "no T");
+        assert!(!texts(&asked).iter().any(|t| t.starts_with("reflected")));
+        assert!(!texts(&asked).iter().any(|t| t.contains("θt")));
+        assert!(arrows(&asked).len() < arrows(&shown).len());
+        let tir = Diagram::with_overlay(&beyond, size, &hidden);
+        assert!(tir.summary.contains("hidden"), "{}", tir.summary);
+        assert!(!texts(&tir).iter().any(|t| t.contains("otal internal")));
+        assert_eq!(asked.handles.len(), 4, "the handles stay");
     }
 
     #[test]
@@ -1050,6 +1095,14 @@ mod tests {
         let y = diagram.layout.scale.y_of(2.0);
         diagram.drag(&mut state, HandleId::MuT, Vec2::new(0.0, y));
         assert_eq!(state.mu_t(), 2.0);
+        // μt dragged to the bottom beside air: air, not vacuum (no θc of 88.6°).
+        diagram.drag(
+            &mut state,
+            HandleId::MuT,
+            Vec2::new(0.0, diagram.layout.scale.bottom),
+        );
+        assert_eq!(state.mu_t(), state.mu_i());
+        assert!(state.critical_angle().is_none());
         let rect = Diagram::grab_area(&diagram.handles[0]);
         assert!(rect.contains(diagram.handles[0].center));
     }

@@ -2,7 +2,7 @@
 //! numbering, the current numbers substituted, what the step argues in plain words, and the
 //! parts of the diagram it is about ([`Focus`]). Every number is the kernel's.
 
-use super::equations::{Equation, chosen_a, equations, n};
+use super::equations::{Equation, chosen_a, equations, n, term};
 use super::overlay::Focus;
 use refraction_i18n::t;
 use refraction_kernel::{Convention, Refraction};
@@ -166,13 +166,7 @@ fn other_equations(r: &Refraction<f64>) -> [Equation; 6] {
         equation(r, 4, &format!("{sin}(θi)·μ = {sin}(θt)"), snell(r)),
         // untranslated: a formula.
         equation(r, 6, "(1 − cos²θi)·μ² = 1 − cos²θt", squared(r)),
-        equation(
-            r,
-            8,
-            wording.cos_i,
-            // untranslated: a formula with numbers.
-            format!("wn = W·N = {}, cosθi = {}", n(wn), n(r.cos_i)),
-        ),
+        equation(r, 8, wording.cos_i, incidence(r)),
         // untranslated: a formula.
         equation(r, 10, "(1 − wn²)·μ² = 1 − (−a·wn − b)²", squared_snell(r)),
         equation(r, 19, wording.a, format!("a = {}", n(a))),
@@ -180,9 +174,26 @@ fn other_equations(r: &Refraction<f64>) -> [Equation; 6] {
             r,
             20,
             wording.quadratic_in_b,
-            format!("b² + {}·b + {} = 0", n(2.0 * a * wn), n(a * a - 1.0)),
+            format!("b² + {}·b + {} = 0", term(2.0 * a * wn), term(a * a - 1.0)),
         ),
     ]
+}
+
+/// Eq. 8 with numbers: wn and cosθi, and where N faced away from the ray, the −N the kernel
+/// used instead (so that cosθi = −wn reads true of the numbers shown).
+fn incidence(r: &Refraction<f64>) -> String {
+    let wn = r.wn();
+    if r.n == r.facing_normal {
+        // untranslated: a formula with numbers.
+        format!("wn = W·N = {}, cosθi = {}", n(wn), n(r.cos_i))
+    } else {
+        t!(
+            "diagram-step-wn-flipped",
+            given = n(wn),
+            wn = n(-wn),
+            cos = n(r.cos_i)
+        )
+    }
 }
 
 /// sinθi, from the kernel's cosθi.
@@ -211,8 +222,8 @@ fn squared(r: &Refraction<f64>) -> String {
     format!(
         // untranslated: a formula with numbers.
         "(1 − {}²)·{}² = {} = 1 − cos²θt",
-        n(cos_i),
-        n(mu),
+        term(cos_i),
+        term(mu),
         n((1.0 - cos_i * cos_i) * mu * mu)
     )
 }

@@ -175,6 +175,6 @@ fn the_fresnel_tool_and_the_checks_write_the_schools_notation() {
     let snell = in_each(&locales, || t!("readouts-check-snell"));
     assert_eq!(
         snell,
-        ["eq.10", "Gl. 10", "ec. 10", "éq. 10", "eq. 10", "ур. 10"]
+        ["eq. 10", "Gl. 10", "ec. 10", "éq. 10", "eq. 10", "ур. 10"]
     );
 }

@@ -23,7 +23,33 @@ fn size_text(bytes: u64) -> String {
 /// [`io::ErrorKind::FileTooLarge`], the message giving the limit), or is not UTF-8.
 pub fn read_capped(path: &Path, limit: u64, what: &str) -> io::Result<String> {
     let bytes = read_capped_bytes(path, limit, what)?;
-    String::from_utf8(bytes).map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))
+    String::from_utf8(bytes).map_err(|e| {
+        let message = not_text(e.as_bytes(), e.utf8_error().valid_up_to(), what);
+        io::Error::new(io::ErrorKind::InvalidData, message)
+    })
+}
+
+/// Why `bytes` (UTF-8 only up to `valid_up_to`) are no text `what` can be: the kind of file
+/// they are where their first bytes tell it (an image named `.json`, say), else where the
+/// first byte that is not UTF-8 lies.
+fn not_text(bytes: &[u8], valid_up_to: usize, what: &str) -> String {
+    const KINDS: [(&[u8], &str); 6] = [
+        (b"\x89PNG", "a PNG image"),
+        (b"GIF8", "a GIF image"),
+        (b"\xFF\xD8\xFF", "a JPEG image"),
+        (b"%PDF", "a PDF document"),
+        (b"PK\x03\x04", "a ZIP archive"),
+        (b"\x7FELF", "a program"),
+    ];
+    if let Some((_, kind)) = KINDS.iter().find(|(magic, _)| bytes.starts_with(magic)) {
+        return format!("this is {kind}, not text: {what} is UTF-8 text");
+    }
+    let before = core::str::from_utf8(&bytes[..valid_up_to]).unwrap_or_default();
+    let line = before.matches('\n').count() + 1;
+    format!(
+        "this is not UTF-8 text (byte {} on line {line} is not): {what} is UTF-8 text",
+        valid_up_to + 1
+    )
 }
 
 /// The bytes of the file at `path`, as [`read_capped`] reads them but without asking for UTF-8,
@@ -51,6 +77,26 @@ pub fn read_capped_bytes(path: &Path, limit: u64, what: &str) -> io::Result<Vec<
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_file_that_is_no_text_is_named_for_what_it_is() {
+        let dir = tempfile::tempdir().unwrap();
+        let png = dir.path().join("picture.json");
+        std::fs::write(&png, b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR").unwrap();
+        let err = read_capped(&png, 1000, "a state file").unwrap_err();
+        assert_eq!(err.kind(), io::ErrorKind::InvalidData);
+        assert_eq!(
+            err.to_string(),
+            "this is a PNG image, not text: a state file is UTF-8 text"
+        );
+        let latin = dir.path().join("latin1.json");
+        std::fs::write(&latin, b"{\n\"w\": \"\xE9\"}").unwrap();
+        let err = read_capped(&latin, 1000, "a state file").unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "this is not UTF-8 text (byte 9 on line 2 is not): a state file is UTF-8 text"
+        );
+    }
 
     #[test]
     fn a_file_over_the_cap_is_refused_and_an_endless_one_ends() {

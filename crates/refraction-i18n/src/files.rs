@@ -6,13 +6,15 @@ use crate::Locale;
 /// about: the window, its tools and panels (`explorer`), what is drawn on the diagram, the
 /// scenes and the plots (`diagram`), Check my T and its verdicts (`check`), files, saving and
 /// exporting (`files`), and a whole log judged in the window: opening it, its diagnosis, its
-/// failure map and its failing lines saved as tests (`logs`).
-pub const FILES: [&str; 5] = [
+/// failure map and its failing lines saved as tests (`logs`), and lesson decks: the tool that
+/// builds one, stepping through it, its notes and handout, the built-in decks (`decks`).
+pub const FILES: [&str; 6] = [
     "explorer.ftl",
     "diagram.ftl",
     "check.ftl",
     "files.ftl",
     "logs.ftl",
+    "decks.ftl",
 ];
 
 /// One language's files, in the order of [`FILES`].
@@ -24,19 +26,20 @@ macro_rules! folder {
             include_str!(concat!("../locales/", $code, "/check.ftl")),
             include_str!(concat!("../locales/", $code, "/files.ftl")),
             include_str!(concat!("../locales/", $code, "/logs.ftl")),
+            include_str!(concat!("../locales/", $code, "/decks.ftl")),
         ]
     };
 }
 
-const EN: [&str; 5] = folder!("en");
-const DE: [&str; 5] = folder!("de");
-const ES: [&str; 5] = folder!("es");
-const FR: [&str; 5] = folder!("fr");
-const PT_BR: [&str; 5] = folder!("pt-BR");
-const RU: [&str; 5] = folder!("ru");
+const EN: [&str; 6] = folder!("en");
+const DE: [&str; 6] = folder!("de");
+const ES: [&str; 6] = folder!("es");
+const FR: [&str; 6] = folder!("fr");
+const PT_BR: [&str; 6] = folder!("pt-BR");
+const RU: [&str; 6] = folder!("ru");
 
 /// The text of `locale`'s files, in the order of [`FILES`].
-pub(crate) fn sources(locale: Locale) -> &'static [&'static str; 5] {
+pub(crate) fn sources(locale: Locale) -> &'static [&'static str; 6] {
     match locale {
         Locale::En => &EN,
         Locale::De => &DE,

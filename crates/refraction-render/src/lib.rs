@@ -1,9 +1,10 @@
 //! The diagram off screen: a PNG of [`Diagram::primitives`] drawn with tiny-skia, labels in
 //! egui's own font ([`text`]); the same primitives as SVG ([`svg`]); animations as GIF
-//! ([`animation`]); every file written atomically ([`refraction_files::write_atomically`]).
+//! ([`animation`]); a lesson's handout as PDF ([`handout`]); every file written atomically ([`refraction_files::write_atomically`]).
 
 pub mod animation;
 pub mod format;
+pub mod handout;
 pub mod svg;
 pub mod text;
 
@@ -57,6 +58,9 @@ pub enum RenderError {
     /// An animation's frames or rate are outside their limits (the message says which).
     #[error("{0}")]
     BadAnimation(String),
+    /// A handout's page could not be turned into PDF; the converter's message.
+    #[error("cannot write the PDF: {0}")]
+    Pdf(String),
     /// The work was cancelled before it was done; nothing was written.
     #[error("cancelled: nothing was written")]
     Cancelled,

@@ -8,7 +8,9 @@
 //! one object to recolour in a slide, with the PNG's dash pattern exactly. Labels become
 //! `<text>` in the PNG's font (egui's Ubuntu Light) and size, one `<tspan>` per line at the
 //! baselines the PNG uses, kerning and ligatures off because the PNG places glyphs by their
-//! advance widths alone; their background boxes are paths behind them.
+//! advance widths alone, and each line's `textLength` the width it has in that font, so that a
+//! viewer without Ubuntu Light squeezes or spreads its own font to the same width and the text
+//! stays inside its box; their background boxes are paths behind them.
 
 use glam::Vec2;
 
@@ -144,8 +146,19 @@ fn text(out: &mut String, face: &Typeface, label: &Label) {
     let (ascent, line_height) = (face.ascent(label.size), face.line_height(label.size));
     for (row, line) in label.text.lines().enumerate() {
         let baseline = top_left.y + ascent + row as f32 * line_height;
+        // The line's width in the PNG's font: a viewer without that font fits its own to it,
+        // so the text stays inside its box.
+        let width = face.width(line, label.size);
+        let fitted = if line.trim().is_empty() || width <= 0.0 {
+            String::new()
+        } else {
+            format!(
+                r#" textLength="{}" lengthAdjust="spacingAndGlyphs""#,
+                number(width)
+            )
+        };
         out.push_str(&format!(
-            r#"<tspan x="{}" y="{}">{}</tspan>"#,
+            r#"<tspan x="{}" y="{}"{fitted}>{}</tspan>"#,
             number(top_left.x),
             number(baseline),
             escape(line)
@@ -238,12 +251,21 @@ pub fn document(
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" \
          width=\"{width}\" height=\"{height}\" viewBox=\"0 0 {width} {height}\">\n"
     );
-    let mut next = 0;
-    while next < primitives.len() {
-        next = draw_group(&mut out, &face, &primitives, next);
-    }
+    out.push_str(&elements(&face, &primitives));
     out.push_str("</svg>\n");
     Ok(out)
+}
+
+/// The SVG elements of `primitives`, in drawing order, without a document around them: what
+/// [`document`] holds, and what a handout's page nests at its diagram's place.
+#[must_use]
+pub fn elements(face: &Typeface, primitives: &[Primitive]) -> String {
+    let mut out = String::new();
+    let mut next = 0;
+    while next < primitives.len() {
+        next = draw_group(&mut out, face, primitives, next);
+    }
+    out
 }
 
 #[cfg(test)]

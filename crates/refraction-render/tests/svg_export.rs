@@ -180,3 +180,50 @@ fn a_bad_size_is_refused_before_the_scene_is_traced() {
     let err = scene_svg(&scene, 9000, 540).unwrap_err().to_string();
     assert!(err.contains("9000×540"), "{err}");
 }
+
+/// Every text node's line widths as laid out, in document order.
+fn laid_out_widths(group: &usvg::Group, out: &mut Vec<f32>) {
+    for node in group.children() {
+        match node {
+            Node::Group(g) => laid_out_widths(g, out),
+            Node::Text(t) => out.push(t.bounding_box().width()),
+            Node::Path(_) | Node::Image(_) => {}
+        }
+    }
+}
+
+#[test]
+fn on_a_machine_without_the_font_the_labels_keep_their_widths() {
+    // Issue 22: the SVG named Ubuntu Light without carrying it, and a wider font overflowed
+    // the labels' boxes. Here the only font is a monospace one, much wider than Ubuntu Light.
+    let mut options = usvg::Options::default();
+    let db = options.fontdb_mut();
+    db.load_font_data(epaint_default_fonts::HACK_REGULAR.to_vec());
+    db.set_sans_serif_family("Hack");
+    let state = ExplorerState::default();
+    let overlay = Overlay::default();
+    let document = interface_svg(&state, &overlay, 1280, 720).unwrap();
+    let tree = usvg::Tree::from_str(&document, &options).unwrap();
+    let mut widths = Vec::new();
+    laid_out_widths(tree.root(), &mut widths);
+    let face = refraction_diagram::font::Typeface::egui_default().unwrap();
+    let size = Vec2::new(1280.0, 720.0);
+    let expected: Vec<(String, f32)> = Diagram::with_overlay(&state, size, &overlay)
+        .primitives()
+        .iter()
+        .filter_map(|p| match p {
+            Primitive::Text(l) if !l.text.trim().is_empty() => {
+                Some((l.text.clone(), face.measure(&l.text, l.size).x))
+            }
+            _ => None,
+        })
+        .collect();
+    assert_eq!(widths.len(), expected.len());
+    for (width, (text, wanted)) in widths.iter().zip(&expected) {
+        // Glyphs' ink runs a little inside or past their advances: within 4 % and 2 px.
+        assert!(
+            (width - wanted).abs() <= wanted * 0.04 + 2.0,
+            "{text:?}: {width} px wide in another font, {wanted} px in its box"
+        );
+    }
+}

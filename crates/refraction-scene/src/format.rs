@@ -84,6 +84,54 @@ pub struct LoadError {
     pub message: String,
 }
 
+impl LoadError {
+    /// An error in `text`, the contents of `file`, at the start of `span` (`None`: about the
+    /// file as a whole).
+    #[must_use]
+    pub fn in_text(
+        text: &str,
+        file: &str,
+        span: Option<Range<usize>>,
+        message: impl Into<String>,
+    ) -> Self {
+        Self {
+            file: file.to_owned(),
+            position: span.map(|s| Position::of(text, s.start)),
+            message: message.into(),
+        }
+    }
+}
+
+/// Reads the TOML `text` of `file` as `T`, with the scene format's errors: malformed TOML, a
+/// missing or unknown field and a value of the wrong type at their line and column, in the
+/// format's words. Other formats of the explorer written in TOML (lesson decks) read with it,
+/// so that every file's errors read alike.
+///
+/// # Errors
+/// The first problem the parser finds, at its position.
+pub fn parse_toml<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Result<T, LoadError> {
+    toml::from_str(text)
+        .map_err(|e| LoadError::in_text(text, file, e.span(), toml_words(e.message())))
+}
+
+/// The bytes of `file` as text, which TOML is: `what` names the kind of file in the error
+/// (`a scene file`).
+///
+/// # Errors
+/// Bytes that are not UTF-8, at the line and column of the first bad byte.
+pub fn toml_text<'a>(bytes: &'a [u8], file: &str, what: &str) -> Result<&'a str, LoadError> {
+    core::str::from_utf8(bytes).map_err(|e| {
+        let good = &bytes[..e.valid_up_to()];
+        // The prefix is valid UTF-8 by the definition of `valid_up_to`.
+        let good = core::str::from_utf8(good).unwrap_or_default();
+        LoadError {
+            file: file.to_owned(),
+            position: Some(Position::of(good, good.len())),
+            message: format!("not UTF-8 text: {what} is TOML, which is UTF-8"),
+        }
+    })
+}
+
 /// A position as it follows the file's name in a message: `:line:column`, or nothing.
 fn place(position: Option<&Position>) -> String {
     position.map_or_else(String::new, |Position { line, column }| {
@@ -101,13 +149,21 @@ fn toml_words(message: &str) -> String {
         .replace("inline table element", "inline table entry")
 }
 
-/// A problem at a place in the file: a byte range and a message.
-struct Invalid {
-    span: Range<usize>,
-    message: String,
+/// A problem at a place in a TOML file: a byte range and a message (the scene format's and
+/// the lesson decks' checks after parsing say what they find with it).
+#[derive(Debug)]
+pub struct Invalid {
+    /// The bytes the problem is about.
+    pub span: Range<usize>,
+    /// What is wrong, in words.
+    pub message: String,
 }
 
-fn invalid<T>(span: Range<usize>, message: impl Into<String>) -> Result<T, Invalid> {
+/// The problem `message` about the bytes `span`, as an error.
+///
+/// # Errors
+/// Always: it is the error.
+pub fn invalid<T>(span: Range<usize>, message: impl Into<String>) -> Result<T, Invalid> {
     Err(Invalid {
         span,
         message: message.into(),
@@ -704,14 +760,8 @@ impl Scene {
     /// (see [`MAX_COORDINATE`], [`MIN_SIZE`]), too many shapes or points ([`MAX_SHAPES`],
     /// [`MAX_POINTS`]), or a polygon that crosses itself.
     pub fn from_toml(text: &str, file: &str, name: &str) -> Result<Self, LoadError> {
-        let fail = |span: Option<Range<usize>>, message: String| LoadError {
-            file: file.to_owned(),
-            position: span.map(|s| Position::of(text, s.start)),
-            message,
-        };
-        let parsed: SceneFile =
-            toml::from_str(text).map_err(|e| fail(e.span(), toml_words(e.message())))?;
-        build(parsed, name).map_err(|e| fail(Some(e.span), e.message))
+        let parsed: SceneFile = parse_toml(text, file)?;
+        build(parsed, name).map_err(|e| LoadError::in_text(text, file, Some(e.span), e.message))
     }
 
     /// [`Self::from_toml`] of the bytes of a file, which must be UTF-8.
@@ -720,17 +770,7 @@ impl Scene {
     /// Bytes that are not UTF-8 (at the line and column of the first bad byte), or any error
     /// of [`Self::from_toml`].
     pub fn from_bytes(bytes: &[u8], file: &str, name: &str) -> Result<Self, LoadError> {
-        let text = core::str::from_utf8(bytes).map_err(|e| {
-            let good = &bytes[..e.valid_up_to()];
-            // The prefix is valid UTF-8 by the definition of `valid_up_to`.
-            let good = core::str::from_utf8(good).unwrap_or_default();
-            LoadError {
-                file: file.to_owned(),
-                position: Some(Position::of(good, good.len())),
-                message: "not UTF-8 text: a scene file is TOML, which is UTF-8".to_owned(),
-            }
-        })?;
-        Self::from_toml(text, file, name)
+        Self::from_toml(toml_text(bytes, file, "a scene file")?, file, name)
     }
 
     /// The scene built into the binary under `name` (see [`super::catalogue`]).

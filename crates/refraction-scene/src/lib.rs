@@ -30,7 +30,8 @@ pub use bounds::Bounds;
 pub use effects::{Effects, EffectsError};
 pub use embedded::{DEFAULT_SCENE, SceneInfo, catalogue};
 pub use format::{
-    LoadError, MAX_COORDINATE, MAX_POINTS, MAX_SCENE_FILE_BYTES, MAX_SHAPES, MIN_SIZE, Position,
+    Invalid, LoadError, MAX_COORDINATE, MAX_POINTS, MAX_SCENE_FILE_BYTES, MAX_SHAPES, MIN_SIZE,
+    Position, invalid, parse_toml, toml_text,
 };
 pub use fresnel::Fresnel;
 pub use medium::{Dispersion, Medium, REFERENCE_WAVELENGTH_NM, WHITE_WAVELENGTHS_NM};

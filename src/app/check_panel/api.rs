@@ -71,11 +71,13 @@ fn width(kind: Kind) -> f32 {
     }
 }
 
-/// A record's value as the text a field shows, every digit kept.
+/// A record's value as the text a field shows, every digit kept (and no "-0": a flipped zero
+/// is 0 to the reader and to every API).
 fn value_text(value: &Value) -> String {
+    let digits = |x: f64| if x == 0.0 { 0.0 } else { x }.to_string();
     match value {
-        Value::Number(x) => x.to_string(),
-        Value::Vector(v) => format!("{}, {}, {}", v[0], v[1], v[2]),
+        Value::Number(x) => digits(*x),
+        Value::Vector(v) => format!("{}, {}, {}", digits(v[0]), digits(v[1]), digits(v[2])),
         Value::Flag(b) => b.to_string(),
         Value::Null => "null".to_owned(),
         Value::Label(text) => text.clone(),
@@ -377,6 +379,15 @@ impl ApiFields {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_prefilled_field_never_shows_minus_zero() {
+        assert_eq!(
+            value_text(&Value::Vector([-0.0, -1.0, 0.25])),
+            "0, -1, 0.25"
+        );
+        assert_eq!(value_text(&Value::Number(-0.0)), "0");
+    }
 
     #[test]
     fn indices_follow_the_truth_when_it_agrees() {

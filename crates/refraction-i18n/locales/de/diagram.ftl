@@ -148,6 +148,7 @@ diagram-eq-so = { $given }, also { $then }
 diagram-eq-negative-root = √({ $k }) einer negativen Zahl: kein reelles b (Totalreflexion)
 diagram-eq-or = oder
 diagram-eq-outward-normal-bug = mit N wie gegeben b = { $b }: die falsche Lösung, T läuft zurück (der Fehler mit äußerer Normale); der Kernel nimmt −N und erhält b = { $kernel_b } für N
+diagram-step-wn-flipped = W·N = { $given }: N zeigt vom Strahl weg, daher verwendet der Kernel −N: wn = { $wn }, cosθi = { $cos }
 diagram-eq-no-root = keine reelle Lösung zur Auswahl
 diagram-eq-no-theta-t = { $given }, also wäre sinθt = { $sin_t } > 1: es gibt keinen Winkel θt
 diagram-eq-with-chosen = { $lhs } = { $rhs } mit dem gewählten (a, b)

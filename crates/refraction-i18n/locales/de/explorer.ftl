@@ -50,6 +50,8 @@ canvas-hint-index = ↑/↓ oder +/− ändern den Brechungsindex um 0,01 (Umsch
 
 controls-lesson = Lektion
 controls-lesson-preset = Lektionsvorgabe
+controls-lesson-own = Eigener Fall
+controls-lesson-changed = { $lesson }, geändert
 controls-reset = Zurücksetzen
 controls-reset-hover = Zurück zum Anfang der gewählten Lektion
 controls-incidence = θi (Grad)

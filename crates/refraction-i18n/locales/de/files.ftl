@@ -8,6 +8,7 @@ files-wrong-extension = { $path }: { $kind ->
         [state] Ein gespeicherter Zustand (JSON)
         [png] Ein PNG-Bild
         [scene] Eine Szene (TOML)
+        [deck] Eine Unterrichtsfolge (TOML)
         [gif] Eine GIF-Animation
        *[svg] Ein SVG-Bild
     } wird als { $extension }-Datei geschrieben; bitte einen Namen mit der Endung { $extension } wählen
@@ -16,6 +17,7 @@ files-holds-another-kind = { $path } enthält { $found ->
         [state] einen gespeicherten Zustand (JSON)
         [png] ein PNG-Bild
         [scene] eine Szene (TOML)
+        [deck] eine Unterrichtsfolge (TOML)
         [gif] eine GIF-Animation
         [svg] ein SVG-Bild
        *[other] etwas anderes
@@ -23,6 +25,7 @@ files-holds-another-kind = { $path } enthält { $found ->
         [state] keinen gespeicherten Zustand (JSON)
         [png] kein PNG-Bild
         [scene] keine Szene (TOML)
+        [deck] keine Unterrichtsfolge (TOML)
         [gif] keine GIF-Animation
        *[svg] kein SVG-Bild
     }: Die Datei bleibt unverändert; bitte einen anderen Namen wählen

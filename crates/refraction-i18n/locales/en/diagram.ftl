@@ -151,6 +151,7 @@ diagram-eq-so = { $given }, so { $then }
 diagram-eq-negative-root = √({ $k }) of a negative number: no real b (total internal reflection)
 diagram-eq-or = or
 diagram-eq-outward-normal-bug = with N as given b = { $b }: the wrong root, T goes back (the outward-normal bug); the kernel uses −N and gets b = { $kernel_b } for N
+diagram-step-wn-flipped = W·N = { $given }: N faces away from the ray, so the kernel uses −N: wn = { $wn }, cosθi = { $cos }
 diagram-eq-no-root = no real root to choose
 diagram-eq-no-theta-t = { $given }, so sinθt would be { $sin_t } > 1: no angle θt exists
 diagram-eq-with-chosen = { $lhs } = { $rhs } with the chosen (a, b)

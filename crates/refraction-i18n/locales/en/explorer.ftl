@@ -50,6 +50,8 @@ canvas-hint-index = ↑/↓ or +/− change the index by 0.01 (Shift: 0.001) · 
 
 controls-lesson = Lesson
 controls-lesson-preset = Lesson preset
+controls-lesson-own = Your own case
+controls-lesson-changed = { $lesson }, changed
 controls-reset = Reset
 controls-reset-hover = Back to the start of the lesson chosen
 controls-incidence = θi (degrees)
@@ -90,7 +92,7 @@ readouts-roots = roots b = { $roots } (the candidates' b for this a)
 readouts-candidates = The four candidates
 readouts-candidate = candidate
 # The checks' column headings: squared Snell's law (the source's eq. 10), the side of the surface T is on, the way T bends.
-readouts-check-snell = eq.10
+readouts-check-snell = eq. 10
 readouts-check-side = side
 readouts-check-bend = bend
 readouts-no-candidates = No candidates: k < 0, so b has no real roots and no T exists.

@@ -3,12 +3,13 @@
 # { $path } is a file's path as the system writes it; { $reason } is the reader's or writer's
 # own explanation, which may stay in English.
 
-## What a file holds ($kind and $found: state, png, svg, scene, gif; $found also: other)
+## What a file holds ($kind and $found: state, png, svg, scene, deck, gif; $found also: other)
 
 files-wrong-extension = { $path }: { $kind ->
         [state] a saved state (JSON)
         [png] a PNG image
         [scene] a scene (TOML)
+        [deck] a lesson deck (TOML)
         [gif] a GIF animation
        *[svg] an SVG image
     } is written to a { $extension } file; choose a name ending in { $extension }
@@ -17,6 +18,7 @@ files-holds-another-kind = { $path } holds { $found ->
         [state] a saved state (JSON)
         [png] a PNG image
         [scene] a scene (TOML)
+        [deck] a lesson deck (TOML)
         [gif] a GIF animation
         [svg] an SVG image
        *[other] something else
@@ -24,6 +26,7 @@ files-holds-another-kind = { $path } holds { $found ->
         [state] a saved state (JSON)
         [png] a PNG image
         [scene] a scene (TOML)
+        [deck] a lesson deck (TOML)
         [gif] a GIF animation
        *[svg] an SVG image
     }: it is left as it is; choose another name

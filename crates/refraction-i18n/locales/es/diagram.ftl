@@ -148,6 +148,7 @@ diagram-eq-so = { $given }, así que { $then }
 diagram-eq-negative-root = √({ $k }) de un número negativo: no hay b real (reflexión total)
 diagram-eq-or = o
 diagram-eq-outward-normal-bug = con N tal como se da, b = { $b }: la raíz equivocada, T vuelve atrás (el fallo de la normal exterior); el kernel usa −N y obtiene b = { $kernel_b } para N
+diagram-step-wn-flipped = W·N = { $given }: N apunta en sentido contrario al rayo, así que el kernel usa −N: wn = { $wn }, cosθi = { $cos }
 diagram-eq-no-root = no hay raíz real que elegir
 diagram-eq-no-theta-t = { $given }, así que senθt sería { $sin_t } > 1: no existe ningún ángulo θt
 diagram-eq-with-chosen = { $lhs } = { $rhs } con el (a, b) elegido

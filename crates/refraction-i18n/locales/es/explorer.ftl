@@ -50,6 +50,8 @@ canvas-hint-index = ↑/↓ o +/− cambian el índice en 0,01 (Mayús: 0,001) �
 
 controls-lesson = Lección
 controls-lesson-preset = Lección predefinida
+controls-lesson-own = Caso propio
+controls-lesson-changed = { $lesson }, modificado
 controls-reset = Restablecer
 controls-reset-hover = Volver al inicio de la lección elegida
 controls-incidence = θi (grados)

@@ -8,6 +8,7 @@ files-wrong-extension = { $path }: { $kind ->
         [state] un estado guardado (JSON)
         [png] una imagen PNG
         [scene] una escena (TOML)
+        [deck] una secuencia didáctica (TOML)
         [gif] una animación GIF
        *[svg] una imagen SVG
     } se escribe en un archivo { $extension }; elige un nombre terminado en { $extension }
@@ -16,6 +17,7 @@ files-holds-another-kind = { $path } contiene { $found ->
         [state] un estado guardado (JSON)
         [png] una imagen PNG
         [scene] una escena (TOML)
+        [deck] una secuencia didáctica (TOML)
         [gif] una animación GIF
         [svg] una imagen SVG
        *[other] otra cosa
@@ -23,6 +25,7 @@ files-holds-another-kind = { $path } contiene { $found ->
         [state] un estado guardado (JSON)
         [png] una imagen PNG
         [scene] una escena (TOML)
+        [deck] una secuencia didáctica (TOML)
         [gif] una animación GIF
        *[svg] una imagen SVG
     }: se deja como está; elige otro nombre

@@ -148,6 +148,7 @@ diagram-eq-so = { $given }, donc { $then }
 diagram-eq-negative-root = √({ $k }) d’un nombre négatif : pas de b réel (réflexion totale)
 diagram-eq-or = ou
 diagram-eq-outward-normal-bug = avec N tel quel, b = { $b } : la mauvaise racine, T repart en arrière (le bogue de la normale extérieure) ; le noyau utilise −N et obtient b = { $kernel_b } pour N
+diagram-step-wn-flipped = W·N = { $given } : N pointe à l’opposé du rayon, donc le noyau utilise −N : wn = { $wn }, cosθi = { $cos }
 diagram-eq-no-root = aucune racine réelle à choisir
 diagram-eq-no-theta-t = { $given }, donc sinθt vaudrait { $sin_t } > 1 : aucun angle θt n’existe
 diagram-eq-with-chosen = { $lhs } = { $rhs } avec le (a, b) choisi

@@ -50,6 +50,8 @@ canvas-hint-index = ↑/↓ ou +/− changent l’indice de 0,01 (Maj : 0,001) 
 
 controls-lesson = Leçon
 controls-lesson-preset = Préréglage de la leçon
+controls-lesson-own = Cas personnel
+controls-lesson-changed = { $lesson }, modifié
 controls-reset = Réinitialiser
 controls-reset-hover = Revenir au début de la leçon choisie
 controls-incidence = θi (degrés)

@@ -8,6 +8,7 @@ files-wrong-extension = { $path } : { $kind ->
         [state] un état enregistré (JSON)
         [png] une image PNG
         [scene] une scène (TOML)
+        [deck] une séquence pédagogique (TOML)
         [gif] une animation GIF
        *[svg] une image SVG
     } s’écrit dans un fichier { $extension } ; choisis un nom se terminant par { $extension }
@@ -16,6 +17,7 @@ files-holds-another-kind = { $path } contient { $found ->
         [state] un état enregistré (JSON)
         [png] une image PNG
         [scene] une scène (TOML)
+        [deck] une séquence pédagogique (TOML)
         [gif] une animation GIF
         [svg] une image SVG
        *[other] autre chose
@@ -23,6 +25,7 @@ files-holds-another-kind = { $path } contient { $found ->
         [state] un état enregistré (JSON)
         [png] une image PNG
         [scene] une scène (TOML)
+        [deck] une séquence pédagogique (TOML)
         [gif] une animation GIF
        *[svg] une image SVG
     } : le fichier reste inchangé ; choisis un autre nom

@@ -148,6 +148,7 @@ diagram-eq-so = { $given }, então { $then }
 diagram-eq-negative-root = √({ $k }) de um número negativo: não há b real (reflexão total)
 diagram-eq-or = ou
 diagram-eq-outward-normal-bug = com N como dada, b = { $b }: a raiz errada, T volta para trás (o defeito da normal externa); o kernel usa −N e obtém b = { $kernel_b } para N
+diagram-step-wn-flipped = W·N = { $given }: N aponta para longe do raio, então o kernel usa −N: wn = { $wn }, cosθi = { $cos }
 diagram-eq-no-root = nenhuma raiz real para escolher
 diagram-eq-no-theta-t = { $given }, então senθt seria { $sin_t } > 1: não existe ângulo θt
 diagram-eq-with-chosen = { $lhs } = { $rhs } com o (a, b) escolhido

@@ -50,6 +50,8 @@ canvas-hint-index = ↑/↓ ou +/− mudam o índice em 0,01 (Shift: 0,001) · T
 
 controls-lesson = Aula
 controls-lesson-preset = Predefinição da aula
+controls-lesson-own = Caso próprio
+controls-lesson-changed = { $lesson }, alterado
 controls-reset = Reiniciar
 controls-reset-hover = Voltar ao início da aula escolhida
 controls-incidence = θi (graus)

@@ -8,6 +8,7 @@ files-wrong-extension = { $path }: { $kind ->
         [state] um estado salvo (JSON) é gravado
         [png] uma imagem PNG é gravada
         [scene] uma cena (TOML) é gravada
+        [deck] uma sequência didática (TOML) é gravada
         [gif] uma animação GIF é gravada
        *[svg] uma imagem SVG é gravada
     } em um arquivo { $extension }; escolha um nome terminado em { $extension }
@@ -16,6 +17,7 @@ files-holds-another-kind = { $path } contém { $found ->
         [state] um estado salvo (JSON)
         [png] uma imagem PNG
         [scene] uma cena (TOML)
+        [deck] uma sequência didática (TOML)
         [gif] uma animação GIF
         [svg] uma imagem SVG
        *[other] outra coisa
@@ -23,6 +25,7 @@ files-holds-another-kind = { $path } contém { $found ->
         [state] um estado salvo (JSON)
         [png] uma imagem PNG
         [scene] uma cena (TOML)
+        [deck] uma sequência didática (TOML)
         [gif] uma animação GIF
        *[svg] uma imagem SVG
     }: o arquivo fica como está; escolha outro nome

@@ -166,6 +166,7 @@ diagram-eq-so = { $given }, поэтому { $then }
 diagram-eq-negative-root = √({ $k }) из отрицательного числа: нет действительного b (полное внутреннее отражение)
 diagram-eq-or = или
 diagram-eq-outward-normal-bug = при N как задано b = { $b }: неверный корень, T идёт назад (ошибка внешней нормали); ядро берёт −N и получает b = { $kernel_b } для N
+diagram-step-wn-flipped = W·N = { $given }: N направлена от луча, поэтому ядро использует −N: wn = { $wn }, cosθi = { $cos }
 diagram-eq-no-root = нет действительного корня для выбора
 diagram-eq-no-theta-t = { $given }, поэтому sinθt был бы { $sin_t } > 1: угла θt не существует
 diagram-eq-with-chosen = { $lhs } = { $rhs } при выбранных (a, b)

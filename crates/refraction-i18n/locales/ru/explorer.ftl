@@ -50,6 +50,8 @@ canvas-hint-index = ↑/↓ или +/− меняют показатель пр�
 
 controls-lesson = Урок
 controls-lesson-preset = Предустановка урока
+controls-lesson-own = Свой случай
+controls-lesson-changed = { $lesson }, изменено
 controls-reset = Сбросить
 controls-reset-hover = Вернуться к началу выбранного урока
 controls-incidence = θi (градусы)

@@ -8,6 +8,7 @@ files-wrong-extension = { $path }: { $kind ->
         [state] сохранённое состояние (JSON)
         [png] изображение PNG
         [scene] сцена (TOML)
+        [deck] сценарий урока (TOML)
         [gif] анимация GIF
        *[svg] изображение SVG
     } записывается в файл { $extension }; выберите имя с расширением { $extension }
@@ -16,6 +17,7 @@ files-holds-another-kind = { $path } содержит { $found ->
         [state] сохранённое состояние (JSON)
         [png] изображение PNG
         [scene] сцену (TOML)
+        [deck] сценарий урока (TOML)
         [gif] анимацию GIF
         [svg] изображение SVG
        *[other] что-то другое
@@ -23,6 +25,7 @@ files-holds-another-kind = { $path } содержит { $found ->
         [state] сохранённое состояние (JSON)
         [png] изображение PNG
         [scene] сцену (TOML)
+        [deck] сценарий урока (TOML)
         [gif] анимацию GIF
        *[svg] изображение SVG
     }: файл оставлен без изменений; выберите другое имя

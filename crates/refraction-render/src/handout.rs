@@ -1,0 +1,183 @@
+//! A handout as PDF: one landscape A4 page per lesson step, with its title, its diagram, its
+//! question and its notes.
+//!
+//! Each page is an SVG document made of the same elements as the SVG export ([`svg`]): the
+//! diagram's primitives nested at their place, the page's words as labels in the diagram's
+//! font. svg2pdf turns each page into a PDF form (its labels as text, in the embedded font, so
+//! that they can be selected, searched and extracted), and the PDF writer svg2pdf uses puts
+//! the forms on pages. One drawing path, then: what the window shows, the SVG export and the
+//! handout all come from [`Primitive`]s.
+
+use std::collections::HashMap;
+use std::sync::Arc;
+
+use glam::Vec2;
+use pdf_writer::{Content, Finish as _, Name, Pdf, Rect, Ref, TextStr};
+use svg2pdf::usvg;
+
+use refraction_diagram::Primitive;
+use refraction_diagram::font::Typeface;
+use refraction_diagram::geometry::Colour;
+use refraction_diagram::placer::wrap;
+use refraction_diagram::shapes::{Align, Label};
+
+use crate::{RenderError, svg};
+
+/// A page's size in PDF points: A4, landscape.
+pub const PAGE: Vec2 = Vec2::new(842.0, 595.0);
+
+/// The canvas the diagram is drawn on, in pixels (4:3, the page's diagram box scaled up, so
+/// that its labels are the size the window gives them).
+pub const CANVAS: Vec2 = Vec2::new(1040.0, 780.0);
+
+/// The page's margin, in points.
+const MARGIN: f32 = 36.0;
+
+/// Where the diagram sits on the page: its top left corner and width (its height follows
+/// [`CANVAS`]'s shape).
+const DIAGRAM_AT: Vec2 = Vec2::new(MARGIN, 96.0);
+const DIAGRAM_WIDTH: f32 = 500.0;
+
+/// The sizes of the page's words, in points.
+const HEADING_SIZE: f32 = 11.0;
+const TITLE_SIZE: f32 = 22.0;
+const TEXT_SIZE: f32 = 12.0;
+
+/// The ink of the page's words.
+const INK: Colour = Colour::hex(0x1a1a1a);
+
+/// One page: the words, and the diagram's primitives for a canvas of [`CANVAS`].
+pub struct Page {
+    /// The line above the title: the deck and where the step is (`Snell's law · 2 / 5`).
+    pub heading: String,
+    /// The step's title.
+    pub title: String,
+    /// The question for the class, with its label, if any.
+    pub question: Option<(String, String)>,
+    /// The teacher's notes, with their label.
+    pub notes: (String, String),
+    /// The diagram, drawn for [`CANVAS`].
+    pub diagram: Vec<Primitive>,
+}
+
+/// A label at `at` (its top left corner) in the page's ink.
+fn words(text: String, at: Vec2, size: f32) -> Label {
+    Label {
+        text,
+        at,
+        h: Align::Start,
+        v: Align::Start,
+        size,
+        colour: INK,
+        background: None,
+    }
+}
+
+/// The page's words as labels: the heading and title across the top, the question and the
+/// notes in the column beside the diagram, wrapped to it.
+fn page_words(face: &Typeface, page: &Page) -> Vec<Primitive> {
+    let column_x = DIAGRAM_AT.x + DIAGRAM_WIDTH + 20.0;
+    let column = PAGE.x - MARGIN - column_x;
+    let mut labels = vec![
+        words(
+            page.heading.clone(),
+            Vec2::new(MARGIN, MARGIN),
+            HEADING_SIZE,
+        ),
+        words(
+            wrap(face, &page.title, TITLE_SIZE, PAGE.x - 2.0 * MARGIN),
+            Vec2::new(MARGIN, MARGIN + 18.0),
+            TITLE_SIZE,
+        ),
+    ];
+    let mut y = DIAGRAM_AT.y;
+    let sections = page.question.iter().chain(core::iter::once(&page.notes));
+    for (label, text) in sections.filter(|(_, text)| !text.trim().is_empty()) {
+        labels.push(words(label.clone(), Vec2::new(column_x, y), TEXT_SIZE));
+        y += face.line_height(TEXT_SIZE) * 1.3;
+        let body = wrap(face, text, TEXT_SIZE, column);
+        let lines = body.lines().count() as f32;
+        labels.push(words(body, Vec2::new(column_x, y), TEXT_SIZE));
+        y += face.line_height(TEXT_SIZE) * (lines + 1.0);
+    }
+    labels.into_iter().map(Primitive::Text).collect()
+}
+
+/// The page as an SVG document, [`PAGE`] points wide and high.
+fn page_svg(face: &Typeface, page: &Page) -> String {
+    let height = DIAGRAM_WIDTH * CANVAS.y / CANVAS.x;
+    format!(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" \
+         width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">\n\
+         <rect width=\"{w}\" height=\"{h}\" fill=\"#ffffff\"/>\n{words}\
+         <svg x=\"{x}\" y=\"{y}\" width=\"{dw}\" height=\"{height}\" viewBox=\"0 0 {cw} {ch}\">\n\
+         {diagram}</svg>\n</svg>\n",
+        w = PAGE.x,
+        h = PAGE.y,
+        words = svg::elements(face, &page_words(face, page)),
+        x = DIAGRAM_AT.x,
+        y = DIAGRAM_AT.y,
+        dw = DIAGRAM_WIDTH,
+        cw = CANVAS.x,
+        ch = CANVAS.y,
+        diagram = svg::elements(face, &page.diagram),
+    )
+}
+
+/// The fonts the pages are set in: the diagram's own (egui's Ubuntu Light), for every family
+/// the SVG names.
+fn fonts() -> Arc<usvg::fontdb::Database> {
+    let mut fonts = usvg::fontdb::Database::new();
+    fonts.load_font_data(epaint_default_fonts::UBUNTU_LIGHT.to_vec());
+    fonts.set_sans_serif_family("Ubuntu");
+    Arc::new(fonts)
+}
+
+/// `pages` as one PDF document titled `title`.
+///
+/// # Errors
+/// The embedded font cannot be read, or a page cannot be converted (a broken build: the pages
+/// are the project's own SVG).
+pub fn pdf(title: &str, pages: &[Page]) -> Result<Vec<u8>, RenderError> {
+    let face = Typeface::egui_default()?;
+    let mut options = usvg::Options {
+        fontdb: fonts(),
+        ..usvg::Options::default()
+    };
+    options.font_family = "Ubuntu".to_owned();
+    let mut alloc = Ref::new(1);
+    let (catalog, page_tree) = (alloc.bump(), alloc.bump());
+    let mut pdf = Pdf::new();
+    let mut kids = Vec::new();
+    for page in pages {
+        let tree = usvg::Tree::from_str(&page_svg(&face, page), &options)
+            .map_err(|e| RenderError::Pdf(e.to_string()))?;
+        let (chunk, form) = svg2pdf::to_chunk(&tree, svg2pdf::ConversionOptions::default())
+            .map_err(|e| RenderError::Pdf(e.to_string()))?;
+        let mut renumbered = HashMap::new();
+        let chunk = chunk.renumber(|old| *renumbered.entry(old).or_insert_with(|| alloc.bump()));
+        let form = renumbered.get(&form).copied().unwrap_or(form);
+        let (id, contents) = (alloc.bump(), alloc.bump());
+        let mut written = pdf.page(id);
+        written
+            .media_box(Rect::new(0.0, 0.0, PAGE.x, PAGE.y))
+            .parent(page_tree)
+            .contents(contents);
+        written.resources().x_objects().pair(Name(b"Page"), form);
+        written.finish();
+        let mut content = Content::new();
+        content
+            .transform([PAGE.x, 0.0, 0.0, PAGE.y, 0.0, 0.0])
+            .x_object(Name(b"Page"));
+        pdf.stream(contents, &content.finish());
+        pdf.extend(&chunk);
+        kids.push(id);
+    }
+    pdf.catalog(catalog).pages(page_tree);
+    pdf.pages(page_tree).count(kids.len() as i32).kids(kids);
+    pdf.document_info(alloc.bump())
+        .title(TextStr(title))
+        // untranslated: the producer's name in the file's metadata.
+        .producer(TextStr("refraction-explorer (svg2pdf)"));
+    Ok(pdf.finish())
+}

@@ -1,0 +1,158 @@
+//! `lessons` and `render --lesson`: the built-in lesson decks listed, and a deck drawn as a
+//! handout (PDF, one page per step) or as one SVG per step.
+
+use std::io::{self, Write as _};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use glam::Vec2;
+use refraction_deck::{Deck, Step, StepView, builtin};
+use refraction_diagram::{Diagram, Primitive, SceneLayout, ScenePicture};
+use refraction_explorer::app::deck::overlay_of;
+use refraction_i18n::t;
+use refraction_render::format::ImageFormat;
+use refraction_render::handout::{self, CANVAS, Page};
+use refraction_render::{check_size, svg};
+
+use super::output::printable;
+use super::{fail, output_error};
+
+/// Runs `lessons`: each built-in deck as `NAME<TAB>TITLE<TAB>STEPS`, in the language asked for.
+pub fn list() -> ExitCode {
+    let mut out = io::stdout().lock();
+    builtin::catalogue()
+        .iter()
+        .try_for_each(|info| {
+            writeln!(
+                out,
+                "{}\t{}\t{}",
+                info.name,
+                printable(&info.title),
+                info.steps
+            )
+        })
+        .and_then(|()| out.flush())
+        .map_or_else(|e| output_error("lessons", &e), |()| ExitCode::SUCCESS)
+}
+
+/// The picture of `step` of `deck` on a canvas of `size` pixels, its answer shown: the one
+/// interface with the step's effects, or its scene traced.
+///
+/// # Errors
+/// The step's scene cannot be opened.
+pub fn picture(deck: &Deck, step: &Step, size: Vec2) -> Result<Vec<Primitive>, String> {
+    match step.view {
+        StepView::One => {
+            Ok(Diagram::with_overlay(&step.state, size, &overlay_of(step)).primitives())
+        }
+        StepView::Scenes => {
+            let scene = deck.scene(step).map_err(|e| e.to_string())?;
+            let trace = scene.trace();
+            let layout = SceneLayout::new(trace.bounds, size);
+            Ok(ScenePicture::new(&scene, &trace, &layout).primitives)
+        }
+    }
+}
+
+/// Where `render --lesson` writes: a handout, or a folder of pictures.
+enum Out {
+    /// A PDF handout at this path.
+    Handout(PathBuf),
+    /// `step-01.svg`, `step-02.svg`, … in this folder.
+    Folder(PathBuf),
+}
+
+/// What `--out` asks for: a folder when it ends in `/` or is one, a handout when it ends in
+/// `.pdf`.
+fn out_of(out: &Path) -> Result<Out, String> {
+    let text = out.to_string_lossy();
+    if text.ends_with('/') || out.is_dir() {
+        return Ok(Out::Folder(out.to_path_buf()));
+    }
+    let pdf = out
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("pdf"));
+    if pdf {
+        refraction_files::check_writable(out).map_err(|e| e.to_string())?;
+        return Ok(Out::Handout(out.to_path_buf()));
+    }
+    Err(format!(
+        "--out {text}: with --lesson, give a handout's name ending in .pdf, or a folder ending \
+         in / for one SVG per step (step-01.svg, step-02.svg, …)"
+    ))
+}
+
+/// The handout's page for step `index` of `deck`.
+fn page(deck: &Deck, index: usize) -> Result<Page, String> {
+    let step = &deck.steps[index];
+    let number = t!(
+        "deck-step-number",
+        number = (index + 1).to_string(),
+        count = deck.steps.len().to_string()
+    );
+    let heading = if deck.title.is_empty() {
+        number
+    } else {
+        format!("{} · {number}", deck.title)
+    };
+    Ok(Page {
+        heading,
+        title: step.title.clone(),
+        question: step
+            .question
+            .clone()
+            .map(|q| (t!("deck-handout-question"), q)),
+        notes: (t!("deck-handout-notes"), step.notes.clone()),
+        diagram: picture(deck, step, CANVAS)?,
+    })
+}
+
+/// The handout of `deck` as PDF bytes: one page per step.
+///
+/// # Errors
+/// A step's scene cannot be opened, or a page cannot be converted.
+pub fn handout(deck: &Deck) -> Result<Vec<u8>, String> {
+    let pages = (0..deck.steps.len())
+        .map(|i| page(deck, i))
+        .collect::<Result<Vec<_>, _>>()?;
+    handout::pdf(&deck.title, &pages).map_err(|e| e.to_string())
+}
+
+/// Writes each step of `deck` as `step-01.svg`, `step-02.svg`, … in `folder` (made if it is
+/// missing), at `size` pixels.
+fn pictures(deck: &Deck, folder: &Path, (width, height): (u32, u32)) -> Result<(), String> {
+    check_size(width, height).map_err(|e| e.to_string())?;
+    std::fs::create_dir_all(folder)
+        .map_err(|e| format!("cannot make the folder {}: {e}", folder.display()))?;
+    for (i, step) in deck.steps.iter().enumerate() {
+        let path = folder.join(format!(
+            "step-{:02}.{}",
+            i + 1,
+            ImageFormat::Svg.extension()
+        ));
+        let primitives = picture(deck, step, Vec2::new(width as f32, height as f32))?;
+        let text = svg::document(width, height, |_, _| primitives).map_err(|e| e.to_string())?;
+        refraction_files::write_atomically(&path, text.as_bytes()).map_err(|e| e.to_string())?;
+    }
+    Ok(())
+}
+
+/// Runs `render --lesson NAME|FILE --out OUT`: the deck's handout (`OUT` ending in `.pdf`) or
+/// its steps as SVG pictures of `size` (`OUT` a folder). The output is checked before the deck
+/// is drawn.
+pub fn render(lesson: &str, out: &Path, size: (u32, u32)) -> ExitCode {
+    let drawn = out_of(out).and_then(|to| {
+        let deck = Deck::load(lesson).map_err(|e| e.to_string())?;
+        match to {
+            Out::Handout(path) => {
+                let bytes = handout(&deck)?;
+                refraction_files::write_atomically(&path, &bytes).map_err(|e| e.to_string())
+            }
+            Out::Folder(folder) => pictures(&deck, &folder, size),
+        }
+    });
+    match drawn {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => fail("render", &message),
+    }
+}
