@@ -79,7 +79,7 @@ for page in "$root"/usr/share/man/man1/*.1.gz; do
   [[ "$rendered" == *NAME*"$name"*SYNOPSIS* ]] || fail "man -l $name: no NAME or SYNOPSIS"
   pages=$((pages + 1))
 done
-[ "$pages" = 6 ] || fail "$pages man pages, not 6 (the program and its five commands)"
+[ "$pages" = 7 ] || fail "$pages man pages, not 7 (the program and its six commands)"
 
 bash -n "$root/usr/share/bash-completion/completions/refraction-explorer"
 [ -s "$root/usr/share/zsh/vendor-completions/_refraction-explorer" ] || fail "no zsh completion"

@@ -347,7 +347,8 @@ impl Explorer {
         match self.view {
             View::Interface => self.show_interface(ui),
             View::Scenes => {
-                if let Some(state) = self.scenes.show(ui, &self.presentation.palette()) {
+                let palette = self.presentation.palette();
+                if let Some(state) = self.scenes.show(ui, &palette, self.presentation.on) {
                     self.state = state;
                     self.view = View::Interface;
                 }

@@ -56,6 +56,9 @@ pub struct ScenesView {
     answer_hidden: bool,
     /// A lesson step is shown: its strip stands above, and the hint line is left out.
     in_lesson: bool,
+    /// In presentation, the scene's files, description and hint are shown (they start
+    /// folded away, so that the scene owns the projector).
+    more_shown: bool,
 }
 
 impl Default for ScenesView {
@@ -127,6 +130,7 @@ impl ScenesView {
             files: SceneFiles::default(),
             answer_hidden: false,
             in_lesson: false,
+            more_shown: false,
         }
     }
 
@@ -203,14 +207,21 @@ impl ScenesView {
     }
 
     /// Shows the view in `ui`: the controls strip, then the canvas. Returns the single-interface
-    /// problem of the hit point clicked, if one was.
-    pub fn show(&mut self, ui: &mut Ui, palette: &Palette) -> Option<ExplorerState> {
+    /// problem of the hit point clicked, if one was. In presentation (`presenting`) the strip
+    /// keeps to its first row (the scene, its rays, *Reset*) unless its switch unfolds the
+    /// scene's files, description and hint.
+    pub fn show(
+        &mut self,
+        ui: &mut Ui,
+        palette: &Palette,
+        presenting: bool,
+    ) -> Option<ExplorerState> {
         if let Some(done) = self.retracer.poll() {
             let shown = core::mem::replace(&mut self.trace, done);
             self.retracer.recycle(shown);
         }
         Panel::top("scene-controls").show(ui, |ui| {
-            self.controls(ui);
+            self.controls(ui, presenting);
             self.trace_status(ui);
         });
         CentralPanel::no_frame()
@@ -218,7 +229,7 @@ impl ScenesView {
             .inner
     }
 
-    fn controls(&mut self, ui: &mut Ui) {
+    fn controls(&mut self, ui: &mut Ui, presenting: bool) {
         ui.horizontal(|ui| {
             let mut picked = self.scene.name().to_owned();
             ComboBox::from_label(t!("scenes-scene"))
@@ -253,15 +264,27 @@ impl ScenesView {
             {
                 self.open(self.original.clone());
             }
+            if presenting {
+                let (arrow, words) = if self.more_shown {
+                    ("⏶", t!("scenes-less"))
+                } else {
+                    ("⏷", t!("scenes-more"))
+                };
+                if ui.button(format!("{arrow} {words}")).clicked() {
+                    self.more_shown = !self.more_shown;
+                }
+            }
         });
-        if let Some(scene) = self.files.show(ui, &self.scene) {
-            self.open(scene);
-        }
-        // One line each, whatever the language: a cut line shows its whole text on hover, and
-        // the scene keeps the window's height.
-        ui.add(egui::Label::new(scene_words::description(&self.scene)).truncate());
-        if !self.in_lesson {
-            ui.add(egui::Label::new(RichText::new(t!("scenes-hint")).weak()).truncate());
+        if !presenting || self.more_shown {
+            if let Some(scene) = self.files.show(ui, &self.scene) {
+                self.open(scene);
+            }
+            // One line each, whatever the language: a cut line shows its whole text on hover,
+            // and the scene keeps the window's height.
+            ui.add(egui::Label::new(scene_words::description(&self.scene)).truncate());
+            if !self.in_lesson {
+                ui.add(egui::Label::new(RichText::new(t!("scenes-hint")).weak()).truncate());
+            }
         }
         if let Some(error) = &self.error {
             error_label(ui, error);

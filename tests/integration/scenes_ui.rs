@@ -334,6 +334,8 @@ fn a_click_in_or_beside_the_file_dialog_never_reaches_the_scene_under_it() {
         let mut h = droplet();
         if present {
             click(&mut h, "🖵 Presentation");
+            // The scene's files fold away in presentation: unfold them.
+            click(&mut h, "⏷ Files and hint");
         }
         let scenes = h.state().scenes();
         let hits: Vec<Pos2> = scenes
@@ -391,4 +393,32 @@ fn a_click_in_or_beside_the_file_dialog_never_reaches_the_scene_under_it() {
             assert!(h.query_by_label("File name").is_none(), "the dialog closed");
         }
     }
+}
+
+#[test]
+fn in_presentation_the_scene_controls_fold_to_one_row_and_unfold_on_request() {
+    // Issue 22: at 1280×720 in presentation the controls took a third of the window.
+    let mut h = common::harness_sized(Explorer::new(ExplorerState::default()), (1280.0, 720.0));
+    click(&mut h, "Scenes");
+    let canvas = |h: &Harness<'_, Explorer>| h.get_by_role(egui::Role::Image).rect().height();
+    let desk = canvas(&h);
+    assert!(h.query_by_label("Open file").is_some());
+    click(&mut h, "🖵 Presentation");
+    for _ in 0..3 {
+        h.run();
+    }
+    assert!(h.query_by_label("Open file").is_none(), "folded away");
+    let folded = canvas(&h);
+    click(&mut h, "⏷ Files and hint");
+    assert!(h.query_by_label("Open file").is_some(), "unfolded");
+    let unfolded = canvas(&h);
+    // Zoomed by 1.6, the folded strip still leaves the scene more of the window than the desk.
+    let window = h.ctx.content_rect().height();
+    assert!(
+        folded / window > desk / 720.0,
+        "{folded} of {window} against {desk} of 720"
+    );
+    assert!(unfolded < folded);
+    click(&mut h, "⏶ Fewer controls");
+    assert!(h.query_by_label("Open file").is_none());
 }

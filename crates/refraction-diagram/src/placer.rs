@@ -11,7 +11,7 @@
 use glam::Vec2;
 
 use super::font::Typeface;
-use super::geometry::{Rect, clip_segment};
+use super::geometry::{Colour, Rect, clip_segment};
 use super::shapes::Label;
 
 /// Something a label must not cover.
@@ -196,12 +196,13 @@ impl Placement {
         let leaders = self
             .leaders
             .into_iter()
+            // Thin, dotted and lighter than the text: a long leader must not read as a ray.
             .map(|(from, to, colour)| Figure::Line {
                 points: vec![from, to],
                 stroke: Stroke {
-                    width: 1.2,
-                    colour,
-                    dash: Dash::Solid,
+                    width: 1.0,
+                    colour: Colour { a: 170, ..colour },
+                    dash: Dash::Dotted,
                 },
             });
         leaders
@@ -301,6 +302,23 @@ impl<'f> Placer<'f> {
         })
     }
 
+    /// Whether a leader line from `anchor` to the box `r` would cross no firm shaft (W, N or
+    /// T): a leader across them would read as one more ray.
+    fn leader_clear(&self, anchor: Vec2, r: &Rect) -> bool {
+        let end = anchor.clamp(r.min, r.max);
+        if end.distance(anchor) < 1.0 {
+            return true;
+        }
+        // The first pixels leave the anchor, which may lie on a ray's tip.
+        let start = anchor + (end - anchor).normalize() * 3.0;
+        !self.obstacles.iter().any(|o| match o {
+            Obstacle::Shaft {
+                a, b, firm: true, ..
+            } => segments_cross(start, end, *a, *b),
+            _ => false,
+        })
+    }
+
     /// The free spot inside `bounds` nearest `label`'s anchor, searched on a grid over the
     /// whole of `bounds` (a label that must be shown tries it before crossing any ray, where
     /// the rings around its anchor found nothing).
@@ -381,7 +399,7 @@ impl<'f> Placer<'f> {
                 &label,
                 bounds,
                 MOST_STEPS + 1..=MOST_STEPS_WITH_LEADER,
-                Self::free,
+                |placer: &Self, r: &Rect| placer.free(r) && placer.leader_clear(label.at, r),
             )
         };
         let found = match near {
@@ -393,7 +411,12 @@ impl<'f> Placer<'f> {
             (None, Need::Optional) => None,
             (None, Need::Shown) => {
                 let steps = || 0..=MOST_STEPS_WITH_LEADER;
-                self.narrower(&mut label, bounds, Self::free)
+                // A leader across W, N or T is avoided where it can be, then settled for
+                // before the label itself crosses a ray.
+                let anchor = label.at;
+                let clear = move |p: &Self, r: &Rect| p.free(r) && p.leader_clear(anchor, r);
+                self.narrower(&mut label, bounds, clear)
+                    .or_else(|| self.narrower(&mut label, bounds, Self::free))
                     .or_else(|| self.narrower(&mut label, bounds, Self::free_but_lesser_shafts))
                     .or_else(|| self.spot(&label, bounds, steps(), Self::free_but_shafts))
                     .map(|spot| {
@@ -436,6 +459,14 @@ impl<'f> Placer<'f> {
         }
         placement
     }
+}
+
+/// Whether the segments `p0`–`p1` and `q0`–`q1` cross (touching ends count).
+fn segments_cross(p0: Vec2, p1: Vec2, q0: Vec2, q1: Vec2) -> bool {
+    let side = |a: Vec2, b: Vec2, c: Vec2| (b - a).perp_dot(c - a);
+    let (d1, d2) = (side(q0, q1, p0), side(q0, q1, p1));
+    let (d3, d4) = (side(p0, p1, q0), side(p0, p1, q1));
+    d1 * d2 <= 0.0 && d3 * d4 <= 0.0 && (d1 != 0.0 || d2 != 0.0 || d3 != 0.0 || d4 != 0.0)
 }
 
 /// `text` broken into lines no wider than `width` pixels at font size `size`, between words
@@ -488,6 +519,29 @@ mod tests {
 
     fn canvas() -> Rect {
         Rect::from_min_size(Vec2::ZERO, Vec2::new(400.0, 300.0))
+    }
+
+    #[test]
+    fn segments_cross_where_they_meet_and_not_beside_each_other() {
+        let (a, b) = (Vec2::new(0.0, 0.0), Vec2::new(10.0, 10.0));
+        assert!(segments_cross(
+            a,
+            b,
+            Vec2::new(0.0, 10.0),
+            Vec2::new(10.0, 0.0)
+        ));
+        assert!(!segments_cross(
+            a,
+            b,
+            Vec2::new(5.0, 0.0),
+            Vec2::new(15.0, 10.0)
+        ));
+        assert!(!segments_cross(
+            a,
+            b,
+            Vec2::new(20.0, 0.0),
+            Vec2::new(20.0, 10.0)
+        ));
     }
 
     #[test]

@@ -136,6 +136,9 @@ scenes-open-dialog-hover = Eine Szenendatei zum Öffnen wählen
 scenes-saved = { $path } gespeichert
 scenes-opened = { $path } geöffnet
 scenes-hint = Die Quelle (bernsteinfarben), ihre Richtung (den Ring am Ende des gestrichelten Pfeils) oder den Anfasser einer Form ziehen; einen Trefferpunkt anklicken, um ihn in „Eine Grenzfläche“ zu öffnen.
+# In presentation: the switch that unfolds (and folds away) the scene's files, description and hint.
+scenes-more = Dateien und Hinweis
+scenes-less = Weniger Bedienelemente
 scenes-picture-file = Bilddatei (.png oder .svg)
 scenes-picture-hint = ein Name auf .png oder .svg, oder nummeriert scene-001.svg
 scenes-export-size = { $width }×{ $height } exportieren

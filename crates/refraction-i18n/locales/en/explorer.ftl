@@ -136,6 +136,9 @@ scenes-open-dialog-hover = Choose a scene file to open
 scenes-saved = saved { $path }
 scenes-opened = opened { $path }
 scenes-hint = Drag the source (amber), its direction (the ring at the end of the dashed arrow) or a shape's handle; click a hit point to open it in One interface.
+# In presentation: the switch that unfolds (and folds away) the scene's files, description and hint.
+scenes-more = Files and hint
+scenes-less = Fewer controls
 scenes-picture-file = Picture file (.png or .svg)
 scenes-picture-hint = a .png or .svg name, or numbered scene-001.svg
 scenes-export-size = Export { $width }×{ $height }

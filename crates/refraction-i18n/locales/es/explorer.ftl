@@ -136,6 +136,9 @@ scenes-open-dialog-hover = Elegir un archivo de escena para abrir
 scenes-saved = se guardó { $path }
 scenes-opened = se abrió { $path }
 scenes-hint = Arrastra la fuente (ámbar), su dirección (el anillo al final de la flecha discontinua) o el tirador de una forma; haz clic en un punto de impacto para abrirlo en «Una superficie».
+# In presentation: the switch that unfolds (and folds away) the scene's files, description and hint.
+scenes-more = Archivos y ayuda
+scenes-less = Menos controles
 scenes-picture-file = Archivo de imagen (.png o .svg)
 scenes-picture-hint = un nombre .png o .svg, o numerado scene-001.svg
 scenes-export-size = Exportar { $width }×{ $height }

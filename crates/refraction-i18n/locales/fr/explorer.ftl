@@ -136,6 +136,9 @@ scenes-open-dialog-hover = Choisir un fichier de scène à ouvrir
 scenes-saved = { $path } enregistré
 scenes-opened = { $path } ouvert
 scenes-hint = Fais glisser la source (ambre), sa direction (l’anneau au bout de la flèche en tirets) ou la poignée d’une forme ; clique sur un point d’impact pour l’ouvrir dans « Une interface ».
+# In presentation: the switch that unfolds (and folds away) the scene's files, description and hint.
+scenes-more = Fichiers et aide
+scenes-less = Moins de commandes
 scenes-picture-file = Fichier image (.png ou .svg)
 scenes-picture-hint = un nom en .png ou .svg, ou numéroté scene-001.svg
 scenes-export-size = Exporter en { $width }×{ $height }

@@ -136,6 +136,9 @@ scenes-open-dialog-hover = Escolher um arquivo de cena para abrir
 scenes-saved = { $path } salvo
 scenes-opened = { $path } aberto
 scenes-hint = Arraste a fonte (âmbar), sua direção (o anel na ponta da seta tracejada) ou a alça de uma forma; clique em um ponto de impacto para abri-lo em “Uma interface”.
+# In presentation: the switch that unfolds (and folds away) the scene's files, description and hint.
+scenes-more = Arquivos e dica
+scenes-less = Menos controles
 scenes-picture-file = Arquivo de imagem (.png ou .svg)
 scenes-picture-hint = um nome .png ou .svg, ou numerado scene-001.svg
 scenes-export-size = Exportar { $width }×{ $height }

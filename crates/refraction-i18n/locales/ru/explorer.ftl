@@ -136,6 +136,9 @@ scenes-open-dialog-hover = Выбрать файл сцены для откры�
 scenes-saved = сохранено: { $path }
 scenes-opened = открыто: { $path }
 scenes-hint = Перетащите источник (янтарный), его направление (кольцо на конце пунктирной стрелки) или маркер фигуры; щёлкните по точке попадания, чтобы открыть её в виде «Одна граница».
+# In presentation: the switch that unfolds (and folds away) the scene's files, description and hint.
+scenes-more = Файлы и подсказка
+scenes-less = Меньше элементов
 scenes-picture-file = Файл изображения (.png или .svg)
 scenes-picture-hint = имя .png или .svg, либо по номеру scene-001.svg
 scenes-export-size = Экспорт { $width }×{ $height }
