@@ -331,26 +331,24 @@ impl<'f> Placer<'f> {
         let step = label.size * 0.6;
         let extent = self.face.measure(&label.text, label.size);
         let size = bounds.max - bounds.min;
-        // Bounds a label fits in hold no more than a few thousand grid points.
+        // Bounds a label fits in hold no more than a few thousand grid points. They are tried
+        // nearest first, so the search ends at the first free one.
         let (columns, rows) = ((size.x / step) as usize, (size.y / step) as usize);
-        let mut best: Option<(f32, Vec2, Rect)> = None;
-        for row in 0..=rows {
-            for column in 0..=columns {
-                let r = Rect {
-                    min: bounds.min + Vec2::new(column as f32, row as f32) * step,
-                    max: bounds.min + Vec2::new(column as f32, row as f32) * step + extent,
-                };
-                let pad = Vec2::splat(label.size * PAD);
-                let at = r.min + pad + extent * Vec2::new(label.h.fraction(), label.v.fraction());
-                let moved = boxed(label, extent, at);
-                let inside = moved.min.cmpge(bounds.min).all() && moved.max.cmple(bounds.max).all();
-                let distance = at.distance(label.at);
-                if inside && best.as_ref().is_none_or(|b| distance < b.0) && free(self, &moved) {
-                    best = Some((distance, at, moved));
-                }
-            }
-        }
-        best.map(|(_, at, moved)| (at, moved))
+        let pad = Vec2::splat(label.size * PAD);
+        let offset = pad + extent * Vec2::new(label.h.fraction(), label.v.fraction());
+        let mut spots: Vec<(f32, Vec2)> = (0..=rows)
+            .flat_map(|row| (0..=columns).map(move |column| (column, row)))
+            .map(|(column, row)| {
+                let at = bounds.min + Vec2::new(column as f32, row as f32) * step + offset;
+                (at.distance(label.at), at)
+            })
+            .collect();
+        spots.sort_by(|a, b| a.0.total_cmp(&b.0));
+        spots.into_iter().find_map(|(_, at)| {
+            let moved = boxed(label, extent, at);
+            let inside = moved.min.cmpge(bounds.min).all() && moved.max.cmple(bounds.max).all();
+            (inside && free(self, &moved)).then_some((at, moved))
+        })
     }
 
     /// [`Self::nearest_anywhere`] for `label` as it is, else with its text broken into
