@@ -113,33 +113,17 @@ fn dragged_to(center: Pos2, press: Pos2, pointer: Pos2) -> Pos2 {
     pointer + (center - press)
 }
 
-/// Shows the diagram of `state` with `overlay` filling the available space (less a line for
-/// the keys), editing `state` by drag and keyboard and the overlay's view by pan and zoom.
-///
-/// A press and release within egui's click distance is a click, not a drag: it changes
-/// nothing and selects the handle (or, on the background, the W handle) for the arrow keys.
-pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
-    // The hint's row (a label's row is as tall as a widget's) and the spacing above it.
-    let text = ui.text_style_height(&egui::TextStyle::Body);
-    let line = text.max(ui.spacing().interact_size.y) + 2.0 * ui.spacing().item_spacing.y;
-    let size = ui.available_size() - EguiVec2::new(0.0, line);
-    let (response, painter) =
-        ui.allocate_painter(size.max(EguiVec2::splat(1.0)), Sense::click_and_drag());
-    pan_and_zoom(ui, &response, overlay);
-    let size = response.rect.size();
-    let to_screen = RectTransform::from_to(Rect::from_min_size(Pos2::ZERO, size), response.rect);
+/// Lets the user grab, drag and focus each handle of `before` (the diagram as it stood when
+/// the frame began), editing `state`; returns the handle that has the keyboard focus.
+fn interact(
+    ui: &Ui,
+    response: &egui::Response,
+    to_screen: &RectTransform,
+    state: &mut ExplorerState,
+    before: &Diagram,
+) -> Option<HandleId> {
     let from_screen = to_screen.inverse();
-    let canvas_size = Vec2::new(size.x, size.y);
-    let before = Diagram::with_overlay(state, canvas_size, overlay);
     let mut focused = None;
-    let w_id = response.id.with(HandleId::W);
-    // A click on the background selects W. It is asked for after the handles are interacted
-    // with: a handle that sees a click elsewhere gives its focus up, W's too.
-    let select_w = response.clicked()
-        && !before
-            .handles
-            .iter()
-            .any(|h| ui.memory(|m| m.has_focus(response.id.with(h.id))));
     for handle in &before.handles {
         let area = Diagram::grab_area(handle);
         let rect = Rect::from_min_max(
@@ -179,11 +163,48 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
             focused = Some(handle.id);
         }
     }
-    if select_w {
+    focused
+}
+
+/// Shows the diagram of `state` with `overlay` filling the available space (less a line for
+/// the keys), editing `state` by drag and keyboard and the overlay's view by pan and zoom.
+///
+/// A press and release within egui's click distance is a click, not a drag: it changes
+/// nothing and selects the handle (or, on the background, the W handle) for the arrow keys.
+pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
+    // The hint's row (a label's row is as tall as a widget's) and the spacing above it.
+    let text = ui.text_style_height(&egui::TextStyle::Body);
+    let line = text.max(ui.spacing().interact_size.y) + 2.0 * ui.spacing().item_spacing.y;
+    let size = ui.available_size() - EguiVec2::new(0.0, line);
+    let (response, painter) =
+        ui.allocate_painter(size.max(EguiVec2::splat(1.0)), Sense::click_and_drag());
+    pan_and_zoom(ui, &response, overlay);
+    let size = response.rect.size();
+    let to_screen = RectTransform::from_to(Rect::from_min_size(Pos2::ZERO, size), response.rect);
+    let canvas_size = Vec2::new(size.x, size.y);
+    let before = Diagram::with_overlay(state, canvas_size, overlay);
+    let unchanged = state.clone();
+    let w_id = response.id.with(HandleId::W);
+    // A click on the background selects W. It is asked for after the handles are interacted
+    // with: a handle that sees a click elsewhere gives its focus up, W's too.
+    let select_w = response.clicked()
+        && !before
+            .handles
+            .iter()
+            .any(|h| ui.memory(|m| m.has_focus(response.id.with(h.id))));
+    let interacted = interact(ui, &response, &to_screen, state, &before);
+    let focused = if select_w {
         ui.memory_mut(|m| m.request_focus(w_id));
-        focused = Some(HandleId::W);
-    }
-    let after = Diagram::with_overlay(state, canvas_size, overlay);
+        Some(HandleId::W)
+    } else {
+        interacted
+    };
+    // Most frames change nothing: the diagram drawn is then the one the handles were read from.
+    let after = if *state == unchanged {
+        before
+    } else {
+        Diagram::with_overlay(state, canvas_size, overlay)
+    };
     paint(&painter, &to_screen, &after.primitives());
     hover_left_out(
         &response,

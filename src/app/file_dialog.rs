@@ -221,6 +221,24 @@ pub fn answer_replace(
     None
 }
 
+/// Shows the dialog that `slot` holds (alone, or with what it was opened for; `dialog` finds
+/// it there) while it is up, and empties the slot once the user chose or cancelled; returns
+/// what the slot held and the file chosen.
+pub fn settle<T>(
+    ui: &Ui,
+    slot: &mut Option<T>,
+    dialog: impl FnOnce(&mut T) -> &mut FileDialog,
+) -> Option<(T, PathBuf)> {
+    match dialog(slot.as_mut()?).show(ui) {
+        Choice::Pending => None,
+        Choice::Cancelled => {
+            *slot = None;
+            None
+        }
+        Choice::Chosen(path) => slot.take().map(|held| (held, path)),
+    }
+}
+
 /// Whether the dialog picks a file to read or a name to write.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Purpose {

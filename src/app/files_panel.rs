@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use egui::{RichText, TextEdit, Ui};
 use refraction_i18n::t;
 
-use super::file_dialog::{Choice, FileDialog, Kind, Purpose, Target, answer_replace, target};
+use super::file_dialog::{FileDialog, Kind, Purpose, Target, answer_replace, settle, target};
 use super::typed::status;
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 use crate::app::snippets;
@@ -101,19 +101,11 @@ impl FilesPanel {
 
     /// The dialog and the replace question, while either is up.
     fn dialogs(&mut self, ui: &Ui, state: &mut ExplorerState) {
-        if let Some(dialog) = &mut self.dialog {
-            let purpose = dialog.purpose();
-            match dialog.show(ui) {
-                Choice::Pending => {}
-                Choice::Cancelled => self.dialog = None,
-                Choice::Chosen(path) => {
-                    self.dialog = None;
-                    self.path = path.display().to_string();
-                    match purpose {
-                        Purpose::Open => self.open(state),
-                        Purpose::Save => self.save(state),
-                    }
-                }
+        if let Some((dialog, path)) = settle(ui, &mut self.dialog, |d| d) {
+            self.path = path.display().to_string();
+            match dialog.purpose() {
+                Purpose::Open => self.open(state),
+                Purpose::Save => self.save(state),
             }
         }
         if let Some(path) = answer_replace(ui, &mut self.replace, &mut self.status) {

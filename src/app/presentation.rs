@@ -63,8 +63,8 @@ pub struct Presentation {
 /// farthest toward `back`, in steps of a twentieth, that keeps it.
 fn weak(text: Color32, back: Color32) -> Color32 {
     let (text_c, back_c) = (colour(text), colour(back));
-    let t = (0..=10)
-        .map(|i| f32::from(i as u8) / 20.0)
+    let t = (0_u8..=10)
+        .map(|i| f32::from(i) / 20.0)
         .take_while(|t| text_c.lerp(back_c, *t).contrast(back_c) >= 4.6)
         .last()
         .unwrap_or(0.0);

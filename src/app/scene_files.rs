@@ -8,7 +8,7 @@ use egui::{Label, RichText, Role, TextEdit, Ui, WidgetInfo};
 use refraction_i18n::t;
 
 use super::export;
-use super::file_dialog::{self, Choice, FileDialog, Kind, Purpose, Target, picture_target};
+use super::file_dialog::{self, FileDialog, Kind, Purpose, Target, picture_target};
 use super::paint::verdict_colour;
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 use refraction_files::write_atomically;
@@ -229,28 +229,20 @@ impl SceneFiles {
     /// from the dialog, if one was.
     fn dialogs(&mut self, ui: &Ui, scene: &Scene) -> Option<Scene> {
         let mut opened = None;
-        if let Some((usage, dialog)) = &mut self.dialog {
-            let usage = *usage;
-            match dialog.show(ui) {
-                Choice::Pending => {}
-                Choice::Cancelled => self.dialog = None,
-                Choice::Chosen(path) => {
-                    self.dialog = None;
-                    let shown = path.display().to_string();
-                    match usage {
-                        Use::OpenScene => {
-                            self.path = shown;
-                            opened = self.open_typed();
-                        }
-                        Use::SaveScene => {
-                            self.path = shown;
-                            self.save(scene);
-                        }
-                        Use::Picture => {
-                            self.picture_path = shown;
-                            self.export(scene, path);
-                        }
-                    }
+        if let Some(((usage, _), path)) = file_dialog::settle(ui, &mut self.dialog, |(_, d)| d) {
+            let shown = path.display().to_string();
+            match usage {
+                Use::OpenScene => {
+                    self.path = shown;
+                    opened = self.open_typed();
+                }
+                Use::SaveScene => {
+                    self.path = shown;
+                    self.save(scene);
+                }
+                Use::Picture => {
+                    self.picture_path = shown;
+                    self.export(scene, path);
                 }
             }
         }

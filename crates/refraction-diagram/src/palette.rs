@@ -291,8 +291,8 @@ impl Palette {
     #[must_use]
     pub fn text_shade(&self, colour: Colour) -> Colour {
         let back = self.background;
-        (7..=20)
-            .map(|i| colour.lerp(self.text_toward, f32::from(i as u8) / 20.0))
+        (7_u8..=20)
+            .map(|i| colour.lerp(self.text_toward, f32::from(i) / 20.0))
             .find(|shade| shade.over(back).contrast(back) >= 4.6)
             .unwrap_or(self.text_toward)
     }

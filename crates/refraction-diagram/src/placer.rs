@@ -245,28 +245,27 @@ impl<'f> Placer<'f> {
         boxed(label, self.face.measure(&label.text, label.size), at)
     }
 
+    /// Free of every obstacle and every label placed so far.
     fn free(&self, r: &Rect) -> bool {
-        !self.obstacles.iter().any(|o| o.touches(r)) && !self.placed.iter().any(|p| p.overlaps(r))
+        self.clear_of(r, |_| false)
     }
 
     /// Free of everything but the shafts that are not firm: what a label that must be shown
     /// settles for first (it may cross a lesser ray, never a handle, an arrowhead, a marked
     /// point or another label).
     fn free_but_lesser_shafts(&self, r: &Rect) -> bool {
-        let solid = self
-            .obstacles
-            .iter()
-            .filter(|o| !matches!(o, Obstacle::Shaft { firm: false, .. }));
-        !solid.into_iter().any(|o| o.touches(r)) && !self.placed.iter().any(|p| p.overlaps(r))
+        self.clear_of(r, |o| matches!(o, Obstacle::Shaft { firm: false, .. }))
     }
 
     /// Free of everything but the rays' shafts: a shown label's last resort where the canvas
     /// is so small that only crossing W, N or T would keep it.
     fn free_but_shafts(&self, r: &Rect) -> bool {
-        let solid = self
-            .obstacles
-            .iter()
-            .filter(|o| !matches!(o, Obstacle::Shaft { .. }));
+        self.clear_of(r, |o| matches!(o, Obstacle::Shaft { .. }))
+    }
+
+    /// Whether `r` covers no placed label and no obstacle but those it may `cross`.
+    fn clear_of(&self, r: &Rect, cross: impl Fn(&Obstacle) -> bool) -> bool {
+        let solid = self.obstacles.iter().filter(|o| !cross(o));
         !solid.into_iter().any(|o| o.touches(r)) && !self.placed.iter().any(|p| p.overlaps(r))
     }
 

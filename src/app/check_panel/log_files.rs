@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use egui::{RichText, Ui};
 
 use super::bulk::{Failing, MAX_JUDGED, MAX_TESTS};
-use crate::app::file_dialog::{self, Choice, FileDialog, Purpose, Target};
+use crate::app::file_dialog::{self, FileDialog, Purpose, Target};
 use crate::app::snippets::api::{self as api_snippets, Language, Name};
 use crate::app::snippets::{self, AnyCase, AnyLanguage};
 use crate::app::typed::error_label;
@@ -303,19 +303,10 @@ impl LogFiles {
 
     /// Shows the dialog while it is up; when a file is chosen, opens the log or saves the tests.
     fn dialog_ui(&mut self, ui: &Ui, failing: &[Failing], options: &Options) {
-        let Some((usage, dialog)) = &mut self.dialog else {
-            return;
-        };
-        let usage = *usage;
-        match dialog.show(ui) {
-            Choice::Pending => {}
-            Choice::Cancelled => self.dialog = None,
-            Choice::Chosen(path) => {
-                self.dialog = None;
-                match usage {
-                    Use::Log => self.open(&path),
-                    Use::Tests(language) => self.save(&path, language, failing, options),
-                }
+        if let Some(((usage, _), path)) = file_dialog::settle(ui, &mut self.dialog, |(_, d)| d) {
+            match usage {
+                Use::Log => self.open(&path),
+                Use::Tests(language) => self.save(&path, language, failing, options),
             }
         }
     }

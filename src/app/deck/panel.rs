@@ -11,7 +11,7 @@ use refraction_files::write_atomically;
 use refraction_i18n::t;
 
 use super::title_of;
-use crate::app::file_dialog::{Choice, FileDialog, Kind, Purpose, Target, answer_replace, target};
+use crate::app::file_dialog::{FileDialog, Kind, Purpose, Target, answer_replace, settle, target};
 use crate::app::typed::status;
 use crate::app::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 
@@ -279,19 +279,11 @@ impl DeckPanel {
     /// the dialog, if one was.
     fn dialogs(&mut self, ui: &Ui, deck: Option<&Deck>) -> Option<Action> {
         let mut action = None;
-        if let Some(dialog) = &mut self.dialog {
-            let purpose = dialog.purpose();
-            match dialog.show(ui) {
-                Choice::Pending => {}
-                Choice::Cancelled => self.dialog = None,
-                Choice::Chosen(path) => {
-                    self.dialog = None;
-                    self.path = path.display().to_string();
-                    match purpose {
-                        Purpose::Open => action = self.open(),
-                        Purpose::Save => self.save(deck),
-                    }
-                }
+        if let Some((dialog, path)) = settle(ui, &mut self.dialog, |d| d) {
+            self.path = path.display().to_string();
+            match dialog.purpose() {
+                Purpose::Open => action = self.open(),
+                Purpose::Save => self.save(deck),
             }
         }
         if let Some(path) = answer_replace(ui, &mut self.replace, &mut self.status) {
