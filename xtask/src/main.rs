@@ -146,15 +146,19 @@ fn icon_pngs(dir: &Path) -> Result<usize, String> {
     let tree = resvg::usvg::Tree::from_data(&svg, &resvg::usvg::Options::default())
         .map_err(|e| format!("cannot parse {}: {e}", source.display()))?;
     for size in ICON_SIZES {
-        let mut pixmap = tiny_skia::Pixmap::new(size, size)
+        // resvg draws with the tiny-skia it was built with; the picture's pixels move to this
+        // project's tiny-skia, which writes PNG files.
+        let mut drawn = resvg::tiny_skia::Pixmap::new(size, size)
             .ok_or_else(|| format!("cannot make a {size}x{size} picture"))?;
         let scale = size as f32 / tree.size().width();
         resvg::render(
             &tree,
-            tiny_skia::Transform::from_scale(scale, scale),
-            &mut pixmap.as_mut(),
+            resvg::tiny_skia::Transform::from_scale(scale, scale),
+            &mut drawn.as_mut(),
         );
-        let png = pixmap
+        let png = tiny_skia::IntSize::from_wh(size, size)
+            .and_then(|area| tiny_skia::Pixmap::from_vec(drawn.take(), area))
+            .ok_or_else(|| format!("cannot make a {size}x{size} picture"))?
             .encode_png()
             .map_err(|e| format!("cannot encode the {size}x{size} icon: {e}"))?;
         let folder = dir

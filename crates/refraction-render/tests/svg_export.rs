@@ -17,8 +17,8 @@
 )]
 
 use glam::Vec2;
-use resvg::tiny_skia::Pixmap;
 use resvg::usvg::{self, Node};
+use tiny_skia::{IntSize, Pixmap};
 
 use refraction_diagram::{Diagram, Overlay, Primitive};
 use refraction_model::ExplorerState;
@@ -82,16 +82,18 @@ fn difference(a: &Pixmap, b: &Pixmap) -> (f64, f64) {
     (different as f64 / pixels, total as f64 / pixels)
 }
 
-/// Rasterises `document` at its own size.
+/// Rasterises `document` at its own size (with resvg's own tiny-skia, whose pixels then move
+/// to the PNG's).
 fn rasterise(tree: &usvg::Tree) -> Pixmap {
     let size = tree.size().to_int_size();
-    let mut pixmap = Pixmap::new(size.width(), size.height()).unwrap();
+    let mut drawn = resvg::tiny_skia::Pixmap::new(size.width(), size.height()).unwrap();
     resvg::render(
         tree,
         resvg::tiny_skia::Transform::identity(),
-        &mut pixmap.as_mut(),
+        &mut drawn.as_mut(),
     );
-    pixmap
+    let area = IntSize::from_wh(size.width(), size.height()).unwrap();
+    Pixmap::from_vec(drawn.take(), area).unwrap()
 }
 
 /// Checks the SVG against the PNG of the same drawing; returns the difference figures.
