@@ -36,6 +36,7 @@ mod rtiow_flow;
 mod scenes_ui;
 mod slides_cli;
 mod snapshots;
+mod software_renderer;
 mod solve_cli;
 mod trace_cli;
 mod translations;

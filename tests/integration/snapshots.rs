@@ -1,5 +1,6 @@
-//! Image snapshots of the lesson states, drawn by wgpu on Mesa's software rasterizer
-//! (lavapipe: `.ci/run` installs it), at 1280×720 and 1920×1080, at the desk and in
+//! Image snapshots of the lesson states, drawn on the CPU as egui's wgpu renderer draws them
+//! (`software_renderer`; the committed pictures were drawn by wgpu on Mesa's software Vulkan
+//! driver, and the CPU's agree with them), at 1280×720 and 1920×1080, at the desk and in
 //! presentation. A change to the layout shows in review as a changed PNG under
 //! `tests/snapshots/`; after a deliberate change, regenerate them with
 //! `UPDATE_SNAPSHOTS=1 cargo test --test integration snapshots` and look at each one before committing.
@@ -8,6 +9,8 @@ use egui::Vec2;
 use egui_kittest::{Harness, SnapshotOptions};
 use refraction_explorer::app::{self, Explorer, Launch};
 use refraction_model::Lesson;
+
+use crate::software_renderer::SoftwareRenderer;
 
 const SIZES: [(f32, f32); 2] = [(1280.0, 720.0), (1920.0, 1080.0)];
 
@@ -22,6 +25,7 @@ fn window(lesson: Lesson, size: (f32, f32), present: bool) -> Harness<'static, E
         .with_context_setup(app::install_fonts)
         .with_size(Vec2::new(size.0, size.1))
         .with_theme(egui::Theme::Light)
+        .renderer(SoftwareRenderer::default())
         .build_ui_state(
             |ui, app: &mut Explorer| app.show(ui),
             Explorer::launched(launch, |_| None),
