@@ -12,10 +12,11 @@ cd "$(dirname "$0")/.."
 started=$SECONDS
 target="${CARGO_TARGET_DIR:-target}"
 # cargo-deb, pinned: it warns that the dev profile "will be a hard error in the future", so a
-# newer release may refuse what this script asks of it. Installing it takes about 80 s.
+# newer release may refuse what this script asks of it. Built unoptimised (--debug): that
+# takes half the time (36 s against 71 s here) and packs this package as fast (4 s).
 cargo_deb_version=3.8.0
 if [ "$(cargo deb --version 2>/dev/null || true)" != "cargo-deb $cargo_deb_version" ]; then
-  cargo install cargo-deb --version "$cargo_deb_version" --locked
+  cargo install cargo-deb --version "$cargo_deb_version" --locked --debug
 fi
 # Built by `cargo test --workspace` with the test run's features: `cargo xtask` (cargo run)
 # would build the program's dependencies again with its own.
