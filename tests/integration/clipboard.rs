@@ -8,10 +8,8 @@
 //! Where they are missing it says so and passes, unless `REFRACTION_X11_TESTS=1` (set by
 //! `.ci/run`) asks that it run.
 
-use core::time::Duration;
-use std::io::Write as _;
+use std::io::{BufRead as _, BufReader, Write as _};
 use std::process::{Child, Command, Stdio};
-use std::time::Instant;
 
 use egui_kittest::kittest::Queryable as _;
 use refraction_model::ExplorerState;
@@ -68,46 +66,54 @@ struct Xvfb {
 }
 
 impl Xvfb {
-    /// Starts Xvfb on the first free display from :90; `None` where Xvfb is not installed.
+    /// Starts Xvfb on a display it finds free; `None` where it does not start. Xvfb writes the
+    /// display's number once it accepts connections (`-displayfd`), so no client can come too
+    /// early, and it never resets (`-noreset`): by default an X server resets when its last
+    /// client leaves, and refuses connections while it does, which failed this test under load
+    /// between the copy and the paste.
     fn start() -> Option<Self> {
-        for number in 90..130 {
-            if std::path::Path::new(&format!("/tmp/.X11-unix/X{number}")).exists()
-                || std::path::Path::new(&format!("/tmp/.X{number}-lock")).exists()
-            {
-                continue;
-            }
-            let display = format!(":{number}");
-            let child = Command::new("Xvfb")
-                .args([
-                    display.as_str(),
-                    "-screen",
-                    "0",
-                    "640x480x24",
-                    "-nolisten",
-                    "tcp",
-                ])
-                .stdout(Stdio::null())
-                .stderr(Stdio::null())
-                .spawn()
-                .ok()?;
-            let socket = format!("/tmp/.X11-unix/X{number}");
-            let started = Instant::now();
-            while !std::path::Path::new(&socket).exists() {
-                if started.elapsed() > Duration::from_secs(10) {
-                    return None;
-                }
-                std::thread::sleep(Duration::from_millis(50));
-            }
-            return Some(Self { child, display });
+        let mut child = Command::new("Xvfb")
+            .args([
+                "-displayfd",
+                "1",
+                "-noreset",
+                "-screen",
+                "0",
+                "640x480x24",
+                "-nolisten",
+                "tcp",
+            ])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .ok()?;
+        let mut number = String::new();
+        let told = child
+            .stdout
+            .take()
+            .map(|out| BufReader::new(out).read_line(&mut number));
+        let number = number.trim();
+        if !matches!(told, Some(Ok(_))) || number.is_empty() {
+            child.kill().ok();
+            child.wait().ok();
+            return None;
         }
-        None
+        let display = format!(":{number}");
+        Some(Self { child, display })
     }
 }
 
 impl Drop for Xvfb {
     fn drop(&mut self) {
-        // Best effort: the server is this test's own.
-        self.child.kill().ok();
+        // SIGTERM, so that Xvfb removes its lock file and socket (a killed one leaves both, and
+        // the displays run out over many runs); SIGKILL only if that cannot be sent.
+        let terminated = Command::new("kill")
+            .arg(self.child.id().to_string())
+            .status()
+            .is_ok_and(|s| s.success());
+        if !terminated {
+            self.child.kill().ok();
+        }
         self.child.wait().ok();
     }
 }
