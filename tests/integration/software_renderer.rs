@@ -162,12 +162,7 @@ impl TestRenderer for SoftwareRenderer {
     ) -> Result<RgbaImage, String> {
         let pixels_per_point = ctx.pixels_per_point();
         let size = ctx.content_rect().size() * pixels_per_point;
-        let mut canvas = Canvas {
-            width: size.x.round() as usize,
-            height: size.y.round() as usize,
-            pixels: Vec::new(),
-        };
-        canvas.pixels = vec![[0.0; 4]; canvas.width * canvas.height];
+        let mut canvas = Canvas::new(size.x.round() as usize, size.y.round() as usize);
         for ClippedPrimitive {
             clip_rect,
             primitive,
@@ -204,6 +199,16 @@ struct Bounds {
 }
 
 impl Canvas {
+    /// A transparent canvas of `width` × `height` pixels, as the GPU's target is cleared.
+    fn new(width: usize, height: usize) -> Self {
+        let pixels = vec![[0.0; 4]; width * height];
+        Self {
+            width,
+            height,
+            pixels,
+        }
+    }
+
     /// The clip rectangle in pixels, rounded and kept inside the canvas as egui-wgpu does.
     fn scissor(&self, clip: Rect, pixels_per_point: f32) -> Bounds {
         let round =
@@ -345,7 +350,8 @@ fn span(edges: &[(Pos2, Pos2); 3], y: f32) -> Option<(f32, f32)> {
             right = right.min(at_origin / dy);
         } else if dy < 0.0 {
             left = left.max(at_origin / dy);
-        } else if at_origin < -0.0 || (dx == 0.0 && dy == 0.0) {
+        } else if at_origin < 0.0 {
+            // A horizontal edge with the row on its outer side.
             return None;
         }
     }
@@ -385,11 +391,7 @@ fn a_translucent_square_has_no_seam_and_stays_inside_its_edges() {
     let mut mesh = Mesh::default();
     let rect = Rect::from_min_max(Pos2::new(2.0, 2.0), Pos2::new(12.0, 12.0));
     mesh.add_colored_rect(rect, Color32::from_black_alpha(128));
-    let mut canvas = Canvas {
-        width: 16,
-        height: 16,
-        pixels: vec![[0.0; 4]; 256],
-    };
+    let mut canvas = Canvas::new(16, 16);
     let all = Bounds {
         x0: 0,
         y0: 0,
