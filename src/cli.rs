@@ -145,7 +145,8 @@ pub enum Command {
     /// Answers each line with "ok", "matches" (chosen, wrong_side, wrong_bend, reversed,
     /// total_internal_reflection or null), "explanation" and "mistakes"; the tally and the
     /// diagnosis of the whole log go to stderr (and with --summary to a JSON file). Exit
-    /// status 0 when every line is ok, 1 otherwise.
+    /// status 0 when every line is ok, 1 when any is not, 3 when no line was judged (nothing
+    /// matched the pattern, the input was empty, a CSV held only its header), 2 on an error.
     Check {
         /// JSON Lines file to read (stdin when absent).
         file: Option<PathBuf>,
@@ -172,8 +173,14 @@ pub enum Command {
         /// Also write the diagnosis of the whole log to this JSON file: {"lines", "judged",
         /// "ok", "skipped", "diagnosis": [{"code", "lines", "where", "fix"}, ...]}, the verdict
         /// first ("none" when nothing is wrong).
+        /// Never the log being read; a file already there must be empty or a summary check wrote,
+        /// unless --replace is given.
         #[arg(long, value_name = "FILE.json")]
         summary: Option<PathBuf>,
+        /// Let --summary write over a file that is not a summary of check's (never over the log
+        /// being read).
+        #[arg(long, requires = "summary")]
+        replace: bool,
         /// With --pattern, answer a line that does not match with an error instead of skipping it.
         #[arg(long, requires = "pattern")]
         strict: bool,

@@ -70,6 +70,7 @@ fn main() -> ExitCode {
             strict,
             paths,
             summary,
+            replace,
         }) => commands::lines::check(
             file.as_deref(),
             &refraction_tools::api_check::Options {
@@ -84,6 +85,7 @@ fn main() -> ExitCode {
                 strict,
                 paths,
                 summary: summary.as_deref(),
+                replace,
             },
         ),
         Some(Command::Bench { quick, json, plot }) => {

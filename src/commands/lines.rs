@@ -1,10 +1,12 @@
 //! `solve` and `check`: JSON Lines in, one answer per line out.
 
+use std::fs::File;
 use std::io::{self, BufRead, Write as _};
 use std::path::Path;
 use std::process::ExitCode;
 
 use refraction_tools::api_check::{Format, Options, Pattern, Session};
+use refraction_tools::diagnosis::looks_like_summary;
 use refraction_tools::{self as jsonl, LinesError, solve as solver};
 
 use super::{fail, output, output_error};
@@ -26,17 +28,67 @@ pub fn solve() -> ExitCode {
     }
 }
 
-/// `file`, or stdin when absent, with the name a message gives it.
-fn open_input(file: Option<&Path>) -> Result<(Box<dyn BufRead>, String), ExitCode> {
-    match file {
-        None => Ok((Box::new(io::stdin().lock()), "standard input".to_owned())),
-        Some(path) => match std::fs::File::open(path) {
-            Ok(f) => Ok((Box::new(io::BufReader::new(f)), path.display().to_string())),
-            Err(e) => Err(fail(
-                "check",
-                &format!("cannot read {}: {e}", path.display()),
+/// The exit status of a `check` run that judged no line (nothing matched the pattern, the input
+/// was empty or blank, a CSV held only its header): not a pass, so that a typo in a CI job's
+/// pattern fails it.
+pub const NOTHING_JUDGED: u8 = 3;
+
+/// The log `check` reads: `file`, or stdin when absent, with the name a message gives it.
+struct Input {
+    lines: Box<dyn BufRead>,
+    name: String,
+    /// The file read (stdin's, when it has one), to tell a `--summary` path that names it.
+    file: Option<File>,
+}
+
+impl Input {
+    fn open(file: Option<&Path>) -> Result<Self, String> {
+        let Some(path) = file else {
+            return Ok(Self {
+                lines: Box::new(io::stdin().lock()),
+                name: "standard input".to_owned(),
+                file: refraction_files::standard_input(),
+            });
+        };
+        let opened =
+            File::open(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+        Ok(Self {
+            lines: Box::new(io::BufReader::new(
+                opened
+                    .try_clone()
+                    .map_err(|e| format!("cannot read {}: {e}", path.display()))?,
             )),
-        },
+            name: path.display().to_string(),
+            file: Some(opened),
+        })
+    }
+}
+
+/// Whether `--summary` may write at `path`: never over the log being read, and over a file
+/// already there only if it is empty or a summary `check` wrote, unless `replace` says so.
+fn summary_target(path: &Path, input: &Input, replace: bool) -> Result<(), String> {
+    let shown = path.display();
+    refraction_files::check_writable(path).map_err(|e| e.to_string())?;
+    if input
+        .file
+        .as_ref()
+        .is_some_and(|f| refraction_files::names_open_file(path, f))
+    {
+        return Err(format!(
+            "cannot write {shown}: it is the log being read ({}); give --summary another file",
+            input.name
+        ));
+    }
+    let start = refraction_files::first_bytes(path, 64)
+        .map_err(|e| format!("cannot write {shown}: cannot read what is there: {e}"))?;
+    match start {
+        Some(bytes) if !replace && !bytes.is_empty() && !looks_like_summary(&bytes) => {
+            Err(format!(
+                "cannot write {shown}: it holds something other than a summary of check's; \
+                 give another file, or add --replace to write over it"
+            ))
+        }
+        _ => Ok(()),
     }
 }
 
@@ -52,6 +104,8 @@ pub struct Reading<'a> {
     pub paths: bool,
     /// `--summary`: the file the diagnosis of the whole log goes to.
     pub summary: Option<&'a Path>,
+    /// `--replace`: `--summary` may write over a file that is not a summary.
+    pub replace: bool,
 }
 
 /// Runs `check` (with `--api`, in that API's terms) on `file` or stdin: an answer per line on
@@ -66,19 +120,20 @@ pub fn check(file: Option<&Path>, options: &Options, reading: &Reading<'_>) -> E
         (None, true) => Format::Csv,
         (None, false) => Format::JsonLines,
     };
-    if let Some(path) = reading.summary
-        && let Err(e) = refraction_files::check_writable(path)
-    {
-        return fail("check", &format!("cannot write {}: {e}", path.display()));
-    }
-    let (input, name) = match open_input(file) {
+    let input = match Input::open(file) {
         Ok(input) => input,
-        Err(code) => return code,
+        Err(e) => return fail("check", &e),
     };
+    if let Some(path) = reading.summary
+        && let Err(e) = summary_target(path, &input, reading.replace)
+    {
+        return fail("check", &e);
+    }
+    let (lines, name) = (input.lines, input.name);
     let mut session = Session::new(*options, format, reading.strict, reading.paths);
     let mut output = io::stdout().lock();
     let result = session
-        .run(input, &mut output, jsonl::threads())
+        .run(lines, &mut output, jsonl::threads())
         .and_then(|answered| {
             if let Some(summary) = session.finish() {
                 writeln!(output, "{summary}").map_err(LinesError::Write)?;
@@ -94,25 +149,32 @@ pub fn check(file: Option<&Path>, options: &Options, reading: &Reading<'_>) -> E
     if let Some(path) = reading.summary {
         let json = format!("{}\n", serde_json::json!(summary));
         if let Err(e) = refraction_files::write_atomically(path, json.as_bytes()) {
-            return fail("check", &format!("cannot write {}: {e}", path.display()));
+            return fail("check", &e);
         }
     }
-    let mut tally = format!("check: {}", session.tally().summary());
-    for sentence in summary.sentences() {
-        tally = format!("{tally}\ncheck: {sentence}");
+    let counted = session.tally().summary();
+    let mut tally: Vec<String> = Vec::new();
+    if !counted.is_empty() {
+        tally.push(format!("check: {counted}"));
     }
-    finished(&tally, answered && session.all_ok())
-}
-
-/// The exit status of a `check` run that read all its input: the tally goes to stderr (losing
-/// it is a failure, status 2), then status 0 if `all_ok` and 1 if not.
-fn finished(tally: &str, all_ok: bool) -> ExitCode {
-    if output::to_stderr(tally).is_err() {
-        // The tally is part of check's output: losing it is a failure.
-        ExitCode::from(2)
-    } else if all_ok {
+    tally.extend(summary.sentences().iter().map(|s| format!("check: {s}")));
+    let status = if summary.judged == 0 {
+        ExitCode::from(NOTHING_JUDGED)
+    } else if answered && session.all_ok() {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
+    };
+    finished(&tally.join("\n"), status)
+}
+
+/// The exit status of a `check` run that read all its input: the tally goes to stderr (losing
+/// it is a failure, status 2), then `status`.
+fn finished(tally: &str, status: ExitCode) -> ExitCode {
+    if output::to_stderr(tally).is_err() {
+        // The tally is part of check's output: losing it is a failure.
+        ExitCode::from(2)
+    } else {
+        status
     }
 }

@@ -65,7 +65,8 @@ fn stderr(output: &Output) -> String {
 fn output_discarded_by_another_program_is_written_and_a_full_stdout_reported() {
     // Issue 23: Python's subprocess.DEVNULL and Go's exec open /dev/null read-write, as the
     // runtime does for a stdout closed with >&-: the output goes there, it is not refused.
-    for (args, stdin) in [("solve", GOOD), ("trace --json", ""), ("check", "")] {
+    let check = r#"{"w":[0.6,-0.8,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5,"t_yours":[0.4,-0.9165151,0]}"#;
+    for (args, stdin) in [("solve", GOOD), ("trace --json", ""), ("check", check)] {
         let output = with_stdout_closed(args, stdin);
         assert_eq!(output.status.code(), Some(0), "{args}: {output:?}");
         let discarded = Command::new(BIN)
@@ -416,4 +417,107 @@ fn a_message_quoting_a_megabyte_of_input_is_cut_to_a_few_hundred_characters() {
     let output = run(&["render", "--out", &path.display().to_string()], "");
     assert_eq!(output.status.code(), Some(2));
     assert!(stderr(&output).len() < 1_000, "{}", stderr(&output));
+}
+
+#[test]
+fn summary_never_replaces_the_log_it_reads_nor_a_file_of_another_kind() {
+    // Issue 31: `--summary mylog.jsonl mylog.jsonl` (or `< mylog.jsonl`) replaced the log.
+    let folder = folder("summary-targets");
+    let log = folder.join("mylog.jsonl");
+    let line = r#"{"I":[0.6,-0.8,0],"N":[0,1,0],"eta":0.6666667,"result":[0.4,-0.916515,0]}"#;
+    fs::write(&log, format!("{line}\n")).unwrap();
+    let (log_arg, dir) = (log.to_str().unwrap(), folder.to_str().unwrap());
+    let by_name = run(
+        &["check", "--api", "glsl", "--summary", log_arg, log_arg],
+        "",
+    );
+    assert_eq!(by_name.status.code(), Some(2), "{by_name:?}");
+    assert!(
+        stderr(&by_name).contains("it is the log being read"),
+        "{by_name:?}"
+    );
+    let piped = Command::new(BIN)
+        .args(["check", "--api", "glsl", "--replace", "--summary", log_arg])
+        .stdin(File::open(&log).unwrap())
+        .output()
+        .unwrap();
+    assert_eq!(piped.status.code(), Some(2), "{piped:?}");
+    assert!(stderr(&piped).contains("(standard input)"), "{piped:?}");
+    assert_eq!(fs::read_to_string(&log).unwrap(), format!("{line}\n"));
+    // A file of another kind is refused unless --replace says so; a summary is replaced.
+    let notes = folder.join("notes.txt");
+    fs::write(&notes, "my notes\n").unwrap();
+    let notes_arg = notes.to_str().unwrap();
+    let refused = run(
+        &["check", "--api", "glsl", "--summary", notes_arg, log_arg],
+        "",
+    );
+    assert_eq!(refused.status.code(), Some(2), "{refused:?}");
+    assert!(stderr(&refused).contains("add --replace"), "{refused:?}");
+    assert_eq!(fs::read_to_string(&notes).unwrap(), "my notes\n");
+    let replaced = run(
+        &[
+            "check",
+            "--api",
+            "glsl",
+            "--replace",
+            "--summary",
+            notes_arg,
+            log_arg,
+        ],
+        "",
+    );
+    assert_eq!(replaced.status.code(), Some(0), "{replaced:?}");
+    let again = run(
+        &["check", "--api", "glsl", "--summary", notes_arg, log_arg],
+        "",
+    );
+    assert_eq!(
+        again.status.code(),
+        Some(0),
+        "a summary replaces a summary: {again:?}"
+    );
+    assert!(
+        fs::read_to_string(&notes)
+            .unwrap()
+            .starts_with(r#"{"diagnosis":"#)
+    );
+    // One message for a folder, naming it once.
+    let folder_refused = run(&["check", "--api", "glsl", "--summary", dir, log_arg], "");
+    let said = stderr(&folder_refused);
+    assert_eq!(said.matches(dir).count(), 1, "{said}");
+    fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn check_that_judged_no_line_exits_with_its_own_status() {
+    // Issue 31: a CI job's `check` passed on a pattern's typo.
+    const NOTHING_JUDGED: i32 = 3;
+    let line = r#"{"I":[0.6,-0.8,0],"N":[0,1,0],"eta":0.6666667,"result":[0.4,-0.916515,0]}"#;
+    let judged = run(&["check", "--api", "glsl"], line);
+    assert_eq!(judged.status.code(), Some(0), "{judged:?}");
+    for (args, input) in [
+        (vec!["check", "--api", "glsl"], ""),
+        (vec!["check", "--api", "glsl"], "\n  \n\n"),
+        (vec!["check", "--api", "glsl", "--csv"], "I,N,eta,result\n"),
+        (
+            vec![
+                "check",
+                "--api",
+                "glsl",
+                "--pattern",
+                "I={I} N={N} eta={eta} r={result}",
+            ],
+            "I=1 2 3 Nope\n",
+        ),
+        (vec!["check"], ""),
+    ] {
+        let output = run(&args, input);
+        assert_eq!(
+            output.status.code(),
+            Some(NOTHING_JUDGED),
+            "{args:?} {input:?}: {output:?}"
+        );
+        assert!(stderr(&output).contains("No line was judged"), "{output:?}");
+    }
 }

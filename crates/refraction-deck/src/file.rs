@@ -13,7 +13,7 @@ use toml::Spanned;
 
 use refraction_kernel::{Convention, IndexName, InputError, VectorName};
 use refraction_model::ExplorerState;
-use refraction_scene::{Invalid, LoadError, Scene, invalid, parse_toml, toml_text};
+use refraction_scene::{Invalid, LoadError, Numbers, Scene, invalid, parse_toml, toml_text};
 
 use super::step::{Effect, Light, Step, StepTool, StepView};
 use super::{Deck, builtin};
@@ -47,8 +47,8 @@ struct StepSpec {
     notes: String,
     #[serde(default)]
     view: StepView,
-    w: Spanned<[f64; 3]>,
-    n: Spanned<[f64; 3]>,
+    w: Spanned<Numbers<3>>,
+    n: Spanned<Numbers<3>>,
     mu_i: Spanned<f64>,
     mu_t: Spanned<f64>,
     #[serde(default)]
@@ -92,8 +92,8 @@ fn refused_at(error: &InputError, spec: &StepSpec) -> Range<usize> {
 /// The state a step gives, as the kernel takes it.
 fn state(spec: &StepSpec) -> Result<ExplorerState, Invalid> {
     ExplorerState::new(
-        DVec3::from_array(*spec.w.get_ref()),
-        DVec3::from_array(*spec.n.get_ref()),
+        DVec3::from_array(spec.w.get_ref().0),
+        DVec3::from_array(spec.n.get_ref().0),
         *spec.mu_i.get_ref(),
         *spec.mu_t.get_ref(),
         spec.convention,
@@ -219,8 +219,8 @@ fn step_spec(step: &Step) -> StepSpec {
         question: step.question.clone().map(unplaced),
         notes: step.notes.clone(),
         view: step.view,
-        w: unplaced(state.w().to_array()),
-        n: unplaced(state.n().to_array()),
+        w: unplaced(Numbers(state.w().to_array())),
+        n: unplaced(Numbers(state.n().to_array())),
         mu_i: unplaced(state.mu_i()),
         mu_t: unplaced(state.mu_t()),
         convention: state.convention(),

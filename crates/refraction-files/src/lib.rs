@@ -13,6 +13,8 @@
 
 mod atomic;
 mod capped;
+mod identity;
 
 pub use atomic::{check_writable, write_atomically};
 pub use capped::{read_capped, read_capped_bytes};
+pub use identity::{first_bytes, names_open_file, standard_input};

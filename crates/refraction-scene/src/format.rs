@@ -1152,7 +1152,7 @@ direction = [1, 0]
         );
         let polygon = |n: usize, at: usize| {
             let points = (0..n)
-                .map(|_| Spanned::new(0..0, Pair([0.0, 0.0])))
+                .map(|_| Spanned::new(0..0, crate::Numbers([0.0, 0.0])))
                 .collect();
             Spanned::new(
                 at..at,

@@ -39,6 +39,7 @@ pub use outline::{Outline, Piece};
 pub use report::Report;
 pub use shape::{Crossing, Lens, Shape, T_MIN};
 pub use source::{Light, Source, SourceKind, traced_wavelength};
+pub use spec::Numbers;
 pub use trace::{
     Budget, Counts, End, Hit, MAX_SEGMENTS, MAX_TESTS, Outcome, Path, Progress, Segment, Side,
     Stop, Trace,

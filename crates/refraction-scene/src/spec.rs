@@ -14,25 +14,44 @@ use toml::Spanned;
 
 use super::source::SourceKind;
 
-/// A point or vector as written: exactly two numbers `[x, y]` (a third is an error, not
-/// silently dropped).
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-#[serde(transparent)]
-pub(super) struct Pair(pub(super) [f64; 2]);
+/// Exactly `N` numbers as written, `[x, y]` or `[x, y, z]`: one more is an error, not silently
+/// dropped (serde reads a fixed-size array's first `N` entries and ignores the rest).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Numbers<const N: usize>(pub [f64; N]);
 
-impl<'de> Deserialize<'de> for Pair {
+impl<const N: usize> Serialize for Numbers<N> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_seq(self.0)
+    }
+}
+
+/// A point or vector of a scene: two numbers (scenes are 2D).
+pub(super) type Pair = Numbers<2>;
+
+impl<const N: usize> Numbers<N> {
+    /// What is expected, in words: `two numbers [x, y]`, `three numbers [x, y, z]`.
+    fn expected() -> &'static str {
+        match N {
+            2 => "two numbers [x, y]",
+            3 => "three numbers [x, y, z]",
+            _ => "a list of numbers",
+        }
+    }
+}
+
+impl<'de, const N: usize> Deserialize<'de> for Numbers<N> {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        struct Two;
-        impl<'de> Visitor<'de> for Two {
-            type Value = Pair;
+        struct Exactly<const N: usize>;
+        impl<'de, const N: usize> Visitor<'de> for Exactly<N> {
+            type Value = Numbers<N>;
 
             fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("two numbers [x, y]")
+                f.write_str(Numbers::<N>::expected())
             }
 
-            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Pair, A::Error> {
-                let mut xy = [0.0; 2];
-                for (found, slot) in xy.iter_mut().enumerate() {
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Numbers<N>, A::Error> {
+                let mut numbers = [0.0; N];
+                for (found, slot) in numbers.iter_mut().enumerate() {
                     *slot = seq
                         .next_element()?
                         .ok_or_else(|| de::Error::invalid_length(found, &self))?;
@@ -42,15 +61,17 @@ impl<'de> Deserialize<'de> for Pair {
                     extra += 1;
                 }
                 if extra > 0 {
+                    let why = if N == 2 { ": scenes are 2D" } else { "" };
                     return Err(de::Error::custom(format!(
-                        "expected two numbers [x, y], found {}: scenes are 2D",
-                        2 + extra
+                        "expected {}, found {}{why}",
+                        Numbers::<N>::expected(),
+                        N + extra
                     )));
                 }
-                Ok(Pair(xy))
+                Ok(Numbers(numbers))
             }
         }
-        deserializer.deserialize_seq(Two)
+        deserializer.deserialize_seq(Exactly::<N>)
     }
 }
 

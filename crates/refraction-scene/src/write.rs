@@ -5,8 +5,8 @@
 use toml::Spanned;
 
 use super::spec::{
-    CauchySpec, CircleSpec, EffectsSpec, LensSpec, LineSpec, MediumSpec, Pair, PolygonSpec,
-    SceneFile, SegmentSpec, SellmeierSpec, ShapeTable, SourceSpec, ViewSpec,
+    CauchySpec, CircleSpec, EffectsSpec, LensSpec, LineSpec, MediumSpec, Numbers, Pair,
+    PolygonSpec, SceneFile, SegmentSpec, SellmeierSpec, ShapeTable, SourceSpec, ViewSpec,
 };
 use super::{Dispersion, Effects, Light, Medium, Scene, Shape, SourceKind};
 use glam::DVec2;
@@ -17,7 +17,7 @@ fn unplaced<T>(value: T) -> Spanned<T> {
 }
 
 fn pair(v: DVec2) -> Spanned<Pair> {
-    unplaced(Pair(v.to_array()))
+    unplaced(Numbers(v.to_array()))
 }
 
 fn medium_spec(medium: &Medium) -> MediumSpec {
@@ -115,7 +115,7 @@ impl Scene {
                 lens: Some(unplaced(LensSpec {
                     center: pair(lens.center),
                     thickness: unplaced(lens.thickness),
-                    radii: unplaced(Pair(lens.radii)),
+                    radii: unplaced(Numbers(lens.radii)),
                     medium: self.medium_name(*medium),
                 })),
                 ..ShapeTable::default()

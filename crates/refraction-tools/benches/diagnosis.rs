@@ -9,7 +9,7 @@ use core::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use refraction_kernel::api::Api;
-use refraction_tools::api_check::{Code, Format, Options, Pattern, Session};
+use refraction_tools::api_check::{Code, Format, MAX_PLACEHOLDERS, Options, Pattern, Session};
 use refraction_tools::diagnosis::{Evidence, LogTally, Side};
 
 /// Lines the book's `dielectric::scatter` prints, right and with an outward normal from inside.
@@ -56,6 +56,22 @@ fn near_misses(c: &mut Criterion) {
     });
     group.bench_function("near_miss", |b| {
         b.iter(|| black_box(pattern.capture(black_box(&near))));
+    });
+    // The pattern's literals over and over, never completed (345 bytes): per byte, within
+    // three times a matching line's cost.
+    let repeated = "uv=0.642788 -0.766044 0 n=0 1 0 ratio=0.666667 front_face=1 ".repeat(6);
+    let repeated = &repeated[..345];
+    group.bench_function("repeated_literals_345_bytes", |b| {
+        b.iter(|| black_box(pattern.capture(black_box(repeated))));
+    });
+    // The largest pattern a user may give, on a 59 KB line that never completes it.
+    let placeholders: String = (0..MAX_PLACEHOLDERS - 5).map(|_| "{_} | ").collect();
+    let large =
+        format!("{placeholders}{{uv}} | {{n}} | {{etai_over_etat}} | {{refracted}} | {{entering}}");
+    let large = Pattern::parse(Api::Rtiow, &large).expect("the pattern reads");
+    let long = "1 | 0.5 0.5 | x | ".repeat(3_500);
+    group.bench_function("largest_pattern_59_kb_near_miss", |b| {
+        b.iter(|| black_box(large.capture(black_box(&long))));
     });
     group.finish();
 }

@@ -158,6 +158,13 @@ impl Finding {
     }
 }
 
+/// Whether a file that starts with `bytes` is a summary `check --summary` wrote (its JSON's
+/// first key, in the order it is written, is `diagnosis`): one that may be replaced by the next.
+#[must_use]
+pub fn looks_like_summary(bytes: &[u8]) -> bool {
+    bytes.trim_ascii_start().starts_with(br#"{"diagnosis":"#)
+}
+
 impl Summary {
     /// The diagnosis in sentences, the verdict first (one saying so when no line was judged).
     #[must_use]

@@ -35,7 +35,7 @@ pub use call::{Call, Options};
 pub use code::Code;
 pub use diagnose::{Diagnosis, diagnose};
 pub use fields::Dialect;
-pub use pattern::Pattern;
+pub use pattern::{MAX_PATTERN_BYTES, MAX_PLACEHOLDERS, Pattern};
 pub use record::Record;
 
 use crate::check::{self, Match};

@@ -4,23 +4,54 @@
 //! `{{` and `}}` are literal braces; a run of spaces in the pattern matches any run of spaces
 //! (or none). The pattern may start anywhere in the line (a timestamp before it is skipped) and
 //! must run to its end (trailing spaces aside).
+//!
+//! A pattern is user input, so it is bounded ([`MAX_PLACEHOLDERS`], [`MAX_PATTERN_BYTES`], each
+//! field named once), and matching is a search without recursion that never tries the same
+//! piece at the same place twice: its time and memory grow linearly with the line's length.
 
 use refraction_i18n::t;
 
 use super::fields::{self, Dialect, Kind};
-use super::record::from_text;
+use super::record::accepts;
 
-/// Most attempts spent matching one line before it counts as not matching.
-const BUDGET: usize = 100_000;
+/// The most placeholders (`{field}` and `{_}`) a pattern may hold: each of a dialect's fields
+/// once, and a few `{_}` for what the renderer prints between them.
+pub const MAX_PLACEHOLDERS: usize = 32;
+
+/// The longest pattern, in bytes: a printf line is a few hundred.
+pub const MAX_PATTERN_BYTES: usize = 4096;
 
 /// The longest text a field can take: a vector in its longest printed form fits easily.
 const MAX_FIELD: usize = 512;
+
+/// The most words (runs of non-space) a field's text can have: a vector's longest printed
+/// form, `Vec3 { x: 0.6, y: -0.8, z: 0.0 }`, has 9, Node's `Float32Array(3) [ 1, 2, 3 ]` 6.
+const MAX_FIELD_WORDS: usize = 12;
 
 #[derive(Clone, Debug, PartialEq)]
 enum Piece {
     Literal(String),
     Field(&'static str, Kind),
     Anything,
+}
+
+impl Piece {
+    /// The longest text the piece takes when it is not a literal.
+    fn limit(&self, line: &str) -> usize {
+        match self {
+            Self::Anything => line.len(),
+            _ => MAX_FIELD,
+        }
+    }
+
+    /// The most words the piece's text can hold: a number or a flag is one word.
+    fn max_words(&self) -> usize {
+        match self {
+            Self::Field(_, Kind::Number | Kind::Flag) => 1,
+            Self::Field(_, Kind::Vector | Kind::VectorOrNull) => MAX_FIELD_WORDS,
+            Self::Field(_, Kind::Label) | Self::Anything | Self::Literal(_) => usize::MAX,
+        }
+    }
 }
 
 /// A parsed `--pattern`.
@@ -55,38 +86,72 @@ fn literal_at(literal: &str, line: &str, at: usize) -> Option<usize> {
     Some(pos)
 }
 
+/// The pieces of `text`: literals, `{field}`s and `{_}`s.
+fn pieces_of(dialect: Dialect, text: &str) -> Result<Vec<Piece>, String> {
+    let mut pieces = Vec::new();
+    let mut chars = text.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '{' if chars.peek() == Some(&'{') => {
+                chars.next();
+                push_literal(&mut pieces, '{');
+            }
+            '}' if chars.peek() == Some(&'}') => {
+                chars.next();
+                push_literal(&mut pieces, '}');
+            }
+            '{' => {
+                let mut name = String::new();
+                loop {
+                    match chars.next() {
+                        Some('}') => break,
+                        Some(c) => name.push(c),
+                        None => return Err(t!("check-pattern-unclosed", pattern = text)),
+                    }
+                }
+                pieces.push(Pattern::field(dialect, name.trim())?);
+            }
+            _ => push_literal(&mut pieces, c),
+        }
+    }
+    Ok(pieces)
+}
+
 impl Pattern {
     /// Reads a pattern for `api`'s fields.
     ///
     /// # Errors
-    /// An unknown field, an unclosed `{`, two fields with nothing between them, or no field.
+    /// A pattern longer than [`MAX_PATTERN_BYTES`] or with more than [`MAX_PLACEHOLDERS`]
+    /// placeholders, an unknown field, a field named twice, an unclosed `{`, two fields with
+    /// nothing between them, or no field.
     pub fn parse(dialect: impl Into<Dialect>, text: &str) -> Result<Self, String> {
-        let dialect = dialect.into();
-        let mut pieces = Vec::new();
-        let mut chars = text.chars().peekable();
-        while let Some(c) = chars.next() {
-            match c {
-                '{' if chars.peek() == Some(&'{') => {
-                    chars.next();
-                    push_literal(&mut pieces, '{');
-                }
-                '}' if chars.peek() == Some(&'}') => {
-                    chars.next();
-                    push_literal(&mut pieces, '}');
-                }
-                '{' => {
-                    let mut name = String::new();
-                    loop {
-                        match chars.next() {
-                            Some('}') => break,
-                            Some(c) => name.push(c),
-                            None => return Err(t!("check-pattern-unclosed", pattern = text)),
-                        }
-                    }
-                    pieces.push(Self::field(dialect, name.trim())?);
-                }
-                _ => push_literal(&mut pieces, c),
-            }
+        if text.len() > MAX_PATTERN_BYTES {
+            let bytes = text.len();
+            return Err(t!(
+                "check-pattern-too-long",
+                bytes = bytes,
+                limit = MAX_PATTERN_BYTES
+            ));
+        }
+        let pieces = pieces_of(dialect.into(), text)?;
+        let placeholders = pieces
+            .iter()
+            .filter(|p| !matches!(p, Piece::Literal(_)))
+            .count();
+        if placeholders > MAX_PLACEHOLDERS {
+            let (count, limit) = (placeholders, MAX_PLACEHOLDERS);
+            return Err(t!("check-pattern-too-many", count = count, limit = limit));
+        }
+        let names: Vec<&str> = pieces
+            .iter()
+            .filter_map(|p| match p {
+                Piece::Field(name, _) => Some(*name),
+                _ => None,
+            })
+            .collect();
+        let twice = (1..names.len()).find(|&i| names[..i].contains(&names[i]));
+        if let Some(i) = twice {
+            return Err(t!("check-pattern-twice", field = names[i], pattern = text));
         }
         let adjacent = pieces
             .windows(2)
@@ -94,7 +159,7 @@ impl Pattern {
         if adjacent {
             return Err(t!("check-pattern-adjacent", pattern = text));
         }
-        if !pieces.iter().any(|p| matches!(p, Piece::Field(..))) {
+        if names.is_empty() {
             return Err(t!("check-pattern-no-field", pattern = text));
         }
         Ok(Self { pieces })
@@ -116,30 +181,25 @@ impl Pattern {
     /// The texts of `line`'s fields, or `None` when it does not match.
     ///
     /// The literal parts are placed first (`Skeleton`: where each piece can start so that the
-    /// rest of the pattern still fits, in one pass over the line per piece), and a field's text
-    /// is parsed only where the skeleton leaves it room: a line that almost matches (the
-    /// renderer's other log lines) is refused in time linear in its length, as a match is
-    /// found.
+    /// rest of the pattern still fits, in one pass over the line per piece), then a search
+    /// parses a field's text only where the skeleton leaves it room, and remembers every
+    /// piece and place it has ruled out: a line that almost matches (the renderer's other log
+    /// lines) is refused in time linear in its length, as a match is found.
     #[must_use]
     pub fn capture<'a>(&self, line: &'a str) -> Option<Vec<(&'static str, &'a str)>> {
-        let skeleton = Skeleton::new(&self.pieces, line);
-        let first_literal = matches!(self.pieces.first(), Some(Piece::Literal(_)));
-        let starts: Vec<usize> = if first_literal {
-            boundaries(line).filter(|&i| skeleton.fits(0, i)).collect()
+        let (found, search) = self.search(line);
+        found.then_some(search.out)
+    }
+
+    /// Whether `line` matches, and the search that found out.
+    fn search<'p, 'a>(&'p self, line: &'a str) -> (bool, Search<'p, 'a>) {
+        let mut search = Search::new(&self.pieces, line);
+        let found = if matches!(self.pieces.first(), Some(Piece::Literal(_))) {
+            boundaries(line).any(|start| search.run(start))
         } else {
-            vec![line.len() - line.trim_start().len()]
+            search.run(line.len() - line.trim_start().len())
         };
-        let mut matching = Matching {
-            pieces: &self.pieces,
-            line,
-            skeleton: &skeleton,
-            out: Vec::new(),
-            budget: BUDGET,
-        };
-        starts
-            .into_iter()
-            .any(|start| matching.from(0, start))
-            .then_some(matching.out)
+        (found, search)
     }
 }
 
@@ -150,44 +210,65 @@ fn boundaries(line: &str) -> impl Iterator<Item = usize> + '_ {
         .chain(core::iter::once(line.len()))
 }
 
+/// One bit for each piece of a pattern (and its end) at each byte offset of a line.
+struct Grid {
+    width: usize,
+    bits: Vec<u64>,
+}
+
+impl Grid {
+    fn new(pieces: usize, line: &str) -> Self {
+        let width = line.len() + 1;
+        Self {
+            width,
+            bits: vec![0; ((pieces + 1) * width).div_ceil(64)],
+        }
+    }
+
+    fn get(&self, piece: usize, at: usize) -> bool {
+        let i = piece * self.width + at;
+        self.bits[i / 64] & (1 << (i % 64)) != 0
+    }
+
+    fn set(&mut self, piece: usize, at: usize) {
+        let i = piece * self.width + at;
+        self.bits[i / 64] |= 1 << (i % 64);
+    }
+}
+
 /// Where each piece of a pattern can start in a line so that it and the pieces after it fit,
 /// with a field taking any text of its length limit: the literal parts placed, nothing parsed.
 struct Skeleton {
-    /// `fits[k][at]`: pieces `k..` fit from byte `at`.
-    fits: Vec<Vec<bool>>,
+    fits: Grid,
 }
 
 impl Skeleton {
     fn new(pieces: &[Piece], line: &str) -> Self {
         let len = line.len();
-        let mut fits = vec![vec![false; len + 1]; pieces.len() + 1];
-        for at in boundaries(line) {
-            fits[pieces.len()][at] = line[at..].trim().is_empty();
+        let mut fits = Grid::new(pieces.len(), line);
+        let trailing = line.trim_end().len();
+        for at in boundaries(line).filter(|&at| at >= trailing) {
+            fits.set(pieces.len(), at);
         }
-        // How many fitting ends lie before each byte, to ask a field about a range of ends.
+        // How many fitting places lie before each byte, to ask a field about a range of ends.
         let mut counted = vec![0_u32; len + 2];
         for (k, piece) in pieces.iter().enumerate().rev() {
-            let (before, after) = fits.split_at_mut(k + 1);
-            let (here, next) = (&mut before[k], &after[0]);
-            match piece {
-                Piece::Literal(text) => {
-                    for at in boundaries(line) {
-                        here[at] = literal_at(text, line, at).is_some_and(|end| next[end]);
+            if let Piece::Literal(text) = piece {
+                for at in boundaries(line) {
+                    if literal_at(text, line, at).is_some_and(|end| fits.get(k + 1, end)) {
+                        fits.set(k, at);
                     }
                 }
-                Piece::Field(..) | Piece::Anything => {
-                    let limit = if *piece == Piece::Anything {
-                        len
-                    } else {
-                        MAX_FIELD
-                    };
-                    for at in 0..=len {
-                        counted[at + 1] = counted[at] + u32::from(next[at]);
-                    }
-                    for at in boundaries(line) {
-                        let last = (at + limit).min(len);
-                        here[at] = at < len && counted[last + 1] > counted[at + 1];
-                    }
+                continue;
+            }
+            for at in 0..=len {
+                counted[at + 1] = counted[at] + u32::from(fits.get(k + 1, at));
+            }
+            let limit = piece.limit(line);
+            for at in boundaries(line).filter(|&at| at < len) {
+                let last = (at + limit).min(len);
+                if counted[last + 1] > counted[at + 1] {
+                    fits.set(k, at);
                 }
             }
         }
@@ -196,72 +277,139 @@ impl Skeleton {
 
     /// Whether pieces `k..` fit from byte `at`.
     fn fits(&self, k: usize, at: usize) -> bool {
-        self.fits[k][at]
+        self.fits.get(k, at)
     }
 }
 
-/// One line being matched: the captures so far and the attempts left.
-struct Matching<'p, 'a> {
+/// A piece being matched at a place: the next end to try for its text, and the words its
+/// text holds up to there.
+struct Frame {
+    index: usize,
+    at: usize,
+    next: usize,
+    words: usize,
+    in_word: bool,
+    /// How many captures were made before this piece.
+    mark: usize,
+}
+
+impl Frame {
+    fn new(index: usize, at: usize, mark: usize) -> Self {
+        Self {
+            index,
+            at,
+            next: at,
+            words: 0,
+            in_word: false,
+            mark,
+        }
+    }
+}
+
+/// One line being matched: the skeleton, what has been ruled out, and the captures so far.
+struct Search<'p, 'a> {
     pieces: &'p [Piece],
     line: &'a str,
-    skeleton: &'p Skeleton,
+    skeleton: Skeleton,
+    /// Pieces found not to match from a place.
+    failed: Grid,
+    /// For each `{_}`, the first place it was found not to match from: it cannot match from any
+    /// later place either, as its texts from there are a part of those it tried.
+    anything_fails_from: Vec<usize>,
     out: Vec<(&'static str, &'a str)>,
-    budget: usize,
+    /// Texts parsed as a field's value: the work that grows with the line.
+    parsed: usize,
 }
 
-impl Matching<'_, '_> {
-    /// Matches pieces `index..` at byte `at`, pushing captures.
-    fn from(&mut self, index: usize, at: usize) -> bool {
-        if self.budget == 0 || !self.skeleton.fits(index, at) {
-            return false;
-        }
-        self.budget -= 1;
-        match self.pieces.get(index) {
-            None => true,
-            Some(Piece::Literal(text)) => {
-                literal_at(text, self.line, at).is_some_and(|end| self.from(index + 1, end))
-            }
-            Some(_) => self.field_from(index, at),
+impl<'p, 'a> Search<'p, 'a> {
+    fn new(pieces: &'p [Piece], line: &'a str) -> Self {
+        Self {
+            pieces,
+            line,
+            skeleton: Skeleton::new(pieces, line),
+            failed: Grid::new(pieces.len(), line),
+            anything_fails_from: vec![usize::MAX; pieces.len()],
+            out: Vec::new(),
+            parsed: 0,
         }
     }
 
-    /// Tries every end for the field at `index` (shortest first) where the rest of the pattern
-    /// fits, parsing the field's text only there.
-    fn field_from(&mut self, index: usize, at: usize) -> bool {
-        let (piece, line) = (&self.pieces[index], self.line);
-        let limit = if *piece == Piece::Anything {
-            line.len()
-        } else {
-            MAX_FIELD
-        };
-        let ends: Vec<usize> = boundaries(line)
-            .filter(|&end| end > at && end - at <= limit)
-            .filter(|&end| self.skeleton.fits(index + 1, end))
-            .collect();
-        for end in ends {
-            self.budget = self.budget.saturating_sub(1);
-            let text = line[at..end].trim();
-            let fits = match piece {
-                Piece::Field(name, kind) => {
-                    !text.is_empty() && from_text(*kind, name, text).is_ok()
-                }
-                _ => true,
-            };
-            if fits {
-                let mark = self.out.len();
-                if let Piece::Field(name, _) = piece {
-                    self.out.push((name, text));
-                }
-                if self.from(index + 1, end) {
-                    return true;
-                }
-                self.out.truncate(mark);
+    /// Whether pieces `index..` may still match from `at`.
+    fn open(&self, index: usize, at: usize) -> bool {
+        self.skeleton.fits(index, at)
+            && !self.failed.get(index, at)
+            && self
+                .anything_fails_from
+                .get(index)
+                .is_none_or(|&from| at < from)
+    }
+
+    /// Matches the whole pattern from `start`, depth first with a stack of its own, leaving
+    /// the captures in `out`.
+    fn run(&mut self, start: usize) -> bool {
+        if !self.open(0, start) {
+            return false;
+        }
+        let mut stack = vec![Frame::new(0, start, 0)];
+        while let Some(top) = stack.last_mut() {
+            if top.index == self.pieces.len() {
+                return true;
             }
-            if self.budget == 0 {
-                return false;
+            if let Some(end) = self.next_end(top) {
+                let next = Frame::new(top.index + 1, end, self.out.len());
+                stack.push(next);
+            } else if let Some(done) = stack.pop() {
+                self.failed.set(done.index, done.at);
+                if self.pieces[done.index] == Piece::Anything {
+                    let from = &mut self.anything_fails_from[done.index];
+                    *from = (*from).min(done.at);
+                }
             }
         }
         false
+    }
+
+    /// The next end for `frame`'s piece after those tried, where the rest may still match
+    /// (its capture pushed); `None` when none is left.
+    fn next_end(&mut self, frame: &mut Frame) -> Option<usize> {
+        self.out.truncate(frame.mark);
+        let (piece, line, index) = (&self.pieces[frame.index], self.line, frame.index);
+        if let Piece::Literal(text) = piece {
+            // A literal has one place to end: tried once.
+            if frame.next == usize::MAX {
+                return None;
+            }
+            frame.next = usize::MAX;
+            return literal_at(text, line, frame.at).filter(|&end| self.open(index + 1, end));
+        }
+        let (bytes, last) = (
+            line.as_bytes(),
+            (frame.at + piece.limit(line)).min(line.len()),
+        );
+        while frame.next < last {
+            let space = bytes[frame.next].is_ascii_whitespace();
+            frame.words += usize::from(!space && !frame.in_word);
+            frame.in_word = !space;
+            frame.next += 1;
+            if frame.words > piece.max_words() {
+                frame.next = last;
+                return None;
+            }
+            let end = frame.next;
+            if !line.is_char_boundary(end) || !self.open(index + 1, end) {
+                continue;
+            }
+            let text = line[frame.at..end].trim();
+            if let Piece::Field(name, kind) = piece {
+                self.parsed += 1;
+                if text.is_empty() || !accepts(*kind, text) {
+                    continue;
+                }
+                self.out.push((name, text));
+            }
+            return Some(end);
+        }
+        None
     }
 }
 
@@ -335,6 +483,56 @@ mod tests {
         assert_eq!(pattern.capture(near), None);
         let right = near.replace("reflected", "refracted");
         assert_eq!(pattern.capture(&right).unwrap()[3].1, "0.6 0.7 0");
+    }
+
+    #[test]
+    fn a_field_named_twice_or_a_pattern_past_its_limits_is_refused() {
+        let e = Pattern::parse(Api::Glsl, "I={I} N={N} again={I} eta={eta}").unwrap_err();
+        assert!(e.contains("{I} is named twice"), "{e}");
+        // Issue 31: 10,000 placeholders overflowed a worker's stack; now a usage error.
+        let many = "{_} ".repeat(10_000) + "{I}";
+        let e = Pattern::parse(Api::Glsl, &many).unwrap_err();
+        assert!(e.contains("at most 4096 are read"), "{e}");
+        let many = "{_} ".repeat(MAX_PLACEHOLDERS) + "{I}";
+        let e = Pattern::parse(Api::Glsl, &many).unwrap_err();
+        assert!(e.contains("33 placeholders: at most 32"), "{e}");
+        let most = "{_} ".repeat(MAX_PLACEHOLDERS - 1) + "{I}";
+        assert!(Pattern::parse(Api::Glsl, &most).is_ok());
+    }
+
+    /// Fields parsed to refuse `line`, which must not match.
+    fn parsed_to_refuse(pattern: &Pattern, line: &str) -> usize {
+        let (found, search) = pattern.search(line);
+        assert!(!found, "{line}");
+        search.parsed
+    }
+
+    #[test]
+    fn near_misses_cost_work_linear_in_their_length() {
+        // Issue 31: a line that repeats the pattern's literals without completing it cost 11
+        // times a matching line per byte, and a 59 KB line with a large pattern 7.5 s.
+        let pattern = rtiow(
+            "uv={uv} n={n} ratio={etai_over_etat} front_face={entering} refracted={refracted}",
+        );
+        let unit = "uv=0.642788 -0.766044 0 n=0 1 0 ratio=0.666667 front_face=1 ";
+        let short = parsed_to_refuse(&pattern, &unit.repeat(50));
+        let long = parsed_to_refuse(&pattern, &unit.repeat(100));
+        assert!(
+            long <= 2 * short + 8,
+            "{short} fields parsed for 50 repeats, {long} for 100"
+        );
+        let placeholders: String = (0..MAX_PLACEHOLDERS - 5).map(|_| "{_} | ").collect();
+        let large = rtiow(&format!(
+            "{placeholders}{{uv}} | {{n}} | {{etai_over_etat}} | {{refracted}} | {{entering}}"
+        ));
+        let line = "1 | 0.5 0.5 | x | ".repeat(3_500);
+        assert!(line.len() > 59_000);
+        let short = parsed_to_refuse(&large, &line[..line.len() / 2]);
+        let long = parsed_to_refuse(&large, &line);
+        assert!(
+            long <= 2 * short + 64,
+            "{short} fields parsed for half the line, {long} for all"
+        );
     }
 
     #[test]

@@ -43,6 +43,18 @@ fn is_null_text(text: &str) -> bool {
     )
 }
 
+/// Whether `text` reads as a value of `kind`: [`from_text`] without the message it would
+/// write, for a pattern that tries many texts.
+pub(super) fn accepts(kind: Kind, text: &str) -> bool {
+    match kind {
+        Kind::VectorOrNull if is_null_text(text) => true,
+        Kind::Vector | Kind::VectorOrNull => parse_vector(text).is_ok(),
+        Kind::Number => parse_number(text).is_ok(),
+        Kind::Flag => flag_text(text).is_some(),
+        Kind::Label => true,
+    }
+}
+
 /// Reads `text` as a value of `kind`, with its significant digits.
 ///
 /// # Errors
