@@ -118,30 +118,61 @@ pub fn handout(deck: &Deck) -> Result<Vec<u8>, String> {
     handout::pdf(&deck.title, &pages).map_err(|e| e.to_string())
 }
 
+/// The name of step `number`'s picture (`step-01.svg`).
+fn step_file(number: usize) -> String {
+    format!("step-{number:02}.{}", ImageFormat::Svg.extension())
+}
+
 /// Writes each step of `deck` as `step-01.svg`, `step-02.svg`, … in `folder` (made if it is
-/// missing), at `size` pixels.
+/// missing), at `size` pixels: every picture is drawn before any is written, then all are
+/// written or none. Pictures of later steps that a longer deck left there (ours: our SVG's
+/// first line) are removed, so that the folder holds this deck's steps only.
 fn pictures(deck: &Deck, folder: &Path, (width, height): (u32, u32)) -> Result<(), String> {
-    check_size(width, height).map_err(|e| e.to_string())?;
+    let size = Vec2::new(width as f32, height as f32);
+    let texts = deck
+        .steps
+        .iter()
+        .map(|step| {
+            let primitives = picture(deck, step, size)?;
+            svg::document(width, height, |_, _| primitives).map_err(|e| e.to_string())
+        })
+        .collect::<Result<Vec<String>, String>>()?;
     std::fs::create_dir_all(folder)
         .map_err(|e| format!("cannot make the folder {}: {e}", folder.display()))?;
-    for (i, step) in deck.steps.iter().enumerate() {
-        let path = folder.join(format!(
-            "step-{:02}.{}",
-            i + 1,
-            ImageFormat::Svg.extension()
-        ));
-        let primitives = picture(deck, step, Vec2::new(width as f32, height as f32))?;
-        let text = svg::document(width, height, |_, _| primitives).map_err(|e| e.to_string())?;
-        refraction_files::write_atomically(&path, text.as_bytes()).map_err(|e| e.to_string())?;
-    }
+    let paths: Vec<PathBuf> = (1..=texts.len())
+        .map(|i| folder.join(step_file(i)))
+        .collect();
+    let files: Vec<(&Path, &[u8])> = paths
+        .iter()
+        .zip(&texts)
+        .map(|(path, text)| (path.as_path(), text.as_bytes()))
+        .collect();
+    refraction_files::write_all_atomically(&files).map_err(|e| e.to_string())?;
+    remove_stale_steps(folder, texts.len());
     Ok(())
+}
+
+/// Removes `step-NN.svg` for every step after `count` while one is there and ours (it starts
+/// as [`svg::document`] writes it). What cannot be removed stays: the new steps are written.
+fn remove_stale_steps(folder: &Path, count: usize) {
+    let header = svg::document_header();
+    for number in count + 1.. {
+        let path = folder.join(step_file(number));
+        match refraction_files::first_bytes(&path, header.len() as u64) {
+            Ok(Some(start)) if start == header.as_bytes() => {
+                std::fs::remove_file(&path).ok();
+            }
+            _ => break,
+        }
+    }
 }
 
 /// Runs `render --lesson NAME|FILE --out OUT`: the deck's handout (`OUT` ending in `.pdf`) or
 /// its steps as SVG pictures of `size` (`OUT` a folder). The output is checked before the deck
 /// is drawn.
 pub fn render(lesson: &str, out: &Path, size: (u32, u32)) -> ExitCode {
-    let drawn = out_of(out).and_then(|to| {
+    let checked = check_size(size.0, size.1).map_err(|e| e.to_string());
+    let drawn = checked.and_then(|()| out_of(out)).and_then(|to| {
         let deck = Deck::load(lesson).map_err(|e| e.to_string())?;
         match to {
             Out::Handout(path) => {

@@ -65,7 +65,8 @@ fn stderr(output: &Output) -> String {
 fn output_discarded_by_another_program_is_written_and_a_full_stdout_reported() {
     // Issue 23: Python's subprocess.DEVNULL and Go's exec open /dev/null read-write, as the
     // runtime does for a stdout closed with >&-: the output goes there, it is not refused.
-    let check = r#"{"w":[0.6,-0.8,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5,"t_yours":[0.4,-0.9165151,0]}"#;
+    let check =
+        r#"{"w":[0.6,-0.8,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5,"t_yours":[0.4,-0.9165151,0]}"#;
     for (args, stdin) in [("solve", GOOD), ("trace --json", ""), ("check", check)] {
         let output = with_stdout_closed(args, stdin);
         assert_eq!(output.status.code(), Some(0), "{args}: {output:?}");

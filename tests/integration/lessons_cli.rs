@@ -114,6 +114,66 @@ fn a_folder_gets_one_svg_per_step_and_a_bad_out_or_deck_is_refused() {
     std::fs::remove_dir_all(&folder).unwrap();
 }
 
+/// The names in `folder`, sorted.
+fn names_in(folder: &std::path::Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(folder)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn a_folder_of_steps_is_written_whole_or_not_at_all_and_keeps_no_stale_step() {
+    // Issue 31: steps 1-2 were replaced before step 3 failed, and a shorter deck left a longer
+    // one's step-06.svg behind.
+    let folder = cli::folder("lessons-cli", "all-or-nothing");
+    let out_dir = format!("{}/", folder.display());
+    let six = render(&["--lesson", "total-internal-reflection", "--out", &out_dir]);
+    assert!(six.status.success(), "{six:?}");
+    std::fs::write(folder.join("step-09.svg"), "my own picture").unwrap();
+    let five = render(&["--lesson", "snell", "--out", &out_dir]);
+    assert!(five.status.success(), "{five:?}");
+    let mut expected: Vec<String> = (1..=5).map(|i| format!("step-{i:02}.svg")).collect();
+    expected.push("step-09.svg".to_owned());
+    assert_eq!(
+        names_in(&folder),
+        expected,
+        "step-06 removed, a file not ours kept"
+    );
+    let before = std::fs::read(folder.join("step-01.svg")).unwrap();
+    std::fs::remove_file(folder.join("step-03.svg")).unwrap();
+    std::fs::create_dir(folder.join("step-03.svg")).unwrap();
+    let failed = render(&["--lesson", "sign-conventions", "--out", &out_dir]);
+    assert_eq!(failed.status.code(), Some(2), "{failed:?}");
+    assert!(String::from_utf8_lossy(&failed.stderr).contains("step-03.svg: it is a directory"));
+    assert_eq!(
+        std::fs::read(folder.join("step-01.svg")).unwrap(),
+        before,
+        "nothing written"
+    );
+    assert!(
+        !names_in(&folder)
+            .iter()
+            .any(|n| n.starts_with(".refraction-"))
+    );
+    for (width, height) in [("0", "600"), ("800", "999999")] {
+        let pdf = folder.join("handout.pdf");
+        let args = [
+            "--lesson", "snell", "--width", width, "--height", height, "--out",
+        ];
+        let refused = render(&[&args[..], &[pdf.to_str().unwrap()]].concat());
+        assert_eq!(
+            refused.status.code(),
+            Some(2),
+            "{width}×{height}: {refused:?}"
+        );
+        assert!(!pdf.exists());
+    }
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
 #[test]
 fn the_window_refuses_a_deck_it_cannot_read_before_it_opens() {
     let out = Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))

@@ -241,8 +241,10 @@ impl Deck {
     /// no step or more than [`MAX_STEPS`], a state the kernel refuses, an effect named twice,
     /// an empty question, or a scene that cannot be opened.
     pub fn from_toml(text: &str, file: &str, folder: Option<&Path>) -> Result<Self, LoadError> {
+        let at = |e: Invalid| LoadError::in_text(text, file, Some(e.span), e.message);
+        one_deck_table(text).map_err(at)?;
         let parsed: DeckFile = parse_toml(text, file)?;
-        build(&parsed, folder).map_err(|e| LoadError::in_text(text, file, Some(e.span), e.message))
+        build(&parsed, folder).map_err(at)
     }
 
     /// A built-in deck by name ([`builtin::names`]), or else a deck file by path (at most
@@ -284,6 +286,24 @@ impl Deck {
         };
         toml::to_string_pretty(&file)
     }
+}
+
+/// Refuses `[[deck]]`, an array of tables where the format has one table (the TOML reader would
+/// only say that a table is not a number).
+fn one_deck_table(text: &str) -> Result<(), Invalid> {
+    let mut start = 0;
+    for line in text.split_inclusive('\n') {
+        let trimmed = line.trim();
+        if trimmed.replace(' ', "") == "[[deck]]" {
+            let at = start + line.find('[').unwrap_or(0);
+            return invalid(
+                at..at + trimmed.len(),
+                "`[deck]` is one table: write `[deck]`, not `[[deck]]` (each step is a `[[step]]`)",
+            );
+        }
+        start += line.len();
+    }
+    Ok(())
 }
 
 /// Whether `text` is a deck file rather than a scene: it has a `[deck]` table.
@@ -365,5 +385,40 @@ mod tests {
         );
         assert!(error("[deck]\nversion = 1\n").contains("the deck has no step"));
         assert!(error("[deck]\nversion = \"one\"\n").starts_with("lesson.toml:2:11: invalid type"));
+    }
+
+    #[test]
+    fn a_vector_holds_exactly_three_numbers() {
+        // Issue 31: a fourth entry (even a string or a table) was read and dropped.
+        let at = |from: &str, to: &str| error(&MINIMAL.replace(from, to));
+        for (w, column) in [
+            ("[0.6, -0.8, 0, 1]", 5),
+            ("[0.6, -0.8, 0, \"x\", {a = 1}]", 5),
+        ] {
+            let e = at("w = [0.6, -0.8, 0]", &format!("w = {w}"));
+            assert!(
+                e.starts_with(&format!(
+                    "lesson.toml:6:{column}: expected three numbers [x, y, z], found"
+                )),
+                "{e}"
+            );
+        }
+        let two = at("n = [0, 1, 0]", "n = [0, 1]");
+        assert!(
+            two.starts_with("lesson.toml:7:5: invalid length 2"),
+            "{two}"
+        );
+    }
+
+    #[test]
+    fn odd_tables_are_refused_with_their_place() {
+        let deep = format!("[deck]\nversion = 1\n{}b = 1\n", "a.".repeat(200));
+        let e = error(&deep);
+        assert!(e.starts_with("lesson.toml:3:"), "{e}");
+        let array = error("[[deck]]\nversion = 1\n");
+        assert!(
+            array.starts_with("lesson.toml:1:1: `[deck]` is one table"),
+            "{array}"
+        );
     }
 }

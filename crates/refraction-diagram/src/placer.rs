@@ -466,33 +466,55 @@ fn segments_cross(p0: Vec2, p1: Vec2, q0: Vec2, q1: Vec2) -> bool {
     d1 * d2 <= 0.0 && d3 * d4 <= 0.0 && (d1 != 0.0 || d2 != 0.0 || d3 != 0.0 || d4 != 0.0)
 }
 
-/// `text` broken into lines no wider than `width` pixels at font size `size`, between words
-/// (a word wider than `width` gets a line of its own). Existing line breaks are kept.
+/// `text` broken into lines no wider than `width` pixels at font size `size`, between words,
+/// and inside a word only where it is wider than a line on its own. Existing line breaks are
+/// kept. Linear in the text's length: each character is measured once or twice.
 #[must_use]
 pub fn wrap(face: &Typeface, text: &str, size: f32, width: f32) -> String {
-    // Widths add up (the font is measured without kerning): each word is measured once.
+    // Widths add up (the font is measured without kerning).
     let space = face.width(" ", size);
     let mut lines: Vec<String> = Vec::new();
     for paragraph in text.lines() {
         let mut line = String::new();
         let mut line_width = 0.0;
         for word in paragraph.split(' ') {
-            let word_width = face.width(word, size);
-            if !line.is_empty() && line_width + space + word_width > width {
-                lines.push(core::mem::replace(&mut line, word.to_owned()));
-                line_width = word_width;
-            } else {
-                if !line.is_empty() {
-                    line.push(' ');
-                    line_width += space;
+            for (piece, piece_width) in pieces(face, word, size, width) {
+                if !line.is_empty() && line_width + space + piece_width > width {
+                    lines.push(core::mem::replace(&mut line, piece.to_owned()));
+                    line_width = piece_width;
+                } else {
+                    if !line.is_empty() {
+                        line.push(' ');
+                        line_width += space;
+                    }
+                    line.push_str(piece);
+                    line_width += piece_width;
                 }
-                line.push_str(word);
-                line_width += word_width;
             }
         }
         lines.push(line);
     }
     lines.join("\n")
+}
+
+/// `word` with its width, or cut into pieces no wider than `width` where it is wider (each
+/// piece at least one character), with theirs.
+fn pieces<'a>(face: &Typeface, word: &'a str, size: f32, width: f32) -> Vec<(&'a str, f32)> {
+    let whole = face.width(word, size);
+    if whole <= width {
+        return vec![(word, whole)];
+    }
+    let (mut out, mut start, mut used) = (Vec::new(), 0, 0.0);
+    for (i, ch) in word.char_indices() {
+        let advance = face.width(ch.encode_utf8(&mut [0; 4]), size);
+        if used + advance > width && i > start {
+            out.push((&word[start..i], used));
+            (start, used) = (i, 0.0);
+        }
+        used += advance;
+    }
+    out.push((&word[start..], used));
+    out
 }
 
 #[cfg(test)]

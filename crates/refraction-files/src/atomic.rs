@@ -130,11 +130,12 @@ fn temporary_prefix(path: &Path) -> String {
 /// (`kill -9` skips the removal): no writer takes this long between creating and renaming it.
 const STALE: core::time::Duration = core::time::Duration::from_mins(10);
 
-/// Removes the temporary files for `path` in `folder` that a killed writer left behind: only
-/// regular files named as [`temporary_prefix`] names them and older than [`STALE`]. What cannot
-/// be removed is left; the write goes on either way.
-fn clean_stale(folder: &Path, path: &Path) {
-    let prefix = temporary_prefix(path);
+/// Removes the temporary files in `folder` that a killed writer of ours left behind, whatever
+/// file they were to become (a numbered export is never written under the same name again):
+/// only regular files named as [`temporary_prefix`] names them and older than [`STALE`]. What
+/// cannot be removed is left; the write goes on either way.
+fn clean_stale(folder: &Path) {
+    let prefix = ".refraction-";
     let Ok(entries) = fs::read_dir(folder) else {
         return;
     };
@@ -142,7 +143,7 @@ fn clean_stale(folder: &Path, path: &Path) {
         let name = entry.file_name().to_string_lossy().into_owned();
         // The temporary crate writes the suffix as given, in lower case.
         let ours =
-            name.starts_with(&prefix) && Path::new(&name).extension().is_some_and(|e| e == "tmp");
+            name.starts_with(prefix) && Path::new(&name).extension().is_some_and(|e| e == "tmp");
         let stale = entry.metadata().is_ok_and(|m| {
             m.is_file()
                 && m.modified()
@@ -176,6 +177,24 @@ fn temporary_in(folder: &Path, path: &Path) -> io::Result<tempfile::NamedTempFil
     })
 }
 
+/// A temporary file beside `path` that `write` has filled and flushed to disk, ready to be
+/// renamed over it; dropping it removes it.
+fn stage(
+    path: &Path,
+    permissions: Option<Permissions>,
+    write: impl FnOnce(&mut File) -> io::Result<()>,
+) -> io::Result<tempfile::NamedTempFile> {
+    let folder = folder_of(path)?;
+    clean_stale(folder);
+    let mut temporary = temporary_in(folder, path)?;
+    if let Some(permissions) = permissions {
+        temporary.as_file().set_permissions(permissions)?;
+    }
+    write(temporary.as_file_mut())?;
+    temporary.as_file().sync_all()?;
+    Ok(temporary)
+}
+
 /// Writes `path` through a temporary file that `write` fills, renamed over it at the end. The
 /// temporary file is removed on every error (dropping it removes it), so `path` is either the
 /// old file or the new one, whole.
@@ -184,15 +203,9 @@ fn replace(
     permissions: Option<Permissions>,
     write: impl FnOnce(&mut File) -> io::Result<()>,
 ) -> io::Result<()> {
-    let folder = folder_of(path)?;
-    clean_stale(folder, path);
-    let mut temporary = temporary_in(folder, path)?;
-    if let Some(permissions) = permissions {
-        temporary.as_file().set_permissions(permissions)?;
-    }
-    write(temporary.as_file_mut())?;
-    temporary.as_file().sync_all()?;
-    temporary.persist(path).map_err(|e| e.error)?;
+    stage(path, permissions, write)?
+        .persist(path)
+        .map_err(|e| e.error)?;
     Ok(())
 }
 
@@ -230,6 +243,36 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> io::Result<()> {
         Err(e) => Err(e),
     }
     .map_err(|e| named(path, &e))
+}
+
+/// Writes every one of `files` (a path and its bytes) or none: each into a temporary file
+/// beside it, and only once all are written and flushed to disk is each renamed over its path.
+/// A failure before that (a refused path, a full disk) leaves every path as it was and no
+/// temporary file behind. Only new or regular files are written this way: a FIFO or device
+/// cannot be written all or nothing, and is refused.
+///
+/// # Errors
+/// As [`write_atomically`]'s, naming the path at fault; a FIFO or a character device.
+pub fn write_all_atomically(files: &[(&Path, &[u8])]) -> io::Result<()> {
+    let mut staged = Vec::with_capacity(files.len());
+    for &(path, bytes) in files {
+        let permissions = match target(path) {
+            Ok(Target::Replace(permissions)) => permissions,
+            Ok(Target::Stream) => Err(refuse(
+                io::ErrorKind::Unsupported,
+                "it is a FIFO or a device, which is not written with other files".to_owned(),
+            ))
+            .map_err(|e| named(path, &e))?,
+            Err(e) => return Err(named(path, &e)),
+        };
+        let temporary =
+            stage(path, permissions, |f| f.write_all(bytes)).map_err(|e| named(path, &e))?;
+        staged.push((temporary, path));
+    }
+    for (temporary, path) in staged {
+        temporary.persist(path).map_err(|e| named(path, &e.error))?;
+    }
+    Ok(())
 }
 
 /// Checks now what [`write_atomically`] would refuse later, so that a command can find a bad
@@ -272,6 +315,27 @@ mod tests {
     }
 
     #[test]
+    fn files_written_together_are_all_written_or_none() {
+        let folder = folder("together");
+        let (a, b) = (folder.join("a.svg"), folder.join("b.svg"));
+        fs::write(&a, "old a").unwrap();
+        write_all_atomically(&[(&a, b"new a"), (&b, b"new b")]).unwrap();
+        assert_eq!(fs::read_to_string(&a).unwrap(), "new a");
+        assert_eq!(fs::read_to_string(&b).unwrap(), "new b");
+        let in_the_way = folder.join("c.svg");
+        fs::create_dir(&in_the_way).unwrap();
+        let e = write_all_atomically(&[(&a, b"newer a"), (&in_the_way, b"c")]).unwrap_err();
+        assert!(e.to_string().contains("c.svg: it is a directory"), "{e}");
+        assert_eq!(fs::read_to_string(&a).unwrap(), "new a", "nothing written");
+        assert_eq!(
+            entries(&folder),
+            ["a.svg", "b.svg", "c.svg"],
+            "no temporary left"
+        );
+        fs::remove_dir_all(&folder).unwrap();
+    }
+
+    #[test]
     fn a_temporary_file_a_killed_writer_left_is_cleaned_on_the_next_write() {
         // Issue 23: kill -9 between creating and renaming leaves a hidden temporary file.
         let folder = folder("stale");
@@ -289,12 +353,8 @@ mod tests {
         write_atomically(&folder.join("out.txt"), b"new").unwrap();
         assert_eq!(
             entries(&folder),
-            [
-                ".refraction-other.txt-left.tmp",
-                ".refraction-out.txt-busy.tmp",
-                "out.txt"
-            ],
-            "only this file's stale one goes; a recent one may be another writer's"
+            [".refraction-out.txt-busy.tmp", "out.txt"],
+            "every stale one goes, whatever file it was for; a recent one may be another writer's"
         );
         fs::remove_dir_all(&folder).unwrap();
     }

@@ -15,6 +15,6 @@ mod atomic;
 mod capped;
 mod identity;
 
-pub use atomic::{check_writable, write_atomically};
+pub use atomic::{check_writable, write_all_atomically, write_atomically};
 pub use capped::{read_capped, read_capped_bytes};
 pub use identity::{first_bytes, names_open_file, standard_input};

@@ -56,9 +56,14 @@ impl AnimationSpec {
     pub fn check(&self) -> Result<(), RenderError> {
         let (fewest, most) = FRAME_LIMITS;
         if !(fewest..=most).contains(&self.frames) {
+            let frames = self.frames;
+            let counted = if frames == 1 {
+                "1 frame".to_owned()
+            } else {
+                format!("{frames} frames")
+            };
             return Err(RenderError::BadAnimation(format!(
-                "{} frames is not allowed: an animation has {fewest} to {most} frames",
-                self.frames
+                "{counted} is not allowed: an animation has {fewest} to {most} frames"
             )));
         }
         let (slowest, fastest) = FPS_LIMITS;
@@ -190,7 +195,8 @@ mod tests {
     fn bad_frames_and_rates_are_refused_by_value() {
         let mut spec = AnimationSpec::new(Animation::Mu, (320, 180));
         spec.frames = 1;
-        assert!(spec.check().unwrap_err().to_string().contains("1 frames"));
+        let one = spec.check().unwrap_err().to_string();
+        assert!(one.contains("1 frame is not allowed"), "{one}");
         spec.frames = 24;
         spec.fps = 0;
         assert!(spec.check().unwrap_err().to_string().contains("1 to 50"));

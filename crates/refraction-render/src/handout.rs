@@ -78,6 +78,8 @@ fn words(text: String, at: Vec2, size: f32) -> Label {
 fn page_words(face: &Typeface, page: &Page) -> Vec<Primitive> {
     let column_x = DIAGRAM_AT.x + DIAGRAM_WIDTH + 20.0;
     let column = PAGE.x - MARGIN - column_x;
+    let title_width = PAGE.x - 2.0 * MARGIN;
+    let title = wrap(face, &page.title, TITLE_SIZE, title_width);
     let mut labels = vec![
         words(
             page.heading.clone(),
@@ -85,7 +87,7 @@ fn page_words(face: &Typeface, page: &Page) -> Vec<Primitive> {
             HEADING_SIZE,
         ),
         words(
-            wrap(face, &page.title, TITLE_SIZE, PAGE.x - 2.0 * MARGIN),
+            at_most(face, &title, TITLE_SIZE, title_width, 2),
             Vec2::new(MARGIN, MARGIN + 18.0),
             TITLE_SIZE,
         ),
@@ -95,12 +97,31 @@ fn page_words(face: &Typeface, page: &Page) -> Vec<Primitive> {
     for (label, text) in sections.filter(|(_, text)| !text.trim().is_empty()) {
         labels.push(words(label.clone(), Vec2::new(column_x, y), TEXT_SIZE));
         y += face.line_height(TEXT_SIZE) * 1.3;
+        let room = ((PAGE.y - MARGIN - y) / face.line_height(TEXT_SIZE)).max(1.0) as usize;
         let body = wrap(face, text, TEXT_SIZE, column);
+        let body = at_most(face, &body, TEXT_SIZE, column, room);
         let lines = body.lines().count() as f32;
         labels.push(words(body, Vec2::new(column_x, y), TEXT_SIZE));
         y += face.line_height(TEXT_SIZE) * (lines + 1.0);
     }
     labels.into_iter().map(Primitive::Text).collect()
+}
+
+/// The first `count` lines of `text` (wrapped to `width` at `size`), the last ending in `…`
+/// when some are left out: what fits on the page of a text that runs past it.
+fn at_most(face: &Typeface, text: &str, size: f32, width: f32, count: usize) -> String {
+    let mut lines: Vec<&str> = text.lines().take(count + 1).collect();
+    if lines.len() <= count {
+        return lines.join("\n");
+    }
+    lines.truncate(count);
+    let mut last = lines.pop().unwrap_or_default().to_owned();
+    while !last.is_empty() && face.width(&last, size) + face.width("…", size) > width {
+        last.pop();
+    }
+    last.push('…');
+    lines.push(&last);
+    lines.join("\n")
 }
 
 /// The page as an SVG document, [`PAGE`] points wide and high.
@@ -179,5 +200,119 @@ pub fn pdf(title: &str, pages: &[Page]) -> Result<Vec<u8>, RenderError> {
         .title(TextStr(title))
         // untranslated: the producer's name in the file's metadata.
         .producer(TextStr("refraction-explorer (svg2pdf)"));
-    Ok(pdf.finish())
+    Ok(sorted_resources(pdf.finish()))
+}
+
+/// Whether `line` is one entry of a resource dictionary: `/Name N 0 R`.
+fn is_resource_entry(line: &[u8]) -> bool {
+    let line = line.trim_ascii();
+    let Some(rest) = line.strip_prefix(b"/") else {
+        return false;
+    };
+    let mut words = rest.split(|&b| b == b' ');
+    let name = words.next().unwrap_or_default();
+    let number = words.next().unwrap_or_default();
+    !name.is_empty()
+        && name.iter().all(u8::is_ascii_alphanumeric)
+        && !number.is_empty()
+        && number.iter().all(u8::is_ascii_digit)
+        && words.next() == Some(b"0")
+        && words.next() == Some(b"R")
+        && words.next().is_none()
+}
+
+/// `pdf` with the entries of each resource dictionary in order: svg2pdf writes them from a
+/// hash map, so that two runs would order them differently. Each run of `/Name N 0 R` lines
+/// outside the streams is sorted where it stands, so every object keeps its length and place
+/// and the cross-reference table stays right: the same handout gives the same bytes.
+fn sorted_resources(mut pdf: Vec<u8>) -> Vec<u8> {
+    let mut lines: Vec<core::ops::Range<usize>> = Vec::new();
+    let mut start = 0;
+    let mut in_stream = false;
+    while start < pdf.len() {
+        let end = pdf[start..]
+            .iter()
+            .position(|&b| b == b'\n')
+            .map_or(pdf.len(), |i| start + i + 1);
+        let line = &pdf[start..end];
+        let trimmed = line.trim_ascii();
+        if in_stream {
+            in_stream = trimmed != b"endstream";
+        } else if trimmed == b"stream" {
+            in_stream = true;
+        }
+        if !in_stream && is_resource_entry(line) && line.ends_with(b"\n") {
+            lines.push(start..end);
+        } else {
+            sort_run(&mut pdf, &mut lines);
+        }
+        start = end;
+    }
+    sort_run(&mut pdf, &mut lines);
+    pdf
+}
+
+/// Sorts the consecutive lines `run` of `pdf` in place, and empties `run`.
+fn sort_run(pdf: &mut [u8], run: &mut Vec<core::ops::Range<usize>>) {
+    if let (Some(first), Some(last)) = (run.first(), run.last()) {
+        let span = first.start..last.end;
+        let mut entries: Vec<Vec<u8>> = run.iter().map(|r| pdf[r.clone()].to_vec()).collect();
+        entries.sort();
+        pdf[span].copy_from_slice(&entries.concat());
+    }
+    run.clear();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn resource_entries_are_sorted_in_place_and_streams_left_alone() {
+        let pdf = b"<<\n  /ExtGState <<\n    /gs14 17 0 R\n    /gs1 4 0 R\n  >>\n>>\nstream\n/b 2 0 R\n/a 1 0 R\nendstream\n";
+        let sorted = sorted_resources(pdf.to_vec());
+        assert_eq!(sorted.len(), pdf.len());
+        assert_eq!(
+            String::from_utf8(sorted).unwrap(),
+            "<<\n  /ExtGState <<\n    /gs1 4 0 R\n    /gs14 17 0 R\n  >>\n>>\nstream\n/b 2 0 R\n/a 1 0 R\nendstream\n"
+        );
+        assert!(!is_resource_entry(b"/Type /Page"));
+    }
+
+    #[test]
+    fn one_long_word_is_broken_into_lines_and_cut_at_the_page_s_foot() {
+        // Issue 31: one 200,000-character word held a handout for 85 s.
+        let face = Typeface::egui_default().unwrap();
+        let word = "x".repeat(200_000);
+        let page = Page {
+            heading: "Deck · 1 / 1".to_owned(),
+            title: word.clone(),
+            question: None,
+            notes: ("Notes".to_owned(), word),
+            diagram: Vec::new(),
+        };
+        let labels = page_words(&face, &page);
+        for label in &labels {
+            let Primitive::Text(label) = label else {
+                panic!("words are labels")
+            };
+            let bottom = label.at.y + face.measure(&label.text, label.size).y;
+            assert!(
+                bottom <= PAGE.y,
+                "{} lines run past the page",
+                label.text.lines().count()
+            );
+            for line in label.text.lines() {
+                assert!(
+                    face.width(line, label.size) <= PAGE.x - 2.0 * MARGIN,
+                    "{line}"
+                );
+            }
+        }
+        let Primitive::Text(title) = &labels[1] else {
+            panic!("the title is a label")
+        };
+        assert_eq!(title.text.lines().count(), 2);
+        assert!(title.text.ends_with('…'));
+    }
 }

@@ -248,12 +248,19 @@ pub fn document(
     let face = Typeface::egui_default()?;
     let primitives = primitives(Vec2::new(width as f32, height as f32), &face);
     let mut out = format!(
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" \
-         width=\"{width}\" height=\"{height}\" viewBox=\"0 0 {width} {height}\">\n"
+        "{}width=\"{width}\" height=\"{height}\" viewBox=\"0 0 {width} {height}\">\n",
+        document_header()
     );
     out.push_str(&elements(&face, &primitives));
     out.push_str("</svg>\n");
     Ok(out)
+}
+
+/// How every SVG document [`document`] writes starts, up to its size: what tells a picture of
+/// ours from someone else's file.
+#[must_use]
+pub fn document_header() -> &'static str {
+    "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
 }
 
 /// The SVG elements of `primitives`, in drawing order, without a document around them: what

@@ -110,8 +110,40 @@ impl LoadError {
 /// # Errors
 /// The first problem the parser finds, at its position.
 pub fn parse_toml<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Result<T, LoadError> {
-    toml::from_str(text)
-        .map_err(|e| LoadError::in_text(text, file, e.span(), toml_words(e.message())))
+    toml::from_str(text).map_err(|e| match e.span() {
+        Some(span) => LoadError::in_text(text, file, Some(span), toml_words(e.message())),
+        // The reader's limit on nested tables comes without a place: the deepest key has it.
+        None if e.message().contains("recursion limit") => LoadError::in_text(
+            text,
+            file,
+            deepest_key(text),
+            "the keys nest too deeply: a dotted key or a table's name has too many parts"
+                .to_owned(),
+        ),
+        None => LoadError::in_text(text, file, None, toml_words(e.message())),
+    })
+}
+
+/// The line whose key (before `=`, or a table's name in brackets) has the most dotted parts,
+/// as the bytes of that key: where a file's tables nest deepest.
+fn deepest_key(text: &str) -> Option<Range<usize>> {
+    let mut start = 0;
+    let mut deepest: Option<(usize, Range<usize>)> = None;
+    for line in text.split_inclusive('\n') {
+        let trimmed = line.trim_start();
+        let key = if trimmed.starts_with('[') {
+            trimmed.split(']').next().unwrap_or(trimmed)
+        } else {
+            trimmed.split('=').next().unwrap_or("")
+        };
+        let parts = key.matches('.').count();
+        let at = start + (line.len() - trimmed.len());
+        if deepest.as_ref().is_none_or(|(most, _)| parts > *most) {
+            deepest = Some((parts, at..at + key.trim_end().len()));
+        }
+        start += line.len();
+    }
+    deepest.map(|(_, span)| span)
 }
 
 /// The bytes of `file` as text, which TOML is: `what` names the kind of file in the error

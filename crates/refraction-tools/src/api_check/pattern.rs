@@ -490,13 +490,13 @@ mod tests {
         let e = Pattern::parse(Api::Glsl, "I={I} N={N} again={I} eta={eta}").unwrap_err();
         assert!(e.contains("{I} is named twice"), "{e}");
         // Issue 31: 10,000 placeholders overflowed a worker's stack; now a usage error.
-        let many = "{_} ".repeat(10_000) + "{I}";
+        let many = format!("{}{{I}}", "{_} ".repeat(10_000));
         let e = Pattern::parse(Api::Glsl, &many).unwrap_err();
         assert!(e.contains("at most 4096 are read"), "{e}");
-        let many = "{_} ".repeat(MAX_PLACEHOLDERS) + "{I}";
+        let many = format!("{}{{I}}", "{_} ".repeat(MAX_PLACEHOLDERS));
         let e = Pattern::parse(Api::Glsl, &many).unwrap_err();
         assert!(e.contains("33 placeholders: at most 32"), "{e}");
-        let most = "{_} ".repeat(MAX_PLACEHOLDERS - 1) + "{I}";
+        let most = format!("{}{{I}}", "{_} ".repeat(MAX_PLACEHOLDERS - 1));
         assert!(Pattern::parse(Api::Glsl, &most).is_ok());
     }
 

@@ -22,6 +22,70 @@ pub enum Value {
     Label(String),
 }
 
+/// A JSON line's object, each key given once (a key given twice is an error, as `solve` says,
+/// rather than the last one silently winning); `None` for JSON that is not an object.
+struct Object(Option<serde_json::Map<String, Json>>);
+
+impl<'de> serde::Deserialize<'de> for Object {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        deserializer.deserialize_any(ObjectVisitor)
+    }
+}
+
+struct ObjectVisitor;
+
+impl<'de> serde::de::Visitor<'de> for ObjectVisitor {
+    type Value = Object;
+
+    fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        // untranslated: serde's own words, as in every JSON error of `solve` and `check`.
+        f.write_str("a JSON object")
+    }
+
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Object, A::Error> {
+        let mut object = serde_json::Map::new();
+        while let Some(key) = map.next_key::<String>()? {
+            if object.contains_key(&key) {
+                // untranslated: serde's own words for a struct's field given twice (`solve`'s).
+                let said = format!("duplicate field `{key}`");
+                return Err(serde::de::Error::custom(said));
+            }
+            let value = map.next_value()?;
+            object.insert(key, value);
+        }
+        Ok(Object(Some(object)))
+    }
+
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<Object, A::Error> {
+        while seq.next_element::<serde::de::IgnoredAny>()?.is_some() {}
+        Ok(Object(None))
+    }
+
+    fn visit_bool<E>(self, _: bool) -> Result<Object, E> {
+        Ok(Object(None))
+    }
+
+    fn visit_i64<E>(self, _: i64) -> Result<Object, E> {
+        Ok(Object(None))
+    }
+
+    fn visit_u64<E>(self, _: u64) -> Result<Object, E> {
+        Ok(Object(None))
+    }
+
+    fn visit_f64<E>(self, _: f64) -> Result<Object, E> {
+        Ok(Object(None))
+    }
+
+    fn visit_str<E>(self, _: &str) -> Result<Object, E> {
+        Ok(Object(None))
+    }
+
+    fn visit_unit<E>(self) -> Result<Object, E> {
+        Ok(Object(None))
+    }
+}
+
 /// The fields of one logged call, each with the significant digits it was written with.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Record {
@@ -161,11 +225,11 @@ impl Record {
     /// Malformed JSON (with its column), not an object, or an ill-typed field.
     pub fn from_json_line(dialect: impl Into<Dialect>, line: &str) -> Result<Self, String> {
         let dialect = dialect.into();
-        let value: Json = serde_json::from_str(line)
+        let object: Object = serde_json::from_str(line)
             .map_err(|e| crate::error::JsonError::from(&e).to_string())?;
         let listed = || fields::listed(dialect);
-        let object = value
-            .as_object()
+        let object = object
+            .0
             .ok_or_else(|| t!("check-json-not-object", fields = listed()))?;
         let mut record = Self::default();
         for (name, kind) in fields::all(dialect) {
@@ -200,6 +264,19 @@ impl Record {
 mod tests {
     use super::*;
     use refraction_kernel::api::Api;
+
+    #[test]
+    fn a_key_given_twice_is_refused_and_other_json_is_not_an_object() {
+        // Issue 31: the last of two `t_yours` was used without a word.
+        let twice =
+            r#"{"I":[0.6,-0.8,0],"N":[0,1,0],"eta":0.5,"result":[0,-1,0],"result":[1,0,0]}"#;
+        let e = Record::from_json_line(Api::Glsl, twice).unwrap_err();
+        assert!(e.contains("duplicate field `result`"), "{e}");
+        for other in ["[1, 2]", "1", "\"I\"", "null", "true"] {
+            let e = Record::from_json_line(Api::Glsl, other).unwrap_err();
+            assert!(e.contains("JSON object"), "{other}: {e}");
+        }
+    }
 
     #[test]
     fn json_and_text_give_the_same_record() {
