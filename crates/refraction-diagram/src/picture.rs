@@ -42,10 +42,16 @@ pub struct Diagram {
     /// The labels the placer left out for want of a free spot, at their anchors: the window
     /// shows their text when the pointer is near.
     pub left_out: Vec<Label>,
+    /// Whether W is drawn arriving at the hit point (its handle at its tail) so as not to show
+    /// a hidden answer past the interface: a drag of its handle then points W away from it.
+    pub w_arriving: bool,
 }
 
 /// The lengths of the diagram's rays, in world units (W, N and T are 1).
 const INCOMING_LENGTH: f64 = 1.25;
+/// W drawn arriving at the hit point while an answer is hidden: shorter than N, so that at
+/// normal incidence its handle is not on N's.
+const ARRIVING_LENGTH: f64 = 0.8;
 const GHOST_LENGTH: f64 = 0.9;
 const ARC_RADIUS: f64 = 0.28;
 
@@ -411,6 +417,24 @@ impl DiagramBuilder<'_> {
         }
     }
 
+    /// At normal incidence W, N and T lie on one line and hide one another: a note beside the
+    /// hit point says so (only W and N while the answer is hidden).
+    fn normal_incidence(&mut self, r: &Refraction<f64>, normal: DVec2) {
+        // θi under 0.05°: what the readouts show as 0.0°.
+        if r.cos_i < 0.05_f64.to_radians().cos() {
+            return;
+        }
+        let text = if self.overlay.hide_answer {
+            t!("diagram-normal-incidence-asked")
+        } else {
+            t!("diagram-normal-incidence")
+        };
+        let at = self.at((normal.perp() + normal) * 0.3);
+        let away = self.layout.view.direction(normal.perp());
+        let anchor = (Align::away(away.x), Align::Center);
+        self.label(text, at, anchor, 0.85);
+    }
+
     /// An angle arc between two unit diagram directions, labelled `text`.
     fn angle(&mut self, part: Part, (from, to): (DVec2, DVec2), text: String, colour: Colour) {
         let view = self.layout.view;
@@ -651,9 +675,14 @@ impl DiagramBuilder<'_> {
         }
     }
 
-    /// W, N and (unless totally reflected) T; returns the diagram directions of W and N, where
-    /// their handles go.
-    fn vectors(&mut self, r: &Refraction<f64>) -> [DVec2; 2] {
+    /// W, N and (unless totally reflected) T; returns the diagram directions of W's and N's
+    /// handles from the hit point, and whether W is drawn arriving.
+    ///
+    /// While a step's answer is hidden, a W that points past the interface (a direction of
+    /// travel, Section 2) would run on unbent into the second medium, which *is* the answer
+    /// the class is asked to predict: it is drawn arriving at the hit point instead, the
+    /// same direction on the incoming side, with its handle at its tail.
+    fn vectors(&mut self, r: &Refraction<f64>, normal: DVec2) -> ([DVec2; 2], bool) {
         let palette = self.palette;
         let own = match self.state.convention() {
             Convention::AlongRay => t!("diagram-w-along-ray"),
@@ -666,7 +695,12 @@ impl DiagramBuilder<'_> {
         let w_dir = self.state.direction(HandleId::W);
         let n_dir = self.state.direction(HandleId::N);
         let w_stroke = self.stroke(3.0, palette.w, Dash::Solid);
-        self.part_ray(Part::W, w_dir, 1.0, w_stroke, &w_text);
+        let arriving = self.overlay.hide_answer && w_dir.dot(normal) < 0.0;
+        if arriving {
+            self.arriving(Part::W, w_dir, w_stroke, &w_text);
+        } else {
+            self.part_ray(Part::W, w_dir, 1.0, w_stroke, &w_text);
+        }
         let n_stroke = self.stroke(3.0, palette.n, Dash::Solid);
         self.part_ray(Part::N, n_dir, 1.0, n_stroke, &n_text);
         if let Some(tr) = r.transmission.filter(|_| !self.overlay.hide_answer) {
@@ -683,7 +717,29 @@ impl DiagramBuilder<'_> {
             };
             self.part_ray(Part::T, self.flat(tr.t), 1.0, t_stroke, &text);
         }
-        [w_dir, n_dir]
+        let w_handle = if arriving {
+            -w_dir * ARRIVING_LENGTH
+        } else {
+            w_dir
+        };
+        ([w_handle, n_dir], arriving)
+    }
+
+    /// An arrow of [`ARRIVING_LENGTH`] along `d` that ends at the hit point, labelled at its
+    /// tail.
+    fn arriving(&mut self, part: Part, d: DVec2, stroke: Stroke, text: &str) {
+        let (tail, head) = (self.at(-d * ARRIVING_LENGTH), self.at(DVec2::ZERO));
+        self.halo(part, vec![tail, head]);
+        self.shapes.push(Figure::Arrow {
+            from: tail,
+            to: head,
+            stroke,
+        });
+        let away = self.layout.view.direction(-d);
+        let at = tail + away * (self.font() * 0.9);
+        let colour = self.palette.text_shade(stroke.colour);
+        let anchor = (Align::away(away.x), Align::away(away.y));
+        self.label_coloured(text, at, anchor, 1.0, colour);
     }
 
     /// A ray drawn by its share of the light (the *Intensities* switch), labelled `name` and
@@ -772,6 +828,7 @@ impl Diagram {
             b.waves(&options);
         }
         b.guides(normal, toward_source);
+        b.normal_incidence(r, normal);
         b.rank = Rank::Rays;
         b.incoming(r, normal, toward_source);
         if !overlay.hide_answer {
@@ -785,7 +842,7 @@ impl Diagram {
             b.outgoing(r, normal);
         }
         b.rank = Rank::Vectors;
-        let [w_dir, n_dir] = b.vectors(r);
+        let ([w_dir, n_dir], w_arriving) = b.vectors(r, normal);
         b.student();
         b.banner(r, banner);
         let [mu_i, mu_t] = b.index_scale();
@@ -799,6 +856,7 @@ impl Diagram {
             handles,
             summary,
             left_out,
+            w_arriving,
         }
     }
 
@@ -818,6 +876,9 @@ impl Diagram {
     /// at its height.
     pub fn drag(&self, state: &mut ExplorerState, handle: HandleId, p: Vec2) {
         match handle {
+            HandleId::W if self.w_arriving => {
+                state.point(handle, -self.layout.view.to_world(p));
+            }
             HandleId::W | HandleId::N => state.point(handle, self.layout.view.to_world(p)),
             HandleId::MuI | HandleId::MuT => {
                 // The scale only gives indices in INDEX_RANGE; the kernel refuses one only when
@@ -911,6 +972,45 @@ mod tests {
         assert!(tir.summary.contains("hidden"), "{}", tir.summary);
         assert!(!texts(&tir).iter().any(|t| t.contains("otal internal")));
         assert_eq!(asked.handles.len(), 4, "the handles stay");
+    }
+
+    #[test]
+    fn a_hidden_answer_draws_nothing_past_the_interface_but_n() {
+        // Issue 32: W's arrow ran on unbent into the glass and gave the answer away.
+        let size = Vec2::new(1000.0, 700.0);
+        let hidden = Overlay {
+            hide_answer: true,
+            ..Overlay::default()
+        };
+        for degrees in [0.0_f64, 40.0, 60.0] {
+            for convention in [Convention::AlongRay, Convention::TowardOrigin] {
+                let a = degrees.to_radians();
+                let w = DVec3::new(a.sin(), -a.cos(), 0.0);
+                let w = if convention == Convention::AlongRay { w } else { -w };
+                let state = ExplorerState::new(w, DVec3::Y, 1.0, 1.5, convention).unwrap();
+                let asked = Diagram::with_overlay(&state, size, &hidden);
+                let surface = asked.layout.view.to_canvas(DVec2::ZERO).y;
+                let n_colour = Overlay::default().palette.n;
+                for shape in &asked.shapes {
+                    if let Figure::Arrow { from, to, stroke } = shape
+                        && stroke.colour != n_colour
+                    {
+                        assert!(
+                            from.y <= surface + 0.5 && to.y <= surface + 0.5,
+                            "{degrees}° {convention:?}: an arrow past the interface"
+                        );
+                    }
+                }
+                let w_handle = asked.handles[0].center;
+                assert!(w_handle.y < surface, "W's handle on the incoming side");
+                // A drag of the handle still points W where the pointer says.
+                let mut dragged = state.clone();
+                let p = asked.layout.view.to_canvas(DVec2::new(-0.5, 0.8));
+                asked.drag(&mut dragged, HandleId::W, p);
+                let travel = dragged.refraction().travel;
+                assert!(travel.y < 0.0 && travel.x > 0.0, "{travel}: still toward the surface");
+            }
+        }
     }
 
     #[test]

@@ -30,6 +30,8 @@ diagram-outward-normal-bug =
     das falsche T des Fehlers mit äußerer Normale
 diagram-index-scale = Index μ
 diagram-incoming-ray = einfallender Strahl
+diagram-normal-incidence = senkrechter Einfall: W, N und T liegen auf einer Linie
+diagram-normal-incidence-asked = senkrechter Einfall: W liegt auf N
 diagram-reflected = reflektiert
 diagram-reflected-light = reflektiert ({ $light })
 diagram-reflected-all = reflektierter Strahl (alles Licht)

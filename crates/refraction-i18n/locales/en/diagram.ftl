@@ -32,6 +32,8 @@ diagram-outward-normal-bug =
     the wrong T of the outward-normal bug
 diagram-index-scale = index μ
 diagram-incoming-ray = incoming ray
+diagram-normal-incidence = normal incidence: W, N and T lie on one line
+diagram-normal-incidence-asked = normal incidence: W lies along N
 diagram-reflected = reflected
 diagram-reflected-light = reflected ({ $light })
 diagram-reflected-all = reflected ray (all the light)

@@ -30,6 +30,8 @@ diagram-outward-normal-bug =
     la T errónea del fallo de la normal exterior
 diagram-index-scale = índice μ
 diagram-incoming-ray = rayo incidente
+diagram-normal-incidence = incidencia normal: W, N y T están en una misma línea
+diagram-normal-incidence-asked = incidencia normal: W va a lo largo de N
 diagram-reflected = reflejado
 diagram-reflected-light = reflejado ({ $light })
 diagram-reflected-all = rayo reflejado (toda la luz)

@@ -30,6 +30,8 @@ diagram-outward-normal-bug =
     le T erroné du bogue de la normale extérieure
 diagram-index-scale = indice μ
 diagram-incoming-ray = rayon incident
+diagram-normal-incidence = incidence normale : W, N et T sont sur une même droite
+diagram-normal-incidence-asked = incidence normale : W est le long de N
 diagram-reflected = réfléchi
 diagram-reflected-light = réfléchi ({ $light })
 diagram-reflected-all = rayon réfléchi (toute la lumière)

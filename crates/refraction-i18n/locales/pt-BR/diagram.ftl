@@ -30,6 +30,8 @@ diagram-outward-normal-bug =
     o T errado do defeito da normal externa
 diagram-index-scale = índice μ
 diagram-incoming-ray = raio incidente
+diagram-normal-incidence = incidência normal: W, N e T estão na mesma linha
+diagram-normal-incidence-asked = incidência normal: W está ao longo de N
 diagram-reflected = refletido
 diagram-reflected-light = refletido ({ $light })
 diagram-reflected-all = raio refletido (toda a luz)

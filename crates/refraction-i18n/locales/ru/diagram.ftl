@@ -30,6 +30,8 @@ diagram-outward-normal-bug =
     неверный T из-за ошибки внешней нормали
 diagram-index-scale = показатель μ
 diagram-incoming-ray = падающий луч
+diagram-normal-incidence = нормальное падение: W, N и T лежат на одной прямой
+diagram-normal-incidence-asked = нормальное падение: W направлен вдоль N
 diagram-reflected = отражённый
 diagram-reflected-light = отражённый ({ $light })
 diagram-reflected-all = отражённый луч (весь свет)
