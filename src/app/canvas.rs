@@ -171,10 +171,15 @@ fn interact(
 ///
 /// A press and release within egui's click distance is a click, not a drag: it changes
 /// nothing and selects the handle (or, on the background, the W handle) for the arrow keys.
-pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
-    // The hint's row (a label's row is as tall as a widget's) and the spacing above it.
+pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay, with_hint: bool) {
+    // The hint's row (a label's row is as tall as a widget's) and the spacing above it; none
+    // on a projector, where the diagram has the room.
     let text = ui.text_style_height(&egui::TextStyle::Body);
-    let line = text.max(ui.spacing().interact_size.y) + 2.0 * ui.spacing().item_spacing.y;
+    let line = if with_hint {
+        text.max(ui.spacing().interact_size.y) + 2.0 * ui.spacing().item_spacing.y
+    } else {
+        0.0
+    };
     let size = ui.available_size() - EguiVec2::new(0.0, line);
     let (response, painter) =
         ui.allocate_painter(size.max(EguiVec2::splat(1.0)), Sense::click_and_drag());
@@ -218,7 +223,12 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay) {
         let ring = Stroke::new(2.0, color(overlay.palette.ink));
         painter.circle_stroke(center, handle.radius * 1.7, ring);
     }
-    ui.label(egui::RichText::new(hint(focused)).weak());
+    if with_hint {
+        // One line, cut with "…" where the window is narrow (the whole on hover).
+        let hint = hint(focused);
+        ui.add(egui::Label::new(egui::RichText::new(&hint).weak()).truncate())
+            .on_hover_text(hint);
+    }
 }
 
 #[cfg(test)]

@@ -107,7 +107,10 @@ fn index_controls(
     }
     let current = material_of(state.index(handle));
     let shown = current.map_or_else(|| t!("diagram-material-custom"), |m| m.label());
-    ComboBox::from_label(t!("controls-material", symbol = symbol))
+    // The label on its own row: beside the menu, a narrow panel would break its words.
+    let name = t!("controls-material", symbol = symbol);
+    ui.label(&name);
+    let menu = ComboBox::from_id_salt(("material", symbol))
         .selected_text(shown)
         .show_ui(ui, |ui| {
             for m in MATERIALS {
@@ -120,7 +123,9 @@ fn index_controls(
                 }
             }
             ui.label(t!("controls-custom-hint"));
-        });
+        })
+        .response;
+    menu.widget_info(|| egui::WidgetInfo::labeled(egui::Role::ComboBox, true, &name));
 }
 
 impl Controls {
@@ -140,9 +145,14 @@ impl Controls {
     /// The lesson presets, *Reset*, and θi typed in degrees.
     fn lesson(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
         ui.heading(t!("controls-lesson"));
+        // The label on its own row: beside the menu, a narrow panel would break its words.
+        let name = t!("controls-lesson-preset");
+        ui.label(&name);
         ui.horizontal_wrapped(|ui| {
-            ComboBox::from_label(t!("controls-lesson-preset"))
+            let menu = ComboBox::from_id_salt("lesson_preset")
                 .selected_text(self.lesson_shown(state))
+                .truncate()
+                .width(ui.available_width().min(220.0) - 90.0)
                 .show_ui(ui, |ui| {
                     for lesson in Lesson::ALL {
                         if ui
@@ -153,7 +163,9 @@ impl Controls {
                             *state = lesson.state();
                         }
                     }
-                });
+                })
+                .response;
+            menu.widget_info(|| egui::WidgetInfo::labeled(egui::Role::ComboBox, true, &name));
             if ui
                 .button(t!("controls-reset"))
                 .on_hover_text(t!("controls-reset-hover"))

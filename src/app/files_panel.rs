@@ -164,11 +164,11 @@ impl FilesPanel {
                 t!("files-open-dialog"),
                 t!("files-open-dialog-hover"),
             );
-            if icon_button(ui, open, true, false) {
+            if icon_button(ui, open, (true, false), false) {
                 self.dialog = Some(FileDialog::new(Purpose::Open, &["json"], &self.path));
             }
             let save_as = (SAVE_AS_ICON, t!("files-save-as"), t!("files-save-as-hover"));
-            if icon_button(ui, save_as, true, false) {
+            if icon_button(ui, save_as, (true, false), false) {
                 self.dialog = Some(FileDialog::new(Purpose::Save, &["json"], &self.path));
             }
         });

@@ -237,11 +237,11 @@ pub fn controls<T: Clone + PartialEq>(
 ) -> Option<Travel> {
     let mut asked = shortcut(ui);
     let undo = ("⟲", t!("files-undo"), t!("files-undo-hover"));
-    if icon_button(ui, undo, history.undo_steps() > 0, compact) {
+    if icon_button(ui, undo, (history.undo_steps() > 0, false), compact) {
         asked = Some(Travel::Undo);
     }
     let redo = ("⟳", t!("files-redo"), t!("files-redo-hover"));
-    if icon_button(ui, redo, history.redo_steps() > 0, compact) {
+    if icon_button(ui, redo, (history.redo_steps() > 0, false), compact) {
         asked = Some(Travel::Redo);
     }
     asked

@@ -299,7 +299,21 @@ impl Explorer {
             intensities: self.physics.intensities(),
             waves: self.physics.waves(),
             hide_answer: self.lesson.hides_answer(),
+            index_scale: !self.diagram_only(),
+            simple: self.presentation.simple,
         }
+    }
+
+    /// Whether the walk-through's *Animate μ to 1* is running.
+    #[must_use]
+    pub fn animating(&self) -> bool {
+        self.tools.walk.animating()
+    }
+
+    /// Whether presentation shows the diagram alone (key D).
+    #[must_use]
+    pub fn diagram_only(&self) -> bool {
+        self.presentation.on && self.presentation.diagram_only
     }
 
     /// Shows `scene` in the Scenes view, and that view.
@@ -331,6 +345,7 @@ impl Explorer {
     pub fn show(&mut self, ui: &mut Ui) {
         refraction_i18n::set_locale(self.speaking());
         self.presentation.apply(ui.ctx());
+        self.presentation.diagram_only_key(ui.ctx());
         paint::share_palette(ui.ctx(), self.presentation.palette());
         self.tools.walk.animate(ui.ctx(), &mut self.state);
         self.physics.animate(ui.ctx());
@@ -339,8 +354,10 @@ impl Explorer {
             self.view = View::Interface;
         }
         Panel::top("views").show(ui, |ui| self.bar(ui));
-        self.deck_frame(ui);
-        self.deck_panel(ui);
+        if !self.diagram_only() {
+            self.deck_frame(ui);
+            self.deck_panel(ui);
+        }
         let step_shown = self.lesson.current().is_some();
         self.scenes
             .for_lesson(step_shown, self.lesson.hides_answer());
@@ -377,9 +394,7 @@ impl Explorer {
     /// the tools.
     fn bar(&mut self, ui: &mut Ui) {
         ui.horizontal_wrapped(|ui| {
-            for view in View::ALL {
-                ui.selectable_value(&mut self.view, view, view.label());
-            }
+            self.view_switches(ui);
             ui.separator();
             if let Some(travel) = history::controls(ui, &self.history, self.presentation.on) {
                 self.travel(travel);
@@ -396,6 +411,9 @@ impl Explorer {
             if self.view == View::Interface {
                 ui.separator();
                 self.physics.menu(ui);
+                if self.presentation.on {
+                    self.panels.bar_switches(ui);
+                }
             }
             // What the last undo did, in what is left of the bar's last row, cut with "…"
             // (the whole on hover): it never grows the bar by a row.
@@ -409,6 +427,28 @@ impl Explorer {
                     .on_hover_text(done);
             }
         });
+    }
+
+    /// The views: a switch each at the desk; in presentation, where the bar keeps one row, a
+    /// menu showing the view's name.
+    fn view_switches(&mut self, ui: &mut Ui) {
+        if !self.presentation.on {
+            for view in View::ALL {
+                ui.selectable_value(&mut self.view, view, view.label());
+            }
+            return;
+        }
+        let name = t!("view-menu");
+        let menu = egui::ComboBox::from_id_salt("view")
+            .selected_text(self.view.label())
+            .show_ui(ui, |ui| {
+                for view in View::ALL {
+                    ui.selectable_value(&mut self.view, view, view.label());
+                }
+            })
+            .response;
+        menu.widget_info(|| egui::WidgetInfo::labeled(egui::Role::ComboBox, true, &name));
+        menu.on_hover_text(name);
     }
 
     /// Undoes or redoes one step and says what it changed; a step that changed the view not
@@ -441,6 +481,14 @@ impl Explorer {
     /// The single-interface view: controls, diagram, the kernel's numbers, the open tool.
     fn show_interface(&mut self, ui: &mut Ui) {
         let presenting = self.presentation.on;
+        if self.diagram_only() {
+            let mut overlay = self.overlay();
+            egui::CentralPanel::no_frame().show(ui, |ui| {
+                canvas::show(ui, &mut self.state, &mut overlay, false);
+            });
+            self.presentation.pan_zoom = overlay.pan_zoom;
+            return;
+        }
         self.panels.keys(ui, presenting);
         if presenting && self.tools.open.is_some() {
             let opened = self.tools.just_opened().is_some();
@@ -467,7 +515,7 @@ impl Explorer {
         let frame = egui::Frame::NONE.fill(ui.visuals().panel_fill);
         egui::CentralPanel::no_frame()
             .frame(frame)
-            .show(ui, |ui| canvas::show(ui, state, &mut overlay));
+            .show(ui, |ui| canvas::show(ui, state, &mut overlay, !presenting));
         self.presentation.pan_zoom = overlay.pan_zoom;
     }
 }

@@ -10,7 +10,7 @@ use egui::{Button, Key, Panel, RichText, Role, ScrollArea, Ui, WidgetInfo};
 use refraction_i18n::t;
 
 /// The width of a collapsed panel's strip, in points.
-pub const STRIP_WIDTH: f32 = 30.0;
+pub const STRIP_WIDTH: f32 = 36.0;
 
 /// One side panel: where it sits, its name, its key and its sizes.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -55,7 +55,7 @@ pub const NUMBERS: SidePanel = SidePanel {
     key: Key::F3,
     left: false,
     default_width: 440.0,
-    max_share: (0.38, 0.35),
+    max_share: (0.38, 0.30),
 };
 
 /// Which side panels are open in one mode.
@@ -130,6 +130,24 @@ impl Panels {
         close_tool
     }
 
+    /// In presentation, where a closed panel leaves no strip, a switch for each panel in the
+    /// bar: its arrow, named (for screen readers and on hover) with what it does and its key.
+    pub fn bar_switches(&mut self, ui: &mut Ui) {
+        for panel in [CONTROLS, NUMBERS] {
+            let shown = self.presenting.of(&panel);
+            let arrow = match (panel.left, *shown) {
+                (true, false) | (false, true) => "⏵",
+                (true, true) | (false, false) => "⏴",
+            };
+            let name = panel.words(!*shown, panel.key.name());
+            let switch = ui.add(Button::new(RichText::new(arrow).strong()).selected(*shown));
+            switch.widget_info(|| WidgetInfo::labeled(Role::Button, true, &name));
+            if switch.on_hover_text(&name).clicked() {
+                *shown = !*shown;
+            }
+        }
+    }
+
     /// Toggles the panels whose keys were pressed (unless a text field has the keyboard).
     pub fn keys(&mut self, ui: &Ui, presenting: bool) {
         if ui.ctx().text_edit_focused() {
@@ -168,11 +186,18 @@ impl Panels {
             }
         };
         let key = panel.key.name();
+        if !*shown && presenting {
+            // No strip on a projector: the bar's switches and the keys open the panel.
+            return;
+        }
         if !*shown {
+            // A thin margin: the arrow's button fits the strip whatever the language.
+            let frame = egui::Frame::side_top_panel(ui.style()).inner_margin(3.0);
             // untranslated: an egui id.
             side(format!("{id} strip"))
                 .exact_size(STRIP_WIDTH)
                 .resizable(false)
+                .frame(frame)
                 .show(ui, |ui| {
                     let arrow = if panel.left { "⏵" } else { "⏴" };
                     let name = panel.words(true, key);

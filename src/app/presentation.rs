@@ -56,6 +56,12 @@ pub struct Presentation {
     pub pan_zoom: PanZoom,
     /// The language chosen in the bar, kept between runs; `None` follows the system's.
     pub language: Option<Locale>,
+    /// The simple view: the three rejected candidates left out, for a class that has not met
+    /// them yet (kept between runs).
+    pub simple: bool,
+    /// In presentation, the diagram alone (key D): the bar, the strips, the panels, the tool
+    /// and the index scale folded away.
+    pub diagram_only: bool,
     applied: Option<Applied>,
 }
 
@@ -144,6 +150,7 @@ impl Presentation {
             "theme": self.theme.name(),
             "colour_blind_safe": self.colour_blind_safe,
             "language": self.language.map(Locale::code),
+            "simple": self.simple,
         })
         .to_string()
     }
@@ -161,6 +168,9 @@ impl Presentation {
         }
         if let Some(safe) = look["colour_blind_safe"].as_bool() {
             self.colour_blind_safe = safe;
+        }
+        if let Some(simple) = look["simple"].as_bool() {
+            self.simple = simple;
         }
         if let Some(language) = look["language"].as_str().and_then(Locale::from_tag) {
             self.language = Some(language);
@@ -180,12 +190,58 @@ impl Presentation {
         if ui.input_mut(|i| i.consume_shortcut(&KeyboardShortcut::new(Modifiers::NONE, Key::F11))) {
             self.on = !self.on;
         }
-        ui.toggle_value(&mut self.on, t!("presentation-toggle"))
+        let name = t!("presentation-toggle");
+        if self.on {
+            // The bar keeps one row on a projector: the switch shows its icon, its name is
+            // its accessible name and its hover.
+            let toggle = ui.toggle_value(&mut self.on, "🖵");
+            toggle.widget_info(|| WidgetInfo::selected(Role::Button, true, true, &name));
+            toggle.on_hover_text(format!("{name}: {}", t!("presentation-toggle-hover")));
+            self.look_menu(ui);
+            self.language_menu(ui, speaking);
+            return;
+        }
+        ui.toggle_value(&mut self.on, name)
             .on_hover_text(t!("presentation-toggle-hover"));
         self.theme_menu(ui);
         self.language_menu(ui, speaking);
+        self.look_switches(ui);
+    }
+
+    /// The colour-blind-safe and simple-view switches.
+    fn look_switches(&mut self, ui: &mut Ui) {
         ui.checkbox(&mut self.colour_blind_safe, t!("presentation-colour-blind"))
             .on_hover_text(t!("presentation-colour-blind-hover"));
+        ui.checkbox(&mut self.simple, t!("presentation-simple"))
+            .on_hover_text(t!("presentation-simple-hover"));
+    }
+
+    /// In presentation, the theme and the look's switches in one menu of the bar.
+    fn look_menu(&mut self, ui: &mut Ui) {
+        ui.menu_button(format!("{} ⏷", t!("presentation-look")), |ui| {
+            ui.label(t!("presentation-theme"));
+            for theme in Theme::ALL {
+                ui.radio_value(&mut self.theme, theme, theme.label());
+            }
+            ui.separator();
+            self.look_switches(ui);
+            ui.checkbox(&mut self.diagram_only, t!("presentation-diagram-only"));
+        });
+    }
+
+    /// Presentation's diagram-only key (D, unless a text field has the keyboard): toggles the
+    /// diagram alone; leaving presentation leaves it too.
+    pub fn diagram_only_key(&mut self, ctx: &Context) {
+        if !self.on {
+            self.diagram_only = false;
+            return;
+        }
+        let pressed = !ctx.text_edit_focused()
+            && ctx
+                .input_mut(|i| i.consume_shortcut(&KeyboardShortcut::new(Modifiers::NONE, Key::D)));
+        if pressed {
+            self.diagram_only = !self.diagram_only;
+        }
     }
 
     /// The theme menu, labelled at the desk; in presentation, where the bar is short of room,

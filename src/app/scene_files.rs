@@ -101,11 +101,11 @@ impl SceneFiles {
                 t!("files-open-dialog"),
                 t!("scenes-open-dialog-hover"),
             );
-            if icon_button(ui, open, true, compact) {
+            if icon_button(ui, open, (true, false), compact) {
                 self.ask(Use::OpenScene);
             }
             let save_as = (SAVE_AS_ICON, t!("files-save-as"), t!("files-save-as-hover"));
-            if icon_button(ui, save_as, true, compact) {
+            if icon_button(ui, save_as, (true, false), compact) {
                 self.ask(Use::SaveScene);
             }
             let name = t!("controls-export");

@@ -59,6 +59,9 @@ pub struct ScenesView {
     /// In presentation, the scene's files, description and hint are shown (they start
     /// folded away, so that the scene owns the projector).
     more_shown: bool,
+    /// The shape (width over height) of the canvas's drawing area the scene was last traced
+    /// for: the world is widened to it, so that the scene fills the canvas, not a square in it.
+    aspect: Option<f64>,
 }
 
 impl Default for ScenesView {
@@ -131,6 +134,7 @@ impl ScenesView {
             answer_hidden: false,
             in_lesson: false,
             more_shown: false,
+            aspect: None,
         }
     }
 
@@ -177,7 +181,31 @@ impl ScenesView {
         self.scene = scene;
         self.error = None;
         self.drag_layout = None;
-        self.retracer.retrace(&self.scene, &mut self.trace);
+        self.retrace();
+    }
+
+    /// Traces the scene again, its world widened to the canvas's shape once that is known.
+    fn retrace(&mut self) {
+        match self.aspect {
+            Some(aspect) => self
+                .retracer
+                .retrace(&self.scene.framed(aspect), &mut self.trace),
+            None => self.retracer.retrace(&self.scene, &mut self.trace),
+        }
+    }
+
+    /// Traces again for a canvas whose drawing area has another shape than the last one's
+    /// (a window resized, presentation switched), unless a handle is being dragged.
+    fn frame_to(&mut self, layout: &SceneLayout) {
+        let size = layout.drawing.size();
+        let aspect = f64::from(size.x) / f64::from(size.y.max(1.0));
+        let changed = self
+            .aspect
+            .is_none_or(|before| (before / aspect - 1.0).abs() > 0.01);
+        if changed && self.drag_layout.is_none() && aspect.is_finite() {
+            self.aspect = Some(aspect);
+            self.retrace();
+        }
     }
 
     /// Puts back a scene from the undo history: the same scene edited differently is retraced
@@ -189,7 +217,7 @@ impl ScenesView {
         if scene.name() == self.original.name() {
             self.scene = scene;
             self.error = None;
-            self.retracer.retrace(&self.scene, &mut self.trace);
+            self.retrace();
         } else {
             self.open(scene);
         }
@@ -200,7 +228,7 @@ impl ScenesView {
         match edit(&mut self.scene) {
             Ok(()) => {
                 self.error = None;
-                self.retracer.retrace(&self.scene, &mut self.trace);
+                self.retrace();
             }
             Err(e) => self.error = Some(e.to_string()),
         }
@@ -338,6 +366,7 @@ impl ScenesView {
             .filter(|_| response.clicked());
         let dragging = self.handles(ui, &response, &to_screen, &layout, &mut clicked_at);
         self.drag_layout = dragging.then_some(layout);
+        self.frame_to(&layout);
         self.drawn = Some((rect, layout));
         // The layout fits the whole trace, so that revealing the answer does not move the view.
         let hidden = self

@@ -14,8 +14,9 @@ use refraction_diagram::overlay::StudentRay;
 use refraction_diagram::palette::Palette;
 use refraction_model::ExplorerState;
 
-/// The most of the window's width a tool takes in presentation.
-pub const PRESENTATION_TOOL_SHARE: f32 = 0.34;
+/// The window's width a tool takes in presentation: the diagram keeps half the window beside
+/// it (tested), and the panel keeps its width from step to step, so the diagram never jumps.
+pub const PRESENTATION_TOOL_SHARE: f32 = 0.30;
 
 /// The tool shown beside the diagram.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -49,19 +50,17 @@ impl Tool {
             Self::Check => format!("✔ {}", t!("tool-check")),
             Self::WalkThrough => format!("📖 {}", t!("tool-walk-through")),
             Self::Files => format!("💾 {}", t!("tool-files")),
-            Self::Fresnel => t!("tool-fresnel"),
+            Self::Fresnel => format!("📈 {}", t!("tool-fresnel")),
             Self::Deck => format!("📚 {}", t!("tool-deck")),
         }
     }
 
-    /// The most of the window's width the tool takes in presentation: the Fresnel plot reads
-    /// in a narrower strip, which leaves the diagram it explains more room.
+    /// The window's width the tool takes in presentation.
     fn presentation_share(self) -> f32 {
         match self {
-            Self::Fresnel => PRESENTATION_TOOL_SHARE * 0.88,
             // The deck's list and fields read in a narrow strip; the step's diagram needs room
             // below the step's own strip.
-            Self::Deck => PRESENTATION_TOOL_SHARE * 0.75,
+            Self::Deck => PRESENTATION_TOOL_SHARE * 0.85,
             _ => PRESENTATION_TOOL_SHARE,
         }
     }
@@ -99,9 +98,9 @@ pub struct Tools {
 
 impl Tools {
     /// The switches for the top bar: clicking the open tool closes it. In presentation, where
-    /// the bar is short of room, the lesson deck's shows its icon only (its name stays its
-    /// accessible name and its hover), and only while a deck is open (`deck_open`) or its
-    /// tool is: a deck is built at the desk.
+    /// the bar keeps one row, each shows its icon only (its name stays its accessible name and
+    /// its hover), and the lesson deck's only while a deck is open (`deck_open`) or its tool
+    /// is: a deck is built at the desk.
     pub fn bar(&mut self, ui: &mut Ui, presenting: bool, deck_open: bool) {
         let deck_shown = !presenting || deck_open || self.open == Some(Tool::Deck);
         for tool in Tool::ALL
@@ -110,7 +109,7 @@ impl Tools {
         {
             let open = self.open == Some(tool);
             let label = tool.label();
-            let compact = presenting && tool == Tool::Deck;
+            let compact = presenting;
             let shown = if compact {
                 label.split_whitespace().next().unwrap_or_default()
             } else {
@@ -194,12 +193,10 @@ impl Tools {
 pub fn frame(ui: &Ui, tool: Tool, presenting: bool) -> Panel {
     let window = ui.ctx().content_rect();
     if presenting {
-        // At most a third of the width: the diagram keeps half the window (tested).
-        let limit = window.width() * tool.presentation_share();
+        let width = window.width() * tool.presentation_share();
         Panel::right(format!("{tool:?}-presentation"))
-            .resizable(true)
-            .default_size(limit)
-            .size_range(limit * 0.5..=limit)
+            .resizable(false)
+            .exact_size(width)
     } else {
         // A panel only grows to what its scroll area was given last frame: each tool asks
         // for the height its verdict or step needs (at most 45 % of the window), and can

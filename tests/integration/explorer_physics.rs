@@ -16,7 +16,7 @@ use refraction_diagram::shapes::Figure;
 use refraction_explorer::app::Explorer;
 use refraction_model::ExplorerState;
 
-const FRESNEL: &str = "Fresnel";
+const FRESNEL: &str = "📈 Fresnel";
 const EFFECTS: &str = "Effects";
 
 /// From air into glass at Brewster's angle, tanθB = 1.5.

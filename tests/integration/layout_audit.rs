@@ -42,7 +42,7 @@ fn tools() -> [Option<String>; 5] {
         Some(format!("✔ {}", t!("tool-check"))),
         Some(format!("📖 {}", t!("tool-walk-through"))),
         Some(format!("💾 {}", t!("tool-files"))),
-        Some(t!("tool-fresnel")),
+        Some(format!("📈 {}", t!("tool-fresnel"))),
     ]
 }
 
@@ -125,11 +125,8 @@ fn set_up(h: &mut Harness<'_, Explorer>, present: bool, theme: &str, tool: Optio
     if present {
         click(h, &t!("presentation-toggle"));
     }
-    if theme != themes()[0] {
-        h.get_by_role_and_label(Role::ComboBox, &t!("presentation-theme"))
-            .click();
-        h.run();
-        click(h, theme);
+    if let Some(chosen) = Theme::ALL.into_iter().find(|t| t.label().as_str() == theme) {
+        h.state_mut().presentation_mut().theme = chosen;
     }
     if let Some(tool) = tool {
         // In presentation the controls are opened first, as a teacher who set up the case
@@ -142,7 +139,7 @@ fn set_up(h: &mut Harness<'_, Explorer>, present: bool, theme: &str, tool: Optio
     }
     // Beside the Fresnel tool, the effects it explains are on too: their labels and the
     // diagram's share are audited with everything a physics lesson turns on.
-    if tool == Some(t!("tool-fresnel").as_str()) {
+    if tool.is_some_and(|t| t.ends_with(&t!("tool-fresnel"))) {
         click(h, &t!("effects-menu"));
         for switch in [
             t!("effects-intensities"),
@@ -203,9 +200,20 @@ fn canvas_rect(h: &Harness<'_, Explorer>) -> EguiRect {
     h.get_by_role(Role::Image).rect()
 }
 
-fn share(h: &Harness<'_, Explorer>) -> f32 {
+/// The diagram's share of the window: its canvas, less the index scale's strip in the
+/// interface view (the scale is a control, not the picture the class reads).
+fn share(h: &Harness<'_, Explorer>, scene: bool) -> f32 {
     let window = h.ctx.content_rect();
-    canvas_rect(h).area() / window.area()
+    let canvas = canvas_rect(h);
+    let scale = if scene {
+        0.0
+    } else {
+        let size = GVec2::new(canvas.width(), canvas.height());
+        let explorer = h.state();
+        let layout = Diagram::with_overlay(explorer.state(), size, &explorer.overlay()).layout;
+        (layout.canvas.max.x - layout.drawing.max.x) * canvas.height()
+    };
+    (canvas.area() - scale) / window.area()
 }
 
 /// Every control (button, text field, menu, switch) within the window's width: a row that
@@ -228,13 +236,35 @@ fn check_controls_inside<S>(h: &Harness<'_, S>, what: &str, problems: &mut Vec<S
     }
 }
 
+/// Whether a galley's rows break a word: a row that ends in a letter (not at a line break of
+/// the text) followed by one that starts with a letter.
+fn breaks_a_word(galley: &egui::Galley) -> Option<String> {
+    let rows = &galley.rows;
+    rows.windows(2).find_map(|pair| {
+        let (before, after) = (&pair[0], &pair[1]);
+        let last = before.glyphs.last()?.chr;
+        let first = after.glyphs.first()?.chr;
+        (!before.ends_with_newline && last.is_alphanumeric() && first.is_alphanumeric()).then(
+            || {
+                let end: String = before.glyphs.iter().rev().take(8).map(|g| g.chr).collect();
+                let start: String = after.glyphs.iter().take(8).map(|g| g.chr).collect();
+                format!("{}/{start}", end.chars().rev().collect::<String>())
+            },
+        )
+    })
+}
+
 /// Texts wrapped letter by letter (a panel squeezed below its controls' width): a galley of
-/// three rows or more whose rows hold two characters at the most.
+/// three rows or more whose rows hold two characters at the most; and words broken inside
+/// ("Lektionsvorgab/e").
 fn check_squeezed<S>(h: &Harness<'_, S>, what: &str, problems: &mut Vec<String>) {
     fn visit(shape: &Shape, what: &str, problems: &mut Vec<String>) {
         match shape {
             Shape::Vec(shapes) => shapes.iter().for_each(|s| visit(s, what, problems)),
             Shape::Text(text) => {
+                if let Some(at) = breaks_a_word(&text.galley) {
+                    problems.push(format!("{what}: a word is broken inside: “{at}”"));
+                }
                 let rows = &text.galley.rows;
                 let narrow = rows
                     .iter()
@@ -406,6 +436,38 @@ fn check_labels(
     }
 }
 
+/// Every label of a picture reads at 4.5:1 or more: on its own box, or (a banner's words) on
+/// the fill behind them, `behind`.
+fn check_label_contrast(
+    what: &str,
+    primitives: &[Primitive],
+    behind: refraction_diagram::geometry::Colour,
+    problems: &mut Vec<String>,
+) {
+    // A marker's words sit on its disc.
+    let disc_at = |at: GVec2| {
+        primitives.iter().find_map(|p| match p {
+            Primitive::Disc { center, fill, .. } if center.distance(at) < 0.5 => Some(*fill),
+            _ => None,
+        })
+    };
+    for p in primitives {
+        if let Primitive::Text(label) = p {
+            let back = label
+                .background
+                .or_else(|| disc_at(label.at))
+                .unwrap_or(behind);
+            let ratio = label.colour.over(back).contrast(back);
+            if ratio < 4.5 && !label.text.trim().is_empty() {
+                let name = label.text.lines().next().unwrap_or_default();
+                problems.push(format!(
+                    "{what}: the label “{name}” has a contrast of {ratio:.1}:1"
+                ));
+            }
+        }
+    }
+}
+
 /// The interface diagram as the window drew it, with its labels checked.
 fn audit_diagram(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>) {
     let face = Typeface::egui_default().unwrap();
@@ -454,6 +516,13 @@ fn audit_diagram(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<Strin
         })
         .collect();
     let canvas = diagram.layout.canvas;
+    let r = explorer.state().refraction();
+    let banner_fill = if r.is_tir() && !explorer.overlay().hide_answer {
+        palette.alarm
+    } else {
+        palette.calm
+    };
+    check_label_contrast(what, &diagram.primitives(), banner_fill, problems);
     check_labels(
         what,
         &face,
@@ -492,7 +561,9 @@ fn audit_scene(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>
         scenes.trace(),
         GVec2::new(rect.width(), rect.height()),
     );
-    let picture = ScenePicture::new(scenes.scene(), scenes.trace(), &layout);
+    let palette = h.state().overlay().palette;
+    let picture = ScenePicture::with_palette(scenes.scene(), scenes.trace(), &layout, &palette);
+    check_label_contrast(what, &picture.primitives, palette.calm, problems);
     let handle_at: Vec<GVec2> = picture.handles.iter().map(|h| h.center).collect();
     let mut discs: Vec<(String, GVec2, f32)> = picture
         .handles
@@ -511,10 +582,14 @@ fn audit_scene(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>
             _ => {}
         }
     }
+    // A ray faded below a twentieth of its source's light (the droplet's thousands of weak
+    // reflections, which fill the whole canvas at 1,000 rays) is drawn almost transparent: a
+    // label over it hides nothing.
     let shafts = scenes
         .trace()
         .segments
         .iter()
+        .filter(|s| s.intensity.is_none_or(|i| i >= 0.05))
         .map(|s| {
             let shaft = refraction_diagram::placer::Obstacle::Shaft {
                 a: layout.at(s.from),
@@ -541,14 +616,14 @@ fn measure(
     scene: bool,
 ) -> Measured {
     let mut m = Measured {
-        share: share(h),
+        share: share(h, scene),
         smallest_text_px: smallest_text(h),
         contrast: f32::INFINITY,
         problems: Vec::new(),
     };
-    let least_share = match (present, tool_open) {
-        (true, false) => Some(0.60),
-        (true, true) => Some(0.45),
+    let least_share = match (present, tool_open, scene) {
+        (true, false, false) => Some(0.60),
+        (true, _, _) => Some(0.50),
         _ => None,
     };
     if let Some(least) = least_share
@@ -651,7 +726,8 @@ fn report(run: &str, measured: &[(String, Measured)]) {
         let group: Vec<_> = measured
             .iter()
             .filter(|(what, _)| {
-                what.contains("presentation") == present && what.contains("tool ") == tool
+                what.contains("presentation") == present
+                    && (what.contains("tool ") || what.contains("panel ")) == tool
             })
             .map(|(w, m)| {
                 (
@@ -713,6 +789,43 @@ fn audit_interface(states: &[ExplorerState]) -> Vec<(String, Measured)> {
                     measured.push((what, m));
                 }
             }
+            measured.extend(audit_panels(&states[..2], size, present));
+        }
+    }
+    measured
+}
+
+/// The interface view with each side panel open in turn (F2 the controls, F3 the numbers),
+/// no tool: at the desk both start open, so there the other is closed.
+fn audit_panels(
+    states: &[ExplorerState],
+    size: (f32, f32),
+    present: bool,
+) -> Vec<(String, Measured)> {
+    let language = refraction_i18n::locale();
+    let mut measured = Vec::new();
+    for (key, name) in [(egui::Key::F2, "controls"), (egui::Key::F3, "numbers")] {
+        let mut h = harness_sized(Explorer::new(states[0].clone()), size);
+        set_up(&mut h, present, &themes()[0], None);
+        let other = if key == egui::Key::F2 {
+            egui::Key::F3
+        } else {
+            egui::Key::F2
+        };
+        h.key_press(if present { key } else { other });
+        settle(&mut h);
+        for (i, state) in states.iter().enumerate() {
+            h.state_mut().set_state(state.clone());
+            settle(&mut h);
+            let what = format!(
+                "{language} {}×{} {} panel {name}, state {i}",
+                size.0,
+                size.1,
+                if present { "presentation" } else { "desk" },
+            );
+            // An open panel gives way to the diagram as a tool does.
+            let m = measure(&h, &what, present, true, false);
+            measured.push((what, m));
         }
     }
     measured
@@ -870,8 +983,12 @@ fn the_audit_finds_words_wrapped_letter_by_letter() {
     h.run();
     let mut problems = Vec::new();
     check_squeezed(&h, "test", &mut problems);
-    assert_eq!(problems.len(), 1, "{problems:?}");
-    assert!(problems[0].contains("Lesson preset"), "{problems:?}");
+    assert_eq!(problems.len(), 2, "{problems:?}");
+    assert!(
+        problems[0].contains("a word is broken inside"),
+        "{problems:?}"
+    );
+    assert!(problems[1].contains("Lesson preset"), "{problems:?}");
 }
 
 #[test]
@@ -894,6 +1011,79 @@ fn the_audit_finds_a_row_of_controls_cut_off_at_the_window_edge() {
     );
 }
 
+/// Before a step's answer is revealed nothing is drawn past the interface but N: no arrow of
+/// W, T, a candidate or the reflection ends on the far side.
+fn check_nothing_past_the_interface(
+    h: &Harness<'_, Explorer>,
+    what: &str,
+    problems: &mut Vec<String>,
+) {
+    let rect = canvas_rect(h);
+    let explorer = h.state();
+    let overlay = explorer.overlay();
+    let size = GVec2::new(rect.width(), rect.height());
+    let diagram = Diagram::with_overlay(explorer.state(), size, &overlay);
+    let r = explorer.state().refraction();
+    let normal = explorer.state().plane().project(r.facing_normal);
+    let origin = diagram.layout.view.to_canvas(glam::DVec2::ZERO);
+    let into_incident = diagram.layout.view.direction(normal);
+    for shape in &diagram.shapes {
+        if let Figure::Arrow { from, to, stroke } = shape
+            && stroke.colour != overlay.palette.n
+        {
+            let past = |p: &GVec2| (*p - origin).dot(into_incident) < -1.0;
+            if past(from) || past(to) {
+                problems.push(format!(
+                    "{what}: an arrow is drawn past the interface before the reveal"
+                ));
+            }
+        }
+    }
+}
+
+/// Every frame of *Animate μ to 1* on *A droplet's exit*, walk-through open, in presentation
+/// at 1280×720: no label on W, N or T in any frame, as at rest.
+#[test]
+fn every_frame_of_the_mu_animation_keeps_w_n_and_t_clear() {
+    let mut measured = Vec::new();
+    for language in [Locale::En, Locale::De, Locale::Ru] {
+        refraction_i18n::set_locale(language);
+        let state = refraction_model::Lesson::DropletExit.state();
+        let mut h = harness_sized(Explorer::new(state), SIZES[0]);
+        set_up(
+            &mut h,
+            true,
+            &themes()[0],
+            Some(&format!("📖 {}", t!("tool-walk-through"))),
+        );
+        // One frame at a time: the animation asks for the next one until it ends.
+        h.get_by_label(&t!("walk-animate")).click();
+        h.step();
+        let mut frame = 0;
+        while h.state().animating() && frame < 400 {
+            let what = format!(
+                "{language} 1280×720 presentation tool walk-through, droplet exit, μ → 1, frame {frame}"
+            );
+            let mut problems = Vec::new();
+            audit_diagram(&h, &what, &mut problems);
+            measured.push((
+                what,
+                Measured {
+                    share: share(&h, false),
+                    smallest_text_px: smallest_text(&h),
+                    contrast: f32::INFINITY,
+                    problems,
+                },
+            ));
+            h.step();
+            frame += 1;
+        }
+        assert!(frame > 10 && !h.state().animating(), "{frame} frames");
+    }
+    refraction_i18n::set_locale(Locale::En);
+    report("animation", &measured);
+}
+
 /// A lesson deck's steps that ask a question, in presentation at 1280×720 in every language:
 /// the step's strip (its number, title and question) above the diagram, its answer hidden,
 /// with the tools closed and with the deck's own tool open; and a scene's step.
@@ -908,6 +1098,9 @@ fn a_lesson_step_with_a_question_keeps_the_layout_rules_in_presentation() {
             let mut h = harness_sized(explorer, SIZES[0]);
             set_up(&mut h, true, &themes()[0], tool.as_deref());
             // Steps 1 to 3 (a question each, past the critical angle last), then the fibre.
+            // The rectangle of the last step shown in each view (a scene's step shows the
+            // Scenes view, with its own controls).
+            let mut rects: [Option<EguiRect>; 2] = [None, None];
             for step in 0..5 {
                 let (index, shown) = h.state().lesson().current().unwrap();
                 assert!(shown.hides_answer() && h.state().overlay().hide_answer);
@@ -918,10 +1111,22 @@ fn a_lesson_step_with_a_question_keeps_the_layout_rules_in_presentation() {
                         .map_or_else(|| "no tool".to_owned(), |t| format!("tool {t}")),
                 );
                 let scene = h.state().view() == refraction_explorer::app::View::Scenes;
-                measured.push((
-                    what.clone(),
-                    measure(&h, &what, true, tool.is_some(), scene),
-                ));
+                let mut m = measure(&h, &what, true, tool.is_some(), scene);
+                // The diagram keeps its rectangle while the teacher steps.
+                let here = canvas_rect(&h);
+                let rect = &mut rects[usize::from(scene)];
+                let moved =
+                    |r: &EguiRect| (r.min - here.min).length() + (r.max - here.max).length();
+                if let Some(before) = rect.filter(|r| moved(r) > 0.5) {
+                    m.problems.push(format!(
+                        "{what}: the diagram moved from {before:?} to {here:?}"
+                    ));
+                }
+                *rect = Some(here);
+                if !scene {
+                    check_nothing_past_the_interface(&h, &what, &mut m.problems);
+                }
+                measured.push((what.clone(), m));
                 if step < 4 {
                     h.key_press(egui::Key::PageDown);
                     settle(&mut h);

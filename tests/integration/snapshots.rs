@@ -27,7 +27,7 @@ fn window(lesson: Lesson, size: (f32, f32), present: bool) -> Harness<'static, E
         .with_theme(egui::Theme::Light)
         .renderer(SoftwareRenderer::default())
         .build_ui_state(
-            |ui, app: &mut Explorer| app.show(ui),
+            crate::common::whole_window,
             Explorer::launched(launch, |_| None),
         );
     harness.run();

@@ -106,6 +106,10 @@ pub fn font_size(size: Vec2) -> f32 {
     (size.min_element() / 48.0).clamp(13.0, 30.0)
 }
 
+/// The index scale's width in label font sizes: the material names (`diamond`) left of its
+/// line and the μi marker, the μt marker and the values right of it.
+pub const SCALE_WIDTH: f32 = 8.8;
+
 /// Where everything goes on a canvas of one size.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Layout {
@@ -115,8 +119,8 @@ pub struct Layout {
     pub banner: Rect,
     /// The area of the interface diagram (canvas minus banner and scale).
     pub drawing: Rect,
-    /// The index scale.
-    pub scale: IndexScale,
+    /// The index scale, unless it is folded away ([`Layout::without_scale`]).
+    pub scale: Option<IndexScale>,
     /// The world↔canvas map.
     pub view: Viewport,
     /// The label font size in pixels; strokes and handles scale with it.
@@ -129,21 +133,28 @@ impl Layout {
     #[must_use]
     pub fn new(size: Vec2) -> Self {
         let size = size.max(Vec2::ONE);
-        Self::with_banner(size, font_size(size) * 3.2)
+        Self::with_banner(size, font_size(size) * 3.2, true)
     }
 
     /// The same canvas with a banner `height` pixels high (at most half the canvas), the
-    /// drawing area and the index scale below it.
+    /// drawing area and the index scale (if it has one) below it.
     #[must_use]
     pub fn with_banner_height(self, height: f32) -> Self {
-        Self::with_banner(self.canvas.size(), height)
+        Self::with_banner(self.canvas.size(), height, self.scale.is_some())
     }
 
-    fn with_banner(size: Vec2, height: f32) -> Self {
+    /// The same canvas with the index scale folded away: the drawing takes its width too
+    /// (presentation's diagram-only key).
+    #[must_use]
+    pub fn without_scale(self) -> Self {
+        Self::with_banner(self.canvas.size(), self.banner.size().y, false)
+    }
+
+    fn with_banner(size: Vec2, height: f32, with_scale: bool) -> Self {
         let font = font_size(size);
         let canvas = Rect::from_min_size(Vec2::ZERO, size);
         let banner = Rect::from_min_size(Vec2::ZERO, Vec2::new(size.x, height.min(size.y * 0.5)));
-        let scale_width = font * 10.0;
+        let scale_width = if with_scale { font * SCALE_WIDTH } else { 0.0 };
         let drawing = Rect {
             min: Vec2::new(0.0, banner.max.y),
             max: Vec2::new(
@@ -151,11 +162,11 @@ impl Layout {
                 size.y.max(banner.max.y + 1.0),
             ),
         };
-        let scale = IndexScale {
-            x: size.x - scale_width * 0.45,
+        let scale = with_scale.then_some(IndexScale {
+            x: size.x - font * 4.0,
             top: banner.max.y + font * 2.5,
             bottom: size.y - font * 2.5,
-        };
+        });
         let view = Viewport {
             origin: drawing.center(),
             scale: drawing.size().min_element() * 0.36,
@@ -224,10 +235,18 @@ mod tests {
 
     #[test]
     fn the_index_scale_maps_both_ways_and_clamps() {
-        let scale = Layout::new(Vec2::new(800.0, 600.0)).scale;
+        let layout = Layout::new(Vec2::new(800.0, 600.0));
+        let scale = layout.scale.unwrap();
         assert_eq!(scale.index_at(scale.y_of(1.5)), 1.5);
         assert_eq!(scale.index_at(-1e6), INDEX_RANGE.1);
         assert_eq!(scale.y_of(10.0), scale.top);
         assert!(Layout::new(Vec2::ZERO).view.scale > 0.0);
+        let folded = layout.without_scale();
+        assert_eq!(folded.scale, None);
+        assert_eq!(
+            folded.drawing.max.x, 800.0,
+            "the drawing takes the scale's width"
+        );
+        assert_eq!(folded.banner, layout.banner);
     }
 }

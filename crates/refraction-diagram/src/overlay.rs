@@ -153,6 +153,11 @@ pub struct Overlay {
     /// A lesson step's question is being asked: T, the reflected ray, the rejected candidates,
     /// the angle of refraction and the banner's verdict are left out until it is revealed.
     pub hide_answer: bool,
+    /// The index scale is drawn (folded away by presentation's diagram-only key).
+    pub index_scale: bool,
+    /// The simple view, for a class that has not met the four candidates yet: the three
+    /// rejected candidates and their (a, b) labels are left out.
+    pub simple: bool,
 }
 
 impl Default for Overlay {
@@ -165,6 +170,8 @@ impl Default for Overlay {
             intensities: None,
             waves: None,
             hide_answer: false,
+            index_scale: true,
+            simple: false,
         }
     }
 }

@@ -290,7 +290,12 @@ impl Palette {
     /// the background (WCAG's least for text).
     #[must_use]
     pub fn text_shade(&self, colour: Colour) -> Colour {
-        let back = self.background;
+        self.text_shade_on(colour, self.background)
+    }
+
+    /// [`Palette::text_shade`] on the fill `back` (a banner's) instead of the background.
+    #[must_use]
+    pub fn text_shade_on(&self, colour: Colour, back: Colour) -> Colour {
         (7_u8..=20)
             .map(|i| colour.lerp(self.text_toward, f32::from(i) / 20.0))
             .find(|shade| shade.over(back).contrast(back) >= 4.6)

@@ -35,7 +35,8 @@ pub struct Diagram {
     pub layout: Layout,
     /// What is drawn, back to front.
     pub shapes: Vec<Figure>,
-    /// The handles, in [`HandleId::ALL`] order.
+    /// The handles, in [`HandleId::ALL`] order: W and N, then the μ markers unless the index
+    /// scale is folded away.
     pub handles: Vec<Handle>,
     /// The banner's text: what the picture says in words, for screen readers.
     pub summary: String,
@@ -96,8 +97,18 @@ const BANNER_MARGIN: f32 = 0.6;
 
 /// The layout of a canvas `size` with the banner tall enough for `text` wrapped to its width,
 /// and the text so wrapped.
-fn layout_with_banner(size: Vec2, text: &str, face: Option<&Typeface>) -> (Layout, String) {
+fn layout_with_banner(
+    size: Vec2,
+    text: &str,
+    face: Option<&Typeface>,
+    index_scale: bool,
+) -> (Layout, String) {
     let layout = Layout::new(size);
+    let layout = if index_scale {
+        layout
+    } else {
+        layout.without_scale()
+    };
     let Some(face) = face else {
         return (layout, text.to_owned());
     };
@@ -557,9 +568,12 @@ impl DiagramBuilder<'_> {
         }));
     }
 
-    /// The index scale with the presets and the two μ markers.
-    fn index_scale(&mut self) -> [Handle; 2] {
-        let scale = self.layout.scale;
+    /// The index scale with the presets and the two μ markers, and the markers' handles;
+    /// nothing when the scale is folded away.
+    fn index_scale(&mut self) -> Vec<Handle> {
+        let Some(scale) = self.layout.scale else {
+            return Vec::new();
+        };
         let font = self.font();
         let line = self.stroke(1.5, self.palette.guide, Dash::Solid);
         self.shapes.push(Figure::Line {
@@ -584,7 +598,7 @@ impl DiagramBuilder<'_> {
                 stroke: line,
             });
             if long {
-                let at = Vec2::new(scale.x + font * 1.7, y);
+                let at = Vec2::new(scale.x + font * 2.2, y);
                 let text = number(f64::from(tenth) / 10.0, 1);
                 self.label(text, at, (Align::Start, Align::Center), 0.75);
             }
@@ -600,23 +614,32 @@ impl DiagramBuilder<'_> {
         .map(|(id, side, index, text)| {
             let center = Vec2::new(scale.x + side * font * 0.8, scale.y_of(index));
             let radius = font * 0.75;
+            let fill = medium_colour(&self.palette, index);
             self.shapes.push(Figure::Disc {
                 center,
                 radius,
-                fill: medium_colour(&self.palette, index),
+                fill,
                 outline: self.stroke(2.0, self.palette.ink, Dash::Solid),
             });
+            // The ink or the background, whichever reads better on the medium's shade.
+            let (ink, paper) = (self.palette.ink, self.palette.background);
+            let colour = if ink.contrast(fill) >= paper.contrast(fill) {
+                ink
+            } else {
+                paper
+            };
             self.shapes.push(Figure::Text(Label {
                 text: text.into(),
                 at: center,
                 h: Align::Center,
                 v: Align::Center,
                 size: self.layout.text_size(0.75),
-                colour: self.palette.ink,
+                colour,
                 background: None,
             }));
             Handle { id, center, radius }
         })
+        .to_vec()
     }
 
     /// The angle of incidence and the incoming ray from the source to the hit point, with an
@@ -802,7 +825,8 @@ impl Diagram {
         } else {
             banner_text(r)
         };
-        let (layout, banner) = layout_with_banner(size, &summary, face.as_ref());
+        let (layout, banner) =
+            layout_with_banner(size, &summary, face.as_ref(), overlay.index_scale);
         let layout = layout.panned(overlay.pan_zoom);
         let palette = overlay.palette;
         let mut b = DiagramBuilder {
@@ -833,7 +857,9 @@ impl Diagram {
         b.incoming(r, normal, toward_source);
         if !overlay.hide_answer {
             b.rank = Rank::Candidates;
-            b.candidates(r);
+            if !overlay.simple {
+                b.candidates(r);
+            }
             b.rank = Rank::Bug;
             b.outward_normal_bug(r);
             b.rank = Rank::Construction;
@@ -845,10 +871,11 @@ impl Diagram {
         let ([w_dir, n_dir], w_arriving) = b.vectors(r, normal);
         b.student();
         b.banner(r, banner);
-        let [mu_i, mu_t] = b.index_scale();
+        let markers = b.index_scale();
         let w = b.tip_handle(HandleId::W, w_dir, palette.w);
         let n = b.tip_handle(HandleId::N, n_dir, palette.n);
-        let handles = vec![w, n, mu_i, mu_t];
+        let mut handles = vec![w, n];
+        handles.extend(markers);
         let (shapes, left_out) = b.finish(&handles);
         Self {
             layout,
@@ -890,7 +917,10 @@ impl Diagram {
                 };
                 // Within the scale's step of the other medium's index is the other medium
                 // (air's 1.000293, not vacuum's 1.000 beside it): the ray goes straight on.
-                let mut index = self.layout.scale.index_at(p.y);
+                let Some(scale) = self.layout.scale else {
+                    return;
+                };
+                let mut index = scale.index_at(p.y);
                 if (index - state.index(other)).abs() < 0.001 {
                     index = state.index(other);
                 }
@@ -986,7 +1016,11 @@ mod tests {
             for convention in [Convention::AlongRay, Convention::TowardOrigin] {
                 let a = degrees.to_radians();
                 let w = DVec3::new(a.sin(), -a.cos(), 0.0);
-                let w = if convention == Convention::AlongRay { w } else { -w };
+                let w = if convention == Convention::AlongRay {
+                    w
+                } else {
+                    -w
+                };
                 let state = ExplorerState::new(w, DVec3::Y, 1.0, 1.5, convention).unwrap();
                 let asked = Diagram::with_overlay(&state, size, &hidden);
                 let surface = asked.layout.view.to_canvas(DVec2::ZERO).y;
@@ -1008,7 +1042,10 @@ mod tests {
                 let p = asked.layout.view.to_canvas(DVec2::new(-0.5, 0.8));
                 asked.drag(&mut dragged, HandleId::W, p);
                 let travel = dragged.refraction().travel;
-                assert!(travel.y < 0.0 && travel.x > 0.0, "{travel}: still toward the surface");
+                assert!(
+                    travel.y < 0.0 && travel.x > 0.0,
+                    "{travel}: still toward the surface"
+                );
             }
         }
     }
@@ -1192,15 +1229,12 @@ mod tests {
         let origin = diagram.layout.view.origin;
         diagram.drag(&mut state, HandleId::W, origin + Vec2::new(0.0, 100.0));
         assert!(state.refraction().cos_i > 1.0 - 1e-12);
-        let y = diagram.layout.scale.y_of(2.0);
+        let scale = diagram.layout.scale.unwrap();
+        let y = scale.y_of(2.0);
         diagram.drag(&mut state, HandleId::MuT, Vec2::new(0.0, y));
         assert_eq!(state.mu_t(), 2.0);
         // μt dragged to the bottom beside air: air, not vacuum (no θc of 88.6°).
-        diagram.drag(
-            &mut state,
-            HandleId::MuT,
-            Vec2::new(0.0, diagram.layout.scale.bottom),
-        );
+        diagram.drag(&mut state, HandleId::MuT, Vec2::new(0.0, scale.bottom));
         assert_eq!(state.mu_t(), state.mu_i());
         assert!(state.critical_angle().is_none());
         let rect = Diagram::grab_area(&diagram.handles[0]);

@@ -548,7 +548,7 @@ impl ScenePictureBuilder<'_> {
                     || (same(a[axis], bounds.max[axis]) && same(b[axis], bounds.max[axis]))
             })
         };
-        for outline in scene.outlines() {
+        for outline in scene.outlines_within(bounds) {
             let world = outline.polyline(max_step);
             let points: Vec<Vec2> = world.iter().map(|p| self.layout.at(*p)).collect();
             let medium = scene.shapes().get(outline.shape).and_then(|s| s.medium());
@@ -895,14 +895,16 @@ fn legend(scene: &Scene, trace: &Trace, p: &Palette) -> Vec<(String, Colour)> {
     if let [Light::White] = colours.as_slice() {
         let nm = reference_wavelength();
         let text = t!("diagram-legend-white-traced", wavelength = nm);
-        pieces.push((text, p.white_light));
+        pieces.push((text, p.text_shade_on(p.white_light, p.calm)));
     } else {
         if colours.len() > 1 {
             let then = t!("diagram-legend-white-then");
-            pieces.push((format!("{then} "), p.white_light));
+            pieces.push((format!("{then} "), p.text_shade_on(p.white_light, p.calm)));
         }
         for nm in colours.iter().filter_map(|light| light.wavelength_nm()) {
-            pieces.push((format!("{} ", number(nm, 0)), wavelength_colour(nm)));
+            // The colour's own shade, darkened or lightened until it reads at 4.5:1.
+            let shade = p.text_shade_on(wavelength_colour(nm), p.calm);
+            pieces.push((format!("{} ", number(nm, 0)), shade));
         }
         pieces.push((t!("diagram-legend-nm"), ink));
     }
@@ -927,7 +929,7 @@ fn legend(scene: &Scene, trace: &Trace, p: &Palette) -> Vec<(String, Colour)> {
             let colour = if fill == p.background {
                 ink
             } else {
-                p.text_shade(fill)
+                p.text_shade_on(fill, p.calm)
             };
             pieces.push((words, colour));
         }

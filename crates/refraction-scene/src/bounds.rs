@@ -56,6 +56,27 @@ impl Bounds {
         }
     }
 
+    /// The smallest rectangle `aspect` times as wide as it is high that holds this one, about
+    /// the same centre: a scene's world widened (or heightened) to fill a canvas of that shape.
+    /// A rectangle with no area, or an aspect that is not a finite number > 0, is kept.
+    #[must_use]
+    pub fn widened_to(self, aspect: f64) -> Self {
+        let size = self.max - self.min;
+        if !(aspect.is_finite() && aspect > 0.0 && size.x > 0.0 && size.y > 0.0) {
+            return self;
+        }
+        let wanted = if size.x / size.y < aspect {
+            DVec2::new(size.y * aspect, size.y)
+        } else {
+            DVec2::new(size.x, size.x / aspect)
+        };
+        let center = (self.min + self.max) * 0.5;
+        Self {
+            min: center - wanted * 0.5,
+            max: center + wanted * 0.5,
+        }
+    }
+
     /// The four corners, counter-clockwise from `min`.
     #[must_use]
     pub fn corners(self) -> [DVec2; 4] {
@@ -159,5 +180,20 @@ mod tests {
         let b = Bounds::point(DVec2::ONE).padded(0.2, 0.5);
         assert_eq!(b.min, DVec2::splat(0.5));
         assert_eq!(b.max, DVec2::splat(1.5));
+    }
+
+    #[test]
+    fn widening_keeps_the_centre_and_holds_the_original() {
+        let b = Bounds {
+            min: DVec2::new(-1.0, -2.0),
+            max: DVec2::new(1.0, 2.0),
+        };
+        let wide = b.widened_to(2.0);
+        assert_eq!(wide.min, DVec2::new(-4.0, -2.0));
+        assert_eq!(wide.max, DVec2::new(4.0, 2.0));
+        let tall = b.widened_to(0.25);
+        assert_eq!(tall.min, DVec2::new(-1.0, -4.0));
+        assert_eq!(b.widened_to(f64::NAN), b);
+        assert_eq!(b.widened_to(0.0), b);
     }
 }

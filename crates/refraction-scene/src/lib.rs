@@ -165,10 +165,26 @@ impl Scene {
         })
     }
 
+    /// The scene with its world widened to `aspect` (width over height, see
+    /// [`Bounds::widened_to`]): what a canvas of that shape shows, traced to its edges.
+    #[must_use]
+    pub fn framed(&self, aspect: f64) -> Self {
+        Self {
+            view: Some(self.bounds().widened_to(aspect)),
+            ..self.clone()
+        }
+    }
+
     /// The outline of every shape, a line's half-plane cut to [`Self::bounds`].
     #[must_use]
     pub fn outlines(&self) -> Vec<Outline> {
-        let bounds = self.bounds();
+        self.outlines_within(self.bounds())
+    }
+
+    /// The outline of every shape, a line's half-plane cut to `bounds` (a trace's world, which
+    /// may be the scene's framed to a canvas).
+    #[must_use]
+    pub fn outlines_within(&self, bounds: Bounds) -> Vec<Outline> {
         self.shapes
             .iter()
             .enumerate()

@@ -350,7 +350,12 @@ impl Explorer {
             count = notes.count.to_string()
         );
         let mut asked = Vec::new();
-        Panel::top("deck-step").show(ui, |ui| {
+        let height = self
+            .lesson
+            .deck
+            .as_ref()
+            .map_or(0.0, |deck| strip_height(ui, deck, compact));
+        Panel::top("deck-step").exact_size(height).show(ui, |ui| {
             ui.horizontal_wrapped(|ui| {
                 ui.label(size(RichText::new(number).strong()));
                 asked.extend(notes::buttons(ui, &notes, hidden, compact));
@@ -369,6 +374,61 @@ impl Explorer {
         });
         asked
     }
+}
+
+/// The width of the words on one row of the strip, in points.
+fn words_width(ui: &Ui, text: &str, style: &egui::TextStyle) -> f32 {
+    let font = style.resolve(ui.style());
+    let galley = ui
+        .painter()
+        .layout_no_wrap(text.to_owned(), font, egui::Color32::PLACEHOLDER);
+    galley.size().x
+}
+
+/// The strip's height for the longest step of `deck` at this width: the same for every step,
+/// so that the diagram below keeps its rectangle while the teacher steps. Each step's words
+/// are measured on one line and divided into the rows the width gives (with a margin for the
+/// breaks between words), at most four.
+fn strip_height(ui: &Ui, deck: &Deck, compact: bool) -> f32 {
+    let width = ui.available_width().max(1.0);
+    let spacing = ui.spacing();
+    let buttons = 4.0 * (spacing.interact_size.y * 1.6 + spacing.item_spacing.x);
+    let title_style = if compact {
+        egui::TextStyle::Body
+    } else {
+        egui::TextStyle::Heading
+    };
+    let rows_for = |used: f32| (used * 1.1 / width).ceil().clamp(1.0, 4.0);
+    // At the desk the reveal key's hint follows the question on its row.
+    let hint = if compact {
+        String::new()
+    } else {
+        t!("deck-hidden-hint")
+    };
+    let rows = deck
+        .steps
+        .iter()
+        .map(|step| {
+            let title = words_width(ui, &format!("99 / 99  {}", step.title), &title_style);
+            let question = step.question.as_ref().map_or(0.0, |q| {
+                words_width(ui, &format!("❓ {q}  {hint}"), &egui::TextStyle::Body)
+            });
+            if compact {
+                rows_for(buttons + title + question)
+            } else {
+                rows_for(buttons + title)
+                    + if question > 0.0 {
+                        rows_for(question)
+                    } else {
+                        0.0
+                    }
+            }
+        })
+        .fold(1.0, f32::max);
+    let row = ui
+        .text_style_height(&title_style)
+        .max(spacing.interact_size.y);
+    rows * (row + spacing.item_spacing.y) + spacing.item_spacing.y
 }
 
 impl Explorer {

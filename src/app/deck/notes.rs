@@ -43,34 +43,39 @@ pub fn buttons(ui: &mut Ui, notes: &Notes, hidden: bool, compact: bool) -> Vec<C
             "⏴",
             t!("deck-previous"),
             keys.clone(),
-            notes.number > 1,
+            (notes.number > 1, false),
             Command::Previous,
         ),
         (
             "⏵",
             t!("deck-next"),
             keys,
-            notes.number < notes.count,
+            (notes.number < notes.count, false),
             Command::Next,
         ),
+        // Only a step with a question has an answer to reveal; shown, the button stays
+        // pressed, so the class sees which state the step is in.
         (
-            "👁",
+            if hidden { "👁" } else { "🙈" },
             reveal,
             t!("deck-hidden-hint"),
-            notes.question.is_some(),
+            (notes.question.is_some(), !hidden),
             Command::Reveal,
         ),
         (
             "📝",
             t!("deck-notes-window"),
             t!("deck-notes-window-hover"),
-            true,
+            (true, false),
             Command::Notes,
         ),
     ];
     let mut asked = Vec::new();
-    for (icon, name, hover, enabled, command) in buttons {
-        if icon_button(ui, (icon, name, hover), enabled, compact) {
+    for (icon, name, hover, state, command) in buttons {
+        if command == Command::Reveal && notes.question.is_none() {
+            continue;
+        }
+        if icon_button(ui, (icon, name, hover), state, compact) {
             asked.push(command);
         }
     }

@@ -134,11 +134,11 @@ impl DeckPanel {
                 t!("files-open-dialog"),
                 t!("deck-open-dialog-hover"),
             );
-            if icon_button(ui, open, true, true) {
+            if icon_button(ui, open, (true, false), true) {
                 self.dialog = Some(FileDialog::new(Purpose::Open, DECK_FILES, &self.path));
             }
             let save_as = (SAVE_AS_ICON, t!("files-save-as"), t!("files-save-as-hover"));
-            if icon_button(ui, save_as, true, true) {
+            if icon_button(ui, save_as, (true, false), true) {
                 self.dialog = Some(FileDialog::new(Purpose::Save, DECK_FILES, &self.path));
             }
             let mut picked = None;
@@ -179,15 +179,15 @@ impl DeckPanel {
         for (i, step) in deck.steps.iter().enumerate() {
             ui.horizontal(|ui| {
                 let up = ("⏶", t!("deck-move-up"), t!("deck-move-up"));
-                if icon_button(ui, up, i > 0, true) {
+                if icon_button(ui, up, (i > 0, false), true) {
                     moved = Some((i, i - 1));
                 }
                 let down = ("⏷", t!("deck-move-down"), t!("deck-move-down"));
-                if icon_button(ui, down, i < last, true) {
+                if icon_button(ui, down, (i < last, false), true) {
                     moved = Some((i, i + 1));
                 }
                 let delete = ("🗑", t!("deck-delete"), t!("deck-delete"));
-                if icon_button(ui, delete, true, true) {
+                if icon_button(ui, delete, (true, false), true) {
                     deleted = Some(i);
                 }
                 let row = t!(

@@ -8,6 +8,16 @@ use glam::DVec3;
 use refraction_explorer::app::Explorer;
 use refraction_model::ExplorerState;
 
+/// Shows `app` over the whole window, as eframe's root `Ui` does (the harness's own `Ui` keeps
+/// an 8-point margin that the real window does not have).
+pub fn whole_window(ui: &mut egui::Ui, app: &mut Explorer) {
+    let window = ui.ctx().content_rect();
+    ui.scope_builder(egui::UiBuilder::new().max_rect(window), |ui| {
+        ui.set_clip_rect(window);
+        app.show(ui);
+    });
+}
+
 /// The window showing `explorer`, `size` points in the light theme with the window's fonts,
 /// after its first frame.
 pub fn harness_sized(explorer: Explorer, size: (f32, f32)) -> Harness<'static, Explorer> {
@@ -15,7 +25,7 @@ pub fn harness_sized(explorer: Explorer, size: (f32, f32)) -> Harness<'static, E
         .with_context_setup(refraction_explorer::app::install_fonts)
         .with_size(Vec2::new(size.0, size.1))
         .with_theme(egui::Theme::Light)
-        .build_ui_state(|ui, app: &mut Explorer| app.show(ui), explorer);
+        .build_ui_state(whole_window, explorer);
     harness.run();
     harness
 }

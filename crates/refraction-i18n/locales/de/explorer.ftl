@@ -6,6 +6,7 @@
 
 view-interface = Eine Grenzfläche
 view-scenes = Szenen
+view-menu = Ansicht
 view-accuracy = Genauigkeit/Zeit
 # Bezeichnet in einer Fehlermeldung eine Szene, die vom letzten Lauf übrig ist.
 view-last-run-scene = die Szene des letzten Laufs
@@ -21,6 +22,10 @@ presentation-theme = Design
 presentation-theme-hover = Standard oder hoher Kontrast: Schwarz auf Weiß oder Weiß auf Schwarz
 presentation-colour-blind = Für Farbenblinde
 presentation-colour-blind-hover = Nur Okabe–Ito-Farben; jeder Strahl hat zudem eigene Strichelung und Beschriftung
+presentation-simple = Einfache Ansicht
+presentation-simple-hover = Lässt die drei verworfenen Vorzeichenwahlen und ihr (a, b) weg: für eine Klasse, die die vier Kandidaten noch nicht kennt
+presentation-look = Aussehen
+presentation-diagram-only = Nur das Diagramm (D)
 language-menu = Sprache
 language-hover = Die Sprache des Fensters. Ohne Wahl hier folgt sie der des Systems.
 effects-menu = Effekte

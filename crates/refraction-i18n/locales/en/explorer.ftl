@@ -6,6 +6,7 @@
 
 view-interface = One interface
 view-scenes = Scenes
+view-menu = View
 view-accuracy = Accuracy vs time
 # Names a scene kept from the last run in an error message about it.
 view-last-run-scene = the last run's scene
@@ -21,6 +22,10 @@ presentation-theme = Theme
 presentation-theme-hover = Standard, or high contrast: black on white or white on black
 presentation-colour-blind = Colour-blind safe
 presentation-colour-blind-hover = Okabe–Ito colours only; every ray also has its own dash and label
+presentation-simple = Simple view
+presentation-simple-hover = Leaves out the three rejected sign choices and their (a, b): for a class that has not met the four candidates yet
+presentation-look = Look
+presentation-diagram-only = Diagram only (D)
 language-menu = Language
 language-hover = The language of the window. It follows the system's unless chosen here.
 effects-menu = Effects

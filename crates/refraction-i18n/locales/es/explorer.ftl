@@ -6,6 +6,7 @@
 
 view-interface = Una superficie
 view-scenes = Escenas
+view-menu = Vista
 view-accuracy = Precisión/tiempo
 # Nombra, en un mensaje de error, una escena conservada de la última ejecución.
 view-last-run-scene = la escena de la última ejecución
@@ -21,6 +22,10 @@ presentation-theme = Tema
 presentation-theme-hover = Estándar o alto contraste: negro sobre blanco o blanco sobre negro
 presentation-colour-blind = Apto para daltónicos
 presentation-colour-blind-hover = Solo colores Okabe–Ito; además, cada rayo tiene su propio trazo discontinuo y su etiqueta
+presentation-simple = Vista sencilla
+presentation-simple-hover = Omite las tres elecciones de signo rechazadas y su (a, b): para una clase que aún no conoce los cuatro candidatos
+presentation-look = Aspecto
+presentation-diagram-only = Solo el diagrama (D)
 language-menu = Idioma
 language-hover = El idioma de la ventana. Sigue el del sistema si aquí no se ha escogido otro.
 effects-menu = Efectos

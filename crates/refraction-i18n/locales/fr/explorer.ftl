@@ -6,6 +6,7 @@
 
 view-interface = Une interface
 view-scenes = Scènes
+view-menu = Vue
 view-accuracy = Précision/temps
 # Désigne, dans un message d’erreur, une scène conservée de la dernière exécution.
 view-last-run-scene = la scène de la dernière exécution
@@ -21,6 +22,10 @@ presentation-theme = Thème
 presentation-theme-hover = Standard, ou contraste élevé : noir sur blanc ou blanc sur noir
 presentation-colour-blind = Adapté aux daltoniens
 presentation-colour-blind-hover = Couleurs Okabe–Ito uniquement ; chaque rayon a aussi son propre tireté et son étiquette
+presentation-simple = Vue simple
+presentation-simple-hover = Omet les trois choix de signe rejetés et leur (a, b) : pour une classe qui ne connaît pas encore les quatre candidats
+presentation-look = Apparence
+presentation-diagram-only = Le schéma seul (D)
 language-menu = Langue
 language-hover = La langue de la fenêtre. Elle suit celle du système sauf si elle est choisie ici.
 effects-menu = Effets

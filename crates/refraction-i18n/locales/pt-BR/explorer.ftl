@@ -6,6 +6,7 @@
 
 view-interface = Uma interface
 view-scenes = Cenas
+view-menu = Visão
 view-accuracy = Precisão/tempo
 # Nomeia, em uma mensagem de erro, uma cena guardada da última execução.
 view-last-run-scene = a cena da última execução
@@ -21,6 +22,10 @@ presentation-theme = Tema
 presentation-theme-hover = Padrão ou alto contraste: preto sobre branco ou branco sobre preto
 presentation-colour-blind = Para daltônicos
 presentation-colour-blind-hover = Só cores Okabe–Ito; cada raio também tem seu próprio tracejado e rótulo
+presentation-simple = Visão simples
+presentation-simple-hover = Omite as três escolhas de sinal rejeitadas e seu (a, b): para uma turma que ainda não conhece os quatro candidatos
+presentation-look = Aparência
+presentation-diagram-only = Só o diagrama (D)
 language-menu = Idioma
 language-hover = O idioma da janela. Segue o do sistema, a menos que seja escolhido aqui.
 effects-menu = Efeitos

@@ -6,6 +6,7 @@
 
 view-interface = Одна граница
 view-scenes = Сцены
+view-menu = Вид
 view-accuracy = Точность/время
 # Называет в сообщении об ошибке сцену, сохранившуюся с последнего запуска.
 view-last-run-scene = сцена последнего запуска
@@ -21,6 +22,10 @@ presentation-theme = Тема
 presentation-theme-hover = Стандартная или высокий контраст: чёрное на белом или белое на чёрном
 presentation-colour-blind = Для дальтоников
 presentation-colour-blind-hover = Только цвета Okabe–Ito; у каждого луча также свой тип штриха и подпись
+presentation-simple = Простой вид
+presentation-simple-hover = Скрывает три отвергнутых выбора знаков и их (a, b): для класса, который ещё не знает четырёх кандидатов
+presentation-look = Вид
+presentation-diagram-only = Только схема (D)
 language-menu = Язык
 language-hover = Язык окна. Он совпадает с языком системы, если не выбран здесь.
 effects-menu = Эффекты
