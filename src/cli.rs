@@ -249,6 +249,11 @@ pub struct RenderArgs {
         conflicts_with_all = ["scene", "state", "animate", "view"]
     )]
     pub lesson: Option<String>,
+    /// With --lesson and --out FILE.pdf: the student sheet instead of the teacher's handout
+    /// (each step's question and its diagram with the answer hidden, lines to write the answer
+    /// on, no notes).
+    #[arg(long, requires = "lesson")]
+    pub students: bool,
     /// Width in pixels (64 to 8192).
     #[arg(long, default_value_t = refraction_render::DEFAULT_SIZE.0)]
     pub width: u32,

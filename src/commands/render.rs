@@ -13,6 +13,7 @@ use refraction_explorer::cli::{RenderArgs, ViewArg};
 use refraction_i18n::Locale;
 use refraction_model::ExplorerState;
 use refraction_render::animation::AnimationSpec;
+use refraction_render::handout::Sheet;
 use refraction_render::{self as render, format::ImageFormat};
 use refraction_scene::Scene;
 use refraction_tools::state_file;
@@ -215,7 +216,12 @@ fn animation(args: &RenderArgs, animation: Animation) -> Result<Vec<u8>, String>
 /// size and the animation's frames and rate are checked before anything is traced or drawn.
 pub fn run(args: &RenderArgs) -> ExitCode {
     if let Some(lesson) = &args.lesson {
-        return super::lessons::render(lesson, &args.out, (args.width, args.height));
+        let sheet = if args.students {
+            Sheet::Students
+        } else {
+            Sheet::Teacher
+        };
+        return super::lessons::render(lesson, &args.out, (args.width, args.height), sheet);
     }
     let formats: &[ImageFormat] = match args.animate {
         Some(_) => &[ImageFormat::Gif],

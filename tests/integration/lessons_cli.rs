@@ -114,6 +114,48 @@ fn a_folder_gets_one_svg_per_step_and_a_bad_out_or_deck_is_refused() {
     std::fs::remove_dir_all(&folder).unwrap();
 }
 
+#[test]
+fn the_student_sheet_asks_the_questions_without_answers_or_notes() {
+    let folder = cli::folder("lessons-cli", "students");
+    let path = folder.join("snell-students.pdf");
+    let out = render(&[
+        "--lesson",
+        "snell",
+        "--students",
+        "--out",
+        path.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{out:?}");
+    let deck = Deck::load("snell").unwrap();
+    let pages =
+        pdf_extract::extract_text_from_mem_by_pages(&std::fs::read(&path).unwrap()).unwrap();
+    assert_eq!(pages.len(), deck.steps.len());
+    let bare = |text: &str| text.split_whitespace().collect::<String>();
+    for (page, step) in pages.iter().zip(&deck.steps) {
+        let page = bare(page);
+        assert!(page.contains(&bare(&step.title)), "{page}");
+        if let Some(question) = &step.question {
+            assert!(page.contains(&bare(question)), "{page}");
+            // The diagram's banner says the answer is hidden, and no T is drawn (a scene's
+            // step draws its rays up to the first surface).
+            let one = step.view == refraction_deck::StepView::One;
+            assert!(!one || page.contains(&bare("The answer is hidden")), "{page}");
+            assert!(!page.contains("θt="), "{page}");
+        }
+        assert!(!page.contains(&bare(&step.notes)), "no notes: {page}");
+    }
+    let teacher = folder.join("snell.pdf");
+    let out = render(&["--lesson", "snell", "--out", teacher.to_str().unwrap()]);
+    assert!(out.status.success(), "{out:?}");
+    let text =
+        bare(&pdf_extract::extract_text_from_mem(&std::fs::read(&teacher).unwrap()).unwrap());
+    assert!(
+        text.contains(&bare(&deck.steps[0].notes)),
+        "the teacher's has the notes"
+    );
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
 /// The names in `folder`, sorted.
 fn names_in(folder: &std::path::Path) -> Vec<String> {
     let mut names: Vec<String> = std::fs::read_dir(folder)

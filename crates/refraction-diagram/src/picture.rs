@@ -148,6 +148,9 @@ struct DiagramBuilder<'a> {
     labels: Vec<(Rank, Label)>,
     /// The rank of the labels added next.
     rank: Rank,
+    /// Lines labels keep off where they can (the interface, the critical angle's): drawn as
+    /// guides, but a box over them hides where the surface or the limit is.
+    keep_clear: Vec<(Vec2, Vec2)>,
 }
 
 /// The order in which the diagram's labels are placed, first to last: a label placed earlier
@@ -258,6 +261,14 @@ impl DiagramBuilder<'_> {
                 }
             }
         }
+        for &(a, b) in &self.keep_clear {
+            placer.avoid(Obstacle::Shaft {
+                a,
+                b,
+                half_width: 2.0 * self.layout.unit(),
+                firm: false,
+            });
+        }
         // The hit point, where every ray meets.
         placer.avoid(Obstacle::Disc {
             center: self.at(DVec2::ZERO),
@@ -361,6 +372,13 @@ impl DiagramBuilder<'_> {
         }
     }
 
+    /// Asks the labels to keep off the line between world points `a` and `b` where they can.
+    fn keep_clear_of(&mut self, a: DVec2, b: DVec2) {
+        if let Some(clipped) = clip_segment(self.at(a), self.at(b), &self.layout.drawing) {
+            self.keep_clear.push(clipped);
+        }
+    }
+
     /// The two media, shaded by index and labelled in the drawing area's farthest corners.
     fn media(&mut self, normal: DVec2) {
         let drawing = self.layout.drawing;
@@ -402,6 +420,7 @@ impl DiagramBuilder<'_> {
         let along = normal.perp() * 10.0;
         let surface = self.stroke(2.5, self.palette.ink, Dash::Solid);
         self.segment(-along, along, surface);
+        self.keep_clear_of(-along, along);
         let axis = self.stroke(1.0, self.palette.guide, Dash::Dashed);
         self.segment(-normal * 1.15, normal * 1.15, axis);
         if let Some(critical) = self.state.critical_angle() {
@@ -413,6 +432,7 @@ impl DiagramBuilder<'_> {
             let direction = DVec2::from_angle(side * critical).rotate(normal);
             let stroke = self.stroke(1.8, self.palette.critical, Dash::DashDot);
             self.segment(DVec2::ZERO, direction * 1.15, stroke);
+            self.keep_clear_of(DVec2::ZERO, direction * 1.15);
             let at = self.at(direction * 1.15);
             let away = self.layout.view.direction(direction);
             let angle = number(critical.to_degrees(), 1);
@@ -656,6 +676,7 @@ impl DiagramBuilder<'_> {
         let source = toward_source * INCOMING_LENGTH;
         self.halo(Part::Incoming, vec![self.at(source), self.at(DVec2::ZERO)]);
         self.segment(source, DVec2::ZERO, incoming);
+        self.keep_clear_of(source, DVec2::ZERO);
         let at = self.at(source);
         let away = self.layout.view.direction(toward_source);
         let anchor = (Align::away(away.x), Align::away(away.y));
@@ -841,6 +862,7 @@ impl Diagram {
                 points: layout.canvas.corners().to_vec(),
                 colour: palette.background,
             }],
+            keep_clear: Vec::new(),
         };
         let normal = b.flat(r.facing_normal);
         let toward_source = b.flat(-r.travel);

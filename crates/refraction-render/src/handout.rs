@@ -1,5 +1,7 @@
-//! A handout as PDF: one landscape A4 page per lesson step, with its title, its diagram, its
-//! question and its notes.
+//! A handout as PDF: one portrait A4 page per lesson step. The teacher's handout has the
+//! step's title, its diagram with the answer, its question and the teacher's notes; the
+//! student sheet (`Sheet::Students`) has the title, the diagram with the answer hidden, the
+//! question and ruled lines to write the answer on, and no notes.
 //!
 //! Each page is an SVG document made of the same elements as the SVG export ([`svg`]): the
 //! diagram's primitives nested at their place, the page's words as labels in the diagram's
@@ -7,6 +9,11 @@
 //! that they can be selected, searched and extracted), and the PDF writer svg2pdf uses puts
 //! the forms on pages. One drawing path, then: what the window shows, the SVG export and the
 //! handout all come from [`Primitive`]s.
+//!
+//! The diagram is drawn for a canvas sized so that its smallest words
+//! ([`refraction_diagram::layout::SMALLEST_TEXT`] pixels) are [`SMALLEST_LABEL_PT`] points on
+//! paper, and the teacher's page gives it the height its words leave, so that no page has an
+//! empty third.
 
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -18,46 +25,61 @@ use svg2pdf::usvg;
 use refraction_diagram::Primitive;
 use refraction_diagram::font::Typeface;
 use refraction_diagram::geometry::Colour;
+use refraction_diagram::layout::SMALLEST_TEXT;
 use refraction_diagram::placer::wrap;
 use refraction_diagram::shapes::{Align, Label};
 
 use crate::{RenderError, svg};
 
-/// A page's size in PDF points: A4, landscape.
-pub const PAGE: Vec2 = Vec2::new(842.0, 595.0);
-
-/// The canvas the diagram is drawn on, in pixels (4:3, the page's diagram box scaled up, so
-/// that its labels are the size the window gives them).
-pub const CANVAS: Vec2 = Vec2::new(1040.0, 780.0);
+/// A page's size in PDF points: A4, portrait.
+pub const PAGE: Vec2 = Vec2::new(595.0, 842.0);
 
 /// The page's margin, in points.
-const MARGIN: f32 = 36.0;
+const MARGIN: f32 = 40.0;
 
-/// Where the diagram sits on the page: its top left corner and width (its height follows
-/// [`CANVAS`]'s shape).
-const DIAGRAM_AT: Vec2 = Vec2::new(MARGIN, 96.0);
-const DIAGRAM_WIDTH: f32 = 500.0;
+/// The smallest words of a diagram on paper, in points: 9 and more, to read in a hand.
+pub const SMALLEST_LABEL_PT: f32 = 9.5;
+
+/// Points on paper per pixel of the diagram's canvas.
+const PT_PER_PX: f32 = SMALLEST_LABEL_PT / SMALLEST_TEXT;
 
 /// The sizes of the page's words, in points.
 const HEADING_SIZE: f32 = 11.0;
-const TITLE_SIZE: f32 = 22.0;
+const TITLE_SIZE: f32 = 20.0;
 const TEXT_SIZE: f32 = 12.0;
 
-/// The ink of the page's words.
-const INK: Colour = Colour::hex(0x1a1a1a);
+/// The space between the lines students write on, in points.
+const WRITING_LINE: f32 = 26.0;
 
-/// One page: the words, and the diagram's primitives for a canvas of [`CANVAS`].
-pub struct Page {
+/// The ink of the page's words, and the grey of the lines to write on.
+const INK: Colour = Colour::hex(0x1a1a1a);
+const RULE: Colour = Colour::hex(0xb0b0b0);
+
+/// Which sheet a handout is.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Sheet {
+    /// The teacher's: the answers and the notes.
+    #[default]
+    Teacher,
+    /// The class's: the questions and the diagrams without their answers, room to write, no
+    /// notes.
+    Students,
+}
+
+/// One page: the words, and the diagram drawn for a canvas of the size the page gives it.
+pub struct Page<'a> {
     /// The line above the title: the deck and where the step is (`Snell's law · 2 / 5`).
     pub heading: String,
     /// The step's title.
     pub title: String,
     /// The question for the class, with its label, if any.
     pub question: Option<(String, String)>,
-    /// The teacher's notes, with their label.
-    pub notes: (String, String),
-    /// The diagram, drawn for [`CANVAS`].
-    pub diagram: Vec<Primitive>,
+    /// The teacher's notes, with their label (none on the student sheet).
+    pub notes: Option<(String, String)>,
+    /// Ruled lines under the question to write the answer on (the student sheet).
+    pub writing_lines: bool,
+    /// The diagram's primitives for a canvas of the size asked, in pixels.
+    pub diagram: Box<dyn Fn(Vec2) -> Vec<Primitive> + 'a>,
 }
 
 /// A label at `at` (its top left corner) in the page's ink.
@@ -71,40 +93,6 @@ fn words(text: String, at: Vec2, size: f32) -> Label {
         colour: INK,
         background: None,
     }
-}
-
-/// The page's words as labels: the heading and title across the top, the question and the
-/// notes in the column beside the diagram, wrapped to it.
-fn page_words(face: &Typeface, page: &Page) -> Vec<Primitive> {
-    let column_x = DIAGRAM_AT.x + DIAGRAM_WIDTH + 20.0;
-    let column = PAGE.x - MARGIN - column_x;
-    let title_width = PAGE.x - 2.0 * MARGIN;
-    let title = wrap(face, &page.title, TITLE_SIZE, title_width);
-    let mut labels = vec![
-        words(
-            page.heading.clone(),
-            Vec2::new(MARGIN, MARGIN),
-            HEADING_SIZE,
-        ),
-        words(
-            at_most(face, &title, TITLE_SIZE, title_width, 2),
-            Vec2::new(MARGIN, MARGIN + 18.0),
-            TITLE_SIZE,
-        ),
-    ];
-    let mut y = DIAGRAM_AT.y;
-    let sections = page.question.iter().chain(core::iter::once(&page.notes));
-    for (label, text) in sections.filter(|(_, text)| !text.trim().is_empty()) {
-        labels.push(words(label.clone(), Vec2::new(column_x, y), TEXT_SIZE));
-        y += face.line_height(TEXT_SIZE) * 1.3;
-        let room = ((PAGE.y - MARGIN - y) / face.line_height(TEXT_SIZE)).max(1.0) as usize;
-        let body = wrap(face, text, TEXT_SIZE, column);
-        let body = at_most(face, &body, TEXT_SIZE, column, room);
-        let lines = body.lines().count() as f32;
-        labels.push(words(body, Vec2::new(column_x, y), TEXT_SIZE));
-        y += face.line_height(TEXT_SIZE) * (lines + 1.0);
-    }
-    labels.into_iter().map(Primitive::Text).collect()
 }
 
 /// The first `count` lines of `text` (wrapped to `width` at `size`), the last ending in `…`
@@ -124,24 +112,141 @@ fn at_most(face: &Typeface, text: &str, size: f32, width: f32, count: usize) -> 
     lines.join("\n")
 }
 
+/// Where a page's parts go, in points.
+struct PageLayout {
+    /// The title's words, wrapped (at most two lines).
+    title: String,
+    /// The top of the diagram's box.
+    diagram_top: f32,
+    /// The diagram's box size.
+    diagram: Vec2,
+    /// The sections under the diagram: label, wrapped text.
+    sections: Vec<(String, String)>,
+}
+
+/// The width of the page's text and diagram.
+const COLUMN: f32 = PAGE.x - 2.0 * MARGIN;
+
+impl PageLayout {
+    fn of(face: &Typeface, page: &Page<'_>) -> Self {
+        let line = |size: f32| face.line_height(size);
+        let title = wrap(face, &page.title, TITLE_SIZE, COLUMN);
+        let title = at_most(face, &title, TITLE_SIZE, COLUMN, 2);
+        let diagram_top = MARGIN
+            + line(HEADING_SIZE) * 1.4
+            + face.measure(&title, TITLE_SIZE).y
+            + TITLE_SIZE * 0.6;
+        // Each section: its label's line, its text, a blank line.
+        let mut sections = Vec::new();
+        for (label, text) in page.question.iter().chain(&page.notes) {
+            if !text.trim().is_empty() {
+                sections.push((label.clone(), wrap(face, text, TEXT_SIZE, COLUMN)));
+            }
+        }
+        let text_height = |sections: &[(String, String)]| -> f32 {
+            sections
+                .iter()
+                .map(|(_, body)| line(TEXT_SIZE) * (body.lines().count() as f32 + 2.3))
+                .sum()
+        };
+        let bottom = PAGE.y - MARGIN;
+        // The student sheet keeps a 4:3 diagram and leaves the rest to write on; the teacher's
+        // gives the diagram the height its words leave (from half its width to a bit more than it).
+        let height = if page.writing_lines {
+            COLUMN * 0.75
+        } else {
+            (bottom - diagram_top - TEXT_SIZE - text_height(&sections))
+                .clamp(COLUMN * 0.5, COLUMN * 1.05)
+        };
+        // Words that would run past the page are cut at its foot, with "…".
+        let room = bottom - (diagram_top + height + TEXT_SIZE);
+        let mut left = (room / line(TEXT_SIZE)).max(0.0) as usize;
+        for (_, body) in &mut sections {
+            let lines = left.saturating_sub(2).max(1);
+            *body = at_most(face, body, TEXT_SIZE, COLUMN, lines);
+            left = left.saturating_sub(body.lines().count() + 2);
+        }
+        Self {
+            title,
+            diagram_top,
+            diagram: Vec2::new(COLUMN, height),
+            sections,
+        }
+    }
+
+    /// The canvas the diagram is drawn on, in pixels: its box at [`PT_PER_PX`].
+    fn canvas(&self) -> Vec2 {
+        (self.diagram / PT_PER_PX).round()
+    }
+}
+
+/// The page's words as labels (the heading and title across the top, the question and the
+/// notes under the diagram) and, on the student sheet, the lines to write on.
+fn page_words(face: &Typeface, page: &Page<'_>, layout: &PageLayout) -> Vec<Primitive> {
+    let mut out = vec![
+        Primitive::Text(words(
+            page.heading.clone(),
+            Vec2::new(MARGIN, MARGIN),
+            HEADING_SIZE,
+        )),
+        Primitive::Text(words(
+            layout.title.clone(),
+            Vec2::new(MARGIN, MARGIN + face.line_height(HEADING_SIZE) * 1.4),
+            TITLE_SIZE,
+        )),
+    ];
+    let mut y = layout.diagram_top + layout.diagram.y + TEXT_SIZE;
+    for (label, body) in &layout.sections {
+        out.push(Primitive::Text(Label {
+            colour: INK,
+            ..words(label.clone(), Vec2::new(MARGIN, y), TEXT_SIZE)
+        }));
+        y += face.line_height(TEXT_SIZE) * 1.3;
+        out.push(Primitive::Text(words(
+            body.clone(),
+            Vec2::new(MARGIN, y),
+            TEXT_SIZE,
+        )));
+        y += face.line_height(TEXT_SIZE) * (body.lines().count() as f32 + 1.0);
+    }
+    if page.writing_lines {
+        let mut line_y = y + WRITING_LINE;
+        while line_y <= PAGE.y - MARGIN {
+            out.push(Primitive::Polyline {
+                points: vec![
+                    Vec2::new(MARGIN, line_y),
+                    Vec2::new(PAGE.x - MARGIN, line_y),
+                ],
+                width: 0.6,
+                colour: RULE,
+            });
+            line_y += WRITING_LINE;
+        }
+    }
+    out
+}
+
 /// The page as an SVG document, [`PAGE`] points wide and high.
-fn page_svg(face: &Typeface, page: &Page) -> String {
-    let height = DIAGRAM_WIDTH * CANVAS.y / CANVAS.x;
+fn page_svg(face: &Typeface, page: &Page<'_>) -> String {
+    let layout = PageLayout::of(face, page);
+    let canvas = layout.canvas();
+    let diagram = (page.diagram)(canvas);
     format!(
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" \
          width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">\n\
          <rect width=\"{w}\" height=\"{h}\" fill=\"#ffffff\"/>\n{words}\
-         <svg x=\"{x}\" y=\"{y}\" width=\"{dw}\" height=\"{height}\" viewBox=\"0 0 {cw} {ch}\">\n\
+         <svg x=\"{x}\" y=\"{y}\" width=\"{dw}\" height=\"{dh}\" viewBox=\"0 0 {cw} {ch}\">\n\
          {diagram}</svg>\n</svg>\n",
         w = PAGE.x,
         h = PAGE.y,
-        words = svg::elements(face, &page_words(face, page)),
-        x = DIAGRAM_AT.x,
-        y = DIAGRAM_AT.y,
-        dw = DIAGRAM_WIDTH,
-        cw = CANVAS.x,
-        ch = CANVAS.y,
-        diagram = svg::elements(face, &page.diagram),
+        words = svg::elements(face, &page_words(face, page, &layout)),
+        x = MARGIN,
+        y = layout.diagram_top,
+        dw = layout.diagram.x,
+        dh = layout.diagram.y,
+        cw = canvas.x,
+        ch = canvas.y,
+        diagram = svg::elements(face, &diagram),
     )
 }
 
@@ -159,7 +264,7 @@ fn fonts() -> Arc<usvg::fontdb::Database> {
 /// # Errors
 /// The embedded font cannot be read, or a page cannot be converted (a broken build: the pages
 /// are the project's own SVG).
-pub fn pdf(title: &str, pages: &[Page]) -> Result<Vec<u8>, RenderError> {
+pub fn pdf(title: &str, pages: &[Page<'_>]) -> Result<Vec<u8>, RenderError> {
     let face = Typeface::egui_default()?;
     let mut options = usvg::Options {
         fontdb: fonts(),
@@ -288,10 +393,12 @@ mod tests {
             heading: "Deck · 1 / 1".to_owned(),
             title: word.clone(),
             question: None,
-            notes: ("Notes".to_owned(), word),
-            diagram: Vec::new(),
+            notes: Some(("Notes".to_owned(), word)),
+            writing_lines: false,
+            diagram: Box::new(|_| Vec::new()),
         };
-        let labels = page_words(&face, &page);
+        let layout = PageLayout::of(&face, &page);
+        let labels = page_words(&face, &page, &layout);
         for label in &labels {
             let Primitive::Text(label) = label else {
                 panic!("words are labels")
@@ -303,10 +410,7 @@ mod tests {
                 label.text.lines().count()
             );
             for line in label.text.lines() {
-                assert!(
-                    face.width(line, label.size) <= PAGE.x - 2.0 * MARGIN,
-                    "{line}"
-                );
+                assert!(face.width(line, label.size) <= COLUMN, "{line}");
             }
         }
         let Primitive::Text(title) = &labels[1] else {
@@ -314,5 +418,32 @@ mod tests {
         };
         assert_eq!(title.text.lines().count(), 2);
         assert!(title.text.ends_with('…'));
+    }
+
+    #[test]
+    fn the_diagram_fills_the_page_and_its_words_are_nine_points_or_more() {
+        let face = Typeface::egui_default().unwrap();
+        let page = |notes: &str, writing_lines: bool| Page {
+            heading: "Deck · 1 / 2".to_owned(),
+            title: "A step".to_owned(),
+            question: Some(("Question".to_owned(), "Which way does it bend?".to_owned())),
+            notes: (!writing_lines).then(|| ("Notes".to_owned(), notes.to_owned())),
+            writing_lines,
+            diagram: Box::new(|_| Vec::new()),
+        };
+        let teacher = PageLayout::of(&face, &page("Short notes.", false));
+        let last_word = teacher.diagram_top + teacher.diagram.y + TEXT_SIZE * 8.0;
+        assert!(
+            PAGE.y - MARGIN - last_word < PAGE.y / 4.0,
+            "no empty lower quarter"
+        );
+        assert!(SMALLEST_TEXT * teacher.diagram.x / teacher.canvas().x >= 9.0);
+        let students = page("", true);
+        let sheet = PageLayout::of(&face, &students);
+        let rules = page_words(&face, &students, &sheet)
+            .iter()
+            .filter(|p| matches!(p, Primitive::Polyline { .. }))
+            .count();
+        assert!(rules >= 6, "{rules} lines to write on");
     }
 }
