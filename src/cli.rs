@@ -254,6 +254,11 @@ pub struct RenderArgs {
     /// on, no notes).
     #[arg(long, requires = "lesson")]
     pub students: bool,
+    /// In an SVG, write the labels as editable text (exact only where Ubuntu Light is
+    /// installed or the viewer honours textLength) instead of outlined glyphs, which look the
+    /// same in every viewer.
+    #[arg(long)]
+    pub svg_text: bool,
     /// Width in pixels (64 to 8192).
     #[arg(long, default_value_t = refraction_render::DEFAULT_SIZE.0)]
     pub width: u32,

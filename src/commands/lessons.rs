@@ -158,7 +158,8 @@ fn pictures(deck: &Deck, folder: &Path, (width, height): (u32, u32)) -> Result<(
         .iter()
         .map(|step| {
             let primitives = picture(deck, step, size, false)?;
-            svg::document(width, height, |_, _| primitives).map_err(|e| e.to_string())
+            svg::document(width, height, svg::Labels::default(), |_, _| primitives)
+                .map_err(|e| e.to_string())
         })
         .collect::<Result<Vec<String>, String>>()?;
     std::fs::create_dir_all(folder)

@@ -14,6 +14,7 @@ use refraction_i18n::Locale;
 use refraction_model::ExplorerState;
 use refraction_render::animation::AnimationSpec;
 use refraction_render::handout::Sheet;
+use refraction_render::svg::Labels;
 use refraction_render::{self as render, format::ImageFormat};
 use refraction_scene::Scene;
 use refraction_tools::state_file;
@@ -127,6 +128,12 @@ fn initial_state(path: Option<&Path>) -> Result<ExplorerState, String> {
 /// in `state` (or the default). The size is checked before the scene is traced.
 fn picture(args: &RenderArgs, format: ImageFormat) -> Result<Vec<u8>, String> {
     let size = (args.width, args.height);
+    let labels = if args.svg_text {
+        Labels::Text
+    } else {
+        Labels::Outlined
+    };
+    let format = (format, labels);
     render::check_size(size.0, size.1).map_err(|e| e.to_string())?;
     let out = args.out.as_path();
     match (&args.scene, &args.state) {
@@ -154,7 +161,7 @@ fn picture(args: &RenderArgs, format: ImageFormat) -> Result<Vec<u8>, String> {
 fn view_file(
     view: ViewArg,
     state: &ExplorerState,
-    format: ImageFormat,
+    format: (ImageFormat, Labels),
     size: (u32, u32),
     out: &Path,
 ) -> Result<Vec<u8>, String> {

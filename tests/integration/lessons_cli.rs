@@ -102,7 +102,10 @@ fn a_folder_gets_one_svg_per_step_and_a_bad_out_or_deck_is_refused() {
         ]
     );
     let svg = std::fs::read_to_string(folder.join("slides/step-02.svg")).unwrap();
-    assert!(svg.contains("<text"), "labels as text");
+    assert!(
+        svg.contains("<title>") && !svg.contains("<text"),
+        "labels outlined"
+    );
     let png = folder.join("x.png");
     let refused = render(&["--lesson", "snell", "--out", png.to_str().unwrap()]);
     assert_eq!(refused.status.code(), Some(2));
@@ -139,7 +142,10 @@ fn the_student_sheet_asks_the_questions_without_answers_or_notes() {
             // The diagram's banner says the answer is hidden, and no T is drawn (a scene's
             // step draws its rays up to the first surface).
             let one = step.view == refraction_deck::StepView::One;
-            assert!(!one || page.contains(&bare("The answer is hidden")), "{page}");
+            assert!(
+                !one || page.contains(&bare("The answer is hidden")),
+                "{page}"
+            );
             assert!(!page.contains("θt="), "{page}");
         }
         assert!(!page.contains(&bare(&step.notes)), "no notes: {page}");

@@ -1,5 +1,6 @@
 //! `render` for slides end to end: SVG by the file's extension (the diagram and a scene, labels
-//! as editable text), and `--animate` GIFs with the requested size and frame count.
+//! outlined, or as editable text with `--svg-text`), and `--animate` GIFs with the requested
+//! size and frame count.
 
 use crate::cli;
 
@@ -14,13 +15,29 @@ fn path(p: &Path) -> &str {
     p.to_str().unwrap()
 }
 
-/// The SVG at `file`: parsed (it must be well-formed SVG), its size, and its `<text>` contents.
+/// The words of an outlined label: its group's `<title>`, unescaped.
+fn titles(text: &str) -> Vec<String> {
+    text.split("<title>")
+        .skip(1)
+        .map(|t| {
+            let words = &t[..t.find("</title>").unwrap()];
+            words
+                .replace("&lt;", "<")
+                .replace("&gt;", ">")
+                .replace("&amp;", "&")
+        })
+        .collect()
+}
+
+/// The SVG at `file`: parsed (it must be well-formed SVG), its size, and its labels' words
+/// (outlined labels' titles, or `<text>` contents).
 fn svg(file: &Path) -> ((f32, f32), Vec<String>) {
     let text = std::fs::read_to_string(file).unwrap();
     let tree = resvg::usvg::Tree::from_str(&text, &resvg::usvg::Options::default())
         .expect("the SVG parses");
     let size = (tree.size().width(), tree.size().height());
-    let labels = text
+    let mut labels = titles(&text);
+    let texts = text
         .split("<text")
         .skip(1)
         .map(|element| {
@@ -38,12 +55,29 @@ fn svg(file: &Path) -> ((f32, f32), Vec<String>) {
             }
             words
         })
-        .collect();
+        .collect::<Vec<String>>();
+    labels.extend(texts);
     (size, labels)
 }
 
 #[test]
-fn an_svg_out_writes_the_diagram_as_svg_with_its_labels_as_text() {
+fn svg_text_writes_the_labels_as_editable_text() {
+    let folder = folder("svg-text");
+    let out = folder.join("diagram.svg");
+    let output = render(&["--out", path(&out), "--svg-text"]);
+    assert!(output.status.success(), "{output:?}");
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert!(
+        text.contains("<text") && !text.contains("<title>"),
+        "labels as text"
+    );
+    let (_, labels) = svg(&out);
+    assert!(labels.iter().any(|l| l == "T"), "{labels:?}");
+    std::fs::remove_dir_all(&folder).unwrap();
+}
+
+#[test]
+fn an_svg_out_writes_the_diagram_as_svg_with_its_labels_outlined() {
     let folder = folder("svg");
     let out = folder.join("diagram.SVG");
     let output = render(&["--out", path(&out), "--width", "800", "--height", "450"]);

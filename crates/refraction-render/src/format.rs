@@ -8,7 +8,7 @@ use std::path::Path;
 pub enum ImageFormat {
     /// Portable Network Graphics (`.png`).
     Png,
-    /// Scalable Vector Graphics (`.svg`): shapes as paths, labels as editable text.
+    /// Scalable Vector Graphics (`.svg`): shapes as paths, labels outlined or as text.
     Svg,
     /// An animated GIF (`.gif`), written by the animations only.
     Gif,

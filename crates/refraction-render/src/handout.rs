@@ -239,14 +239,14 @@ fn page_svg(face: &Typeface, page: &Page<'_>) -> String {
          {diagram}</svg>\n</svg>\n",
         w = PAGE.x,
         h = PAGE.y,
-        words = svg::elements(face, &page_words(face, page, &layout)),
+        words = svg::elements(face, &page_words(face, page, &layout), svg::Labels::Text),
         x = MARGIN,
         y = layout.diagram_top,
         dw = layout.diagram.x,
         dh = layout.diagram.y,
         cw = canvas.x,
         ch = canvas.y,
-        diagram = svg::elements(face, &diagram),
+        diagram = svg::elements(face, &diagram, svg::Labels::Text),
     )
 }
 

@@ -235,7 +235,12 @@ pub fn interface_svg(
     width: u32,
     height: u32,
 ) -> Result<String, RenderError> {
-    svg::document(width, height, interface(state, overlay))
+    svg::document(
+        width,
+        height,
+        svg::Labels::default(),
+        interface(state, overlay),
+    )
 }
 
 /// A pixmap as PNG bytes.
@@ -262,20 +267,22 @@ pub fn png(
 }
 
 /// A still picture drawn by `primitives` at `width` × `height` as the bytes of a `format`
-/// file: PNG pixels or an SVG document.
+/// file: PNG pixels or an SVG document, its labels written as `labels` says.
 ///
 /// # Errors
 /// As [`draw_primitives`], a failed encoding, or [`RenderError::NotStill`] for GIF (`path`
 /// names the file in the message).
 pub fn still(
-    format: ImageFormat,
+    (format, labels): (ImageFormat, svg::Labels),
     (width, height): (u32, u32),
     path: &Path,
     primitives: impl FnOnce(Vec2, &Typeface) -> Vec<Primitive>,
 ) -> Result<Vec<u8>, RenderError> {
     match format {
         ImageFormat::Png => encode(&draw_primitives(width, height, primitives)?),
-        ImageFormat::Svg => svg::document(width, height, primitives).map(String::into_bytes),
+        ImageFormat::Svg => {
+            svg::document(width, height, labels, primitives).map(String::into_bytes)
+        }
         ImageFormat::Gif => Err(RenderError::NotStill(path.display().to_string())),
     }
 }
@@ -288,7 +295,7 @@ pub fn still(
 pub fn interface_file(
     state: &ExplorerState,
     overlay: &Overlay,
-    format: ImageFormat,
+    format: (ImageFormat, svg::Labels),
     size: (u32, u32),
     path: &Path,
 ) -> Result<Vec<u8>, RenderError> {
@@ -302,7 +309,7 @@ pub fn interface_file(
 /// As [`still`].
 pub fn scene_file(
     scene: &Scene,
-    format: ImageFormat,
+    format: (ImageFormat, svg::Labels),
     (width, height): (u32, u32),
     path: &Path,
 ) -> Result<Vec<u8>, RenderError> {
@@ -323,7 +330,7 @@ pub fn export(
     path: &Path,
 ) -> Result<(), RenderError> {
     let format = ImageFormat::for_path(path)?;
-    let bytes = interface_file(state, overlay, format, size, path)?;
+    let bytes = interface_file(state, overlay, (format, svg::Labels::default()), size, path)?;
     write_atomically(path, &bytes).map_err(RenderError::Write)
 }
 
@@ -340,10 +347,15 @@ pub fn export_accuracy_plot(
     path: &Path,
 ) -> Result<(), RenderError> {
     let format = ImageFormat::for_path(path)?;
-    let bytes = still(format, (width, height), path, |size, face| {
-        let palette = refraction_diagram::palette::Palette::STANDARD;
-        refraction_diagram::accuracy_plot::primitives(report, size, face, &palette)
-    })?;
+    let bytes = still(
+        (format, svg::Labels::default()),
+        (width, height),
+        path,
+        |size, face| {
+            let palette = refraction_diagram::palette::Palette::STANDARD;
+            refraction_diagram::accuracy_plot::primitives(report, size, face, &palette)
+        },
+    )?;
     write_atomically(path, &bytes).map_err(RenderError::Write)
 }
 
@@ -363,7 +375,12 @@ pub fn render_scene(scene: &Scene, width: u32, height: u32) -> Result<Pixmap, Re
 /// As [`render_scene`].
 pub fn scene_svg(scene: &Scene, width: u32, height: u32) -> Result<String, RenderError> {
     check_size(width, height)?;
-    svg::document(width, height, traced(scene, &scene.trace()))
+    svg::document(
+        width,
+        height,
+        svg::Labels::default(),
+        traced(scene, &scene.trace()),
+    )
 }
 
 /// Writes `scene`, traced, at `path`, atomically, as PNG or SVG by the path's extension.
@@ -378,7 +395,12 @@ pub fn export_scene(
     path: &Path,
 ) -> Result<(), RenderError> {
     let format = ImageFormat::for_path(path)?;
-    let bytes = scene_file(scene, format, (width, height), path)?;
+    let bytes = scene_file(
+        scene,
+        (format, svg::Labels::default()),
+        (width, height),
+        path,
+    )?;
     write_atomically(path, &bytes).map_err(RenderError::Write)
 }
 
@@ -467,29 +489,44 @@ mod tests {
             ..Overlay::default()
         };
         let path = Path::new("slide.svg");
-        let svg = interface_file(&state, &overlay, ImageFormat::Svg, (640, 360), path).unwrap();
+        let svg = interface_file(
+            &state,
+            &overlay,
+            (ImageFormat::Svg, svg::Labels::Text),
+            (640, 360),
+            path,
+        )
+        .unwrap();
         let svg = String::from_utf8(svg).unwrap();
         assert!(svg.contains("T: transmitted"), "the shares are in the SVG");
         assert!(
             svg.contains("fronts λ/1.50 apart"),
             "the wavefronts are in the SVG"
         );
+        // Outlined (the default), the words are in each label's title.
         let plain = interface_file(
             &state,
             &Overlay::default(),
-            ImageFormat::Svg,
+            (ImageFormat::Svg, svg::Labels::Outlined),
             (640, 360),
             path,
         );
         assert!(
-            !String::from_utf8(plain.unwrap())
+            !String::from_utf8(plain.as_ref().unwrap().clone())
                 .unwrap()
                 .contains("fronts")
         );
-        let png = interface_file(&state, &overlay, ImageFormat::Png, (640, 360), path).unwrap();
+        let plain = String::from_utf8(plain.unwrap()).unwrap();
+        assert!(
+            plain.contains("<title>T</title>") && !plain.contains("<text"),
+            "{plain}"
+        );
+        let png = (ImageFormat::Png, svg::Labels::default());
+        let png = interface_file(&state, &overlay, png, (640, 360), path).unwrap();
         assert!(Pixmap::decode_png(&png).is_ok());
         let gif = Path::new("x.gif");
-        let err = interface_file(&state, &overlay, ImageFormat::Gif, (640, 360), gif);
+        let format = (ImageFormat::Gif, svg::Labels::default());
+        let err = interface_file(&state, &overlay, format, (640, 360), gif);
         assert!(
             err.unwrap_err()
                 .to_string()

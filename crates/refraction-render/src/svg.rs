@@ -1,5 +1,5 @@
 //! The diagram as SVG, for slides: the same [`Primitive`]s the PNG draws, as editable vector
-//! shapes and text.
+//! shapes, and labels either outlined or as text ([`Labels`]).
 //!
 //! Fills and strokes become `<path>`s and `<circle>`s with the PNG's colours (opacity as
 //! `fill-opacity`/`stroke-opacity`), widths, round caps and joins. Dashes are already cut into
@@ -11,8 +11,16 @@
 //! advance widths alone, and each line's `textLength` the width it has in that font, so that a
 //! viewer without Ubuntu Light squeezes or spreads its own font to the same width and the text
 //! stays inside its box; their background boxes are paths behind them.
+//!
+//! Not every viewer honours `textLength` (librsvg, and with it much slide software, does not):
+//! there the text of a missing font runs out of its box. So a picture written to a file has
+//! its labels outlined by default ([`Labels::Outlined`]: the glyphs as paths, in the PNG's
+//! font, exactly where the PNG has them, each label a group whose `<title>` holds its words);
+//! text that stays text ([`Labels::Text`]) is written on request, and inside a handout, whose
+//! PDF embeds the font.
 
 use glam::Vec2;
+use skrifa::outline::OutlinePen;
 
 use refraction_diagram::Primitive;
 use refraction_diagram::font::Typeface;
@@ -117,8 +125,75 @@ fn stroke(width: f32, colour: Colour) -> String {
     )
 }
 
-/// Writes one label: its background box as a path, then the text, one tspan per line.
-fn text(out: &mut String, face: &Typeface, label: &Label) {
+/// How labels are written.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Labels {
+    /// As paths: the glyphs outlined in the PNG's font, right in every viewer; the words in
+    /// each label's `<title>`.
+    #[default]
+    Outlined,
+    /// As `<text>`: editable, exact where Ubuntu Light is installed or `textLength` honoured.
+    Text,
+}
+
+/// Writes outlines as SVG path data.
+struct PathData(String);
+
+impl PathData {
+    fn point(&mut self, command: char, points: &[(f32, f32)]) {
+        self.0.push(command);
+        for (i, (x, y)) in points.iter().enumerate() {
+            if i > 0 {
+                self.0.push(' ');
+            }
+            self.0.push_str(&format!("{} {}", number(*x), number(*y)));
+        }
+    }
+}
+
+impl OutlinePen for PathData {
+    fn move_to(&mut self, x: f32, y: f32) {
+        self.point('M', &[(x, y)]);
+    }
+
+    fn line_to(&mut self, x: f32, y: f32) {
+        self.point('L', &[(x, y)]);
+    }
+
+    fn quad_to(&mut self, cx0: f32, cy0: f32, x: f32, y: f32) {
+        self.point('Q', &[(cx0, cy0), (x, y)]);
+    }
+
+    fn curve_to(&mut self, cx0: f32, cy0: f32, cx1: f32, cy1: f32, x: f32, y: f32) {
+        self.point('C', &[(cx0, cy0), (cx1, cy1), (x, y)]);
+    }
+
+    fn close(&mut self) {
+        self.0.push('Z');
+    }
+}
+
+/// Writes one label's words as outlines: a group named by its words, one path of glyphs.
+fn outlined(out: &mut String, face: &Typeface, label: &Label, top_left: Vec2) {
+    let mut pen = PathData(String::new());
+    let line_height = face.line_height(label.size);
+    for (row, line) in label.text.lines().enumerate() {
+        let at = top_left + Vec2::new(0.0, row as f32 * line_height);
+        face.outline(line, at, label.size, &mut pen);
+    }
+    if pen.0.is_empty() {
+        return;
+    }
+    out.push_str(&format!(
+        "<g><title>{}</title><path d=\"{}\" {}/></g>\n",
+        escape(&label.text),
+        pen.0,
+        paint("fill", label.colour)
+    ));
+}
+
+/// Writes one label: its background box as a path, then its words (`labels` says how).
+fn text(out: &mut String, face: &Typeface, label: &Label, labels: Labels) {
     let size = face.measure(&label.text, label.size);
     let top_left = label.at - size * Vec2::new(label.h.fraction(), label.v.fraction());
     if !top_left.is_finite() {
@@ -134,6 +209,10 @@ fn text(out: &mut String, face: &Typeface, label: &Label) {
             out,
             &format!(r#"<path d="{d}" {}/>"#, paint("fill", background)),
         );
+    }
+    if labels == Labels::Outlined {
+        outlined(out, face, label, top_left);
+        return;
     }
     let font = format!(
         r#"font-family="{FONT_FAMILY}" font-weight="{FONT_WEIGHT}" font-size="{}""#,
@@ -169,7 +248,12 @@ fn text(out: &mut String, face: &Typeface, label: &Label) {
 
 /// Writes the element that starts at `primitives[start]` (a run of polylines of one width and
 /// colour becomes one path); returns where the next element starts.
-fn draw_group(out: &mut String, face: &Typeface, primitives: &[Primitive], start: usize) -> usize {
+fn draw_group(
+    out: &mut String,
+    face: &Typeface,
+    (primitives, labels): (&[Primitive], Labels),
+    start: usize,
+) -> usize {
     match &primitives[start] {
         Primitive::Polygon { points, colour } => {
             let mut d = String::new();
@@ -228,20 +312,21 @@ fn draw_group(out: &mut String, face: &Typeface, primitives: &[Primitive], start
             start + 1
         }
         Primitive::Text(label) => {
-            text(out, face, label);
+            text(out, face, label, labels);
             start + 1
         }
     }
 }
 
 /// A `width` × `height` SVG document of `primitives`, in drawing order, as [`crate::draw_primitives`]
-/// draws them into pixels.
+/// draws them into pixels, its labels written as `labels` says.
 ///
 /// # Errors
 /// A size outside [`crate::SIZE_LIMITS`], or an unreadable embedded font.
 pub fn document(
     width: u32,
     height: u32,
+    labels: Labels,
     primitives: impl FnOnce(Vec2, &Typeface) -> Vec<Primitive>,
 ) -> Result<String, RenderError> {
     check_size(width, height)?;
@@ -251,7 +336,7 @@ pub fn document(
         "{}width=\"{width}\" height=\"{height}\" viewBox=\"0 0 {width} {height}\">\n",
         document_header()
     );
-    out.push_str(&elements(&face, &primitives));
+    out.push_str(&elements(&face, &primitives, labels));
     out.push_str("</svg>\n");
     Ok(out)
 }
@@ -266,11 +351,11 @@ pub fn document_header() -> &'static str {
 /// The SVG elements of `primitives`, in drawing order, without a document around them: what
 /// [`document`] holds, and what a handout's page nests at its diagram's place.
 #[must_use]
-pub fn elements(face: &Typeface, primitives: &[Primitive]) -> String {
+pub fn elements(face: &Typeface, primitives: &[Primitive], labels: Labels) -> String {
     let mut out = String::new();
     let mut next = 0;
     while next < primitives.len() {
-        next = draw_group(&mut out, face, primitives, next);
+        next = draw_group(&mut out, face, (primitives, labels), next);
     }
     out
 }
@@ -293,6 +378,43 @@ mod tests {
     }
 
     #[test]
+    fn an_outlined_label_is_glyph_paths_inside_its_box_named_by_its_words() {
+        // Issue 32: librsvg ignores textLength, so text in a missing font ran out of its box.
+        let face = Typeface::egui_default().unwrap();
+        let mut out = String::new();
+        let label = Label {
+            text: "θi = 40°\nW & N".to_owned(),
+            ..label("")
+        };
+        text(&mut out, &face, &label, Labels::Outlined);
+        assert!(!out.contains("<text"), "{out}");
+        assert!(out.contains("<title>θi = 40°\nW &amp; N</title>"), "{out}");
+        let glyphs = out
+            .split("<path d=\"")
+            .nth(2)
+            .unwrap()
+            .split('"')
+            .next()
+            .unwrap();
+        let numbers: Vec<f32> = glyphs
+            .split(|c: char| c.is_ascii_alphabetic() || c == ' ')
+            .filter_map(|n| n.parse().ok())
+            .collect();
+        let size = face.measure(&label.text, label.size);
+        let (min, max) = (
+            label.at - Vec2::splat(1.0),
+            label.at + size + Vec2::splat(1.0),
+        );
+        for point in numbers.chunks(2) {
+            let p = Vec2::new(point[0], point[1]);
+            assert!(
+                p.cmpge(min).all() && p.cmple(max).all(),
+                "{p} outside {min}–{max}"
+            );
+        }
+    }
+
+    #[test]
     fn numbers_are_short_and_never_negative_zero() {
         assert_eq!(number(1.0), "1");
         assert_eq!(number(-0.001), "0");
@@ -308,7 +430,7 @@ mod tests {
             width: 2.0,
             colour,
         };
-        let doc = document(64, 64, |_, _| {
+        let doc = document(64, 64, Labels::Text, |_, _| {
             vec![
                 piece(0.0),
                 piece(10.0),
@@ -341,7 +463,9 @@ mod tests {
 
     #[test]
     fn a_bad_size_is_refused_as_for_the_png() {
-        let err = document(10, 64, |_, _| Vec::new()).unwrap_err().to_string();
+        let err = document(10, 64, Labels::Text, |_, _| Vec::new())
+            .unwrap_err()
+            .to_string();
         assert!(err.contains("10×64"), "{err}");
     }
 }
