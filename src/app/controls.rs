@@ -20,6 +20,8 @@ pub struct Controls {
     /// The lesson last started here, which *Reset* goes back to (none yet when the window
     /// opened on a state file or where it was last closed: then the first lesson).
     lesson: Option<Lesson>,
+    /// A lesson started this frame, for the window to turn on what it shows with it.
+    pub started: Option<Lesson>,
     theta_i: TypedField,
     mu_i: TypedField,
     mu_t: TypedField,
@@ -38,6 +40,7 @@ impl Default for Controls {
     fn default() -> Self {
         Self {
             lesson: None,
+            started: None,
             theta_i: TypedField::default(),
             mu_i: TypedField::default(),
             mu_t: TypedField::default(),
@@ -160,6 +163,7 @@ impl Controls {
                             .clicked()
                         {
                             self.lesson = Some(lesson);
+                            self.started = Some(lesson);
                             *state = lesson.state();
                         }
                     }

@@ -25,9 +25,9 @@ use refraction_render::format::ImageFormat;
 use refraction_render::{RenderError, SIZE_LIMITS};
 use refraction_scene::Scene;
 
-/// The size of an exported animation when none is chosen: a slide's width, small enough to
-/// draw in seconds.
-pub const DEFAULT_ANIMATION_SIZE: (u32, u32) = (960, 540);
+/// The size of an exported animation when none is chosen: 720p, whose smallest words (15
+/// pixels) read on a slide shown full screen, and small enough to draw in seconds.
+pub const DEFAULT_ANIMATION_SIZE: (u32, u32) = (1280, 720);
 
 /// An export running in the background.
 #[derive(Debug)]

@@ -2,7 +2,7 @@
 //! fields, written atomically), a share string that reproduces the exact state elsewhere, and
 //! the current case copied as a `solve` line, code or a unit-test vector.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use egui::{RichText, TextEdit, Ui};
 use refraction_i18n::t;
@@ -52,7 +52,7 @@ fn open_failed(error: &LoadError) -> String {
 }
 
 /// The panel's fields and what its last action said.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct FilesPanel {
     path: String,
     pasted: String,
@@ -62,6 +62,18 @@ pub struct FilesPanel {
     dialog: Option<FileDialog>,
     /// A file the user is asked about replacing.
     replace: Option<PathBuf>,
+    /// A scene or a lesson deck opened here by mistake for a state: the window opens it as
+    /// what it is.
+    opened: Option<Opened>,
+}
+
+/// A file of another kind than a state, opened from the state's field.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Opened {
+    /// A scene, for the Scenes view.
+    Scene(Box<refraction_scene::Scene>),
+    /// A lesson deck, shown at its first step.
+    Deck(Box<refraction_deck::Deck>),
 }
 
 impl Default for FilesPanel {
@@ -73,6 +85,7 @@ impl Default for FilesPanel {
             copied: None,
             dialog: None,
             replace: None,
+            opened: None,
         }
     }
 }
@@ -117,14 +130,49 @@ impl FilesPanel {
     /// state as it was and says why.
     pub fn open(&mut self, state: &mut ExplorerState) {
         let path = PathBuf::from(self.path.trim());
-        self.status = Some(
-            state_file::open(&path)
-                .map(|opened| {
-                    *state = opened;
-                    t!("files-opened", path = path.display().to_string())
-                })
-                .map_err(|e| open_failed(&e)),
-        );
+        let outcome = state_file::open(&path).map(|opened| {
+            *state = opened;
+            t!("files-opened", path = path.display().to_string())
+        });
+        self.status = Some(outcome.or_else(|e| self.open_as_what_it_is(&path, &e)));
+        // The share string shown was the old state's.
+        self.copied = None;
+    }
+
+    /// A file that is not a state but a scene or a lesson deck (a TOML file picked by
+    /// mistake) is opened as one, and the window shows it; anything else keeps the state's
+    /// error.
+    fn open_as_what_it_is(&mut self, path: &Path, error: &LoadError) -> Result<String, String> {
+        let start = refraction_files::first_bytes(path, 64 * 1024)
+            .ok()
+            .flatten();
+        let shown = path.display().to_string();
+        let not_a_state = || open_failed(error);
+        match start.as_deref().and_then(Kind::of_contents) {
+            Some(Kind::Deck) => {
+                let deck = refraction_deck::Deck::load(&shown).map_err(|e| e.to_string())?;
+                self.opened = Some(Opened::Deck(Box::new(deck)));
+                Ok(t!("files-opened-as-deck", path = shown))
+            }
+            Some(Kind::Scene) => {
+                let scene = refraction_scene::Scene::load(&shown).map_err(|e| {
+                    let (state, scene) = (not_a_state(), e.to_string());
+                    t!(
+                        "files-neither-state-nor-scene",
+                        state = state,
+                        scene = scene
+                    )
+                })?;
+                self.opened = Some(Opened::Scene(Box::new(scene)));
+                Ok(t!("files-opened-as-scene", path = shown))
+            }
+            _ => Err(not_a_state()),
+        }
+    }
+
+    /// A scene or deck the state's field opened, once: the window shows it.
+    pub fn take_opened(&mut self) -> Option<Opened> {
+        self.opened.take()
     }
 
     /// Applies the pasted share string, or says why it cannot be.
@@ -133,6 +181,8 @@ impl FilesPanel {
             state_file::parse(&self.pasted)
                 .map(|pasted| {
                     *state = pasted;
+                    // The share string shown was the old state's.
+                    self.copied = None;
                     t!("files-share-applied")
                 })
                 .map_err(|reason| t!("files-share-refused", reason = reason.to_string())),

@@ -1,10 +1,10 @@
-//! The *Fresnel* tool beside the diagram: `R_s`, `R_p`, unpolarised R and T against θi from 0° to
+//! The *Fresnel* tool beside the diagram: `Rs`, `Rp`, unpolarised R and T against θi from 0° to
 //! 90° for the current media ([`FresnelPlot`], the kernel's fractions), Brewster's and the
 //! critical angle marked and named, the current θi as a cursor that follows every drag of W,
 //! the values there, and the source of the formula in words.
 //!
 //! It is a tool beside the diagram rather than a view of its own because its cursor is the
-//! diagram's θi: the class watches `R_p` fall to zero while the teacher drags W to Brewster's
+//! diagram's θi: the class watches `Rp` fall to zero while the teacher drags W to Brewster's
 //! angle, which a separate view would hide.
 
 use egui::{RichText, Sense, Ui};

@@ -500,6 +500,11 @@ impl Explorer {
         // panels.
         let palette = self.presentation.palette();
         self.tools.panel(ui, &mut self.state, presenting, &palette);
+        match self.tools.files.take_opened() {
+            Some(files_panel::Opened::Scene(scene)) => self.open_scene(*scene),
+            Some(files_panel::Opened::Deck(deck)) => self.open_deck(*deck),
+            None => {}
+        }
         let mut overlay = self.overlay();
         let (state, controls) = (&mut self.state, &mut self.controls);
         let animation_export = &mut self.animation_export;
@@ -511,6 +516,10 @@ impl Explorer {
         self.panels.show(ui, &NUMBERS, presenting, |ui| {
             readouts::show(ui, state.refraction(), &overlay.palette);
         });
+        if let Some(lesson) = controls.started.take() {
+            self.physics.start(lesson);
+            overlay.intensities = self.physics.intensities();
+        }
         // No margins (the diagram reaches the panels), but the panel's fill under the key hint.
         let frame = egui::Frame::NONE.fill(ui.visuals().panel_fill);
         egui::CentralPanel::no_frame()

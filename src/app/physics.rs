@@ -35,6 +35,15 @@ pub struct Physics {
 }
 
 impl Physics {
+    /// Turns on what a lesson is about: at Brewster's angle, the rays by their share of p light
+    /// (the reflected one vanishes), so that the preset shows Brewster's angle.
+    pub fn start(&mut self, lesson: refraction_model::Lesson) {
+        if lesson == refraction_model::Lesson::Brewster {
+            self.intensities = true;
+            self.polarisation = Polarisation::P;
+        }
+    }
+
     /// The light the rays are drawn for, while *Intensities* is on.
     #[must_use]
     pub fn intensities(&self) -> Option<Polarisation> {

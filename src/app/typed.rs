@@ -15,6 +15,9 @@ pub struct TypedField {
     pub text: String,
     /// Why the last text typed was refused.
     pub error: Option<String>,
+    /// The value the field followed when its error was shown: once the value changes by other
+    /// means (a slider, a drag), the error is stale and goes.
+    errored_at: Option<String>,
 }
 
 impl TypedField {
@@ -28,6 +31,15 @@ impl TypedField {
         width: f32,
     ) -> Option<String> {
         let mut submitted = None;
+        if self.error.is_some() {
+            let at = self.errored_at.get_or_insert_with(|| current.clone());
+            if *at != current {
+                self.error = None;
+            }
+        }
+        if self.error.is_none() {
+            self.errored_at = None;
+        }
         ui.horizontal(|ui| {
             let name = ui.label(label);
             let response = ui
@@ -147,6 +159,36 @@ pub fn short(x: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_error_goes_once_the_value_changes_by_other_means() {
+        // Issue 32: "0.1, 0.9, 0.2" typed into μt was refused, and the error stayed after the
+        // slider had set μt.
+        let ctx = egui::Context::default();
+        let mut field = TypedField::default();
+        let frame = |field: &mut TypedField, current: &str| {
+            let _ = ctx.run_ui(egui::RawInput::default(), |ui| {
+                field.show(ui, "μt value", current.to_owned(), 90.0);
+            });
+        };
+        frame(&mut field, "1.5");
+        field.text = "0.1, 0.9, 0.2".to_owned();
+        field.settle(parse_number(&field.text, "μt").map(drop));
+        assert!(
+            field
+                .error
+                .as_deref()
+                .is_some_and(|e| e.contains("not a number"))
+        );
+        frame(&mut field, "1.5");
+        assert!(
+            field.error.is_some(),
+            "the value is as it was: the error stays"
+        );
+        frame(&mut field, "1.333");
+        assert_eq!(field.error, None, "the slider set μt: the error is stale");
+        assert_eq!(field.text, "1.333");
+    }
 
     #[test]
     fn vectors_and_numbers_parse_with_clear_errors() {

@@ -172,3 +172,50 @@ fn exports_without_a_name_are_numbered() {
     assert!(h.query_by_label("Replace the file?").is_none());
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn a_scene_or_a_deck_opened_as_a_state_opens_as_what_it_is() {
+    // Issue 32: a scene file opened as a state said "malformed JSON".
+    let mut h = harness(leaving_glass());
+    click(&mut h, "💾 Save, open, share");
+    let scene = temp_file("slab.toml");
+    std::fs::copy(
+        concat!(env!("CARGO_MANIFEST_DIR"), "/docs/examples/slab.toml"),
+        &scene,
+    )
+    .unwrap();
+    type_into(&mut h, "State file", scene.to_str().unwrap());
+    click(&mut h, "🗁 Open");
+    assert_eq!(h.state().view(), refraction_explorer::app::View::Scenes);
+    assert_eq!(
+        h.state().state(),
+        &leaving_glass(),
+        "the state is as it was"
+    );
+    click(&mut h, "One interface");
+    assert!(
+        h.query_by_label_contains("is a scene, not a state")
+            .is_some()
+    );
+    let deck = temp_file("prisms.toml");
+    std::fs::copy(
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/docs/examples/prisms-deck.toml"
+        ),
+        &deck,
+    )
+    .unwrap();
+    type_into(&mut h, "State file", deck.to_str().unwrap());
+    click(&mut h, "🗁 Open");
+    // The deck's first step shows (with its own tools: the panel gives way to them).
+    assert!(h.state().lesson().current().is_some());
+    assert_eq!(h.state().lesson().deck.as_ref().unwrap().title, "Prisms");
+    click(&mut h, "💾 Save, open, share");
+    std::fs::write(&scene, "title = \"Broken\"\n").unwrap();
+    type_into(&mut h, "State file", scene.to_str().unwrap());
+    click(&mut h, "🗁 Open");
+    assert!(h.query_by_label_contains("read as a scene").is_some());
+    std::fs::remove_file(&scene).unwrap();
+    std::fs::remove_file(&deck).unwrap();
+}

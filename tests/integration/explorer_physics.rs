@@ -325,3 +325,30 @@ fn the_scenes_view_exports_its_picture_as_svg() {
     assert!(text.contains("<title>") && !text.contains("<text"));
     std::fs::remove_dir_all(&folder).unwrap();
 }
+
+#[test]
+fn the_brewster_preset_shows_brewster_s_angle_with_p_light() {
+    // Issue 32: the preset showed nothing about Brewster's angle.
+    let mut h = harness(ExplorerState::default());
+    assert_eq!(h.state().overlay().intensities, None);
+    h.get_by_role_and_label(Role::ComboBox, "Lesson preset")
+        .click();
+    h.run();
+    click(&mut h, &refraction_model::Lesson::Brewster.label());
+    assert_eq!(
+        h.state().state(),
+        &refraction_model::Lesson::Brewster.state()
+    );
+    assert_eq!(h.state().overlay().intensities, Some(Polarisation::P));
+    let diagram = Diagram::with_overlay(
+        h.state().state(),
+        GVec2::new(1000.0, 700.0),
+        &h.state().overlay(),
+    );
+    let primitives = diagram.primitives();
+    let words = refraction_diagram::shapes::texts(&primitives);
+    assert!(
+        words.iter().any(|w| w.contains("no reflected ray")),
+        "{words:?}"
+    );
+}

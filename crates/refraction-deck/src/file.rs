@@ -43,7 +43,7 @@ struct StepSpec {
     title: String,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     question: Option<Spanned<String>>,
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "String::is_empty")]
     notes: String,
     #[serde(default)]
     view: StepView,

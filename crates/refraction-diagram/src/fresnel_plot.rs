@@ -76,7 +76,7 @@ pub struct FresnelPlot {
     pub mu_t: f64,
     /// Brewster's and the critical angle.
     pub angles: SpecialAngles,
-    /// `R_s`, `R_p`, unpolarised R and T against θi, in that order.
+    /// Rs, Rp, unpolarised R and T against θi, in that order.
     pub curves: Vec<Curve>,
     /// The current angle of incidence, in degrees.
     pub cursor_deg: f64,
@@ -155,13 +155,15 @@ fn legend_entries(plot: &FresnelPlot, palette: &Palette, text: f32) -> Vec<Legen
 /// The values at the cursor, as the view writes them.
 fn cursor_values(plot: &FresnelPlot) -> [String; 5] {
     let a = plot.at_cursor;
+    // No-break spaces inside each value: a line breaks between values, never in one.
     [
         format!("θi = {}°", number(plot.cursor_deg, 1)),
-        format!("R_s = {}", percent(a.rs)),
-        format!("R_p = {}", percent(a.rp)),
+        format!("Rs = {}", percent(a.rs)),
+        format!("Rp = {}", percent(a.rp)),
         format!("R = {}", percent(a.reflectance())),
         format!("T = {}", percent(a.transmittance())),
     ]
+    .map(|value| value.replace(' ', "\u{a0}"))
 }
 
 /// The room the words take around the plot of `plot` on a canvas `width` pixels wide with
@@ -536,7 +538,7 @@ mod tests {
         assert_eq!((first.0, last.0), (0.0, 90.0));
         // Normal incidence: 4 %; grazing: everything reflected.
         assert!((first.1 - 0.04).abs() < 1e-12 && (last.1 - 1.0).abs() < 1e-12);
-        // R_p dips to zero at Brewster's angle, and nowhere else.
+        // Rp dips to zero at Brewster's angle, and nowhere else.
         let brewster = plot.angles.brewster_deg.unwrap();
         assert!(fresnel_at(1.0 / 1.5, brewster).rp < 1e-20);
         let lowest = rp.iter().min_by(|a, b| a.1.total_cmp(&b.1)).unwrap();
@@ -606,8 +608,8 @@ mod tests {
             "Brewster's angle θB = 33.7°",
             "critical angle θc = 41.8°",
             "Hecht",
-            "R_p (",
-            "θi = 18.4°",
+            "Rp (",
+            "θi\u{a0}=\u{a0}18.4°",
         ] {
             assert!(
                 texts.iter().any(|t| t.contains(wanted)),

@@ -433,6 +433,9 @@ struct ScenePictureBuilder<'a> {
     marks_from: usize,
     /// Where the rays start in `out` (they end where the marks start): labels stay off them.
     rays_from: usize,
+    /// The shapes' outlines: a label over one would hide a face or a surface, so labels keep
+    /// off them where they can.
+    faces: Vec<(Vec2, Vec2)>,
     face: Option<Typeface>,
     out: Vec<Primitive>,
 }
@@ -513,6 +516,16 @@ impl ScenePictureBuilder<'_> {
             placer.avoid(Obstacle::Box(handle.grab_area()));
         }
         self.avoid_rays(&mut placer);
+        // A curved face is many short pieces: every few of them is enough to keep off it.
+        let stride = self.faces.len().div_ceil(1000).max(1);
+        for &(a, b) in self.faces.iter().step_by(stride) {
+            placer.avoid(Obstacle::Shaft {
+                a,
+                b,
+                half_width: 1.5 * self.unit(),
+                firm: false,
+            });
+        }
         let drawing = self.layout.drawing;
         let mut placement = placer.place_all(labels.into_iter().map(|l| (l, drawing, Need::Shown)));
         let left_out = core::mem::take(&mut placement.left_out);
@@ -553,6 +566,7 @@ impl ScenePictureBuilder<'_> {
             let points: Vec<Vec2> = world.iter().map(|p| self.layout.at(*p)).collect();
             let medium = scene.shapes().get(outline.shape).and_then(|s| s.medium());
             let Some(medium) = medium else {
+                self.faces.extend(points.windows(2).map(|w| (w[0], w[1])));
                 self.out.push(Primitive::Polyline {
                     points,
                     width: 4.0 * self.unit(),
@@ -587,6 +601,7 @@ impl ScenePictureBuilder<'_> {
 
     fn edge(&mut self, points: Vec<Vec2>) {
         if points.len() > 1 {
+            self.faces.extend(points.windows(2).map(|w| (w[0], w[1])));
             self.out.push(Primitive::Polyline {
                 points,
                 width: 1.5 * self.unit(),
@@ -959,6 +974,7 @@ impl ScenePicture {
             palette: *palette,
             labels: Vec::new(),
             rays_from: 0,
+            faces: Vec::new(),
             marks_from: 0,
             face: Typeface::egui_default().ok(),
             out: Vec::with_capacity(trace.segments.len() + trace.hits.len() / 4 + 64),

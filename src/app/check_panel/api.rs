@@ -233,7 +233,7 @@ impl Judged {
         let (owner, value) = (owner(api), readable(&d.api_result));
         ui.label(t!("check-api-returns", owner = owner, value = value))
             .on_hover_text(d.api_result.to_string());
-        ui.label(right_t(d.t.map(spoken_vector)));
+        right_t(ui, d.t, spoken_vector);
         let drawn = match &self.picture {
             Ok(state) => self.drawn(state),
             Err(why) => t!("check-api-not-drawn", why = why),

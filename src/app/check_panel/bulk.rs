@@ -317,11 +317,48 @@ impl Table {
         }
     }
 
+    /// The counts, the diagnosis and the rows as plain text, one row a line with tabs between
+    /// its cells (a spreadsheet or a message takes it as it is), explanations whole.
+    fn as_text(&self) -> String {
+        let mut lines = vec![self.counts_line()];
+        lines.extend(self.summary.sentences());
+        let headings = [
+            t!("check-column-line"),
+            t!("check-column-ok"),
+            t!("check-column-mistakes"),
+            t!("check-column-explanation"),
+        ];
+        lines.push(headings.join("\t"));
+        for row in &self.rows {
+            let cells = match &row.verdict {
+                Ok((_, judgement)) => {
+                    let codes: Vec<&str> = judgement.mistakes().iter().map(|c| c.name()).collect();
+                    let ok = if judgement.ok() { "✔" } else { "✖" };
+                    [
+                        ok.to_owned(),
+                        codes.join(", "),
+                        judgement.explanation().to_owned(),
+                    ]
+                }
+                Err(e) => ["✖".to_owned(), t!("check-row-error"), e.clone()],
+            };
+            lines.push(format!("{}\t{}", row.line, cells.join("\t")));
+        }
+        lines.join("\n")
+    }
+
     /// The counts, the diagnosis, the map and the rows; the record of the row clicked, if one
     /// was.
     fn show(&mut self, ui: &mut Ui, selected: &mut Option<usize>) -> Option<Record> {
         ui.label(self.counts_line());
         self.diagnosis(ui);
+        if ui
+            .button(format!("📋 {}", t!("logs-copy-diagnosis")))
+            .on_hover_text(t!("logs-copy-diagnosis-hover"))
+            .clicked()
+        {
+            ui.ctx().copy_text(self.as_text());
+        }
         if !self.points.is_empty() {
             ui.label(RichText::new(t!("logs-map-heading")).strong())
                 .on_hover_text(t!("logs-map-hover"));
@@ -503,6 +540,24 @@ mod tests {
             pattern: pattern.to_owned(),
             ..Reading::default()
         }
+    }
+
+    #[test]
+    fn the_diagnosis_and_the_table_copy_as_text_with_a_line_per_call() {
+        let csv = "uv,n,etai_over_etat,refracted\n\
+                   \"0.6, -0.8, 0\",\"0, 1, 0\",1.5,\"0.4, -0.916515, 0\"\n\
+                   1,2\n";
+        let table = judge(Dialect::Api(Api::Rtiow), &reading(""), csv).unwrap();
+        let text = table.as_text();
+        let lines: Vec<&str> = text.lines().collect();
+        assert!(lines[0].contains("CSV"), "{text}");
+        for sentence in table.summary.sentences() {
+            assert!(text.contains(&sentence), "{text}");
+        }
+        let rows: Vec<&&str> = lines.iter().filter(|l| l.starts_with(['2', '3'])).collect();
+        assert_eq!(rows.len(), 2, "{text}");
+        assert!(rows.iter().all(|r| r.split('\t').count() == 4), "{text}");
+        assert!(rows[0].contains("not_the_api_result"), "{text}");
     }
 
     #[test]

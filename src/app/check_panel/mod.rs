@@ -289,15 +289,28 @@ fn own_verdict(ui: &mut Ui, v: &Verdict) {
         &t!("check-headline-own", verdict = match_words(v)),
     );
     ui.label(&v.explanation);
-    ui.label(right_t(v.correct.map(|t| vector(DVec3::from_array(t), 4))));
+    right_t(ui, v.correct, |t| vector(DVec3::from_array(t), 4));
 }
 
-/// The right T written for reading, or that there is none.
-fn right_t(written: Option<String>) -> String {
-    written.map_or_else(
-        || t!("check-no-refracted-ray"),
-        |t| t!("check-right-t", t = t),
-    )
+/// The right T written for reading (`written`), or that there is none; with a button that
+/// copies it at full precision (each component as its shortest exact decimal), which its
+/// hover shows too.
+fn right_t(ui: &mut Ui, t: Option<[f64; 3]>, written: impl Fn([f64; 3]) -> String) {
+    let Some(t) = t else {
+        ui.label(t!("check-no-refracted-ray"));
+        return;
+    };
+    let exact = format!("[{}, {}, {}]", t[0], t[1], t[2]);
+    ui.horizontal_wrapped(|ui| {
+        ui.label(t!("check-right-t", t = written(t)))
+            .on_hover_text(&exact);
+        let copy = ui
+            .button(format!("📋 {}", t!("check-copy-right-t")))
+            .on_hover_text(&exact);
+        if copy.clicked() {
+            ui.ctx().copy_text(exact.clone());
+        }
+    });
 }
 
 impl CheckPanel {

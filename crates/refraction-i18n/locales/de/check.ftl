@@ -8,19 +8,19 @@ check-vector-not-finite = ein nicht endlicher Vektor (Komponenten NaN oder unend
 ## Urteile über ein T in den Feldern dieses Projekts (auch die Erklärungen des Befehls `check`)
 
 check-verdict-wrong-side = Dein T läuft zurück in das Medium, aus dem der Strahl kam: die andere Lösung für b (+, wo die Quadratwurzel - braucht). Meist liegt es an einer Normalen, die in Strahlrichtung zeigt, etwa der äußeren Normalen einer Kugel dort, wo der Strahl sie verlässt, die nicht umgekehrt wurde.
-check-verdict-wrong-bend = Dein T wird in die falsche Richtung gebrochen: Das Vorzeichen von a ist umgekehrt, sodass es für mu -> 1 nicht zum einfallenden Strahl wird. Meist sind die Konventionen vermischt: W zurück zum Ursprung (Abschnitt 1, a = -mu) in die Formel für W entlang des Strahls (Abschnitt 2, a = +mu) eingesetzt, oder umgekehrt.
+check-verdict-wrong-bend = Dein T wird in die falsche Richtung gebrochen: Das Vorzeichen von a ist umgekehrt, sodass es für μ → 1 nicht zum einfallenden Strahl wird. Meist sind die Konventionen vermischt: W zurück zum Ursprung (Abschnitt 1, a = −μ) in die Formel für W entlang des Strahls (Abschnitt 2, a = +μ) eingesetzt, oder umgekehrt.
 check-verdict-reversed = Dein T ist -T und zeigt dorthin zurück, woher der Strahl kam: Beide Vorzeichen sind falsch. Meist wird die Richtung zum Ursprung statt der Laufrichtung zurückgegeben, oder W wurde zweimal negiert.
 check-verdict-not-finite-tir = Dein T hat Komponenten NaN oder unendlich. Dieser Strahl wird totalreflektiert (k < 0): Dein Code hat die Quadratwurzel aus einem negativen k gezogen, statt k vorher zu prüfen.
-check-verdict-not-finite-refracts = Dein T hat Komponenten NaN oder unendlich, obwohl dieser Strahl normal gebrochen wird (k >= 0): Suche nach einer Division durch null oder einem nicht initialisierten Vektor.
+check-verdict-not-finite-refracts = Dein T hat Komponenten NaN oder unendlich, obwohl dieser Strahl normal gebrochen wird (k ≥ 0): Suche nach einer Division durch null oder einem nicht initialisierten Vektor.
 check-verdict-tir-right = Richtig: Dieser Strahl wird totalreflektiert (k < 0), und dein Code gab die Reflexion zurück (oder den Nullvektor, mit dem GLSL das anzeigt).
 check-verdict-tir-but-refracted = Dieser Strahl wird totalreflektiert (k = { $k } < 0): Es gibt keinen gebrochenen Strahl, aber dein Code gab einen zurück. Prüfe k, bevor du die Quadratwurzel ziehst.
-check-verdict-zero-vector = Dein T ist der Nullvektor, den GLSL bei Totalreflexion zurückgibt, aber dieser Strahl wird gebrochen (k >= 0). Prüfe das Vorzeichen von k und das Verhältnis der Brechungsindizes.
+check-verdict-zero-vector = Dein T ist der Nullvektor, den GLSL bei Totalreflexion zurückgibt, aber dieser Strahl wird gebrochen (k ≥ 0). Prüfe das Vorzeichen von k und das Verhältnis der Brechungsindizes.
 check-verdict-not-unit = Außerdem hat dein T die Länge { $length }, nicht 1: Normiere W und N vor der Brechung (die Formel setzt Einheitsvektoren voraus) oder T danach.
 check-verdict-along-refracted = Dein T zeigt entlang des gebrochenen Strahls (auf { $off } rad genau).
 check-verdict-right = Richtig: Dein T ist der gebrochene Strahl (auf { $off } rad genau).
-check-verdict-ratio-upside-down = Dein T ist die Brechung mit umgekehrtem Indexverhältnis: mu muss mu_i/mu_t sein (das Medium, das der Strahl verlässt, durch das, in das er eintritt), und dein Code hat mu_t/mu_i verwendet.
-check-verdict-out-of-plane = Dein T verlässt die Einfallsebene (die Ebene von W und N) um { $off } rad: T muss eine Kombination a*W + b*N der beiden sein.
-check-verdict-no-candidate = Dein T passt zu keiner der vier Vorzeichenwahlen: Es liegt { $degrees } Grad neben dem gebrochenen Strahl. Prüfe mu und die Richtungen von W und N.
+check-verdict-ratio-upside-down = Dein T ist die Brechung mit umgekehrtem Indexverhältnis: μ muss μi/μt sein (das Medium, das der Strahl verlässt, durch das, in das er eintritt), und dein Code hat μt/μi verwendet.
+check-verdict-out-of-plane = Dein T verlässt die Einfallsebene (die Ebene von W und N) um { $off } rad: T muss eine Kombination a·W + b·N der beiden sein.
+check-verdict-no-candidate = Dein T passt zu keiner der vier Vorzeichenwahlen: Es liegt { $degrees } Grad neben dem gebrochenen Strahl. Prüfe μ und die Richtungen von W und N.
 
 ## t_yours aus einer JSON-Zeile lesen
 
@@ -88,7 +88,7 @@ check-looks-variant = was { $call } mit { $variant } zurückgibt: Deine Implemen
 check-variant-eta-inverted = invertiertem eta
 check-variant-normal-flipped = umgekehrter Normale
 check-variant-incident-reversed = umgekehrtem Einfallsvektor
-check-looks-nothing = { $what }, also wird nichts durchgelassen, obwohl dieser Strahl gebrochen wird (k = { $k } >= 0)
+check-looks-nothing = { $what }, also wird nichts durchgelassen, obwohl dieser Strahl gebrochen wird (k = { $k } ≥ 0)
 check-looks-not-finite = Komponenten NaN oder unendlich, obwohl dieser Strahl gebrochen wird
 check-looks-off = { $degrees } Grad daneben
 check-looks-off-unmeasurable = in keinem messbaren Winkel dazu
@@ -164,6 +164,7 @@ check-match-tir = Totalreflexion, richtig beantwortet
 check-match-none = keiner der vier Kandidaten
 check-no-refracted-ray = Es gibt keinen gebrochenen Strahl: Totalreflexion.
 check-right-t = Das richtige T = { $t }
+check-copy-right-t = T kopieren
 check-not-drawn-changed = (Der Fall hat sich inzwischen geändert: Das Urteil wird nicht gezeichnet.)
 
 ## Das Panel: ein API-Aufruf

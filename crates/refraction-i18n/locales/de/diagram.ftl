@@ -188,12 +188,12 @@ diagram-fresnel-brewster = Brewster-Winkel θB = { $angle }°: kein p-Licht refl
 diagram-fresnel-critical = Grenzwinkel θc = { $angle }°: darüber alles reflektiert
 diagram-fresnel-brewster-short = Brewster-Winkel θB = { $angle }°
 diagram-fresnel-critical-short = Grenzwinkel θc = { $angle }°
-diagram-curve-rs = R_s (s-Licht reflektiert)
-diagram-curve-rp = R_p (p-Licht reflektiert)
+diagram-curve-rs = Rs (s-Licht reflektiert)
+diagram-curve-rp = Rp (p-Licht reflektiert)
 diagram-curve-r = R (unpolarisiert, reflektiert)
 diagram-curve-t = T (unpolarisiert, durchgelassen)
 diagram-fresnel-source =
-    Fresnelsche Formeln für die reflektierte Leistung (Hecht, Optik, Kap. 4): R_s = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², R_p = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
+    Fresnelsche Formeln für die reflektierte Leistung (Hecht, Optik, Kap. 4): Rs = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², Rp = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
     aus den eigenen cosθi und cosθt des Kernels, ohne Trigonometrie; unpolarisiertes Licht ist der Mittelwert von s und p. Jenseits des Grenzwinkels wird alles Licht reflektiert.
 
 ## Der Genauigkeitsplot

@@ -11,6 +11,8 @@ logs-not-listed = { $count ->
    *[other] { $count } weitere Zeilen geprüft, aber nicht aufgelistet (die Tabelle zeigt die ersten { $first })
 }
 logs-diagnosis-heading = Diagnose des ganzen Protokolls
+logs-copy-diagnosis = Diagnose und Tabelle kopieren
+logs-copy-diagnosis-hover = Als Text: die Zählung, die Diagnose, dann eine Zeile je Aufruf mit Tabulatoren zwischen den Zellen
 logs-map-heading = Fehlerkarte
 logs-map-hover = Wie weit die Richtung jeder geprüften Zeile von der richtigen abweicht, gegen den Einfallswinkel, in einem Feld für jede Seite, von der die Strahlen kommen. Quadrate: die richtige Antwort ist Totalreflexion.
 logs-open = 🗁 Protokoll öffnen …

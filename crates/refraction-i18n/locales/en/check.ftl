@@ -8,19 +8,19 @@ check-vector-not-finite = a vector that is not finite (NaN or infinite component
 ## Verdicts on a T in this project's fields (also the `check` command's explanations)
 
 check-verdict-wrong-side = Your T goes back into the medium the ray came from: the other root for b (+ where the square root needs -). The usual cause is a normal that points along the ray, such as a sphere's outward normal where the ray leaves it, used without flipping.
-check-verdict-wrong-bend = Your T bends the wrong way: the sign of a is flipped, so it would not become the incoming ray as mu -> 1. The usual cause is mixing the conventions: W pointing back to the origin (Section 1, a = -mu) fed to the along-the-ray formula (Section 2, a = +mu), or the other way round.
+check-verdict-wrong-bend = Your T bends the wrong way: the sign of a is flipped, so it would not become the incoming ray as μ → 1. The usual cause is mixing the conventions: W pointing back to the origin (Section 1, a = −μ) fed to the along-the-ray formula (Section 2, a = +μ), or the other way round.
 check-verdict-reversed = Your T is -T, pointing back where the ray came from: both signs are wrong. The usual cause is returning the direction toward the origin instead of the direction of travel, or negating W twice.
 check-verdict-not-finite-tir = Your T has NaN or infinite components. This ray is totally internally reflected (k < 0): your code took the square root of a negative k instead of checking k first.
-check-verdict-not-finite-refracts = Your T has NaN or infinite components although this ray refracts normally (k >= 0): look for a division by zero or an un-initialised vector.
+check-verdict-not-finite-refracts = Your T has NaN or infinite components although this ray refracts normally (k ≥ 0): look for a division by zero or an un-initialised vector.
 check-verdict-tir-right = Right: this ray is totally internally reflected (k < 0) and your code returned the reflection (or the zero vector GLSL uses to say so).
 check-verdict-tir-but-refracted = This ray is totally internally reflected (k = { $k } < 0): there is no refracted ray, but your code returned one. Check k before taking its square root.
-check-verdict-zero-vector = Your T is the zero vector, which GLSL returns for total internal reflection, but this ray refracts (k >= 0). Check the sign of k and the index ratio.
+check-verdict-zero-vector = Your T is the zero vector, which GLSL returns for total internal reflection, but this ray refracts (k ≥ 0). Check the sign of k and the index ratio.
 check-verdict-not-unit = Also, your T has length { $length }, not 1: normalise W and N before refracting (the formula assumes unit vectors) or T after.
 check-verdict-along-refracted = Your T points along the refracted ray (within { $off } rad).
 check-verdict-right = Right: your T is the refracted ray (within { $off } rad).
-check-verdict-ratio-upside-down = Your T is the refraction with the index ratio upside down: mu must be mu_i/mu_t (the medium the ray leaves over the one it enters), and your code used mu_t/mu_i.
-check-verdict-out-of-plane = Your T leaves the plane of incidence (the plane of W and N) by { $off } rad: T must be a combination a*W + b*N of the two.
-check-verdict-no-candidate = Your T matches none of the four sign choices: it is { $degrees } degrees from the refracted ray. Check mu, and which way W and N point.
+check-verdict-ratio-upside-down = Your T is the refraction with the index ratio upside down: μ must be μi/μt (the medium the ray leaves over the one it enters), and your code used μt/μi.
+check-verdict-out-of-plane = Your T leaves the plane of incidence (the plane of W and N) by { $off } rad: T must be a combination a·W + b·N of the two.
+check-verdict-no-candidate = Your T matches none of the four sign choices: it is { $degrees } degrees from the refracted ray. Check μ, and which way W and N point.
 
 ## Reading t_yours from a JSON line
 
@@ -88,7 +88,7 @@ check-looks-variant = what { $call } returns with { $variant }: your implementat
 check-variant-eta-inverted = eta inverted
 check-variant-normal-flipped = the normal flipped
 check-variant-incident-reversed = the incident vector reversed
-check-looks-nothing = { $what }, which says nothing is transmitted, although this ray refracts (k = { $k } >= 0)
+check-looks-nothing = { $what }, which says nothing is transmitted, although this ray refracts (k = { $k } ≥ 0)
 check-looks-not-finite = NaN or infinite components, although this ray refracts
 check-looks-off = { $degrees } degrees from it
 check-looks-off-unmeasurable = at no angle that can be measured from it
@@ -164,6 +164,7 @@ check-match-tir = total internal reflection, answered right
 check-match-none = none of the four candidates
 check-no-refracted-ray = There is no refracted ray: total internal reflection.
 check-right-t = The right T = { $t }
+check-copy-right-t = Copy T
 check-not-drawn-changed = (The case has changed since: the verdict is not drawn.)
 
 ## The panel: an API call

@@ -191,12 +191,12 @@ diagram-fresnel-brewster = Brewster's angle θB = { $angle }°: no p light refle
 diagram-fresnel-critical = critical angle θc = { $angle }°: all reflected beyond
 diagram-fresnel-brewster-short = Brewster θB = { $angle }°
 diagram-fresnel-critical-short = critical θc = { $angle }°
-diagram-curve-rs = R_s (s light reflected)
-diagram-curve-rp = R_p (p light reflected)
+diagram-curve-rs = Rs (s light reflected)
+diagram-curve-rp = Rp (p light reflected)
 diagram-curve-r = R (unpolarised, reflected)
 diagram-curve-t = T (unpolarised, transmitted)
 diagram-fresnel-source =
-    Fresnel's equations for the power reflected (Hecht, Optics, ch. 4): R_s = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², R_p = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
+    Fresnel's equations for the power reflected (Hecht, Optics, ch. 4): Rs = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², Rp = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
     from the kernel's own cosθi and cosθt, without trigonometry; unpolarised light is the mean of s and p. Past the critical angle all light is reflected.
 
 ## The accuracy plot

@@ -11,6 +11,8 @@ logs-not-listed = { $count ->
    *[other] { $count } more lines judged but not listed (the table shows the first { $first })
 }
 logs-diagnosis-heading = Diagnosis of the whole log
+logs-copy-diagnosis = Copy the diagnosis and the table
+logs-copy-diagnosis-hover = As text: the counts, the diagnosis, then one line per call with tabs between its cells
 logs-map-heading = Failure map
 logs-map-hover = How far each judged line's direction is from the right one, against the angle of incidence, in a panel for each side the rays arrive from. Squares: the right answer is total internal reflection.
 logs-open = 🗁 Open log…

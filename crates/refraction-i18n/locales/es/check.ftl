@@ -8,19 +8,19 @@ check-vector-not-finite = un vector no finito (componentes NaN o infinitas)
 ## Veredictos sobre una T en los campos de este proyecto (también las explicaciones de la orden `check`)
 
 check-verdict-wrong-side = Tu T vuelve al medio del que venía el rayo: es la otra raíz para b (+ donde la raíz cuadrada necesita -). La causa habitual es una normal que apunta en el sentido del rayo, como la normal exterior de una esfera donde el rayo sale de ella, usada sin invertirla.
-check-verdict-wrong-bend = Tu T se desvía hacia el lado equivocado: el signo de a está invertido, así que no se convertiría en el rayo incidente cuando mu -> 1. La causa habitual es mezclar las convenciones: W apuntando hacia el origen (Sección 1, a = -mu) usado en la fórmula de W a lo largo del rayo (Sección 2, a = +mu), o al revés.
+check-verdict-wrong-bend = Tu T se desvía hacia el lado equivocado: el signo de a está invertido, así que no se convertiría en el rayo incidente cuando μ → 1. La causa habitual es mezclar las convenciones: W apuntando hacia el origen (Sección 1, a = −μ) usado en la fórmula de W a lo largo del rayo (Sección 2, a = +μ), o al revés.
 check-verdict-reversed = Tu T es -T y apunta hacia donde venía el rayo: ambos signos están mal. La causa habitual es devolver la dirección hacia el origen en lugar de la dirección de propagación, o negar W dos veces.
 check-verdict-not-finite-tir = Tu T tiene componentes NaN o infinitas. Este rayo sufre reflexión total (k < 0): tu código tomó la raíz cuadrada de un k negativo en lugar de comprobar k antes.
-check-verdict-not-finite-refracts = Tu T tiene componentes NaN o infinitas aunque este rayo se refracta con normalidad (k >= 0): busca una división por cero o un vector sin inicializar.
+check-verdict-not-finite-refracts = Tu T tiene componentes NaN o infinitas aunque este rayo se refracta con normalidad (k ≥ 0): busca una división por cero o un vector sin inicializar.
 check-verdict-tir-right = Correcto: este rayo sufre reflexión total (k < 0) y tu código devolvió la reflexión (o el vector nulo con el que GLSL lo indica).
 check-verdict-tir-but-refracted = Este rayo sufre reflexión total (k = { $k } < 0): no hay rayo refractado, pero tu código devolvió uno. Comprueba k antes de tomar su raíz cuadrada.
-check-verdict-zero-vector = Tu T es el vector nulo, que GLSL devuelve en la reflexión total, pero este rayo se refracta (k >= 0). Comprueba el signo de k y el cociente de índices.
+check-verdict-zero-vector = Tu T es el vector nulo, que GLSL devuelve en la reflexión total, pero este rayo se refracta (k ≥ 0). Comprueba el signo de k y el cociente de índices.
 check-verdict-not-unit = Además, tu T tiene longitud { $length }, no 1: normaliza W y N antes de refractar (la fórmula supone vectores unitarios) o T después.
 check-verdict-along-refracted = Tu T apunta a lo largo del rayo refractado (con { $off } rad de diferencia como mucho).
 check-verdict-right = Correcto: tu T es el rayo refractado (con { $off } rad de diferencia como mucho).
-check-verdict-ratio-upside-down = Tu T es la refracción con el cociente de índices al revés: mu debe ser mu_i/mu_t (el medio que deja el rayo entre aquel en el que entra), y tu código usó mu_t/mu_i.
-check-verdict-out-of-plane = Tu T sale del plano de incidencia (el plano de W y N) en { $off } rad: T debe ser una combinación a*W + b*N de ambos.
-check-verdict-no-candidate = Tu T no coincide con ninguna de las cuatro elecciones de signo: está a { $degrees } grados del rayo refractado. Comprueba mu y hacia dónde apuntan W y N.
+check-verdict-ratio-upside-down = Tu T es la refracción con el cociente de índices al revés: μ debe ser μi/μt (el medio que deja el rayo entre aquel en el que entra), y tu código usó μt/μi.
+check-verdict-out-of-plane = Tu T sale del plano de incidencia (el plano de W y N) en { $off } rad: T debe ser una combinación a·W + b·N de ambos.
+check-verdict-no-candidate = Tu T no coincide con ninguna de las cuatro elecciones de signo: está a { $degrees } grados del rayo refractado. Comprueba μ y hacia dónde apuntan W y N.
 
 ## Lectura de t_yours en una línea JSON
 
@@ -88,7 +88,7 @@ check-looks-variant = lo que devuelve { $call } con { $variant }: tu implementac
 check-variant-eta-inverted = eta invertida
 check-variant-normal-flipped = la normal invertida
 check-variant-incident-reversed = el vector incidente al revés
-check-looks-nothing = { $what }, que indica que no se transmite nada, aunque este rayo se refracta (k = { $k } >= 0)
+check-looks-nothing = { $what }, que indica que no se transmite nada, aunque este rayo se refracta (k = { $k } ≥ 0)
 check-looks-not-finite = componentes NaN o infinitas, aunque este rayo se refracta
 check-looks-off = a { $degrees } grados de ella
 check-looks-off-unmeasurable = a un ángulo que no se puede medir
@@ -164,6 +164,7 @@ check-match-tir = reflexión total, bien respondida
 check-match-none = ninguno de los cuatro candidatos
 check-no-refracted-ray = No hay rayo refractado: reflexión total.
 check-right-t = La T correcta = { $t }
+check-copy-right-t = Copiar T
 check-not-drawn-changed = (El caso ha cambiado desde entonces: el veredicto no se dibuja.)
 
 ## El panel: una llamada a una API

@@ -188,12 +188,12 @@ diagram-fresnel-brewster = ángulo de Brewster θB = { $angle }°: no se refleja
 diagram-fresnel-critical = ángulo límite θc = { $angle }°: más allá, todo se refleja
 diagram-fresnel-brewster-short = ángulo de Brewster θB = { $angle }°
 diagram-fresnel-critical-short = ángulo límite θc = { $angle }°
-diagram-curve-rs = R_s (luz s reflejada)
-diagram-curve-rp = R_p (luz p reflejada)
+diagram-curve-rs = Rs (luz s reflejada)
+diagram-curve-rp = Rp (luz p reflejada)
 diagram-curve-r = R (no polarizada, reflejada)
 diagram-curve-t = T (no polarizada, transmitida)
 diagram-fresnel-source =
-    Ecuaciones de Fresnel para la potencia reflejada (Hecht, Óptica, cap. 4): R_s = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², R_p = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
+    Ecuaciones de Fresnel para la potencia reflejada (Hecht, Óptica, cap. 4): Rs = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², Rp = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
     a partir de los propios cosθi y cosθt del kernel, sin trigonometría; la luz no polarizada es la media de s y p. Más allá del ángulo límite toda la luz se refleja.
 
 ## La gráfica de precisión

@@ -11,6 +11,8 @@ logs-not-listed = { $count ->
    *[other] { $count } líneas más juzgadas pero no listadas (la tabla muestra las primeras { $first })
 }
 logs-diagnosis-heading = Diagnóstico del registro entero
+logs-copy-diagnosis = Copiar el diagnóstico y la tabla
+logs-copy-diagnosis-hover = Como texto: los recuentos, el diagnóstico y luego una línea por llamada con tabuladores entre sus celdas
 logs-map-heading = Mapa de fallos
 logs-map-hover = Cuánto se aleja la dirección de cada línea juzgada de la correcta, frente al ángulo de incidencia, en un panel por cada lado del que llegan los rayos. Cuadrados: la respuesta correcta es la reflexión total.
 logs-open = 🗁 Abrir registro…

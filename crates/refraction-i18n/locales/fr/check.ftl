@@ -8,19 +8,19 @@ check-vector-not-finite = un vecteur non fini (composantes NaN ou infinies)
 ## Verdicts sur un T dans les champs de ce projet (aussi les explications de la commande `check`)
 
 check-verdict-wrong-side = Ton T repart dans le milieu d’où venait le rayon : c’est l’autre racine pour b (+ là où la racine carrée demande -). La cause habituelle est une normale orientée dans le sens du rayon, comme la normale extérieure d’une sphère là où le rayon en sort, utilisée sans être retournée.
-check-verdict-wrong-bend = Ton T est dévié du mauvais côté : le signe de a est inversé, il ne redeviendrait donc pas le rayon incident quand mu -> 1. La cause habituelle est un mélange des conventions : W orienté vers l’origine (Section 1, a = -mu) donné à la formule de W le long du rayon (Section 2, a = +mu), ou l’inverse.
+check-verdict-wrong-bend = Ton T est dévié du mauvais côté : le signe de a est inversé, il ne redeviendrait donc pas le rayon incident quand μ → 1. La cause habituelle est un mélange des conventions : W orienté vers l’origine (Section 1, a = −μ) donné à la formule de W le long du rayon (Section 2, a = +μ), ou l’inverse.
 check-verdict-reversed = Ton T vaut -T et pointe vers là d’où venait le rayon : les deux signes sont faux. La cause habituelle est de renvoyer la direction vers l’origine au lieu de la direction de propagation, ou d’avoir inversé W deux fois.
 check-verdict-not-finite-tir = Ton T a des composantes NaN ou infinies. Ce rayon subit une réflexion totale (k < 0) : ton code a pris la racine carrée d’un k négatif au lieu de tester k d’abord.
-check-verdict-not-finite-refracts = Ton T a des composantes NaN ou infinies alors que ce rayon est réfracté normalement (k >= 0) : cherche une division par zéro ou un vecteur non initialisé.
+check-verdict-not-finite-refracts = Ton T a des composantes NaN ou infinies alors que ce rayon est réfracté normalement (k ≥ 0) : cherche une division par zéro ou un vecteur non initialisé.
 check-verdict-tir-right = Juste : ce rayon subit une réflexion totale (k < 0) et ton code a renvoyé la réflexion (ou le vecteur nul par lequel GLSL l’indique).
 check-verdict-tir-but-refracted = Ce rayon subit une réflexion totale (k = { $k } < 0) : il n’y a pas de rayon réfracté, mais ton code en a renvoyé un. Teste k avant d’en prendre la racine carrée.
-check-verdict-zero-vector = Ton T est le vecteur nul, que GLSL renvoie en cas de réflexion totale, mais ce rayon est réfracté (k >= 0). Vérifie le signe de k et le rapport des indices.
+check-verdict-zero-vector = Ton T est le vecteur nul, que GLSL renvoie en cas de réflexion totale, mais ce rayon est réfracté (k ≥ 0). Vérifie le signe de k et le rapport des indices.
 check-verdict-not-unit = De plus, ton T a pour longueur { $length }, pas 1 : normalise W et N avant la réfraction (la formule suppose des vecteurs unitaires) ou T après.
 check-verdict-along-refracted = Ton T pointe le long du rayon réfracté (à { $off } rad près).
 check-verdict-right = Juste : ton T est le rayon réfracté (à { $off } rad près).
-check-verdict-ratio-upside-down = Ton T est la réfraction avec le rapport des indices à l’envers : mu doit valoir mu_i/mu_t (le milieu que le rayon quitte sur celui où il entre), et ton code a utilisé mu_t/mu_i.
-check-verdict-out-of-plane = Ton T sort du plan d’incidence (le plan de W et N) de { $off } rad : T doit être une combinaison a*W + b*N des deux.
-check-verdict-no-candidate = Ton T ne correspond à aucun des quatre choix de signe : il est à { $degrees } degrés du rayon réfracté. Vérifie mu, et le sens de W et de N.
+check-verdict-ratio-upside-down = Ton T est la réfraction avec le rapport des indices à l’envers : μ doit valoir μi/μt (le milieu que le rayon quitte sur celui où il entre), et ton code a utilisé μt/μi.
+check-verdict-out-of-plane = Ton T sort du plan d’incidence (le plan de W et N) de { $off } rad : T doit être une combinaison a·W + b·N des deux.
+check-verdict-no-candidate = Ton T ne correspond à aucun des quatre choix de signe : il est à { $degrees } degrés du rayon réfracté. Vérifie μ, et le sens de W et de N.
 
 ## Lecture de t_yours dans une ligne JSON
 
@@ -88,7 +88,7 @@ check-looks-variant = ce que { $call } renvoie avec { $variant } : ton impléme
 check-variant-eta-inverted = eta inversé
 check-variant-normal-flipped = la normale retournée
 check-variant-incident-reversed = le vecteur incident inversé
-check-looks-nothing = { $what }, ce qui signifie que rien n’est transmis, alors que ce rayon est réfracté (k = { $k } >= 0)
+check-looks-nothing = { $what }, ce qui signifie que rien n’est transmis, alors que ce rayon est réfracté (k = { $k } ≥ 0)
 check-looks-not-finite = des composantes NaN ou infinies, alors que ce rayon est réfracté
 check-looks-off = à { $degrees } degrés de celle-ci
 check-looks-off-unmeasurable = à un angle impossible à mesurer
@@ -164,6 +164,7 @@ check-match-tir = réflexion totale, bien traitée
 check-match-none = aucun des quatre candidats
 check-no-refracted-ray = Il n’y a pas de rayon réfracté : réflexion totale.
 check-right-t = Le bon T = { $t }
+check-copy-right-t = Copier T
 check-not-drawn-changed = (Le cas a changé depuis : le verdict n’est pas dessiné.)
 
 ## Le panneau : un appel d’API

@@ -188,12 +188,12 @@ diagram-fresnel-brewster = angle de Brewster θB = { $angle }° : pas de lumiè
 diagram-fresnel-critical = angle limite θc = { $angle }° : au-delà, tout est réfléchi
 diagram-fresnel-brewster-short = angle de Brewster θB = { $angle }°
 diagram-fresnel-critical-short = angle limite θc = { $angle }°
-diagram-curve-rs = R_s (lumière s réfléchie)
-diagram-curve-rp = R_p (lumière p réfléchie)
+diagram-curve-rs = Rs (lumière s réfléchie)
+diagram-curve-rp = Rp (lumière p réfléchie)
 diagram-curve-r = R (non polarisée, réfléchie)
 diagram-curve-t = T (non polarisée, transmise)
 diagram-fresnel-source =
-    Formules de Fresnel pour la puissance réfléchie (Hecht, Optique, chap. 4) : R_s = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², R_p = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
+    Formules de Fresnel pour la puissance réfléchie (Hecht, Optique, chap. 4) : Rs = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², Rp = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
     à partir des cosθi et cosθt du noyau lui-même, sans trigonométrie ; la lumière non polarisée est la moyenne de s et p. Au-delà de l’angle limite, toute la lumière est réfléchie.
 
 ## Le graphique de précision

@@ -11,6 +11,8 @@ logs-not-listed = { $count ->
    *[other] { $count } lignes de plus jugées mais non listées (le tableau montre les { $first } premières)
 }
 logs-diagnosis-heading = Diagnostic du journal entier
+logs-copy-diagnosis = Copier le diagnostic et le tableau
+logs-copy-diagnosis-hover = En texte : les comptes, le diagnostic, puis une ligne par appel avec des tabulations entre ses cellules
 logs-map-heading = Carte des erreurs
 logs-map-hover = L’écart entre la direction de chaque ligne jugée et la bonne, en fonction de l’angle d’incidence, dans un panneau par côté d’où arrivent les rayons. Carrés : la bonne réponse est la réflexion totale.
 logs-open = 🗁 Ouvrir un journal…

@@ -8,19 +8,19 @@ check-vector-not-finite = um vetor não finito (componentes NaN ou infinitas)
 ## Veredictos sobre um T nos campos deste projeto (também as explicações do comando `check`)
 
 check-verdict-wrong-side = Seu T volta para o meio de onde o raio veio: é a outra raiz para b (+ onde a raiz quadrada pede -). A causa comum é uma normal que aponta no sentido do raio, como a normal externa de uma esfera onde o raio sai dela, usada sem ser invertida.
-check-verdict-wrong-bend = Seu T se desvia para o lado errado: o sinal de a está trocado, então ele não se tornaria o raio incidente quando mu -> 1. A causa comum é misturar as convenções: W apontando de volta para a origem (Seção 1, a = -mu) usado na fórmula de W ao longo do raio (Seção 2, a = +mu), ou o contrário.
+check-verdict-wrong-bend = Seu T se desvia para o lado errado: o sinal de a está trocado, então ele não se tornaria o raio incidente quando μ → 1. A causa comum é misturar as convenções: W apontando de volta para a origem (Seção 1, a = −μ) usado na fórmula de W ao longo do raio (Seção 2, a = +μ), ou o contrário.
 check-verdict-reversed = Seu T é -T e aponta de volta para onde o raio veio: os dois sinais estão errados. A causa comum é devolver a direção para a origem em vez da direção de propagação, ou negar W duas vezes.
 check-verdict-not-finite-tir = Seu T tem componentes NaN ou infinitas. Este raio sofre reflexão total (k < 0): seu código tirou a raiz quadrada de um k negativo em vez de testar k antes.
-check-verdict-not-finite-refracts = Seu T tem componentes NaN ou infinitas, embora este raio seja refratado normalmente (k >= 0): procure uma divisão por zero ou um vetor não inicializado.
+check-verdict-not-finite-refracts = Seu T tem componentes NaN ou infinitas, embora este raio seja refratado normalmente (k ≥ 0): procure uma divisão por zero ou um vetor não inicializado.
 check-verdict-tir-right = Certo: este raio sofre reflexão total (k < 0) e seu código devolveu a reflexão (ou o vetor nulo com que o GLSL indica isso).
 check-verdict-tir-but-refracted = Este raio sofre reflexão total (k = { $k } < 0): não há raio refratado, mas seu código devolveu um. Teste k antes de tirar a raiz quadrada.
-check-verdict-zero-vector = Seu T é o vetor nulo, que o GLSL devolve na reflexão total, mas este raio é refratado (k >= 0). Verifique o sinal de k e a razão dos índices.
+check-verdict-zero-vector = Seu T é o vetor nulo, que o GLSL devolve na reflexão total, mas este raio é refratado (k ≥ 0). Verifique o sinal de k e a razão dos índices.
 check-verdict-not-unit = Além disso, seu T tem comprimento { $length }, não 1: normalize W e N antes de refratar (a fórmula supõe vetores unitários) ou T depois.
 check-verdict-along-refracted = Seu T aponta ao longo do raio refratado (com até { $off } rad de diferença).
 check-verdict-right = Certo: seu T é o raio refratado (com até { $off } rad de diferença).
-check-verdict-ratio-upside-down = Seu T é a refração com a razão dos índices invertida: mu deve ser mu_i/mu_t (o meio que o raio deixa sobre aquele em que entra), e seu código usou mu_t/mu_i.
-check-verdict-out-of-plane = Seu T sai do plano de incidência (o plano de W e N) por { $off } rad: T deve ser uma combinação a*W + b*N dos dois.
-check-verdict-no-candidate = Seu T não corresponde a nenhuma das quatro escolhas de sinal: está a { $degrees } graus do raio refratado. Verifique mu e para onde apontam W e N.
+check-verdict-ratio-upside-down = Seu T é a refração com a razão dos índices invertida: μ deve ser μi/μt (o meio que o raio deixa sobre aquele em que entra), e seu código usou μt/μi.
+check-verdict-out-of-plane = Seu T sai do plano de incidência (o plano de W e N) por { $off } rad: T deve ser uma combinação a·W + b·N dos dois.
+check-verdict-no-candidate = Seu T não corresponde a nenhuma das quatro escolhas de sinal: está a { $degrees } graus do raio refratado. Verifique μ e para onde apontam W e N.
 
 ## Leitura de t_yours numa linha JSON
 
@@ -88,7 +88,7 @@ check-looks-variant = o que { $call } devolve com { $variant }: sua implementaç
 check-variant-eta-inverted = eta invertido
 check-variant-normal-flipped = a normal invertida
 check-variant-incident-reversed = o vetor incidente ao contrário
-check-looks-nothing = { $what }, que indica que nada é transmitido, embora este raio seja refratado (k = { $k } >= 0)
+check-looks-nothing = { $what }, que indica que nada é transmitido, embora este raio seja refratado (k = { $k } ≥ 0)
 check-looks-not-finite = componentes NaN ou infinitas, embora este raio seja refratado
 check-looks-off = a { $degrees } graus dela
 check-looks-off-unmeasurable = a um ângulo que não se pode medir
@@ -164,6 +164,7 @@ check-match-tir = reflexão total, respondida corretamente
 check-match-none = nenhum dos quatro candidatos
 check-no-refracted-ray = Não há raio refratado: reflexão total.
 check-right-t = O T correto = { $t }
+check-copy-right-t = Copiar T
 check-not-drawn-changed = (O caso mudou desde então: o veredicto não é desenhado.)
 
 ## O painel: uma chamada de API

@@ -188,12 +188,12 @@ diagram-fresnel-brewster = ângulo de Brewster θB = { $angle }°: nenhuma luz p
 diagram-fresnel-critical = ângulo limite θc = { $angle }°: além dele, tudo é refletido
 diagram-fresnel-brewster-short = ângulo de Brewster θB = { $angle }°
 diagram-fresnel-critical-short = ângulo limite θc = { $angle }°
-diagram-curve-rs = R_s (luz s refletida)
-diagram-curve-rp = R_p (luz p refletida)
+diagram-curve-rs = Rs (luz s refletida)
+diagram-curve-rp = Rp (luz p refletida)
 diagram-curve-r = R (não polarizada, refletida)
 diagram-curve-t = T (não polarizada, transmitida)
 diagram-fresnel-source =
-    Equações de Fresnel para a potência refletida (Hecht, Óptica, cap. 4): R_s = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², R_p = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
+    Equações de Fresnel para a potência refletida (Hecht, Óptica, cap. 4): Rs = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², Rp = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
     a partir dos próprios cosθi e cosθt do kernel, sem trigonometria; a luz não polarizada é a média de s e p. Além do ângulo limite toda a luz é refletida.
 
 ## O gráfico de precisão

@@ -11,6 +11,8 @@ logs-not-listed = { $count ->
    *[other] mais { $count } linhas julgadas mas não listadas (a tabela mostra as primeiras { $first })
 }
 logs-diagnosis-heading = Diagnóstico do log inteiro
+logs-copy-diagnosis = Copiar o diagnóstico e a tabela
+logs-copy-diagnosis-hover = Como texto: as contagens, o diagnóstico e depois uma linha por chamada com tabulações entre as células
 logs-map-heading = Mapa de falhas
 logs-map-hover = Quanto a direção de cada linha julgada se afasta da correta, em função do ângulo de incidência, num painel para cada lado de onde chegam os raios. Quadrados: a resposta correta é a reflexão total.
 logs-open = 🗁 Abrir log…

@@ -206,12 +206,12 @@ diagram-fresnel-brewster = угол Брюстера θB = { $angle }°: p-св�
 diagram-fresnel-critical = предельный угол θc = { $angle }°: дальше отражается всё
 diagram-fresnel-brewster-short = угол Брюстера θB = { $angle }°
 diagram-fresnel-critical-short = предельный угол θc = { $angle }°
-diagram-curve-rs = R_s (отражённый s-свет)
-diagram-curve-rp = R_p (отражённый p-свет)
+diagram-curve-rs = Rs (отражённый s-свет)
+diagram-curve-rp = Rp (отражённый p-свет)
 diagram-curve-r = R (неполяризованный, отражённый)
 diagram-curve-t = T (неполяризованный, прошедший)
 diagram-fresnel-source =
-    Формулы Френеля для отражённой мощности (Хехт, «Оптика», гл. 4): R_s = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², R_p = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
+    Формулы Френеля для отражённой мощности (Хехт, «Оптика», гл. 4): Rs = ((μi·cosθi − μt·cosθt)/(μi·cosθi + μt·cosθt))², Rp = ((μt·cosθi − μi·cosθt)/(μt·cosθi + μi·cosθt))², T = 1 − R,
     из собственных cosθi и cosθt ядра, без тригонометрии; неполяризованный свет — среднее s и p. За предельным углом отражается весь свет.
 
 ## График точности
