@@ -156,10 +156,11 @@ fn legend_entries(plot: &FresnelPlot, palette: &Palette, text: f32) -> Vec<Legen
 fn cursor_values(plot: &FresnelPlot) -> [String; 5] {
     let a = plot.at_cursor;
     // No-break spaces inside each value: a line breaks between values, never in one.
+    // untranslated: symbols and numbers, the same in every language.
     [
         format!("θi = {}°", number(plot.cursor_deg, 1)),
-        format!("Rs = {}", percent(a.rs)),
-        format!("Rp = {}", percent(a.rp)),
+        format!("Rs = {}", percent(a.rs)), // untranslated: a symbol
+        format!("Rp = {}", percent(a.rp)), // untranslated: a symbol
         format!("R = {}", percent(a.reflectance())),
         format!("T = {}", percent(a.transmittance())),
     ]

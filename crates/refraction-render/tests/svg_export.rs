@@ -22,6 +22,7 @@ use tiny_skia::{IntSize, Pixmap};
 
 use refraction_diagram::{Diagram, Overlay, Primitive};
 use refraction_model::ExplorerState;
+use refraction_render::svg::{self, Labels};
 use refraction_render::{interface_svg, render, render_scene, scene_svg};
 use refraction_scene::Scene;
 
@@ -156,14 +157,23 @@ fn the_interface_diagram_as_svg_looks_like_the_png_and_keeps_its_labels_as_text(
         ("total internal reflection, 800×800", tir, (800, 800)),
     ] {
         let overlay = Overlay::default();
-        let document = interface_svg(&state, &overlay, width, height).unwrap();
-        let png = render(&state, &overlay, width, height).unwrap();
         let size = Vec2::new(width as f32, height as f32);
         let primitives = Diagram::with_overlay(&state, size, &overlay).primitives();
+        let document = text_svg(&primitives, (width, height));
+        let png = render(&state, &overlay, width, height).unwrap();
         let texts = labels(&primitives);
         assert!(texts.len() > 5, "{what}: only {} labels", texts.len());
         compare(what, &document, &png, &texts);
+        // Outlined (the default), the labels are the PNG's glyphs as paths.
+        let outlined = interface_svg(&state, &overlay, width, height).unwrap();
+        assert!(!outlined.contains("<text"), "{what}");
+        compare(&format!("{what}, outlined"), &outlined, &png, &[]);
     }
+}
+
+/// `primitives` as an SVG of `size` with its labels as text.
+fn text_svg(primitives: &[Primitive], (width, height): (u32, u32)) -> String {
+    svg::document(width, height, Labels::Text, |_, _| primitives.to_vec()).unwrap()
 }
 
 #[test]
@@ -204,12 +214,15 @@ fn on_a_machine_without_the_font_the_labels_keep_their_widths() {
     db.set_sans_serif_family("Hack");
     let state = ExplorerState::default();
     let overlay = Overlay::default();
-    let document = interface_svg(&state, &overlay, 1280, 720).unwrap();
+    let size = Vec2::new(1280.0, 720.0);
+    let document = text_svg(
+        &Diagram::with_overlay(&state, size, &overlay).primitives(),
+        (1280, 720),
+    );
     let tree = usvg::Tree::from_str(&document, &options).unwrap();
     let mut widths = Vec::new();
     laid_out_widths(tree.root(), &mut widths);
     let face = refraction_diagram::font::Typeface::egui_default().unwrap();
-    let size = Vec2::new(1280.0, 720.0);
     let expected: Vec<(String, f32)> = Diagram::with_overlay(&state, size, &overlay)
         .primitives()
         .iter()
