@@ -70,7 +70,12 @@ fn the_fresnel_tool_names_its_landmarks_and_its_cursor_follows_the_drag() {
     );
     // The plot is the export's figure, painted: its legend, values and source are its texts.
     let painted = common::painted_texts(&h);
-    for words in ["Hecht, Optics", "Rp (p light reflected)", "Rp\u{a0}=\u{a0}", "θi\u{a0}=\u{a0}"] {
+    for words in [
+        "Hecht, Optics",
+        "Rp (p light reflected)",
+        "Rp\u{a0}=\u{a0}",
+        "θi\u{a0}=\u{a0}",
+    ] {
         assert!(
             painted.iter().any(|t| t.contains(words)),
             "{words}: {painted:?}"

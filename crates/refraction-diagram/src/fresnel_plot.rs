@@ -340,7 +340,8 @@ impl PlotPainter<'_> {
         let f = self.frame;
         let (bottom, top) = (f.at(degrees, 0.0), f.at(degrees, 1.0));
         self.line(vec![bottom, top], 2.0, colour, dash);
-        let size = f.text * 0.9;
+        // Measured at the size it is drawn at (never under the smallest text).
+        let size = (f.text * 0.9).max(SMALLEST_TEXT);
         let width = self.face.width(text, size);
         let margin = f.text * 0.4;
         let x = (top.x - width / 2.0).clamp(margin, (self.size.x - margin - width).max(margin));
@@ -363,7 +364,7 @@ impl PlotPainter<'_> {
         let (room, face, size) = (
             self.size.x - self.frame.text,
             self.face,
-            self.frame.text * 0.9,
+            (self.frame.text * 0.9).max(SMALLEST_TEXT),
         );
         let name = |long: String, short: String| {
             if face.width(&long, size) <= room {

@@ -466,11 +466,23 @@ fn segments_cross(p0: Vec2, p1: Vec2, q0: Vec2, q1: Vec2) -> bool {
     d1 * d2 <= 0.0 && d3 * d4 <= 0.0 && (d1 != 0.0 || d2 != 0.0 || d3 != 0.0 || d4 != 0.0)
 }
 
-/// `text` broken into lines no wider than `width` pixels at font size `size`, between words,
-/// and inside a word only where it is wider than a line on its own. Existing line breaks are
-/// kept. Linear in the text's length: each character is measured once or twice.
+/// `text` broken into lines no wider than `width` pixels at font size `size`, between words
+/// only (a word wider than `width` gets a line of its own). Existing line breaks are kept.
+/// Linear in the text's length.
 #[must_use]
 pub fn wrap(face: &Typeface, text: &str, size: f32, width: f32) -> String {
+    wrap_lines(face, text, size, width, false)
+}
+
+/// [`wrap`], but a word wider than a line is cut into pieces that fit (a page's text, where
+/// one unbroken word must not run off the paper). Linear in the text's length: each character
+/// is measured once or twice.
+#[must_use]
+pub fn wrap_breaking_words(face: &Typeface, text: &str, size: f32, width: f32) -> String {
+    wrap_lines(face, text, size, width, true)
+}
+
+fn wrap_lines(face: &Typeface, text: &str, size: f32, width: f32, break_words: bool) -> String {
     // Widths add up (the font is measured without kerning).
     let space = face.width(" ", size);
     let mut lines: Vec<String> = Vec::new();
@@ -478,7 +490,13 @@ pub fn wrap(face: &Typeface, text: &str, size: f32, width: f32) -> String {
         let mut line = String::new();
         let mut line_width = 0.0;
         for word in paragraph.split(' ') {
-            for (piece, piece_width) in pieces(face, word, size, width) {
+            let whole = face.width(word, size);
+            let pieces = if break_words && whole > width {
+                pieces(face, word, size, width)
+            } else {
+                vec![(word, whole)]
+            };
+            for (piece, piece_width) in pieces {
                 if !line.is_empty() && line_width + space + piece_width > width {
                     lines.push(core::mem::replace(&mut line, piece.to_owned()));
                     line_width = piece_width;
@@ -497,13 +515,9 @@ pub fn wrap(face: &Typeface, text: &str, size: f32, width: f32) -> String {
     lines.join("\n")
 }
 
-/// `word` with its width, or cut into pieces no wider than `width` where it is wider (each
-/// piece at least one character), with theirs.
+/// `word`, wider than `width`, cut into pieces no wider than it (each at least one
+/// character), with their widths.
 fn pieces<'a>(face: &Typeface, word: &'a str, size: f32, width: f32) -> Vec<(&'a str, f32)> {
-    let whole = face.width(word, size);
-    if whole <= width {
-        return vec![(word, whole)];
-    }
     let (mut out, mut start, mut used) = (Vec::new(), 0, 0.0);
     for (i, ch) in word.char_indices() {
         let advance = face.width(ch.encode_utf8(&mut [0; 4]), size);
@@ -523,6 +537,21 @@ mod tests {
     use crate::palette;
     use crate::shapes::Align;
     use proptest::prelude::*;
+
+    #[test]
+    fn a_label_breaks_between_words_and_a_page_inside_a_word_too_long() {
+        // Issue 32: a diagram's label read "преломляет/ся", broken inside the word.
+        let face = Typeface::egui_default().unwrap();
+        let narrow = face.width("преломля", 14.0);
+        let wrapped = wrap(&face, "знак преломляется", 14.0, narrow);
+        assert_eq!(wrapped, "знак\nпреломляется");
+        let broken = wrap_breaking_words(&face, "знак преломляется", 14.0, narrow);
+        assert!(broken.lines().count() >= 3, "{broken}");
+        assert!(
+            broken.lines().all(|l| face.width(l, 14.0) <= narrow),
+            "{broken}"
+        );
+    }
 
     fn label(text: &str, at: Vec2) -> Label {
         Label {

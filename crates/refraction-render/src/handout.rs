@@ -26,7 +26,7 @@ use refraction_diagram::Primitive;
 use refraction_diagram::font::Typeface;
 use refraction_diagram::geometry::Colour;
 use refraction_diagram::layout::SMALLEST_TEXT;
-use refraction_diagram::placer::wrap;
+use refraction_diagram::placer::wrap_breaking_words as wrap;
 use refraction_diagram::shapes::{Align, Label};
 
 use crate::{RenderError, svg};
