@@ -5,6 +5,9 @@
 //! changes. A change is recorded once the user lets go (no pointer button held, no animation
 //! running), so a drag or the μ → 1 animation is one step, not one per frame.
 
+use std::collections::VecDeque;
+use std::sync::Arc;
+
 use egui::{Key, KeyboardShortcut, Modifiers, Ui};
 
 use super::widgets::icon_button;
@@ -17,13 +20,15 @@ use refraction_scene::Scene;
 /// How many steps back the history reaches; older ones are forgotten.
 pub const LIMIT: usize = 1000;
 
-/// Everything undo restores.
+/// Everything undo restores. The scene is shared between the steps that did not change it
+/// (most steps edit the single interface), so a thousand steps hold a few scenes, not a
+/// thousand copies.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Snapshot {
     /// The single interface: W, N, `μ_i`, `μ_t` and the convention.
     pub interface: ExplorerState,
     /// The Scenes view's scene as edited: which scene, its source and its shapes.
-    pub scene: Scene,
+    pub scene: Arc<Scene>,
 }
 
 impl Snapshot {
@@ -31,7 +36,30 @@ impl Snapshot {
     /// nothing is copied on the frames where nothing changed).
     #[must_use]
     pub fn holds(&self, interface: &ExplorerState, scene: &Scene) -> bool {
-        self.interface == *interface && self.scene == *scene
+        self.interface == *interface && *self.scene == *scene
+    }
+
+    /// A snapshot of `interface` and `scene`, sharing `before`'s scene when it is the same.
+    #[must_use]
+    pub fn after(before: &Self, interface: &ExplorerState, scene: &Scene) -> Self {
+        let scene = if *before.scene == *scene {
+            Arc::clone(&before.scene)
+        } else {
+            Arc::new(scene.clone())
+        };
+        Self {
+            interface: interface.clone(),
+            scene,
+        }
+    }
+
+    /// A first snapshot of `interface` and `scene`.
+    #[must_use]
+    pub fn of(interface: &ExplorerState, scene: &Scene) -> Self {
+        Self {
+            interface: interface.clone(),
+            scene: Arc::new(scene.clone()),
+        }
     }
 }
 
@@ -129,10 +157,11 @@ pub fn describe(travel: Travel, from: &Snapshot, to: &Snapshot) -> Change {
     }
 }
 
-/// A linear history of values: the present, what came before it and what was undone.
+/// A linear history of values: the present, what came before it (the oldest forgotten first,
+/// past [`LIMIT`]) and what was undone.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct History<T> {
-    past: Vec<T>,
+    past: VecDeque<T>,
     present: T,
     future: Vec<T>,
 }
@@ -151,10 +180,16 @@ impl<T: Clone + PartialEq> History<T> {
     #[must_use]
     pub fn new(present: T) -> Self {
         Self {
-            past: Vec::new(),
+            past: VecDeque::new(),
             present,
             future: Vec::new(),
         }
+    }
+
+    /// The present value.
+    #[must_use]
+    pub fn present(&self) -> &T {
+        &self.present
     }
 
     /// Records `now` as a new step if it differs from the present; a new step forgets what was
@@ -165,18 +200,24 @@ impl<T: Clone + PartialEq> History<T> {
         }
     }
 
-    /// Records `make()` as the present unless `unchanged` says the present already holds it:
-    /// for values that are costly to build every frame.
-    pub fn record_unless(&mut self, unchanged: impl FnOnce(&T) -> bool, make: impl FnOnce() -> T) {
+    /// Records `make(present)` as the present unless `unchanged` says the present already
+    /// holds it: for values that are costly to build every frame.
+    pub fn record_unless(
+        &mut self,
+        unchanged: impl FnOnce(&T) -> bool,
+        make: impl FnOnce(&T) -> T,
+    ) {
         if !unchanged(&self.present) {
-            self.push(make());
+            let now = make(&self.present);
+            self.push(now);
         }
     }
 
     fn push(&mut self, now: T) {
-        self.past.push(core::mem::replace(&mut self.present, now));
+        self.past
+            .push_back(core::mem::replace(&mut self.present, now));
         if self.past.len() > LIMIT {
-            self.past.remove(0);
+            self.past.pop_front();
         }
         self.future.clear();
     }
@@ -184,12 +225,15 @@ impl<T: Clone + PartialEq> History<T> {
     /// Moves one step back or forward and returns the value to restore, or `None` when there
     /// is nothing that way.
     pub fn travel(&mut self, travel: Travel) -> Option<T> {
-        let (from, to) = match travel {
-            Travel::Undo => (&mut self.past, &mut self.future),
-            Travel::Redo => (&mut self.future, &mut self.past),
+        let value = match travel {
+            Travel::Undo => self.past.pop_back()?,
+            Travel::Redo => self.future.pop()?,
         };
-        let value = from.pop()?;
-        to.push(core::mem::replace(&mut self.present, value));
+        let before = core::mem::replace(&mut self.present, value);
+        match travel {
+            Travel::Undo => self.future.push(before),
+            Travel::Redo => self.past.push_back(before),
+        }
         Some(self.present.clone())
     }
 
@@ -252,6 +296,28 @@ mod tests {
     use super::*;
 
     #[test]
+    fn the_oldest_steps_are_forgotten_and_an_unchanged_scene_is_shared() {
+        // Issue 35: a thousand full scene clones, the oldest removed from the front of a Vec.
+        let scene = Scene::embedded("droplet").unwrap();
+        let mut state = ExplorerState::default();
+        let mut history = History::new(Snapshot::of(&state, &scene));
+        for i in 0..LIMIT + 5 {
+            state.set_mu_t(1.2 + i as f64 * 1e-4).unwrap();
+            history.record_unless(
+                |present| present.holds(&state, &scene),
+                |present| Snapshot::after(present, &state, &scene),
+            );
+        }
+        assert_eq!(history.undo_steps(), LIMIT);
+        let present = Arc::clone(&history.present().scene);
+        let before = history.travel(Travel::Undo).unwrap();
+        assert!(
+            Arc::ptr_eq(&before.scene, &present),
+            "one scene for every step"
+        );
+    }
+
+    #[test]
     fn undo_and_redo_walk_the_recorded_steps_and_a_new_step_forgets_the_future() {
         let mut history = History::new(0);
         assert_eq!(history.travel(Travel::Undo), None);
@@ -273,10 +339,10 @@ mod tests {
 
     /// The droplet with the default interface, and the same with μt 1.333 and N flipped.
     fn start_and_edited() -> (Snapshot, Snapshot) {
-        let start = Snapshot {
-            interface: ExplorerState::default(),
-            scene: Scene::embedded("droplet").unwrap(),
-        };
+        let start = Snapshot::of(
+            &ExplorerState::default(),
+            &Scene::embedded("droplet").unwrap(),
+        );
         let mut edited = start.clone();
         edited.interface.set_mu_t(1.333).unwrap();
         edited.interface.flip_normal();
@@ -290,7 +356,7 @@ mod tests {
         assert_eq!(change.words, "Undid μt 1.333 → 1.5, N flipped");
         assert!(change.in_interface && !change.in_scene);
         let mut scene = start.clone();
-        scene.scene = Scene::embedded("slab").unwrap();
+        scene.scene = Arc::new(Scene::embedded("slab").unwrap());
         let change = describe(Travel::Redo, &start, &scene);
         assert!(
             change.words.starts_with("Redid the scene ("),

@@ -164,10 +164,7 @@ impl Explorer {
     pub fn new(state: ExplorerState) -> Self {
         let scenes = ScenesView::default();
         Self {
-            history: History::new(Snapshot {
-                interface: state.clone(),
-                scene: scenes.scene().clone(),
-            }),
+            history: History::new(Snapshot::of(&state, scenes.scene())),
             state,
             view: View::default(),
             controls: Controls::default(),
@@ -257,10 +254,7 @@ impl Explorer {
             let base = Scene::embedded(name).unwrap_or_else(|_| scene.clone());
             self.scenes = ScenesView::new(base);
             self.scenes.restore(scene);
-            self.history = History::new(Snapshot {
-                interface: self.state.clone(),
-                scene: self.scenes.scene().clone(),
-            });
+            self.history = History::new(Snapshot::of(&self.state, self.scenes.scene()));
         }
     }
 
@@ -382,10 +376,7 @@ impl Explorer {
             let (state, scene) = (&self.state, self.scenes.scene());
             self.history.record_unless(
                 |present| present.holds(state, scene),
-                || Snapshot {
-                    interface: state.clone(),
-                    scene: scene.clone(),
-                },
+                |present| Snapshot::after(present, state, scene),
             );
         }
     }
@@ -454,10 +445,7 @@ impl Explorer {
     /// Undoes or redoes one step and says what it changed; a step that changed the view not
     /// shown switches to it, so that the class sees what was undone.
     fn travel(&mut self, travel: history::Travel) {
-        let before = Snapshot {
-            interface: self.state.clone(),
-            scene: self.scenes.scene().clone(),
-        };
+        let before = Snapshot::after(self.history.present(), &self.state, self.scenes.scene());
         let Some(snapshot) = self.history.travel(travel) else {
             return;
         };
@@ -475,7 +463,7 @@ impl Explorer {
             None => change.words,
         });
         self.state = snapshot.interface;
-        self.scenes.restore(snapshot.scene);
+        self.scenes.restore((*snapshot.scene).clone());
     }
 
     /// The single-interface view: controls, diagram, the kernel's numbers, the open tool.

@@ -481,10 +481,15 @@ fn audit_diagram(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<Strin
     // may cross a ghost's or the incoming ray's shaft where a small canvas has no free spot:
     // it is never dropped.)
     let palette = explorer.overlay().palette;
-    let main = [palette.w, palette.n, palette.t];
     for shape in &diagram.shapes {
-        if let Figure::Arrow { from, to, stroke } = shape {
-            if main.contains(&stroke.colour) {
+        if let Figure::Arrow {
+            from,
+            to,
+            stroke,
+            role,
+        } = shape
+        {
+            if *role == refraction_diagram::shapes::ArrowRole::Vector {
                 let shaft = refraction_diagram::placer::Obstacle::Shaft {
                     a: *from,
                     b: *to,
@@ -1028,7 +1033,9 @@ fn check_nothing_past_the_interface(
     let origin = diagram.layout.view.to_canvas(glam::DVec2::ZERO);
     let into_incident = diagram.layout.view.direction(normal);
     for shape in &diagram.shapes {
-        if let Figure::Arrow { from, to, stroke } = shape
+        if let Figure::Arrow {
+            from, to, stroke, ..
+        } = shape
             && stroke.colour != overlay.palette.n
         {
             let past = |p: &GVec2| (*p - origin).dot(into_incident) < -1.0;

@@ -8,7 +8,7 @@ use glam::{DVec3, Vec2};
 use super::font::Typeface;
 use super::geometry::{Colour, Rect};
 use super::layout::SMALLEST_TEXT;
-use super::numbers::number;
+use super::numbers::{number, percent};
 use super::palette::Palette;
 use super::placer::wrap;
 use super::plot::{Axis, Chart, LegendEntry, Sample, legend_column, legend_row};
@@ -467,12 +467,6 @@ impl PlotPainter<'_> {
             self.text(line, at, (Align::Start, Align::Start), 0.85, shade);
         }
     }
-}
-
-/// A power fraction as a percentage with one decimal, e.g. `4.0 %`.
-#[must_use]
-pub fn percent(fraction: f64) -> String {
-    format!("{} %", number(fraction * 100.0, 1))
 }
 
 /// The Fresnel view of `plot` on a canvas of `size`, in `palette`, back to front: the title,

@@ -2,8 +2,8 @@
 //! from the kernel's Fresnel fractions for s, p or unpolarised light, shown by the rays' width
 //! and opacity and by percentages beside them.
 
-use super::fresnel_plot::percent;
 use super::geometry::Colour;
+use super::numbers::percent;
 use super::shapes::Stroke;
 use refraction_i18n::t;
 use refraction_kernel::{Fresnel, Refraction};

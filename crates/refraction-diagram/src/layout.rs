@@ -5,8 +5,45 @@
 use glam::{DVec2, Vec2};
 
 use super::geometry::Rect;
-use super::overlay::PanZoom;
 use refraction_model::INDEX_RANGE;
+
+/// The least and the most the diagram can be zoomed.
+pub const ZOOM_RANGE: (f32, f32) = (0.4, 4.0);
+
+/// How the view is moved from its fitted place: a shift of the hit point in canvas pixels and a
+/// zoom factor about it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PanZoom {
+    /// Canvas pixels the hit point moves by.
+    pub pan: Vec2,
+    /// Scale factor on the fitted size (within [`ZOOM_RANGE`]).
+    pub zoom: f32,
+}
+
+impl Default for PanZoom {
+    fn default() -> Self {
+        Self {
+            pan: Vec2::ZERO,
+            zoom: 1.0,
+        }
+    }
+}
+
+impl PanZoom {
+    /// Zooms by `factor` keeping the canvas point `fixed` (relative to the fitted hit point)
+    /// where it is; the zoom stays within [`ZOOM_RANGE`] and non-finite factors are ignored.
+    pub fn zoom_about(&mut self, factor: f32, fixed: Vec2) {
+        if !factor.is_finite() || factor <= 0.0 {
+            return;
+        }
+        let (low, high) = ZOOM_RANGE;
+        let zoom = (self.zoom * factor).clamp(low, high);
+        let applied = zoom / self.zoom;
+        // The point under the pointer stays put: pan' = fixed − (fixed − pan)·applied.
+        self.pan = fixed - (fixed - self.pan) * applied;
+        self.zoom = zoom;
+    }
+}
 
 /// The world↔canvas map of the drawing area.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -206,6 +243,20 @@ impl Layout {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn zooming_keeps_the_fixed_point_and_stays_in_range() {
+        let mut view = PanZoom::default();
+        let fixed = Vec2::new(100.0, -40.0);
+        view.zoom_about(2.0, fixed);
+        // The point that was under `fixed` at zoom 1 is still there.
+        let world = (fixed - view.pan) / view.zoom;
+        assert!((world - fixed).length() < 1e-3, "{view:?}");
+        view.zoom_about(1e9, Vec2::ZERO);
+        assert_eq!(view.zoom, ZOOM_RANGE.1);
+        view.zoom_about(f32::NAN, Vec2::ZERO);
+        assert_eq!(view.zoom, ZOOM_RANGE.1);
+    }
 
     #[test]
     fn world_and_canvas_round_trip_with_y_up() {

@@ -83,6 +83,12 @@ pub fn vector(v: glam::DVec3, decimals: usize) -> String {
     format!("({x}{separator}{y}{separator}{z})")
 }
 
+/// A power fraction as a percentage with one decimal, e.g. `4.0 %`.
+#[must_use]
+pub fn percent(fraction: f64) -> String {
+    format!("{} %", number(fraction * 100.0, 1))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

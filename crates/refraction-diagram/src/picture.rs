@@ -11,7 +11,7 @@ use super::numbers::{number, significant};
 use super::overlay::{Overlay, Part};
 use super::palette::Palette;
 use super::placer::{Need, Obstacle, Placer, wrap};
-use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke, lower_all};
+use super::shapes::{Align, ArrowRole, Dash, Figure, Label, Primitive, Stroke, lower_all};
 use super::wavefronts;
 use refraction_i18n::t;
 use refraction_kernel::{Convention, Refraction, Rejection, seed};
@@ -243,14 +243,19 @@ impl DiagramBuilder<'_> {
                     radius: radius + 1.5,
                 });
             }
-            if let Figure::Arrow { from, to, stroke } = shape {
+            if let Figure::Arrow {
+                from,
+                to,
+                stroke,
+                role,
+            } = shape
+            {
                 // Its shaft and its head: no label covers a ray, nor ever W, N or T.
-                let main = [self.palette.w, self.palette.n, self.palette.t];
                 placer.avoid(Obstacle::Shaft {
                     a: *from,
                     b: *to,
                     half_width: stroke.width * 0.5 + 1.5,
-                    firm: main.contains(&stroke.colour),
+                    firm: *role == ArrowRole::Vector,
                 });
                 let mut lowered = Vec::new();
                 shape.lower(&mut lowered);
@@ -304,12 +309,20 @@ impl DiagramBuilder<'_> {
 
     /// An arrow from the hit point along the unit diagram direction `d`, `length` long, with a
     /// label beyond its tip.
-    fn ray(&mut self, d: DVec2, length: f64, stroke: Stroke, text: &str, size: f32) {
+    fn ray(
+        &mut self,
+        d: DVec2,
+        (length, role): (f64, ArrowRole),
+        stroke: Stroke,
+        text: &str,
+        size: f32,
+    ) {
         let tip = self.at(d * length);
         self.shapes.push(Figure::Arrow {
             from: self.at(DVec2::ZERO),
             to: tip,
             stroke,
+            role,
         });
         if !text.is_empty() {
             let away = self.layout.view.direction(d);
@@ -337,7 +350,11 @@ impl DiagramBuilder<'_> {
             _ => 1.0,
         };
         self.halo(part, vec![self.at(DVec2::ZERO), self.at(d * length)]);
-        self.ray(d, length, stroke, text, size);
+        let role = match part {
+            Part::W | Part::N | Part::T => ArrowRole::Vector,
+            _ => ArrowRole::Ray,
+        };
+        self.ray(d, (length, role), stroke, text, size);
     }
 
     /// The student's T, with its own length and dash, labelled with what it is.
@@ -359,7 +376,7 @@ impl DiagramBuilder<'_> {
         let drawn = student.t.length().clamp(0.25, 1.6);
         let stroke = self.stroke(2.6, self.palette.student, Dash::LongDash);
         let text = student.label.clone();
-        self.ray(flat / length, drawn, stroke, &text, 0.95);
+        self.ray(flat / length, (drawn, ArrowRole::Ray), stroke, &text, 0.95);
     }
 
     /// A straight line between world points, clipped to the drawing area.
@@ -524,12 +541,13 @@ impl DiagramBuilder<'_> {
         }
         let facing = self.flat(r.facing_normal);
         let stroke = self.stroke(1.6, self.palette.n, Dash::Dashed);
-        self.ray(facing, 0.75, stroke, &t!("diagram-kernel-normal"), 0.8);
+        let kernel_normal = t!("diagram-kernel-normal");
+        self.ray(facing, (0.75, ArrowRole::Ray), stroke, &kernel_normal, 0.8);
         if let Some(wrong) = seed::refract(r.w, r.n, r.mu, r.convention) {
             let stroke = self.stroke(3.0, self.palette.warning, Dash::Dashed);
             self.ray(
                 self.flat(wrong),
-                1.0,
+                (1.0, ArrowRole::Ray),
                 stroke,
                 &t!("diagram-outward-normal-bug"),
                 0.85,
@@ -686,6 +704,7 @@ impl DiagramBuilder<'_> {
             from: self.at(source),
             to: self.at(source * 0.45),
             stroke: incoming,
+            role: ArrowRole::Ray,
         });
     }
 
@@ -712,10 +731,12 @@ impl DiagramBuilder<'_> {
             let text = format!("θt = {theta_t}°");
             self.angle(Part::AngleT, (-normal, t), text, palette.t);
             let thin = self.stroke(1.6, palette.reflected, palette.reflected_dash);
-            self.ray(reflected, 0.7, thin, &t!("diagram-reflected"), 0.8);
+            let words = t!("diagram-reflected");
+            self.ray(reflected, (0.7, ArrowRole::Ray), thin, &words, 0.8);
         } else {
             let bold = self.stroke(4.5, palette.reflected, palette.reflected_dash);
-            self.ray(reflected, 1.0, bold, &t!("diagram-reflected-all"), 1.0);
+            let words = t!("diagram-reflected-all");
+            self.ray(reflected, (1.0, ArrowRole::Ray), bold, &words, 1.0);
         }
     }
 
@@ -778,6 +799,7 @@ impl DiagramBuilder<'_> {
             from: tail,
             to: head,
             stroke,
+            role: ArrowRole::Vector,
         });
         let away = self.layout.view.direction(-d);
         let at = tail + away * (self.font() * 0.9);
@@ -792,7 +814,7 @@ impl DiagramBuilder<'_> {
     fn shared_ray(&mut self, d: DVec2, full: Stroke, name: &str, share: f64) {
         let text = Shares::label(name, share);
         if let Some(stroke) = stroke_for(full, share) {
-            self.ray(d, 1.0, stroke, &text, 0.9);
+            self.ray(d, (1.0, ArrowRole::Ray), stroke, &text, 0.9);
         } else {
             let away = self.layout.view.direction(d);
             let at = self.at(d * 0.7);
@@ -1048,7 +1070,9 @@ mod tests {
                 let surface = asked.layout.view.to_canvas(DVec2::ZERO).y;
                 let n_colour = Overlay::default().palette.n;
                 for shape in &asked.shapes {
-                    if let Figure::Arrow { from, to, stroke } = shape
+                    if let Figure::Arrow {
+                        from, to, stroke, ..
+                    } = shape
                         && stroke.colour != n_colour
                     {
                         assert!(
@@ -1308,7 +1332,9 @@ mod tests {
                     .shapes
                     .iter()
                     .filter_map(|shape| match shape {
-                        Figure::Arrow { from, to, stroke } => Some(Obstacle::Shaft {
+                        Figure::Arrow {
+                            from, to, stroke, ..
+                        } => Some(Obstacle::Shaft {
                             a: *from,
                             b: *to,
                             half_width: stroke.width * 0.5,

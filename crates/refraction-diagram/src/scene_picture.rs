@@ -16,7 +16,7 @@ use super::numbers::number;
 use super::palette::Palette;
 use super::picture::{GRAB_SCALE, medium_colour};
 use super::placer::{Need, Obstacle, Placer};
-use super::shapes::{Align, Dash, Figure, Label, Primitive, Stroke};
+use super::shapes::{Align, ArrowRole, Dash, Figure, Label, Primitive, Stroke};
 use super::spectrum::{ray_colour, wavelength_colour};
 use refraction_i18n::t;
 use refraction_scene::{
@@ -760,6 +760,7 @@ impl ScenePictureBuilder<'_> {
                     dash: Dash::Dashed,
                     ..ring(self.palette.w)
                 },
+                role: ArrowRole::Ray,
             }
             .lower(&mut self.out);
         }

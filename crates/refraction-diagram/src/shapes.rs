@@ -134,6 +134,8 @@ pub enum Figure {
         to: Vec2,
         /// How the shaft is drawn (the head is always solid).
         stroke: Stroke,
+        /// What it is in the lesson: labels never lie on W, N or T.
+        role: ArrowRole,
     },
     /// A filled circle with an outline.
     Disc {
@@ -148,6 +150,17 @@ pub enum Figure {
     },
     /// Text.
     Text(Label),
+}
+
+/// What an arrow is in the lesson, for the labels placed around it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ArrowRole {
+    /// W, N or T: the vectors the lesson is about; a label crosses one only where nothing
+    /// else is left.
+    Vector,
+    /// Any other ray: the incoming and reflected rays, the candidates, a ghost drawn in a
+    /// vector's colour (the normal the kernel uses), a student's T, a scene's aim.
+    Ray,
 }
 
 /// What a backend draws: solid primitives only.
@@ -223,7 +236,9 @@ impl Figure {
                 colour: *colour,
             }),
             Self::Line { points, stroke } => polylines(points, stroke, out),
-            Self::Arrow { from, to, stroke } => {
+            Self::Arrow {
+                from, to, stroke, ..
+            } => {
                 let direction = *to - *from;
                 let head = Self::head_length(stroke.width).min(direction.length() * 0.6);
                 let base = *to - direction.normalize_or_zero() * head * 0.8;
@@ -278,6 +293,7 @@ mod tests {
             from: Vec2::ZERO,
             to: Vec2::new(200.0, 0.0),
             stroke,
+            role: ArrowRole::Ray,
         };
         let primitives = lower_all(&[arrow]);
         let (polygons, lines): (Vec<_>, Vec<_>) = primitives
@@ -292,6 +308,7 @@ mod tests {
                 dash: Dash::Solid,
                 ..stroke
             },
+            role: ArrowRole::Ray,
         };
         assert_eq!(lower_all(&[solid]).len(), 1);
     }

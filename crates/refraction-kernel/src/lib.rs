@@ -61,12 +61,12 @@
 //!
 //! # Features
 //!
-//! None is on by default.
+//! None is on by default; [`seed`], the source's formula taken literally (to show what it
+//! loses and the outward-normal bug it makes), is always there.
 //! - `serde`: serialisation of the input types and of [`Fresnel`].
-//! - `variants`: the variants the explorer's `bench` command compares: `seed` (the source's
-//!   formula taken literally, to show what it loses), `batch` (the default kernel over
-//!   structure-of-arrays batches with SIMD, bit for bit the scalar result) and `Variant` (with
-//!   the trigonometric form and glam's own `refract`).
+//! - `variants`: the variants the explorer's `bench` command compares: `batch` (the default
+//!   kernel over structure-of-arrays batches with SIMD, bit for bit the scalar result) and
+//!   `Variant` (`seed`, the trigonometric form and glam's own `refract`).
 //! - `api`: what GLSL, pbrt-v4, Ray Tracing in One Weekend and Mitsuba 3 return for a `refract`
 //!   call, bit for bit, and what their arguments mean here.
 
@@ -80,9 +80,9 @@ mod fresnel;
 mod input;
 mod real;
 mod refraction;
-#[cfg(feature = "variants")]
 pub mod seed;
 mod stable;
+mod transmission;
 mod transmit;
 #[cfg(feature = "variants")]
 mod trig;
@@ -96,8 +96,9 @@ pub use input::{
     Convention, Incidence, IndexName, InputError, UNIT_LENGTH_TOLERANCE, VectorName, Warning,
 };
 pub use real::{Real, Vector3};
-pub use refraction::{Refraction, Transmission, refract};
+pub use refraction::{Refraction, refract};
 pub use stable::{Facing, refract_facing};
+pub use transmission::Transmission;
 pub use transmit::{Transmitted, transmit, transmit_pbrt};
 #[cfg(feature = "variants")]
 pub use variants::Variant;

@@ -28,7 +28,7 @@
 //! (a rounding of the input moves the ray to the other side), so T may come out on either side.
 
 use super::real::{Real, Vector3};
-use super::refraction::Transmission;
+use super::transmission::Transmission;
 
 /// What [`refract_facing`] finds at one interface.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -16,7 +16,12 @@ use glam::DVec2;
 use super::Scene;
 use super::bounds::{Bounds, padding};
 use super::shape::{Crossing, Shape, T_MIN, crosses_rightward};
-use super::trace::MAX_TESTS;
+
+/// The most intersection tests one trace makes (a ray or a point against a bounding box or a
+/// shape's piece, in finding crossings and the media at hits); past it the trace stops and
+/// says so ([`crate::Counts::truncated`]), so that no scene can keep the tracer busy for long (about
+/// a second at this many on one core).
+pub const MAX_TESTS: u64 = 100_000_000;
 
 /// The most pieces in a leaf.
 const LEAF: usize = 4;

@@ -27,6 +27,7 @@ mod write;
 use glam::DVec2;
 
 pub use bounds::Bounds;
+pub use bvh::MAX_TESTS;
 pub use effects::{Effects, EffectsError};
 pub use embedded::{DEFAULT_SCENE, SceneInfo, catalogue};
 pub use format::{
@@ -41,8 +42,7 @@ pub use shape::{Crossing, Lens, Shape, T_MIN};
 pub use source::{Light, Source, SourceKind, traced_wavelength};
 pub use spec::Numbers;
 pub use trace::{
-    Budget, Counts, End, Hit, MAX_SEGMENTS, MAX_TESTS, Outcome, Path, Progress, Segment, Side,
-    Stop, Trace,
+    Budget, Counts, End, Hit, MAX_SEGMENTS, Outcome, Path, Progress, Segment, Side, Stop, Trace,
 };
 pub use write::WriteError;
 

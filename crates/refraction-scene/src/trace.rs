@@ -10,7 +10,7 @@ use serde::Serialize;
 
 use super::Scene;
 use super::bounds::Bounds;
-use super::bvh::Bvh;
+use super::bvh::{Bvh, MAX_TESTS};
 use super::fresnel::Fresnel;
 use super::source::{Light, serialize_wavelength, traced_wavelength};
 use refraction_kernel::{Convention, Incidence, refract_facing};
@@ -18,12 +18,6 @@ use refraction_kernel::{Convention, Incidence, refract_facing};
 /// The most segments one trace records; past it the trace stops and says so
 /// ([`Counts::truncated`]), so that no scene can exhaust memory.
 pub const MAX_SEGMENTS: usize = 1_000_000;
-
-/// The most intersection tests one trace makes (a ray or a point against a bounding box or a
-/// shape's piece, in finding crossings and the media at hits); past it the trace stops and
-/// says so ([`Counts::truncated`]), so that no scene can keep the tracer busy for long (about
-/// a second at this many on one core).
-pub const MAX_TESTS: u64 = 100_000_000;
 
 /// The work one trace may do before it stops: [`Budget::DEFAULT`] for [`Scene::trace`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -175,21 +175,6 @@ pub fn refract<S: Real>(wi: S::Vec3, m: S::Vec3, cos_theta_t: S, eta_ti: S, fma:
     S::Vec3::new(out[0], out[1], out[2])
 }
 
-/// Mitsuba 3's local-frame `reflect(wi)`: `(-wi.x, -wi.y, wi.z)`.
-///
-/// # Examples
-///
-/// ```
-/// use glam::Vec3;
-/// use refraction_kernel::api::mitsuba::reflect_local;
-/// assert_eq!(reflect_local::<f32>(Vec3::new(-0.6, 0.0, 0.8)), Vec3::new(0.6, 0.0, 0.8));
-/// ```
-#[must_use]
-pub fn reflect_local<S: Real>(wi: S::Vec3) -> S::Vec3 {
-    let [x, y, z] = wi.to_array();
-    S::Vec3::new(-x, -y, z)
-}
-
 /// Mitsuba 3's `reflect(wi, m)`: `fmsub(m, 2·dot(wi, m), wi)`.
 ///
 /// # Examples
