@@ -10,6 +10,7 @@ use refraction_i18n::t;
 use super::file_dialog::{FileDialog, Kind, Purpose, Target, answer_replace, settle, target};
 use super::typed::status;
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
+use crate::app::link::LinkRow;
 use crate::app::snippets;
 use refraction_model::ExplorerState;
 use refraction_tools::state_file::{self, LoadError};
@@ -62,6 +63,8 @@ pub struct FilesPanel {
     dialog: Option<FileDialog>,
     /// A file the user is asked about replacing.
     replace: Option<PathBuf>,
+    /// The web build's address, *Copy link* and *QR code*.
+    pub share: LinkRow,
 }
 
 impl Default for FilesPanel {
@@ -73,6 +76,7 @@ impl Default for FilesPanel {
             copied: None,
             dialog: None,
             replace: None,
+            share: LinkRow::default(),
         }
     }
 }
@@ -212,6 +216,8 @@ impl FilesPanel {
         if let Some(text) = &self.copied {
             ui.label(RichText::new(text).monospace().small());
         }
+        ui.separator();
+        self.share.ui(ui);
     }
 }
 

@@ -215,7 +215,8 @@ fn animation(args: &RenderArgs, animation: Animation) -> Result<Vec<u8>, String>
 /// size and the animation's frames and rate are checked before anything is traced or drawn.
 pub fn run(args: &RenderArgs) -> ExitCode {
     if let Some(lesson) = &args.lesson {
-        return super::lessons::render(lesson, &args.out, (args.width, args.height));
+        let size = (args.width, args.height);
+        return super::lessons::render(lesson, &args.out, size, args.web_base.as_deref());
     }
     let formats: &[ImageFormat] = match args.animate {
         Some(_) => &[ImageFormat::Gif],
@@ -248,6 +249,8 @@ pub struct Window {
     pub theme: Option<Theme>,
     /// The language (`--lang`).
     pub language: Option<Locale>,
+    /// The web build's address for links (`--web-base`).
+    pub web_base: Option<String>,
 }
 
 /// Opens the explorer window as `window` asks; a state file or a lesson deck that cannot be
@@ -269,6 +272,7 @@ pub fn explorer(window: &Window) -> ExitCode {
             theme: window.theme,
             language: window.language,
             system_language: sys_locale::get_locale().and_then(|tag| Locale::from_tag(&tag)),
+            web_base: window.web_base.clone(),
         });
     match launch.and_then(|launch| app::run(launch).map_err(|e| e.to_string())) {
         Ok(()) => ExitCode::SUCCESS,

@@ -58,6 +58,42 @@ pub struct Page {
     pub notes: (String, String),
     /// The diagram, drawn for [`CANVAS`].
     pub diagram: Vec<Primitive>,
+    /// The link that opens this step in the web build, if the page should carry it: printed
+    /// with its QR code under the diagram ([`link_block`]).
+    pub link: Option<String>,
+}
+
+/// The side of a step's QR code, in points (about 30 mm: a phone reads it from the desk).
+const QR_SIDE: f32 = 84.0;
+
+/// The size of the link's words beside its QR code, in points.
+const LINK_SIZE: f32 = 8.0;
+
+/// The QR code of the page's link under the diagram, with the link beside it; nothing
+/// without a link (or for a link too long for a QR code, which then stands alone).
+fn link_block(face: &Typeface, page: &Page) -> Vec<Primitive> {
+    let Some(link) = &page.link else {
+        return Vec::new();
+    };
+    let top = PAGE.y - MARGIN - QR_SIDE;
+    let mut out = refraction_diagram::qr::Code::new(link)
+        .map(|code| code.primitives(Vec2::new(MARGIN, top), QR_SIDE))
+        .unwrap_or_default();
+    let x = MARGIN + QR_SIDE + 10.0;
+    let width = DIAGRAM_AT.x + DIAGRAM_WIDTH - x;
+    let text = at_most(
+        face,
+        &wrap(face, link, LINK_SIZE, width),
+        LINK_SIZE,
+        width,
+        6,
+    );
+    out.push(Primitive::Text(words(
+        text,
+        Vec2::new(x, top + 4.0),
+        LINK_SIZE,
+    )));
+    out
 }
 
 /// A label at `at` (its top left corner) in the page's ink.
@@ -132,7 +168,7 @@ fn page_svg(face: &Typeface, page: &Page) -> String {
          width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">\n\
          <rect width=\"{w}\" height=\"{h}\" fill=\"#ffffff\"/>\n{words}\
          <svg x=\"{x}\" y=\"{y}\" width=\"{dw}\" height=\"{height}\" viewBox=\"0 0 {cw} {ch}\">\n\
-         {diagram}</svg>\n</svg>\n",
+         {diagram}</svg>\n{link}</svg>\n",
         w = PAGE.x,
         h = PAGE.y,
         words = svg::elements(face, &page_words(face, page)),
@@ -142,6 +178,7 @@ fn page_svg(face: &Typeface, page: &Page) -> String {
         cw = CANVAS.x,
         ch = CANVAS.y,
         diagram = svg::elements(face, &page.diagram),
+        link = svg::elements(face, &link_block(face, page)),
     )
 }
 
@@ -290,6 +327,7 @@ mod tests {
             question: None,
             notes: ("Notes".to_owned(), word),
             diagram: Vec::new(),
+            link: None,
         };
         let labels = page_words(&face, &page);
         for label in &labels {

@@ -1,0 +1,151 @@
+//! What the window asks of the page around it: its address and fragment, the browser's
+//! language, full screen, the clipboard (which a browser may refuse) and the canvas's words
+//! for screen readers.
+
+use core::cell::RefCell;
+
+use js_sys::{Function, Promise, Reflect};
+use refraction_i18n::{Locale, t};
+use wasm_bindgen::JsCast as _;
+use wasm_bindgen::prelude::JsValue;
+use wasm_bindgen_futures::{JsFuture, spawn_local};
+
+thread_local! {
+    /// What the browser refused since the last frame (a copy, full screen), in words.
+    static REFUSED: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The page's window.
+fn window() -> Option<web_sys::Window> {
+    web_sys::window()
+}
+
+/// The page's address without its fragment: where the web build is, for links.
+pub fn address() -> Option<String> {
+    let href = window()?.location().href().ok()?;
+    Some(href.split('#').next().unwrap_or_default().to_owned())
+}
+
+/// The address's fragment as the browser keeps it (still percent-encoded), without `#`.
+pub fn fragment() -> String {
+    let hash = window().and_then(|w| w.location().hash().ok());
+    hash.unwrap_or_default().trim_start_matches('#').to_owned()
+}
+
+/// The first of the browser's languages the explorer speaks.
+pub fn language() -> Option<Locale> {
+    let navigator = window()?.navigator();
+    let languages = navigator.languages();
+    let listed = languages.iter().filter_map(|l| l.as_string());
+    listed
+        .chain(navigator.language())
+        .find_map(|tag| Locale::from_tag(&tag))
+}
+
+/// Keeps `message` for the window to show (see [`take_refusals`]).
+fn refused(message: String) {
+    REFUSED.with_borrow_mut(|all| all.push(message));
+}
+
+/// What the browser refused since the last call, in words.
+pub fn take_refusals() -> Vec<String> {
+    REFUSED.with_borrow_mut(core::mem::take)
+}
+
+/// Calls the method `name` of `target` without arguments and, where it returns a promise that
+/// is rejected, keeps `message` (with the browser's reason) and asks for a repaint.
+fn call_and_watch(
+    target: &JsValue,
+    name: &str,
+    ctx: &egui::Context,
+    message: fn(String) -> String,
+) {
+    let called = Reflect::get(target, &JsValue::from_str(name))
+        .and_then(|method| method.dyn_into::<Function>().map_err(JsValue::from))
+        .and_then(|method| method.call0(target));
+    let reason = |e: &JsValue| {
+        e.as_string()
+            .or_else(|| {
+                Reflect::get(e, &JsValue::from_str("message"))
+                    .ok()?
+                    .as_string()
+            })
+            .unwrap_or_default()
+    };
+    match called.map(|value| value.dyn_into::<Promise>()) {
+        Ok(Ok(promise)) => {
+            let ctx = ctx.clone();
+            spawn_local(async move {
+                if let Err(e) = JsFuture::from(promise).await {
+                    refused(message(reason(&e)));
+                    ctx.request_repaint();
+                }
+            });
+        }
+        Ok(Err(_)) => {}
+        Err(e) => refused(message(reason(&e))),
+    }
+}
+
+/// Enters or leaves the browser's full screen (presentation). A browser enters it only
+/// shortly after a click or a key; when it refuses, the window says so.
+pub fn full_screen(on: bool, ctx: &egui::Context) {
+    let Some(document) = window().and_then(|w| w.document()) else {
+        return;
+    };
+    if on == document.fullscreen_element().is_some() {
+        return;
+    }
+    if on {
+        if let Some(element) = document.document_element() {
+            call_and_watch(&element, "requestFullscreen", ctx, |reason| {
+                t!("web-full-screen-refused", reason = reason)
+            });
+        }
+    } else {
+        call_and_watch(&document, "exitFullscreen", ctx, |reason| {
+            t!("web-full-screen-refused", reason = reason)
+        });
+    }
+}
+
+/// Whether the page is in the browser's full screen now.
+pub fn is_full_screen() -> bool {
+    let document = window().and_then(|w| w.document());
+    document.is_some_and(|d| d.fullscreen_element().is_some())
+}
+
+/// Puts `text` on the clipboard; a page that may not (opened from a file, or not in front)
+/// says so in the window.
+pub fn copy(text: &str, ctx: &egui::Context) {
+    let Some(window) = window() else {
+        return;
+    };
+    let clipboard = Reflect::get(&window.navigator(), &JsValue::from_str("clipboard"));
+    let Ok(clipboard) = clipboard.and_then(|c| {
+        c.dyn_into::<web_sys::Clipboard>()
+            .map_err(|_| JsValue::UNDEFINED)
+    }) else {
+        refused(t!("web-copy-refused", reason = t!("web-not-secure")));
+        return;
+    };
+    let promise = clipboard.write_text(text);
+    let ctx = ctx.clone();
+    spawn_local(async move {
+        if let Err(e) = JsFuture::from(promise).await {
+            let reason = Reflect::get(&e, &JsValue::from_str("message"))
+                .ok()
+                .and_then(|m| m.as_string())
+                .unwrap_or_default();
+            refused(t!("web-copy-refused", reason = reason));
+            ctx.request_repaint();
+        }
+    });
+}
+
+/// Names the canvas for screen readers with what the diagram says (`summary`), as the desktop
+/// window names its canvas: a page's canvas is a picture to the browser.
+pub fn describe(canvas: &web_sys::HtmlCanvasElement, summary: &str) {
+    canvas.set_attribute("role", "img").ok();
+    canvas.set_attribute("aria-label", summary).ok();
+}
