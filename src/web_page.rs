@@ -25,7 +25,7 @@ pub enum Script<'a> {
         /// The script's file name.
         js: &'a str,
     },
-    /// Inlined: the script wasm-bindgen wrote (its `export` lines are dropped) and the
+    /// Inlined: the script wasm-bindgen wrote (exporting nothing) and the
     /// WebAssembly as base64, handed to the script's init function as bytes.
     Inlined {
         /// The script's text.
@@ -68,9 +68,12 @@ fn bootstrap(script: &Script<'_>) -> String {
             "await init();".to_owned(),
         ),
         Script::Inlined { js, wasm_base64 } => {
+            // A module inlined in the page exports nothing: its export list goes, and its
+            // exported functions stay as plain functions.
             let module: String = js
                 .lines()
-                .filter(|line| !line.trim_start().starts_with("export "))
+                .filter(|line| !line.starts_with("export {"))
+                .map(|line| line.strip_prefix("export ").unwrap_or(line))
                 .collect::<Vec<_>>()
                 .join("\n");
             let load = format!(
@@ -99,7 +102,7 @@ fn bootstrap(script: &Script<'_>) -> String {
 pub fn html(script: &Script<'_>) -> String {
     format!(
         "<!DOCTYPE html>\n<html>\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" \
-         content=\"width=device-width, initial-scale=1\">\n<title>{TITLE}</title>\n<style>\n\
+         content=\"width=device-width, initial-scale=1\">\n<title>{TITLE}</title>\n<link rel=\"icon\" href=\"data:,\">\n<style>\n\
          html, body {{ margin: 0; padding: 0; width: 100%; height: 100%; overflow: hidden; \
          background: #f8f8f8; }}\ncanvas {{ position: absolute; top: 0; left: 0; width: 100%; \
          height: 100%; display: block; }}\n#{LOADING_ID} {{ position: absolute; top: 45%; \
@@ -127,7 +130,8 @@ mod tests {
             "every language's words"
         );
         let inlined = html(&Script::Inlined {
-            js: "function __wbg_init() {}\nexport { initSync };\nexport default __wbg_init;",
+            js: "export function start() {}\nasync function __wbg_init() {}\n\
+                 export { initSync, __wbg_init as default };",
             wasm_base64: "AGFzbQ==",
         });
         assert!(

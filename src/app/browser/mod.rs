@@ -19,11 +19,12 @@ mod page;
 
 use core::time::Duration;
 
+use refraction_i18n::t;
 use wasm_bindgen::JsCast as _;
 
 pub use files::dialog;
 
-use super::{Explorer, Launch};
+use super::{Explorer, Launch, TITLE};
 
 /// How often the settings and the last state are written to the browser's storage: a page
 /// can be closed at any moment, and the browser does not always say so.
@@ -41,6 +42,10 @@ struct Page {
     full_screen: bool,
     /// What the canvas is named, last set.
     described: String,
+    /// The page's title, last set.
+    title: String,
+    /// The strip's message, last said in the page's live region.
+    announced: Option<String>,
 }
 
 impl Page {
@@ -52,7 +57,7 @@ impl Page {
             return;
         }
         if let Err(why) = self.explorer.open_link(&fragment) {
-            let said = refraction_i18n::t!("web-link-not-opened", reason = why);
+            let said = t!("web-link-not-opened", reason = why);
             self.explorer.sharing.notice = Some(said);
         }
         self.fragment = fragment;
@@ -93,13 +98,36 @@ impl Page {
         }
     }
 
-    /// Names the canvas with what the diagram says, when that changed.
+    /// Names the canvas with what the diagram says, titles the page with the deck's step
+    /// shown, and says the strip's message in the page's live region, each when it changed.
     fn describe(&mut self) {
         let hidden = self.explorer.lesson().hides_answer();
         let summary = refraction_diagram::picture::summary(self.explorer.state(), hidden);
         if summary != self.described {
             page::describe(&self.canvas, &summary);
             self.described = summary;
+        }
+        let lesson = self.explorer.lesson();
+        let step = lesson
+            .current()
+            .zip(lesson.deck.as_ref())
+            .map(|((i, _), deck)| {
+                let number = (i + 1).to_string();
+                let at = t!(
+                    "deck-step-number",
+                    number = number,
+                    count = deck.steps.len().to_string()
+                );
+                format!("{TITLE} · {} · {at}", deck.title)
+            });
+        let title = step.unwrap_or_else(|| TITLE.to_owned());
+        if title != self.title {
+            page::set_title(&title);
+            self.title = title;
+        }
+        if self.explorer.sharing.notice != self.announced {
+            page::announce(self.explorer.sharing.notice.as_deref().unwrap_or_default());
+            self.announced.clone_from(&self.explorer.sharing.notice);
         }
     }
 }
@@ -151,6 +179,8 @@ fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement
         presenting: false,
         full_screen: false,
         described: String::new(),
+        title: String::new(),
+        announced: None,
     };
     page.follow_address();
     page

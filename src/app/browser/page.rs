@@ -143,6 +143,38 @@ pub fn copy(text: &str, ctx: &egui::Context) {
     });
 }
 
+/// The id of the page's line that says what the window said in its strip (a link not
+/// opened, a copy refused), for screen readers: a polite live region, out of sight.
+const STATUS_ID: &str = "status";
+
+/// Says `text` in the page's live region (made on first use), as the window's strip does.
+pub fn announce(text: &str) {
+    let Some(document) = window().and_then(|w| w.document()) else {
+        return;
+    };
+    let line = document.get_element_by_id(STATUS_ID).or_else(|| {
+        let line = document.create_element("div").ok()?;
+        line.set_id(STATUS_ID);
+        line.set_attribute("role", "status").ok()?;
+        line.set_attribute("aria-live", "polite").ok()?;
+        let hidden = "position: absolute; width: 1px; height: 1px; overflow: hidden; \
+                      clip-path: inset(50%); white-space: nowrap;";
+        line.set_attribute("style", hidden).ok()?;
+        document.body()?.append_child(&line).ok()?;
+        Some(line)
+    });
+    if let Some(line) = line {
+        line.set_text_content(Some(text));
+    }
+}
+
+/// Sets the page's title (the browser's tab) to `title`.
+pub fn set_title(title: &str) {
+    if let Some(document) = window().and_then(|w| w.document()) {
+        document.set_title(title);
+    }
+}
+
 /// Names the canvas for screen readers with what the diagram says (`summary`), as the desktop
 /// window names its canvas: a page's canvas is a picture to the browser.
 pub fn describe(canvas: &web_sys::HtmlCanvasElement, summary: &str) {
