@@ -220,6 +220,9 @@ impl AnimationExport {
             ui.add(TextEdit::singleline(&mut self.path).desired_width(170.0))
                 .labelled_by(label.id);
         });
+        if background::ONE_THREAD {
+            ui.label(egui::RichText::new(t!("web-one-thread")).weak());
+        }
         match self.poll() {
             Some(fraction) => {
                 ui.ctx().request_repaint_after(Duration::from_millis(100));
@@ -233,9 +236,6 @@ impl AnimationExport {
                 });
             }
             None => {
-                if background::ONE_THREAD {
-                    ui.label(egui::RichText::new(t!("web-one-thread")).weak());
-                }
                 if ui
                     .button(t!("files-export-animation"))
                     .on_hover_text(t!("files-export-animation-hover"))

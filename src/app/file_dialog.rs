@@ -14,6 +14,7 @@
 //! download (`super::browser::dialog`), and the listing goes unused.
 #![cfg_attr(
     target_arch = "wasm32",
+    // untranslated: a lint expectation's reason, for developers.
     expect(dead_code, reason = "in a browser the picker replaces the listing")
 )]
 

@@ -99,12 +99,17 @@ fn base_of(base: &str) -> Option<&str> {
     Some(base.trim()).filter(|b| !b.is_empty())
 }
 
+/// Why a link has no QR code, in words.
+fn too_long(error: &refraction_diagram::qr::TooLong) -> String {
+    t!("link-qr-too-long", bytes = error.0.to_string())
+}
+
 /// Writes the QR code of `url` as a picture of `format` under the next free
 /// `refraction-qr-NNN` name; what happened, in words.
 fn save_qr(url: &str, format: ImageFormat) -> Result<String, String> {
     let extension = format.extension();
     let path = file_dialog::numbered(Path::new(""), "refraction-qr", extension);
-    let code = Code::new(url).map_err(|e| e.to_string())?;
+    let code = Code::new(url).map_err(|e| too_long(&e))?;
     let side = QR_PICTURE_SIDE;
     let bytes = refraction_render::still(format, (side, side), &path, |size, _| {
         code.primitives(glam::Vec2::ZERO, size.x)
@@ -125,7 +130,7 @@ impl Explorer {
                 || self.view == View::Scenes && step.view == refraction_deck::StepView::Scenes
         });
         step.and_then(|(index, _)| handout::step_link(self.lesson.deck.as_ref()?, index))
-            .unwrap_or_else(|| Link::State(self.state.clone()))
+            .unwrap_or_else(|| Link::State(Box::new(self.state.clone())))
     }
 
     /// The link of what the class sees at the web build's address, if one is set.
@@ -155,7 +160,7 @@ impl Explorer {
         match link::parse(fragment).map_err(|e| e.message())? {
             None => {}
             Some(Link::State(state)) => {
-                self.state = state;
+                self.state = *state;
                 self.view = View::Interface;
             }
             Some(Link::Lesson { name, step }) => {
@@ -235,7 +240,7 @@ impl Explorer {
                     );
                 }
                 Err(e) => {
-                    ui.label(e.to_string());
+                    ui.label(too_long(&e));
                 }
             }
             ui.add(egui::Label::new(RichText::new(&url).monospace()).selectable(true));

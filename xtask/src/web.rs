@@ -159,10 +159,10 @@ fn base64(bytes: &[u8]) -> String {
         let word = chunk
             .iter()
             .enumerate()
-            .fold(0u32, |w, (i, &b)| w | u32::from(b) << (16 - 8 * i));
+            .fold(0u32, |w, (i, &b)| w | (u32::from(b) << (16 - 8 * i)));
         for i in 0..4 {
             if i <= chunk.len() {
-                out.push(char::from(DIGITS[(word >> (18 - 6 * i) & 63) as usize]));
+                out.push(char::from(DIGITS[((word >> (18 - 6 * i)) & 63) as usize]));
             } else {
                 out.push('=');
             }

@@ -21,6 +21,7 @@ pub const LIGHT: Colour = Colour::hex(0xffffff);
 
 /// Why a text has no QR code.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+// untranslated: for developers; the window says `link-qr-too-long`.
 #[error("the link is too long for a QR code ({0} bytes)")]
 pub struct TooLong(pub usize);
 
@@ -40,7 +41,7 @@ impl Code {
     /// The text is longer than the largest code holds at level M (about 2,300 bytes).
     pub fn new(text: &str) -> Result<Self, TooLong> {
         let code = QrCode::with_error_correction_level(text.as_bytes(), EcLevel::M)
-            .map_err(|_| TooLong(text.len()))?;
+            .map_err(|_data_too_long| TooLong(text.len()))?;
         Ok(Self {
             width: code.width(),
             dark: code

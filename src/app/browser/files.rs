@@ -33,6 +33,7 @@ async fn bytes_of(file: &web_sys::File) -> Result<Vec<u8>, JsValue> {
 fn pick(extensions: &[&str], ctx: &egui::Context) -> Result<(), JsValue> {
     let document = web_sys::window()
         .and_then(|w| w.document())
+        // untranslated: for the browser's console, where a developer reads it.
         .ok_or_else(|| JsValue::from_str("no document"))?;
     let input: web_sys::HtmlInputElement = document.create_element("input")?.dyn_into()?;
     input.set_type("file");
@@ -131,6 +132,7 @@ fn mime_of(path: &Path) -> &'static str {
 fn download(path: &Path, bytes: &[u8]) -> Result<(), JsValue> {
     let document = web_sys::window()
         .and_then(|w| w.document())
+        // untranslated: for the browser's console, where a developer reads it.
         .ok_or_else(|| JsValue::from_str("no document"))?;
     let parts = Array::of1(&Uint8Array::from(bytes));
     let options = web_sys::BlobPropertyBag::new();

@@ -157,6 +157,7 @@ pub fn announce(text: &str) {
         line.set_id(STATUS_ID);
         line.set_attribute("role", "status").ok()?;
         line.set_attribute("aria-live", "polite").ok()?;
+        // untranslated: CSS that hides the line from sight, not from screen readers.
         let hidden = "position: absolute; width: 1px; height: 1px; overflow: hidden; \
                       clip-path: inset(50%); white-space: nowrap;";
         line.set_attribute("style", hidden).ok()?;

@@ -59,7 +59,7 @@ pub fn step_link(deck: &Deck, index: usize) -> Option<Link> {
         });
     }
     let step = deck.steps.get(index)?;
-    (step.view == StepView::One).then(|| Link::State(step.state.clone()))
+    (step.view == StepView::One).then(|| Link::State(Box::new(step.state.clone())))
 }
 
 /// The handout's page for step `index` of `deck`, with the step's link at `web_base` if given.
@@ -141,7 +141,7 @@ mod tests {
         assert_eq!(builtin_name(&own), None);
         assert_eq!(
             step_link(&own, 0),
-            Some(Link::State(own.steps[0].state.clone()))
+            Some(Link::State(Box::new(own.steps[0].state.clone())))
         );
     }
 }

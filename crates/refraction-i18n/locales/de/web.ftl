@@ -16,6 +16,8 @@ link-no-web-base = Keine Webadresse gesetzt: die Adresse eingeben, unter der die
 link-file-address = Diese Seite wurde aus einer Datei geöffnet: Ein Handy kann diesen Link nicht öffnen. Den Ordner auf einen Server legen und seine Adresse eingeben.
 # $format: png oder svg
 link-qr-save = Als { $format } speichern
+# $bytes: die Länge des Links
+link-qr-too-long = Der Link ist zu lang für einen QR-Code ({ $bytes } Bytes): ihn stattdessen kopieren.
 link-qr-close = Q oder Esc schließt
 link-notice-close = Schließen
 

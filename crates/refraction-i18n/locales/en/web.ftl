@@ -16,6 +16,8 @@ link-no-web-base = No web address is set: type the address where the class opens
 link-file-address = This page was opened from a file: a phone cannot open this link. Host the folder and type its address.
 # $format: png or svg
 link-qr-save = Save as { $format }
+# $bytes: the link's length
+link-qr-too-long = The link is too long for a QR code ({ $bytes } bytes): copy it instead.
 link-qr-close = Q or Esc closes
 link-notice-close = Close
 

@@ -16,6 +16,8 @@ link-no-web-base = No hay dirección web: escribe la dirección donde la clase a
 link-file-address = Esta página se abrió desde un archivo: un teléfono no puede abrir este enlace. Publica la carpeta en un servidor y escribe su dirección.
 # $format: png o svg
 link-qr-save = Guardar como { $format }
+# $bytes: la longitud del enlace
+link-qr-too-long = El enlace es demasiado largo para un código QR ({ $bytes } bytes): cópialo en su lugar.
 link-qr-close = Q o Esc cierra
 link-notice-close = Cerrar
 

@@ -16,6 +16,8 @@ link-no-web-base = Aucune adresse web : saisis l’adresse où la classe ouvre 
 link-file-address = Cette page a été ouverte depuis un fichier : un téléphone ne peut pas ouvrir ce lien. Publie le dossier sur un serveur et saisis son adresse.
 # $format : png ou svg
 link-qr-save = Enregistrer en { $format }
+# $bytes : la longueur du lien
+link-qr-too-long = Le lien est trop long pour un code QR ({ $bytes } octets) : copie-le plutôt.
 link-qr-close = Q ou Échap ferme
 link-notice-close = Fermer
 

@@ -16,6 +16,8 @@ link-no-web-base = Nenhum endereço web definido: digite o endereço onde a turm
 link-file-address = Esta página foi aberta de um arquivo: um celular não consegue abrir este link. Publique a pasta num servidor e digite o endereço dela.
 # $format: png ou svg
 link-qr-save = Salvar como { $format }
+# $bytes: o comprimento do link
+link-qr-too-long = O link é longo demais para um código QR ({ $bytes } bytes): copie-o em vez disso.
 link-qr-close = Q ou Esc fecha
 link-notice-close = Fechar
 
