@@ -49,7 +49,7 @@ export async function serve() {
 }
 
 /** Debian's Chromium, headless, with a fresh profile; resolves to a browser context. */
-export async function launch(size = { width: 1280, height: 720 }) {
+export async function launch(size = { width: 1280, height: 720 }, locale = 'en-US') {
   const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'refraction-chromium-'));
   const context = await chromium.launchPersistentContext(profile, {
     executablePath: '/usr/bin/chromium',
@@ -57,6 +57,7 @@ export async function launch(size = { width: 1280, height: 720 }) {
     args: FLAGS,
     viewport: size,
     deviceScaleFactor: 1,
+    locale,
     acceptDownloads: true,
   });
   context.profile = profile;

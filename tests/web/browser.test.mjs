@@ -20,9 +20,12 @@ before(async () => {
 
 after(() => server.close());
 
-/** Runs `check` on a new page of a browser with a fresh profile (nothing kept from another test). */
-async function inBrowser(check) {
-  const context = await launch();
+/**
+ * Runs `check` on a new page of a browser with a fresh profile (nothing kept from another
+ * test), speaking `locale`.
+ */
+async function inBrowser(check, locale = 'en-US') {
+  const context = await launch(undefined, locale);
   try {
     const page = await newPage(context);
     await check(page);
@@ -149,5 +152,27 @@ test('a malformed, cut-short or newer link says why and leaves the default', asy
       const picture = await pixels(page);
       assert.ok(colours(picture) > 40, `${fragment}: a blank page`);
     }
+  });
+});
+
+test('a first visit speaks the browser\'s language', async () => {
+  await inBrowser(async (page) => {
+    await open(page, base);
+    const words = await said(page);
+    assert.match(words, /^Abschnitt 2: W ist die Ausbreitungsrichtung/, words);
+    assert.match(words, /θt = 25,4°/, 'German writes a decimal comma');
+  }, 'de-DE');
+});
+
+test('the last state is kept in the browser\'s storage', async () => {
+  await inBrowser(async (page) => {
+    await open(page, base);
+    await drag(page, await wHandle(page), 90, -40);
+    const dragged = await said(page);
+    // The window writes its storage every 5 s.
+    await page.waitForTimeout(6000);
+    await page.reload();
+    await ready(page);
+    assert.equal(await said(page), dragged);
   });
 });
