@@ -190,7 +190,9 @@ impl Explorer {
     /// The sharing parts of the frame: the link handed to the tool, Q, the QR code over the
     /// diagram and the strip that says why a link was not opened.
     pub(super) fn sharing(&mut self, ui: &mut Ui) {
-        self.tools.files.share.url = self.link_url();
+        // Only the tool shows it (a deck's step is matched against the built-in decks).
+        let shown = self.tools.open == Some(super::tools::Tool::Files);
+        self.tools.files.share.url = shown.then(|| self.link_url()).flatten();
         if core::mem::take(&mut self.tools.files.share.qr_asked) {
             self.sharing.qr_open = true;
         }

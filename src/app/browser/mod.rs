@@ -12,7 +12,8 @@
 //!   on the page are read before the window sees them;
 //! - a copy the browser refuses is said in the window;
 //! - the canvas is named for screen readers with what the diagram says;
-//! - the settings and the last state are kept in the browser's storage (eframe's).
+//! - the settings and the last state are kept in the browser's storage (eframe's);
+//! - each frame's time is a performance entry (`explorer-frame`) for the browser's profiler.
 
 mod files;
 mod page;
@@ -137,7 +138,10 @@ impl eframe::App for Page {
         files::take_dropped(ctx, raw_input);
     }
 
-    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        if let Some(seconds) = frame.info().cpu_usage {
+            page::report_frame(seconds);
+        }
         self.follow_address();
         self.explorer.show(ui);
         self.follow_presentation(ui.ctx());

@@ -176,6 +176,34 @@ pub fn set_title(title: &str) {
     }
 }
 
+/// The name of the browser's performance entries that give the window's frame time.
+const FRAME_MEASURE: &str = "explorer-frame";
+
+/// Records the last frame's time (`seconds`, eframe's own measure: the UI pass, its
+/// tessellation and the WebGL calls that paint it) as a performance entry that ends now, for
+/// the browser's profiler and `tests/web/measure.mjs` (a `PerformanceObserver` sees it);
+/// the page keeps none of them.
+pub fn report_frame(seconds: f32) {
+    let Some(performance) = window().and_then(|w| w.performance()) else {
+        return;
+    };
+    let duration = f64::from(seconds) * 1000.0;
+    let options = js_sys::Object::new();
+    let set = |key: &str, value: f64| {
+        Reflect::set(&options, &JsValue::from_str(key), &JsValue::from_f64(value)).ok();
+    };
+    set("start", performance.now() - duration);
+    set("duration", duration);
+    let measure = Reflect::get(&performance, &JsValue::from_str("measure"))
+        .and_then(|m| m.dyn_into::<Function>().map_err(JsValue::from));
+    if let Ok(measure) = measure {
+        measure
+            .call2(&performance, &JsValue::from_str(FRAME_MEASURE), &options)
+            .ok();
+        performance.clear_measures_with_measure_name(FRAME_MEASURE);
+    }
+}
+
 /// Names the canvas for screen readers with what the diagram says (`summary`), as the desktop
 /// window names its canvas: a page's canvas is a picture to the browser.
 pub fn describe(canvas: &web_sys::HtmlCanvasElement, summary: &str) {
