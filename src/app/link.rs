@@ -6,7 +6,7 @@
 //!
 //! A link names the deck's step while the step is shown as the deck has it, and the state
 //! otherwise (see [`refraction_tools::link`]); a link that cannot be opened is said in a strip
-//! above the window ([`Explorer::sharing`]) and changes nothing.
+//! above the window and changes nothing.
 
 use std::path::Path;
 

@@ -12,7 +12,7 @@
 //! ```
 //!
 //! In a browser (`wasm32`) there is no file system: the same functions read the files the
-//! user gave the page and keep what is written for the page to download ([`browser`]).
+//! user gave the page and keep what is written for the page to download (`browser`).
 
 #[cfg(not(target_arch = "wasm32"))]
 mod atomic;

@@ -59,7 +59,7 @@ pub struct Page {
     /// The diagram, drawn for [`CANVAS`].
     pub diagram: Vec<Primitive>,
     /// The link that opens this step in the web build, if the page should carry it: printed
-    /// with its QR code under the diagram ([`link_block`]).
+    /// with its QR code under the diagram.
     pub link: Option<String>,
 }
 
