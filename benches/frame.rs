@@ -97,11 +97,11 @@ fn w_handle(ctx: &Context, explorer: &mut Explorer) -> Option<Pos2> {
     let (_, node) = update
         .nodes
         .iter()
-        .find(|(_, node)| node.label().as_deref() == Some("W handle"))?;
+        .find(|(_, node)| node.label() == Some("W handle"))?;
     let bounds = node.bounds()?;
     Some(Pos2::new(
-        ((bounds.x0 + bounds.x1) / 2.0) as f32,
-        ((bounds.y0 + bounds.y1) / 2.0) as f32,
+        f64::midpoint(bounds.x0, bounds.x1) as f32,
+        f64::midpoint(bounds.y0, bounds.y1) as f32,
     ))
 }
 
