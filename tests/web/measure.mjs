@@ -3,8 +3,9 @@
 // - the module's size, raw and gzipped (level 9), and the single file's size;
 // - the time from the page's load (navigation start) to its first drawn frame in headless
 //   Chromium, over the folder's page served on 127.0.0.1 and the single file from file://;
-// - the CPU time per frame while W is dragged: in the explorer's own code (Chromium's
-//   profiler), and all of the page's main thread (TaskDuration), software WebGL included.
+// - the CPU time of a frame while W is dragged, as the window measures it (eframe's frame
+//   time, read from the browser's performance entries), and all of the page's main thread per
+//   pointer move (TaskDuration), software WebGL included.
 
 import fs from 'node:fs';
 import path from 'node:path';
@@ -13,7 +14,7 @@ import { pathToFileURL } from 'node:url';
 
 import { WEB, close, frames, launch, newPage, serve, wHandle } from './browser.mjs';
 
-const RUNS = 3;
+const RUNS = 5;
 const DRAG_FRAMES = 60;
 
 /** The median of `values`. */
@@ -51,10 +52,9 @@ async function firstFrame(context, url) {
 /**
  * What a frame costs while W is dragged across the diagram, in ms: `frame`, the median of the
  * window's own measure of its frames (eframe's: the UI pass, tessellation and the WebGL calls
- * that paint it), `frames` how many it drew; `explorer`, the time the page's main thread
- * spends in the explorer's code and the WebGL calls (sampled by Chromium's profiler every
- * 0.1 ms, which slows it); `page`, all the main thread's busy time (Chromium's TaskDuration),
- * which here includes drawing WebGL in software (SwiftShader: the machine has no GPU).
+ * that paint it), `frames` how many it drew; `page`, all the main thread's busy time per
+ * pointer move (Chromium's TaskDuration), which here includes drawing WebGL in software
+ * (SwiftShader: the machine has no GPU).
  */
 async function dragFrame(context, url) {
   const page = await newPage(context);
@@ -64,8 +64,6 @@ async function dragFrame(context, url) {
   const handle = await wHandle(page);
   const cdp = await context.newCDPSession(page);
   await cdp.send('Performance.enable');
-  await cdp.send('Profiler.enable');
-  await cdp.send('Profiler.setSamplingInterval', { interval: 100 });
   const busy = async () => {
     const { metrics } = await cdp.send('Performance.getMetrics');
     return metrics.find((m) => m.name === 'TaskDuration').value * 1000;
@@ -83,31 +81,16 @@ async function dragFrame(context, url) {
     }).observe({ type: 'measure' });
   });
   const start = await busy();
-  await cdp.send('Profiler.start');
   for (let i = 1; i <= DRAG_FRAMES; i++) {
     const angle = (i / DRAG_FRAMES) * Math.PI;
     await page.mouse.move(handle.x + 60 * Math.sin(angle), handle.y - 30 * Math.sin(angle / 2));
     await frames(page, 1);
   }
-  const { profile } = await cdp.send('Profiler.stop');
   const spent = (await busy()) - start;
   const measured = await page.evaluate(() => window.frameTimes);
   await page.mouse.up();
   await page.close();
-  // Samples in the explorer's code: every node but the browser's own (program), idle time
-  // and garbage collection; each sample stands for the time to the next.
-  const outside = new Set(['(program)', '(idle)', '(garbage collector)', '(root)']);
-  const names = new Map(profile.nodes.map((n) => [n.id, n.callFrame.functionName]));
-  let ours = 0;
-  profile.samples.forEach((id, i) => {
-    if (!outside.has(names.get(id)) && i + 1 < profile.timeDeltas.length) ours += profile.timeDeltas[i + 1];
-  });
-  return {
-    frame: median(measured),
-    frames: measured.length,
-    explorer: ours / 1000 / DRAG_FRAMES,
-    page: spent / DRAG_FRAMES,
-  };
+  return { frame: median(measured), frames: measured.length, page: spent / DRAG_FRAMES };
 }
 
 const wasm = fs.readFileSync(path.join(WEB, 'refraction_web_bg.wasm'));
@@ -134,11 +117,8 @@ console.log(JSON.stringify({
   first_frame_ms: { served_median: round(median(served)), file_median: round(median(fromFile)), served, file: fromFile },
   drag_frame_cpu_ms: {
     frame_median: round(median(drags.map((d) => d.frame))),
-    profiled_median: round(median(drags.map((d) => d.explorer))),
     page_with_software_webgl_median: round(median(drags.map((d) => d.page))),
-    runs: drags.map((d) => ({
-      frame: round(d.frame), frames: d.frames, profiled: round(d.explorer), page: round(d.page),
-    })),
+    runs: drags.map((d) => ({ frame: round(d.frame), frames: d.frames, page: round(d.page) })),
   },
   runs: RUNS,
 }, null, 2));
