@@ -59,6 +59,31 @@ pub struct Cli {
     /// `solve` and `check` is the same in every language.
     #[arg(long, global = true, value_name = "CODE", value_parser = language)]
     pub lang: Option<Locale>,
+    /// The address where the class opens the web build (`cargo xtask web`'s folder, hosted):
+    /// *Copy link* and the QR code give links there (default: the one set in the explorer
+    /// last time).
+    #[arg(long, value_name = "URL", value_parser = web_base)]
+    pub web_base: Option<String>,
+}
+
+/// The web build's address that `--web-base` gives: an http, https or file URL, without
+/// spaces; a fragment it ends in is dropped (links put their own).
+///
+/// # Errors
+/// Another scheme, or white space; the message says what is expected.
+pub fn web_base(url: &str) -> Result<String, String> {
+    let url = url.trim();
+    let schemes = ["http://", "https://", "file://"];
+    let known = schemes
+        .iter()
+        .any(|s| url.len() > s.len() && url[..s.len()].eq_ignore_ascii_case(s));
+    if !known || url.contains(char::is_whitespace) {
+        return Err(format!(
+            "`{url}` is not the address of a web page: give the address where the web build's \
+             folder is hosted, such as https://school.example/explorer/"
+        ));
+    }
+    Ok(url.split('#').next().unwrap_or(url).to_owned())
 }
 
 /// The language `--lang` names.
@@ -259,6 +284,10 @@ pub struct RenderArgs {
     /// same in every viewer.
     #[arg(long)]
     pub svg_text: bool,
+    /// With --lesson and a .pdf handout: the address where the class opens the web build;
+    /// each page then carries its step's link and QR code.
+    #[arg(long, value_name = "URL", value_parser = web_base, requires = "lesson")]
+    pub web_base: Option<String>,
     /// Width in pixels (64 to 8192).
     #[arg(long, default_value_t = refraction_render::DEFAULT_SIZE.0)]
     pub width: u32,

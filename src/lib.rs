@@ -6,7 +6,11 @@
 //!
 //! - [`app`]: the explorer window (eframe, egui); its plots are the diagram crate's.
 //! - [`cli`]: the command line's definitions (clap), which the binary parses and the `xtask`
-//!   turns into man pages and shell completions.
+//!   turns into man pages and shell completions (not in the web build, which has no command
+//!   line: `crates/refraction-web` starts the window in a browser page).
+//! - [`web_page`]: the HTML page that loads the web build, which `cargo xtask web` writes.
 
 pub mod app;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod cli;
+pub mod web_page;

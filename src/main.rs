@@ -101,6 +101,7 @@ fn main() -> ExitCode {
             view: cli.view.map(View::from),
             theme: cli.theme.map(Theme::from),
             language: cli.lang,
+            web_base: cli.web_base,
         }),
     }
 }

@@ -41,7 +41,7 @@ impl AccuracyView {
             Config::FULL
         };
         let (shared, ctx) = (Arc::clone(&progress), ctx.clone());
-        std::thread::spawn(move || {
+        super::background::spawn(move || {
             let report = refraction_bench::run(&config, &mut |fraction| {
                 shared
                     .lock()
@@ -84,6 +84,9 @@ impl AccuracyView {
                 self.start(ui.ctx());
             }
         });
+        if super::background::ONE_THREAD {
+            ui.label(RichText::new(t!("web-one-thread")).weak());
+        }
         if let Some(fraction) = fraction {
             ui.add(ProgressBar::new(fraction as f32).show_percentage().text(t!(
                 "accuracy-measuring",

@@ -7,10 +7,10 @@ use core::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use core::time::Duration;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
-use std::thread::JoinHandle;
 
 use egui::{ComboBox, DragValue, ProgressBar, TextEdit, Ui};
 
+use super::background::{self, Job as Background};
 use super::file_dialog::{self, Kind, Target};
 use super::typed::status;
 use refraction_diagram::Overlay;
@@ -41,7 +41,7 @@ struct Job {
     /// The file being written.
     path: PathBuf,
     /// How the export ended, put in words on the window's thread (whose language it is).
-    handle: JoinHandle<Result<(), RenderError>>,
+    handle: Background<Result<(), RenderError>>,
 }
 
 /// The *Export animation* controls, the export running and what the last one said.
@@ -152,7 +152,7 @@ impl AnimationExport {
         let target = path.clone();
         // The frames' labels are in the window's language: the thread takes it along.
         let language = refraction_i18n::locale();
-        let handle = std::thread::spawn(move || {
+        let handle = background::spawn(move || {
             refraction_i18n::set_locale(language);
             let result = export_gif(&state, &overlay, &spec, &target, |frames, _| {
                 counter.store(frames, Ordering::Relaxed);
@@ -220,6 +220,9 @@ impl AnimationExport {
             ui.add(TextEdit::singleline(&mut self.path).desired_width(170.0))
                 .labelled_by(label.id);
         });
+        if background::ONE_THREAD {
+            ui.label(egui::RichText::new(t!("web-one-thread")).weak());
+        }
         match self.poll() {
             Some(fraction) => {
                 ui.ctx().request_repaint_after(Duration::from_millis(100));

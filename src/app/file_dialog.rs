@@ -9,6 +9,14 @@
 //! native dialogs need a desktop portal that a projector's kiosk session, Xvfb and the headless
 //! `egui_kittest` tests do not have. Widgets work in all three, and the tests drive this dialog
 //! like any other part of the window.
+//!
+//! In a browser there is no file system to list: the dialog is the browser's file picker and a
+//! download (`super::browser::dialog`), and the listing goes unused.
+#![cfg_attr(
+    target_arch = "wasm32",
+    // untranslated: a lint expectation's reason, for developers.
+    expect(dead_code, reason = "in a browser the picker replaces the listing")
+)]
 
 use std::path::{Path, PathBuf};
 
@@ -412,8 +420,23 @@ impl FileDialog {
         chosen
     }
 
-    /// Shows the dialog over the window.
+    /// Shows the dialog over the window: the folder's listing, or in a browser the browser's
+    /// file picker (open) or a download (save).
     pub fn show(&mut self, ui: &Ui) -> Choice {
+        #[cfg(target_arch = "wasm32")]
+        return super::browser::dialog(
+            self.purpose,
+            self.extensions,
+            &mut self.name,
+            self.problem.as_ref(),
+            ui,
+        );
+        #[cfg(not(target_arch = "wasm32"))]
+        return self.show_listing(ui);
+    }
+
+    /// The dialog over the window, listing the folder.
+    fn show_listing(&mut self, ui: &Ui) -> Choice {
         self.list();
         let title = match self.purpose {
             Purpose::Open => t!("files-dialog-open-title"),

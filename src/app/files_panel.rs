@@ -10,6 +10,7 @@ use refraction_i18n::t;
 use super::file_dialog::{FileDialog, Kind, Purpose, Target, answer_replace, settle, target};
 use super::typed::status;
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
+use crate::app::link::LinkRow;
 use crate::app::snippets;
 use refraction_model::ExplorerState;
 use refraction_tools::state_file::{self, LoadError};
@@ -65,6 +66,8 @@ pub struct FilesPanel {
     /// A scene or a lesson deck opened here by mistake for a state: the window opens it as
     /// what it is.
     opened: Option<Opened>,
+    /// The web build's address, *Copy link* and *QR code*.
+    pub share: LinkRow,
 }
 
 /// A file of another kind than a state, opened from the state's field.
@@ -86,6 +89,7 @@ impl Default for FilesPanel {
             dialog: None,
             replace: None,
             opened: None,
+            share: LinkRow::default(),
         }
     }
 }
@@ -262,6 +266,8 @@ impl FilesPanel {
         if let Some(text) = &self.copied {
             ui.label(RichText::new(text).monospace().small());
         }
+        ui.separator();
+        self.share.ui(ui);
     }
 }
 

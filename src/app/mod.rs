@@ -7,6 +7,9 @@
 //! and under the diagram (`tools`) check my T, the walk-through and save/open/share.
 
 mod accuracy;
+mod background;
+#[cfg(target_arch = "wasm32")]
+pub mod browser;
 mod canvas;
 mod check_panel;
 mod controls;
@@ -17,6 +20,7 @@ mod files_panel;
 mod fonts;
 mod fresnel_panel;
 pub mod history;
+pub mod link;
 mod paint;
 pub mod panels;
 pub mod physics;
@@ -130,6 +134,8 @@ pub struct Launch {
     /// (read in the window's language) or a deck file's path, checked by the command line
     /// before the window opens.
     pub lesson: Option<String>,
+    /// The web build's address for links (`--web-base`), over the one set last time.
+    pub web_base: Option<String>,
 }
 
 /// The whole explorer: the state being explored, the view shown, each view's own memory,
@@ -155,6 +161,8 @@ pub struct Explorer {
     command_line_language: Option<Locale>,
     /// The system's language, spoken unless one is chosen.
     system_language: Option<Locale>,
+    /// The QR code shown, and what a link that could not be opened said.
+    sharing: link::Sharing,
 }
 
 impl Explorer {
@@ -179,6 +187,7 @@ impl Explorer {
             travelled: None,
             command_line_language: None,
             system_language: Some(refraction_i18n::locale()),
+            sharing: link::Sharing::default(),
         }
     }
 
@@ -197,6 +206,9 @@ impl Explorer {
         }
         if let Some(view) = saved(VIEW_KEY) {
             explorer.restore_view(&view);
+        }
+        if let Some(base) = launch.web_base.or_else(|| saved(link::WEB_BASE_KEY)) {
+            explorer.set_web_base(&base);
         }
         if from_state_file {
             explorer.view = View::Interface;
@@ -347,6 +359,7 @@ impl Explorer {
             self.tools.take_dropped(ui.ctx());
             self.view = View::Interface;
         }
+        self.sharing(ui);
         Panel::top("views").show(ui, |ui| self.bar(ui));
         if !self.diagram_only() {
             self.deck_frame(ui);
@@ -526,6 +539,7 @@ impl eframe::App for Explorer {
         storage.set_string(STORAGE_KEY, state_file::to_json(&self.state));
         storage.set_string(LOOK_KEY, self.presentation.look());
         storage.set_string(VIEW_KEY, self.saved_view());
+        storage.set_string(link::WEB_BASE_KEY, self.web_base().to_owned());
     }
 }
 
@@ -534,6 +548,7 @@ impl eframe::App for Explorer {
 ///
 /// # Errors
 /// The window could not be created (no display, no OpenGL).
+#[cfg(not(target_arch = "wasm32"))]
 pub fn run(launch: Launch) -> Result<(), eframe::Error> {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()

@@ -68,7 +68,7 @@ impl Retracer {
         let progress = Arc::new(Progress::default());
         let (send, done) = mpsc::channel();
         let (scene, shared) = (scene.clone(), Arc::clone(&progress));
-        std::thread::spawn(move || {
+        super::background::spawn(move || {
             scene.retrace_within(&mut next, VIEW_BUDGET, &shared);
             // The view may have moved on (a newer trace replaced this one): then nobody
             // listens, and the trace is simply dropped.

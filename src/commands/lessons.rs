@@ -6,13 +6,10 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use glam::Vec2;
-use refraction_deck::{Deck, Step, StepView, builtin};
-use refraction_diagram::Overlay;
-use refraction_diagram::{Diagram, Primitive, SceneLayout, ScenePicture};
-use refraction_explorer::app::deck::overlay_of;
-use refraction_i18n::t;
+use refraction_deck::{Deck, builtin};
+use refraction_explorer::app::deck::handout::{pdf, picture};
 use refraction_render::format::ImageFormat;
-use refraction_render::handout::{self, Page, Sheet};
+use refraction_render::handout::Sheet;
 use refraction_render::{check_size, svg};
 
 use super::output::printable;
@@ -34,41 +31,6 @@ pub fn list() -> ExitCode {
         })
         .and_then(|()| out.flush())
         .map_or_else(|e| output_error("lessons", &e), |()| ExitCode::SUCCESS)
-}
-
-/// The picture of `step` of `deck` on a canvas of `size` pixels, its answer shown unless
-/// `hidden` (and the step asks a question): the one interface with the step's effects, or its
-/// scene traced (up to the first surface while the answer is hidden).
-///
-/// # Errors
-/// The step's scene cannot be opened.
-pub fn picture(
-    deck: &Deck,
-    step: &Step,
-    size: Vec2,
-    hidden: bool,
-) -> Result<Vec<Primitive>, String> {
-    let hidden = hidden && step.hides_answer();
-    match step.view {
-        StepView::One => {
-            let overlay = Overlay {
-                hide_answer: hidden,
-                ..overlay_of(step)
-            };
-            Ok(Diagram::with_overlay(&step.state, size, &overlay).primitives())
-        }
-        StepView::Scenes => {
-            let scene = deck.scene(step).map_err(|e| e.to_string())?;
-            let trace = scene.trace();
-            let layout = SceneLayout::new(trace.bounds, size);
-            let shown = if hidden {
-                refraction_deck::answer::up_to_first_surface(&trace)
-            } else {
-                trace
-            };
-            Ok(ScenePicture::new(&scene, &shown, &layout).primitives)
-        }
-    }
 }
 
 /// Where `render --lesson` writes: a handout, or a folder of pictures.
@@ -97,49 +59,6 @@ fn out_of(out: &Path) -> Result<Out, String> {
         "--out {text}: with --lesson, give a handout's name ending in .pdf, or a folder ending \
          in / for one SVG per step (step-01.svg, step-02.svg, …)"
     ))
-}
-
-/// The handout's page for step `index` of `deck`, on the teacher's handout or the student
-/// sheet. The step's scene is opened first, so that a page that cannot be drawn is an error.
-fn page(deck: &Deck, index: usize, sheet: Sheet) -> Result<Page<'_>, String> {
-    let step = &deck.steps[index];
-    if step.view == StepView::Scenes {
-        deck.scene(step).map_err(|e| e.to_string())?;
-    }
-    let number = t!(
-        "deck-step-number",
-        number = (index + 1).to_string(),
-        count = deck.steps.len().to_string()
-    );
-    let heading = if deck.title.is_empty() {
-        number
-    } else {
-        format!("{} · {number}", deck.title)
-    };
-    let students = sheet == Sheet::Students;
-    Ok(Page {
-        heading,
-        title: step.title.clone(),
-        question: step
-            .question
-            .clone()
-            .map(|q| (t!("deck-handout-question"), q)),
-        notes: (!students).then(|| (t!("deck-handout-notes"), step.notes.clone())),
-        writing_lines: students && step.question.is_some(),
-        // The scene opened above: drawing it again cannot fail.
-        diagram: Box::new(move |size| picture(deck, step, size, students).unwrap_or_default()),
-    })
-}
-
-/// The handout of `deck` as PDF bytes, one page per step: the teacher's, or the student sheet.
-///
-/// # Errors
-/// A step's scene cannot be opened, or a page cannot be converted.
-pub fn handout(deck: &Deck, sheet: Sheet) -> Result<Vec<u8>, String> {
-    let pages = (0..deck.steps.len())
-        .map(|i| page(deck, i, sheet))
-        .collect::<Result<Vec<_>, _>>()?;
-    handout::pdf(&deck.title, &pages).map_err(|e| e.to_string())
 }
 
 /// The name of step `number`'s picture (`step-01.svg`).
@@ -194,14 +113,20 @@ fn remove_stale_steps(folder: &Path, count: usize) {
 
 /// Runs `render --lesson NAME|FILE --out OUT`: the deck's handout (`OUT` ending in `.pdf`) or
 /// its steps as SVG pictures of `size` (`OUT` a folder). The output is checked before the deck
-/// is drawn.
-pub fn render(lesson: &str, out: &Path, size: (u32, u32), sheet: Sheet) -> ExitCode {
+/// is drawn: the teacher's handout or the class's sheet (`sheet`); with `web_base`, each page
+/// of a handout carries its step's link and QR code.
+pub fn render(
+    lesson: &str,
+    out: &Path,
+    size: (u32, u32),
+    (sheet, web_base): (Sheet, Option<&str>),
+) -> ExitCode {
     let checked = check_size(size.0, size.1).map_err(|e| e.to_string());
     let drawn = checked.and_then(|()| out_of(out)).and_then(|to| {
         let deck = Deck::load(lesson).map_err(|e| e.to_string())?;
         match to {
             Out::Handout(path) => {
-                let bytes = handout(&deck, sheet)?;
+                let bytes = pdf(&deck, sheet, web_base)?;
                 refraction_files::write_atomically(&path, &bytes).map_err(|e| e.to_string())
             }
             Out::Folder(folder) => pictures(&deck, &folder, size),

@@ -228,7 +228,9 @@ pub fn run(args: &RenderArgs) -> ExitCode {
         } else {
             Sheet::Teacher
         };
-        return super::lessons::render(lesson, &args.out, (args.width, args.height), sheet);
+        let size = (args.width, args.height);
+        let out = (sheet, args.web_base.as_deref());
+        return super::lessons::render(lesson, &args.out, size, out);
     }
     let formats: &[ImageFormat] = match args.animate {
         Some(_) => &[ImageFormat::Gif],
@@ -261,6 +263,8 @@ pub struct Window {
     pub theme: Option<Theme>,
     /// The language (`--lang`).
     pub language: Option<Locale>,
+    /// The web build's address for links (`--web-base`).
+    pub web_base: Option<String>,
 }
 
 /// Opens the explorer window as `window` asks; a state file or a lesson deck that cannot be
@@ -282,6 +286,7 @@ pub fn explorer(window: &Window) -> ExitCode {
             theme: window.theme,
             language: window.language,
             system_language: sys_locale::get_locale().and_then(|tag| Locale::from_tag(&tag)),
+            web_base: window.web_base.clone(),
         });
     match launch.and_then(|launch| app::run(launch).map_err(|e| e.to_string())) {
         Ok(()) => ExitCode::SUCCESS,

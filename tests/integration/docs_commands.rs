@@ -238,6 +238,11 @@ fn the_install_guides_commands_run_as_written() {
 }
 
 #[test]
+fn the_web_guides_commands_run_as_written() {
+    run_page("docs/web.md");
+}
+
+#[test]
 fn every_page_of_the_guide_is_run() {
     let mut pages: Vec<String> = std::fs::read_dir(root().join("docs"))
         .unwrap()
@@ -260,7 +265,8 @@ fn every_page_of_the_guide_is_run() {
             "decks.md",
             "install.md",
             "scenes.md",
-            "solve.md"
+            "solve.md",
+            "web.md"
         ],
         "a page with commands needs its test above"
     );

@@ -29,6 +29,7 @@ mod languages_cli;
 mod layout_audit;
 mod lesson_deck;
 mod lessons_cli;
+mod links;
 mod parsers_fuzz;
 mod render_cli;
 mod renderers;

@@ -7,6 +7,11 @@
 //!   says, and the icon's PNG sizes, rendered from `packaging/refraction-explorer.svg`.
 //!   `OUT_DIR` defaults to `target/dist-assets` in the repository, where the Debian package's
 //!   manifest (`[package.metadata.deb]` in the root `Cargo.toml`) takes them from.
+//! - `cargo xtask web [OUT_DIR]`: the explorer for a browser ([`web`]): `OUT_DIR` (default
+//!   `target/web`) gets `index.html` and the files it loads, and `refraction-explorer.html`,
+//!   one file that opens from `file://`.
+
+mod web;
 
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -15,11 +20,16 @@ use std::process::ExitCode;
 use clap_complete::Shell;
 
 /// What `cargo xtask` without a known task prints.
-const USAGE: &str = "usage: cargo xtask dist-assets [OUT_DIR]\n\n\
+const USAGE: &str = "usage: cargo xtask dist-assets [OUT_DIR]\n       cargo xtask web [OUT_DIR]\n\n\
     dist-assets  write the man pages (OUT_DIR/man/*.1) and the bash, zsh and fish completions\n\
     \x20            (OUT_DIR/completions/) generated from the command line's definitions, and\n\
     \x20            the icon's PNG sizes (OUT_DIR/icons/); OUT_DIR defaults to\n\
-    \x20            target/dist-assets in the repository";
+    \x20            target/dist-assets in the repository\n\
+    web          build the explorer for a browser (Debian's rustc-web, cargo-web, rust-web-src\n\
+    \x20            and lld-22, and the wasm-bindgen CLI of Cargo.lock's version) and write\n\
+    \x20            OUT_DIR/index.html with the files it loads, and\n\
+    \x20            OUT_DIR/refraction-explorer.html, one file that opens from file://;\n\
+    \x20            OUT_DIR defaults to target/web in the repository";
 
 /// The icon's sizes in pixels, as the freedesktop.org hicolor theme names its folders.
 const ICON_SIZES: [u32; 7] = [16, 24, 32, 48, 64, 128, 256];
@@ -37,6 +47,8 @@ fn main() -> ExitCode {
     let outcome = match args.as_slice() {
         ["dist-assets"] => dist_assets(&default_out_dir()),
         ["dist-assets", out] => dist_assets(Path::new(out)),
+        ["web"] => return web_task(&repository().join("target").join("web")),
+        ["web", out] => return web_task(Path::new(out)),
         ["help" | "--help" | "-h"] => return say(USAGE, ExitCode::SUCCESS),
         _ => return say(USAGE, ExitCode::from(2)),
     };
@@ -45,6 +57,23 @@ fn main() -> ExitCode {
             &format!("xtask: wrote {written} files under {}", shown(&args)),
             ExitCode::SUCCESS,
         ),
+        Err(e) => say(&format!("xtask: {e}"), ExitCode::FAILURE),
+    }
+}
+
+/// Runs `cargo xtask web` into `out` and says what it wrote (or what is missing).
+fn web_task(out: &Path) -> ExitCode {
+    match web::web(repository(), out) {
+        Ok(written) => {
+            let lines: Vec<String> = written
+                .iter()
+                .map(|(path, size)| format!("  {} ({size} bytes)", path.display()))
+                .collect();
+            say(
+                &format!("xtask: wrote\n{}", lines.join("\n")),
+                ExitCode::SUCCESS,
+            )
+        }
         Err(e) => say(&format!("xtask: {e}"), ExitCode::FAILURE),
     }
 }

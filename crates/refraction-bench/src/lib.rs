@@ -4,18 +4,21 @@
 
 pub mod accuracy;
 pub mod oracle;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod peer;
 pub mod sets;
 pub mod timing;
 
 use accuracy::{Prepared, errors_of, prepare};
-use refraction_kernel::batch::{Build, RayBatch, Transmissions};
+#[cfg(target_arch = "x86_64")]
+use refraction_kernel::batch::Build;
+use refraction_kernel::batch::{RayBatch, Transmissions};
 use refraction_kernel::{Real, Variant};
 use refraction_model::report::{Report, Row};
 use timing::{Pass, medians_ns_per_ray, streaming, variant_pass};
 
 /// What a row of the report measures: a kernel [`Variant`], or a peer library
-/// ([`peer::Ultraviolet`]) run on the same rays.
+/// (`peer::Ultraviolet`, on a desktop) run on the same rays.
 pub trait Subject<S: Real> {
     /// The name in reports and JSON.
     fn name(&self) -> &'static str;
@@ -91,17 +94,18 @@ pub fn cpu_description() -> String {
         })
         .unwrap_or_else(|| std::env::consts::ARCH.to_owned());
     let threads = std::thread::available_parallelism().map_or(1, core::num::NonZero::get);
-    let mut features = Vec::new();
     #[cfg(target_arch = "x86_64")]
-    for (name, present) in [
+    let features: Vec<&str> = [
         ("avx2", std::arch::is_x86_feature_detected!("avx2")),
         ("fma", std::arch::is_x86_feature_detected!("fma")),
         ("avx512", Build::Avx512.is_available()),
-    ] {
-        if present {
-            features.push(name);
-        }
-    }
+    ]
+    .into_iter()
+    .filter_map(|(name, present)| present.then_some(name))
+    .collect();
+    // Elsewhere (a browser's WebAssembly) no extension is looked for.
+    #[cfg(not(target_arch = "x86_64"))]
+    let features: Vec<&str> = Vec::new();
     format!("{model}, {threads} threads, {}", features.join("+"))
 }
 
@@ -145,6 +149,14 @@ fn rows_at<S: Real>(
         .collect()
 }
 
+/// The peer libraries measured beside the variants (f32 only).
+#[cfg(not(target_arch = "wasm32"))]
+const PEERS: [&dyn Subject<f32>; 1] = [&peer::Ultraviolet];
+
+/// No peer in a browser: its SIMD library stays on the desktop side.
+#[cfg(target_arch = "wasm32")]
+const PEERS: [&dyn Subject<f32>; 0] = [];
+
 /// Seeds of the problem sets, fixed so that every run measures the same problems.
 const RANDOM_SEED: u64 = 0x5eed_0001;
 const HARD_SEED: u64 = 0x5eed_0002;
@@ -159,11 +171,11 @@ pub fn run(config: &Config, progress: &mut dyn FnMut(f64)) -> Report {
     let hard32 = prepare::<f32>(&hard_set, &mut |_| {});
     let random64 = prepare::<f64>(&random_set, &mut |f| progress(0.2 + 0.2 * f));
     let hard64 = prepare::<f64>(&hard_set, &mut |_| {});
-    let mut subjects32: Vec<&dyn Subject<f32>> = Variant::ALL
+    let subjects32: Vec<&dyn Subject<f32>> = Variant::ALL
         .iter()
         .map(|v| v as &dyn Subject<f32>)
+        .chain(PEERS.iter().copied())
         .collect();
-    subjects32.push(&peer::Ultraviolet);
     let subjects64: Vec<&dyn Subject<f64>> = Variant::ALL
         .iter()
         .map(|v| v as &dyn Subject<f64>)

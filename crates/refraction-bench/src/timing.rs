@@ -3,7 +3,7 @@
 
 use core::hint::black_box;
 use core::time::Duration;
-use std::time::Instant;
+use web_time::Instant;
 
 use refraction_kernel::batch::{RayBatch, Transmissions};
 use refraction_kernel::{Real, Variant};

@@ -37,6 +37,7 @@ pub mod palette;
 pub mod picture;
 pub mod placer;
 pub mod plot;
+pub mod qr;
 pub mod quadratic;
 pub mod scene_picture;
 pub mod scene_words;

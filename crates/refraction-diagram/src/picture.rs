@@ -92,6 +92,18 @@ fn banner_text(r: &Refraction<f64>) -> String {
     }
 }
 
+/// What the diagram of `state` says in words, as its banner does (the convention and the
+/// angles, or total internal reflection), or that the answer is hidden: its [`Diagram::summary`]
+/// without laying it out.
+#[must_use]
+pub fn summary(state: &ExplorerState, hide_answer: bool) -> String {
+    if hide_answer {
+        t!("deck-answer-hidden")
+    } else {
+        banner_text(state.refraction())
+    }
+}
+
 /// The banner's margins left and right, in label font sizes.
 const BANNER_MARGIN: f32 = 0.6;
 
@@ -863,11 +875,7 @@ impl Diagram {
     pub fn with_overlay(state: &ExplorerState, size: Vec2, overlay: &Overlay) -> Self {
         let r = state.refraction();
         let face = Typeface::egui_default().ok();
-        let summary = if overlay.hide_answer {
-            t!("deck-answer-hidden")
-        } else {
-            banner_text(r)
-        };
+        let summary = summary(state, overlay.hide_answer);
         let (layout, banner) =
             layout_with_banner(size, &summary, face.as_ref(), overlay.index_scale);
         let layout = layout.panned(overlay.pan_zoom);

@@ -59,7 +59,10 @@ fn not_text(bytes: &[u8], valid_up_to: usize, what: &str) -> String {
 /// The file cannot be opened or read, or is longer than `limit` (kind
 /// [`io::ErrorKind::FileTooLarge`], the message giving the limit).
 pub fn read_capped_bytes(path: &Path, limit: u64, what: &str) -> io::Result<Vec<u8>> {
+    #[cfg(not(target_arch = "wasm32"))]
     let file = std::fs::File::open(path)?;
+    #[cfg(target_arch = "wasm32")]
+    let file = io::Cursor::new(crate::browser::read(path)?);
     let mut bytes = Vec::new();
     file.take(limit.saturating_add(1)).read_to_end(&mut bytes)?;
     if bytes.len() as u64 > limit {

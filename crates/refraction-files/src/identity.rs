@@ -3,7 +3,9 @@
 //! starts with, to tell its kind without reading it whole.
 
 use std::fs::File;
-use std::io::{self, Read as _};
+use std::io;
+#[cfg(not(target_arch = "wasm32"))]
+use std::io::Read as _;
 use std::path::Path;
 
 /// Whether `path` names the same file as `open` (the same device and inode, whatever the
@@ -51,6 +53,7 @@ pub fn standard_input() -> Option<File> {
 ///
 /// # Errors
 /// The file is there but cannot be read.
+#[cfg(not(target_arch = "wasm32"))]
 pub fn first_bytes(path: &Path, limit: u64) -> io::Result<Option<Vec<u8>>> {
     match std::fs::metadata(path) {
         Ok(found) if found.is_file() => {}
@@ -60,6 +63,21 @@ pub fn first_bytes(path: &Path, limit: u64) -> io::Result<Option<Vec<u8>>> {
     }
     let mut bytes = Vec::new();
     File::open(path)?.take(limit).read_to_end(&mut bytes)?;
+    Ok(Some(bytes))
+}
+
+/// The first `limit` bytes (or fewer) of the file the page was given as `path` (see
+/// [`crate::browser`]); `Ok(None)` when none was.
+///
+/// # Errors
+/// Never: the signature is the desktop's.
+#[cfg(target_arch = "wasm32")]
+pub fn first_bytes(path: &Path, limit: u64) -> io::Result<Option<Vec<u8>>> {
+    if !crate::browser::exists(path) {
+        return Ok(None);
+    }
+    let mut bytes = crate::browser::read(path)?;
+    bytes.truncate(usize::try_from(limit).unwrap_or(usize::MAX));
     Ok(Some(bytes))
 }
 

@@ -10,11 +10,20 @@
 //! assert_eq!(refraction_files::read_capped(&path, 1 << 20, "a state file")?, "{}");
 //! # Ok::<(), std::io::Error>(())
 //! ```
+//!
+//! In a browser (`wasm32`) there is no file system: the same functions read the files the
+//! user gave the page and keep what is written for the page to download (`browser`).
 
+#[cfg(not(target_arch = "wasm32"))]
 mod atomic;
+#[cfg(any(target_arch = "wasm32", test))]
+pub mod browser;
 mod capped;
 mod identity;
 
+#[cfg(not(target_arch = "wasm32"))]
 pub use atomic::{check_writable, write_all_atomically, write_atomically};
+#[cfg(target_arch = "wasm32")]
+pub use browser::{check_writable, write_all_atomically, write_atomically};
 pub use capped::{read_capped, read_capped_bytes};
 pub use identity::{first_bytes, names_open_file, standard_input};

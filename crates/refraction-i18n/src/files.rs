@@ -7,14 +7,16 @@ use crate::Locale;
 /// scenes and the plots (`diagram`), Check my T and its verdicts (`check`), files, saving and
 /// exporting (`files`), and a whole log judged in the window: opening it, its diagnosis, its
 /// failure map and its failing lines saved as tests (`logs`), and lesson decks: the tool that
-/// builds one, stepping through it, its notes and handout, the built-in decks (`decks`).
-pub const FILES: [&str; 6] = [
+/// builds one, stepping through it, its notes and handout, the built-in decks (`decks`), and the
+/// explorer in a browser: links to it, the QR code, what a page does otherwise (`web`).
+pub const FILES: [&str; 7] = [
     "explorer.ftl",
     "diagram.ftl",
     "check.ftl",
     "files.ftl",
     "logs.ftl",
     "decks.ftl",
+    "web.ftl",
 ];
 
 /// One language's files, in the order of [`FILES`].
@@ -27,19 +29,20 @@ macro_rules! folder {
             include_str!(concat!("../locales/", $code, "/files.ftl")),
             include_str!(concat!("../locales/", $code, "/logs.ftl")),
             include_str!(concat!("../locales/", $code, "/decks.ftl")),
+            include_str!(concat!("../locales/", $code, "/web.ftl")),
         ]
     };
 }
 
-const EN: [&str; 6] = folder!("en");
-const DE: [&str; 6] = folder!("de");
-const ES: [&str; 6] = folder!("es");
-const FR: [&str; 6] = folder!("fr");
-const PT_BR: [&str; 6] = folder!("pt-BR");
-const RU: [&str; 6] = folder!("ru");
+const EN: [&str; 7] = folder!("en");
+const DE: [&str; 7] = folder!("de");
+const ES: [&str; 7] = folder!("es");
+const FR: [&str; 7] = folder!("fr");
+const PT_BR: [&str; 7] = folder!("pt-BR");
+const RU: [&str; 7] = folder!("ru");
 
 /// The text of `locale`'s files, in the order of [`FILES`].
-pub(crate) fn sources(locale: Locale) -> &'static [&'static str; 6] {
+pub(crate) fn sources(locale: Locale) -> &'static [&'static str; 7] {
     match locale {
         Locale::En => &EN,
         Locale::De => &DE,

@@ -120,6 +120,28 @@ fn encoded_frame(
     Ok(gif_frame)
 }
 
+/// `draw` of each index of `batch`, in order: on a thread each when `threads` is more than one,
+/// on this thread otherwise (a browser page has one thread, and spawns none).
+fn frames_of<T: Send>(
+    batch: core::ops::Range<usize>,
+    threads: usize,
+    draw: impl Fn(usize) -> T + Sync,
+) -> Vec<T> {
+    if threads <= 1 {
+        return batch.map(draw).collect();
+    }
+    let draw = &draw;
+    std::thread::scope(|scope| {
+        let workers: Vec<_> = batch
+            .map(|index| scope.spawn(move || draw(index)))
+            .collect();
+        workers
+            .into_iter()
+            .map(|w| w.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+            .collect()
+    })
+}
+
 /// The animation of `spec` from `start`, drawn with `overlay`, as GIF bytes: frames are drawn
 /// and their colours reduced on every core, a batch at a time, and written in order. `progress`
 /// is told (frames done, frames in all) after each frame and stops the work by returning false.
@@ -148,16 +170,8 @@ pub fn gif(
         let mut done = 0;
         while done < spec.frames {
             let batch = done..(done + threads).min(spec.frames);
-            let frames: Vec<Result<Frame<'static>, RenderError>> = std::thread::scope(|scope| {
-                let workers: Vec<_> = batch
-                    .map(|index| {
-                        scope.spawn(move || encoded_frame(start, overlay, spec, index, locale))
-                    })
-                    .collect();
-                workers
-                    .into_iter()
-                    .map(|w| w.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
-                    .collect()
+            let frames = frames_of(batch, threads, |index| {
+                encoded_frame(start, overlay, spec, index, locale)
             });
             for frame in frames {
                 encoder.write_frame(&frame?).map_err(|e| encoding(&e))?;

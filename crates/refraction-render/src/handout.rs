@@ -80,6 +80,51 @@ pub struct Page<'a> {
     pub writing_lines: bool,
     /// The diagram's primitives for a canvas of the size asked, in pixels.
     pub diagram: Box<dyn Fn(Vec2) -> Vec<Primitive> + 'a>,
+    /// The link that opens this step in the web build, if the page should carry it: printed
+    /// with its QR code at the page's foot.
+    pub link: Option<String>,
+}
+
+/// The side of a step's QR code, in points (about 30 mm: a phone reads it from the desk).
+const QR_SIDE: f32 = 84.0;
+
+/// The size of the link's words beside its QR code, in points.
+const LINK_SIZE: f32 = 8.0;
+
+/// The room a page's link and its QR code take at its foot, gap included (none without one).
+fn link_room(page: &Page<'_>) -> f32 {
+    if page.link.is_some() {
+        QR_SIDE + 12.0
+    } else {
+        0.0
+    }
+}
+
+/// The QR code of the page's link at its foot, with the link beside it; nothing without a
+/// link (or for a link too long for a QR code, which then stands alone).
+fn link_block(face: &Typeface, page: &Page<'_>) -> Vec<Primitive> {
+    let Some(link) = &page.link else {
+        return Vec::new();
+    };
+    let top = PAGE.y - MARGIN - QR_SIDE;
+    let mut out = refraction_diagram::qr::Code::new(link)
+        .map(|code| code.primitives(Vec2::new(MARGIN, top), QR_SIDE))
+        .unwrap_or_default();
+    let x = MARGIN + QR_SIDE + 10.0;
+    let width = PAGE.x - MARGIN - x;
+    let text = at_most(
+        face,
+        &wrap(face, link, LINK_SIZE, width),
+        LINK_SIZE,
+        width,
+        6,
+    );
+    out.push(Primitive::Text(words(
+        text,
+        Vec2::new(x, top + 4.0),
+        LINK_SIZE,
+    )));
+    out
 }
 
 /// A label at `at` (its top left corner) in the page's ink.
@@ -149,7 +194,7 @@ impl PageLayout {
                 .map(|(_, body)| line(TEXT_SIZE) * (body.lines().count() as f32 + 2.3))
                 .sum()
         };
-        let bottom = PAGE.y - MARGIN;
+        let bottom = PAGE.y - MARGIN - link_room(page);
         // The student sheet keeps a 4:3 diagram and leaves the rest to write on; the teacher's
         // gives the diagram the height its words leave (from half its width to a bit more than it).
         let height = if page.writing_lines {
@@ -211,7 +256,7 @@ fn page_words(face: &Typeface, page: &Page<'_>, layout: &PageLayout) -> Vec<Prim
     }
     if page.writing_lines {
         let mut line_y = y + WRITING_LINE;
-        while line_y <= PAGE.y - MARGIN {
+        while line_y <= PAGE.y - MARGIN - link_room(page) {
             out.push(Primitive::Polyline {
                 points: vec![
                     Vec2::new(MARGIN, line_y),
@@ -236,7 +281,7 @@ fn page_svg(face: &Typeface, page: &Page<'_>) -> String {
          width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">\n\
          <rect width=\"{w}\" height=\"{h}\" fill=\"#ffffff\"/>\n{words}\
          <svg x=\"{x}\" y=\"{y}\" width=\"{dw}\" height=\"{dh}\" viewBox=\"0 0 {cw} {ch}\">\n\
-         {diagram}</svg>\n</svg>\n",
+         {diagram}</svg>\n{link}</svg>\n",
         w = PAGE.x,
         h = PAGE.y,
         words = svg::elements(face, &page_words(face, page, &layout), svg::Labels::Text),
@@ -247,6 +292,7 @@ fn page_svg(face: &Typeface, page: &Page<'_>) -> String {
         cw = canvas.x,
         ch = canvas.y,
         diagram = svg::elements(face, &diagram, svg::Labels::Text),
+        link = svg::elements(face, &link_block(face, page), svg::Labels::Text),
     )
 }
 
@@ -396,6 +442,7 @@ mod tests {
             notes: Some(("Notes".to_owned(), word)),
             writing_lines: false,
             diagram: Box::new(|_| Vec::new()),
+            link: None,
         };
         let layout = PageLayout::of(&face, &page);
         let labels = page_words(&face, &page, &layout);
@@ -430,6 +477,7 @@ mod tests {
             notes: (!writing_lines).then(|| ("Notes".to_owned(), notes.to_owned())),
             writing_lines,
             diagram: Box::new(|_| Vec::new()),
+            link: None,
         };
         let teacher = PageLayout::of(&face, &page("Short notes.", false));
         let last_word = teacher.diagram_top + teacher.diagram.y + TEXT_SIZE * 8.0;

@@ -11,6 +11,7 @@ pub mod check;
 pub mod diagnosis;
 pub mod error;
 mod fields;
+pub mod link;
 pub mod solve;
 pub mod state_file;
 pub mod vector_text;

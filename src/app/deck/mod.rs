@@ -21,6 +21,7 @@
 //! 5. R reveals the answer, or hides it again (B and `.`, which a clicker's blank-screen button
 //!    sends, do too); N opens or closes the notes window.
 
+pub mod handout;
 mod notes;
 pub mod panel;
 
@@ -457,6 +458,7 @@ impl Explorer {
             Some(panel::Action::Open(deck)) => self.open_deck(deck),
             Some(panel::Action::Add) => self.add_step(),
             Some(panel::Action::Update) => self.update_step(),
+            Some(panel::Action::Handout) => self.write_handout(),
             None => {}
         }
     }

@@ -32,6 +32,8 @@ pub enum Action {
     GoTo(usize),
     /// Show this deck from its first step.
     Open(Deck),
+    /// Write the deck's handout (PDF).
+    Handout,
 }
 
 /// The tool's file field, dialog and replace question, and what its last action said.
@@ -93,6 +95,13 @@ impl DeckPanel {
                 });
                 *current = None;
                 self.edited = false;
+            }
+            let has_steps = deck.as_ref().is_some_and(|d| !d.steps.is_empty());
+            let handout = ui
+                .add_enabled(has_steps, egui::Button::new(t!("handout-export")))
+                .on_hover_text(t!("handout-export-hover"));
+            if handout.clicked() {
+                action = Some(Action::Handout);
             }
         });
         if let Some(deck) = deck {

@@ -1,0 +1,60 @@
+# El explorador en un navegador y los enlaces a él, en español: el enlace de lo que ve la
+# clase (Copiar enlace, el código QR, la dirección web), un enlace que no se puede abrir, el
+# folleto con sus enlaces y lo que hace una página del navegador (su selector de archivos,
+# las descargas, la pantalla completa, el portapapeles y un solo hilo).
+
+## Enlaces y el código QR
+
+link-web-base = Dirección web
+link-web-base-hover = Donde la clase abre el explorador en un navegador: la dirección de la carpeta que escribe cargo xtask web, publicada en un servidor (en un navegador, la dirección de la propia página)
+link-copy = 🔗 Copiar enlace
+link-copy-hover = Copia el enlace que abre en un navegador lo que la clase ve ahora (este paso de la secuencia o este estado)
+link-copied = Enlace copiado.
+link-qr = Código QR
+link-qr-hover = Muestra el enlace de lo que ve la clase como código QR sobre el diagrama (Q)
+link-no-web-base = No hay dirección web: escribe la dirección donde la clase abre el explorador en un navegador.
+link-file-address = Esta página se abrió desde un archivo: un teléfono no puede abrir este enlace. Publica la carpeta en un servidor y escribe su dirección.
+# $format: png o svg
+link-qr-save = Guardar como { $format }
+# $bytes: la longitud del enlace
+link-qr-too-long = El enlace es demasiado largo para un código QR ({ $bytes } bytes): cópialo en su lugar.
+link-qr-close = Q o Esc cierra
+link-notice-close = Cerrar
+
+## Un enlace que no se puede abrir ($reason: por qué, como abajo)
+
+link-cut-short = el enlace está cortado: cópialo otra vez, entero
+# $reason: dónde está dañado el enlace, o las palabras del lector de estados
+link-malformed = el enlace está dañado ({ $reason })
+# $part: la parte del enlace que esta versión no lee, como v=2
+link-newer = el enlace lo hizo una versión más nueva del explorador ({ $part }): ábrelo donde se ejecute esa versión
+# $step: el paso tal como lo da el enlace
+link-bad-step = el paso { $step } no es un número a partir de 1
+link-state-and-lesson = el enlace nombra a la vez un estado y una secuencia
+link-step-without-lesson = el enlace nombra un paso pero ninguna secuencia
+# $name: la secuencia que nombra el enlace; $names: las secuencias incluidas
+link-no-lesson = no hay ninguna secuencia incluida llamada { $name } (las secuencias: { $names })
+# $count: el número de pasos de la secuencia
+link-no-step = la secuencia { $name } tiene { $count } pasos, no { $step }
+# $reason: uno de los mensajes de arriba
+web-link-not-opened = No se pudo abrir este enlace: { $reason }. El explorador muestra lo que mostraba antes.
+
+## El folleto
+
+handout-export = 📄 Folleto (PDF)
+handout-export-hover = Escribe la secuencia como folleto: una página por paso, con su diagrama, pregunta, notas y, si hay una dirección web, su enlace y su código QR
+
+## En un navegador
+
+web-page-loading = Cargando el explorador de la refracción…
+# $reason: las palabras del propio navegador
+web-page-failed = Este navegador no pudo iniciar el explorador de la refracción ({ $reason }). Un Firefox, Chrome, Edge o Safari reciente con WebGL 2 lo ejecuta.
+web-open-through-picker = Una página del navegador abre los archivos que eliges en el selector de archivos del navegador (o que sueltas sobre la página).
+web-choose-file = Elegir un archivo…
+web-saved-as-download = El archivo se descarga: el navegador lo guarda en su carpeta de descargas.
+web-download = Descargar
+# $reason: las palabras del propio navegador
+web-full-screen-refused = El navegador no entró ni salió de la pantalla completa ({ $reason }): usa su propia tecla de pantalla completa (F11) o su menú.
+web-copy-refused = El navegador no permitió copiar ({ $reason }): selecciona el texto y pulsa Ctrl+C.
+web-not-secure = una página abierta desde un archivo o por http puede no tener acceso al portapapeles
+web-one-thread = En un navegador esto se ejecuta en el único hilo de la página: la página no responde hasta que termina.

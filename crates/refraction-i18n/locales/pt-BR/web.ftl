@@ -1,0 +1,60 @@
+# O explorador no navegador e os links para ele, em português: o link do que a turma vê
+# (Copiar link, o código QR, o endereço web), um link que não abre, a apostila com seus links
+# e o que uma página do navegador faz (seu seletor de arquivos, os downloads, a tela cheia, a
+# área de transferência e uma única thread).
+
+## Links e o código QR
+
+link-web-base = Endereço web
+link-web-base-hover = Onde a turma abre o explorador no navegador: o endereço da pasta que cargo xtask web escreve, publicada num servidor (no navegador, o endereço da própria página)
+link-copy = 🔗 Copiar link
+link-copy-hover = Copia o link que abre no navegador o que a turma vê agora (este passo da sequência ou este estado)
+link-copied = Link copiado.
+link-qr = Código QR
+link-qr-hover = Mostra o link do que a turma vê como código QR sobre o diagrama (Q)
+link-no-web-base = Nenhum endereço web definido: digite o endereço onde a turma abre o explorador no navegador.
+link-file-address = Esta página foi aberta de um arquivo: um celular não consegue abrir este link. Publique a pasta num servidor e digite o endereço dela.
+# $format: png ou svg
+link-qr-save = Salvar como { $format }
+# $bytes: o comprimento do link
+link-qr-too-long = O link é longo demais para um código QR ({ $bytes } bytes): copie-o em vez disso.
+link-qr-close = Q ou Esc fecha
+link-notice-close = Fechar
+
+## Um link que não abre ($reason: por quê, como abaixo)
+
+link-cut-short = o link está cortado: copie-o de novo, inteiro
+# $reason: onde o link está danificado, ou as palavras do leitor de estados
+link-malformed = o link está danificado ({ $reason })
+# $part: a parte do link que esta versão não lê, como v=2
+link-newer = o link foi feito por uma versão mais nova do explorador ({ $part }): abra-o onde essa versão roda
+# $step: o passo como o link o dá
+link-bad-step = o passo { $step } não é um número a partir de 1
+link-state-and-lesson = o link nomeia ao mesmo tempo um estado e uma sequência
+link-step-without-lesson = o link nomeia um passo, mas nenhuma sequência
+# $name: a sequência que o link nomeia; $names: as sequências embutidas
+link-no-lesson = não há nenhuma sequência embutida chamada { $name } (as sequências: { $names })
+# $count: o número de passos da sequência
+link-no-step = a sequência { $name } tem { $count } passos, não { $step }
+# $reason: uma das mensagens acima
+web-link-not-opened = Não foi possível abrir este link: { $reason }. O explorador mostra o que mostrava antes.
+
+## A apostila
+
+handout-export = 📄 Apostila (PDF)
+handout-export-hover = Escreve a sequência como apostila: uma página por passo, com seu diagrama, pergunta, notas e, se houver um endereço web, seu link e código QR
+
+## No navegador
+
+web-page-loading = Carregando o explorador da refração…
+# $reason: as palavras do próprio navegador
+web-page-failed = Este navegador não conseguiu iniciar o explorador da refração ({ $reason }). Um Firefox, Chrome, Edge ou Safari recente com WebGL 2 o executa.
+web-open-through-picker = Uma página do navegador abre os arquivos que você escolhe no seletor de arquivos do navegador (ou solta sobre a página).
+web-choose-file = Escolher um arquivo…
+web-saved-as-download = O arquivo é baixado: o navegador o salva na pasta de downloads.
+web-download = Baixar
+# $reason: as palavras do próprio navegador
+web-full-screen-refused = O navegador não entrou nem saiu da tela cheia ({ $reason }): use a tecla de tela cheia dele (F11) ou o menu.
+web-copy-refused = O navegador não permitiu copiar ({ $reason }): selecione o texto e pressione Ctrl+C.
+web-not-secure = uma página aberta de um arquivo ou por http pode não ter acesso à área de transferência
+web-one-thread = No navegador isto roda na única thread da página: a página não responde até terminar.

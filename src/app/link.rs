@@ -1,0 +1,270 @@
+//! The link of what the class sees, for the web build (`cargo xtask web`): *Copy link* and
+//! *QR code* in the *Save, open, share* tool ([`LinkRow`]), the QR code shown large over the
+//! diagram (Q shows or hides it), the web build's address (a setting kept between runs, or
+//! `--web-base`; in a browser the page's own address unless one is set), and opening a link
+//! ([`Explorer::open_link`]), which a browser page does with its address's fragment.
+//!
+//! A link names the deck's step while the step is shown as the deck has it, and the state
+//! otherwise (see [`refraction_tools::link`]); a link that cannot be opened is said in a strip
+//! above the window and changes nothing.
+
+use std::path::Path;
+
+use egui::{Id, Key, Modal, Panel, RichText, TextEdit, Ui};
+use refraction_deck::builtin;
+use refraction_diagram::qr::Code;
+use refraction_i18n::t;
+use refraction_render::format::ImageFormat;
+use refraction_tools::link::{self, Link};
+
+use super::deck::{Command, handout};
+use super::file_dialog;
+use super::typed::status;
+use super::{Explorer, View};
+
+/// Where eframe keeps the web build's address between runs.
+pub const WEB_BASE_KEY: &str = "explorer_web_base";
+
+/// The size of the QR code's picture when saved, in pixels.
+const QR_PICTURE_SIDE: u32 = 800;
+
+/// The link row of the *Save, open, share* tool: the web build's address, *Copy link*,
+/// *QR code* and the link itself, to read or select.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct LinkRow {
+    /// The web build's address, as typed (empty: none set).
+    pub base: String,
+    /// The link of what the class sees, set by the window each frame (`None` without an
+    /// address).
+    pub url: Option<String>,
+    /// Set when *QR code* is pressed, for the window to show it.
+    pub qr_asked: bool,
+    /// What the last *Copy link* said.
+    said: Option<Result<String, String>>,
+}
+
+impl LinkRow {
+    /// The row: the address field, *Copy link*, *QR code*, then the link.
+    pub fn ui(&mut self, ui: &mut Ui) {
+        ui.horizontal_wrapped(|ui| {
+            let name = ui.label(t!("link-web-base"));
+            ui.add(
+                TextEdit::singleline(&mut self.base)
+                    .hint_text("https://…")
+                    .desired_width(260.0),
+            )
+            .labelled_by(name.id)
+            .on_hover_text(t!("link-web-base-hover"));
+            let copy = ui.add_enabled(self.url.is_some(), egui::Button::new(t!("link-copy")));
+            if copy.on_hover_text(t!("link-copy-hover")).clicked()
+                && let Some(url) = &self.url
+            {
+                ui.ctx().copy_text(url.clone());
+                self.said = Some(Ok(t!("link-copied")));
+            }
+            if ui
+                .button(t!("link-qr"))
+                .on_hover_text(t!("link-qr-hover"))
+                .clicked()
+            {
+                self.qr_asked = true;
+            }
+        });
+        match &self.url {
+            Some(url) => {
+                ui.add(egui::Label::new(RichText::new(url).monospace().weak()).selectable(true));
+            }
+            None => {
+                ui.label(RichText::new(t!("link-no-web-base")).weak());
+            }
+        }
+        status(ui, self.said.as_ref());
+    }
+}
+
+/// The window's sharing state: the QR code shown, and what a link that could not be opened
+/// (or a copy the browser refused) said.
+#[derive(Debug, Default)]
+pub struct Sharing {
+    /// Whether the QR code is shown over the diagram.
+    pub qr_open: bool,
+    /// A message for the strip above the window, until it is closed.
+    pub notice: Option<String>,
+    /// What the QR code's *Save* buttons said.
+    saved: Option<Result<String, String>>,
+}
+
+/// The web build's address `base` as a link's start, or `None` when it is empty.
+fn base_of(base: &str) -> Option<&str> {
+    Some(base.trim()).filter(|b| !b.is_empty())
+}
+
+/// Why a link has no QR code, in words.
+fn too_long(error: &refraction_diagram::qr::TooLong) -> String {
+    t!("link-qr-too-long", bytes = error.0.to_string())
+}
+
+/// Writes the QR code of `url` as a picture of `format` under the next free
+/// `refraction-qr-NNN` name; what happened, in words.
+fn save_qr(url: &str, format: ImageFormat) -> Result<String, String> {
+    let extension = format.extension();
+    let path = file_dialog::numbered(Path::new(""), "refraction-qr", extension);
+    let code = Code::new(url).map_err(|e| too_long(&e))?;
+    let side = QR_PICTURE_SIDE;
+    let bytes = refraction_render::still(
+        (format, refraction_render::svg::Labels::default()),
+        (side, side),
+        &path,
+        |size, _| code.primitives(glam::Vec2::ZERO, size.x),
+    )
+    .map_err(|e| t!("files-not-exported", reason = e.to_string()))?;
+    refraction_files::write_atomically(&path, &bytes)
+        .map(|()| t!("files-wrote", path = path.display().to_string()))
+        .map_err(|e| t!("files-not-exported", reason = e.to_string()))
+}
+
+impl Explorer {
+    /// What the class sees now as a link: the deck's step while it is shown as the deck has
+    /// it (a built-in deck by name, a deck file's step by its state), else the state.
+    #[must_use]
+    pub fn link(&self) -> Link {
+        let step = self.lesson.current().filter(|(_, step)| {
+            self.view == View::Interface && step.state == self.state
+                || self.view == View::Scenes && step.view == refraction_deck::StepView::Scenes
+        });
+        step.and_then(|(index, _)| handout::step_link(self.lesson.deck.as_ref()?, index))
+            .unwrap_or_else(|| Link::State(Box::new(self.state.clone())))
+    }
+
+    /// The link of what the class sees at the web build's address, if one is set.
+    #[must_use]
+    pub fn link_url(&self) -> Option<String> {
+        base_of(&self.tools.files.share.base).map(|base| link::url(base, &self.link()))
+    }
+
+    /// The web build's address (empty: none).
+    #[must_use]
+    pub fn web_base(&self) -> &str {
+        &self.tools.files.share.base
+    }
+
+    /// Sets the web build's address that links are given at.
+    pub fn set_web_base(&mut self, base: &str) {
+        base.trim().clone_into(&mut self.tools.files.share.base);
+    }
+
+    /// Opens what the link's fragment `fragment` (with or without `#`) names: a state, shown
+    /// in One interface, or a built-in deck at a step. An empty fragment changes nothing.
+    ///
+    /// # Errors
+    /// A fragment cut short, damaged or from a newer version, an unknown deck or a step past
+    /// its end: the message, in the current language; nothing is changed.
+    pub fn open_link(&mut self, fragment: &str) -> Result<(), String> {
+        match link::parse(fragment).map_err(|e| e.message())? {
+            None => {}
+            Some(Link::State(state)) => {
+                self.state = *state;
+                self.view = View::Interface;
+            }
+            Some(Link::Lesson { name, step }) => {
+                let deck = builtin::deck(&name).ok_or_else(|| {
+                    t!(
+                        "link-no-lesson",
+                        name = name.as_str(),
+                        names = builtin::names().join(", ")
+                    )
+                })?;
+                let count = deck.steps.len();
+                if step > count {
+                    return Err(t!(
+                        "link-no-step",
+                        name = name.as_str(),
+                        step = step.to_string(),
+                        count = count.to_string()
+                    ));
+                }
+                self.open_deck(deck);
+                self.deck_command(Command::GoTo(step - 1));
+            }
+        }
+        Ok(())
+    }
+
+    /// The sharing parts of the frame: the link handed to the tool, Q, the QR code over the
+    /// diagram and the strip that says why a link was not opened.
+    pub(super) fn sharing(&mut self, ui: &mut Ui) {
+        // Only the tool shows it (a deck's step is matched against the built-in decks).
+        let shown = self.tools.open == Some(super::tools::Tool::Files);
+        self.tools.files.share.url = shown.then(|| self.link_url()).flatten();
+        if core::mem::take(&mut self.tools.files.share.qr_asked) {
+            self.sharing.qr_open = true;
+        }
+        let typing = ui.ctx().text_edit_focused();
+        if !typing && ui.input_mut(|i| i.consume_key(egui::Modifiers::NONE, Key::Q)) {
+            self.sharing.qr_open = !self.sharing.qr_open;
+        }
+        if let Some(notice) = self.sharing.notice.clone() {
+            Panel::top("link-notice").show(ui, |ui| {
+                ui.horizontal_wrapped(|ui| {
+                    ui.label(RichText::new(format!("⚠ {notice}")).strong());
+                    if ui.button(t!("link-notice-close")).clicked() {
+                        self.sharing.notice = None;
+                    }
+                });
+            });
+        }
+        if self.sharing.qr_open {
+            self.qr_modal(ui);
+        }
+    }
+
+    /// The QR code of what the class sees, large and centred over the window, with the link
+    /// under it; without an address, the field to type one.
+    fn qr_modal(&mut self, ui: &Ui) {
+        let screen = ui.ctx().content_rect();
+        let share = if self.presentation.on { 0.72 } else { 0.5 };
+        let side = (screen.width().min(screen.height()) * share).max(160.0);
+        let url = self.link_url();
+        let modal = Modal::new(Id::unique("qr-code")).show(ui.ctx(), |ui| {
+            ui.set_max_width(side.max(360.0));
+            let Some(url) = url else {
+                ui.heading(t!("link-qr"));
+                ui.label(t!("link-no-web-base"));
+                self.tools.files.share.ui(ui);
+                return;
+            };
+            match Code::new(&url) {
+                Ok(code) => {
+                    let size = glam::Vec2::splat(side);
+                    let (_, painter, to_screen) =
+                        super::paint::figure(ui, size, egui::Sense::hover(), &url);
+                    super::paint::paint(
+                        &painter,
+                        &to_screen,
+                        &code.primitives(glam::Vec2::ZERO, side),
+                    );
+                }
+                Err(e) => {
+                    ui.label(too_long(&e));
+                }
+            }
+            ui.add(egui::Label::new(RichText::new(&url).monospace()).selectable(true));
+            if url.starts_with("file:") {
+                ui.label(RichText::new(t!("link-file-address")).strong());
+            }
+            ui.horizontal(|ui| {
+                for format in [ImageFormat::Png, ImageFormat::Svg] {
+                    let label = t!("link-qr-save", format = format.extension());
+                    if ui.button(label).clicked() {
+                        self.sharing.saved = Some(save_qr(&url, format));
+                    }
+                }
+                ui.label(RichText::new(t!("link-qr-close")).weak());
+            });
+            status(ui, self.sharing.saved.as_ref());
+        });
+        if modal.should_close() {
+            self.sharing.qr_open = false;
+        }
+    }
+}
