@@ -515,7 +515,12 @@ impl Explorer {
             animation_export.show(ui, state, &overlay);
         });
         self.panels.show(ui, &NUMBERS, presenting, |ui| {
-            readouts::show(ui, state.refraction(), &overlay.palette);
+            // The kernel's numbers are the answer a step's question asks for: hidden with it.
+            if overlay.hide_answer {
+                ui.label(t!("deck-answer-hidden"));
+            } else {
+                readouts::show(ui, state.refraction(), &overlay.palette);
+            }
         });
         if let Some(lesson) = controls.started.take() {
             self.physics.start(lesson);

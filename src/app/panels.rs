@@ -243,10 +243,12 @@ impl Panels {
                 if hide.clicked() {
                     *shown = false;
                 }
-                // A solid scroll bar takes its own room: a floating one would cover the ends
-                // of the wrapped lines (an equation's "= 0", a table's last column).
-                ui.spacing_mut().scroll = egui::style::ScrollStyle::solid();
-                ScrollArea::vertical().show(ui, contents);
+                // egui's floating scroll bar, thin until hovered: a solid or thin one, whose
+                // track is painted, left a black band beside the panel in a real window (glow).
+                ui.spacing_mut().scroll = egui::style::ScrollStyle::floating();
+                ScrollArea::vertical()
+                    .auto_shrink([false, true])
+                    .show(ui, contents);
             });
     }
 }
