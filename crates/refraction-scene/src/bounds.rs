@@ -7,9 +7,7 @@ use serde::Serialize;
 /// largest coordinate involved (the box's or the ray origin's). A crossing computed within a few
 /// rounding errors (~1e-15 relative) of its piece is well inside this margin; one farther out
 /// comes from a ray so close to parallel to a segment (sin θ below ~1e-7) that its position
-/// along the ray means nothing. The margin makes every crossing lie in its padded box, which is
-/// what lets the acceleration structure (`bvh`) skip boxes and still find the same crossings as
-/// testing every piece.
+/// along the ray means nothing, and is refused.
 const PAD: f64 = 1e-9;
 
 /// The margin around a box whose largest coordinate is `reach`, seen from `point`. It grows with
@@ -94,9 +92,7 @@ impl Bounds {
     }
 
     /// The range of ray parameters (entry, exit) over which `origin + t·direction` lies in the
-    /// rectangle grown by `pad`; entry > exit when the ray misses it. Computed the same way for
-    /// every box, so that for boxes one inside the other the ranges nest exactly (rounding is
-    /// monotonic): what the acceleration structure's pruning relies on.
+    /// rectangle grown by `pad`; entry > exit when the ray misses it.
     pub(crate) fn slab(self, pad: f64, origin: DVec2, direction: DVec2) -> (f64, f64) {
         let (min, max) = (self.min - DVec2::splat(pad), self.max + DVec2::splat(pad));
         let (mut entry, mut exit) = (f64::NEG_INFINITY, f64::INFINITY);
@@ -120,17 +116,6 @@ impl Bounds {
     pub(crate) fn admits(self, origin: DVec2, direction: DVec2, t: f64) -> bool {
         let (entry, exit) = self.slab(padding(self.reach(), origin), origin, direction);
         entry <= t && t <= exit
-    }
-
-    /// Whether the rectangle grown by `pad` holds `p`.
-    pub(crate) fn holds(self, pad: f64, p: DVec2) -> bool {
-        (self.min - DVec2::splat(pad)).cmple(p).all() && p.cmple(self.max + DVec2::splat(pad)).all()
-    }
-
-    /// Whether the rectangle grown by `pad` meets the half-line from `p` towards +x (the ray
-    /// along which a point-in-polygon test counts crossings).
-    pub(crate) fn meets_rightward(self, pad: f64, p: DVec2) -> bool {
-        self.min.y - pad <= p.y && p.y <= self.max.y + pad && p.x <= self.max.x + pad
     }
 
     /// The parameter t ≥ 0 at which the ray `origin + t·direction` leaves the rectangle, or 0

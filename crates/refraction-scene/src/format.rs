@@ -9,9 +9,9 @@ use glam::DVec2;
 use toml::Spanned;
 
 use super::bounds::Bounds;
-use super::bvh::first_self_crossing;
 use super::effects::Effects;
 use super::medium::{Dispersion, Medium};
+use super::search::first_self_crossing;
 use super::shape::{Lens, Shape};
 use super::source::{Light, Source, SourceKind};
 use super::spec::{
@@ -33,18 +33,19 @@ pub const MAX_COORDINATE: f64 = 1e5;
 /// size is [`MAX_COORDINATE`].
 pub const MIN_SIZE: f64 = 1e-6;
 
-/// The most shapes a scene file may have: a file of this many circles fits under
-/// [`MAX_SCENE_FILE_BYTES`], so the limit is one a file can reach.
-pub const MAX_SHAPES: usize = 10_000;
+/// The most shapes a scene file may have: ten times a classroom scene's few dozen. The tracer
+/// tests every shape's pieces for each ray segment, so this many keep a trace of a thousand
+/// rays well within its work budget.
+pub const MAX_SHAPES: usize = 500;
 
 /// The largest scene file [`crate::Scene::load`] reads: 1 MiB (the built-in scenes are under
 /// 4 KiB).
 pub const MAX_SCENE_FILE_BYTES: u64 = 1 << 20;
 
-/// The most polygon points a scene file may have, over all its polygons: this many, written
-/// with two decimals, fit under [`MAX_SCENE_FILE_BYTES`], so the limit is one a file can
-/// reach.
-pub const MAX_POINTS: usize = 50_000;
+/// The most polygon points a scene file may have, over all its polygons: a prism has three or
+/// four, an outline drawn by hand a few hundred. Each edge is tested against the others when
+/// the file is read (a polygon must not cross itself), and against every ray segment.
+pub const MAX_POINTS: usize = 2_000;
 
 /// A line and column in a file, both counted from 1 (columns in characters).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -1177,11 +1178,7 @@ direction = [1, 0]
             .collect();
         let e = shapes(&tables, &media).unwrap_err();
         assert_eq!(e.span, MAX_SHAPES..MAX_SHAPES + 1);
-        assert!(
-            e.message.contains("more than 10000 shapes"),
-            "{}",
-            e.message
-        );
+        assert!(e.message.contains("more than 500 shapes"), "{}", e.message);
         let polygon = |n: usize, at: usize| {
             let points = (0..n)
                 .map(|_| Spanned::new(0..0, crate::Numbers([0.0, 0.0])))
@@ -1204,7 +1201,7 @@ direction = [1, 0]
         let e = shapes(&many, &media).unwrap_err();
         assert_eq!(e.span, 2..3);
         assert!(
-            e.message.contains("more than 50000 polygon points"),
+            e.message.contains("more than 2000 polygon points"),
             "{}",
             e.message
         );

@@ -10,7 +10,6 @@
 //! The file format is described in the repository's user guide (`docs/scenes.md`).
 
 mod bounds;
-mod bvh;
 mod effects;
 mod embedded;
 mod format;
@@ -18,6 +17,7 @@ mod fresnel;
 mod medium;
 mod outline;
 mod report;
+mod search;
 mod shape;
 mod source;
 mod spec;
@@ -27,7 +27,6 @@ mod write;
 use glam::DVec2;
 
 pub use bounds::Bounds;
-pub use bvh::MAX_TESTS;
 pub use effects::{Effects, EffectsError};
 pub use embedded::{DEFAULT_SCENE, SceneInfo, catalogue};
 pub use format::{
@@ -38,6 +37,7 @@ pub use fresnel::Fresnel;
 pub use medium::{Dispersion, Medium, REFERENCE_WAVELENGTH_NM, WHITE_WAVELENGTHS_NM};
 pub use outline::{Outline, Piece};
 pub use report::Report;
+pub use search::MAX_TESTS;
 pub use shape::{Crossing, Lens, Shape, T_MIN};
 pub use source::{Light, Source, SourceKind, traced_wavelength};
 pub use spec::Numbers;

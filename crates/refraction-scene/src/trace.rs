@@ -10,8 +10,8 @@ use serde::Serialize;
 
 use super::Scene;
 use super::bounds::Bounds;
-use super::bvh::{Bvh, MAX_TESTS};
 use super::fresnel::Fresnel;
+use super::search::{MAX_TESTS, Search};
 use super::source::{Light, serialize_wavelength, traced_wavelength};
 use refraction_kernel::{Convention, Incidence, refract_facing};
 
@@ -366,7 +366,7 @@ struct Ray {
 struct Tracer<'a> {
     scene: &'a Scene,
     trace: &'a mut Trace,
-    bvh: Bvh<'a>,
+    search: Search<'a>,
     budget: Budget,
     progress: &'a Progress,
     pending: Vec<Ray>,
@@ -407,7 +407,7 @@ impl Scene {
         Tracer {
             scene: self,
             trace,
-            bvh: Bvh::new(self),
+            search: Search::new(self),
             budget,
             progress,
             pending: Vec::new(),
@@ -478,7 +478,7 @@ impl Tracer<'_> {
     fn over_budget(&self) -> Option<Stop> {
         if self.trace.segments.len() >= self.budget.segments {
             Some(Stop::Segments(self.budget.segments))
-        } else if self.bvh.tests() >= self.budget.tests {
+        } else if self.search.tests() >= self.budget.tests {
             Some(Stop::Tests(self.budget.tests))
         } else if self.progress.is_cancelled() {
             Some(Stop::Cancelled)
@@ -496,7 +496,7 @@ impl Tracer<'_> {
         let scene = self.scene;
         let first_segment = self.trace.segments.len();
         self.path = self.trace.paths.len();
-        let mut medium = self.bvh.medium_where(scene, ray.origin, None);
+        let mut medium = self.search.medium_where(ray.origin, None);
         let end = loop {
             if let Some(stop) = self.over_budget() {
                 self.trace.counts.truncated = true;
@@ -504,7 +504,7 @@ impl Tracer<'_> {
                 break End::Truncated;
             }
             let (origin, d) = (ray.origin, ray.direction);
-            let Some((shape, crossing)) = self.bvh.first_crossing(origin, d) else {
+            let Some((shape, crossing)) = self.search.first_crossing(origin, d) else {
                 let to = origin + d * self.trace.bounds.exit(origin, d);
                 self.segment(origin, to, medium, colour, &mut ray);
                 break End::Escaped;
@@ -520,8 +520,8 @@ impl Tracer<'_> {
                 Side::Leaving
             };
             let entering = side == Side::Entering;
-            let before = self.bvh.medium_where(scene, x, Some((shape, !entering)));
-            let after = self.bvh.medium_where(scene, x, Some((shape, entering)));
+            let before = self.search.medium_where(x, Some((shape, !entering)));
+            let after = self.search.medium_where(x, Some((shape, entering)));
             self.segment(origin, x, before, colour, &mut ray);
             ray.origin = x;
             medium = after;

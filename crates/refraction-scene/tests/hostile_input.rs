@@ -203,16 +203,17 @@ fn a_runaway_trace_stops_at_its_budget_and_says_why() {
     assert!(trace.counts.truncated);
     assert_eq!(trace.counts.stopped, Some(Stop::Segments(SMALL.segments)));
     assert_eq!(trace.segments.len(), SMALL.segments);
+    // A droplet's segment costs a few tests (its one piece, the media on both sides).
     let few_tests = Budget {
-        tests: 20_000,
+        tests: 2_000,
         ..SMALL
     };
     let trace = traced(&scene, few_tests);
-    assert_eq!(trace.counts.stopped, Some(Stop::Tests(20_000)));
+    assert_eq!(trace.counts.stopped, Some(Stop::Tests(2_000)));
     let json = serde_json::to_value(Report::new(&scene, &trace)).unwrap();
     let message = json["counts"]["stopped"].as_str().unwrap();
     assert!(
-        message.contains("budget of 20000 intersection tests"),
+        message.contains("budget of 2000 intersection tests"),
         "{message}"
     );
     assert!(trace.counts.to_string().contains(message));
