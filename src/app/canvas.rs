@@ -31,7 +31,7 @@ fn nudge_index(state: &mut ExplorerState, handle: HandleId, delta: f64) {
     let index = ((state.index(handle) + delta) * 1e6).round() / 1e6;
     // A nudge to an index the kernel refuses (0 or below, or too far from the other index) leaves the marker where it was,
     // the last good state, as a refused drag does.
-    let _ = state.set_index(handle, index);
+    state.set_index(handle, index).ok();
 }
 
 /// Applies the keys pressed while `handle` has focus: arrows turn W or N (counter-clockwise

@@ -68,9 +68,9 @@ impl Kind {
             Some(Self::State)
         } else if text.starts_with(b"<") {
             Some(Self::Svg)
-        } else if core::str::from_utf8(bytes).is_ok_and(refraction_deck::looks_like_deck) {
+        } else if utf8_prefix(bytes).is_some_and(refraction_deck::looks_like_deck) {
             Some(Self::Deck)
-        } else if core::str::from_utf8(bytes).is_ok_and(looks_like_toml) {
+        } else if utf8_prefix(bytes).is_some_and(looks_like_toml) {
             Some(Self::Scene)
         } else {
             None
@@ -140,7 +140,8 @@ pub fn target(path: &Path, kind: Kind) -> Result<Target, String> {
     if path.is_dir() {
         return Err(t!("files-is-a-folder", path = &shown));
     }
-    let Ok(bytes) = std::fs::read(path) else {
+    // The first bytes tell the kind; a file that cannot be read is left for the writer to report.
+    let Some(bytes) = first_bytes(path) else {
         return Ok(Target::New);
     };
     match Kind::of_contents(&bytes) {
@@ -152,6 +153,26 @@ pub fn target(path: &Path, kind: Kind) -> Result<Target, String> {
             found = found.map_or("other", Kind::id),
             kind = kind.id()
         )),
+    }
+}
+
+/// The first bytes of the file at `path`, enough for [`Kind::of_contents`] to tell its kind
+/// (never a whole recording); `None` when there is no file there or it cannot be read.
+pub fn first_bytes(path: &Path) -> Option<Vec<u8>> {
+    refraction_files::first_bytes(path, 64 * 1024)
+        .ok()
+        .flatten()
+}
+
+/// `bytes` as text when they are UTF-8, up to a character cut at their end (a prefix read
+/// from a longer file); `None` for any other invalid byte.
+fn utf8_prefix(bytes: &[u8]) -> Option<&str> {
+    match core::str::from_utf8(bytes) {
+        Ok(text) => Some(text),
+        Err(cut) if cut.error_len().is_none() => {
+            core::str::from_utf8(&bytes[..cut.valid_up_to()]).ok()
+        }
+        Err(_) => None,
     }
 }
 
@@ -515,6 +536,22 @@ mod tests {
         std::fs::write(dir.join("state.png"), b"{}").unwrap();
         assert!(target(&dir.join("state.png"), Kind::Png).is_err());
         assert!(target(&dir, Kind::State).is_err());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_long_file_is_told_by_its_start_even_with_a_character_cut_there() {
+        let dir = scratch("long");
+        let scene = dir.join("long.toml");
+        // 'é' is two bytes: one of them falls on each side of the bytes read.
+        let mut text = format!("title = \"{}", "a".repeat(64 * 1024 - 10));
+        text.push_str("é\"\n[source]\n");
+        text.push_str(&"# comment\n".repeat(20_000));
+        std::fs::write(&scene, &text).unwrap();
+        assert_eq!(first_bytes(&scene).map(|b| b.len()), Some(64 * 1024));
+        assert_eq!(target(&scene, Kind::Scene), Ok(Target::Replaces));
+        assert_eq!(utf8_prefix(b"ab\xc3"), Some("ab"));
+        assert_eq!(utf8_prefix(b"a\xffb"), None);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

@@ -7,7 +7,9 @@ use std::path::{Path, PathBuf};
 use egui::{RichText, TextEdit, Ui};
 use refraction_i18n::t;
 
-use super::file_dialog::{FileDialog, Kind, Purpose, Target, answer_replace, settle, target};
+use super::file_dialog::{
+    FileDialog, Kind, Purpose, Target, answer_replace, first_bytes, settle, target,
+};
 use super::typed::status;
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 use crate::app::link::LinkRow;
@@ -147,9 +149,7 @@ impl FilesPanel {
     /// mistake) is opened as one, and the window shows it; anything else keeps the state's
     /// error.
     fn open_as_what_it_is(&mut self, path: &Path, error: &LoadError) -> Result<String, String> {
-        let start = refraction_files::first_bytes(path, 64 * 1024)
-            .ok()
-            .flatten();
+        let start = first_bytes(path);
         let shown = path.display().to_string();
         let not_a_state = || open_failed(error);
         match start.as_deref().and_then(Kind::of_contents) {

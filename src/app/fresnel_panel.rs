@@ -76,7 +76,7 @@ pub fn show(ui: &mut Ui, state: &mut ExplorerState, palette: &Palette) {
     ui.label(RichText::new(t!("fresnel-click-hint")).weak());
     if let Some(degrees) = plot(ui, &model, palette) {
         // Clamped to [0, 89.9]: within what the model accepts.
-        let _ = state.set_incidence_degrees(degrees);
+        state.set_incidence_degrees(degrees).ok();
     }
     landmarks(ui, &model);
 }

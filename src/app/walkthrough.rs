@@ -93,7 +93,7 @@ impl WalkThrough {
         };
         let dt = ctx.input(|i| i.stable_dt);
         // Indices between μ_t and μ_i are as valid as the two ends: the kernel cannot refuse.
-        let _ = state.set_mu_t(morph.advance(dt));
+        state.set_mu_t(morph.advance(dt)).ok();
         if morph.done() {
             self.morph = None;
         } else {

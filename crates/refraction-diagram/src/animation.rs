@@ -81,7 +81,9 @@ impl Animation {
                 let eased = f64::from(ease(s as f32));
                 let mu_t = start.mu_t() + (start.mu_i() - start.mu_t()) * eased;
                 // Between two accepted indices every index is accepted.
-                let _ = state.set_mu_t(if index >= last { start.mu_i() } else { mu_t });
+                state
+                    .set_mu_t(if index >= last { start.mu_i() } else { mu_t })
+                    .ok();
                 Frame { state, waves: None }
             }
             Self::Sweep => Frame {
@@ -110,8 +112,8 @@ fn swept(start: &ExplorerState, degrees: f64) -> ExplorerState {
         (start.mu_t(), start.mu_i())
     };
     // Both were accepted as they are; swapping them keeps them acceptable.
-    let _ = state.set_mu_i(dense);
-    let _ = state.set_mu_t(thin);
+    state.set_mu_i(dense).ok();
+    state.set_mu_t(thin).ok();
     let r = state.refraction();
     let toward_source = state.plane().project(-r.travel);
     let normal = state

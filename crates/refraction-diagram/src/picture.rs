@@ -976,7 +976,7 @@ impl Diagram {
                 if (index - state.index(other)).abs() < 0.001 {
                     index = state.index(other);
                 }
-                let _ = state.set_index(handle, index);
+                state.set_index(handle, index).ok();
             }
         }
     }

@@ -1254,11 +1254,11 @@ mod tests {
     }
 
     #[test]
-    fn thousands_of_shapes_on_one_spot_get_the_handles_the_canvas_has_room_for() {
+    fn hundreds_of_shapes_on_one_spot_get_the_handles_the_canvas_has_room_for() {
         let circle = "[[shapes]]\ncircle = { center = [0, 0], radius = 1, medium = \"vacuum\" }\n";
         let text = format!(
             "title = \"t\"\n{}[source]\nkind = \"ray\"\norigin = [-2, 0]\ndirection = [1, 0]\n",
-            circle.repeat(5000)
+            circle.repeat(refraction_scene::MAX_SHAPES)
         );
         let scene = Scene::from_toml(&text, "x.toml", "x").unwrap();
         let layout = SceneLayout::new(scene.bounds(), Vec2::new(1000.0, 700.0));

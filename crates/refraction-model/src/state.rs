@@ -401,16 +401,22 @@ impl ExplorerState {
     /// whole difference between the source's two sections.
     pub fn set_convention(&mut self, convention: Convention) {
         if convention != self.convention {
-            // −W is as valid as W, so the kernel cannot refuse this.
-            let _ = self.update(-self.w, self.n, self.mu_i, self.mu_t, convention);
+            let turned = self.update(-self.w, self.n, self.mu_i, self.mu_t, convention);
+            debug_assert!(
+                turned.is_ok(),
+                "−W is as valid as W: the kernel cannot refuse it"
+            );
         }
     }
 
     /// Turns N around (an outward normal where the ray leaves the medium: the classic bug).
     pub fn flip_normal(&mut self) {
-        // −N is as valid as N (the kernel checks finiteness and length, which a sign keeps),
-        // so the kernel cannot refuse this.
-        let _ = self.update(self.w, -self.n, self.mu_i, self.mu_t, self.convention);
+        let flipped = self.update(self.w, -self.n, self.mu_i, self.mu_t, self.convention);
+        // The kernel checks finiteness and length, which a sign keeps.
+        debug_assert!(
+            flipped.is_ok(),
+            "−N is as valid as N: the kernel cannot refuse it"
+        );
     }
 
     /// Points W (for [`HandleId::W`]) or N (for [`HandleId::N`]) along the diagram direction
@@ -428,7 +434,8 @@ impl ExplorerState {
         // A turned vector the kernel refuses (one so long or short that its length overflows
         // or vanishes on the way) leaves the last good state, as every refused edit does: the
         // handle does not follow the pointer there.
-        let _ = self.update(w, n, self.mu_i, self.mu_t, self.convention);
+        self.update(w, n, self.mu_i, self.mu_t, self.convention)
+            .ok();
     }
 
     /// The diagram direction of W or N (the in-plane part of the vector, unit length; μ handles
