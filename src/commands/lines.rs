@@ -5,7 +5,8 @@ use std::io::{self, BufRead, Write as _};
 use std::path::Path;
 use std::process::ExitCode;
 
-use refraction_tools::api_check::{Format, Options, Pattern, Session};
+use refraction_i18n::t;
+use refraction_tools::api_check::{Dialect, Format, Options, Pattern, Session, suggest};
 use refraction_tools::diagnosis::looks_like_summary;
 use refraction_tools::{self as jsonl, LinesError, solve as solver};
 
@@ -177,4 +178,51 @@ fn finished(tally: &str, status: ExitCode) -> ExitCode {
     } else {
         status
     }
+}
+
+/// Runs `check --suggest-pattern` on `file` or stdin: the command with the pattern guessed
+/// from the log's first lines on stdout, what else it needs on stderr; status 3 when no line
+/// looks like a refraction.
+pub fn suggest_pattern(file: Option<&Path>, dialect: Dialect) -> ExitCode {
+    let input = match Input::open(file) {
+        Ok(input) => input,
+        Err(e) => return fail("check", &e),
+    };
+    let mut lines = Vec::new();
+    for line in input.lines.lines().take(suggest::LINES_READ) {
+        match line {
+            Ok(line) => lines.push(line),
+            Err(e) => return fail("check", &format!("cannot read {}: {e}", input.name)),
+        }
+    }
+    let texts: Vec<&str> = lines.iter().map(String::as_str).collect();
+    let Some(suggestion) = suggest::suggest(dialect, &texts) else {
+        let message = t!("check-suggest-none", lines = texts.len());
+        return finished(&format!("check: {message}"), ExitCode::from(NOTHING_JUDGED));
+    };
+    let mut command = String::from("refraction-explorer check");
+    if let Some(api) = dialect.api() {
+        command.push_str(&format!(" --api {}", api.name()));
+    }
+    command.push_str(&format!(
+        " --pattern '{}'",
+        suggestion.pattern.replace('\'', "'\\''")
+    ));
+    if suggestion.toward_origin {
+        command.push_str(" --convention toward-origin");
+    }
+    if let Some(path) = file {
+        command.push_str(&format!(" {}", path.display()));
+    }
+    if let Err(e) = writeln!(io::stdout().lock(), "{command}") {
+        return output_error("check", &e);
+    }
+    let hints: Vec<String> = suggest::hints(&suggestion, dialect)
+        .into_iter()
+        .map(|h| format!("check: {h}"))
+        .collect();
+    if hints.is_empty() {
+        return ExitCode::SUCCESS;
+    }
+    finished(&hints.join("\n"), ExitCode::SUCCESS)
 }

@@ -214,6 +214,7 @@ fn judge(dialect: Dialect, reading: &Reading, text: &str) -> Result<Table, Strin
             not_listed += 1;
         }
     }
+    session.end_of_input();
     Ok(Table {
         read_as,
         rows,

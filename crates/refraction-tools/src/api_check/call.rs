@@ -4,10 +4,12 @@
 
 use glam::DVec3;
 use refraction_i18n::{decimal, t};
+use refraction_kernel::Convention;
 use refraction_kernel::api::{Api, Args};
 
 use super::fields::{self, Dialect, names};
 use super::record::{Record, Value};
+use super::renderer::Renderer;
 use crate::solve::Precision;
 
 /// What the command line adds to every line.
@@ -21,6 +23,14 @@ pub struct Options {
     pub outside: Option<f64>,
     /// `--precision`: the student's working precision, unless a line says otherwise.
     pub precision: Option<Precision>,
+    /// `--convention`: how any renderer's `w` points, unless a line says (`check` without
+    /// `--api`).
+    pub convention: Option<Convention>,
+    /// `--normal`: the normal of lines that print none (a local frame's +z), taken as the
+    /// outward one, so that with `--inside` and `--outside` each ray's side follows from it.
+    pub normal: Option<[f64; 3]>,
+    /// `--renderer`: whose code the log comes from, for the words of the fixes.
+    pub renderer: Option<Renderer>,
 }
 
 impl Options {
@@ -32,7 +42,16 @@ impl Options {
             inside: None,
             outside: None,
             precision: None,
+            convention: None,
+            normal: None,
+            renderer: None,
         }
+    }
+
+    /// Whose code the log comes from: `--renderer`, else the API's.
+    #[must_use]
+    pub fn renderer(&self) -> Option<Renderer> {
+        self.renderer.or(self.dialect.api().map(Renderer::of_api))
     }
 
     /// `--inside` and `--outside`, when both are given.

@@ -90,18 +90,26 @@ impl Case {
             vector(record, name).ok_or_else(|| t!("check-field-missing", field = name, what = what))
         };
         let w = required("w", t!("check-what-incident"))?;
-        let n = required("n", t!("check-what-normal"))?;
-        let entering = match record.get("entering") {
-            Some(Value::Flag(b)) => Some(*b),
-            _ => None,
-        };
-        let (mu_i, mu_t) = indices(record, entering, options.sides())
-            .ok_or_else(|| t!("check-physics-no-indices"))?;
         let convention = match label(record, "convention") {
-            None => Convention::default(),
+            None => options.convention.unwrap_or_default(),
             Some(name) => Convention::from_name(&name)
                 .ok_or_else(|| t!("check-physics-unknown-convention", text = name))?,
         };
+        // A normal the line does not print is `--normal`'s, the outward one: it tells the side.
+        let (n, outward) = match (vector(record, "n"), options.normal) {
+            (Some(n), _) => (n, None),
+            (None, Some(n)) => (n, Some(n)),
+            (None, None) => (required("n", t!("check-what-normal"))?, None),
+        };
+        let entering = match record.get("entering") {
+            Some(Value::Flag(b)) => Some(*b),
+            _ => outward.map(|n| {
+                let along = DVec3::from_array(w).dot(DVec3::from_array(n));
+                (along < 0.0) == (convention == Convention::AlongRay)
+            }),
+        };
+        let (mu_i, mu_t) = indices(record, entering, options.sides())
+            .ok_or_else(|| t!("check-physics-no-indices"))?;
         let precision = match label(record, "precision").as_deref() {
             None => options.precision.unwrap_or_default(),
             Some("f64" | "double") => Precision::F64,
