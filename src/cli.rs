@@ -138,8 +138,8 @@ pub enum Command {
     /// Without --api, each line (JSON Lines from FILE or stdin, a --pattern log or --csv) has
     /// the `solve` fields "w", "n", "mu_i", "mu_t" (or "entering" with --inside and
     /// --outside), "t_yours" (your T: an array, a string such as "vec3(0.1, -0.9, 0)", or null
-    /// where your code reported total internal reflection) and optionally "ratio" (the ratio
-    /// your code used). With --api, each line is the call your code made in that API's own
+    /// where your code reported total internal reflection or sampled a reflection) and
+    /// optionally "ratio" (the ratio your code used). With --api, each line is the call your code made in that API's own
     /// terms (glsl: I, N, eta, result; pbrt: wi, n, eta, returned, wt, etap; rtiow: uv, n,
     /// etai_over_etat, refracted, front_face; mitsuba: wi, n, eta, wo), with optional truth
     /// "from", "to", "travel", "entering".
@@ -147,8 +147,10 @@ pub enum Command {
     /// Answers each line with "ok", "matches" (chosen, wrong_side, wrong_bend, reversed,
     /// total_internal_reflection or null), "explanation" and "mistakes"; the tally and the
     /// diagnosis of the whole log go to stderr (and with --summary to a JSON file). Exit
-    /// status 0 when every line is ok, 1 when any is not, 3 when no line was judged (nothing
-    /// matched the pattern, the input was empty, a CSV held only its header), 2 on an error.
+    /// status 0 when every line is ok, 1 when any is not (or the diagnosis finds a mistake),
+    /// 3 when no line was judged (nothing matched the pattern, the input was empty, a CSV held
+    /// only its header), 4 when no line is wrong but the log cannot be checked (the diagnosis
+    /// says "unchecked" and what to log), 2 on an error.
     Check {
         /// JSON Lines file to read (stdin when absent).
         file: Option<PathBuf>,

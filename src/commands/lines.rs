@@ -7,7 +7,7 @@ use std::process::ExitCode;
 
 use refraction_i18n::t;
 use refraction_tools::api_check::{Dialect, Format, Options, Pattern, Session, suggest};
-use refraction_tools::diagnosis::looks_like_summary;
+use refraction_tools::diagnosis::{Verdict, looks_like_summary};
 use refraction_tools::{self as jsonl, LinesError, solve as solver};
 
 use super::{fail, output, output_error};
@@ -33,6 +33,11 @@ pub fn solve() -> ExitCode {
 /// was empty or blank, a CSV held only its header): not a pass, so that a typo in a CI job's
 /// pattern fails it.
 pub const NOTHING_JUDGED: u8 = 3;
+
+/// The exit status of a `check` run whose lines are right as far as their API's rules go but
+/// cannot be told right or wrong (the diagnosis's `unchecked`: no `entering`, no indices): not a
+/// pass either, so that a CI job learns that its log checks nothing.
+pub const UNCHECKED: u8 = 4;
 
 /// The log `check` reads: `file`, or stdin when absent, with the name a message gives it.
 struct Input {
@@ -159,12 +164,12 @@ pub fn check(file: Option<&Path>, options: &Options, reading: &Reading<'_>) -> E
         tally.push(format!("check: {counted}"));
     }
     tally.extend(summary.sentences().iter().map(|s| format!("check: {s}")));
-    let status = if summary.judged == 0 {
-        ExitCode::from(NOTHING_JUDGED)
-    } else if answered && session.all_ok() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
+    let status = match summary.verdict() {
+        Verdict::NothingJudged => ExitCode::from(NOTHING_JUDGED),
+        _ if !answered || !session.all_ok() => ExitCode::from(1),
+        Verdict::Mistake => ExitCode::from(1),
+        Verdict::Unchecked => ExitCode::from(UNCHECKED),
+        Verdict::None => ExitCode::SUCCESS,
     };
     finished(&tally.join("\n"), status)
 }

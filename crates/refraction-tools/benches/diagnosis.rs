@@ -99,9 +99,9 @@ fn ranking(c: &mut Criterion) {
         b.iter(|| {
             let mut tally = LogTally::default();
             for evidence in kinds.iter().cycle().take(1_000_000) {
-                tally.add(black_box(evidence));
+                tally.add(black_box(evidence.clone()));
             }
-            black_box(tally.summary(Some(Api::Rtiow)))
+            black_box(tally.summary(Some(Api::Rtiow), None))
         });
     });
 }

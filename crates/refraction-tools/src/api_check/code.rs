@@ -80,6 +80,13 @@ impl Code {
         }
     }
 
+    /// The code's bit in a set of codes.
+    #[must_use]
+    pub fn bit(self) -> u16 {
+        let index = Self::ALL.iter().position(|&c| c == self).unwrap_or(0);
+        1 << index
+    }
+
     /// The code named `name` in JSON, if there is one.
     #[must_use]
     pub fn named(name: &str) -> Option<Self> {

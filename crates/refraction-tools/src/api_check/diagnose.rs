@@ -12,7 +12,8 @@ use super::explain;
 use super::readings::{Reading, Tolerance, readings, undo};
 use super::result::{Returns, Seen, returns, transmitted_by};
 use crate::check::{self, Match};
-use crate::diagnosis::{Evidence, Side};
+use crate::diagnosis::formula::{self, Situation};
+use crate::diagnosis::{self, Codes, Evidence, Missing, Side, Told, View};
 use crate::solve::{Precision, Request};
 use crate::vector_text::{angle, length};
 use refraction_model::log_map::{self, LinePoint};
@@ -76,12 +77,26 @@ pub struct Diagnosis {
     pub right: Meaning<f64>,
     /// The direction the ray leaves this hit in, as the student's code sent it.
     pub outgoing: DVec3,
+    /// Each reading's argument mistakes and the formula's variants that reproduce the line,
+    /// for the diagnosis of the whole log.
+    pub views: Vec<View>,
+    /// Mitsuba's F where `wo` is null although the ray refracts: a sampled reflection (the
+    /// whole log tells whether it is one).
+    pub sampled: Option<f64>,
+    /// Whether the code sent the ray along a direction (not the API's "nothing transmitted").
+    pub transmitted: bool,
 }
 
-/// The result mistake and what the result resembles, or `None` when it is the API's answer.
-fn finding<S: Real>(call: &Call, r: &Returns, seen: Seen) -> Option<(Code, Resemblance)> {
+/// The result mistake and what the result resembles, or `None` when it is the API's answer
+/// (or, for a `sampled` null, may be).
+fn finding<S: Real>(
+    call: &Call,
+    r: &Returns,
+    seen: Seen,
+    sampled: bool,
+) -> Option<(Code, Resemblance)> {
     let direction = match seen {
-        Seen::Nothing(_) if r.may_reflect() => None,
+        Seen::Nothing(_) if r.may_reflect() || sampled => None,
         Seen::Direction(v) if r.is_transmitted(v) => None,
         _ if without_flip(call, r, seen) => Some((Code::NoFlipInside, Resemblance::NoFlip)),
         Seen::NotFinite(_) if r.may_reflect() => Some((Code::MissedTir, Resemblance::NotFinite)),
@@ -236,11 +251,55 @@ fn alternatives(readings: &[Reading], result: Option<Code>) -> (Vec<Vec<Code>>, 
     (sets, all)
 }
 
+/// Mitsuba's reflectance F where its `wo` is logged null although the API transmits: the
+/// dielectric BSDF samples reflection with probability F on every call.
+fn sampled_reflection(call: &Call, returns: &Returns) -> Option<f64> {
+    let mitsuba = call.api == Api::Mitsuba && call.got == Got::Nothing;
+    (mitsuba && returns.transmitted.is_some()).then(|| {
+        let m = call.api.meaning(call.args);
+        formula::reflectance(&Situation {
+            travel: m.travel,
+            normal: m.normal,
+            mu: m.mu,
+        })
+    })
+}
+
+/// The views of the call for the diagnosis of the whole log: for each reading, its argument
+/// mistakes and the formula's variants that reproduce what came back in its situation (for a
+/// right call, those that agree with it).
+fn views(readings: &[Reading], seen: Seen, ok: bool, tolerance: f64) -> Vec<View> {
+    let outcome = match seen {
+        Seen::Direction(v) => formula::Outcome::Direction(v),
+        Seen::Nothing(_) | Seen::NotFinite(_) => formula::Outcome::Nothing,
+    };
+    readings
+        .iter()
+        .map(|reading| {
+            let m = reading.meaning;
+            let situation = Situation {
+                travel: m.travel,
+                normal: m.normal,
+                mu: m.mu,
+            };
+            View {
+                arguments: Codes::of(&reading.codes),
+                variants: if ok {
+                    formula::agreeing(&situation, tolerance)
+                } else {
+                    formula::reproducing(&situation, outcome, tolerance)
+                },
+            }
+        })
+        .collect()
+}
+
 fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
     let tolerance = Tolerance::new(&call.digits, S::EPSILON.to_f64());
     let returns = returns::<S>(call, &tolerance)?;
     let seen = returns.see(call.got);
-    let finding = finding::<S>(call, &returns, seen);
+    let sampled = sampled_reflection(call, &returns);
+    let finding = finding::<S>(call, &returns, seen, sampled.is_some());
     let readings = readings(call, &tolerance);
     let right = readings
         .first()
@@ -252,15 +311,23 @@ fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
         (Seen::Nothing("the reflection"), Got::Vector(v)) => v,
         (Seen::Nothing(_), _) => returns.reflection,
     };
+    let ok = !readings.is_empty() && mistakes.is_empty();
     let explanation = explain::explanation(&explain::Context {
         call,
         readings: &readings,
         finding,
         returns: &returns,
         seen,
+        sampled: sampled.filter(|_| ok),
     });
+    let views = views(
+        &readings,
+        seen,
+        ok,
+        check::MATCH_ANGLE.max(2.0 * returns.distance),
+    );
     Ok(Diagnosis {
-        ok: !readings.is_empty() && mistakes.is_empty(),
+        ok,
         mistakes,
         alternatives,
         explanation,
@@ -269,13 +336,17 @@ fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
         api_result: returns.json,
         right,
         outgoing,
+        views,
+        sampled: sampled.filter(|_| ok),
+        transmitted: matches!(seen, Seen::Direction(_)),
     })
 }
 
-/// What a judged call tells the diagnosis of the whole log: its explanations, the side the
-/// ray arrives from (as `entering` says, or for pbrt and Mitsuba, whose normal may face either
-/// way, the normal's side), whether it is past the critical angle, and, where `entering` is
-/// logged for pbrt or Mitsuba, whether the normal is the outward one.
+/// What a judged call tells the diagnosis of the whole log: its explanations and readings,
+/// the side the ray arrives from (as `entering` says, or for pbrt and Mitsuba, whose normal
+/// may face either way, the normal's side), whether it is past the critical angle, where
+/// `entering` is logged for pbrt or Mitsuba whether the normal is the outward one, whether it
+/// is a sampled reflection, and, for a right call whose ratio nothing checks, what is missing.
 #[must_use]
 pub fn evidence(call: &Call, diagnosis: &Diagnosis) -> Evidence {
     let either_side = matches!(call.api, Api::Pbrt | Api::Mitsuba);
@@ -295,16 +366,32 @@ pub fn evidence(call: &Call, diagnosis: &Diagnosis) -> Evidence {
     };
     let m = &diagnosis.right;
     let cos = m.travel.dot(m.normal) / (length(m.travel) * length(m.normal));
+    let logged_entering = call
+        .truth
+        .entering
+        .filter(|_| !call.truth.entering_from_normal);
+    let unchecked = match (call.truth.mu(), call.truth.sides_given) {
+        (Some(_), _) => None,
+        (None, true) => Some(Missing::Entering),
+        (None, false) => Some(Missing::Indices),
+    };
     Evidence {
         ok: diagnosis.ok,
         alternatives: diagnosis.alternatives.clone(),
+        views: diagnosis.views.clone(),
         side,
         past_critical: m.mu * m.mu * (1.0 - cos * cos) > 1.0,
-        normal_outward: call
-            .truth
-            .entering
+        normal_outward: logged_entering
             .filter(|_| either_side)
             .map(|entering| toward_origin == entering),
+        band: diagnosis::band(log_map::incidence_deg(m.travel, m.normal)),
+        transmitted: diagnosis.transmitted,
+        sample: diagnosis.sampled.map(f64::ln),
+        unchecked,
+        told: Told {
+            entering: logged_entering.is_some(),
+            travel: call.truth.travel.is_some(),
+        },
     }
 }
 

@@ -104,7 +104,9 @@ impl Tally {
     /// Counts a verdict: `ok`, or every mistake of its explanations, each once, ties
     /// included (`unexplained` when none fits).
     pub fn add_verdict(&mut self, diagnosis: &Diagnosis) {
-        if diagnosis.ok {
+        if diagnosis.sampled.is_some() {
+            self.add(SAMPLED);
+        } else if diagnosis.ok {
             self.add("ok");
         } else if diagnosis.mistakes.is_empty() {
             self.add("unexplained");
@@ -144,6 +146,11 @@ pub enum Format {
 /// The tally's name for log lines that did not match the pattern.
 // untranslated: the tally's name, as `check` prints it on stderr (the panel says it in words)
 pub const SKIPPED: &str = "skipped (not matching the pattern)";
+
+/// The tally's name for lines that logged nothing where the ray refracts, read as sampled
+/// reflections (the diagnosis of the whole log checks that they are).
+// untranslated: the tally's name, as `check` prints it on stderr (the panel says it in words)
+pub const SAMPLED: &str = "reflected (sampled)";
 
 /// A judged line: an API call and its diagnosis, or any renderer's refraction and its verdict.
 #[derive(Clone, Debug)]
@@ -366,7 +373,7 @@ impl Books {
     /// Counts a judged line in the tally and the diagnosis of the whole log.
     fn count(&mut self, judgement: &Judgement) {
         judgement.count(&mut self.tally);
-        self.log.add(&judgement.evidence());
+        self.log.add(judgement.evidence());
         self.all_ok &= judgement.ok();
     }
 
@@ -568,7 +575,10 @@ impl Session {
     /// The diagnosis of the lines so far, taken as one log.
     #[must_use]
     pub fn summary(&self) -> Summary {
-        self.books.log.summary(self.reader.options.dialect.api())
+        let options = &self.reader.options;
+        self.books
+            .log
+            .summary(options.dialect.api(), options.renderer())
     }
 
     /// Whether every line so far was right and every path finished left right.

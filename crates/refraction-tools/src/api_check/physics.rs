@@ -19,9 +19,10 @@ use super::call::Options;
 use super::code::Code;
 use super::record::{Record, Value};
 use crate::check::{self, MATCH_ANGLE, Match, Verdict};
-use crate::diagnosis::{Evidence, Side};
+use crate::diagnosis::formula::{self, Outcome, Situation};
+use crate::diagnosis::{self, Codes, Evidence, Side, Told, View};
 use crate::solve::{Precision, Request};
-use crate::vector_text::{angle, length};
+use crate::vector_text::{angle, length, spoken};
 use refraction_model::log_map::{self, LinePoint};
 
 /// One line of any renderer's log, ready to judge.
@@ -280,6 +281,41 @@ fn map_point(case: &Case, r: &Refraction<f64>, evidence: &Evidence) -> LinePoint
     }
 }
 
+/// The readings of a line for the diagnosis of the whole log: the ratio the code logged, if
+/// upside down, as its argument mistake, and the formula's variants that reproduce what it
+/// sent the ray along (for a right line, those that agree with it).
+fn views(case: &Case, r: &Refraction<f64>, ok: bool, logged: Outcome) -> Vec<View> {
+    let situation = Situation {
+        travel: r.travel,
+        normal: r.facing_normal,
+        mu: r.mu,
+    };
+    let arguments = match case.ratio {
+        Some(ratio) if (ratio * r.mu - 1.0).abs() <= 1e-4 * ratio.abs().max(1.0) && r.mu != 1.0 => {
+            Codes::of(&[Code::EtaInverted])
+        }
+        Some(ratio) if (ratio / r.mu - 1.0).abs() > 1e-4 => Codes::of(&[Code::NotTheApiResult]),
+        _ => Codes::default(),
+    };
+    let variants = if ok {
+        formula::agreeing(&situation, MATCH_ANGLE)
+    } else {
+        formula::reproducing(&situation, logged, MATCH_ANGLE)
+    };
+    vec![View {
+        arguments,
+        variants,
+    }]
+}
+
+/// What the code sent the ray along: nothing for a null, zero or non-finite T.
+fn logged(case: &Case) -> Outcome {
+    match case.yours.map(DVec3::from_array) {
+        Some(y) if y.is_finite() && y != DVec3::ZERO => Outcome::Direction(y),
+        _ => Outcome::Nothing,
+    }
+}
+
 /// Judges one case.
 ///
 /// # Errors
@@ -299,7 +335,16 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
     let wrong_ratio = case
         .ratio
         .is_some_and(|ratio| (ratio / r.mu - 1.0).abs() > 1e-4);
-    let ok = verdict.ok && !wrong_ratio;
+    let logged = logged(case);
+    // Nothing where the ray refracts: a reflection the renderer may have sampled.
+    let sampled = (!r.is_tir() && logged == Outcome::Nothing && !wrong_ratio).then(|| {
+        formula::reflectance(&Situation {
+            travel: r.travel,
+            normal: r.facing_normal,
+            mu: r.mu,
+        })
+    });
+    let ok = (verdict.ok && !wrong_ratio) || sampled.is_some();
     let alternatives = if ok {
         Vec::new()
     } else {
@@ -307,15 +352,29 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
     };
     let evidence = Evidence {
         ok,
-        alternatives: alternatives.clone(),
+        alternatives: if sampled.is_some() {
+            vec![vec![Code::FalseTir]]
+        } else {
+            alternatives.clone()
+        },
+        views: views(case, &r, ok && sampled.is_none(), logged),
         side: case
             .entering
             .map(|e| if e { Side::Outside } else { Side::Inside }),
         past_critical: r.is_tir(),
         normal_outward: None,
+        band: diagnosis::band(log_map::incidence_deg(r.travel, r.facing_normal)),
+        transmitted: matches!(logged, Outcome::Direction(_)) && !(r.is_tir() && verdict.ok),
+        sample: sampled.map(f64::ln),
+        unchecked: None,
+        told: Told {
+            entering: case.entering.is_some(),
+            travel: true,
+        },
     };
-    let explanation = match alternatives.first() {
-        Some(codes) if !ok && verdict.matches.is_none() => {
+    let explanation = match (alternatives.first(), sampled) {
+        (_, Some(f)) => t!("check-physics-sampled", f = spoken(f)),
+        (Some(codes), None) if !ok && verdict.matches.is_none() => {
             let meanings: Vec<String> = codes.iter().map(|c| c.meaning()).collect();
             let mistakes = meanings.join("; ");
             let said = t!("check-physics-explained", mistakes = mistakes);
@@ -328,6 +387,11 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
         verdict: Verdict {
             ok,
             explanation,
+            matches: if sampled.is_some() {
+                None
+            } else {
+                verdict.matches
+            },
             ..verdict
         },
         alternatives,
@@ -375,6 +439,7 @@ pub fn answer_line(judged: &Judged) -> String {
 pub fn tally_kind(judged: &Judged) -> &'static str {
     let v = &judged.verdict;
     match (v.ok, v.matches) {
+        (true, _) if judged.evidence.sample.is_some() => super::SAMPLED,
         (true, _) => "ok",
         // The right direction from the wrong logged ratio, or of the wrong length.
         (false, Some(Match::Chosen)) if judged.mistakes().contains(&Code::EtaInverted) => {
@@ -502,10 +567,18 @@ mod tests {
         let inverted = logged(60.0, true, &[Code::EtaInverted]);
         let judged = judge(&case(&inverted)).unwrap();
         assert_eq!(judged.alternatives, [vec![Code::EtaInverted]]);
-        // Nothing came back where the ray refracts: a false TIR.
+        // Nothing came back where the ray refracts: a sampled reflection on the line (the
+        // whole log tells), a false TIR for the diagnosis if the log never transmits there.
         let nothing = serde_json::json!({"w": [0.6, -0.8, 0], "n": [0, 1, 0], "entering": true, "t_yours": null});
         let judged = judge(&case(&nothing.to_string())).unwrap();
-        assert_eq!(judged.alternatives, [vec![Code::FalseTir]]);
+        assert!(
+            judged.verdict.ok && judged.alternatives.is_empty(),
+            "{judged:?}"
+        );
+        assert!(judged.verdict.explanation.contains("sampled"), "{judged:?}");
+        assert_eq!(judged.evidence.alternatives, [vec![Code::FalseTir]]);
+        assert!(judged.evidence.sample.is_some_and(|ln_f| ln_f < 0.0));
+        assert_eq!(tally_kind(&judged), crate::api_check::SAMPLED);
     }
 
     #[test]
