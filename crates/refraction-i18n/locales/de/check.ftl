@@ -336,8 +336,8 @@ check-right-sampled = Richtig als gezogene Reflexion: { $call } bricht hier ({ $
 check-physics-sampled = Nichts kam zurück, wo der Strahl gebrochen wird: richtig als mit Wahrscheinlichkeit F = { $f } gezogene Reflexion, wie Renderer sie protokollieren, die zufällig zwischen Reflexion und Brechung wählen. Die Diagnose des ganzen Protokolls prüft, dass der Code bei diesen Winkeln anderswo durchlässt.
 check-fix-in = { $fix } (in { $place })
 check-fix-part = { $part }; { $fix }
-check-sides-entering =  für Strahlen, die in das Objekt eintreten
-check-sides-leaving =  für Strahlen, die das Objekt verlassen
+check-sides-entering = {" "}für Strahlen, die in das Objekt eintreten
+check-sides-leaving = {" "}für Strahlen, die das Objekt verlassen
 check-part-ratio = T wird mit umgekehrtem Verhältnis gebrochen{ $sides }: 1/μ in jedem Teil, auch im Test auf Totalreflexion (die Variable mit μ oder der Ausdruck, der es wählt)
 check-part-across = der Teil von T quer zu N ist mit 1/μ statt μ skaliert (1/μ² des richtigen){ $sides }, der Teil längs N ist richtig: das Verhältnis, das den einfallenden Vektor multipliziert, ist umgekehrt
 check-part-along = der Teil von T längs N, cosθt = √(1 − μ²·sin²θi), kommt von 1/μ statt μ{ $sides } (ebenso der Test auf Totalreflexion), der Teil quer zu N ist richtig: das Verhältnis in cosθt ist umgekehrt
@@ -354,3 +354,5 @@ check-diagnosis-unchecked = Ohne zu wissen, von welcher Seite jeder Strahl kommt
 check-diagnosis-alike-no-field = Das Protokoll kann es nicht von { $alike } unterscheiden.
 check-unchecked-log-entering = Protokollieren Sie entering in jeder Zeile (true, wenn der Strahl in das Objekt eintritt; {"{"}!entering{"}"} liest ein Flag wie inside oder backfacing), oder from und to
 check-unchecked-pass-indices = Übergeben Sie --inside und --outside (die Indizes innen und außen) mit protokolliertem entering, oder bei pbrt und Mitsuba mit der nach außen zeigenden Normale; oder protokollieren Sie from und to
+check-mistake-across-sign = der Teil des Ergebnisses quer zur Normale hat das falsche Vorzeichen; der Teil längs der Normale ist richtig (das Ergebnis an der Normale gespiegelt)
+check-part-across-sign = der Teil von T quer zu N hat das falsche Vorzeichen (T an der Normale gespiegelt, falsch gebrochen), der Teil längs N ist richtig: das Minus vor Verhältnis mal einfallendem Vektor fehlt

@@ -336,8 +336,8 @@ check-right-sampled = Right as a sampled reflection: { $call } refracts here ({ 
 check-physics-sampled = Nothing came back where the ray refracts: right as a reflection sampled with probability F = { $f }, as renderers that choose reflection or refraction at random log it. The diagnosis of the whole log checks that the code transmits at these angles elsewhere.
 check-fix-in = { $fix } (in { $place })
 check-fix-part = { $part }; { $fix }
-check-sides-entering =  for rays entering the object
-check-sides-leaving =  for rays leaving the object
+check-sides-entering = {" "}for rays entering the object
+check-sides-leaving = {" "}for rays leaving the object
 check-part-ratio = T is refracted with the ratio upside down{ $sides }: 1/μ in every part, in the test for total internal reflection too (the variable holding μ, or the ternary choosing it)
 check-part-across = the part of T across N is scaled by 1/μ instead of μ (1/μ² of the right one){ $sides }, and the part along N is right: the ratio that multiplies the incident vector is upside down
 check-part-along = the part of T along N, cosθt = √(1 − μ²·sin²θi), comes from 1/μ instead of μ{ $sides } (so does the test for total internal reflection), and the part across N is right: the ratio in cosθt is upside down
@@ -354,3 +354,5 @@ check-diagnosis-unchecked = Cannot be checked without knowing which side each ra
 check-diagnosis-alike-no-field = The log cannot tell it from { $alike }.
 check-unchecked-log-entering = Log entering on each line (true when the ray enters the object; {"{"}!entering{"}"} reads a flag such as inside or backfacing), or from and to
 check-unchecked-pass-indices = Pass --inside and --outside (the indices inside and outside the object) with entering logged, or for pbrt and Mitsuba with the outward normal; or log from and to
+check-mistake-across-sign = the part of the result across the normal has the wrong sign; the part along it is right (the result mirrored across the normal)
+check-part-across-sign = the part of T across N has the wrong sign (T mirrored across the normal, bent the wrong way), and the part along N is right: the minus before the ratio times the incident vector is lost

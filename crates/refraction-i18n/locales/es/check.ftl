@@ -336,8 +336,8 @@ check-right-sampled = Correcto como reflexión muestreada: { $call } refracta aq
 check-physics-sampled = No volvió nada donde el rayo se refracta: correcto como reflexión muestreada con probabilidad F = { $f }, como la registran los renderizadores que eligen al azar entre reflexión y refracción. El diagnóstico del registro completo comprueba que el código transmite en estos ángulos en otras líneas.
 check-fix-in = { $fix } (en { $place })
 check-fix-part = { $part }; { $fix }
-check-sides-entering =  para los rayos que entran en el objeto
-check-sides-leaving =  para los rayos que salen del objeto
+check-sides-entering = {" "}para los rayos que entran en el objeto
+check-sides-leaving = {" "}para los rayos que salen del objeto
 check-part-ratio = T se refracta con la razón invertida{ $sides }: 1/μ en cada parte, también en la prueba de reflexión total interna (la variable con μ, o el ternario que la elige)
 check-part-across = la parte de T transversal a N está escalada por 1/μ en vez de μ (1/μ² de la correcta){ $sides }, y la parte a lo largo de N es correcta: la razón que multiplica el vector incidente está invertida
 check-part-along = la parte de T a lo largo de N, cosθt = √(1 − μ²·sin²θi), sale de 1/μ en vez de μ{ $sides } (también la prueba de reflexión total interna), y la parte transversal a N es correcta: la razón en cosθt está invertida
@@ -354,3 +354,5 @@ check-diagnosis-unchecked = No se puede comprobar sin saber de qué lado viene c
 check-diagnosis-alike-no-field = El registro no puede distinguirlo de { $alike }.
 check-unchecked-log-entering = Registre entering en cada línea (true cuando el rayo entra en el objeto; {"{"}!entering{"}"} lee un indicador como inside o backfacing), o from y to
 check-unchecked-pass-indices = Pase --inside y --outside (los índices dentro y fuera del objeto) con entering registrado, o en pbrt y Mitsuba con la normal hacia fuera; o registre from y to
+check-mistake-across-sign = la parte del resultado transversal a la normal tiene el signo equivocado; la parte a lo largo de ella es correcta (el resultado reflejado respecto a la normal)
+check-part-across-sign = la parte de T transversal a N tiene el signo equivocado (T reflejado respecto a la normal, desviado al revés), y la parte a lo largo de N es correcta: falta el menos delante de la razón por el vector incidente

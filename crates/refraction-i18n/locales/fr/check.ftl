@@ -336,8 +336,8 @@ check-right-sampled = Juste comme réflexion tirée : { $call } réfracte ici (
 check-physics-sampled = Rien n’est revenu là où le rayon se réfracte : juste comme réflexion tirée avec la probabilité F = { $f }, comme l’écrivent les moteurs qui choisissent au hasard entre réflexion et réfraction. Le diagnostic du journal entier vérifie que le code transmet à ces angles ailleurs.
 check-fix-in = { $fix } (dans { $place })
 check-fix-part = { $part } ; { $fix }
-check-sides-entering =  pour les rayons qui entrent dans l’objet
-check-sides-leaving =  pour les rayons qui sortent de l’objet
+check-sides-entering = {" "}pour les rayons qui entrent dans l’objet
+check-sides-leaving = {" "}pour les rayons qui sortent de l’objet
 check-part-ratio = T est réfracté avec le rapport inversé{ $sides } : 1/μ dans chaque partie, dans le test de réflexion totale interne aussi (la variable qui porte μ, ou le ternaire qui la choisit)
 check-part-across = la partie de T transverse à N est multipliée par 1/μ au lieu de μ (1/μ² de la bonne){ $sides }, et la partie le long de N est juste : le rapport qui multiplie le vecteur incident est inversé
 check-part-along = la partie de T le long de N, cosθt = √(1 − μ²·sin²θi), vient de 1/μ au lieu de μ{ $sides } (le test de réflexion totale interne aussi), et la partie transverse à N est juste : le rapport dans cosθt est inversé
@@ -354,3 +354,5 @@ check-diagnosis-unchecked = Impossible à vérifier sans savoir de quel côté v
 check-diagnosis-alike-no-field = Le journal ne peut pas le distinguer de { $alike }.
 check-unchecked-log-entering = Écrivez entering sur chaque ligne (true quand le rayon entre dans l’objet ; {"{"}!entering{"}"} lit un indicateur comme inside ou backfacing), ou from et to
 check-unchecked-pass-indices = Passez --inside et --outside (les indices à l’intérieur et à l’extérieur de l’objet) avec entering écrit, ou pour pbrt et Mitsuba avec la normale sortante ; ou écrivez from et to
+check-mistake-across-sign = la partie du résultat transverse à la normale a le mauvais signe ; la partie le long de la normale est juste (le résultat symétrique par rapport à la normale)
+check-part-across-sign = la partie de T transverse à N a le mauvais signe (T symétrique par rapport à la normale, dévié du mauvais côté), et la partie le long de N est juste : le moins devant le rapport fois le vecteur incident est perdu

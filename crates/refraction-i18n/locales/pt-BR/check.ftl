@@ -336,8 +336,8 @@ check-right-sampled = Certo como reflexão amostrada: { $call } refrata aqui ({ 
 check-physics-sampled = Nada voltou onde o raio refrata: certo como reflexão amostrada com probabilidade F = { $f }, como a registram os renderizadores que escolhem ao acaso entre reflexão e refração. O diagnóstico do log inteiro verifica que o código transmite nesses ângulos em outras linhas.
 check-fix-in = { $fix } (em { $place })
 check-fix-part = { $part }; { $fix }
-check-sides-entering =  para os raios que entram no objeto
-check-sides-leaving =  para os raios que saem do objeto
+check-sides-entering = {" "}para os raios que entram no objeto
+check-sides-leaving = {" "}para os raios que saem do objeto
 check-part-ratio = T é refratado com a razão invertida{ $sides }: 1/μ em cada parte, também no teste de reflexão interna total (a variável com μ, ou o ternário que a escolhe)
 check-part-across = a parte de T transversal a N está escalada por 1/μ em vez de μ (1/μ² da certa){ $sides }, e a parte ao longo de N está certa: a razão que multiplica o vetor incidente está invertida
 check-part-along = a parte de T ao longo de N, cosθt = √(1 − μ²·sin²θi), vem de 1/μ em vez de μ{ $sides } (o teste de reflexão interna total também), e a parte transversal a N está certa: a razão em cosθt está invertida
@@ -354,3 +354,5 @@ check-diagnosis-unchecked = Não pode ser verificado sem saber de que lado vem c
 check-diagnosis-alike-no-field = O log não consegue distingui-lo de { $alike }.
 check-unchecked-log-entering = Registre entering em cada linha (true quando o raio entra no objeto; {"{"}!entering{"}"} lê um indicador como inside ou backfacing), ou from e to
 check-unchecked-pass-indices = Passe --inside e --outside (os índices dentro e fora do objeto) com entering registrado, ou no pbrt e no Mitsuba com a normal para fora; ou registre from e to
+check-mistake-across-sign = a parte do resultado transversal à normal tem o sinal errado; a parte ao longo dela está certa (o resultado espelhado em relação à normal)
+check-part-across-sign = a parte de T transversal a N tem o sinal errado (T espelhado em relação à normal, desviado ao contrário), e a parte ao longo de N está certa: falta o menos antes da razão vezes o vetor incidente

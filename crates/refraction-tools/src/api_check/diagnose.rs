@@ -80,8 +80,8 @@ pub struct Diagnosis {
     /// Each reading's argument mistakes and the formula's variants that reproduce the line,
     /// for the diagnosis of the whole log.
     pub views: Vec<View>,
-    /// Mitsuba's F where `wo` is null although the ray refracts: a sampled reflection (the
-    /// whole log tells whether it is one).
+    /// Mitsuba's F where `wo` is null although the API refracts: a sampled reflection if the
+    /// call is right (the whole log tells whether it is one).
     pub sampled: Option<f64>,
     /// Whether the code sent the ray along a direction (not the API's "nothing transmitted").
     pub transmitted: bool,
@@ -320,10 +320,11 @@ fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
         seen,
         sampled: sampled.filter(|_| ok),
     });
+    // A sampled reflection's readings are of what it logged: nothing.
     let views = views(
         &readings,
         seen,
-        ok,
+        ok && sampled.is_none(),
         check::MATCH_ANGLE.max(2.0 * returns.distance),
     );
     Ok(Diagnosis {
@@ -337,7 +338,7 @@ fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
         right,
         outgoing,
         views,
-        sampled: sampled.filter(|_| ok),
+        sampled,
         transmitted: matches!(seen, Seen::Direction(_)),
     })
 }
@@ -375,9 +376,16 @@ pub fn evidence(call: &Call, diagnosis: &Diagnosis) -> Evidence {
         (None, true) => Some(Missing::Entering),
         (None, false) => Some(Missing::Indices),
     };
+    // A reflection read as sampled is a false total internal reflection if the log shows
+    // that the code never transmits at its angles.
+    let alternatives = if diagnosis.ok && diagnosis.sampled.is_some() {
+        vec![vec![Code::FalseTir]]
+    } else {
+        diagnosis.alternatives.clone()
+    };
     Evidence {
         ok: diagnosis.ok,
-        alternatives: diagnosis.alternatives.clone(),
+        alternatives,
         views: diagnosis.views.clone(),
         side,
         past_critical: m.mu * m.mu * (1.0 - cos * cos) > 1.0,

@@ -152,7 +152,8 @@ fn argument_sentence(ctx: &Context<'_>, reading: &Reading, code: Code) -> String
         | Code::NoFlipInside
         | Code::NormalTermSign
         | Code::OtherRoot
-        | Code::FalseTir => String::new(),
+        | Code::FalseTir
+        | Code::AcrossSign => String::new(),
     }
 }
 

@@ -92,32 +92,44 @@ pub fn check_record(record: &Record, options: &Options) -> Result<(Call, Diagnos
 /// Counts of verdicts by mistake, for the summary on stderr.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Tally {
-    counts: BTreeMap<&'static str, usize>,
+    counts: BTreeMap<String, usize>,
+}
+
+/// The tally's name for a line whose explanations tie: each explanation's codes joined by
+/// `+`, the explanations by `|` (`eta_inverted|normal_not_facing`): one bug, which the line
+/// alone cannot name.
+// untranslated: the tally's codes, as `check` prints them on stderr
+fn tied(alternatives: &[Vec<Code>]) -> String {
+    let names: Vec<String> = alternatives
+        .iter()
+        .map(|codes| codes.iter().map(|c| c.name()).collect::<Vec<_>>().join("+"))
+        .collect();
+    names.join("|")
 }
 
 impl Tally {
     /// Counts one more `kind`.
-    pub fn add(&mut self, kind: &'static str) {
-        *self.counts.entry(kind).or_default() += 1;
+    pub fn add(&mut self, kind: &str) {
+        *self.counts.entry(kind.to_owned()).or_default() += 1;
     }
 
-    /// Counts a verdict: `ok`, or every mistake of its explanations, each once, ties
-    /// included (`unexplained` when none fits).
+    /// Counts a verdict: `ok`, a sampled reflection, or the line's explanations as one kind,
+    /// ties joined (`unexplained` when none fits).
     pub fn add_verdict(&mut self, diagnosis: &Diagnosis) {
-        if diagnosis.sampled.is_some() {
+        if diagnosis.ok && diagnosis.sampled.is_some() {
             self.add(SAMPLED);
         } else if diagnosis.ok {
             self.add("ok");
-        } else if diagnosis.mistakes.is_empty() {
+        } else if diagnosis.alternatives.is_empty() {
             self.add("unexplained");
         } else {
-            diagnosis.mistakes.iter().for_each(|c| self.add(c.name()));
+            self.add(&tied(&diagnosis.alternatives));
         }
     }
 
     /// Each kind counted and its count, in the summary's order.
-    pub fn counts(&self) -> impl Iterator<Item = (&'static str, usize)> + '_ {
-        self.counts.iter().map(|(kind, n)| (*kind, *n))
+    pub fn counts(&self) -> impl Iterator<Item = (&str, usize)> + '_ {
+        self.counts.iter().map(|(kind, n)| (kind.as_str(), *n))
     }
 
     /// `2 ok, 1 eta_inverted, ...`.

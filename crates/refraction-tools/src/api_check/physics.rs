@@ -337,14 +337,14 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
         .is_some_and(|ratio| (ratio / r.mu - 1.0).abs() > 1e-4);
     let logged = logged(case);
     // Nothing where the ray refracts: a reflection the renderer may have sampled.
-    let sampled = (!r.is_tir() && logged == Outcome::Nothing && !wrong_ratio).then(|| {
+    let sampled = (!r.is_tir() && logged == Outcome::Nothing).then(|| {
         formula::reflectance(&Situation {
             travel: r.travel,
             normal: r.facing_normal,
             mu: r.mu,
         })
     });
-    let ok = (verdict.ok && !wrong_ratio) || sampled.is_some();
+    let ok = (verdict.ok || sampled.is_some()) && !wrong_ratio;
     let alternatives = if ok {
         Vec::new()
     } else {
@@ -352,7 +352,7 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
     };
     let evidence = Evidence {
         ok,
-        alternatives: if sampled.is_some() {
+        alternatives: if ok && sampled.is_some() {
             vec![vec![Code::FalseTir]]
         } else {
             alternatives.clone()
@@ -373,7 +373,7 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
         },
     };
     let explanation = match (alternatives.first(), sampled) {
-        (_, Some(f)) => t!("check-physics-sampled", f = spoken(f)),
+        (_, Some(f)) if ok => t!("check-physics-sampled", f = spoken(f)),
         (Some(codes), None) if !ok && verdict.matches.is_none() => {
             let meanings: Vec<String> = codes.iter().map(|c| c.meaning()).collect();
             let mistakes = meanings.join("; ");
@@ -387,7 +387,7 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
         verdict: Verdict {
             ok,
             explanation,
-            matches: if sampled.is_some() {
+            matches: if ok && sampled.is_some() {
                 None
             } else {
                 verdict.matches

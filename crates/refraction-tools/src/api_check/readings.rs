@@ -125,7 +125,8 @@ pub fn undo(codes: &[Code], args: Args<f64>) -> Args<f64> {
             | Code::NoFlipInside
             | Code::NormalTermSign
             | Code::OtherRoot
-            | Code::FalseTir => {}
+            | Code::FalseTir
+            | Code::AcrossSign => {}
         }
     }
     right

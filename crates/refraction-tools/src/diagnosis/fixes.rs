@@ -74,6 +74,7 @@ fn part(fix: &Fix) -> Option<String> {
         Slip::RatioAlong => t!("check-part-along", sides = sides),
         Slip::Normal => t!("check-part-normal", sides = sides),
         Slip::Incident => t!("check-part-incident"),
+        Slip::AcrossSign => t!("check-part-across-sign"),
         Slip::Root => t!("check-part-root"),
         Slip::Term => t!("check-part-term", sides = sides),
         Slip::NoFlip => t!("check-part-no-flip"),
@@ -94,9 +95,7 @@ fn generic(fix: &Fix) -> String {
     match (fix.slip, fix.code) {
         (Some(Slip::RatioAcross), _) => t!("check-fix-generic-ratio-across"),
         (Some(Slip::RatioAlong), _) => t!("check-fix-generic-ratio-along"),
-        (Some(Slip::Incident), _) if fix.location == Location::Code => {
-            t!("check-fix-generic-across-sign")
-        }
+        (Some(Slip::AcrossSign), _) => t!("check-fix-generic-across-sign"),
         (_, Code::FalseTir) if fix.sides != Sides::Both => t!("check-fix-generic-never-transmits"),
         (_, code) => generic_code(code),
     }
@@ -115,6 +114,7 @@ fn generic_code(code: Code) -> String {
         Code::FalseTir => t!("check-fix-generic-false-tir"),
         Code::NotUnitInput => t!("check-fix-generic-not-unit-input"),
         Code::NotTheApiResult => t!("check-fix-generic-not-the-api-result"),
+        Code::AcrossSign => t!("check-fix-generic-across-sign"),
     }
 }
 
@@ -152,15 +152,14 @@ enum About {
 
 fn about(fix: &Fix) -> About {
     match (fix.slip, fix.code, fix.location) {
-        (Some(Slip::Ratio), _, Location::Arguments) => About::RatioPassed,
+        (Some(Slip::Ratio), _, Location::Arguments)
+        | (None, Code::EtaInverted, Location::Arguments) => About::RatioPassed,
         (Some(Slip::Ratio), ..) | (None, Code::EtaInverted, _) => About::RatioChosen,
         (Some(Slip::RatioAcross), ..) => About::Across,
         (Some(Slip::RatioAlong), ..) => About::Along(fix.sides),
         (Some(Slip::Normal), ..) | (None, Code::NormalNotFacing, _) => About::Normal,
-        (Some(Slip::Incident), _, Location::Arguments) | (None, Code::IncidentReversed, _) => {
-            About::IncidentPassed
-        }
-        (Some(Slip::Incident), ..) => About::AcrossSign,
+        (Some(Slip::Incident), ..) | (None, Code::IncidentReversed, _) => About::IncidentPassed,
+        (Some(Slip::AcrossSign), ..) | (None, Code::AcrossSign, _) => About::AcrossSign,
         (Some(Slip::Root), ..) | (None, Code::OtherRoot, _) => About::Root,
         (Some(Slip::Term), ..) | (None, Code::NormalTermSign, _) => About::Term,
         (Some(Slip::NoFlip), ..) | (None, Code::NoFlipInside, _) => About::NoFlip,

@@ -61,13 +61,16 @@ pub struct View {
 /// How an API takes its arguments, which decides what an argument mistake does to the formula.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Family {
-    /// The incident vector along the ray and a normal that must face it: GLSL, the book, and
-    /// any renderer's own code (`check` without `--api`).
+    /// The incident vector along the ray and a normal that must face it: GLSL, the book.
     Along,
     /// `wi` back along the ray and a ratio relative to the normal given (either side): pbrt,
     /// Mitsuba. An inward normal there is an inverted ratio, and a reversed `wi` refracts as
     /// if from the other side.
     Back,
+    /// Any renderer's own refraction (`check` without `--api`): as [`Family::Along`], but
+    /// no argument is logged as the API's, so a normal or an incident vector is wrong in the
+    /// code itself.
+    Own,
 }
 
 impl Family {
@@ -76,7 +79,8 @@ impl Family {
     pub fn of(api: Option<Api>) -> Self {
         match api {
             Some(Api::Pbrt | Api::Mitsuba) => Self::Back,
-            Some(Api::Glsl | Api::Rtiow) | None => Self::Along,
+            Some(Api::Glsl | Api::Rtiow) => Self::Along,
+            None => Self::Own,
         }
     }
 }
@@ -94,6 +98,9 @@ pub enum Slip {
     Normal,
     /// The incident vector the wrong way round.
     Incident,
+    /// The sign of the part across N in the code's own formula (Mitsuba's `-eta_ti * wi.x()`
+    /// written without its minus).
+    AcrossSign,
     /// The square root's sign: cosθt on the ray's own side.
     Root,
     /// The term along N subtracted instead of added.
@@ -105,12 +112,13 @@ pub enum Slip {
 
 impl Slip {
     /// Every slip.
-    pub const ALL: [Self; 8] = [
+    pub const ALL: [Self; 9] = [
         Self::Ratio,
         Self::RatioAcross,
         Self::RatioAlong,
         Self::Normal,
         Self::Incident,
+        Self::AcrossSign,
         Self::Root,
         Self::Term,
         Self::NoFlip,
@@ -124,7 +132,7 @@ impl Slip {
             Self::Ratio | Self::RatioAcross | Self::RatioAlong | Self::Normal | Self::Term => {
                 &[Sides::Both, Sides::Entering, Sides::Leaving]
             }
-            Self::Incident | Self::Root => &[Sides::Both],
+            Self::Incident | Self::AcrossSign | Self::Root => &[Sides::Both],
             Self::NoFlip => &[Sides::Leaving],
         }
     }
@@ -137,10 +145,10 @@ impl Slip {
             (Self::Ratio, _) | (Self::Normal, Family::Back) => ratio,
             (Self::RatioAcross, _) => Variant::ACROSS,
             (Self::RatioAlong, _) => Variant::ALONG,
-            (Self::Normal | Self::Root, Family::Along) | (Self::Root, Family::Back) => {
-                Variant::ROOT
+            (Self::Normal, Family::Along | Family::Own) | (Self::Root, _) => Variant::ROOT,
+            (Self::Incident, Family::Along | Family::Own) | (Self::AcrossSign, _) => {
+                Variant::INCIDENT
             }
-            (Self::Incident, Family::Along) => Variant::INCIDENT,
             (Self::Incident, Family::Back) => ratio.with(Variant::REVERSED),
             (Self::Term, _) => Variant::TERM,
             (Self::NoFlip, _) => ratio.with(Variant::ROOT),
@@ -151,12 +159,20 @@ impl Slip {
     #[must_use]
     pub fn arguments(self, family: Family) -> Codes {
         match (self, family) {
-            (Self::Ratio, Family::Along) => Codes::of(&[Code::EtaInverted]),
+            (Self::Ratio, Family::Along | Family::Own) => Codes::of(&[Code::EtaInverted]),
             (Self::Ratio, Family::Back) => Codes::of(&[Code::EtaInverted, Code::NormalNotFacing]),
             (Self::Normal, _) => Codes::of(&[Code::NormalNotFacing]),
             (Self::Incident, _) => Codes::of(&[Code::IncidentReversed]),
             _ => Codes::default(),
         }
+    }
+
+    /// Whether the slip can only be in the arguments a call passes (an API's normal or
+    /// incident vector): where the log has them, the line must show it there; the same change
+    /// made inside the code is another slip (the root's sign, the sign across N).
+    #[must_use]
+    pub fn argument_only(self, family: Family) -> bool {
+        family != Family::Own && matches!(self, Self::Normal | Self::Incident)
     }
 
     /// The code a finding of this slip is reported as.
@@ -170,6 +186,7 @@ impl Slip {
                 Code::NormalNotFacing
             }
             (Self::Incident, _) => Code::IncidentReversed,
+            (Self::AcrossSign, _) => Code::AcrossSign,
             (Self::Root, _) => Code::OtherRoot,
             (Self::Term, Sides::Both) => Code::NormalTermSign,
             (Self::NoFlip, _) => Code::NoFlipInside,
@@ -267,6 +284,28 @@ impl Hypothesis {
     /// Whether the hypothesis reproduces a line read as `views`, on `side` (`None`: either).
     #[must_use]
     pub fn explains(&self, family: Family, views: &[View], side: Option<Side>) -> bool {
+        self.reading(family, views, side, |view, variant| {
+            view.variants & variant.bit() != 0
+        })
+    }
+
+    /// Whether the hypothesis allows the arguments of one of `views` (a sampled reflection
+    /// shows nothing else: whatever the code would have transmitted, it reflected).
+    #[must_use]
+    pub fn allows(&self, family: Family, views: &[View], side: Option<Side>) -> bool {
+        self.reading(family, views, side, |_, _| true)
+    }
+
+    /// Whether one of `views`, on a side `side` allows, has arguments the hypothesis allows
+    /// (and shows its mistakes that can only be in arguments) and passes `outcome` with the
+    /// variant it computes there.
+    fn reading(
+        &self,
+        family: Family,
+        views: &[View],
+        side: Option<Side>,
+        outcome: impl Fn(&View, Variant) -> bool,
+    ) -> bool {
         let allowed = self.arguments(family);
         let sides: &[bool] = match side {
             Some(Side::Outside) => &[true],
@@ -275,9 +314,14 @@ impl Hypothesis {
         };
         views.iter().any(|view| {
             view.arguments.within(allowed)
-                && sides
-                    .iter()
-                    .any(|&entering| view.variants & self.variant(family, entering).bit() != 0)
+                && sides.iter().any(|&entering| {
+                    let shown = self
+                        .mistakes
+                        .iter()
+                        .filter(|m| m.sides.touches(entering) && m.slip.argument_only(family))
+                        .all(|m| view.arguments.meets(m.slip.arguments(family)));
+                    shown && outcome(view, self.variant(family, entering))
+                })
         })
     }
 
@@ -350,7 +394,7 @@ mod tests {
     fn the_space_holds_each_mistake_and_each_pair_once() {
         let all = all();
         let singles = all.iter().filter(|h| h.mistakes.len() == 1).count();
-        assert_eq!(singles, 3 * 5 + 2 + 1);
+        assert_eq!(singles, 3 * 5 + 3 + 1);
         assert!(all.len() > 150, "{}", all.len());
         let distinct: std::collections::HashSet<&Hypothesis> = all.iter().collect();
         assert_eq!(distinct.len(), all.len());
@@ -364,6 +408,7 @@ mod tests {
             (Slip::RatioAlong, Sides::Leaving, Code::EtaInverted),
             (Slip::Normal, Sides::Leaving, Code::NormalNotFacing),
             (Slip::Incident, Sides::Both, Code::IncidentReversed),
+            (Slip::AcrossSign, Sides::Both, Code::AcrossSign),
             (Slip::Root, Sides::Both, Code::OtherRoot),
             (Slip::Term, Sides::Both, Code::NormalTermSign),
             (Slip::Term, Sides::Leaving, Code::NormalNotFacing),

@@ -6,7 +6,7 @@ use refraction_kernel::api::Api;
 
 use super::fixes::{self, Fix, Location};
 use super::hypotheses::{self, Family, Hypothesis, Sides, Slip};
-use super::{Census, Finding, Kind, LogTally, Missing, NONE, UNCHECKED};
+use super::{Band, Census, Finding, Kind, LogTally, Missing, NONE, UNCHECKED};
 use crate::api_check::{Code, Renderer};
 
 /// What is ranked: a hypothesis of the formula's mistakes, or a set of mistakes some lines
@@ -121,6 +121,23 @@ impl Lines<'_> {
         kind.sample.is_some() && !self.tally.failing(kind)
     }
 
+    /// Whether `h` reproduces kind `i`: its views; for a reflection in a band where the log
+    /// samples reflection, only its arguments (the reflection was drawn, whatever T was).
+    fn explains(&self, h: &Hypothesis, i: usize) -> bool {
+        let kind = self.kinds[i].0;
+        let sampled = kind.sample.is_some_and(|band| {
+            self.tally
+                .bands
+                .get(&(kind.side, band))
+                .is_some_and(Band::sampling)
+        });
+        if sampled {
+            h.allows(self.family, &kind.views, kind.side)
+        } else {
+            h.explains(self.family, &kind.views, kind.side)
+        }
+    }
+
     /// For every hypothesis, the right lines it would have made wrong.
     fn contradictions(&self) -> Vec<usize> {
         hypotheses::all()
@@ -130,9 +147,7 @@ impl Lines<'_> {
                     .iter()
                     .enumerate()
                     .filter(|(i, (kind, _))| {
-                        !self.tally.failing(kind)
-                            && !self.neutral(*i)
-                            && !h.explains(self.family, &kind.views, kind.side)
+                        !self.tally.failing(kind) && !self.neutral(*i) && !self.explains(h, *i)
                     })
                     .map(|(_, (_, count))| count)
                     .sum()
@@ -149,10 +164,7 @@ impl Lines<'_> {
                 let kinds: Vec<usize> = left
                     .iter()
                     .copied()
-                    .filter(|&i| {
-                        let kind = self.kinds[i].0;
-                        h.explains(self.family, &kind.views, kind.side)
-                    })
+                    .filter(|&i| self.explains(h, i))
                     .collect();
                 (!kinds.is_empty()).then(|| self.scored(Candidate::Formula(h), kinds, contradicted))
             })
@@ -228,7 +240,7 @@ impl Lines<'_> {
             .sum();
         let inward = match &scored.candidate {
             Candidate::Formula(h) => {
-                self.family == Family::Along
+                self.family != Family::Back
                     && scored.explained.outside > 0
                     && h.mistakes
                         .iter()
@@ -299,12 +311,23 @@ impl Lines<'_> {
                     location,
                 }
             }
-            Candidate::Line(_) => Fix {
-                code: best.codes[0],
-                slip: None,
-                sides: self.sides_of(&best.explained),
-                location: Location::Code,
-            },
+            Candidate::Line(_) => {
+                // A call's own explanations name its arguments' mistakes as they were passed.
+                let argument = matches!(
+                    best.codes[0],
+                    Code::EtaInverted | Code::IncidentReversed | Code::NormalNotFacing
+                );
+                Fix {
+                    code: best.codes[0],
+                    slip: None,
+                    sides: self.sides_of(&best.explained),
+                    location: if argument && self.api.is_some() {
+                        Location::Arguments
+                    } else {
+                        Location::Code
+                    },
+                }
+            }
         }
     }
 
@@ -459,7 +482,7 @@ fn prior(api: Option<Api>, code: Code) -> u32 {
         (Some(Api::Glsl | Api::Rtiow) | None, Code::NormalNotFacing) => 1,
         (Some(Api::Pbrt | Api::Mitsuba), Code::EtaInverted) => 0,
         (Some(Api::Pbrt | Api::Mitsuba), Code::IncidentReversed) => 1,
-        (_, Code::NoFlipInside | Code::NormalTermSign | Code::OtherRoot) => 2,
+        (_, Code::NoFlipInside | Code::NormalTermSign | Code::OtherRoot | Code::AcrossSign) => 2,
         (_, Code::IncidentReversed) => 3,
         (Some(Api::Pbrt | Api::Mitsuba), Code::NormalNotFacing) => 3,
         _ => 4,

@@ -130,7 +130,10 @@ fn each_hypothesis_is_found_alone_and_named() {
         (mistake(Slip::RatioAlong, Sides::Leaving), "eta_inverted"),
         (mistake(Slip::RatioAlong, Sides::Both), "eta_inverted"),
         (mistake(Slip::Normal, Sides::Leaving), "normal_not_facing"),
-        (mistake(Slip::Incident, Sides::Both), "incident_reversed"),
+        // Without the arguments logged, a reversed incident vector is the part across N with
+        // the wrong sign: the likelier line of code (a lost minus) names it.
+        (mistake(Slip::Incident, Sides::Both), "across_sign"),
+        (mistake(Slip::AcrossSign, Sides::Both), "across_sign"),
         (mistake(Slip::Term, Sides::Both), "normal_term_sign"),
         (mistake(Slip::Term, Sides::Leaving), "normal_not_facing"),
         (mistake(Slip::NoFlip, Sides::Leaving), "no_flip_inside"),
