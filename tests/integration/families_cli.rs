@@ -5,55 +5,23 @@
 //! right, and say `none` for the bug-free log, sampled reflections included. Logs that cannot
 //! tell a right line from a wrong one say so, and what to log.
 
-use std::process::Command;
-
-use serde_json::Value;
-
-use crate::cli;
+use crate::cli::{self, Checked};
 use crate::renderer_families::{self, Bug, Family, Line};
 use crate::renderers::{self, Renderer};
 
 const RECORDS: usize = 300;
 
-/// What `check` made of a log.
-struct Checked {
-    summary: Value,
-    answers: Vec<Value>,
-    stderr: String,
-    status: i32,
+fn check(args: &[&str], text: &str, name: &str) -> Checked {
+    cli::check_log("families", name, args, text)
 }
 
-fn check(args: &[&str], text: &str, name: &str) -> Checked {
-    let folder = cli::folder("families", name);
-    let (input, summary) = (folder.join("log.txt"), folder.join("s.json"));
-    std::fs::write(&input, text).unwrap();
-    if let Some(keep) = std::env::var_os("FAMILIES_KEEP") {
-        std::fs::write(
-            std::path::Path::new(&keep).join(format!("{name}.log")),
-            text,
-        )
-        .unwrap();
-    }
-    let output = Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
-        .arg("check")
-        .args(args)
-        .arg("--summary")
-        .arg(&summary)
-        .arg(&input)
-        .output()
-        .unwrap();
-    let checked = Checked {
-        summary: serde_json::from_str(&std::fs::read_to_string(&summary).unwrap()).unwrap(),
-        answers: cli::answers(&output),
-        stderr: String::from_utf8_lossy(&output.stderr).into_owned(),
-        status: output.status.code().unwrap_or(-1),
-    };
-    std::fs::remove_dir_all(&folder).unwrap();
-    checked
+/// The words of a command line written as one string.
+fn words(line: &str) -> Vec<&str> {
+    line.split_whitespace().collect()
 }
 
 fn family_args(family: Family) -> Vec<&'static str> {
-    let mut args = family.options().to_vec();
+    let mut args = words(family.options());
     args.extend(["--pattern", family.pattern()]);
     args
 }
@@ -138,20 +106,9 @@ fn three_js_logged_by_node_is_read_and_its_bugs_named() {
 #[test]
 fn a_local_frame_log_is_read_by_the_generic_check_with_normal_z() {
     // Mitsuba's log without --api: the normal +z, wi toward the origin, None for a reflection.
-    let args = [
-        "--normal",
-        "+z",
-        "--convention",
-        "toward-origin",
-        "--inside",
-        "1.5",
-        "--outside",
-        "1",
-        "--renderer",
-        "mitsuba",
-        "--pattern",
-        "wi={w} eta={_} wo={t_yours}",
-    ];
+    let mut args =
+        words("--normal +z --convention toward-origin --inside 1.5 --outside 1 --renderer mitsuba");
+    args.extend(["--pattern", "wi={w} eta={_} wo={t_yours}"]);
     for (bug, code) in [(Bug::None, "none"), (Bug::MitsubaMulsign, "other_root")] {
         let lines = renderer_families::log(Family::Mitsuba, bug, RECORDS, 4);
         let text = renderer_families::text(Family::Mitsuba, &lines);
@@ -190,16 +147,8 @@ const PBRT: &str = "Refract wi={wi} n={n} eta={eta} -> wt={wt} etap={etap} ok={r
 #[test]
 fn pbrt_s_caller_passing_one_over_eta_is_named_from_the_indices_alone() {
     let text = pbrt_without_entering(renderers::Bug::PbrtEtaInverted);
-    let args = [
-        "--api",
-        "pbrt",
-        "--inside",
-        "1.5",
-        "--outside",
-        "1",
-        "--pattern",
-        PBRT,
-    ];
+    let mut args = words("--api pbrt --inside 1.5 --outside 1");
+    args.extend(["--pattern", PBRT]);
     let checked = check(&args, &text, "pbrt-no-entering");
     let verdict = &checked.summary["diagnosis"][0];
     assert_eq!(verdict["code"], "eta_inverted", "{}", checked.summary);
@@ -266,16 +215,8 @@ fn a_log_that_cannot_be_checked_says_so_and_what_to_log() {
             )
         })
         .collect();
-    let args = [
-        "--api",
-        "glsl",
-        "--inside",
-        "1.5",
-        "--outside",
-        "1",
-        "--pattern",
-        "rd={travel} I={I} N={N} eta={eta} -> {result}",
-    ];
+    let mut args = words("--api glsl --inside 1.5 --outside 1");
+    args.extend(["--pattern", "rd={travel} I={I} N={N} eta={eta} -> {result}"]);
     let checked = check(&args, &text, "glsl-unchecked");
     assert_eq!(
         checked.summary["diagnosis"][0]["code"], "unchecked",
@@ -311,7 +252,7 @@ fn a_suggested_pattern_reads_each_family_s_log() {
             .nth(1)
             .and_then(|rest| rest.split('\'').next())
             .unwrap_or_else(|| panic!("{family:?}: {suggested}"));
-        let mut check_args = family.options().to_vec();
+        let mut check_args = words(family.options());
         check_args.extend(["--pattern", pattern]);
         let checked = check(&check_args, &text, &format!("suggested-{family:?}"));
         assert_eq!(

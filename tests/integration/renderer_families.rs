@@ -71,41 +71,14 @@ impl Family {
 
     /// The options `check` needs for this family's log, before `--pattern`.
     #[must_use]
-    pub fn options(self) -> &'static [&'static str] {
+    pub fn options(self) -> &'static str {
         match self {
-            Self::Mitsuba => &["--api", "mitsuba", "--inside", "1.5", "--outside", "1"],
-            Self::Tungsten => &[
-                "--renderer",
-                "tungsten",
-                "--normal",
-                "+z",
-                "--convention",
-                "toward-origin",
-                "--inside",
-                "1.5",
-                "--outside",
-                "1",
-            ],
-            Self::Cycles => &[
-                "--renderer",
-                "cycles",
-                "--convention",
-                "toward-origin",
-                "--inside",
-                "1.5",
-                "--outside",
-                "1",
-            ],
-            Self::ThreeJs => &[
-                "--api",
-                "glsl",
-                "--renderer",
-                "threejs",
-                "--inside",
-                "1.5",
-                "--outside",
-                "1",
-            ],
+            Self::Mitsuba => "--api mitsuba --inside 1.5 --outside 1",
+            Self::Tungsten => {
+                "--renderer tungsten --normal +z --convention toward-origin --inside 1.5 --outside 1"
+            }
+            Self::Cycles => "--renderer cycles --convention toward-origin --inside 1.5 --outside 1",
+            Self::ThreeJs => "--api glsl --renderer threejs --inside 1.5 --outside 1",
         }
     }
 
@@ -353,53 +326,51 @@ fn positional(digits: &str, point: i32) -> String {
     }
 }
 
-/// Python's `repr` of a float: the shortest round-trip digits, positional from 1e-4 to 1e16,
-/// always with a point (`1.0`, `-0.0`), `1e-05` below.
-pub fn python_float(x: f64) -> String {
+/// `x` in its shortest round-trip digits, positional for decimal exponents in `positional`
+/// and in scientific notation otherwise, its exponent written by `exponent` (from its
+/// magnitude), `-0` and a `nan` word as each language writes them.
+fn shortest_text(
+    x: f64,
+    positions: core::ops::Range<i32>,
+    zero: &str,
+    nan: &str,
+    exponent_text: impl Fn(u32) -> String,
+) -> (String, bool) {
     if x.is_nan() {
-        return "nan".to_owned();
+        return (nan.to_owned(), false);
     }
     let sign = if x.is_sign_negative() { "-" } else { "" };
     if x == 0.0 {
-        return format!("{sign}0.0");
+        return (format!("{sign}{zero}"), false);
     }
     let (digits, exponent) = shortest(x);
-    let body = if (-4..16).contains(&exponent) {
-        let text = positional(&digits, exponent + 1);
-        if text.contains('.') {
-            text
-        } else {
-            format!("{text}.0")
-        }
+    if positions.contains(&exponent) {
+        return (format!("{sign}{}", positional(&digits, exponent + 1)), true);
+    }
+    let mantissa = positional(&digits, 1);
+    let esign = if exponent < 0 { '-' } else { '+' };
+    let e = exponent_text(exponent.unsigned_abs());
+    (
+        format!("{sign}{}e{esign}{e}", mantissa.trim_end_matches('.')),
+        false,
+    )
+}
+
+/// Python's `repr` of a float: the shortest round-trip digits, positional from 1e-4 to 1e16,
+/// always with a point (`1.0`, `-0.0`), `1e-05` below.
+pub fn python_float(x: f64) -> String {
+    let (text, positional) = shortest_text(x, -4..16, "0.0", "nan", |e| format!("{e:02}"));
+    if positional && !text.contains('.') {
+        format!("{text}.0")
     } else {
-        let mantissa = positional(&digits, 1);
-        let mantissa = mantissa.trim_end_matches('.');
-        let esign = if exponent < 0 { '-' } else { '+' };
-        format!("{mantissa}e{esign}{:02}", exponent.unsigned_abs())
-    };
-    format!("{sign}{body}")
+        text
+    }
 }
 
 /// JavaScript's `Number#toString` as Node's `console.log` prints an array element: shortest
 /// round-trip digits, positional from 1e-6 up to 1e21, `-0` kept.
 pub fn js_number(x: f64) -> String {
-    if x.is_nan() {
-        return "NaN".to_owned();
-    }
-    let sign = if x.is_sign_negative() { "-" } else { "" };
-    if x == 0.0 {
-        return format!("{sign}0");
-    }
-    let (digits, exponent) = shortest(x);
-    let body = if (-6..21).contains(&exponent) {
-        positional(&digits, exponent + 1)
-    } else {
-        let mantissa = positional(&digits, 1);
-        let mantissa = mantissa.trim_end_matches('.');
-        let esign = if exponent < 0 { '-' } else { '+' };
-        format!("{mantissa}e{esign}{}", exponent.unsigned_abs())
-    };
-    format!("{sign}{body}")
+    shortest_text(x, -6..21, "0", "NaN", |e| e.to_string()).0
 }
 
 /// Node's `util.inspect` of a `Float32Array` of three: on one line when it fits in 80
