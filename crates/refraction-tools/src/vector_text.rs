@@ -170,6 +170,7 @@ fn without_typed_array(text: &str) -> &str {
     let Some((count, rest)) = rest.split_once(')') else {
         return text;
     };
+    // untranslated: the end of JavaScript's typed arrays' names (Float32Array, Float64Array)
     let typed = name.ends_with("Array")
         && name.chars().all(char::is_alphanumeric)
         && count.chars().all(|c| c.is_ascii_digit())
