@@ -77,28 +77,28 @@ fn assert_named(family: Family, bug: Bug) {
 
 #[test]
 fn mitsuba_s_bugs_are_named_with_the_line_in_fresnel_h() {
-    for &bug in [Bug::None].iter().chain(Family::Mitsuba.bugs()) {
+    for &bug in core::iter::once(&Bug::None).chain(Family::Mitsuba.bugs()) {
         assert_named(Family::Mitsuba, bug);
     }
 }
 
 #[test]
 fn tungsten_s_bugs_are_named_in_its_local_frame() {
-    for &bug in [Bug::None].iter().chain(Family::Tungsten.bugs()) {
+    for &bug in core::iter::once(&Bug::None).chain(Family::Tungsten.bugs()) {
         assert_named(Family::Tungsten, bug);
     }
 }
 
 #[test]
 fn cycles_records_over_four_lines_are_read_and_its_bugs_named() {
-    for &bug in [Bug::None].iter().chain(Family::Cycles.bugs()) {
+    for &bug in core::iter::once(&Bug::None).chain(Family::Cycles.bugs()) {
         assert_named(Family::Cycles, bug);
     }
 }
 
 #[test]
 fn three_js_logged_by_node_is_read_and_its_bugs_named() {
-    for &bug in [Bug::None].iter().chain(Family::ThreeJs.bugs()) {
+    for &bug in core::iter::once(&Bug::None).chain(Family::ThreeJs.bugs()) {
         assert_named(Family::ThreeJs, bug);
     }
 }
@@ -136,10 +136,12 @@ fn a_local_frame_log_is_read_by_the_generic_check_with_normal_z() {
 /// The pbrt log of the earlier checks without its `entering` field.
 fn pbrt_without_entering(bug: renderers::Bug) -> String {
     let log = renderers::log(Renderer::Pbrt, bug, RECORDS, 7, false);
-    log.lines
-        .iter()
-        .map(|l| format!("{}\n", l.text.split(" entering=").next().unwrap()))
-        .collect()
+    let mut text = String::new();
+    for line in &log.lines {
+        text.push_str(line.text.split(" entering=").next().unwrap());
+        text.push('\n');
+    }
+    text
 }
 
 const PBRT: &str = "Refract wi={wi} n={n} eta={eta} -> wt={wt} etap={etap} ok={returned}";
@@ -205,16 +207,16 @@ fn a_log_that_cannot_be_checked_says_so_and_what_to_log() {
         7,
         false,
     );
-    let text: String = glsl
-        .lines
-        .iter()
-        .map(|l| {
-            format!(
-                "{}\n",
-                l.text.replace(" entering=1", "").replace(" entering=0", "")
-            )
-        })
-        .collect();
+    let mut text = String::new();
+    for line in &glsl.lines {
+        text.push_str(
+            &line
+                .text
+                .replace(" entering=1", "")
+                .replace(" entering=0", ""),
+        );
+        text.push('\n');
+    }
     let mut args = words("--api glsl --inside 1.5 --outside 1");
     args.extend(["--pattern", "rd={travel} I={I} N={N} eta={eta} -> {result}"]);
     let checked = check(&args, &text, "glsl-unchecked");

@@ -535,10 +535,10 @@ mod tungsten {
     pub(super) fn call(bug: Bug, hit: &Hit, sample: f64) -> Option<Printed> {
         let wi = local_wi(hit);
         let inside = wi.z < 0.0;
-        let eta = if inside != (bug == Bug::TungstenTernarySwapped) {
-            IOR
-        } else {
+        let eta = if inside == (bug == Bug::TungstenTernarySwapped) {
             1.0 / IOR
+        } else {
+            IOR
         };
         let cos_i = if bug == Bug::TungstenAbsDropped {
             wi.z
@@ -616,10 +616,10 @@ mod cycles {
         let backfacing = ng.dot(wi) < 0.0;
         let n = if backfacing { -ng } else { ng };
         let swapped = bug == Bug::CyclesTernarySwapped;
-        let m_eta = if backfacing != swapped {
-            1.0 / IOR
-        } else {
+        let m_eta = if backfacing == swapped {
             IOR
+        } else {
+            1.0 / IOR
         };
         let m_inv_eta = 1.0 / m_eta;
         let cos_ho = cos_theta_t(n.dot(wi), m_eta, bug)?;

@@ -51,7 +51,8 @@ impl Options {
     /// Whose code the log comes from: `--renderer`, else the API's.
     #[must_use]
     pub fn renderer(&self) -> Option<Renderer> {
-        self.renderer.or(self.dialect.api().map(Renderer::of_api))
+        self.renderer
+            .or_else(|| self.dialect.api().map(Renderer::of_api))
     }
 
     /// `--inside` and `--outside`, when both are given.

@@ -436,7 +436,7 @@ impl Books {
     ) -> Result<Option<Result<Judgement, String>>, String> {
         Ok(self
             .gathered_record(reader, line)?
-            .map(|record| record.and_then(|record| judge_record(&record, &reader.options))))
+            .map(|record| judge_record(&record?, &reader.options)))
     }
 
     /// Lines gathered toward a record that a line matched on its own (or the input's end)

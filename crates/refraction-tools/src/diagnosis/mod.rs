@@ -28,7 +28,7 @@ pub mod formula;
 pub mod hypotheses;
 mod rank;
 
-use std::collections::HashMap;
+use std::collections::BTreeMap;
 
 use refraction_i18n::t;
 use refraction_kernel::api::Api;
@@ -107,7 +107,7 @@ pub fn band(incidence_deg: f64) -> u8 {
 
 /// The kind of a line: everything the ranking looks at, so that lines of one kind are counted
 /// together.
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
 struct Kind {
     ok: bool,
     alternatives: Vec<Vec<Code>>,
@@ -164,8 +164,8 @@ impl Band {
 /// The counts a log's diagnosis is made from, added to line by line.
 #[derive(Clone, Debug, Default)]
 pub struct LogTally {
-    kinds: HashMap<Kind, usize>,
-    bands: HashMap<(Option<Side>, u8), Band>,
+    kinds: BTreeMap<Kind, usize>,
+    bands: BTreeMap<(Option<Side>, u8), Band>,
     judged: Census,
     skipped: usize,
     unreadable: usize,

@@ -76,9 +76,7 @@ pub(super) fn findings(
     if tally.judged.total() == 0 {
         return Vec::new();
     }
-    let mut kinds: Vec<(&Kind, usize)> = tally.kinds.iter().map(|(k, n)| (k, *n)).collect();
-    // A fixed order, so that ties are broken the same way on every run.
-    kinds.sort_by(|a, b| format!("{:?}", a.0).cmp(&format!("{:?}", b.0)));
+    let kinds: Vec<(&Kind, usize)> = tally.kinds.iter().map(|(k, n)| (k, *n)).collect();
     let lines = Lines {
         tally,
         kinds,
