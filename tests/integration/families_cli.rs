@@ -267,3 +267,47 @@ fn a_suggested_pattern_reads_each_family_s_log() {
     assert_eq!(output.status.code(), Some(3));
     assert!(String::from_utf8_lossy(&output.stderr).contains("no line of the first 2"));
 }
+
+/// The example logs of docs/check.md's sections per renderer family, each the log its
+/// renderer's emulated code prints with the bug the section shows (`UPDATE_EXAMPLES=1`
+/// writes them).
+fn examples() -> Vec<(&'static str, String)> {
+    let family = |family, bug, seed| {
+        renderer_families::text(family, &renderer_families::log(family, bug, 40, seed))
+    };
+    let pbrt = pbrt_without_entering(renderers::Bug::PbrtEtaInverted);
+    let pbrt: String = pbrt.lines().take(40).flat_map(|l| [l, "\n"]).collect();
+    vec![
+        ("mitsuba-right.log", family(Family::Mitsuba, Bug::None, 21)),
+        (
+            "mitsuba.log",
+            family(Family::Mitsuba, Bug::MitsubaTernarySwapped, 22),
+        ),
+        (
+            "tungsten.log",
+            family(Family::Tungsten, Bug::TungstenAbsDropped, 23),
+        ),
+        ("cycles.log", family(Family::Cycles, Bug::CyclesCosSign, 24)),
+        (
+            "threejs.log",
+            family(Family::ThreeJs, Bug::ThreeEtaInverted, 25),
+        ),
+        ("pbrt-eta.log", pbrt),
+    ]
+}
+
+#[test]
+fn the_docs_examples_are_the_emulated_renderers_logs() {
+    let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/examples");
+    for (name, text) in examples() {
+        let path = folder.join(name);
+        if std::env::var_os("UPDATE_EXAMPLES").is_some() {
+            std::fs::write(&path, &text).unwrap();
+        }
+        let committed = std::fs::read_to_string(&path).unwrap_or_default();
+        assert_eq!(
+            committed, text,
+            "{name}: run with UPDATE_EXAMPLES=1 to write it"
+        );
+    }
+}

@@ -13,7 +13,7 @@ use super::readings::{Reading, Tolerance, readings, undo};
 use super::result::{Returns, Seen, returns, transmitted_by};
 use crate::check::{self, Match};
 use crate::diagnosis::formula::{self, Situation};
-use crate::diagnosis::{self, Codes, Evidence, Missing, Side, Told, View};
+use crate::diagnosis::{self, Codes, Evidence, Missing, Readings, Side, Told};
 use crate::solve::{Precision, Request};
 use crate::vector_text::{angle, length};
 use refraction_model::log_map::{self, LinePoint};
@@ -77,9 +77,8 @@ pub struct Diagnosis {
     pub right: Meaning<f64>,
     /// The direction the ray leaves this hit in, as the student's code sent it.
     pub outgoing: DVec3,
-    /// Each reading's argument mistakes and the formula's variants that reproduce the line,
-    /// for the diagnosis of the whole log.
-    pub views: Vec<View>,
+    /// What the line's views are made from, for the diagnosis of the whole log.
+    pub readings: Readings,
     /// Mitsuba's F where `wo` is null although the API refracts: a sampled reflection if the
     /// call is right (the whole log tells whether it is one).
     pub sampled: Option<f64>,
@@ -265,33 +264,29 @@ fn sampled_reflection(call: &Call, returns: &Returns) -> Option<f64> {
     })
 }
 
-/// The views of the call for the diagnosis of the whole log: for each reading, its argument
-/// mistakes and the formula's variants that reproduce what came back in its situation (for a
-/// right call, those that agree with it).
-fn views(readings: &[Reading], seen: Seen, ok: bool, tolerance: f64) -> Vec<View> {
-    let outcome = match seen {
-        Seen::Direction(v) => formula::Outcome::Direction(v),
-        Seen::Nothing(_) | Seen::NotFinite(_) => formula::Outcome::Nothing,
-    };
-    readings
-        .iter()
-        .map(|reading| {
-            let m = reading.meaning;
-            let situation = Situation {
-                travel: m.travel,
-                normal: m.normal,
-                mu: m.mu,
-            };
-            View {
-                arguments: Codes::of(&reading.codes),
-                variants: if ok {
-                    formula::agreeing(&situation, tolerance)
-                } else {
-                    formula::reproducing(&situation, outcome, tolerance)
-                },
-            }
-        })
-        .collect()
+/// What the call's views are made from: for each reading, its argument mistakes and the
+/// situation it makes, and what came back.
+fn formula_readings(readings: &[Reading], seen: Seen, right: bool, tolerance: f64) -> Readings {
+    Readings {
+        situations: readings
+            .iter()
+            .map(|reading| {
+                let m = reading.meaning;
+                let situation = Situation {
+                    travel: m.travel,
+                    normal: m.normal,
+                    mu: m.mu,
+                };
+                (Codes::of(&reading.codes), situation)
+            })
+            .collect(),
+        outcome: match seen {
+            Seen::Direction(v) => formula::Outcome::Direction(v),
+            Seen::Nothing(_) | Seen::NotFinite(_) => formula::Outcome::Nothing,
+        },
+        right,
+        tolerance,
+    }
 }
 
 fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
@@ -321,7 +316,7 @@ fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
         sampled: sampled.filter(|_| ok),
     });
     // A sampled reflection's readings are of what it logged: nothing.
-    let views = views(
+    let formula_readings = formula_readings(
         &readings,
         seen,
         ok && sampled.is_none(),
@@ -337,7 +332,7 @@ fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
         api_result: returns.json,
         right,
         outgoing,
-        views,
+        readings: formula_readings,
         sampled,
         transmitted: matches!(seen, Seen::Direction(_)),
     })
@@ -386,7 +381,7 @@ pub fn evidence(call: &Call, diagnosis: &Diagnosis) -> Evidence {
     Evidence {
         ok: diagnosis.ok,
         alternatives,
-        views: diagnosis.views.clone(),
+        views: diagnosis.readings.views(),
         side,
         past_critical: m.mu * m.mu * (1.0 - cos * cos) > 1.0,
         normal_outward: logged_entering

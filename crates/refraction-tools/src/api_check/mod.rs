@@ -197,7 +197,7 @@ impl Judgement {
     pub fn evidence(&self) -> Evidence {
         match self {
             Self::Api(judged) => diagnose::evidence(&judged.0, &judged.1),
-            Self::Physics(judged) => judged.evidence.clone(),
+            Self::Physics(judged) => judged.evidence(),
         }
     }
 

@@ -20,7 +20,7 @@ use super::code::Code;
 use super::record::{Record, Value};
 use crate::check::{self, MATCH_ANGLE, Match, Verdict};
 use crate::diagnosis::formula::{self, Outcome, Situation};
-use crate::diagnosis::{self, Codes, Evidence, Side, Told, View};
+use crate::diagnosis::{self, Codes, Evidence, Readings, Side, Told};
 use crate::solve::{Precision, Request};
 use crate::vector_text::{angle, length, spoken};
 use refraction_model::log_map::{self, LinePoint};
@@ -247,13 +247,24 @@ pub struct Judged {
     /// The mistakes that explain it, each set a reading, the likeliest first (empty when
     /// right).
     pub alternatives: Vec<Vec<Code>>,
-    /// What the diagnosis of the whole log needs from it.
+    /// What the diagnosis of the whole log needs from it, but its views ([`Judged::evidence`]).
     pub evidence: Evidence,
+    /// What its views are made from.
+    pub readings: Readings,
     /// The line on the log's failure map.
     pub point: LinePoint,
 }
 
 impl Judged {
+    /// What the diagnosis of the whole log needs from the line, its views worked out.
+    #[must_use]
+    pub fn evidence(&self) -> Evidence {
+        Evidence {
+            views: self.readings.views(),
+            ..self.evidence.clone()
+        }
+    }
+
     /// Every mistake of every reading, each once.
     #[must_use]
     pub fn mistakes(&self) -> Vec<Code> {
@@ -281,10 +292,9 @@ fn map_point(case: &Case, r: &Refraction<f64>, evidence: &Evidence) -> LinePoint
     }
 }
 
-/// The readings of a line for the diagnosis of the whole log: the ratio the code logged, if
-/// upside down, as its argument mistake, and the formula's variants that reproduce what it
-/// sent the ray along (for a right line, those that agree with it).
-fn views(case: &Case, r: &Refraction<f64>, ok: bool, logged: Outcome) -> Vec<View> {
+/// What a line's views are made from: the ratio the code logged, if upside down, as its
+/// argument mistake, the situation, and what the code sent the ray along.
+fn readings(case: &Case, r: &Refraction<f64>, right: bool, logged: Outcome) -> Readings {
     let situation = Situation {
         travel: r.travel,
         normal: r.facing_normal,
@@ -297,15 +307,12 @@ fn views(case: &Case, r: &Refraction<f64>, ok: bool, logged: Outcome) -> Vec<Vie
         Some(ratio) if (ratio / r.mu - 1.0).abs() > 1e-4 => Codes::of(&[Code::NotTheApiResult]),
         _ => Codes::default(),
     };
-    let variants = if ok {
-        formula::agreeing(&situation, MATCH_ANGLE)
-    } else {
-        formula::reproducing(&situation, logged, MATCH_ANGLE)
-    };
-    vec![View {
-        arguments,
-        variants,
-    }]
+    Readings {
+        situations: vec![(arguments, situation)],
+        outcome: logged,
+        right,
+        tolerance: MATCH_ANGLE,
+    }
 }
 
 /// What the code sent the ray along: nothing for a null, zero or non-finite T.
@@ -357,7 +364,7 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
         } else {
             alternatives.clone()
         },
-        views: views(case, &r, ok && sampled.is_none(), logged),
+        views: Vec::new(),
         side: case
             .entering
             .map(|e| if e { Side::Outside } else { Side::Inside }),
@@ -383,6 +390,7 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
         _ => verdict.explanation.clone(),
     };
     let point = map_point(case, &r, &evidence);
+    let readings = readings(case, &r, ok && sampled.is_none(), logged);
     Ok(Judged {
         verdict: Verdict {
             ok,
@@ -396,6 +404,7 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
         },
         alternatives,
         evidence,
+        readings,
         point,
     })
 }

@@ -102,6 +102,8 @@ const NAMES: [(&str, &[&str]); 7] = [
             "into",
             "front_face",
             "frontface",
+            "frontfacing",
+            "front_facing",
             "outside",
             "enter",
         ],

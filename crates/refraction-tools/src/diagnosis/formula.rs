@@ -62,17 +62,18 @@ impl Variant {
 }
 
 /// What the code sent the ray along.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub enum Outcome {
     /// A direction (any length).
     Direction(DVec3),
     /// Nothing transmitted: total internal reflection said (null, false, the zero vector, the
     /// reflection, or a vector that is not finite).
+    #[default]
     Nothing,
 }
 
 /// A line's situation: the direction of travel, the normal facing it and μ.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Situation {
     /// The direction of travel (any length).
     pub travel: DVec3,

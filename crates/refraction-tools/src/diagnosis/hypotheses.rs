@@ -14,7 +14,7 @@ use std::sync::OnceLock;
 
 use refraction_kernel::api::Api;
 
-use super::formula::Variant;
+use super::formula::{self, Outcome, Situation, Variant};
 use crate::api_check::Code;
 use refraction_model::log_map::Side;
 
@@ -56,6 +56,41 @@ pub struct View {
     pub arguments: Codes,
     /// The variants that reproduce the line, as [`Variant::bit`]s.
     pub variants: u64,
+}
+
+/// What a line's views are made from, kept by its verdict so that the formula's variants are
+/// worked out only for the diagnosis of the whole log: each reading's argument mistakes and
+/// situation, what came back, and whether it is the right answer.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Readings {
+    /// Each reading's argument mistakes and the situation it makes.
+    pub situations: Vec<(Codes, Situation)>,
+    /// What the code sent the ray along.
+    pub outcome: Outcome,
+    /// Whether the line is right: its views are the variants that agree with the right answer
+    /// (not those that reproduce what was logged, within its rounding).
+    pub right: bool,
+    /// How closely a variant must match, in radians.
+    pub tolerance: f64,
+}
+
+impl Readings {
+    /// The views: for each reading, its argument mistakes and the variants that reproduce the
+    /// line (or agree with it, for a right line).
+    #[must_use]
+    pub fn views(&self) -> Vec<View> {
+        self.situations
+            .iter()
+            .map(|(arguments, situation)| View {
+                arguments: *arguments,
+                variants: if self.right {
+                    formula::agreeing(situation, self.tolerance)
+                } else {
+                    formula::reproducing(situation, self.outcome, self.tolerance)
+                },
+            })
+            .collect()
+    }
 }
 
 /// How an API takes its arguments, which decides what an argument mistake does to the formula.

@@ -35,7 +35,7 @@ use refraction_kernel::api::Api;
 use serde::Serialize;
 
 use crate::api_check::{Code, Renderer};
-pub use hypotheses::{Codes, View};
+pub use hypotheses::{Codes, Readings, View};
 pub use refraction_model::log_map::Side;
 
 /// How wide a band of angles of incidence the sampling of reflection is judged in, degrees.
