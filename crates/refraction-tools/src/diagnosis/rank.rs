@@ -259,8 +259,11 @@ impl Lines<'_> {
         let mut alike: Vec<&'static str> = Vec::new();
         let mut tell_apart: Vec<&'static str> = Vec::new();
         for other in ranked.iter().skip(1) {
+            // Alike: the same lines, as simply (a pair whose second mistake touches no line
+            // of the log is not another reading of it).
             let same = other.kinds == best.kinds
                 && other.score() == best.score()
+                && other.conditions == best.conditions
                 && other.penalty == best.penalty;
             let name = other.codes[0].name();
             // A line's own name for what a mistake of the formula explains is its symptom.
