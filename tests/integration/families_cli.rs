@@ -108,7 +108,7 @@ fn a_local_frame_log_is_read_by_the_generic_check_with_normal_z() {
     // Mitsuba's log without --api: the normal +z, wi toward the origin, None for a reflection.
     let mut args =
         words("--normal +z --convention toward-origin --inside 1.5 --outside 1 --renderer mitsuba");
-    args.extend(["--pattern", "wi={w} eta={_} wo={t_yours}"]);
+    args.extend(["--pattern", "wi={w} inside={_} eta={_} wo={t_yours}"]);
     for (bug, code) in [(Bug::None, "none"), (Bug::MitsubaMulsign, "other_root")] {
         let lines = renderer_families::log(Family::Mitsuba, bug, RECORDS, 4);
         let text = renderer_families::text(Family::Mitsuba, &lines);

@@ -86,7 +86,7 @@ impl Family {
     #[must_use]
     pub fn pattern(self) -> &'static str {
         match self {
-            Self::Mitsuba => "wi={wi} eta={eta} wo={wo}",
+            Self::Mitsuba => "wi={wi} inside={!entering} eta={eta} wo={wo}",
             Self::Tungsten => "wi={w} eta={ratio} wo={t_yours}",
             Self::Cycles => "wi: {w}\\nN: {n}\\nbackfacing: {!entering}\\nwo: {t_yours}",
             Self::ThreeJs => "I {I} N {N} eta {eta} frontFacing {entering} -> {result}",
@@ -412,8 +412,8 @@ pub fn drjit_vector(v: Vec3) -> String {
 /// is `-a*b + c` unfused in the `scalar_rgb` variant built without FMA.
 ///
 /// The student's Python script, in that variant, prints after `bsdf.sample`: `print(f"wi={si.wi}
-/// eta={eta} wo={bs.wo if transmitted else None}")`, `eta` being the Python float it built the
-/// BSDF with (`int_ior / ext_ior`).
+/// inside={si.wi.z < 0} eta={eta} wo={bs.wo if transmitted else None}")`, `eta` being the
+/// Python float it built the BSDF with (`int_ior / ext_ior`); Python prints `True`/`False`.
 mod mitsuba {
     use super::{Bug, DVec3, Hit, Outcome, Printed, Vec3, drjit_vector, local_wi, python_float};
 
@@ -472,9 +472,10 @@ mod mitsuba {
         } else {
             drjit_vector(wo)
         };
+        let inside = if wi.z < 0.0 { "True" } else { "False" };
         Printed {
             text: format!(
-                "wi={} eta={} wo={shown}",
+                "wi={} inside={inside} eta={} wo={shown}",
                 drjit_vector(wi),
                 python_float(eta64)
             ),

@@ -17,7 +17,7 @@ use refraction_diagram::{Primitive, failure_map};
 use refraction_i18n::t;
 use refraction_model::log_map::LinePoint;
 use refraction_tools::api_check::{
-    Dialect, Format, Judgement, Options, Pattern, Record, SKIPPED, Session, Tally, fields,
+    Dialect, Format, Judgement, Options, Pattern, Record, SAMPLED, SKIPPED, Session, Tally, fields,
 };
 use refraction_tools::diagnosis::Summary;
 
@@ -235,6 +235,7 @@ fn tally_words(tally: &Tally) -> String {
         .map(|(kind, n)| {
             let kind = match kind {
                 SKIPPED => t!("check-tally-skipped"),
+                SAMPLED => t!("check-tally-sampled"),
                 "unreadable" => t!("check-tally-unreadable"),
                 "unexplained" => t!("check-tally-unexplained"),
                 code => code.to_owned(),

@@ -356,3 +356,4 @@ check-unchecked-log-entering = Protokolliere entering in jeder Zeile (true, wenn
 check-unchecked-pass-indices = Übergib --inside und --outside (die Indizes innen und außen) mit protokolliertem entering, oder bei pbrt und Mitsuba mit der äußeren Normale; oder protokolliere from und to
 check-mistake-across-sign = der Teil des Ergebnisses quer zur Normale hat das falsche Vorzeichen; der Teil längs der Normale ist richtig (das Spiegelbild des Ergebnisses an der Normale)
 check-part-across-sign = der Teil von T quer zu N hat das falsche Vorzeichen (T an der Normale gespiegelt, falsch gebrochen), der Teil längs N ist richtig: das Minus vor Verhältnis mal einfallendem Vektor fehlt
+check-tally-sampled = reflektiert (gezogen)

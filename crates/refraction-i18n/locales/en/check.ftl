@@ -356,3 +356,4 @@ check-unchecked-log-entering = Log entering on each line (true when the ray ente
 check-unchecked-pass-indices = Pass --inside and --outside (the indices inside and outside the object) with entering logged, or for pbrt and Mitsuba with the outward normal; or log from and to
 check-mistake-across-sign = the part of the result across the normal has the wrong sign; the part along it is right (the result mirrored across the normal)
 check-part-across-sign = the part of T across N has the wrong sign (T mirrored across the normal, bent the wrong way), and the part along N is right: the minus before the ratio times the incident vector is lost
+check-tally-sampled = reflected (sampled)

@@ -356,3 +356,4 @@ check-unchecked-log-entering = Registra entering en cada línea (true cuando el 
 check-unchecked-pass-indices = Pasa --inside y --outside (los índices dentro y fuera del objeto) con entering registrado, o en pbrt y Mitsuba con la normal exterior; o registra from y to
 check-mistake-across-sign = la parte del resultado transversal a la normal tiene el signo equivocado; la parte a lo largo de ella es correcta (la imagen especular del resultado respecto a la normal)
 check-part-across-sign = la parte de T transversal a N tiene el signo equivocado (la imagen especular de T respecto a la normal, desvío equivocado), y la parte a lo largo de N es correcta: falta el menos delante de la razón por el vector incidente
+check-tally-sampled = reflejadas (muestreadas)

@@ -356,3 +356,4 @@ check-unchecked-log-entering = Écris entering sur chaque ligne (true quand le r
 check-unchecked-pass-indices = Passe --inside et --outside (les indices à l’intérieur et à l’extérieur de l’objet) avec entering écrit, ou pour pbrt et Mitsuba avec la normale extérieure ; ou écris from et to
 check-mistake-across-sign = la partie du résultat transverse à la normale a le mauvais signe ; la partie le long de la normale est juste (l’image miroir du résultat par rapport à la normale)
 check-part-across-sign = la partie de T transverse à N a le mauvais signe (l’image miroir de T par rapport à la normale, mauvaise déviation), et la partie le long de N est juste : le moins devant le rapport fois le vecteur incident est perdu
+check-tally-sampled = réfléchies (tirées)

@@ -356,3 +356,4 @@ check-unchecked-log-entering = Registre entering em cada linha (true quando o ra
 check-unchecked-pass-indices = Passe --inside e --outside (os índices dentro e fora do objeto) com entering registrado, ou no pbrt e no Mitsuba com a normal externa; ou registre from e to
 check-mistake-across-sign = a parte do resultado transversal à normal tem o sinal errado; a parte ao longo dela está certa (a imagem espelhada do resultado em relação à normal)
 check-part-across-sign = a parte de T transversal a N tem o sinal errado (a imagem espelhada de T em relação à normal, desvio errado), e a parte ao longo de N está certa: falta o menos antes da razão vezes o vetor incidente
+check-tally-sampled = refletidas (amostradas)

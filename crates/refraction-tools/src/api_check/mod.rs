@@ -110,7 +110,12 @@ fn tied(alternatives: &[Vec<Code>]) -> String {
 impl Tally {
     /// Counts one more `kind`.
     pub fn add(&mut self, kind: &str) {
-        *self.counts.entry(kind.to_owned()).or_default() += 1;
+        match self.counts.get_mut(kind) {
+            Some(count) => *count += 1,
+            None => {
+                self.counts.insert(kind.to_owned(), 1);
+            }
+        }
     }
 
     /// Counts a verdict: `ok`, a sampled reflection, or the line's explanations as one kind,

@@ -34,8 +34,6 @@ impl Variant {
     pub const TERM: Self = Self(16);
     /// The whole result negated.
     pub const REVERSED: Self = Self(32);
-    /// How many variants there are.
-    pub const COUNT: usize = 64;
 
     /// Both changes (the same change twice cancels: it is an exclusive or).
     #[must_use]
@@ -204,12 +202,6 @@ fn same_direction(p: (f64, f64), v: (f64, f64, f64), tolerance: f64) -> bool {
     sin2 <= tolerance * tolerance
 }
 
-/// The angle of incidence, in degrees.
-#[must_use]
-pub fn incidence_deg(situation: &Situation) -> f64 {
-    Plane::new(situation).map_or(0.0, |p| p.sin.atan2(p.cos).to_degrees())
-}
-
 /// The Fresnel reflectance of unpolarised light at this situation (1 past the critical
 /// angle): the probability with which a renderer that samples reflection reflects.
 #[must_use]
@@ -311,6 +303,5 @@ mod tests {
             ..entering(60.0)
         };
         assert_eq!(reflectance(&inside), 1.0);
-        assert!((incidence_deg(&entering(40.0)) - 40.0).abs() < 1e-9);
     }
 }

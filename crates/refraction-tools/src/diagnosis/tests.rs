@@ -72,7 +72,7 @@ fn observed(mistakes: &[Mistake], degrees: f64, side: Side) -> Evidence {
         views,
         side: Some(side),
         past_critical,
-        band: band(formula::incidence_deg(&s)),
+        band: band(refraction_model::log_map::incidence_deg(s.travel, s.normal)),
         transmitted,
         told: Told {
             entering: true,
