@@ -1,7 +1,8 @@
 //! What the diagnosis of a whole log costs beside judging its lines: the per-line work `check`
 //! does (read a log line with a pattern, judge it) on one thread, without and with what the
 //! diagnosis adds (each line's evidence: the formula's variants that reproduce it; counting it;
-//! the ranked search at the end), for calls of an API and for any renderer's own refraction; a
+//! the ranked search at the end), and that part alone on lines judged beforehand, for calls of
+//! an API and for any renderer's own refraction; a
 //! line that almost matches the pattern against one that does; and the ranking of a
 //! million-line log's counts into findings. `cargo bench -p refraction-tools --bench diagnosis`.
 //!
@@ -75,6 +76,24 @@ fn bench_dialect(c: &mut Criterion, name: &str, dialect: Dialect, pattern: &str,
                 if let Ok(judged) = judge_record(&record, &options) {
                     tally.add(judged.evidence());
                 }
+            }
+            black_box(tally.summary(dialect.api(), None))
+        });
+    });
+    // The diagnosis alone: the lines judged beforehand, their evidence counted and ranked.
+    let judged: Vec<_> = log
+        .lines()
+        .filter_map(|line| {
+            let texts = parsed.capture(line)?;
+            let record = Record::from_texts(dialect, texts).ok()?;
+            judge_record(&record, &options).ok()
+        })
+        .collect();
+    group.bench_function("diagnose_only_2000_judged_lines", |b| {
+        b.iter(|| {
+            let mut tally = LogTally::default();
+            for judgement in &judged {
+                tally.add(black_box(judgement).evidence());
             }
             black_box(tally.summary(dialect.api(), None))
         });
