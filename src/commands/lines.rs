@@ -1,7 +1,7 @@
 //! `solve` and `check`: JSON Lines in, one answer per line out.
 
 use std::fs::File;
-use std::io::{self, BufRead, Write as _};
+use std::io::{self, BufRead, Read as _, Write as _};
 use std::path::Path;
 use std::process::ExitCode;
 
@@ -193,10 +193,15 @@ pub fn suggest_pattern(file: Option<&Path>, dialect: Dialect) -> ExitCode {
         Ok(input) => input,
         Err(e) => return fail("check", &e),
     };
+    // The first lines, within 8 MiB (a line of another encoding read as it can be).
+    let mut reader = input.lines.take(8 << 20);
     let mut lines = Vec::new();
-    for line in input.lines.lines().take(suggest::LINES_READ) {
-        match line {
-            Ok(line) => lines.push(line),
+    let mut bytes = Vec::new();
+    while lines.len() < suggest::LINES_READ {
+        bytes.clear();
+        match reader.read_until(b'\n', &mut bytes) {
+            Ok(0) => break,
+            Ok(_) => lines.push(String::from_utf8_lossy(&bytes).trim_end().to_owned()),
             Err(e) => return fail("check", &format!("cannot read {}: {e}", input.name)),
         }
     }

@@ -174,8 +174,8 @@ pub const SAMPLED: &str = "reflected (sampled)";
 pub enum Judgement {
     /// A call of a named API (boxed: a diagnosis is large).
     Api(Box<(Call, Diagnosis)>),
-    /// Any renderer's own refraction (`check` without `--api`).
-    Physics(physics::Judged),
+    /// Any renderer's own refraction (`check` without `--api`; boxed as the call is).
+    Physics(Box<physics::Judged>),
 }
 
 impl Judgement {
@@ -252,7 +252,7 @@ pub fn judge_record(record: &Record, options: &Options) -> Result<Judgement, Str
         Dialect::Api(_) => check_record(record, options).map(|j| Judgement::Api(Box::new(j))),
         Dialect::Physics => physics::Case::from_record(record, options)
             .and_then(|case| physics::judge(&case))
-            .map(Judgement::Physics),
+            .map(|judged| Judgement::Physics(Box::new(judged))),
     }
 }
 

@@ -165,10 +165,16 @@ fn meaning(dialect: Dialect, label: &str, value: Value) -> Option<Meaning> {
     })
 }
 
-/// The end of the bracket group opening at `open`, if it closes.
+/// The longest line part read for a suggestion, in bytes (a record is a few hundred).
+const MAX_LINE: usize = 4096;
+
+/// The longest bracket group read as a value, in bytes.
+const MAX_GROUP: usize = 512;
+
+/// The end of the bracket group opening at `open`, if it closes within [`MAX_GROUP`] bytes.
 fn group_end(line: &str, open: usize) -> Option<usize> {
     let mut depth = 0_i64;
-    for (i, b) in line.bytes().enumerate().skip(open) {
+    for (i, b) in line.bytes().enumerate().skip(open).take(MAX_GROUP) {
         match b {
             b'[' | b'(' | b'{' => depth += 1,
             b']' | b')' | b'}' => {
@@ -265,13 +271,20 @@ fn label_before(line: &str, from: usize, at: usize) -> (String, usize) {
     let text = &line[from..at];
     let trimmed = text.trim_end_matches(|c: char| !(c.is_alphanumeric() || c == '_'));
     let start = trimmed
-        .rfind(|c: char| !(c.is_alphanumeric() || c == '_'))
-        .map_or(0, |i| i + 1);
+        .char_indices()
+        .rev()
+        .find(|(_, c)| !(c.is_alphanumeric() || *c == '_'))
+        .map_or(0, |(i, c)| i + c.len_utf8());
     (trimmed[start..].to_owned(), from + start)
 }
 
-/// The values printed in `line`, in order.
+/// The values printed in `line` (its first [`MAX_LINE`] bytes), in order.
 fn spans(line: &str) -> Vec<Span> {
+    let mut cut = line.len().min(MAX_LINE);
+    while !line.is_char_boundary(cut) {
+        cut -= 1;
+    }
+    let line = &line[..cut];
     let mut out = Vec::new();
     let (mut at, mut from) = (0, 0);
     while at < line.len() {
@@ -505,6 +518,14 @@ mod tests {
         let node = "d Float32Array(3) [\n  0.39162999391555786,\n  -0.5874453186988831,\n  \
                     -0.7080398797988892\n] n Float32Array(3) [ 0, 0, 1 ] -> Float32Array(3) [ 0.5, -0.25, -0.800000011920929 ]";
         assert_eq!(pattern(Dialect::Physics, node), "d {w} n {n} -> {t_yours}");
+    }
+
+    #[test]
+    fn names_after_other_scripts_and_long_lines_cost_little() {
+        let log = "→wi=[0.1, 0.2, 0.97] é wo=[0.1, 0.2, 0.97]";
+        assert_eq!(pattern(Dialect::Physics, log), "wi={w} é wo={t_yours}");
+        let long = format!("{} t=1 2 3", "[".repeat(100_000));
+        assert_eq!(pattern(Dialect::Physics, &long), "");
     }
 
     #[test]
