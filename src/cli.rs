@@ -14,8 +14,10 @@ use clap::{CommandFactory as _, Parser, Subcommand, ValueEnum};
 use refraction_diagram::animation::Animation;
 use refraction_diagram::palette::Theme;
 use refraction_i18n::Locale;
+use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
 use refraction_scene::DEFAULT_SCENE;
+use refraction_tools::api_check::Renderer;
 use refraction_tools::solve::Precision;
 
 use crate::app::View;
@@ -161,8 +163,8 @@ pub enum Command {
     /// Without --api, each line (JSON Lines from FILE or stdin, a --pattern log or --csv) has
     /// the `solve` fields "w", "n", "mu_i", "mu_t" (or "entering" with --inside and
     /// --outside), "t_yours" (your T: an array, a string such as "vec3(0.1, -0.9, 0)", or null
-    /// where your code reported total internal reflection) and optionally "ratio" (the ratio
-    /// your code used). With --api, each line is the call your code made in that API's own
+    /// where your code reported total internal reflection or sampled a reflection) and
+    /// optionally "ratio" (the ratio your code used). With --api, each line is the call your code made in that API's own
     /// terms (glsl: I, N, eta, result; pbrt: wi, n, eta, returned, wt, etap; rtiow: uv, n,
     /// etai_over_etat, refracted, front_face; mitsuba: wi, n, eta, wo), with optional truth
     /// "from", "to", "travel", "entering".
@@ -170,8 +172,10 @@ pub enum Command {
     /// Answers each line with "ok", "matches" (chosen, wrong_side, wrong_bend, reversed,
     /// total_internal_reflection or null), "explanation" and "mistakes"; the tally and the
     /// diagnosis of the whole log go to stderr (and with --summary to a JSON file). Exit
-    /// status 0 when every line is ok, 1 when any is not, 3 when no line was judged (nothing
-    /// matched the pattern, the input was empty, a CSV held only its header), 2 on an error.
+    /// status 0 when every line is ok, 1 when any is not (or the diagnosis finds a mistake),
+    /// 3 when no line was judged (nothing matched the pattern, the input was empty, a CSV held
+    /// only its header), 4 when no line is wrong but the log cannot be checked (the diagnosis
+    /// says "unchecked" and what to log), 2 on an error.
     Check {
         /// JSON Lines file to read (stdin when absent).
         file: Option<PathBuf>,
@@ -213,6 +217,25 @@ pub enum Command {
         /// summary line {"path","hits","first_wrong","exit_ok","explanation"}.
         #[arg(long, requires = "api")]
         paths: bool,
+        /// Without --api: "w" points along the ray (along-ray, the default) or back toward
+        /// where it came from (toward-origin, as Mitsuba's, Tungsten's and Cycles' wi), unless
+        /// a line's "convention" says.
+        #[arg(long, value_name = "along-ray|toward-origin", conflicts_with = "api", value_parser = parse_convention)]
+        convention: Option<Convention>,
+        /// Without --api: the normal of lines that print none, as +z, -z, +x... or "x y z" (a
+        /// local frame's +z in Mitsuba and Tungsten), taken as the outward normal: with
+        /// --inside and --outside, each ray's side follows from it.
+        #[arg(long, value_name = "+z|X Y Z", conflicts_with = "api", value_parser = parse_normal)]
+        normal: Option<[f64; 3]>,
+        /// Whose code the log comes from, so that the fix names the line to change in it:
+        /// mitsuba, tungsten, cycles, threejs, pbrt, smallpt, rtiow, glsl (with --api, the
+        /// API's by default).
+        #[arg(long, value_name = "NAME", value_parser = parse_renderer)]
+        renderer: Option<Renderer>,
+        /// Read the log's first lines and print a --pattern for them (and the command that
+        /// uses it) instead of checking; exit status 3 when no line looks like a refraction.
+        #[arg(long, conflicts_with_all = ["pattern", "csv", "summary", "paths", "strict"])]
+        suggest_pattern: bool,
     },
     /// Measure what accuracy costs in time: every kernel variant at f32 and f64, timed on
     /// this machine and compared with a double-double oracle.
@@ -349,6 +372,60 @@ pub fn parse_animation(name: &str) -> Result<Animation, String> {
 pub fn parse_api(name: &str) -> Result<Api, String> {
     Api::from_name(name).ok_or_else(|| {
         format!("unknown API \"{name}\": expected glsl (or hlsl, wgsl, glm, glam), pbrt, rtiow or mitsuba")
+    })
+}
+
+/// Reads `--convention along-ray|toward-origin` (or with an underscore).
+///
+/// # Errors
+/// Anything else.
+pub fn parse_convention(name: &str) -> Result<Convention, String> {
+    Convention::from_name(&name.replace('-', "_")).ok_or_else(|| {
+        format!("unknown convention \"{name}\": expected along-ray or toward-origin")
+    })
+}
+
+/// Reads `--normal`: an axis (`+z`, `-z`, `x`...) or a vector as programs print it.
+///
+/// # Errors
+/// Anything else, or the zero vector.
+pub fn parse_normal(text: &str) -> Result<[f64; 3], String> {
+    let axis = |i: usize, sign: f64| {
+        let mut v = [0.0; 3];
+        v[i] = sign;
+        v
+    };
+    let trimmed = text.trim().to_ascii_lowercase();
+    let (sign, name) = match trimmed.strip_prefix('-') {
+        Some(rest) => (-1.0, rest),
+        None => (1.0, trimmed.strip_prefix('+').unwrap_or(&trimmed)),
+    };
+    if let Some(i) = ["x", "y", "z"].iter().position(|a| *a == name) {
+        return Ok(axis(i, sign));
+    }
+    let v = refraction_tools::vector_text::parse_vector(text)
+        .map_err(|e| format!("--normal: {e}: expected +z, -z, +x... or three numbers"))?
+        .value;
+    if v.iter().all(|c| c.is_finite()) && v != [0.0; 3] {
+        Ok(v)
+    } else {
+        Err(format!(
+            "--normal must be a finite vector other than zero, not {text}"
+        ))
+    }
+}
+
+/// Reads `--renderer NAME`.
+///
+/// # Errors
+/// An unknown name; the message lists the known ones.
+pub fn parse_renderer(name: &str) -> Result<Renderer, String> {
+    Renderer::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = Renderer::ALL.iter().map(|r| r.name()).collect();
+        format!(
+            "unknown renderer \"{name}\": expected one of {}",
+            names.join(", ")
+        )
     })
 }
 

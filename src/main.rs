@@ -71,13 +71,20 @@ fn main() -> ExitCode {
             paths,
             summary,
             replace,
-        }) => commands::lines::check(
+            convention,
+            normal,
+            renderer,
+            suggest_pattern,
+        }) if !suggest_pattern => commands::lines::check(
             file.as_deref(),
             &refraction_tools::api_check::Options {
                 dialect: api.map_or(Dialect::Physics, Dialect::Api),
                 inside,
                 outside,
                 precision,
+                convention,
+                normal,
+                renderer,
             },
             &commands::lines::Reading {
                 pattern: pattern.as_deref(),
@@ -87,6 +94,10 @@ fn main() -> ExitCode {
                 summary: summary.as_deref(),
                 replace,
             },
+        ),
+        Some(Command::Check { file, api, .. }) => commands::lines::suggest_pattern(
+            file.as_deref(),
+            api.map_or(Dialect::Physics, Dialect::Api),
         ),
         Some(Command::Bench { quick, json, plot }) => {
             commands::bench::run(quick, json, plot.as_deref())

@@ -1,12 +1,13 @@
 //! `solve` and `check`: JSON Lines in, one answer per line out.
 
 use std::fs::File;
-use std::io::{self, BufRead, Write as _};
+use std::io::{self, BufRead, Read as _, Write as _};
 use std::path::Path;
 use std::process::ExitCode;
 
-use refraction_tools::api_check::{Format, Options, Pattern, Session};
-use refraction_tools::diagnosis::looks_like_summary;
+use refraction_i18n::t;
+use refraction_tools::api_check::{Dialect, Format, Options, Pattern, Session, suggest};
+use refraction_tools::diagnosis::{Verdict, looks_like_summary};
 use refraction_tools::{self as jsonl, LinesError, solve as solver};
 
 use super::{fail, output, output_error};
@@ -32,6 +33,11 @@ pub fn solve() -> ExitCode {
 /// was empty or blank, a CSV held only its header): not a pass, so that a typo in a CI job's
 /// pattern fails it.
 pub const NOTHING_JUDGED: u8 = 3;
+
+/// The exit status of a `check` run whose lines are right as far as their API's rules go but
+/// cannot be told right or wrong (the diagnosis's `unchecked`: no `entering`, no indices): not a
+/// pass either, so that a CI job learns that its log checks nothing.
+pub const UNCHECKED: u8 = 4;
 
 /// The log `check` reads: `file`, or stdin when absent, with the name a message gives it.
 struct Input {
@@ -158,12 +164,12 @@ pub fn check(file: Option<&Path>, options: &Options, reading: &Reading<'_>) -> E
         tally.push(format!("check: {counted}"));
     }
     tally.extend(summary.sentences().iter().map(|s| format!("check: {s}")));
-    let status = if summary.judged == 0 {
-        ExitCode::from(NOTHING_JUDGED)
-    } else if answered && session.all_ok() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
+    let status = match summary.verdict() {
+        Verdict::NothingJudged => ExitCode::from(NOTHING_JUDGED),
+        _ if !answered || !session.all_ok() => ExitCode::from(1),
+        Verdict::Mistake => ExitCode::from(1),
+        Verdict::Unchecked => ExitCode::from(UNCHECKED),
+        Verdict::None => ExitCode::SUCCESS,
     };
     finished(&tally.join("\n"), status)
 }
@@ -177,4 +183,56 @@ fn finished(tally: &str, status: ExitCode) -> ExitCode {
     } else {
         status
     }
+}
+
+/// Runs `check --suggest-pattern` on `file` or stdin: the command with the pattern guessed
+/// from the log's first lines on stdout, what else it needs on stderr; status 3 when no line
+/// looks like a refraction.
+pub fn suggest_pattern(file: Option<&Path>, dialect: Dialect) -> ExitCode {
+    let input = match Input::open(file) {
+        Ok(input) => input,
+        Err(e) => return fail("check", &e),
+    };
+    // The first lines, within 8 MiB (a line of another encoding read as it can be).
+    let mut reader = input.lines.take(8 << 20);
+    let mut lines = Vec::new();
+    let mut bytes = Vec::new();
+    while lines.len() < suggest::LINES_READ {
+        bytes.clear();
+        match reader.read_until(b'\n', &mut bytes) {
+            Ok(0) => break,
+            Ok(_) => lines.push(String::from_utf8_lossy(&bytes).trim_end().to_owned()),
+            Err(e) => return fail("check", &format!("cannot read {}: {e}", input.name)),
+        }
+    }
+    let texts: Vec<&str> = lines.iter().map(String::as_str).collect();
+    let Some(suggestion) = suggest::suggest(dialect, &texts) else {
+        let message = t!("check-suggest-none", lines = texts.len());
+        return finished(&format!("check: {message}"), ExitCode::from(NOTHING_JUDGED));
+    };
+    let mut command = String::from("refraction-explorer check");
+    if let Some(api) = dialect.api() {
+        command.push_str(&format!(" --api {}", api.name()));
+    }
+    command.push_str(&format!(
+        " --pattern '{}'",
+        suggestion.pattern.replace('\'', "'\\''")
+    ));
+    if suggestion.toward_origin {
+        command.push_str(" --convention toward-origin");
+    }
+    if let Some(path) = file {
+        command.push_str(&format!(" {}", path.display()));
+    }
+    if let Err(e) = writeln!(io::stdout().lock(), "{command}") {
+        return output_error("check", &e);
+    }
+    let hints: Vec<String> = suggest::hints(&suggestion, dialect)
+        .into_iter()
+        .map(|h| format!("check: {h}"))
+        .collect();
+    if hints.is_empty() {
+        return ExitCode::SUCCESS;
+    }
+    finished(&hints.join("\n"), ExitCode::SUCCESS)
 }

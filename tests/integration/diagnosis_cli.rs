@@ -4,53 +4,28 @@
 //! and its `--summary` must name the bug and the fix in that renderer's own code, flag no line
 //! the bug left right, and say `none` for the bug-free log.
 
-use std::path::PathBuf;
-use std::process::Command;
-
-use serde_json::Value;
-
-use crate::cli;
+use crate::cli::{self, Checked};
 use crate::renderers::{self, Bug, Log, Renderer};
 
 const LINES: usize = 300;
 
-/// What `check` made of a log: the summary, the answers and stderr.
-struct Checked {
-    summary: Value,
-    answers: Vec<Value>,
-    stderr: String,
-}
-
 fn check(log: &Log, name: &str) -> Checked {
-    let folder = cli::folder("diagnosis", name);
-    let (input, summary): (PathBuf, PathBuf) = (folder.join("log.txt"), folder.join("s.json"));
     let text: String = log
         .lines
         .iter()
         .flat_map(|l| [l.text.as_str(), "\n"])
         .collect();
-    std::fs::write(&input, text).unwrap();
-    let mut command = Command::new(env!("CARGO_BIN_EXE_refraction-explorer"));
-    command.arg("check");
-    if let Some(api) = log.api {
-        command.args(["--api", api]);
-    }
-    let output = command
-        .args(["--inside", &log.inside.to_string()])
-        .args(["--outside", &log.outside.to_string()])
-        .args(["--pattern", log.pattern])
-        .arg("--summary")
-        .arg(&summary)
-        .arg(&input)
-        .output()
-        .unwrap();
-    let checked = Checked {
-        summary: serde_json::from_str(&std::fs::read_to_string(&summary).unwrap()).unwrap(),
-        answers: cli::answers(&output),
-        stderr: String::from_utf8_lossy(&output.stderr).into_owned(),
-    };
-    std::fs::remove_dir_all(&folder).unwrap();
-    checked
+    let (inside, outside) = (log.inside.to_string(), log.outside.to_string());
+    let mut args: Vec<&str> = log.api.map_or_else(Vec::new, |api| vec!["--api", api]);
+    args.extend([
+        "--inside",
+        &inside,
+        "--outside",
+        &outside,
+        "--pattern",
+        log.pattern,
+    ]);
+    cli::check_log("diagnosis", name, &args, &text)
 }
 
 /// A piece of the fix each bug must be given, in the renderer's own code.

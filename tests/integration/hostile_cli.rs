@@ -425,7 +425,7 @@ fn summary_never_replaces_the_log_it_reads_nor_a_file_of_another_kind() {
     // Issue 31: `--summary mylog.jsonl mylog.jsonl` (or `< mylog.jsonl`) replaced the log.
     let folder = folder("summary-targets");
     let log = folder.join("mylog.jsonl");
-    let line = r#"{"I":[0.6,-0.8,0],"N":[0,1,0],"eta":0.6666667,"result":[0.4,-0.916515,0]}"#;
+    let line = r#"{"I":[0.6,-0.8,0],"N":[0,1,0],"eta":0.6666667,"result":[0.4,-0.916515,0],"from":1,"to":1.5}"#;
     fs::write(&log, format!("{line}\n")).unwrap();
     let (log_arg, dir) = (log.to_str().unwrap(), folder.to_str().unwrap());
     let by_name = run(
@@ -494,9 +494,13 @@ fn summary_never_replaces_the_log_it_reads_nor_a_file_of_another_kind() {
 fn check_that_judged_no_line_exits_with_its_own_status() {
     // Issue 31: a CI job's `check` passed on a pattern's typo.
     const NOTHING_JUDGED: i32 = 3;
-    let line = r#"{"I":[0.6,-0.8,0],"N":[0,1,0],"eta":0.6666667,"result":[0.4,-0.916515,0]}"#;
+    let line = r#"{"I":[0.6,-0.8,0],"N":[0,1,0],"eta":0.6666667,"result":[0.4,-0.916515,0],"from":1,"to":1.5}"#;
     let judged = run(&["check", "--api", "glsl"], line);
     assert_eq!(judged.status.code(), Some(0), "{judged:?}");
+    // Issue 34: right by GLSL's own rules, but nothing says which ratio is right: not a pass.
+    let unchecked_line = line.replace(r#","from":1,"to":1.5"#, "");
+    let unchecked = run(&["check", "--api", "glsl"], &unchecked_line);
+    assert_eq!(unchecked.status.code(), Some(4), "{unchecked:?}");
     for (args, input) in [
         (vec!["check", "--api", "glsl"], ""),
         (vec!["check", "--api", "glsl"], "\n  \n\n"),

@@ -456,7 +456,7 @@ impl Rng {
 
     /// Uniform in [0, 1).
     #[expect(clippy::cast_precision_loss)] // 53 bits fit exactly
-    fn unit(&mut self) -> f64 {
+    pub(crate) fn unit(&mut self) -> f64 {
         (self.next_u64() >> 11) as f64 / (1_u64 << 53) as f64
     }
 }
@@ -598,7 +598,7 @@ pub(crate) fn angle(a: DVec3, b: DVec3) -> f64 {
 // Printing as C and C++ print
 
 /// C's `%.{decimals}f` (a `float` argument is promoted to `double` first).
-fn c_fixed(x: f64, decimals: usize) -> String {
+pub(crate) fn c_fixed(x: f64, decimals: usize) -> String {
     if x.is_nan() {
         return if x.is_sign_negative() { "-nan" } else { "nan" }.to_owned();
     }
@@ -610,7 +610,7 @@ fn c_fixed(x: f64, decimals: usize) -> String {
 
 /// C's `%.{precision}g`, which is also what a C++ stream prints for a `double` with that
 /// precision (6 by default).
-fn c_general(x: f64, precision: usize) -> String {
+pub(crate) fn c_general(x: f64, precision: usize) -> String {
     if !x.is_finite() {
         return c_fixed(x, 0);
     }
@@ -643,7 +643,7 @@ fn strip_zeros(text: &str) -> &str {
     }
 }
 
-fn flag(b: bool) -> &'static str {
+pub(crate) fn flag(b: bool) -> &'static str {
     if b { "1" } else { "0" }
 }
 

@@ -1,16 +1,21 @@
-//! What the diagnosis of a whole log costs: the per-line work `check --api` does (read a log
-//! line with a pattern, judge the call, count its evidence) on one thread, a line that almost
-//! matches the pattern against one that does, and the ranking of a log's counts into findings. `cargo bench -p refraction-tools --bench diagnosis`.
+//! What the diagnosis of a whole log costs beside judging its lines: the per-line work `check`
+//! does (read a log line with a pattern, judge it) on one thread, without and with what the
+//! diagnosis adds (each line's evidence: the formula's variants that reproduce it; counting it;
+//! the ranked search at the end), and that part alone on lines judged beforehand, for calls of
+//! an API and for any renderer's own refraction; a
+//! line that almost matches the pattern against one that does; and the ranking of a
+//! million-line log's counts into findings. `cargo bench -p refraction-tools --bench diagnosis`.
 //!
-//! Measured whole, a 1,000,000-line log of the book's calls takes as long with the diagnosis
-//! as without it (`check --summary` against `check` before it, release build, 2 cores).
+//! The figures are in docs/check.md ("Find the bug").
 
 use core::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use refraction_kernel::api::Api;
-use refraction_tools::api_check::{Code, Format, MAX_PLACEHOLDERS, Options, Pattern, Session};
-use refraction_tools::diagnosis::{Evidence, LogTally, Side};
+use refraction_tools::api_check::{
+    Dialect, Format, MAX_PLACEHOLDERS, Options, Pattern, Record, Session, judge_record,
+};
+use refraction_tools::diagnosis::LogTally;
 
 /// Lines the book's `dielectric::scatter` prints, right and with an outward normal from inside.
 const LINES: [&str; 2] = [
@@ -21,27 +26,93 @@ const LINES: [&str; 2] = [
 const PATTERN: &str =
     "uv={uv} n={n} ratio={etai_over_etat} front_face={entering} refracted={refracted}";
 
-fn lines(c: &mut Criterion) {
-    let log: String = LINES
+/// smallpt's lines (docs/examples/smallpt.log, whose rays from inside use `nl` in `tdir`): any
+/// renderer's own refraction, right and wrong.
+const SMALLPT: [&str; 2] = [
+    "REFR d=(0.814060 -0.533213 -0.230197) nl=(-0.201798 0.646311 -0.735907) into=1 tdir=(0.654226 -0.712648 0.253221)",
+    "REFR d=(-0.413051 -0.568748 -0.711277) nl=(0.565556 0.347137 0.748093) into=0 tdir=(-0.456107 -0.514582 -0.726066)",
+];
+
+const SMALLPT_PATTERN: &str = "REFR d={w} nl={n} into={entering} tdir={t_yours}";
+
+/// A log of `lines` repeated to 2,000 lines.
+fn log_of(lines: &[&str]) -> String {
+    lines
         .iter()
         .cycle()
         .take(2000)
         .flat_map(|l| [*l, "\n"])
-        .collect();
+        .collect()
+}
+
+/// The per-line work of a log in `dialect` read with `pattern`: judged only, and judged with
+/// the diagnosis of the whole log (each line's evidence counted, the ranking at the end).
+fn bench_dialect(c: &mut Criterion, name: &str, dialect: Dialect, pattern: &str, lines: &[&str]) {
+    let log = log_of(lines);
     let options = Options {
         inside: Some(1.5),
         outside: Some(1.0),
-        ..Options::new(Api::Rtiow)
+        ..Options::new(dialect)
     };
-    c.bench_function("check_2000_pattern_lines_one_thread", |b| {
+    let parsed = Pattern::parse(dialect, pattern).expect("the pattern reads");
+    let mut group = c.benchmark_group(name);
+    group.bench_function("judge_2000_lines", |b| {
         b.iter(|| {
-            let pattern = Pattern::parse(Api::Rtiow, PATTERN).expect("the pattern reads");
-            let mut session = Session::new(options, Format::Pattern(pattern), false, false);
+            let mut ok = 0;
+            for line in log.lines() {
+                let texts = parsed.capture(black_box(line)).expect("every line matches");
+                let record = Record::from_texts(dialect, texts).expect("the fields read");
+                ok += usize::from(judge_record(&record, &options).is_ok_and(|j| j.ok()));
+            }
+            black_box(ok)
+        });
+    });
+    group.bench_function("judge_and_diagnose_2000_lines", |b| {
+        b.iter(|| {
+            let mut tally = LogTally::default();
+            for line in log.lines() {
+                let texts = parsed.capture(black_box(line)).expect("every line matches");
+                let record = Record::from_texts(dialect, texts).expect("the fields read");
+                if let Ok(judged) = judge_record(&record, &options) {
+                    tally.add(judged.evidence());
+                }
+            }
+            black_box(tally.summary(dialect.api(), None))
+        });
+    });
+    // The diagnosis alone: the lines judged beforehand, their evidence counted and ranked.
+    let judged: Vec<_> = log
+        .lines()
+        .filter_map(|line| {
+            let texts = parsed.capture(line)?;
+            let record = Record::from_texts(dialect, texts).ok()?;
+            judge_record(&record, &options).ok()
+        })
+        .collect();
+    group.bench_function("diagnose_only_2000_judged_lines", |b| {
+        b.iter(|| {
+            let mut tally = LogTally::default();
+            for judgement in &judged {
+                tally.add(black_box(judgement).evidence());
+            }
+            black_box(tally.summary(dialect.api(), None))
+        });
+    });
+    group.bench_function("check_2000_lines_one_thread", |b| {
+        b.iter(|| {
+            let format = Format::Pattern(parsed.clone());
+            let mut session = Session::new(options, format, false, false);
             let mut out = Vec::new();
             let answered = session.run(black_box(log.as_bytes()), &mut out, 1);
             black_box((answered.is_ok(), session.summary()))
         });
     });
+    group.finish();
+}
+
+fn lines(c: &mut Criterion) {
+    bench_dialect(c, "rtiow", Dialect::Api(Api::Rtiow), PATTERN, &LINES);
+    bench_dialect(c, "smallpt", Dialect::Physics, SMALLPT_PATTERN, &SMALLPT);
 }
 
 /// A log line that matches the pattern, and one of the same length that almost does (its last
@@ -76,32 +147,32 @@ fn near_misses(c: &mut Criterion) {
     group.finish();
 }
 
+/// Counting a million lines' evidence (the book's log: right lines, and lines from inside
+/// with an outward normal) and ranking every hypothesis on the counts.
 fn ranking(c: &mut Criterion) {
-    let kinds = [
-        Evidence {
-            ok: true,
-            side: Some(Side::Outside),
-            ..Evidence::default()
-        },
-        Evidence {
-            alternatives: vec![vec![Code::NormalNotFacing], vec![Code::IncidentReversed]],
-            side: Some(Side::Inside),
-            ..Evidence::default()
-        },
-        Evidence {
-            alternatives: vec![vec![Code::MissedTir]],
-            side: Some(Side::Inside),
-            past_critical: true,
-            ..Evidence::default()
-        },
-    ];
+    let options = Options {
+        inside: Some(1.5),
+        outside: Some(1.0),
+        ..Options::new(Api::Rtiow)
+    };
+    let parsed = Pattern::parse(Api::Rtiow, PATTERN).expect("the pattern reads");
+    let evidence: Vec<_> = LINES
+        .iter()
+        .map(|line| {
+            let texts = parsed.capture(line).expect("the line matches");
+            let record = Record::from_texts(Api::Rtiow, texts).expect("the fields read");
+            judge_record(&record, &options)
+                .expect("the line is judged")
+                .evidence()
+        })
+        .collect();
     c.bench_function("count_1000000_lines_and_rank", |b| {
         b.iter(|| {
             let mut tally = LogTally::default();
-            for evidence in kinds.iter().cycle().take(1_000_000) {
-                tally.add(black_box(evidence));
+            for e in evidence.iter().cycle().take(1_000_000) {
+                tally.add(black_box(e.clone()));
             }
-            black_box(tally.summary(Some(Api::Rtiow)))
+            black_box(tally.summary(Some(Api::Rtiow), None))
         });
     });
 }

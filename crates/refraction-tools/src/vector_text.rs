@@ -6,7 +6,8 @@
 //! and may end in a literal suffix (`0.5f`, `1.0f32`, `2_f64`); the `f` of `inf` is the word's
 //! own. A vector is three numbers separated by commas or spaces, bare or inside brackets with
 //! an optional type name: `x y z`, `x, y, z`, `[ x, y, z ]`, `(x, y, z)`, `vec3(x, y, z)`,
-//! `glm::vec3(...)`, `Vec3 { x: .., y: .., z: .. }`.
+//! `glm::vec3(...)`, `Vec3 { x: .., y: .., z: .. }`, nested (`[[x, y, z]]`, as a one-lane Dr.Jit
+//! array prints) or as Node prints a typed array (`Float32Array(3) [ x, y, z ]`).
 
 use crate::error::VectorError;
 use glam::DVec3;
@@ -148,8 +149,38 @@ pub fn json_vector_digits(components: [f64; 3]) -> u32 {
     vector_digits(components, components.map(digits_of))
 }
 
-/// The text between a type name's opening bracket and its closing one, or the text itself.
+/// The text between a type name's opening bracket and its closing one, or the text itself;
+/// nested brackets (`[[x, y, z]]`, a one-lane Dr.Jit array) are taken off one by one.
 fn vector_body(text: &str) -> &str {
+    let mut body = text.trim();
+    loop {
+        let inner = one_body(body).trim();
+        if inner == body {
+            return body;
+        }
+        body = inner;
+    }
+}
+
+/// Node's name for a typed array before its elements, `Float32Array(3) `, taken off.
+fn without_typed_array(text: &str) -> &str {
+    let Some((name, rest)) = text.split_once('(') else {
+        return text;
+    };
+    let Some((count, rest)) = rest.split_once(')') else {
+        return text;
+    };
+    // untranslated: the end of JavaScript's typed arrays' names (Float32Array, Float64Array)
+    let typed = name.ends_with("Array")
+        && name.chars().all(char::is_alphanumeric)
+        && count.chars().all(|c| c.is_ascii_digit())
+        && rest.trim_start().starts_with('[');
+    if typed { rest.trim_start() } else { text }
+}
+
+/// [`vector_body`]'s one step: the text inside one type name's brackets.
+fn one_body(text: &str) -> &str {
+    let text = without_typed_array(text);
     let Some(open) = text.find(['(', '[', '{']) else {
         return text;
     };
@@ -357,6 +388,9 @@ mod tests {
             "DVec3 { x: 0.1, y: -0.9, z: 0 };",
             "(0.1f, -0.9f, 0.0f);",
             "Vector3f[0.1_f32, -0.9f32, 0]",
+            "[[0.1, -0.9, 0]]",
+            "Float32Array(3) [ 0.1, -0.9, 0 ]",
+            "Float32Array(3) [\n  0.1,\n  -0.9,\n  0\n]",
         ] {
             assert_eq!(vector(text), [0.1, -0.9, 0.0], "{text}");
         }

@@ -17,7 +17,7 @@ use refraction_diagram::{Primitive, failure_map};
 use refraction_i18n::t;
 use refraction_model::log_map::LinePoint;
 use refraction_tools::api_check::{
-    Dialect, Format, Judgement, Options, Pattern, Record, SKIPPED, Session, Tally, fields,
+    Dialect, Format, Judgement, Options, Pattern, Record, SAMPLED, SKIPPED, Session, Tally, fields,
 };
 use refraction_tools::diagnosis::Summary;
 
@@ -214,6 +214,7 @@ fn judge(dialect: Dialect, reading: &Reading, text: &str) -> Result<Table, Strin
             not_listed += 1;
         }
     }
+    session.end_of_input();
     Ok(Table {
         read_as,
         rows,
@@ -234,6 +235,7 @@ fn tally_words(tally: &Tally) -> String {
         .map(|(kind, n)| {
             let kind = match kind {
                 SKIPPED => t!("check-tally-skipped"),
+                SAMPLED => t!("check-tally-sampled"),
                 "unreadable" => t!("check-tally-unreadable"),
                 "unexplained" => t!("check-tally-unexplained"),
                 code => code.to_owned(),
@@ -582,7 +584,8 @@ mod tests {
             "{:?}",
             table.tally
         );
-        assert_eq!(table.summary.diagnosis[0].code, "none");
+        // Right by the book's rules, but nothing says which side the ray comes from (issue 34).
+        assert_eq!(table.summary.diagnosis[0].code, "unchecked");
         let e = judge(Dialect::Api(Api::Rtiow), &reading("LOG {I}"), log).unwrap_err();
         assert!(e.contains("unknown field {I}"), "{e}");
     }

@@ -49,3 +49,42 @@ pub fn render(args: &[&str]) -> Output {
         .output()
         .expect("the binary starts")
 }
+
+/// What `check` made of a log: its `--summary`, its answers, its stderr and exit status.
+pub struct Checked {
+    /// The `--summary` file's JSON.
+    pub summary: Value,
+    /// The answer lines.
+    pub answers: Vec<Value>,
+    /// The tally and the diagnosis.
+    pub stderr: String,
+    /// The exit status.
+    pub status: i32,
+}
+
+/// Runs `check ARGS --summary FILE LOG` on a log holding `text`, in a folder named after
+/// `prefix` and `name` (kept, with the log, in the folder `FAMILIES_KEEP` names if set).
+pub fn check_log(prefix: &str, name: &str, args: &[&str], text: &str) -> Checked {
+    let folder = folder(prefix, name);
+    let (input, summary) = (folder.join("log.txt"), folder.join("s.json"));
+    std::fs::write(&input, text).unwrap();
+    if let Some(keep) = std::env::var_os("FAMILIES_KEEP") {
+        std::fs::write(PathBuf::from(keep).join(format!("{name}.log")), text).unwrap();
+    }
+    let output = Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
+        .arg("check")
+        .args(args)
+        .arg("--summary")
+        .arg(&summary)
+        .arg(&input)
+        .output()
+        .unwrap();
+    let checked = Checked {
+        summary: serde_json::from_str(&std::fs::read_to_string(&summary).unwrap()).unwrap(),
+        answers: answers(&output),
+        stderr: String::from_utf8_lossy(&output.stderr).into_owned(),
+        status: output.status.code().unwrap_or(-1),
+    };
+    std::fs::remove_dir_all(&folder).unwrap();
+    checked
+}

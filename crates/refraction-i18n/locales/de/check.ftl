@@ -282,7 +282,7 @@ check-mistake-no-flip-inside = für einen Strahl von der Rückseite der Normale 
 check-mistake-normal-term-sign = der Anteil des Ergebnisses entlang der Normale hat das falsche Vorzeichen; der Anteil quer dazu stimmt
 check-mistake-other-root = die andere Lösung: Vorzeichen der Quadratwurzel umgekehrt, das Ergebnis an der Fläche gespiegelt
 check-mistake-false-tir = Totalreflexion gemeldet, wo der Strahl gebrochen wird
-check-diagnosis-no-lines = Keine Zeile wurde geprüft ({ $lines } gelesen): prüfe das Muster, die CSV-Kopfzeile oder die Felder der Zeilen.
+check-diagnosis-no-lines = Keine Zeile wurde geprüft ({ $lines } gelesen): prüfe das Muster, die CSV-Kopfzeile oder die Felder der Zeilen; check --suggest-pattern liest die ersten Zeilen des Protokolls und schlägt ein Muster vor.
 check-physics-explained = Genau das ergibt eine Brechung mit diesem Fehler: { $mistakes }.
 check-looks-normal-term = die Antwort der API mit negiertem Anteil entlang der Normale: der Term entlang der Normale wird abgezogen statt addiert oder umgekehrt
 check-looks-no-flip = was die Formel ohne Umkehren der Normale und von eta für einen Strahl von der Rückseite der Normale ergibt
@@ -315,14 +315,46 @@ check-fix-generic-incident-reversed = übergib als W die Ausbreitungsrichtung de
 check-fix-generic-normal-not-facing = wo der Strahl das Objekt verlässt, verwende in jedem Term die Normale, die dem Strahl zugewandt ist (die äußere, umgekehrt), oder die äußere mit umgekehrtem Vorzeichen, aber nicht beides
 check-fix-generic-no-flip-inside = kehr für einen Strahl von innen die Normale und das Verhältnis um, bevor du brichst
 check-fix-generic-normal-term-sign = addiere den Term entlang der Normale: T = μ·W + (μ·cosθi − cosθt)·N, mit N dem Strahl zugewandt
-check-fix-generic-other-root = nimm die Lösung mit −√k: T = μ·W + (μ·cosθi − √k)·N, mit N dem Strahl zugewandt
+check-fix-generic-other-root = gib dem Teil von T längs der zum Strahl zeigenden Normale das Vorzeichen, das T durch die Fläche führt: −cosθt (die Variable mit cosθt oder das von cosθi übernommene Vorzeichen ist umgekehrt)
 check-fix-generic-missed-tir = reflektiere, wenn k = 1 − μ²·(1 − cos²θi) negativ ist, bevor du die Quadratwurzel ziehst
 check-fix-generic-false-tir = melde Totalreflexion nur, wo k = 1 − μ²·(1 − cos²θi) negativ ist
 check-fix-generic-not-unit-input = normiere W und N, bevor du brichst
-check-fix-generic-not-the-api-result = vergleiche deine Brechung in den genannten Zeilen mit T = μ·W + (μ·cosθi − √k)·N, wie es die Erklärung jeder Zeile sagt
+check-fix-generic-not-the-api-result = kein einzelner Fehler der Formel, auch kein Paar, erzeugt diese Zeilen: die Erklärung jeder Zeile sagt, was zurückkam und was das richtige T ist
 check-physics-no-indices = keine Brechungsindizes: gib `mu_i` und `mu_t` an, oder `entering` mit --inside und --outside
 check-physics-unknown-convention = unbekannte Konvention "{ $text }": erwartet "along_ray" oder "toward_origin"
 check-diagnosis-none = Kein Fehler: Das Log stimmt { $place }.
 check-diagnosis-verdict = Der Fehler: { $code } ({ $meaning }), { $place }. Behebung: { $fix }.
 check-diagnosis-also = Außerdem: { $code } ({ $meaning }), { $place }. Behebung: { $fix }.
 check-diagnosis-alike = Das Log kann ihn nicht von { $alike } unterscheiden; protokolliere { $fields }, um sie zu unterscheiden.
+check-pattern-too-many-lines = das Muster umfasst { $count } Zeilen: höchstens { $limit } werden gelesen
+check-pattern-negated-not-flag = {"{"}!{ $field }{"}"} verneint ein Flag, und { $field } ist keines: schreib {"{"}!entering{"}"} für ein umgekehrt ausgegebenes Flag (inside, backfacing)
+check-suggest-toward-origin = der einfallende Vektor wird als wi ausgegeben und zeigt zurück zum Ursprung des Strahls: füge --convention toward-origin hinzu
+check-suggest-no-normal = es wird keine Normale ausgegeben: ist sie die z-Achse eines lokalen Systems (Mitsuba, Tungsten), füge --normal +z hinzu
+check-suggest-no-side = nichts Ausgegebenes sagt, ob der Strahl in das Objekt eintritt: gib es aus ({"{"}entering{"}"}, oder {"{"}!entering{"}"} für ein Flag wie backfacing) und übergib --inside und --outside, sonst kann das Verhältnis nicht geprüft werden
+check-suggest-none = keine der ersten { $lines } Zeilen sieht nach einer Brechung aus (einfallender Vektor, Verhältnis und Ergebnis, jeweils nach seinem Namen): schreib das --pattern von Hand (docs/check.md)
+check-situation-outward = wobei { $normal } als die äußere Normale gilt, da die Indizes nichts über die Seite sagen
+check-right-sampled = Richtig als gezogene Reflexion: { $call } bricht hier ({ $returned }), aber Mitsuba reflektiert mit Wahrscheinlichkeit F = { $f }, und das leere wo sagt, dass es das tat. Die Diagnose des ganzen Protokolls prüft, dass der Code bei diesen Winkeln anderswo durchlässt.
+check-physics-sampled = Nichts kam zurück, wo der Strahl gebrochen wird: richtig als mit Wahrscheinlichkeit F = { $f } gezogene Reflexion, wie Renderer sie protokollieren, die zufällig zwischen Reflexion und Brechung wählen. Die Diagnose des ganzen Protokolls prüft, dass der Code bei diesen Winkeln anderswo durchlässt.
+check-fix-in = { $fix } (in { $place })
+check-fix-part = { $part }; { $fix }
+check-sides-entering = {" "}für Strahlen, die in das Objekt eintreten
+check-sides-leaving = {" "}für Strahlen, die das Objekt verlassen
+check-part-ratio = T wird mit umgekehrtem Verhältnis gebrochen{ $sides }: 1/μ in jedem Teil, auch im Test auf Totalreflexion (die Variable mit μ oder der Ausdruck, der es wählt)
+check-part-across = der Teil von T quer zu N ist mit 1/μ statt μ skaliert (1/μ² des richtigen){ $sides }, der Teil längs N ist richtig: das Verhältnis, das den einfallenden Vektor multipliziert, ist umgekehrt
+check-part-along = der Teil von T längs N, cosθt = √(1 − μ²·sin²θi), kommt von 1/μ statt μ{ $sides } (ebenso der Test auf Totalreflexion), der Teil quer zu N ist richtig: das Verhältnis in cosθt ist umgekehrt
+check-part-normal = der Teil von T längs N hat das falsche Vorzeichen{ $sides }: die verwendete Normale zeigt nicht zum Strahl
+check-part-incident = der Teil von T quer zu N hat das falsche Vorzeichen (T an der Normale gespiegelt, falsch gebrochen): der einfallende Vektor geht verkehrt herum in die Formel ein
+check-part-root = der Teil von T längs N hat das falsche Vorzeichen: cosθt liegt auf der Seite, von der der Strahl kommt, also bleibt T in seinem Medium (die andere Lösung)
+check-part-term = der Term längs N, (μ·cosθi − cosθt)·N, wird abgezogen statt addiert{ $sides }; der Teil quer zu N ist richtig
+check-part-no-flip = für Strahlen von der abgewandten Seite der Normale wird weder die Normale umgekehrt noch das Verhältnis invertiert: T ist die andere Lösung bei 1/μ
+check-fix-generic-ratio-across = skaliere den Teil des einfallenden Vektors quer zu N mit μ = n_from / n_to, demselben Verhältnis, mit dem cosθt berechnet wird
+check-fix-generic-ratio-along = berechne cosθt = √(1 − μ²·sin²θi) mit μ = n_from / n_to, dem Verhältnis, das den Teil quer zu N skaliert (ein mit Vorzeichen übergebener Kosinus lässt eine Hilfsfunktion das Verhältnis erneut invertieren)
+check-fix-generic-across-sign = der Teil quer zu N ist μ mal der des einfallenden Vektors (μ·(W + cosθi·N) mit W entlang des Strahls): nimm ihn mit dem Vorzeichen des einfallenden Vektors
+check-fix-generic-never-transmits = der Code lässt diese Strahlen nie durch, obwohl sie gebrochen werden: wenn er Reflexion zieht, muss deren Wahrscheinlichkeit (F, die Fresnel-Reflektanz) dort unter 1 bleiben; melde Totalreflexion nur, wo k = 1 − μ²·(1 − cos²θi) negativ ist
+check-diagnosis-unchecked = Ohne zu wissen, von welcher Seite jeder Strahl kommt, nicht prüfbar, { $place }: jede Zeile ist nach den Regeln ihrer API richtig, aber nichts im Protokoll oder in den Optionen unterscheidet ein richtiges Verhältnis von einem falschen. { $fix }.
+check-diagnosis-alike-no-field = Das Protokoll kann es nicht von { $alike } unterscheiden.
+check-unchecked-log-entering = Protokolliere entering in jeder Zeile (true, wenn der Strahl in das Objekt eintritt; {"{"}!entering{"}"} liest ein Flag wie inside oder backfacing), oder from und to
+check-unchecked-pass-indices = Übergib --inside und --outside (die Indizes innen und außen) mit protokolliertem entering, oder bei pbrt und Mitsuba mit der äußeren Normale; oder protokolliere from und to
+check-mistake-across-sign = der Teil des Ergebnisses quer zur Normale hat das falsche Vorzeichen; der Teil längs der Normale ist richtig (das Spiegelbild des Ergebnisses an der Normale)
+check-part-across-sign = der Teil von T quer zu N hat das falsche Vorzeichen (T an der Normale gespiegelt, falsch gebrochen), der Teil längs N ist richtig: das Minus vor Verhältnis mal einfallendem Vektor fehlt
+check-tally-sampled = reflektiert (gezogen)

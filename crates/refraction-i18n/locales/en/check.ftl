@@ -282,7 +282,7 @@ check-mistake-no-flip-inside = for a ray from the normal's far side, the code do
 check-mistake-normal-term-sign = the part of the result along the normal has the wrong sign; the part across it is right
 check-mistake-other-root = the other root: the square root's sign flipped, the result mirrored across the surface
 check-mistake-false-tir = total internal reflection reported where the ray refracts
-check-diagnosis-no-lines = No line was judged ({ $lines } read): check the pattern, the CSV header or the fields the lines carry.
+check-diagnosis-no-lines = No line was judged ({ $lines } read): check the pattern, the CSV header or the fields the lines carry; check --suggest-pattern reads the log's first lines and suggests a pattern.
 check-physics-explained = That is what a refraction gives with this mistake: { $mistakes }.
 check-looks-normal-term = the API's answer with the part along the normal negated: the term along the normal is subtracted where it is added, or the other way round
 check-looks-no-flip = what the formula gives without turning the normal round and inverting eta for a ray from the normal's far side
@@ -315,14 +315,46 @@ check-fix-generic-incident-reversed = pass the ray's direction of travel as W, n
 check-fix-generic-normal-not-facing = where the ray leaves the object, use the normal that faces the ray in every term (the outward one turned round), or the outward one with its sign turned, but not both
 check-fix-generic-no-flip-inside = for a ray arriving from inside, turn the normal round and invert the ratio before refracting
 check-fix-generic-normal-term-sign = add the term along the normal: T = μ·W + (μ·cosθi − cosθt)·N, with N facing the ray
-check-fix-generic-other-root = take the root with −√k: T = μ·W + (μ·cosθi − √k)·N, with N facing the ray
+check-fix-generic-other-root = give the part of T along the normal facing the ray the sign that takes T through the surface: −cosθt (the variable holding cosθt, or the sign taken from cosθi, is flipped)
 check-fix-generic-missed-tir = reflect when k = 1 − μ²·(1 − cos²θi) is negative, before taking its square root
 check-fix-generic-false-tir = report total internal reflection only where k = 1 − μ²·(1 − cos²θi) is negative
 check-fix-generic-not-unit-input = normalise W and N before refracting
-check-fix-generic-not-the-api-result = compare your refraction with T = μ·W + (μ·cosθi − √k)·N on the lines listed, as each line's explanation says
+check-fix-generic-not-the-api-result = no single mistake of the formula, nor a pair, reproduces these lines: each line's explanation says what came back and what the right T is
 check-physics-no-indices = no indices: give `mu_i` and `mu_t`, or `entering` with --inside and --outside
 check-physics-unknown-convention = unknown convention "{ $text }": expected "along_ray" or "toward_origin"
 check-diagnosis-none = No mistake: the log is right { $place }.
 check-diagnosis-verdict = The bug: { $code } ({ $meaning }), { $place }. Fix: { $fix }.
 check-diagnosis-also = Also: { $code } ({ $meaning }), { $place }. Fix: { $fix }.
 check-diagnosis-alike = The log cannot tell it from { $alike }; log { $fields } to tell them apart.
+check-pattern-too-many-lines = the pattern takes { $count } lines: at most { $limit } are read
+check-pattern-negated-not-flag = {"{"}!{ $field }{"}"} negates a flag, and { $field } is not one: write {"{"}!entering{"}"} for a flag printed the other way round (inside, backfacing)
+check-suggest-toward-origin = the incident vector is printed as wi, pointing back toward where the ray came from: add --convention toward-origin
+check-suggest-no-normal = no normal is printed: if it is a local frame's z axis (Mitsuba, Tungsten), add --normal +z
+check-suggest-no-side = nothing printed says whether the ray enters the object: print it ({"{"}entering{"}"}, or {"{"}!entering{"}"} for a flag such as backfacing) and pass --inside and --outside, or the ratio cannot be checked
+check-suggest-none = no line of the first { $lines } looks like a refraction (an incident vector, a ratio and a result, each after its name): write the --pattern by hand (docs/check.md, Logs as programs print them)
+check-situation-outward = taking { $normal } as the outward normal, as the indices given say nothing of the side
+check-right-sampled = Right as a sampled reflection: { $call } refracts here ({ $returned }), but Mitsuba reflects with probability F = { $f }, and the null wo says it did. The diagnosis of the whole log checks that the code transmits at these angles elsewhere.
+check-physics-sampled = Nothing came back where the ray refracts: right as a reflection sampled with probability F = { $f }, as renderers that choose reflection or refraction at random log it. The diagnosis of the whole log checks that the code transmits at these angles elsewhere.
+check-fix-in = { $fix } (in { $place })
+check-fix-part = { $part }; { $fix }
+check-sides-entering = {" "}for rays entering the object
+check-sides-leaving = {" "}for rays leaving the object
+check-part-ratio = T is refracted with the ratio upside down{ $sides }: 1/μ in every part, in the test for total internal reflection too (the variable holding μ, or the ternary choosing it)
+check-part-across = the part of T across N is scaled by 1/μ instead of μ (1/μ² of the right one){ $sides }, and the part along N is right: the ratio that multiplies the incident vector is upside down
+check-part-along = the part of T along N, cosθt = √(1 − μ²·sin²θi), comes from 1/μ instead of μ{ $sides } (so does the test for total internal reflection), and the part across N is right: the ratio in cosθt is upside down
+check-part-normal = the part of T along N has the wrong sign{ $sides }: the normal used does not face the ray
+check-part-incident = the part of T across N has the wrong sign (T mirrored across the normal, bent the wrong way): the incident vector enters the formula the wrong way round
+check-part-root = the part of T along N has the wrong sign: cosθt is put on the side the ray comes from, so T stays in its medium (the other root)
+check-part-term = the term along N, (μ·cosθi − cosθt)·N, is subtracted where it must be added{ $sides }; the part across N is right
+check-part-no-flip = for rays from the normal's far side, neither is the normal turned round nor the ratio inverted: T is the other root at 1/μ
+check-fix-generic-ratio-across = scale the incident vector's part across N by μ = n_from / n_to, the same ratio cosθt is computed with
+check-fix-generic-ratio-along = compute cosθt = √(1 − μ²·sin²θi) with μ = n_from / n_to, the ratio that scales the part across N (a cosine passed with its sign makes a helper invert the ratio again)
+check-fix-generic-across-sign = the part across N is μ times the incident vector's own (μ·(W + cosθi·N) with W along the ray): take it with the incident vector's sign
+check-fix-generic-never-transmits = the code never transmits these rays although they refract: if it samples reflection, its probability (F, the Fresnel reflectance) must stay below 1 there; report total internal reflection only where k = 1 − μ²·(1 − cos²θi) is negative
+check-diagnosis-unchecked = Cannot be checked without knowing which side each ray comes from, { $place }: every line is right as far as its API's own rules go, but nothing in the log or the options tells a right ratio from a wrong one. { $fix }.
+check-diagnosis-alike-no-field = The log cannot tell it from { $alike }.
+check-unchecked-log-entering = Log entering on each line (true when the ray enters the object; {"{"}!entering{"}"} reads a flag such as inside or backfacing), or from and to
+check-unchecked-pass-indices = Pass --inside and --outside (the indices inside and outside the object) with entering logged, or for pbrt and Mitsuba with the outward normal; or log from and to
+check-mistake-across-sign = the part of the result across the normal has the wrong sign; the part along it is right (the result mirrored across the normal)
+check-part-across-sign = the part of T across N has the wrong sign (T mirrored across the normal, bent the wrong way), and the part along N is right: the minus before the ratio times the incident vector is lost
+check-tally-sampled = reflected (sampled)

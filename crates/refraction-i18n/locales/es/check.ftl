@@ -282,7 +282,7 @@ check-mistake-no-flip-inside = para un rayo que llega del otro lado de la normal
 check-mistake-normal-term-sign = la parte del resultado a lo largo de la normal tiene el signo equivocado; la parte transversal es correcta
 check-mistake-other-root = la otra raíz: el signo de la raíz cuadrada invertido, el resultado reflejado respecto a la superficie
 check-mistake-false-tir = reflexión total indicada donde el rayo se refracta
-check-diagnosis-no-lines = No se juzgó ninguna línea ({ $lines } leídas): revisa el patrón, la cabecera CSV o los campos de las líneas.
+check-diagnosis-no-lines = No se juzgó ninguna línea ({ $lines } leídas): revisa el patrón, la cabecera CSV o los campos de las líneas; check --suggest-pattern lee las primeras líneas del registro y sugiere un patrón.
 check-physics-explained = Eso es lo que da una refracción con este error: { $mistakes }.
 check-looks-normal-term = la respuesta de la API con la parte a lo largo de la normal negada: el término a lo largo de la normal se resta donde se suma, o al revés
 check-looks-no-flip = lo que da la fórmula sin invertir la normal ni eta para un rayo que llega del otro lado de la normal
@@ -315,14 +315,46 @@ check-fix-generic-incident-reversed = pasa como W la dirección en que viaja el 
 check-fix-generic-normal-not-facing = donde el rayo sale del objeto, usa en cada término la normal orientada hacia el rayo (la exterior, invertida) o la exterior con el signo cambiado, pero no ambas cosas
 check-fix-generic-no-flip-inside = para un rayo que llega desde dentro, invierte la normal y el cociente antes de refractar
 check-fix-generic-normal-term-sign = suma el término a lo largo de la normal: T = μ·W + (μ·cosθi − cosθt)·N, con N orientada hacia el rayo
-check-fix-generic-other-root = toma la raíz con −√k: T = μ·W + (μ·cosθi − √k)·N, con N orientada hacia el rayo
+check-fix-generic-other-root = da a la parte de T a lo largo de la normal que mira al rayo el signo que lleva T a través de la superficie: −cosθt (la variable con cosθt, o el signo tomado de cosθi, está invertido)
 check-fix-generic-missed-tir = refleja cuando k = 1 − μ²·(1 − cos²θi) es negativo, antes de tomar su raíz cuadrada
 check-fix-generic-false-tir = indica reflexión total solo donde k = 1 − μ²·(1 − cos²θi) es negativo
 check-fix-generic-not-unit-input = normaliza W y N antes de refractar
-check-fix-generic-not-the-api-result = compara tu refracción con T = μ·W + (μ·cosθi − √k)·N en las líneas indicadas, como dice la explicación de cada una
+check-fix-generic-not-the-api-result = ningún error de la fórmula, ni un par, reproduce estas líneas: la explicación de cada línea dice qué volvió y cuál es la T correcta
 check-physics-no-indices = faltan los índices: da `mu_i` y `mu_t`, o `entering` con --inside y --outside
 check-physics-unknown-convention = convención desconocida "{ $text }": se esperaba "along_ray" o "toward_origin"
 check-diagnosis-none = Ningún error: el registro es correcto { $place }.
 check-diagnosis-verdict = El error: { $code } ({ $meaning }), { $place }. Corrección: { $fix }.
 check-diagnosis-also = Además: { $code } ({ $meaning }), { $place }. Corrección: { $fix }.
 check-diagnosis-alike = El registro no lo distingue de { $alike }; registra { $fields } para distinguirlos.
+check-pattern-too-many-lines = el patrón ocupa { $count } líneas: se leen como máximo { $limit }
+check-pattern-negated-not-flag = {"{"}!{ $field }{"}"} niega un indicador, y { $field } no lo es: escribe {"{"}!entering{"}"} para un indicador impreso al revés (inside, backfacing)
+check-suggest-toward-origin = el vector incidente se imprime como wi, apuntando hacia el origen del rayo: añade --convention toward-origin
+check-suggest-no-normal = no se imprime ninguna normal: si es el eje z de un marco local (Mitsuba, Tungsten), añade --normal +z
+check-suggest-no-side = nada de lo impreso dice si el rayo entra en el objeto: imprímelo ({"{"}entering{"}"}, o {"{"}!entering{"}"} para un indicador como backfacing) y pasa --inside y --outside, o la razón no se puede comprobar
+check-suggest-none = ninguna de las primeras { $lines } líneas parece una refracción (un vector incidente, una razón y un resultado, cada uno tras su nombre): escribe el --pattern a mano (docs/check.md)
+check-situation-outward = tomando { $normal } como la normal exterior, pues los índices no dicen nada del lado
+check-right-sampled = Correcto como reflexión muestreada: { $call } refracta aquí ({ $returned }), pero Mitsuba refleja con probabilidad F = { $f }, y el wo nulo dice que lo hizo. El diagnóstico del registro completo comprueba que el código transmite en estos ángulos en otras líneas.
+check-physics-sampled = No volvió nada donde el rayo se refracta: correcto como reflexión muestreada con probabilidad F = { $f }, como la registran los renderizadores que eligen al azar entre reflexión y refracción. El diagnóstico del registro completo comprueba que el código transmite en estos ángulos en otras líneas.
+check-fix-in = { $fix } (en { $place })
+check-fix-part = { $part }; { $fix }
+check-sides-entering = {" "}para los rayos que entran en el objeto
+check-sides-leaving = {" "}para los rayos que salen del objeto
+check-part-ratio = T se refracta con la razón invertida{ $sides }: 1/μ en cada parte, también en la prueba de reflexión total (la variable con μ, o el ternario que la elige)
+check-part-across = la parte de T transversal a N está escalada por 1/μ en vez de μ (1/μ² de la correcta){ $sides }, y la parte a lo largo de N es correcta: la razón que multiplica el vector incidente está invertida
+check-part-along = la parte de T a lo largo de N, cosθt = √(1 − μ²·sen²θi), sale de 1/μ en vez de μ{ $sides } (también la prueba de reflexión total), y la parte transversal a N es correcta: la razón en cosθt está invertida
+check-part-normal = la parte de T a lo largo de N tiene el signo equivocado{ $sides }: la normal usada no mira al rayo
+check-part-incident = la parte de T transversal a N tiene el signo equivocado (la imagen especular de T respecto a la normal, desvío equivocado): el vector incidente entra al revés en la fórmula
+check-part-root = la parte de T a lo largo de N tiene el signo equivocado: cosθt queda del lado de donde viene el rayo, así que T se queda en su medio (la otra raíz)
+check-part-term = el término a lo largo de N, (μ·cosθi − cosθt)·N, se resta donde debe sumarse{ $sides }; la parte transversal a N es correcta
+check-part-no-flip = para los rayos del lado opuesto de la normal, ni se invierte la normal ni la razón: T es la otra raíz con 1/μ
+check-fix-generic-ratio-across = escala la parte del vector incidente transversal a N por μ = n_from / n_to, la misma razón con la que se calcula cosθt
+check-fix-generic-ratio-along = calcula cosθt = √(1 − μ²·sen²θi) con μ = n_from / n_to, la razón que escala la parte transversal a N (un coseno pasado con su signo hace que una función auxiliar invierta la razón otra vez)
+check-fix-generic-across-sign = la parte transversal a N es μ por la del vector incidente (μ·(W + cosθi·N) con W a lo largo del rayo): tómala con el signo del vector incidente
+check-fix-generic-never-transmits = el código nunca transmite estos rayos aunque se refractan: si muestrea la reflexión, su probabilidad (F, la reflectancia de Fresnel) debe quedar por debajo de 1 ahí; indica reflexión total solo donde k = 1 − μ²·(1 − cos²θi) es negativo
+check-diagnosis-unchecked = No se puede comprobar sin saber de qué lado viene cada rayo, { $place }: cada línea es correcta según las reglas de su API, pero nada en el registro ni en las opciones distingue una razón correcta de una equivocada. { $fix }.
+check-diagnosis-alike-no-field = El registro no puede distinguirlo de { $alike }.
+check-unchecked-log-entering = Registra entering en cada línea (true cuando el rayo entra en el objeto; {"{"}!entering{"}"} lee un indicador como inside o backfacing), o from y to
+check-unchecked-pass-indices = Pasa --inside y --outside (los índices dentro y fuera del objeto) con entering registrado, o en pbrt y Mitsuba con la normal exterior; o registra from y to
+check-mistake-across-sign = la parte del resultado transversal a la normal tiene el signo equivocado; la parte a lo largo de ella es correcta (la imagen especular del resultado respecto a la normal)
+check-part-across-sign = la parte de T transversal a N tiene el signo equivocado (la imagen especular de T respecto a la normal, desvío equivocado), y la parte a lo largo de N es correcta: falta el menos delante de la razón por el vector incidente
+check-tally-sampled = reflejadas (muestreadas)

@@ -282,7 +282,7 @@ check-mistake-no-flip-inside = pour un rayon venant de l’autre côté de la no
 check-mistake-normal-term-sign = la composante du résultat le long de la normale a le mauvais signe ; la composante transverse est juste
 check-mistake-other-root = l’autre racine : le signe de la racine carrée inversé, le résultat réfléchi par rapport à la surface
 check-mistake-false-tir = réflexion totale annoncée là où le rayon est réfracté
-check-diagnosis-no-lines = Aucune ligne n’a été jugée ({ $lines } lues) : vérifie le motif, l’en-tête CSV ou les champs des lignes.
+check-diagnosis-no-lines = Aucune ligne n’a été jugée ({ $lines } lues) : vérifie le motif, l’en-tête CSV ou les champs des lignes ; check --suggest-pattern lit les premières lignes du journal et propose un motif.
 check-physics-explained = C’est ce que donne une réfraction avec cette erreur : { $mistakes }.
 check-looks-normal-term = la réponse de l’API avec la composante le long de la normale opposée : le terme le long de la normale est soustrait au lieu d’être ajouté, ou l’inverse
 check-looks-no-flip = ce que donne la formule sans retourner la normale ni inverser eta pour un rayon venant de l’autre côté de la normale
@@ -315,14 +315,46 @@ check-fix-generic-incident-reversed = passe comme W la direction de propagation 
 check-fix-generic-normal-not-facing = là où le rayon sort de l’objet, utilise dans chaque terme la normale tournée vers le rayon (l’extérieure, retournée), ou l’extérieure avec son signe changé, mais pas les deux
 check-fix-generic-no-flip-inside = pour un rayon qui arrive de l’intérieur, retourne la normale et inverse le rapport avant de réfracter
 check-fix-generic-normal-term-sign = ajoute le terme le long de la normale : T = μ·W + (μ·cosθi − cosθt)·N, N tournée vers le rayon
-check-fix-generic-other-root = prends la racine avec −√k : T = μ·W + (μ·cosθi − √k)·N, N tournée vers le rayon
+check-fix-generic-other-root = donne à la partie de T le long de la normale tournée vers le rayon le signe qui fait traverser la surface à T : −cosθt (la variable qui porte cosθt, ou le signe pris sur cosθi, est inversé)
 check-fix-generic-missed-tir = réfléchis quand k = 1 − μ²·(1 − cos²θi) est négatif, avant d’en prendre la racine carrée
 check-fix-generic-false-tir = n’annonce une réflexion totale que là où k = 1 − μ²·(1 − cos²θi) est négatif
 check-fix-generic-not-unit-input = normalise W et N avant de réfracter
-check-fix-generic-not-the-api-result = compare ta réfraction avec T = μ·W + (μ·cosθi − √k)·N sur les lignes indiquées, comme le dit l’explication de chacune
+check-fix-generic-not-the-api-result = aucune erreur de la formule, ni paire d’erreurs, ne reproduit ces lignes : l’explication de chaque ligne dit ce qui est revenu et quel est le bon T
 check-physics-no-indices = pas d’indices : donne `mu_i` et `mu_t`, ou `entering` avec --inside et --outside
 check-physics-unknown-convention = convention inconnue « { $text } » : attendu "along_ray" ou "toward_origin"
 check-diagnosis-none = Aucune erreur : le journal est juste { $place }.
 check-diagnosis-verdict = L’erreur : { $code } ({ $meaning }), { $place }. Correction : { $fix }.
 check-diagnosis-also = Aussi : { $code } ({ $meaning }), { $place }. Correction : { $fix }.
 check-diagnosis-alike = Le journal ne la distingue pas de { $alike } ; journalise { $fields } pour les distinguer.
+check-pattern-too-many-lines = le motif occupe { $count } lignes : { $limit } au plus sont lues
+check-pattern-negated-not-flag = {"{"}!{ $field }{"}"} nie un indicateur, et { $field } n’en est pas un : écris {"{"}!entering{"}"} pour un indicateur imprimé à l’envers (inside, backfacing)
+check-suggest-toward-origin = le vecteur incident est imprimé comme wi, tourné vers l’origine du rayon : ajoute --convention toward-origin
+check-suggest-no-normal = aucune normale n’est imprimée : si c’est l’axe z d’un repère local (Mitsuba, Tungsten), ajoute --normal +z
+check-suggest-no-side = rien d’imprimé ne dit si le rayon entre dans l’objet : imprime-le ({"{"}entering{"}"}, ou {"{"}!entering{"}"} pour un indicateur comme backfacing) et passe --inside et --outside, sinon le rapport ne peut pas être vérifié
+check-suggest-none = aucune des { $lines } premières lignes ne ressemble à une réfraction (un vecteur incident, un rapport et un résultat, chacun après son nom) : écris le --pattern à la main (docs/check.md)
+check-situation-outward = en prenant { $normal } pour la normale extérieure, les indices ne disant rien du côté
+check-right-sampled = Juste comme réflexion tirée : { $call } réfracte ici ({ $returned }), mais Mitsuba réfléchit avec la probabilité F = { $f }, et le wo nul dit qu’il l’a fait. Le diagnostic du journal entier vérifie que le code transmet à ces angles ailleurs.
+check-physics-sampled = Rien n’est revenu là où le rayon se réfracte : juste comme réflexion tirée avec la probabilité F = { $f }, comme l’écrivent les moteurs qui choisissent au hasard entre réflexion et réfraction. Le diagnostic du journal entier vérifie que le code transmet à ces angles ailleurs.
+check-fix-in = { $fix } (dans { $place })
+check-fix-part = { $part } ; { $fix }
+check-sides-entering = {" "}pour les rayons qui entrent dans l’objet
+check-sides-leaving = {" "}pour les rayons qui sortent de l’objet
+check-part-ratio = T est réfracté avec le rapport inversé{ $sides } : 1/μ dans chaque partie, dans le test de réflexion totale aussi (la variable qui porte μ, ou le ternaire qui la choisit)
+check-part-across = la partie de T transverse à N est multipliée par 1/μ au lieu de μ (1/μ² de la bonne){ $sides }, et la partie le long de N est juste : le rapport qui multiplie le vecteur incident est inversé
+check-part-along = la partie de T le long de N, cosθt = √(1 − μ²·sin²θi), vient de 1/μ au lieu de μ{ $sides } (le test de réflexion totale aussi), et la partie transverse à N est juste : le rapport dans cosθt est inversé
+check-part-normal = la partie de T le long de N a le mauvais signe{ $sides } : la normale utilisée ne fait pas face au rayon
+check-part-incident = la partie de T transverse à N a le mauvais signe (l’image miroir de T par rapport à la normale, mauvaise déviation) : le vecteur incident entre à l’envers dans la formule
+check-part-root = la partie de T le long de N a le mauvais signe : cosθt est mis du côté d’où vient le rayon, donc T reste dans son milieu (l’autre racine)
+check-part-term = le terme le long de N, (μ·cosθi − cosθt)·N, est soustrait là où il faut l’ajouter{ $sides } ; la partie transverse à N est juste
+check-part-no-flip = pour les rayons venant de l’autre côté de la normale, ni la normale n’est retournée ni le rapport inversé : T est l’autre racine avec 1/μ
+check-fix-generic-ratio-across = multiplie la partie du vecteur incident transverse à N par μ = n_from / n_to, le rapport même avec lequel cosθt est calculé
+check-fix-generic-ratio-along = calcule cosθt = √(1 − μ²·sin²θi) avec μ = n_from / n_to, le rapport qui multiplie la partie transverse à N (un cosinus passé avec son signe fait inverser le rapport une seconde fois par une fonction d’aide)
+check-fix-generic-across-sign = la partie transverse à N vaut μ fois celle du vecteur incident (μ·(W + cosθi·N) avec W le long du rayon) : prends-la avec le signe du vecteur incident
+check-fix-generic-never-transmits = le code ne transmet jamais ces rayons bien qu’ils se réfractent : s’il tire la réflexion, sa probabilité (F, la réflectance de Fresnel) doit y rester sous 1 ; ne signale la réflexion totale que là où k = 1 − μ²·(1 − cos²θi) est négatif
+check-diagnosis-unchecked = Impossible à vérifier sans savoir de quel côté vient chaque rayon, { $place } : chaque ligne est juste selon les règles de son API, mais rien dans le journal ni dans les options ne distingue un bon rapport d’un mauvais. { $fix }.
+check-diagnosis-alike-no-field = Le journal ne peut pas le distinguer de { $alike }.
+check-unchecked-log-entering = Écris entering sur chaque ligne (true quand le rayon entre dans l’objet ; {"{"}!entering{"}"} lit un indicateur comme inside ou backfacing), ou from et to
+check-unchecked-pass-indices = Passe --inside et --outside (les indices à l’intérieur et à l’extérieur de l’objet) avec entering écrit, ou pour pbrt et Mitsuba avec la normale extérieure ; ou écris from et to
+check-mistake-across-sign = la partie du résultat transverse à la normale a le mauvais signe ; la partie le long de la normale est juste (l’image miroir du résultat par rapport à la normale)
+check-part-across-sign = la partie de T transverse à N a le mauvais signe (l’image miroir de T par rapport à la normale, mauvaise déviation), et la partie le long de N est juste : le moins devant le rapport fois le vecteur incident est perdu
+check-tally-sampled = réfléchies (tirées)

@@ -282,7 +282,7 @@ check-mistake-no-flip-inside = para um raio que chega do outro lado da normal, o
 check-mistake-normal-term-sign = a parte do resultado ao longo da normal tem o sinal errado; a parte transversal está certa
 check-mistake-other-root = a outra raiz: o sinal da raiz quadrada trocado, o resultado espelhado em relação à superfície
 check-mistake-false-tir = reflexão total indicada onde o raio refrata
-check-diagnosis-no-lines = Nenhuma linha foi julgada ({ $lines } lidas): confira o padrão, o cabeçalho CSV ou os campos das linhas.
+check-diagnosis-no-lines = Nenhuma linha foi julgada ({ $lines } lidas): confira o padrão, o cabeçalho CSV ou os campos das linhas; check --suggest-pattern lê as primeiras linhas do log e sugere um padrão.
 check-physics-explained = É isso que uma refração dá com este erro: { $mistakes }.
 check-looks-normal-term = a resposta da API com a parte ao longo da normal negada: o termo ao longo da normal é subtraído onde é somado, ou o contrário
 check-looks-no-flip = o que a fórmula dá sem inverter a normal e eta para um raio que chega do outro lado da normal
@@ -315,14 +315,46 @@ check-fix-generic-incident-reversed = passe como W a direção em que o raio via
 check-fix-generic-normal-not-facing = onde o raio sai do objeto, use em cada termo a normal voltada para o raio (a externa, invertida) ou a externa com o sinal trocado, mas não as duas coisas
 check-fix-generic-no-flip-inside = para um raio que chega de dentro, inverta a normal e a razão antes de refratar
 check-fix-generic-normal-term-sign = some o termo ao longo da normal: T = μ·W + (μ·cosθi − cosθt)·N, com N voltada para o raio
-check-fix-generic-other-root = tome a raiz com −√k: T = μ·W + (μ·cosθi − √k)·N, com N voltada para o raio
+check-fix-generic-other-root = dê à parte de T ao longo da normal voltada para o raio o sinal que leva T através da superfície: −cosθt (a variável com cosθt, ou o sinal tirado de cosθi, está invertido)
 check-fix-generic-missed-tir = reflita quando k = 1 − μ²·(1 − cos²θi) for negativo, antes de tirar a raiz quadrada
 check-fix-generic-false-tir = indique reflexão total só onde k = 1 − μ²·(1 − cos²θi) for negativo
 check-fix-generic-not-unit-input = normalize W e N antes de refratar
-check-fix-generic-not-the-api-result = compare sua refração com T = μ·W + (μ·cosθi − √k)·N nas linhas indicadas, como diz a explicação de cada uma
+check-fix-generic-not-the-api-result = nenhum erro da fórmula, nem um par, reproduz estas linhas: a explicação de cada linha diz o que voltou e qual é o T correto
 check-physics-no-indices = faltam os índices: dê `mu_i` e `mu_t`, ou `entering` com --inside e --outside
 check-physics-unknown-convention = convenção desconhecida "{ $text }": esperava "along_ray" ou "toward_origin"
 check-diagnosis-none = Nenhum erro: o log está certo { $place }.
 check-diagnosis-verdict = O erro: { $code } ({ $meaning }), { $place }. Correção: { $fix }.
 check-diagnosis-also = Também: { $code } ({ $meaning }), { $place }. Correção: { $fix }.
 check-diagnosis-alike = O log não o distingue de { $alike }; registre { $fields } para distingui-los.
+check-pattern-too-many-lines = o padrão ocupa { $count } linhas: no máximo { $limit } são lidas
+check-pattern-negated-not-flag = {"{"}!{ $field }{"}"} nega um indicador, e { $field } não é um: escreva {"{"}!entering{"}"} para um indicador impresso ao contrário (inside, backfacing)
+check-suggest-toward-origin = o vetor incidente é impresso como wi, apontando para a origem do raio: acrescente --convention toward-origin
+check-suggest-no-normal = nenhuma normal é impressa: se for o eixo z de um referencial local (Mitsuba, Tungsten), acrescente --normal +z
+check-suggest-no-side = nada do que é impresso diz se o raio entra no objeto: imprima-o ({"{"}entering{"}"}, ou {"{"}!entering{"}"} para um indicador como backfacing) e passe --inside e --outside, ou a razão não pode ser verificada
+check-suggest-none = nenhuma das primeiras { $lines } linhas parece uma refração (um vetor incidente, uma razão e um resultado, cada um após seu nome): escreva o --pattern à mão (docs/check.md)
+check-situation-outward = tomando { $normal } como a normal externa, pois os índices nada dizem do lado
+check-right-sampled = Certo como reflexão amostrada: { $call } refrata aqui ({ $returned }), mas o Mitsuba reflete com probabilidade F = { $f }, e o wo nulo diz que refletiu. O diagnóstico do log inteiro verifica que o código transmite nesses ângulos em outras linhas.
+check-physics-sampled = Nada voltou onde o raio refrata: certo como reflexão amostrada com probabilidade F = { $f }, como a registram os renderizadores que escolhem ao acaso entre reflexão e refração. O diagnóstico do log inteiro verifica que o código transmite nesses ângulos em outras linhas.
+check-fix-in = { $fix } (em { $place })
+check-fix-part = { $part }; { $fix }
+check-sides-entering = {" "}para os raios que entram no objeto
+check-sides-leaving = {" "}para os raios que saem do objeto
+check-part-ratio = T é refratado com a razão invertida{ $sides }: 1/μ em cada parte, também no teste de reflexão total (a variável com μ, ou o ternário que a escolhe)
+check-part-across = a parte de T transversal a N está escalada por 1/μ em vez de μ (1/μ² da certa){ $sides }, e a parte ao longo de N está certa: a razão que multiplica o vetor incidente está invertida
+check-part-along = a parte de T ao longo de N, cosθt = √(1 − μ²·sen²θi), vem de 1/μ em vez de μ{ $sides } (o teste de reflexão total também), e a parte transversal a N está certa: a razão em cosθt está invertida
+check-part-normal = a parte de T ao longo de N tem o sinal errado{ $sides }: a normal usada não está voltada para o raio
+check-part-incident = a parte de T transversal a N tem o sinal errado (a imagem espelhada de T em relação à normal, desvio errado): o vetor incidente entra invertido na fórmula
+check-part-root = a parte de T ao longo de N tem o sinal errado: cosθt fica do lado de onde o raio vem, então T permanece no seu meio (a outra raiz)
+check-part-term = o termo ao longo de N, (μ·cosθi − cosθt)·N, é subtraído onde deve ser somado{ $sides }; a parte transversal a N está certa
+check-part-no-flip = para os raios do lado oposto da normal, nem a normal é invertida nem a razão: T é a outra raiz com 1/μ
+check-fix-generic-ratio-across = escale a parte do vetor incidente transversal a N por μ = n_from / n_to, a mesma razão com que cosθt é calculado
+check-fix-generic-ratio-along = calcule cosθt = √(1 − μ²·sen²θi) com μ = n_from / n_to, a razão que escala a parte transversal a N (um cosseno passado com seu sinal faz uma função auxiliar inverter a razão outra vez)
+check-fix-generic-across-sign = a parte transversal a N é μ vezes a do vetor incidente (μ·(W + cosθi·N) com W ao longo do raio): tome-a com o sinal do vetor incidente
+check-fix-generic-never-transmits = o código nunca transmite esses raios embora eles refratem: se amostra a reflexão, a probabilidade dela (F, a refletância de Fresnel) deve ficar abaixo de 1 ali; indique reflexão total só onde k = 1 − μ²·(1 − cos²θi) é negativo
+check-diagnosis-unchecked = Não pode ser verificado sem saber de que lado vem cada raio, { $place }: cada linha está certa pelas regras da sua API, mas nada no log nem nas opções distingue uma razão certa de uma errada. { $fix }.
+check-diagnosis-alike-no-field = O log não consegue distingui-lo de { $alike }.
+check-unchecked-log-entering = Registre entering em cada linha (true quando o raio entra no objeto; {"{"}!entering{"}"} lê um indicador como inside ou backfacing), ou from e to
+check-unchecked-pass-indices = Passe --inside e --outside (os índices dentro e fora do objeto) com entering registrado, ou no pbrt e no Mitsuba com a normal externa; ou registre from e to
+check-mistake-across-sign = a parte do resultado transversal à normal tem o sinal errado; a parte ao longo dela está certa (a imagem espelhada do resultado em relação à normal)
+check-part-across-sign = a parte de T transversal a N tem o sinal errado (a imagem espelhada de T em relação à normal, desvio errado), e a parte ao longo de N está certa: falta o menos antes da razão vezes o vetor incidente
+check-tally-sampled = refletidas (amostradas)

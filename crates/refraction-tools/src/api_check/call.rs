@@ -4,10 +4,12 @@
 
 use glam::DVec3;
 use refraction_i18n::{decimal, t};
+use refraction_kernel::Convention;
 use refraction_kernel::api::{Api, Args};
 
 use super::fields::{self, Dialect, names};
 use super::record::{Record, Value};
+use super::renderer::Renderer;
 use crate::solve::Precision;
 
 /// What the command line adds to every line.
@@ -21,6 +23,14 @@ pub struct Options {
     pub outside: Option<f64>,
     /// `--precision`: the student's working precision, unless a line says otherwise.
     pub precision: Option<Precision>,
+    /// `--convention`: how any renderer's `w` points, unless a line says (`check` without
+    /// `--api`).
+    pub convention: Option<Convention>,
+    /// `--normal`: the normal of lines that print none (a local frame's +z), taken as the
+    /// outward one, so that with `--inside` and `--outside` each ray's side follows from it.
+    pub normal: Option<[f64; 3]>,
+    /// `--renderer`: whose code the log comes from, for the words of the fixes.
+    pub renderer: Option<Renderer>,
 }
 
 impl Options {
@@ -32,7 +42,17 @@ impl Options {
             inside: None,
             outside: None,
             precision: None,
+            convention: None,
+            normal: None,
+            renderer: None,
         }
+    }
+
+    /// Whose code the log comes from: `--renderer`, else the API's.
+    #[must_use]
+    pub fn renderer(&self) -> Option<Renderer> {
+        self.renderer
+            .or_else(|| self.dialect.api().map(Renderer::of_api))
     }
 
     /// `--inside` and `--outside`, when both are given.
@@ -53,6 +73,12 @@ pub struct Truth {
     pub entering: Option<bool>,
     /// Whether `from_to` came from `entering` with `--inside` and `--outside`.
     pub from_entering: bool,
+    /// Whether `entering` was not logged but taken from the normal, as the outward one (pbrt
+    /// and Mitsuba with `--inside` and `--outside`: their eta is the index behind the normal
+    /// over the one in front, `n_inside/n_outside` for the outward normal).
+    pub entering_from_normal: bool,
+    /// Whether `--inside` and `--outside` were given.
+    pub sides_given: bool,
 }
 
 impl Truth {
@@ -180,13 +206,36 @@ fn label(record: &Record, name: &str) -> Option<String> {
     }
 }
 
+/// Whether the ray enters, from the normal taken as the outward one: pbrt's and Mitsuba's
+/// `wi` (back along the ray) on the side the normal points to.
+fn entering_from_normal(record: &Record, options: &Options) -> Result<Option<bool>, String> {
+    let Dialect::Api(api @ (Api::Pbrt | Api::Mitsuba)) = options.dialect else {
+        return Ok(None);
+    };
+    if options.sides().is_none() {
+        return Ok(None);
+    }
+    let n = names(api);
+    let normal = match vector(record, n.normal)? {
+        Some(normal) => normal,
+        None if api == Api::Mitsuba => DVec3::Z,
+        None => return Ok(None),
+    };
+    Ok(vector(record, n.incident)?.map(|wi| wi.dot(normal) > 0.0))
+}
+
 fn truth(record: &Record, options: &Options) -> Result<Truth, String> {
-    let entering = flag(record, "entering");
+    let logged = flag(record, "entering");
     let given = match (number(record, "from")?, number(record, "to")?) {
         (Some(from), Some(to)) => Some((from, to)),
         (None, None) => None,
         _ => return Err(t!("check-from-and-to-together")),
     };
+    let assumed = match (logged, given) {
+        (None, None) => entering_from_normal(record, options)?,
+        _ => None,
+    };
+    let entering = logged.or(assumed);
     let sides = options.sides();
     let from_sides = entering.zip(sides).map(|(entering, (inside, outside))| {
         if entering {
@@ -204,6 +253,8 @@ fn truth(record: &Record, options: &Options) -> Result<Truth, String> {
         travel,
         entering,
         from_entering: given.is_none() && from_sides.is_some(),
+        entering_from_normal: assumed.is_some(),
+        sides_given: sides.is_some(),
     })
 }
 

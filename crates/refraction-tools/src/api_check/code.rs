@@ -28,16 +28,20 @@ pub enum Code {
     OtherRoot,
     /// Total internal reflection reported where the ray refracts.
     FalseTir,
+    /// The part of the result across the normal has the wrong sign; the part along it is right
+    /// (the result mirrored across the normal).
+    AcrossSign,
 }
 
 impl Code {
     /// Every code, in the order the README lists them.
-    pub const ALL: [Self; 10] = [
+    pub const ALL: [Self; 11] = [
         Self::EtaInverted,
         Self::IncidentReversed,
         Self::NormalNotFacing,
         Self::NoFlipInside,
         Self::NormalTermSign,
+        Self::AcrossSign,
         Self::OtherRoot,
         Self::MissedTir,
         Self::FalseTir,
@@ -59,6 +63,7 @@ impl Code {
             Self::NormalTermSign => "normal_term_sign",
             Self::OtherRoot => "other_root",
             Self::FalseTir => "false_tir",
+            Self::AcrossSign => "across_sign",
         }
     }
 
@@ -77,7 +82,15 @@ impl Code {
             Self::NormalTermSign => t!("check-mistake-normal-term-sign"),
             Self::OtherRoot => t!("check-mistake-other-root"),
             Self::FalseTir => t!("check-mistake-false-tir"),
+            Self::AcrossSign => t!("check-mistake-across-sign"),
         }
+    }
+
+    /// The code's bit in a set of codes.
+    #[must_use]
+    pub fn bit(self) -> u16 {
+        let index = Self::ALL.iter().position(|&c| c == self).unwrap_or(0);
+        1 << index
     }
 
     /// The code named `name` in JSON, if there is one.

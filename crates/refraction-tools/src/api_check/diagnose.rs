@@ -12,7 +12,8 @@ use super::explain;
 use super::readings::{Reading, Tolerance, readings, undo};
 use super::result::{Returns, Seen, returns, transmitted_by};
 use crate::check::{self, Match};
-use crate::diagnosis::{Evidence, Side};
+use crate::diagnosis::formula::{self, Situation};
+use crate::diagnosis::{self, Codes, Evidence, Missing, Readings, Side, Told};
 use crate::solve::{Precision, Request};
 use crate::vector_text::{angle, length};
 use refraction_model::log_map::{self, LinePoint};
@@ -76,12 +77,25 @@ pub struct Diagnosis {
     pub right: Meaning<f64>,
     /// The direction the ray leaves this hit in, as the student's code sent it.
     pub outgoing: DVec3,
+    /// What the line's views are made from, for the diagnosis of the whole log.
+    pub readings: Readings,
+    /// Mitsuba's F where `wo` is null although the API refracts: a sampled reflection if the
+    /// call is right (the whole log tells whether it is one).
+    pub sampled: Option<f64>,
+    /// Whether the code sent the ray along a direction (not the API's "nothing transmitted").
+    pub transmitted: bool,
 }
 
-/// The result mistake and what the result resembles, or `None` when it is the API's answer.
-fn finding<S: Real>(call: &Call, r: &Returns, seen: Seen) -> Option<(Code, Resemblance)> {
+/// The result mistake and what the result resembles, or `None` when it is the API's answer
+/// (or, for a `sampled` null, may be).
+fn finding<S: Real>(
+    call: &Call,
+    r: &Returns,
+    seen: Seen,
+    sampled: bool,
+) -> Option<(Code, Resemblance)> {
     let direction = match seen {
-        Seen::Nothing(_) if r.may_reflect() => None,
+        Seen::Nothing(_) if r.may_reflect() || sampled => None,
         Seen::Direction(v) if r.is_transmitted(v) => None,
         _ if without_flip(call, r, seen) => Some((Code::NoFlipInside, Resemblance::NoFlip)),
         Seen::NotFinite(_) if r.may_reflect() => Some((Code::MissedTir, Resemblance::NotFinite)),
@@ -236,11 +250,51 @@ fn alternatives(readings: &[Reading], result: Option<Code>) -> (Vec<Vec<Code>>, 
     (sets, all)
 }
 
+/// Mitsuba's reflectance F where its `wo` is logged null although the API transmits: the
+/// dielectric BSDF samples reflection with probability F on every call.
+fn sampled_reflection(call: &Call, returns: &Returns) -> Option<f64> {
+    let mitsuba = call.api == Api::Mitsuba && call.got == Got::Nothing;
+    (mitsuba && returns.transmitted.is_some()).then(|| {
+        let m = call.api.meaning(call.args);
+        formula::reflectance(&Situation {
+            travel: m.travel,
+            normal: m.normal,
+            mu: m.mu,
+        })
+    })
+}
+
+/// What the call's views are made from: for each reading, its argument mistakes and the
+/// situation it makes, and what came back.
+fn formula_readings(readings: &[Reading], seen: Seen, right: bool, tolerance: f64) -> Readings {
+    Readings {
+        situations: readings
+            .iter()
+            .map(|reading| {
+                let m = reading.meaning;
+                let situation = Situation {
+                    travel: m.travel,
+                    normal: m.normal,
+                    mu: m.mu,
+                };
+                (Codes::of(&reading.codes), situation)
+            })
+            .collect(),
+        outcome: match seen {
+            Seen::Direction(v) => formula::Outcome::Direction(v),
+            Seen::Nothing(_) | Seen::NotFinite(_) => formula::Outcome::Nothing,
+        },
+        right,
+        tolerance,
+    }
+}
+
 fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
     let tolerance = Tolerance::new(&call.digits, S::EPSILON.to_f64());
     let returns = returns::<S>(call, &tolerance)?;
     let seen = returns.see(call.got);
-    let finding = finding::<S>(call, &returns, seen);
+    let sampled = sampled_reflection(call, &returns);
+    let finding = finding::<S>(call, &returns, seen, sampled.is_some());
     let readings = readings(call, &tolerance);
     let right = readings
         .first()
@@ -252,15 +306,24 @@ fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
         (Seen::Nothing("the reflection"), Got::Vector(v)) => v,
         (Seen::Nothing(_), _) => returns.reflection,
     };
+    let ok = !readings.is_empty() && mistakes.is_empty();
     let explanation = explain::explanation(&explain::Context {
         call,
         readings: &readings,
         finding,
         returns: &returns,
         seen,
+        sampled: sampled.filter(|_| ok),
     });
+    // A sampled reflection's readings are of what it logged: nothing.
+    let formula_readings = formula_readings(
+        &readings,
+        seen,
+        ok && sampled.is_none(),
+        check::MATCH_ANGLE.max(2.0 * returns.distance),
+    );
     Ok(Diagnosis {
-        ok: !readings.is_empty() && mistakes.is_empty(),
+        ok,
         mistakes,
         alternatives,
         explanation,
@@ -269,13 +332,17 @@ fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
         api_result: returns.json,
         right,
         outgoing,
+        readings: formula_readings,
+        sampled,
+        transmitted: matches!(seen, Seen::Direction(_)),
     })
 }
 
-/// What a judged call tells the diagnosis of the whole log: its explanations, the side the
-/// ray arrives from (as `entering` says, or for pbrt and Mitsuba, whose normal may face either
-/// way, the normal's side), whether it is past the critical angle, and, where `entering` is
-/// logged for pbrt or Mitsuba, whether the normal is the outward one.
+/// What a judged call tells the diagnosis of the whole log: its explanations and readings,
+/// the side the ray arrives from (as `entering` says, or for pbrt and Mitsuba, whose normal
+/// may face either way, the normal's side), whether it is past the critical angle, where
+/// `entering` is logged for pbrt or Mitsuba whether the normal is the outward one, whether it
+/// is a sampled reflection, and, for a right call whose ratio nothing checks, what is missing.
 #[must_use]
 pub fn evidence(call: &Call, diagnosis: &Diagnosis) -> Evidence {
     let either_side = matches!(call.api, Api::Pbrt | Api::Mitsuba);
@@ -295,16 +362,39 @@ pub fn evidence(call: &Call, diagnosis: &Diagnosis) -> Evidence {
     };
     let m = &diagnosis.right;
     let cos = m.travel.dot(m.normal) / (length(m.travel) * length(m.normal));
+    let logged_entering = call
+        .truth
+        .entering
+        .filter(|_| !call.truth.entering_from_normal);
+    let unchecked = match (call.truth.mu(), call.truth.sides_given) {
+        (Some(_), _) => None,
+        (None, true) => Some(Missing::Entering),
+        (None, false) => Some(Missing::Indices),
+    };
+    // A reflection read as sampled is a false total internal reflection if the log shows
+    // that the code never transmits at its angles.
+    let alternatives = if diagnosis.ok && diagnosis.sampled.is_some() {
+        vec![vec![Code::FalseTir]]
+    } else {
+        diagnosis.alternatives.clone()
+    };
     Evidence {
         ok: diagnosis.ok,
-        alternatives: diagnosis.alternatives.clone(),
+        alternatives,
+        views: diagnosis.readings.views(),
         side,
         past_critical: m.mu * m.mu * (1.0 - cos * cos) > 1.0,
-        normal_outward: call
-            .truth
-            .entering
+        normal_outward: logged_entering
             .filter(|_| either_side)
             .map(|entering| toward_origin == entering),
+        band: diagnosis::band(log_map::incidence_deg(m.travel, m.normal)),
+        transmitted: diagnosis.transmitted,
+        sample: diagnosis.sampled.map(f64::ln),
+        unchecked,
+        told: Told {
+            entering: logged_entering.is_some(),
+            travel: call.truth.travel.is_some(),
+        },
     }
 }
 

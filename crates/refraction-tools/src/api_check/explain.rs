@@ -24,6 +24,8 @@ pub struct Context<'a> {
     pub returns: &'a Returns,
     /// What came back, as judged.
     pub seen: Seen,
+    /// Mitsuba's F, where a null `wo` on a right call may be a sampled reflection.
+    pub sampled: Option<f64>,
 }
 
 /// How each API speaks, in the current language.
@@ -53,10 +55,19 @@ fn situation(call: &Call) -> Option<String> {
     let t = &call.truth;
     let (from, to) = t.from_to?;
     let (from, to) = (spoken(from), spoken(to));
-    Some(match t.entering {
+    let said = match t.entering {
         Some(true) if t.from_entering => t!("check-situation-entering", from = from, to = to),
         Some(false) if t.from_entering => t!("check-situation-leaving", from = from, to = to),
         _ => t!("check-situation-going", from = from, to = to),
+    };
+    Some(if t.entering_from_normal {
+        let normal = names(call.api).normal;
+        format!(
+            "{said} ({})",
+            t!("check-situation-outward", normal = normal)
+        )
+    } else {
+        said
     })
 }
 
@@ -141,7 +152,8 @@ fn argument_sentence(ctx: &Context<'_>, reading: &Reading, code: Code) -> String
         | Code::NoFlipInside
         | Code::NormalTermSign
         | Code::OtherRoot
-        | Code::FalseTir => String::new(),
+        | Code::FalseTir
+        | Code::AcrossSign => String::new(),
     }
 }
 
@@ -289,7 +301,7 @@ fn telling_fields(call: &Call, a: &Reading, b: &Reading) -> Vec<String> {
     let normal_differs =
         a.codes.contains(&Code::NormalNotFacing) != b.codes.contains(&Code::NormalNotFacing);
     if matches!(call.api, Api::Pbrt | Api::Mitsuba)
-        && call.truth.entering.is_none()
+        && (call.truth.entering.is_none() || call.truth.entering_from_normal)
         && normal_differs
     {
         fields.push("entering".to_owned());
@@ -387,6 +399,11 @@ fn capitalised(text: &str) -> String {
 fn right_sentence(ctx: &Context<'_>) -> String {
     let (call, returned) = (words(ctx.call.api).call, returned_text(ctx));
     let right = match (ctx.seen, situation(ctx.call)) {
+        (Seen::Nothing(_), _) if ctx.sampled.is_some() => t!("check-right-sampled",
+            call = call,
+            returned = returned,
+            f = spoken(ctx.sampled.unwrap_or(1.0))
+        ),
         (Seen::Nothing(what), _) => t!("check-right-tir",
             call = call,
             returned = returned,

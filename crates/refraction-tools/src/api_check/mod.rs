@@ -19,12 +19,15 @@ pub mod csv;
 pub mod diagnose;
 mod explain;
 pub mod fields;
+pub mod gather;
 pub mod paths;
 pub mod pattern;
 pub mod physics;
 pub mod readings;
 pub mod record;
+pub mod renderer;
 pub mod result;
+pub mod suggest;
 
 use std::collections::BTreeMap;
 
@@ -35,11 +38,13 @@ pub use call::{Call, Options};
 pub use code::Code;
 pub use diagnose::{Diagnosis, diagnose};
 pub use fields::Dialect;
-pub use pattern::{MAX_PATTERN_BYTES, MAX_PLACEHOLDERS, Pattern};
+pub use pattern::{MAX_PATTERN_BYTES, MAX_PATTERN_LINES, MAX_PLACEHOLDERS, Pattern};
 pub use record::Record;
+pub use renderer::Renderer;
 
 use crate::check::{self, Match};
 use crate::diagnosis::{Evidence, LogTally, Summary};
+use gather::Gather;
 
 /// The JSON answer for one call.
 #[derive(Serialize)]
@@ -87,30 +92,49 @@ pub fn check_record(record: &Record, options: &Options) -> Result<(Call, Diagnos
 /// Counts of verdicts by mistake, for the summary on stderr.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Tally {
-    counts: BTreeMap<&'static str, usize>,
+    counts: BTreeMap<String, usize>,
+}
+
+/// The tally's name for a line whose explanations tie: each explanation's codes joined by
+/// `+`, the explanations by `|` (`eta_inverted|normal_not_facing`): one bug, which the line
+/// alone cannot name.
+// untranslated: the tally's codes, as `check` prints them on stderr
+fn tied(alternatives: &[Vec<Code>]) -> String {
+    let names: Vec<String> = alternatives
+        .iter()
+        .map(|codes| codes.iter().map(|c| c.name()).collect::<Vec<_>>().join("+"))
+        .collect();
+    names.join("|")
 }
 
 impl Tally {
     /// Counts one more `kind`.
-    pub fn add(&mut self, kind: &'static str) {
-        *self.counts.entry(kind).or_default() += 1;
+    pub fn add(&mut self, kind: &str) {
+        match self.counts.get_mut(kind) {
+            Some(count) => *count += 1,
+            None => {
+                self.counts.insert(kind.to_owned(), 1);
+            }
+        }
     }
 
-    /// Counts a verdict: `ok`, or every mistake of its explanations, each once, ties
-    /// included (`unexplained` when none fits).
+    /// Counts a verdict: `ok`, a sampled reflection, or the line's explanations as one kind,
+    /// ties joined (`unexplained` when none fits).
     pub fn add_verdict(&mut self, diagnosis: &Diagnosis) {
-        if diagnosis.ok {
+        if diagnosis.ok && diagnosis.sampled.is_some() {
+            self.add(SAMPLED);
+        } else if diagnosis.ok {
             self.add("ok");
-        } else if diagnosis.mistakes.is_empty() {
+        } else if diagnosis.alternatives.is_empty() {
             self.add("unexplained");
         } else {
-            diagnosis.mistakes.iter().for_each(|c| self.add(c.name()));
+            self.add(&tied(&diagnosis.alternatives));
         }
     }
 
     /// Each kind counted and its count, in the summary's order.
-    pub fn counts(&self) -> impl Iterator<Item = (&'static str, usize)> + '_ {
-        self.counts.iter().map(|(kind, n)| (*kind, *n))
+    pub fn counts(&self) -> impl Iterator<Item = (&str, usize)> + '_ {
+        self.counts.iter().map(|(kind, n)| (kind.as_str(), *n))
     }
 
     /// `2 ok, 1 eta_inverted, ...`.
@@ -140,13 +164,18 @@ pub enum Format {
 // untranslated: the tally's name, as `check` prints it on stderr (the panel says it in words)
 pub const SKIPPED: &str = "skipped (not matching the pattern)";
 
+/// The tally's name for lines that logged nothing where the ray refracts, read as sampled
+/// reflections (the diagnosis of the whole log checks that they are).
+// untranslated: the tally's name, as `check` prints it on stderr (the panel says it in words)
+pub const SAMPLED: &str = "reflected (sampled)";
+
 /// A judged line: an API call and its diagnosis, or any renderer's refraction and its verdict.
 #[derive(Clone, Debug)]
 pub enum Judgement {
     /// A call of a named API (boxed: a diagnosis is large).
     Api(Box<(Call, Diagnosis)>),
-    /// Any renderer's own refraction (`check` without `--api`).
-    Physics(physics::Judged),
+    /// Any renderer's own refraction (`check` without `--api`; boxed as the call is).
+    Physics(Box<physics::Judged>),
 }
 
 impl Judgement {
@@ -173,7 +202,7 @@ impl Judgement {
     pub fn evidence(&self) -> Evidence {
         match self {
             Self::Api(judged) => diagnose::evidence(&judged.0, &judged.1),
-            Self::Physics(judged) => judged.evidence.clone(),
+            Self::Physics(judged) => judged.evidence(),
         }
     }
 
@@ -223,7 +252,7 @@ pub fn judge_record(record: &Record, options: &Options) -> Result<Judgement, Str
         Dialect::Api(_) => check_record(record, options).map(|j| Judgement::Api(Box::new(j))),
         Dialect::Physics => physics::Case::from_record(record, options)
             .and_then(|case| physics::judge(&case))
-            .map(Judgement::Physics),
+            .map(|judged| Judgement::Physics(Box::new(judged))),
     }
 }
 
@@ -232,8 +261,9 @@ enum Judged {
     /// A judged line, or why the line holds nothing that can be judged (boxed: a judgement is
     /// large, and the chunks hold many of the other kinds).
     Line(Box<Result<Judgement, String>>),
-    /// A log line the pattern does not match.
-    Unmatched,
+    /// A log line the pattern does not match on its own: it may be part of a record printed
+    /// over several lines, gathered in order.
+    Unmatched(String),
     /// A CSV line read before the header was known: read in order, with the run's state.
     Deferred(String),
 }
@@ -265,7 +295,10 @@ impl Reader {
         Read::Record(match &self.format {
             Format::JsonLines => Record::from_json_line(dialect, line),
             Format::Pattern(pattern) => match pattern.capture(line) {
-                Some(texts) => Record::from_texts(dialect, texts),
+                Some(texts) => Record::from_texts(dialect, texts).map(|mut record| {
+                    pattern.negated().for_each(|name| record.negate(name));
+                    record
+                }),
                 None => return Read::Unmatched,
             },
             Format::Csv => match self.header.get() {
@@ -282,7 +315,7 @@ impl Reader {
             Read::Record(record) => Judged::Line(Box::new(
                 record.and_then(|record| judge_record(&record, &self.options)),
             )),
-            Read::Unmatched => Judged::Unmatched,
+            Read::Unmatched => Judged::Unmatched(line.to_owned()),
             Read::Deferred => Judged::Deferred(line.to_owned()),
         }
     }
@@ -313,6 +346,8 @@ impl Reader {
 #[derive(Debug)]
 struct Books {
     paths: Option<paths::Paths>,
+    /// Lines gathered toward a record printed over several lines (a `--pattern` log).
+    gather: Option<Gather>,
     tally: Tally,
     all_ok: bool,
     log: LogTally,
@@ -322,13 +357,14 @@ impl Books {
     /// The answer to a judged line, in input order: nothing for a line without a call.
     fn settle(&mut self, reader: &Reader, judged: Judged) -> Result<String, String> {
         let judged = match judged {
-            Judged::Line(judged) => *judged,
-            Judged::Unmatched if reader.strict => Err(t!("check-line-not-matching")),
-            Judged::Unmatched => {
-                self.tally.add(SKIPPED);
-                self.log.skip();
-                return Ok(String::new());
+            Judged::Line(judged) => {
+                self.forget_gathered();
+                *judged
             }
+            Judged::Unmatched(line) => match self.gathered(reader, &line)? {
+                Some(judged) => judged,
+                None => return Ok(String::new()),
+            },
             Judged::Deferred(line) => match reader.judge_in_order(&line) {
                 None => return Ok(String::new()),
                 Some(judged) => return self.settle(reader, judged),
@@ -340,18 +376,82 @@ impl Books {
         };
         match judged.and_then(|judged| ended.map(|ended| (judged, ended))) {
             Ok((judgement, ended)) => {
-                judgement.count(&mut self.tally);
-                self.log.add(&judgement.evidence());
-                self.all_ok &= judgement.ok();
+                self.count(&judgement);
                 let text = judgement.answer_line();
                 Ok(ended.map_or_else(|| text.clone(), |summary| format!("{summary}\n{text}")))
             }
             Err(e) => {
-                self.tally.add("unreadable");
-                self.log.unreadable();
-                self.all_ok = false;
+                self.count_unreadable();
                 Err(e)
             }
+        }
+    }
+
+    /// Counts a judged line in the tally and the diagnosis of the whole log.
+    fn count(&mut self, judgement: &Judgement) {
+        judgement.count(&mut self.tally);
+        self.log.add(judgement.evidence());
+        self.all_ok &= judgement.ok();
+    }
+
+    /// Counts a line that could not be read as a call.
+    fn count_unreadable(&mut self) {
+        self.tally.add("unreadable");
+        self.log.unreadable();
+        self.all_ok = false;
+    }
+
+    /// Counts `lines` log lines the pattern matched no part of: an error under `--strict`.
+    fn skip(&mut self, reader: &Reader, lines: usize) -> Result<(), String> {
+        if lines > 0 && reader.strict {
+            return Err(t!("check-line-not-matching"));
+        }
+        for _ in 0..lines {
+            self.tally.add(SKIPPED);
+            self.log.skip();
+        }
+        Ok(())
+    }
+
+    /// A line the pattern did not match on its own, gathered with the lines before it: the
+    /// record it completes, read (not yet judged), if it completes one.
+    fn gathered_record(
+        &mut self,
+        reader: &Reader,
+        line: &str,
+    ) -> Result<Option<Result<Record, String>>, String> {
+        let (Some(gather), Format::Pattern(pattern)) = (&mut self.gather, &reader.format) else {
+            self.skip(reader, 1)?;
+            return Ok(None);
+        };
+        let step = gather.push(line, |text| pattern.capture(text).is_some());
+        self.skip(reader, step.skipped)?;
+        Ok(step.record.map(|record| match reader.read(&record) {
+            Read::Record(record) => record,
+            // The gathered text matched: it reads as a record.
+            Read::Unmatched | Read::Deferred => Err(t!("check-line-not-matching")),
+        }))
+    }
+
+    /// [`Books::gathered_record`], judged.
+    fn gathered(
+        &mut self,
+        reader: &Reader,
+        line: &str,
+    ) -> Result<Option<Result<Judgement, String>>, String> {
+        Ok(self
+            .gathered_record(reader, line)?
+            .map(|record| judge_record(&record?, &reader.options)))
+    }
+
+    /// Lines gathered toward a record that a line matched on its own (or the input's end)
+    /// cuts short: skipped (an error under `--strict` was given for none of them yet, and
+    /// the line that cut them short is answered).
+    fn forget_gathered(&mut self) {
+        let lines = self.gather.as_mut().map_or(0, Gather::clear);
+        for _ in 0..lines {
+            self.tally.add(SKIPPED);
+            self.log.skip();
         }
     }
 }
@@ -368,6 +468,10 @@ impl Session {
     /// the pattern is an error instead of skipped; with `paths`, a summary follows each path.
     #[must_use]
     pub fn new(options: Options, format: Format, strict: bool, paths: bool) -> Self {
+        let gather = match &format {
+            Format::Pattern(pattern) => Some(Gather::new(pattern.lines())),
+            Format::JsonLines | Format::Csv => None,
+        };
         Self {
             reader: Reader {
                 options,
@@ -377,6 +481,7 @@ impl Session {
             },
             books: Books {
                 paths: paths.then(paths::Paths::new),
+                gather,
                 tally: Tally::default(),
                 all_ok: true,
                 log: LogTally::default(),
@@ -415,6 +520,7 @@ impl Session {
             |judged| books.settle(reader, judged),
             || refused += 1,
         );
+        books.forget_gathered();
         // Lines the loop refused itself (not UTF-8, too long) are unreadable ones.
         for _ in 0..refused {
             books.tally.add("unreadable");
@@ -433,15 +539,19 @@ impl Session {
     /// not match the pattern under `strict`, or the CSV header is unusable.
     pub fn record(&mut self, line: &str) -> Result<Option<Record>, String> {
         match self.reader.read(line) {
-            Read::Record(record) => record.map(Some),
-            Read::Unmatched if self.reader.strict => Err(t!("check-line-not-matching")),
-            Read::Unmatched => {
-                self.books.tally.add(SKIPPED);
-                self.books.log.skip();
-                Ok(None)
+            Read::Record(record) => {
+                self.books.forget_gathered();
+                record.map(Some)
             }
+            Read::Unmatched => self.books.gathered_record(&self.reader, line)?.transpose(),
             Read::Deferred => self.reader.take_header(line).map_or(Ok(None), Err),
         }
+    }
+
+    /// Ends the input of [`Session::record`] and [`Session::judge_line`]: lines gathered
+    /// toward a record that never came are counted as skipped.
+    pub fn end_of_input(&mut self) {
+        self.books.forget_gathered();
     }
 
     /// Reads and judges one line, in order, for the explorer's pasted and opened logs, and
@@ -461,17 +571,9 @@ impl Session {
                 .transpose()
         });
         match &judged {
-            Ok(Some((_, judgement))) => {
-                judgement.count(&mut self.books.tally);
-                self.books.log.add(&judgement.evidence());
-                self.books.all_ok &= judgement.ok();
-            }
+            Ok(Some((_, judgement))) => self.books.count(judgement),
             Ok(None) => {}
-            Err(_) => {
-                self.books.tally.add("unreadable");
-                self.books.log.unreadable();
-                self.books.all_ok = false;
-            }
+            Err(_) => self.books.count_unreadable(),
         }
         judged
     }
@@ -490,7 +592,10 @@ impl Session {
     /// The diagnosis of the lines so far, taken as one log.
     #[must_use]
     pub fn summary(&self) -> Summary {
-        self.books.log.summary(self.reader.options.dialect.api())
+        let options = &self.reader.options;
+        self.books
+            .log
+            .summary(options.dialect.api(), options.renderer())
     }
 
     /// Whether every line so far was right and every path finished left right.

@@ -3,7 +3,10 @@
 //! of that field's kind (a number, a vector in any printed form, a flag); `{_}` takes anything;
 //! `{{` and `}}` are literal braces; a run of spaces in the pattern matches any run of spaces
 //! (or none). The pattern may start anywhere in the line (a timestamp before it is skipped) and
-//! must run to its end (trailing spaces aside).
+//! must run to its end (trailing spaces aside). `{!field}` reads a flag negated (a renderer that
+//! prints `backfacing` or `inside` where the field is `entering`), and `\n` (or a line break)
+//! ends one of the record's lines: a record printed over several lines, one vector a line, is
+//! matched against that many of the log's lines joined (see [`super::gather`]).
 //!
 //! A pattern is user input, so it is bounded ([`MAX_PLACEHOLDERS`], [`MAX_PATTERN_BYTES`], each
 //! field named once), and matching is a search without recursion that never tries the same
@@ -21,6 +24,9 @@ pub const MAX_PLACEHOLDERS: usize = 32;
 /// The longest pattern, in bytes: a printf line is a few hundred.
 pub const MAX_PATTERN_BYTES: usize = 4096;
 
+/// The most lines a record may be printed over: one vector a line, and a few lines between.
+pub const MAX_PATTERN_LINES: usize = 16;
+
 /// The longest text a field can take: a vector in its longest printed form fits easily.
 const MAX_FIELD: usize = 512;
 
@@ -31,7 +37,8 @@ const MAX_FIELD_WORDS: usize = 12;
 #[derive(Clone, Debug, PartialEq)]
 enum Piece {
     Literal(String),
-    Field(&'static str, Kind),
+    /// A field, its kind, and whether its flag is printed negated (`{!entering}`).
+    Field(&'static str, Kind, bool),
     Anything,
 }
 
@@ -47,9 +54,9 @@ impl Piece {
     /// The most words the piece's text can hold: a number or a flag is one word.
     fn max_words(&self) -> usize {
         match self {
-            Self::Field(_, Kind::Number | Kind::Flag) => 1,
-            Self::Field(_, Kind::Vector | Kind::VectorOrNull) => MAX_FIELD_WORDS,
-            Self::Field(_, Kind::Label) | Self::Anything | Self::Literal(_) => usize::MAX,
+            Self::Field(_, Kind::Number | Kind::Flag, _) => 1,
+            Self::Field(_, Kind::Vector | Kind::VectorOrNull, _) => MAX_FIELD_WORDS,
+            Self::Field(_, Kind::Label, _) | Self::Anything | Self::Literal(_) => usize::MAX,
         }
     }
 }
@@ -100,6 +107,10 @@ fn pieces_of(dialect: Dialect, text: &str) -> Result<Vec<Piece>, String> {
                 chars.next();
                 push_literal(&mut pieces, '}');
             }
+            '\\' if chars.peek() == Some(&'n') => {
+                chars.next();
+                push_literal(&mut pieces, '\n');
+            }
             '{' => {
                 let mut name = String::new();
                 loop {
@@ -145,7 +156,7 @@ impl Pattern {
         let names: Vec<&str> = pieces
             .iter()
             .filter_map(|p| match p {
-                Piece::Field(name, _) => Some(*name),
+                Piece::Field(name, ..) => Some(*name),
                 _ => None,
             })
             .collect();
@@ -162,7 +173,38 @@ impl Pattern {
         if names.is_empty() {
             return Err(t!("check-pattern-no-field", pattern = text));
         }
-        Ok(Self { pieces })
+        let pattern = Self { pieces };
+        if pattern.lines() > MAX_PATTERN_LINES {
+            let (count, limit) = (pattern.lines(), MAX_PATTERN_LINES);
+            return Err(t!(
+                "check-pattern-too-many-lines",
+                count = count,
+                limit = limit
+            ));
+        }
+        Ok(pattern)
+    }
+
+    /// How many lines of the log a record takes: one more than the line breaks in the pattern.
+    #[must_use]
+    pub fn lines(&self) -> usize {
+        let breaks: usize = self
+            .pieces
+            .iter()
+            .map(|p| match p {
+                Piece::Literal(text) => text.matches('\n').count(),
+                _ => 0,
+            })
+            .sum();
+        breaks + 1
+    }
+
+    /// The fields whose flags are printed negated (`{!entering}`).
+    pub fn negated(&self) -> impl Iterator<Item = &'static str> + '_ {
+        self.pieces.iter().filter_map(|p| match p {
+            Piece::Field(name, _, true) => Some(*name),
+            _ => None,
+        })
     }
 
     #[rustfmt::skip] // the t! keys stay where the translation tests find them
@@ -170,8 +212,14 @@ impl Pattern {
         if name == "_" {
             return Ok(Piece::Anything);
         }
+        if let Some(flag) = name.strip_prefix('!') {
+            return match fields::find(dialect, flag.trim()) {
+                Some((name, Kind::Flag)) => Ok(Piece::Field(name, Kind::Flag, true)),
+                _ => Err(t!("check-pattern-negated-not-flag", field = flag.trim())),
+            };
+        }
         fields::find(dialect, name)
-            .map(|(name, kind)| Piece::Field(name, kind))
+            .map(|(name, kind)| Piece::Field(name, kind, false))
             .ok_or_else(|| {
                 let (a, listed) = (dialect.name(), fields::listed(dialect));
                 t!("check-pattern-unknown-field", field = name, api = a, expected = listed)
@@ -400,7 +448,7 @@ impl<'p, 'a> Search<'p, 'a> {
                 continue;
             }
             let text = line[frame.at..end].trim();
-            if let Piece::Field(name, kind) = piece {
+            if let Piece::Field(name, kind, _) = piece {
                 self.parsed += 1;
                 if text.is_empty() || !accepts(*kind, text) {
                     continue;

@@ -19,9 +19,10 @@ use super::call::Options;
 use super::code::Code;
 use super::record::{Record, Value};
 use crate::check::{self, MATCH_ANGLE, Match, Verdict};
-use crate::diagnosis::{Evidence, Side};
+use crate::diagnosis::formula::{self, Outcome, Situation};
+use crate::diagnosis::{self, Codes, Evidence, Readings, Side, Told};
 use crate::solve::{Precision, Request};
-use crate::vector_text::{angle, length};
+use crate::vector_text::{angle, length, spoken};
 use refraction_model::log_map::{self, LinePoint};
 
 /// One line of any renderer's log, ready to judge.
@@ -90,18 +91,26 @@ impl Case {
             vector(record, name).ok_or_else(|| t!("check-field-missing", field = name, what = what))
         };
         let w = required("w", t!("check-what-incident"))?;
-        let n = required("n", t!("check-what-normal"))?;
-        let entering = match record.get("entering") {
-            Some(Value::Flag(b)) => Some(*b),
-            _ => None,
-        };
-        let (mu_i, mu_t) = indices(record, entering, options.sides())
-            .ok_or_else(|| t!("check-physics-no-indices"))?;
         let convention = match label(record, "convention") {
-            None => Convention::default(),
+            None => options.convention.unwrap_or_default(),
             Some(name) => Convention::from_name(&name)
                 .ok_or_else(|| t!("check-physics-unknown-convention", text = name))?,
         };
+        // A normal the line does not print is `--normal`'s, the outward one: it tells the side.
+        let (n, outward) = match (vector(record, "n"), options.normal) {
+            (Some(n), _) => (n, None),
+            (None, Some(n)) => (n, Some(n)),
+            (None, None) => (required("n", t!("check-what-normal"))?, None),
+        };
+        let entering = match record.get("entering") {
+            Some(Value::Flag(b)) => Some(*b),
+            _ => outward.map(|n| {
+                let along = DVec3::from_array(w).dot(DVec3::from_array(n));
+                (along < 0.0) == (convention == Convention::AlongRay)
+            }),
+        };
+        let (mu_i, mu_t) = indices(record, entering, options.sides())
+            .ok_or_else(|| t!("check-physics-no-indices"))?;
         let precision = match label(record, "precision").as_deref() {
             None => options.precision.unwrap_or_default(),
             Some("f64" | "double") => Precision::F64,
@@ -238,13 +247,24 @@ pub struct Judged {
     /// The mistakes that explain it, each set a reading, the likeliest first (empty when
     /// right).
     pub alternatives: Vec<Vec<Code>>,
-    /// What the diagnosis of the whole log needs from it.
+    /// What the diagnosis of the whole log needs from it, but its views ([`Judged::evidence`]).
     pub evidence: Evidence,
+    /// What its views are made from.
+    pub readings: Readings,
     /// The line on the log's failure map.
     pub point: LinePoint,
 }
 
 impl Judged {
+    /// What the diagnosis of the whole log needs from the line, its views worked out.
+    #[must_use]
+    pub fn evidence(&self) -> Evidence {
+        Evidence {
+            views: self.readings.views(),
+            ..self.evidence.clone()
+        }
+    }
+
     /// Every mistake of every reading, each once.
     #[must_use]
     pub fn mistakes(&self) -> Vec<Code> {
@@ -272,6 +292,37 @@ fn map_point(case: &Case, r: &Refraction<f64>, evidence: &Evidence) -> LinePoint
     }
 }
 
+/// What a line's views are made from: the ratio the code logged, if upside down, as its
+/// argument mistake, the situation, and what the code sent the ray along.
+fn readings(case: &Case, r: &Refraction<f64>, right: bool, logged: Outcome) -> Readings {
+    let situation = Situation {
+        travel: r.travel,
+        normal: r.facing_normal,
+        mu: r.mu,
+    };
+    let arguments = match case.ratio {
+        Some(ratio) if (ratio * r.mu - 1.0).abs() <= 1e-4 * ratio.abs().max(1.0) && r.mu != 1.0 => {
+            Codes::of(&[Code::EtaInverted])
+        }
+        Some(ratio) if (ratio / r.mu - 1.0).abs() > 1e-4 => Codes::of(&[Code::NotTheApiResult]),
+        _ => Codes::default(),
+    };
+    Readings {
+        situations: vec![(arguments, situation)],
+        outcome: logged,
+        right,
+        tolerance: MATCH_ANGLE,
+    }
+}
+
+/// What the code sent the ray along: nothing for a null, zero or non-finite T.
+fn logged(case: &Case) -> Outcome {
+    match case.yours.map(DVec3::from_array) {
+        Some(y) if y.is_finite() && y != DVec3::ZERO => Outcome::Direction(y),
+        _ => Outcome::Nothing,
+    }
+}
+
 /// Judges one case.
 ///
 /// # Errors
@@ -291,7 +342,16 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
     let wrong_ratio = case
         .ratio
         .is_some_and(|ratio| (ratio / r.mu - 1.0).abs() > 1e-4);
-    let ok = verdict.ok && !wrong_ratio;
+    let logged = logged(case);
+    // Nothing where the ray refracts: a reflection the renderer may have sampled.
+    let sampled = (!r.is_tir() && logged == Outcome::Nothing).then(|| {
+        formula::reflectance(&Situation {
+            travel: r.travel,
+            normal: r.facing_normal,
+            mu: r.mu,
+        })
+    });
+    let ok = (verdict.ok || sampled.is_some()) && !wrong_ratio;
     let alternatives = if ok {
         Vec::new()
     } else {
@@ -299,15 +359,29 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
     };
     let evidence = Evidence {
         ok,
-        alternatives: alternatives.clone(),
+        alternatives: if ok && sampled.is_some() {
+            vec![vec![Code::FalseTir]]
+        } else {
+            alternatives.clone()
+        },
+        views: Vec::new(),
         side: case
             .entering
             .map(|e| if e { Side::Outside } else { Side::Inside }),
         past_critical: r.is_tir(),
         normal_outward: None,
+        band: diagnosis::band(log_map::incidence_deg(r.travel, r.facing_normal)),
+        transmitted: matches!(logged, Outcome::Direction(_)) && !(r.is_tir() && verdict.ok),
+        sample: sampled.map(f64::ln),
+        unchecked: None,
+        told: Told {
+            entering: case.entering.is_some(),
+            travel: true,
+        },
     };
-    let explanation = match alternatives.first() {
-        Some(codes) if !ok && verdict.matches.is_none() => {
+    let explanation = match (alternatives.first(), sampled) {
+        (_, Some(f)) if ok => t!("check-physics-sampled", f = spoken(f)),
+        (Some(codes), None) if !ok && verdict.matches.is_none() => {
             let meanings: Vec<String> = codes.iter().map(|c| c.meaning()).collect();
             let mistakes = meanings.join("; ");
             let said = t!("check-physics-explained", mistakes = mistakes);
@@ -316,14 +390,21 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
         _ => verdict.explanation.clone(),
     };
     let point = map_point(case, &r, &evidence);
+    let readings = readings(case, &r, ok && sampled.is_none(), logged);
     Ok(Judged {
         verdict: Verdict {
             ok,
             explanation,
+            matches: if ok && sampled.is_some() {
+                None
+            } else {
+                verdict.matches
+            },
             ..verdict
         },
         alternatives,
         evidence,
+        readings,
         point,
     })
 }
@@ -367,6 +448,7 @@ pub fn answer_line(judged: &Judged) -> String {
 pub fn tally_kind(judged: &Judged) -> &'static str {
     let v = &judged.verdict;
     match (v.ok, v.matches) {
+        (true, _) if judged.evidence.sample.is_some() => super::SAMPLED,
         (true, _) => "ok",
         // The right direction from the wrong logged ratio, or of the wrong length.
         (false, Some(Match::Chosen)) if judged.mistakes().contains(&Code::EtaInverted) => {
@@ -494,10 +576,18 @@ mod tests {
         let inverted = logged(60.0, true, &[Code::EtaInverted]);
         let judged = judge(&case(&inverted)).unwrap();
         assert_eq!(judged.alternatives, [vec![Code::EtaInverted]]);
-        // Nothing came back where the ray refracts: a false TIR.
+        // Nothing came back where the ray refracts: a sampled reflection on the line (the
+        // whole log tells), a false TIR for the diagnosis if the log never transmits there.
         let nothing = serde_json::json!({"w": [0.6, -0.8, 0], "n": [0, 1, 0], "entering": true, "t_yours": null});
         let judged = judge(&case(&nothing.to_string())).unwrap();
-        assert_eq!(judged.alternatives, [vec![Code::FalseTir]]);
+        assert!(
+            judged.verdict.ok && judged.alternatives.is_empty(),
+            "{judged:?}"
+        );
+        assert!(judged.verdict.explanation.contains("sampled"), "{judged:?}");
+        assert_eq!(judged.evidence.alternatives, [vec![Code::FalseTir]]);
+        assert!(judged.evidence.sample.is_some_and(|ln_f| ln_f < 0.0));
+        assert_eq!(tally_kind(&judged), crate::api_check::SAMPLED);
     }
 
     #[test]

@@ -125,7 +125,8 @@ pub fn undo(codes: &[Code], args: Args<f64>) -> Args<f64> {
             | Code::NoFlipInside
             | Code::NormalTermSign
             | Code::OtherRoot
-            | Code::FalseTir => {}
+            | Code::FalseTir
+            | Code::AcrossSign => {}
         }
     }
     right
@@ -156,10 +157,11 @@ fn fit(call: &Call, codes: Vec<Code>, tolerance: &Tolerance) -> Option<Reading> 
 }
 
 /// Whether the logged normal points into the object under `reading` (pbrt and Mitsuba, with
-/// `entering` given): a ray entering travels against the outward normal.
+/// `entering` logged): a ray entering travels against the outward normal.
 #[must_use]
 pub fn normal_points_inward(call: &Call, reading: &Reading) -> bool {
     matches!(call.api, Api::Pbrt | Api::Mitsuba)
+        && !call.truth.entering_from_normal
         && call.truth.entering.is_some_and(|entering| {
             (call.args.normal.dot(reading.meaning.travel) > 0.0) == entering
         })

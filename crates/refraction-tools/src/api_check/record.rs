@@ -215,6 +215,16 @@ impl Record {
             .map_or(0, |(.., digits)| *digits)
     }
 
+    /// Turns flag `name` round, if the record has it: a pattern's `{!entering}` for a renderer
+    /// that prints `inside` or `backfacing`.
+    pub fn negate(&mut self, name: &str) {
+        for (field, value, _) in &mut self.values {
+            if let (true, Value::Flag(flag)) = (*field == name, value) {
+                *flag = !*flag;
+            }
+        }
+    }
+
     fn push(&mut self, name: &'static str, (value, digits): (Value, u32)) {
         self.values.push((name, value, digits));
     }
