@@ -18,9 +18,10 @@ pub const VIEW_BUDGET: Budget = Budget {
 };
 
 /// What a trace may cost on the UI thread: about 10 ms of tracing (the built-in scenes at 1,000
-/// rays need at most a fifth of it).
+/// rays need at most a fifth of it, the droplet's 43,396 segments the most). A trace that
+/// reaches either limit is traced again in the background, up to [`VIEW_BUDGET`].
 const FOREGROUND: Budget = Budget {
-    segments: VIEW_BUDGET.segments,
+    segments: VIEW_BUDGET.segments / 2,
     tests: 1_000_000,
 };
 
@@ -60,7 +61,11 @@ impl Retracer {
         self.job = None;
         let mut next = self.spare.take().unwrap_or_else(|| empty(scene));
         scene.retrace_within(&mut next, FOREGROUND, &Progress::default());
-        if next.counts.stopped != Some(Stop::Tests(FOREGROUND.tests)) {
+        let over = [
+            Stop::Tests(FOREGROUND.tests),
+            Stop::Segments(FOREGROUND.segments),
+        ];
+        if !next.counts.stopped.is_some_and(|stop| over.contains(&stop)) {
             core::mem::swap(shown, &mut next);
             self.spare = Some(next);
             return;

@@ -278,16 +278,16 @@ fn until_traced(h: &mut Harness<'static, Explorer>) {
 
 #[test]
 fn a_huge_trace_runs_in_the_background_with_progress_and_cancel() {
-    // A mirror box that reflects every ray a thousand times, beside three thousand lines that
-    // every ray must be tested against at every step (a line has no box to skip): a trace that
-    // runs to its full work budget, which the window must not wait for.
+    // A mirror box that reflects every ray a thousand times, beside as many lines as a scene
+    // may hold, which every ray is tested against at every step: a trace that runs to its full
+    // work budget, which the window must not wait for.
     let lines = "[[shapes]]\nline = { point = [50, 0], normal = [1, 0], medium = \"vacuum\" }\n";
     let text = format!(
         "title = \"Mirror box\"\n[media.glass]\nindex = 1.5\n{}[[shapes]]\n\
          polygon = {{ points = [[0, 0], [1, 0], [1, 1], [0, 1]], medium = \"glass\" }}\n\
          [source]\nkind = \"fan\"\norigin = [-1, 0.5]\ndirection = [1, 0.1]\nrays = 1000\n\
          spread_deg = 30\n[effects]\npartial_reflection = true\nmax_depth = 1000\n",
-        lines.repeat(3000)
+        lines.repeat(refraction_scene::MAX_SHAPES - 1)
     );
     let mut explorer = Explorer::new(ExplorerState::default());
     explorer.open_scene(Scene::from_toml(&text, "box.toml", "box").unwrap());
