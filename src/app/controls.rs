@@ -95,7 +95,7 @@ fn index_controls(
     // The slider's number box takes any value typed into it: a refused one shows its error in
     // the field below, as a refused typed value does.
     if ui.add(slider).changed() {
-        field.settle(set_index(state, handle, symbol, index));
+        field.show_outcome(set_index(state, handle, symbol, index));
     }
     let typed = field.show(
         ui,
@@ -106,7 +106,7 @@ fn index_controls(
     if let Some(text) = typed {
         let outcome =
             parse_number(&text, symbol).and_then(|value| set_index(state, handle, symbol, value));
-        field.settle(outcome);
+        field.show_outcome(outcome);
     }
     let current = material_of(state.index(handle));
     let shown = current.map_or_else(|| t!("diagram-material-custom"), |m| m.label());
@@ -122,7 +122,7 @@ fn index_controls(
                 let chosen = current.is_some_and(|c| c.name == m.name);
                 if ui.selectable_label(chosen, text).clicked() {
                     // A preset is refused only beside an extreme typed other index.
-                    field.settle(set_index(state, handle, symbol, m.index));
+                    field.show_outcome(set_index(state, handle, symbol, m.index));
                 }
             }
             ui.label(t!("controls-custom-hint"));
@@ -188,7 +188,7 @@ impl Controls {
                     .set_incidence_degrees(degrees)
                     .map_err(|e| e.to_string())
             });
-            self.theta_i.settle(outcome);
+            self.theta_i.show_outcome(outcome);
         }
     }
 
@@ -239,19 +239,19 @@ impl Controls {
         if let Some(text) = self.w.show(ui, "W =", format_vector(state.w()), 170.0) {
             let outcome = parse_vector(&text, "W")
                 .and_then(|w| state.set_vectors(w, state.n()).map_err(|e| e.to_string()));
-            self.w.settle(outcome);
+            self.w.show_outcome(outcome);
         }
         if let Some(text) = self.n.show(ui, "N =", format_vector(state.n()), 170.0) {
             let outcome = parse_vector(&text, "N")
                 .and_then(|n| state.set_vectors(state.w(), n).map_err(|e| e.to_string()));
-            self.n.settle(outcome);
+            self.n.show_outcome(outcome);
         }
         ui.separator();
         self.export(ui, state, overlay);
     }
 
     /// The picture export, PNG or SVG by the file's extension: what the screen shows (palette,
-    /// student's T, highlights, the physics switches) in the fitted view, since the screen's
+    /// student's T, highlights, the Effects menu's switches) in the fitted view, since the screen's
     /// pan is in its own pixels.
     fn export(&mut self, ui: &mut Ui, state: &ExplorerState, overlay: &Overlay) {
         ui.heading(t!("controls-export-heading"));

@@ -253,7 +253,7 @@ pub fn answer_replace(
 /// Shows the dialog that `slot` holds (alone, or with what it was opened for; `dialog` finds
 /// it there) while it is up, and empties the slot once the user chose or cancelled; returns
 /// what the slot held and the file chosen.
-pub fn settle<T>(
+pub fn chosen_file<T>(
     ui: &Ui,
     slot: &mut Option<T>,
     dialog: impl FnOnce(&mut T) -> &mut FileDialog,

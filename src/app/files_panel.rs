@@ -8,7 +8,7 @@ use egui::{RichText, TextEdit, Ui};
 use refraction_i18n::t;
 
 use super::file_dialog::{
-    FileDialog, Kind, Purpose, Target, answer_replace, first_bytes, settle, target,
+    FileDialog, Kind, Purpose, Target, answer_replace, chosen_file, first_bytes, target,
 };
 use super::typed::status;
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
@@ -120,7 +120,7 @@ impl FilesPanel {
 
     /// The dialog and the replace question, while either is up.
     fn dialogs(&mut self, ui: &Ui, state: &mut ExplorerState) {
-        if let Some((dialog, path)) = settle(ui, &mut self.dialog, |d| d) {
+        if let Some((dialog, path)) = chosen_file(ui, &mut self.dialog, |d| d) {
             self.path = path.display().to_string();
             match dialog.purpose() {
                 Purpose::Open => self.open(state),

@@ -35,7 +35,7 @@ impl Snapshot {
     /// Whether this snapshot already holds `interface` and `scene` (compared in place, so that
     /// nothing is copied on the frames where nothing changed).
     #[must_use]
-    pub fn holds(&self, interface: &ExplorerState, scene: &Scene) -> bool {
+    pub fn same_as(&self, interface: &ExplorerState, scene: &Scene) -> bool {
         self.interface == *interface && *self.scene == *scene
     }
 
@@ -304,7 +304,7 @@ mod tests {
         for i in 0..LIMIT + 5 {
             state.set_mu_t(1.2 + i as f64 * 1e-4).unwrap();
             history.record_unless(
-                |present| present.holds(&state, &scene),
+                |present| present.same_as(&state, &scene),
                 |present| Snapshot::after(present, &state, &scene),
             );
         }

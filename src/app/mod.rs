@@ -14,6 +14,7 @@ mod canvas;
 mod check_panel;
 mod controls;
 pub mod deck;
+pub mod effects_menu;
 mod export;
 mod file_dialog;
 mod files_panel;
@@ -23,7 +24,6 @@ pub mod history;
 pub mod link;
 mod paint;
 pub mod panels;
-pub mod physics;
 pub mod presentation;
 mod readouts;
 mod retrace;
@@ -41,12 +41,11 @@ use egui::{Panel, RichText, ScrollArea, Ui};
 
 use accuracy::AccuracyView;
 use controls::Controls;
+use effects_menu::EffectsMenu;
 use export::AnimationExport;
 use history::{History, Snapshot};
 use panels::{CONTROLS, NUMBERS, Panels};
-use physics::Physics;
 use presentation::Presentation;
-use refraction_deck::Deck;
 use refraction_diagram::Overlay;
 use refraction_diagram::palette::Theme;
 use refraction_i18n::{Locale, t};
@@ -151,7 +150,7 @@ pub struct Explorer {
     tools: Tools,
     scenes: ScenesView,
     panels: Panels,
-    physics: Physics,
+    effects: EffectsMenu,
     animation_export: AnimationExport,
     /// The lesson deck and the step shown.
     lesson: deck::Lesson,
@@ -181,7 +180,7 @@ impl Explorer {
             presentation: Presentation::default(),
             tools: Tools::default(),
             panels: Panels::default(),
-            physics: Physics::default(),
+            effects: EffectsMenu::default(),
             animation_export: AnimationExport::default(),
             lesson: deck::Lesson::default(),
             travelled: None,
@@ -222,9 +221,9 @@ impl Explorer {
         explorer.presentation.on = launch.present;
         explorer.command_line_language = launch.language;
         explorer.system_language = launch.system_language;
-        refraction_i18n::set_locale(explorer.speaking());
-        if let Some(deck) = launch.lesson.and_then(|name| Deck::load(&name).ok()) {
-            explorer.open_deck(deck);
+        refraction_i18n::set_locale(explorer.language());
+        if let Some(name) = launch.lesson {
+            explorer.open_lesson(&name);
         }
         explorer
     }
@@ -232,7 +231,7 @@ impl Explorer {
     /// The language the window speaks: the command line's (`--lang`) until one is chosen in
     /// the bar, then the chosen one (kept between runs), else the system's, else English.
     #[must_use]
-    pub fn speaking(&self) -> Locale {
+    pub fn language(&self) -> Locale {
         self.command_line_language
             .unwrap_or_else(|| self.presentation.locale(self.system_language))
     }
@@ -302,8 +301,8 @@ impl Explorer {
             pan_zoom: self.presentation.pan_zoom,
             student: self.tools.student(&self.state),
             focus: self.tools.focus(&self.state),
-            intensities: self.physics.intensities(),
-            waves: self.physics.waves(),
+            intensities: self.effects.intensities(),
+            waves: self.effects.waves(),
             hide_answer: self.lesson.hides_answer(),
             index_scale: !self.diagram_only(),
             simple: self.presentation.simple,
@@ -349,12 +348,12 @@ impl Explorer {
     /// Shows the explorer in `ui` (the whole window): the bar of views and tools, then the
     /// view; records a step of history once the user lets go.
     pub fn show(&mut self, ui: &mut Ui) {
-        refraction_i18n::set_locale(self.speaking());
+        refraction_i18n::set_locale(self.language());
         self.presentation.apply(ui.ctx());
         self.presentation.diagram_only_key(ui.ctx());
         paint::share_palette(ui.ctx(), self.presentation.palette());
         self.tools.walk.animate(ui.ctx(), &mut self.state);
-        self.physics.animate(ui.ctx());
+        self.effects.animate(ui.ctx());
         if ui.input(|i| !i.raw.dropped_files.is_empty()) {
             self.tools.take_dropped(ui.ctx());
             self.view = View::Interface;
@@ -388,7 +387,7 @@ impl Explorer {
         if settled {
             let (state, scene) = (&self.state, self.scenes.scene());
             self.history.record_unless(
-                |present| present.holds(state, scene),
+                |present| present.same_as(state, scene),
                 |present| Snapshot::after(present, state, scene),
             );
         }
@@ -405,7 +404,7 @@ impl Explorer {
             }
             ui.separator();
             let chosen = self.presentation.language;
-            self.presentation.controls(ui, self.speaking());
+            self.presentation.controls(ui, self.language());
             if self.presentation.language != chosen {
                 self.command_line_language = None;
             }
@@ -414,7 +413,7 @@ impl Explorer {
                 .bar(ui, self.presentation.on, self.lesson.deck.is_some());
             if self.view == View::Interface {
                 ui.separator();
-                self.physics.menu(ui);
+                self.effects.menu(ui);
                 if self.presentation.on {
                     self.panels.bar_switches(ui);
                 }
@@ -523,8 +522,8 @@ impl Explorer {
             }
         });
         if let Some(lesson) = controls.started.take() {
-            self.physics.start(lesson);
-            overlay.intensities = self.physics.intensities();
+            self.effects.start(lesson);
+            overlay.intensities = self.effects.intensities();
         }
         // No margins (the diagram reaches the panels), but the panel's fill under the key hint.
         let frame = egui::Frame::NONE.fill(ui.visuals().panel_fill);

@@ -7,14 +7,14 @@
 use std::sync::Arc;
 use std::sync::mpsc::{self, Receiver, TryRecvError};
 
-use refraction_scene::{Budget, Counts, MAX_TESTS, Progress, Scene, Stop, Trace};
+use refraction_scene::{Budget, Counts, MAX_INTERSECTION_TESTS, Progress, Scene, Stop, Trace};
 
 /// What the view traces at most: a screen cannot show more segments than this (a 1280×720
 /// canvas has under a million pixels, and rays are drawn wider than one), and a picture of them
 /// still paints in a fraction of a second.
 pub const VIEW_BUDGET: Budget = Budget {
     segments: 200_000,
-    tests: MAX_TESTS,
+    tests: MAX_INTERSECTION_TESTS,
 };
 
 /// What a trace may cost on the UI thread: about 10 ms of tracing (the built-in scenes at 1,000

@@ -229,7 +229,8 @@ impl SceneFiles {
     /// from the dialog, if one was.
     fn dialogs(&mut self, ui: &Ui, scene: &Scene) -> Option<Scene> {
         let mut opened = None;
-        if let Some(((usage, _), path)) = file_dialog::settle(ui, &mut self.dialog, |(_, d)| d) {
+        if let Some(((usage, _), path)) = file_dialog::chosen_file(ui, &mut self.dialog, |(_, d)| d)
+        {
             let shown = path.display().to_string();
             match usage {
                 Use::OpenScene => {

@@ -62,7 +62,7 @@ impl TypedField {
     }
 
     /// Records the outcome of applying the text: an error is shown until the next success.
-    pub fn settle(&mut self, outcome: Result<(), String>) {
+    pub fn show_outcome(&mut self, outcome: Result<(), String>) {
         self.error = outcome.err();
     }
 }
@@ -173,7 +173,7 @@ mod tests {
         };
         frame(&mut field, "1.5");
         field.text = "0.1, 0.9, 0.2".to_owned();
-        field.settle(parse_number(&field.text, "μt").map(drop));
+        field.show_outcome(parse_number(&field.text, "μt").map(drop));
         assert!(
             field
                 .error

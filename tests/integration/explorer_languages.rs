@@ -23,7 +23,7 @@ fn german_system() -> Explorer {
 #[test]
 fn a_german_teacher_types_decimal_commas() {
     let mut h = harness_for(german_system());
-    assert_eq!(h.state().speaking(), Locale::De);
+    assert_eq!(h.state().language(), Locale::De);
     assert!(
         h.query_by_label("🖵 Präsentation").is_some(),
         "the bar in German"
@@ -43,7 +43,7 @@ fn the_language_chosen_in_the_bar_is_kept_and_wins_over_the_systems() {
     h.get_by_role_and_label(Role::ComboBox, "Sprache").click();
     h.run();
     click(&mut h, "Русский");
-    let speaking = h.state().speaking();
+    let speaking = h.state().language();
     let bar_in_russian = h.query_by_label(&t!("presentation-toggle")).is_some();
     let look = h.state().presentation().look();
     refraction_i18n::set_locale(Locale::En);
@@ -58,7 +58,7 @@ fn the_language_chosen_in_the_bar_is_kept_and_wins_over_the_systems() {
         },
         saved,
     );
-    assert_eq!(next.speaking(), Locale::Ru);
+    assert_eq!(next.language(), Locale::Ru);
     let for_one_run = Explorer::launched(
         Launch {
             system_language: Some(Locale::De),
@@ -67,10 +67,10 @@ fn the_language_chosen_in_the_bar_is_kept_and_wins_over_the_systems() {
         },
         saved,
     );
-    assert_eq!(for_one_run.speaking(), Locale::Fr);
+    assert_eq!(for_one_run.language(), Locale::Fr);
     refraction_i18n::set_locale(Locale::En);
     assert_eq!(
-        Explorer::new(ExplorerState::default()).speaking(),
+        Explorer::new(ExplorerState::default()).language(),
         Locale::En
     );
 }

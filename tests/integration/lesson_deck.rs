@@ -85,6 +85,26 @@ fn page_down_moves_a_step_and_the_reveal_key_shows_what_was_hidden() {
 }
 
 #[test]
+fn a_deck_file_gone_by_the_time_the_window_opens_is_said_in_the_deck_tool() {
+    let mut explorer = Explorer::new(ExplorerState::default());
+    explorer.open_lesson("no-such-deck-file.toml");
+    assert!(explorer.lesson().deck.is_none());
+    let said = explorer.lesson().panel.status.clone();
+    let said = said.and_then(Result::err).unwrap_or_default();
+    assert!(said.contains("no-such-deck-file.toml"), "{said}");
+    let h = harness_sized(explorer, (1280.0, 720.0));
+    assert!(
+        h.query_by_label_contains("no-such-deck-file.toml")
+            .is_some(),
+        "the deck tool is open and says why"
+    );
+    let mut explorer = Explorer::new(ExplorerState::default());
+    explorer.open_lesson("snell");
+    let opened = explorer.lesson().deck.as_ref().map(|d| d.steps.len());
+    assert_eq!(opened, Some(Deck::load("snell").unwrap().steps.len()));
+}
+
+#[test]
 fn a_scene_steps_rays_stop_at_the_first_surface_until_revealed() {
     let mut h = on_deck("total-internal-reflection");
     for _ in 0..4 {

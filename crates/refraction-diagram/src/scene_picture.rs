@@ -896,10 +896,49 @@ fn starts_colour_blind(trace: &Trace, path: &Path) -> bool {
 
 /// The fill of a hit's marker.
 fn hit_colour(hit: &Hit, p: &Palette) -> Colour {
-    match (hit.outcome, hit.side) {
-        (Outcome::TotalInternalReflection, _) => p.critical,
-        (Outcome::Refracted, Side::Leaving) => p.warning,
-        (Outcome::Refracted, Side::Entering) => p.background,
+    HitKind::of(hit).colour(p)
+}
+
+/// The kinds of hit marker the picture tells apart, in the legend's order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum HitKind {
+    Entering,
+    Leaving,
+    TotalInternalReflection,
+}
+
+impl HitKind {
+    const ALL: [Self; 3] = [Self::Entering, Self::Leaving, Self::TotalInternalReflection];
+
+    fn of(hit: &Hit) -> Self {
+        match (hit.outcome, hit.side) {
+            (Outcome::TotalInternalReflection, _) => Self::TotalInternalReflection,
+            (Outcome::Refracted, Side::Leaving) => Self::Leaving,
+            (Outcome::Refracted, Side::Entering) => Self::Entering,
+        }
+    }
+
+    /// The marker's fill.
+    fn colour(self, p: &Palette) -> Colour {
+        match self {
+            Self::Entering => p.background,
+            Self::Leaving => p.warning,
+            Self::TotalInternalReflection => p.critical,
+        }
+    }
+
+    /// The legend's words for it, in the shade they are written in.
+    fn words(self, p: &Palette) -> (String, Colour) {
+        match self {
+            Self::Entering => (t!("diagram-hit-entering"), p.ink),
+            Self::Leaving => (
+                t!("diagram-hit-leaving"),
+                p.text_shade_on(p.warning, p.calm),
+            ),
+            Self::TotalInternalReflection => {
+                (t!("diagram-hit-tir"), p.text_shade_on(p.critical, p.calm))
+            }
+        }
     }
 }
 
@@ -927,28 +966,18 @@ fn legend(scene: &Scene, trace: &Trace, p: &Palette) -> Vec<(String, Colour)> {
     if scene.effects().intensities() {
         pieces.push((format!(" · {}", t!("diagram-legend-opacity")), ink));
     }
-    let kinds = [
-        (p.background, t!("diagram-hit-entering")),
-        (p.warning, t!("diagram-hit-leaving")),
-        (p.critical, t!("diagram-hit-tir")),
-    ];
-    let mut first = true;
-    for (fill, words) in kinds {
-        if trace.hits.iter().any(|h| hit_colour(h, p) == fill) {
-            let lead = if first {
-                format!(" · {} ", t!("diagram-legend-hits"))
-            } else {
-                ", ".to_owned()
-            };
-            first = false;
-            pieces.push((lead, ink));
-            let colour = if fill == p.background {
-                ink
-            } else {
-                p.text_shade_on(fill, p.calm)
-            };
-            pieces.push((words, colour));
-        }
+    // Each kind once, told by what the hit was, never by its colour (two may share one).
+    let shown = HitKind::ALL
+        .into_iter()
+        .filter(|kind| trace.hits.iter().any(|h| HitKind::of(h) == *kind));
+    for (i, kind) in shown.enumerate() {
+        let lead = if i == 0 {
+            format!(" · {} ", t!("diagram-legend-hits"))
+        } else {
+            ", ".to_owned()
+        };
+        pieces.push((lead, ink));
+        pieces.push(kind.words(p));
     }
     pieces
 }
@@ -1019,6 +1048,28 @@ mod tests {
                 _ => None,
             })
             .collect()
+    }
+
+    #[test]
+    fn the_legend_names_each_kind_of_hit_drawn_even_when_two_kinds_share_a_colour() {
+        let mut one_colour = Palette::STANDARD;
+        one_colour.warning = one_colour.background;
+        one_colour.critical = one_colour.background;
+        let mut seen_tir = false;
+        for info in refraction_scene::catalogue() {
+            let (scene, trace) = traced(info.name);
+            let words: String = legend(&scene, &trace, &one_colour)
+                .into_iter()
+                .map(|(text, _)| text)
+                .collect();
+            for kind in HitKind::ALL {
+                let drawn = trace.hits.iter().any(|h| HitKind::of(h) == kind);
+                let named = words.contains(&kind.words(&one_colour).0);
+                assert_eq!(drawn, named, "{} {kind:?}: {words}", info.name);
+                seen_tir |= drawn && kind == HitKind::TotalInternalReflection;
+            }
+        }
+        assert!(seen_tir, "some built-in scene reflects totally");
     }
 
     #[test]

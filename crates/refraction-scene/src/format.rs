@@ -1,6 +1,6 @@
-//! The scene file format (TOML, described in the repository README): the checked conversion of
-//! the file as written ([`spec`](super::spec)) into a [`Scene`]. Every error names the file,
-//! the line and column of the value at fault, and what was expected.
+//! The scene file format (TOML, described in the repository's docs/scenes.md): the checked
+//! conversion of the file as written ([`spec`](super::spec)) into a [`Scene`]. Every error names
+//! the file, the line and column of the value at fault, and what was expected.
 
 use core::ops::Range;
 use std::collections::BTreeMap;

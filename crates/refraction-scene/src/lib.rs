@@ -37,7 +37,7 @@ pub use fresnel::Fresnel;
 pub use medium::{Dispersion, Medium, REFERENCE_WAVELENGTH_NM, WHITE_WAVELENGTHS_NM};
 pub use outline::{Outline, Piece};
 pub use report::Report;
-pub use search::MAX_TESTS;
+pub use search::MAX_INTERSECTION_TESTS;
 pub use shape::{Crossing, Lens, Shape, T_MIN};
 pub use source::{Light, Source, SourceKind, traced_wavelength};
 pub use spec::Numbers;

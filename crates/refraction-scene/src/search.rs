@@ -1,6 +1,6 @@
 //! How the tracer finds crossings and media: every shape's pieces in turn, as
 //! [`Scene::first_crossing`] and [`Scene::medium_where`] do, counting the tests made so that a
-//! trace keeps within its work budget ([`MAX_TESTS`]).
+//! trace keeps within its work budget ([`MAX_INTERSECTION_TESTS`]).
 //!
 //! A classroom scene has a few shapes (every built-in scene one to four, a teacher's a few
 //! dozen at most, [`crate::MAX_SHAPES`]): a ray's crossing costs one test per piece, a few
@@ -15,7 +15,7 @@ use super::Scene;
 /// finding crossings and the media at hits); past it the trace stops and says so
 /// ([`crate::Counts::truncated`]), so that no scene can keep the tracer busy for long (about
 /// a second at this many on one core).
-pub const MAX_TESTS: u64 = 100_000_000;
+pub const MAX_INTERSECTION_TESTS: u64 = 100_000_000;
 
 /// The crossings and media of one scene, with the tests made so far.
 pub(crate) struct Search<'a> {
@@ -111,8 +111,8 @@ fn edges_meet(points: &[DVec2], i: usize, j: usize) -> bool {
 /// each is tested against the edges before it.
 ///
 /// # Errors
-/// The number of tests made, when it passes [`MAX_TESTS`] before an answer (a polygon of
-/// tens of thousands of points; a scene file holds at most [`crate::MAX_POINTS`]).
+/// The number of tests made, when it passes [`MAX_INTERSECTION_TESTS`] before an answer (a
+/// polygon of tens of thousands of points; a scene file holds at most [`crate::MAX_POINTS`]).
 pub(crate) fn first_self_crossing(points: &[DVec2]) -> Result<Option<(usize, usize)>, u64> {
     let mut tests = 0_u64;
     for j in 0..points.len() {
@@ -122,8 +122,8 @@ pub(crate) fn first_self_crossing(points: &[DVec2]) -> Result<Option<(usize, usi
                 return Ok(Some((i, j)));
             }
         }
-        if tests > MAX_TESTS {
-            return Err(MAX_TESTS);
+        if tests > MAX_INTERSECTION_TESTS {
+            return Err(MAX_INTERSECTION_TESTS);
         }
     }
     Ok(None)

@@ -11,7 +11,7 @@ use serde::Serialize;
 use super::Scene;
 use super::bounds::Bounds;
 use super::fresnel::Fresnel;
-use super::search::{MAX_TESTS, Search};
+use super::search::{MAX_INTERSECTION_TESTS, Search};
 use super::source::{Light, serialize_wavelength, traced_wavelength};
 use refraction_kernel::{Convention, Incidence, refract_facing};
 
@@ -24,15 +24,15 @@ pub const MAX_SEGMENTS: usize = 1_000_000;
 pub struct Budget {
     /// The most segments recorded ([`MAX_SEGMENTS`] by default).
     pub segments: usize,
-    /// The most intersection tests made ([`MAX_TESTS`] by default).
+    /// The most intersection tests made ([`MAX_INTERSECTION_TESTS`] by default).
     pub tests: u64,
 }
 
 impl Budget {
-    /// [`MAX_SEGMENTS`] segments and [`MAX_TESTS`] tests.
+    /// [`MAX_SEGMENTS`] segments and [`MAX_INTERSECTION_TESTS`] tests.
     pub const DEFAULT: Self = Self {
         segments: MAX_SEGMENTS,
-        tests: MAX_TESTS,
+        tests: MAX_INTERSECTION_TESTS,
     };
 }
 

@@ -297,7 +297,7 @@ pub fn answer(line: &str) -> Result<(String, Verdict), CheckError> {
     // serde_json fails only on a map with keys that are not strings or on a Serialize that
     // fails: the answer has neither.
     // untranslated: a message for a developer, never shown
-    let text = serde_json::to_string(&answer).expect("an answer serializes");
+    let text = crate::json_line(&answer);
     Ok((text, verdict))
 }
 

@@ -34,6 +34,13 @@ pub enum LinesError {
     Write(#[source] io::Error),
 }
 
+/// `answer` as one JSON line. Every answer type is a struct of numbers, strings, vectors and
+/// options with string keys, which `serde_json` always writes (NaN as `null`), so a failure
+/// is a bug in this crate and panics rather than dropping the line in silence.
+pub(crate) fn json_line(answer: &impl serde::Serialize) -> String {
+    serde_json::to_string(answer).expect("an answer of plain fields serialises")
+}
+
 /// The error line for input line `line` (1-based), its message [`brief`].
 #[must_use]
 pub fn error_line(line: usize, message: &str) -> String {

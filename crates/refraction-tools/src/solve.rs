@@ -280,7 +280,7 @@ fn answer_in<S: Real + Serialize>(request: &Request) -> Result<String, RequestEr
     // serde_json fails only on a map with keys that are not strings or on a Serialize that
     // fails: the answer has neither.
     // untranslated: a message for a developer, never shown
-    Ok(serde_json::to_string(&Answer::from(&refraction)).expect("an answer serializes"))
+    Ok(crate::json_line(&Answer::from(&refraction)))
 }
 
 /// The JSON answer (without newline) to one input line, or the message for its error line.

@@ -8,7 +8,7 @@
 use egui::{CollapsingHeader, Grid, RichText, Sense, TextEdit, Ui};
 use glam::Vec2;
 
-use super::log_files::LogFiles;
+use super::log_files::{Failing, LogFiles, MAX_JUDGED, MAX_SAVED_FAILING};
 use super::{JSON_LINE_START, field};
 use crate::app::paint::{self, verdict_colour, window_palette};
 use crate::app::typed::error_label;
@@ -27,14 +27,8 @@ pub const MAX_PASTED_CHARS: usize = 65_536;
 /// The most rows the table shows; the rest are judged and diagnosed but not listed.
 pub const MAX_LINES: usize = 500;
 
-/// The most lines judged in the window (a log file can be longer: `check` takes any length).
-pub const MAX_JUDGED: usize = 100_000;
-
 /// The most lines the failure map draws, and the most failing lines kept to save as tests.
 const MAX_POINTS: usize = 20_000;
-
-/// The most failing lines a saved test file holds.
-pub const MAX_TESTS: usize = 100;
 
 /// The longest explanation a row shows (the whole one is in its tooltip and in the panel).
 const SHORT_EXPLANATION: usize = 90;
@@ -51,17 +45,6 @@ struct Row {
     verdict: Result<(Record, Judgement), String>,
 }
 
-/// A failing line, kept to be saved as a test.
-#[derive(Clone, Debug)]
-pub struct Failing {
-    /// Its line number in the log, from 1.
-    pub line: usize,
-    /// The call read.
-    pub record: Record,
-    /// Its verdict.
-    pub judgement: Judgement,
-}
-
 /// The verdicts on a log's lines and its diagnosis.
 #[derive(Clone, Debug)]
 pub struct Table {
@@ -73,7 +56,7 @@ pub struct Table {
     summary: Summary,
     /// Where each judged line lands on the failure map (the first [`MAX_POINTS`]).
     points: Vec<LinePoint>,
-    /// The failing lines, to be saved as tests (the first [`MAX_TESTS`]).
+    /// The failing lines, to be saved as tests (the first [`MAX_SAVED_FAILING`]).
     failing: Vec<Failing>,
     /// Judged lines the table does not list.
     not_listed: usize,
@@ -198,7 +181,7 @@ fn judge(dialect: Dialect, reading: &Reading, text: &str) -> Result<Table, Strin
         if points.len() < MAX_POINTS {
             points.push(judgement.point());
         }
-        if !judgement.ok() && failing.len() < MAX_TESTS {
+        if !judgement.ok() && failing.len() < MAX_SAVED_FAILING {
             failing.push(Failing {
                 line,
                 record: record.clone(),

@@ -7,14 +7,30 @@ use std::path::{Path, PathBuf};
 
 use egui::{RichText, Ui};
 
-use super::bulk::{Failing, MAX_JUDGED, MAX_TESTS};
 use crate::app::file_dialog::{self, FileDialog, Purpose, Target};
 use crate::app::snippets::api::{self as api_snippets, Language, Name};
 use crate::app::snippets::{self, AnyCase, AnyLanguage};
 use crate::app::typed::error_label;
 use refraction_i18n::t;
 use refraction_tools::api_check::physics::Case;
-use refraction_tools::api_check::{Dialect, Judgement, Options};
+use refraction_tools::api_check::{Dialect, Judgement, Options, Record};
+
+/// The most lines judged in the window (a log file can be longer: `check` takes any length).
+pub const MAX_JUDGED: usize = 100_000;
+
+/// The most failing lines a saved test file holds.
+pub const MAX_SAVED_FAILING: usize = 100;
+
+/// A failing line, kept to be saved as a test.
+#[derive(Clone, Debug)]
+pub struct Failing {
+    /// Its line number in the log, from 1.
+    pub line: usize,
+    /// The call read.
+    pub record: Record,
+    /// Its verdict.
+    pub judgement: Judgement,
+}
 
 /// The largest log file the window reads (`check` reads any length from its input).
 pub const MAX_LOG_BYTES: u64 = 16 * 1024 * 1024;
@@ -254,7 +270,7 @@ impl LogFiles {
             return;
         }
         ui.horizontal_wrapped(|ui| {
-            let count = failing.len().min(MAX_TESTS);
+            let count = failing.len().min(MAX_SAVED_FAILING);
             ui.label(t!("logs-save-tests", count = count));
             for language in TestLanguage::of(dialect) {
                 if ui.button(format!("💾 {}", language.label())).clicked() {
@@ -303,7 +319,8 @@ impl LogFiles {
 
     /// Shows the dialog while it is up; when a file is chosen, opens the log or saves the tests.
     fn dialog_ui(&mut self, ui: &Ui, failing: &[Failing], options: &Options) {
-        if let Some(((usage, _), path)) = file_dialog::settle(ui, &mut self.dialog, |(_, d)| d) {
+        if let Some(((usage, _), path)) = file_dialog::chosen_file(ui, &mut self.dialog, |(_, d)| d)
+        {
             match usage {
                 Use::Log => self.open(&path),
                 Use::Tests(language) => self.save(&path, language, failing, options),

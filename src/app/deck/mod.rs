@@ -204,6 +204,19 @@ impl Explorer {
         &self.lesson
     }
 
+    /// Opens the built-in deck or deck file `name` on its first step (a built-in deck in the
+    /// window's language); one that cannot be read now (the file changed since the command
+    /// line checked it) opens the deck tool with the reason.
+    pub fn open_lesson(&mut self, name: &str) {
+        match Deck::load(name) {
+            Ok(deck) => self.open_deck(deck),
+            Err(e) => {
+                self.lesson.panel.status = Some(Err(e.to_string()));
+                self.tools.open = Some(Tool::Deck);
+            }
+        }
+    }
+
     /// Opens `deck` on its first step.
     pub fn open_deck(&mut self, deck: Deck) {
         self.lesson.deck = Some(deck);
@@ -259,11 +272,11 @@ impl Explorer {
         } else {
             self.tools.open = tool;
         }
-        self.physics.intensities = step.has(Effect::Intensities);
-        self.physics.waves = step.has(Effect::Wavefronts);
-        self.physics.moving = step.has(Effect::Moving);
-        self.physics.huygens = step.has(Effect::Huygens);
-        self.physics.polarisation = polarisation(step.light);
+        self.effects.intensities = step.has(Effect::Intensities);
+        self.effects.waves = step.has(Effect::Wavefronts);
+        self.effects.moving = step.has(Effect::Moving);
+        self.effects.huygens = step.has(Effect::Huygens);
+        self.effects.polarisation = polarisation(step.light);
     }
 
     /// The window as it is now as a step titled `title`: the state, the view, the scene (by
@@ -280,12 +293,12 @@ impl Explorer {
             Some(Tool::Deck) => self.tools.before_deck,
             open => open,
         };
-        let physics = &self.physics;
+        let menu = &self.effects;
         let effects = [
-            (physics.intensities, Effect::Intensities),
-            (physics.waves, Effect::Wavefronts),
-            (physics.waves && physics.moving, Effect::Moving),
-            (physics.waves && physics.huygens, Effect::Huygens),
+            (menu.intensities, Effect::Intensities),
+            (menu.waves, Effect::Wavefronts),
+            (menu.waves && menu.moving, Effect::Moving),
+            (menu.waves && menu.huygens, Effect::Huygens),
         ];
         let on: Vec<Effect> = effects.iter().filter(|(on, _)| *on).map(|e| e.1).collect();
         let mut step = Step::new(title, self.state.clone()).effects(&on);
@@ -294,7 +307,7 @@ impl Explorer {
             && (view == StepView::Scenes || name != refraction_scene::DEFAULT_SCENE))
             .then(|| name.to_owned());
         step.tool = tool.and_then(step_tool);
-        step.light = light(physics.polarisation);
+        step.light = light(menu.polarisation);
         step
     }
 

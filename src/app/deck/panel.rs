@@ -11,7 +11,9 @@ use refraction_files::write_atomically;
 use refraction_i18n::t;
 
 use super::title_of;
-use crate::app::file_dialog::{FileDialog, Kind, Purpose, Target, answer_replace, settle, target};
+use crate::app::file_dialog::{
+    FileDialog, Kind, Purpose, Target, answer_replace, chosen_file, target,
+};
 use crate::app::typed::status;
 use crate::app::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 
@@ -288,7 +290,7 @@ impl DeckPanel {
     /// the dialog, if one was.
     fn dialogs(&mut self, ui: &Ui, deck: Option<&Deck>) -> Option<Action> {
         let mut action = None;
-        if let Some((dialog, path)) = settle(ui, &mut self.dialog, |d| d) {
+        if let Some((dialog, path)) = chosen_file(ui, &mut self.dialog, |d| d) {
             self.path = path.display().to_string();
             match dialog.purpose() {
                 Purpose::Open => action = self.open(),

@@ -75,8 +75,7 @@ pub fn answer_line(call: &Call, diagnosis: &Diagnosis) -> String {
         alternatives: diagnosis.alternatives.iter().map(|a| names(a)).collect(),
         path: call.path.as_deref(),
     };
-    // Serialising this struct of plain fields cannot fail; a map key is never non-string.
-    serde_json::to_string(&answer).unwrap_or_default()
+    crate::json_line(&answer)
 }
 
 /// Judges one record.
@@ -355,7 +354,7 @@ struct Books {
 
 impl Books {
     /// The answer to a judged line, in input order: nothing for a line without a call.
-    fn settle(&mut self, reader: &Reader, judged: Judged) -> Result<String, String> {
+    fn answer(&mut self, reader: &Reader, judged: Judged) -> Result<String, String> {
         let judged = match judged {
             Judged::Line(judged) => {
                 self.forget_gathered();
@@ -367,7 +366,7 @@ impl Books {
             },
             Judged::Deferred(line) => match reader.judge_in_order(&line) {
                 None => return Ok(String::new()),
-                Some(judged) => return self.settle(reader, judged),
+                Some(judged) => return self.answer(reader, judged),
             },
         };
         let ended = match (&judged, &mut self.paths) {
@@ -495,7 +494,7 @@ impl Session {
     /// Why the line cannot be judged; the loop answers it with `{"line", "error"}`.
     pub fn answer(&mut self, line: &str) -> Result<String, String> {
         let judged = self.reader.judge(line);
-        self.books.settle(&self.reader, judged)
+        self.books.answer(&self.reader, judged)
     }
 
     /// Answers every non-empty line of `input` on `output` in order, the lines judged on
@@ -517,7 +516,7 @@ impl Session {
             output,
             threads,
             |line| reader.judge(line),
-            |judged| books.settle(reader, judged),
+            |judged| books.answer(reader, judged),
             || refused += 1,
         );
         books.forget_gathered();

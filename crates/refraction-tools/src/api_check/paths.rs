@@ -184,8 +184,7 @@ impl Path {
             exit_ok,
             explanation: &explanation,
         };
-        // A struct of plain fields always serialises.
-        (serde_json::to_string(&line).unwrap_or_default(), exit_ok)
+        (crate::json_line(&line), exit_ok)
     }
 
     fn explanation(&self, exit_ok: bool, off: f64, how: &str) -> String {

@@ -439,7 +439,7 @@ pub fn answer_line(judged: &Judged) -> String {
     // serde_json fails only on a map with keys that are not strings or on a Serialize that
     // fails: the answer has neither.
     // untranslated: a message for a developer, never shown
-    serde_json::to_string(&answer).expect("an answer serializes")
+    crate::json_line(&answer)
 }
 
 /// The kind of a verdict as `check`'s tally counts it: `ok`, the candidate it matches, or why

@@ -1,8 +1,8 @@
-//! The physics switches of the one-interface diagram, in the top bar's *Effects* menu: *Intensities* (the rays by their share
-//! of s, p or unpolarised light) and *Wavefronts* (the fronts λ/μ apart, moving at c/μ when
-//! asked, Huygens's construction highlighted when asked). Each effect is drawn only while its
-//! switch is on; the diagram model draws them ([`Overlay::intensities`], [`Overlay::waves`]), so
-//! the exports show them too.
+//! The top bar's *Effects* menu, the one-interface diagram's switches: *Intensities* (the rays by
+//! their share of s, p or unpolarised light) and *Wavefronts* (the fronts λ/μ apart, moving at
+//! c/μ when asked, Huygens's construction highlighted when asked). Each effect is drawn only
+//! while its switch is on; the diagram model draws them ([`Overlay::intensities`],
+//! [`Overlay::waves`]), so the exports show them too.
 //!
 //! [`Overlay::intensities`]: refraction_diagram::Overlay::intensities
 //! [`Overlay::waves`]: refraction_diagram::Overlay::waves
@@ -19,7 +19,7 @@ pub const WAVE_PERIOD_SECONDS: f64 = 2.0;
 
 /// The switches and the fronts' phase.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct Physics {
+pub struct EffectsMenu {
     /// The *Intensities* switch.
     pub intensities: bool,
     /// The light the shares are for.
@@ -34,7 +34,7 @@ pub struct Physics {
     phase: f64,
 }
 
-impl Physics {
+impl EffectsMenu {
     /// Turns on what a lesson is about: at Brewster's angle, the rays by their share of p light
     /// (the reflected one vanishes), so that the preset shows Brewster's angle.
     pub fn start(&mut self, lesson: refraction_model::Lesson) {
@@ -118,28 +118,28 @@ mod tests {
 
     #[test]
     fn each_effect_is_drawn_only_while_its_switch_is_on_and_the_fronts_move_when_asked() {
-        let mut physics = Physics::default();
-        assert_eq!((physics.intensities(), physics.waves()), (None, None));
-        physics.polarisation = Polarisation::P;
-        physics.intensities = true;
-        assert_eq!(physics.intensities(), Some(Polarisation::P));
-        physics.waves = true;
+        let mut effects = EffectsMenu::default();
+        assert_eq!((effects.intensities(), effects.waves()), (None, None));
+        effects.polarisation = Polarisation::P;
+        effects.intensities = true;
+        assert_eq!(effects.intensities(), Some(Polarisation::P));
+        effects.waves = true;
         let ctx = Context::default();
-        let frame = |physics: &mut Physics| {
+        let frame = |effects: &mut EffectsMenu| {
             let input = egui::RawInput {
                 predicted_dt: 0.5,
                 ..Default::default()
             };
-            let mut output = ctx.run_ui(input, |ui| physics.animate(ui.ctx()));
+            let mut output = ctx.run_ui(input, |ui| effects.animate(ui.ctx()));
             output.textures_delta.clear();
         };
-        frame(&mut physics);
-        assert_eq!(physics.waves().map(|w| w.phase), Some(0.0), "still fronts");
-        physics.moving = true;
-        frame(&mut physics);
-        frame(&mut physics);
-        let phase = physics.waves().unwrap().phase;
+        frame(&mut effects);
+        assert_eq!(effects.waves().map(|w| w.phase), Some(0.0), "still fronts");
+        effects.moving = true;
+        frame(&mut effects);
+        frame(&mut effects);
+        let phase = effects.waves().unwrap().phase;
         assert!(phase > 0.0 && phase < 1.0, "{phase}");
-        assert!(physics.animating());
+        assert!(effects.animating());
     }
 }
