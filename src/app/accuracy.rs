@@ -25,7 +25,7 @@ struct Progress {
 
 /// The view's state: the last report and any measurement under way.
 #[derive(Debug, Default)]
-pub struct AccuracyView {
+pub(super) struct AccuracyView {
     quick: bool,
     running: Option<Arc<Mutex<Progress>>>,
     report: Option<Report>,
@@ -33,7 +33,7 @@ pub struct AccuracyView {
 
 impl AccuracyView {
     /// Starts a measurement in a background thread; it wakes the UI as it progresses.
-    pub fn start(&mut self, ctx: &egui::Context) {
+    pub(super) fn start(&mut self, ctx: &egui::Context) {
         let progress = Arc::new(Mutex::new(Progress::default()));
         let config = if self.quick {
             Config::QUICK
@@ -70,7 +70,7 @@ impl AccuracyView {
     }
 
     /// Shows the view, its plot in `palette`'s colours.
-    pub fn show(&mut self, ui: &mut Ui, palette: &Palette) {
+    pub(super) fn show(&mut self, ui: &mut Ui, palette: &Palette) {
         ui.heading(t!("accuracy-heading"));
         ui.label(t!("accuracy-intro"));
         let fraction = self.poll();

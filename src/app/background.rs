@@ -4,11 +4,11 @@
 //! runs, and the window says so beside the buttons that start such work: [`ONE_THREAD`]).
 
 /// Whether work started here runs on the window's own thread (in a browser).
-pub const ONE_THREAD: bool = cfg!(target_arch = "wasm32");
+pub(super) const ONE_THREAD: bool = cfg!(target_arch = "wasm32");
 
 /// Work started by [`spawn`]: running on its thread, or done.
 #[derive(Debug)]
-pub struct Job<T> {
+pub(super) struct Job<T> {
     #[cfg(not(target_arch = "wasm32"))]
     handle: std::thread::JoinHandle<T>,
     #[cfg(target_arch = "wasm32")]
@@ -16,7 +16,7 @@ pub struct Job<T> {
 }
 
 /// Starts `work` on a thread of its own (on the window's thread, to the end, in a browser).
-pub fn spawn<T: Send + 'static>(work: impl FnOnce() -> T + Send + 'static) -> Job<T> {
+pub(super) fn spawn<T: Send + 'static>(work: impl FnOnce() -> T + Send + 'static) -> Job<T> {
     Job {
         #[cfg(not(target_arch = "wasm32"))]
         handle: std::thread::spawn(work),
@@ -28,7 +28,7 @@ pub fn spawn<T: Send + 'static>(work: impl FnOnce() -> T + Send + 'static) -> Jo
 impl<T> Job<T> {
     /// Whether the work has ended.
     #[must_use]
-    pub fn is_finished(&self) -> bool {
+    pub(super) fn is_finished(&self) -> bool {
         #[cfg(not(target_arch = "wasm32"))]
         return self.handle.is_finished();
         #[cfg(target_arch = "wasm32")]
@@ -39,7 +39,7 @@ impl<T> Job<T> {
     ///
     /// # Errors
     /// The work panicked: the panic's payload.
-    pub fn join(self) -> std::thread::Result<T> {
+    pub(super) fn join(self) -> std::thread::Result<T> {
         #[cfg(not(target_arch = "wasm32"))]
         return self.handle.join();
         #[cfg(target_arch = "wasm32")]

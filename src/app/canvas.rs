@@ -171,7 +171,7 @@ fn interact(
 ///
 /// A press and release within egui's click distance is a click, not a drag: it changes
 /// nothing and selects the handle (or, on the background, the W handle) for the arrow keys.
-pub fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay, with_hint: bool) {
+pub(super) fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay, with_hint: bool) {
     // The hint's row (a label's row is as tall as a widget's) and the spacing above it; none
     // on a projector, where the diagram has the room.
     let text = ui.text_style_height(&egui::TextStyle::Body);

@@ -16,7 +16,7 @@ use refraction_model::{INDEX_RANGE, MATERIALS, material_of};
 
 /// What the controls keep between frames.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Controls {
+pub(super) struct Controls {
     /// The lesson last started here, which *Reset* goes back to (none yet when the window
     /// opened on a state file or where it was last closed: then the first lesson).
     lesson: Option<Lesson>,
@@ -193,7 +193,7 @@ impl Controls {
     }
 
     /// Shows the controls, editing `state`; the PNG export draws `overlay` too.
-    pub fn show(&mut self, ui: &mut Ui, state: &mut ExplorerState, overlay: &Overlay) {
+    pub(super) fn show(&mut self, ui: &mut Ui, state: &mut ExplorerState, overlay: &Overlay) {
         self.lesson(ui, state);
         ui.separator();
         ui.heading(t!("controls-convention"));

@@ -27,7 +27,7 @@ use refraction_scene::Scene;
 
 /// The size of an exported animation when none is chosen: 720p, whose smallest words (15
 /// pixels) read on a slide shown full screen, and small enough to draw in seconds.
-pub const DEFAULT_ANIMATION_SIZE: (u32, u32) = (1280, 720);
+pub(super) const DEFAULT_ANIMATION_SIZE: (u32, u32) = (1280, 720);
 
 /// An export running in the background.
 #[derive(Debug)]
@@ -46,7 +46,7 @@ struct Job {
 
 /// The *Export animation* controls, the export running and what the last one said.
 #[derive(Debug)]
-pub struct AnimationExport {
+pub(super) struct AnimationExport {
     animation: Animation,
     frames: usize,
     fps: u32,
@@ -112,7 +112,7 @@ impl AnimationExport {
     /// thread, to the GIF named (or the next free `refraction-NNN.gif` when none is): at once
     /// to a new file, after a question over an existing GIF, never over a file of another
     /// kind; a bad spec or path is refused at once. Nothing starts while one runs.
-    pub fn start(&mut self, state: &ExplorerState, overlay: &Overlay, ctx: &egui::Context) {
+    pub(super) fn start(&mut self, state: &ExplorerState, overlay: &Overlay, ctx: &egui::Context) {
         if self.running.is_some() {
             return;
         }
@@ -173,7 +173,7 @@ impl AnimationExport {
     }
 
     /// Asks the running export to stop after the frame being drawn; nothing is written.
-    pub fn cancel(&self) {
+    pub(super) fn cancel(&self) {
         if let Some(job) = &self.running {
             job.cancel.store(true, Ordering::Relaxed);
         }
@@ -181,7 +181,7 @@ impl AnimationExport {
 
     /// The fraction done of the export running, if one is; takes the outcome of one that
     /// ended.
-    pub fn poll(&mut self) -> Option<f32> {
+    pub(super) fn poll(&mut self) -> Option<f32> {
         let job = self.running.as_ref()?;
         if !job.handle.is_finished() {
             let done = job.done.load(Ordering::Relaxed);
@@ -197,7 +197,7 @@ impl AnimationExport {
 
     /// The controls: which animation, frames, rate, size and file; *Export animation*, or
     /// while it runs a progress bar and *Cancel*.
-    pub fn show(&mut self, ui: &mut Ui, state: &ExplorerState, overlay: &Overlay) {
+    pub(super) fn show(&mut self, ui: &mut Ui, state: &ExplorerState, overlay: &Overlay) {
         ui.heading(t!("files-animation-heading"));
         // The label above the menu, and the menu one line as wide as the panel, cut if the
         // animation's name is long (the menu and the hover show it all).
@@ -280,7 +280,11 @@ impl AnimationExport {
 ///
 /// # Errors
 /// The message of a bad path, size or extension, or of a failed write.
-pub fn scene_picture(scene: &Scene, size: (u32, u32), path: &Path) -> Result<String, String> {
+pub(super) fn scene_picture(
+    scene: &Scene,
+    size: (u32, u32),
+    path: &Path,
+) -> Result<String, String> {
     outcome(
         refraction_render::export_scene(scene, size.0, size.1, path),
         path,

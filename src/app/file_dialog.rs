@@ -25,7 +25,7 @@ use refraction_i18n::t;
 
 /// What a file holds, as far as replacing it is concerned.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Kind {
+pub(super) enum Kind {
     /// A saved state (a `solve` JSON line, `.json`).
     State,
     /// A PNG image (`.png`).
@@ -44,7 +44,7 @@ pub enum Kind {
 impl Kind {
     /// The kind a file of this name should hold, by its extension.
     #[must_use]
-    pub fn of_name(path: &Path) -> Option<Self> {
+    pub(super) fn of_name(path: &Path) -> Option<Self> {
         let extension = path.extension()?.to_str()?.to_ascii_lowercase();
         match extension.as_str() {
             "json" => Some(Self::State),
@@ -58,7 +58,7 @@ impl Kind {
 
     /// What the first bytes of a file say it holds (`None`: something else).
     #[must_use]
-    pub fn of_contents(bytes: &[u8]) -> Option<Self> {
+    pub(super) fn of_contents(bytes: &[u8]) -> Option<Self> {
         let text = bytes.trim_ascii_start();
         if bytes.starts_with(b"\x89PNG\r\n\x1a\n") {
             Some(Self::Png)
@@ -113,7 +113,7 @@ fn looks_like_toml(text: &str) -> bool {
 
 /// Where a file is about to be written.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Target {
+pub(super) enum Target {
     /// Nothing is there yet: write.
     New,
     /// A file of the same kind (or an empty one) is there: ask before replacing it.
@@ -126,7 +126,7 @@ pub enum Target {
 /// # Errors
 /// The name says another kind (or none), the path is a folder, or the file there holds
 /// something else; the message names the path and what it holds.
-pub fn target(path: &Path, kind: Kind) -> Result<Target, String> {
+pub(super) fn target(path: &Path, kind: Kind) -> Result<Target, String> {
     let shown = path.display().to_string();
     // A deck and a scene share `.toml`: the name says the extension, the contents the kind.
     if Kind::of_name(path).map(Kind::extension) != Some(kind.extension()) {
@@ -158,7 +158,7 @@ pub fn target(path: &Path, kind: Kind) -> Result<Target, String> {
 
 /// The first bytes of the file at `path`, enough for [`Kind::of_contents`] to tell its kind
 /// (never a whole recording); `None` when there is no file there or it cannot be read.
-pub fn first_bytes(path: &Path) -> Option<Vec<u8>> {
+pub(super) fn first_bytes(path: &Path) -> Option<Vec<u8>> {
     refraction_files::first_bytes(path, 64 * 1024)
         .ok()
         .flatten()
@@ -181,7 +181,7 @@ fn utf8_prefix(bytes: &[u8]) -> Option<&str> {
 ///
 /// # Errors
 /// As [`target`].
-pub fn picture_target(path: &Path) -> Result<Target, String> {
+pub(super) fn picture_target(path: &Path) -> Result<Target, String> {
     let kind = Kind::of_name(path).filter(|kind| matches!(kind, Kind::Png | Kind::Svg));
     target(path, kind.unwrap_or(Kind::Png))
 }
@@ -189,7 +189,7 @@ pub fn picture_target(path: &Path) -> Result<Target, String> {
 /// The path typed, or when none is typed (or a folder is) the next free
 /// `stem-NNN.extension` in that folder ([`numbered`]).
 #[must_use]
-pub fn or_numbered(typed: &str, stem: &str, extension: &str) -> PathBuf {
+pub(super) fn or_numbered(typed: &str, stem: &str, extension: &str) -> PathBuf {
     let typed = PathBuf::from(typed.trim());
     if typed.as_os_str().is_empty() || typed.is_dir() {
         numbered(&typed, stem, extension)
@@ -201,7 +201,7 @@ pub fn or_numbered(typed: &str, stem: &str, extension: &str) -> PathBuf {
 /// The first of `stem-001.ext`, `stem-002.ext`, … that does not exist in `folder` (after
 /// 999, `stem-1000.ext` and on).
 #[must_use]
-pub fn numbered(folder: &Path, stem: &str, extension: &str) -> PathBuf {
+pub(super) fn numbered(folder: &Path, stem: &str, extension: &str) -> PathBuf {
     (1..=u64::MAX)
         .map(|i| folder.join(format!("{stem}-{i:03}.{extension}")))
         .find(|p| !p.exists())
@@ -235,7 +235,7 @@ fn confirm_replace(ui: &Ui, pending: &Path) -> Option<bool> {
 /// While `pending` holds a file, asks whether to replace it ([`confirm_replace`]); once the
 /// user answers, clears it and returns the file when they said replace, or leaves `status`
 /// saying the file was left as it was when they cancelled.
-pub fn answer_replace(
+pub(super) fn answer_replace(
     ui: &Ui,
     pending: &mut Option<PathBuf>,
     status: &mut Option<Result<String, String>>,
@@ -253,7 +253,7 @@ pub fn answer_replace(
 /// Shows the dialog that `slot` holds (alone, or with what it was opened for; `dialog` finds
 /// it there) while it is up, and empties the slot once the user chose or cancelled; returns
 /// what the slot held and the file chosen.
-pub fn chosen_file<T>(
+pub(super) fn chosen_file<T>(
     ui: &Ui,
     slot: &mut Option<T>,
     dialog: impl FnOnce(&mut T) -> &mut FileDialog,
@@ -270,7 +270,7 @@ pub fn chosen_file<T>(
 
 /// Whether the dialog picks a file to read or a name to write.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Purpose {
+pub(super) enum Purpose {
     /// Open: the file must exist.
     Open,
     /// Save: any name in an existing folder.
@@ -287,7 +287,7 @@ struct Entry {
 /// An open or save dialog over the file system, listing one folder at a time: its folders
 /// and the files with one of the dialog's extensions.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct FileDialog {
+pub(super) struct FileDialog {
     purpose: Purpose,
     extensions: &'static [&'static str],
     folder: String,
@@ -299,7 +299,7 @@ pub struct FileDialog {
 
 /// What the user did with the dialog this frame.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Choice {
+pub(super) enum Choice {
     /// Still choosing.
     Pending,
     /// This file.
@@ -313,7 +313,7 @@ impl FileDialog {
     /// starting in the folder of `start` (a path as typed; relative to the working folder)
     /// with its file name filled in.
     #[must_use]
-    pub fn new(purpose: Purpose, extensions: &'static [&'static str], start: &str) -> Self {
+    pub(super) fn new(purpose: Purpose, extensions: &'static [&'static str], start: &str) -> Self {
         let start = Path::new(start.trim());
         let folder = match start.parent() {
             Some(parent) if !parent.as_os_str().is_empty() => parent.to_path_buf(),
@@ -336,7 +336,7 @@ impl FileDialog {
 
     /// Whether the dialog opens or saves.
     #[must_use]
-    pub fn purpose(&self) -> Purpose {
+    pub(super) fn purpose(&self) -> Purpose {
         self.purpose
     }
 
@@ -443,7 +443,7 @@ impl FileDialog {
 
     /// Shows the dialog over the window: the folder's listing, or in a browser the browser's
     /// file picker (open) or a download (save).
-    pub fn show(&mut self, ui: &Ui) -> Choice {
+    pub(super) fn show(&mut self, ui: &Ui) -> Choice {
         #[cfg(target_arch = "wasm32")]
         return super::browser::dialog(
             self.purpose,

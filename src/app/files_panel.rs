@@ -18,7 +18,7 @@ use refraction_model::ExplorerState;
 use refraction_tools::state_file::{self, LoadError};
 
 /// The file name offered first.
-pub const DEFAULT_PATH: &str = "refraction-state.json";
+pub(super) const DEFAULT_PATH: &str = "refraction-state.json";
 
 /// The formats the current case can be copied in: the button's label (in the current
 /// language) and how to write it.
@@ -56,7 +56,7 @@ fn open_failed(error: &LoadError) -> String {
 
 /// The panel's fields and what its last action said.
 #[derive(Clone, Debug, PartialEq)]
-pub struct FilesPanel {
+pub(super) struct FilesPanel {
     path: String,
     pasted: String,
     status: Option<Result<String, String>>,
@@ -74,7 +74,7 @@ pub struct FilesPanel {
 
 /// A file of another kind than a state, opened from the state's field.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Opened {
+pub(super) enum Opened {
     /// A scene, for the Scenes view.
     Scene(Box<refraction_scene::Scene>),
     /// A lesson deck, shown at its first step.
@@ -100,7 +100,7 @@ impl FilesPanel {
     /// Saves the state to the file in the path field: at once to a new file, after a question
     /// over an existing state file, never over a file of another kind (an image) or to a name
     /// that is not `.json`.
-    pub fn save(&mut self, state: &ExplorerState) {
+    pub(super) fn save(&mut self, state: &ExplorerState) {
         let path = PathBuf::from(self.path.trim());
         match target(&path, Kind::State) {
             Ok(Target::New) => self.write(state, &path),
@@ -134,7 +134,7 @@ impl FilesPanel {
 
     /// Opens the file in the path field; a file that cannot be read or understood leaves the
     /// state as it was and says why.
-    pub fn open(&mut self, state: &mut ExplorerState) {
+    pub(super) fn open(&mut self, state: &mut ExplorerState) {
         let path = PathBuf::from(self.path.trim());
         let outcome = state_file::open(&path).map(|opened| {
             *state = opened;
@@ -175,12 +175,12 @@ impl FilesPanel {
     }
 
     /// A scene or deck the state's field opened, once: the window shows it.
-    pub fn take_opened(&mut self) -> Option<Opened> {
+    pub(super) fn take_opened(&mut self) -> Option<Opened> {
         self.opened.take()
     }
 
     /// Applies the pasted share string, or says why it cannot be.
-    pub fn apply_pasted(&mut self, state: &mut ExplorerState) {
+    pub(super) fn apply_pasted(&mut self, state: &mut ExplorerState) {
         self.status = Some(
             state_file::parse(&self.pasted)
                 .map(|pasted| {
@@ -194,7 +194,7 @@ impl FilesPanel {
     }
 
     /// Shows the panel: file, share string, copy buttons, and the last outcome.
-    pub fn show(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
+    pub(super) fn show(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
         ui.horizontal_wrapped(|ui| {
             let name = ui.label(t!("files-state-file"));
             ui.add(TextEdit::singleline(&mut self.path).desired_width(260.0))

@@ -70,7 +70,7 @@ fn landmarks(ui: &mut Ui, model: &FresnelPlot) {
 
 /// Shows the tool for `state` in `palette`: the plot as an export draws it, then the
 /// landmarks in words; a click or drag on the plot turns W to the θi under the pointer.
-pub fn show(ui: &mut Ui, state: &mut ExplorerState, palette: &Palette) {
+pub(super) fn show(ui: &mut Ui, state: &mut ExplorerState, palette: &Palette) {
     let model = FresnelPlot::of(state);
     // The figure carries its own title.
     ui.label(RichText::new(t!("fresnel-click-hint")).weak());

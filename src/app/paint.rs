@@ -13,13 +13,13 @@ use refraction_diagram::shapes::{Align, Label};
 
 /// The egui colour of a diagram colour.
 #[must_use]
-pub fn color(c: Colour) -> Color32 {
+pub(super) fn color(c: Colour) -> Color32 {
     Color32::from_rgba_unmultiplied(c.r, c.g, c.b, c.a)
 }
 
 /// The diagram colour of an egui colour (its opacity kept).
 #[must_use]
-pub fn colour(c: Color32) -> Colour {
+pub(super) fn colour(c: Color32) -> Colour {
     let [r, g, b, a] = c.to_srgba_unmultiplied();
     Colour { r, g, b, a }
 }
@@ -31,14 +31,14 @@ fn palette_id() -> Id {
 
 /// Keeps the palette the window shows this frame (its theme and colour-blind choice) where
 /// every widget can read it with [`window_palette`].
-pub fn share_palette(ctx: &Context, palette: Palette) {
+pub(super) fn share_palette(ctx: &Context, palette: Palette) {
     ctx.data_mut(|d| d.insert_temp(palette_id(), palette));
 }
 
 /// The palette the window shows, as [`share_palette`] left it (the standard palette where no
 /// explorer set one, as in a panel's own tests).
 #[must_use]
-pub fn window_palette(ui: &Ui) -> Palette {
+pub(super) fn window_palette(ui: &Ui) -> Palette {
     ui.data(|d| d.get_temp(palette_id()))
         .unwrap_or(Palette::STANDARD)
 }
@@ -46,7 +46,7 @@ pub fn window_palette(ui: &Ui) -> Palette {
 /// The colour of text in the window's palette that warns (the alarm's hue) or approves (the
 /// normal's), shaded to read on the window's background.
 #[must_use]
-pub fn verdict_colour(ui: &Ui, ok: bool) -> Color32 {
+pub(super) fn verdict_colour(ui: &Ui, ok: bool) -> Color32 {
     let palette = window_palette(ui);
     color(palette.text_shade(if ok { palette.n } else { palette.alarm }))
 }
@@ -61,7 +61,7 @@ fn align(a: Align) -> egui::Align {
 
 /// Paints `primitives` (canvas pixels) through `to_screen` (canvas → screen points), handing
 /// them to egui in one batch (each separate `Painter::add` takes the context's lock).
-pub fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[Primitive]) {
+pub(super) fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[Primitive]) {
     let at = |p: Vec2| to_screen.transform_pos(Pos2::new(p.x, p.y));
     let points = |ps: &[Vec2]| ps.iter().map(|p| at(*p)).collect::<Vec<_>>();
     let mut shapes = Vec::with_capacity(primitives.len());
@@ -123,7 +123,7 @@ pub fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[Primiti
 /// Room for a figure of the diagram crate's across `size` points of `ui`, named `about` for
 /// screen readers: the response, the painter and the map from the canvas to the screen, to
 /// [`paint`] the figure's primitives with, as the exports draw them.
-pub fn figure(
+pub(super) fn figure(
     ui: &mut Ui,
     size: Vec2,
     sense: egui::Sense,
@@ -140,7 +140,7 @@ pub fn figure(
 /// Shows, beside the pointer, the text of the label the placer left out whose anchor is
 /// nearest the pointer, when it is within `reach` canvas pixels: a label with no free spot is
 /// not drawn over anything, but can still be read. `to_screen` maps canvas to screen points.
-pub fn hover_left_out(
+pub(super) fn hover_left_out(
     response: &Response,
     to_screen: &RectTransform,
     left_out: &[Label],

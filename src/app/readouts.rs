@@ -217,7 +217,7 @@ fn warning_text(warning: &Warning) -> String {
 }
 
 /// Shows every readout for `r`, in the colours of `palette` (the diagram's theme).
-pub fn show(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
+pub(super) fn show(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     discriminant(ui, r, palette);
     ui.separator();
     quadratic(ui, r, palette);

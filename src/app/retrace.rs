@@ -12,7 +12,7 @@ use refraction_scene::{Budget, Counts, MAX_INTERSECTION_TESTS, Progress, Scene, 
 /// What the view traces at most: a screen cannot show more segments than this (a 1280×720
 /// canvas has under a million pixels, and rays are drawn wider than one), and a picture of them
 /// still paints in a fraction of a second.
-pub const VIEW_BUDGET: Budget = Budget {
+pub(super) const VIEW_BUDGET: Budget = Budget {
     segments: 200_000,
     tests: MAX_INTERSECTION_TESTS,
 };
@@ -36,13 +36,13 @@ struct Job {
 /// The traces of one view: the one running in the background, if any, and a spare trace whose
 /// memory the next trace reuses.
 #[derive(Debug, Default)]
-pub struct Retracer {
+pub(super) struct Retracer {
     job: Option<Job>,
     spare: Option<Trace>,
 }
 
 /// A trace with nothing in it yet, of `scene`'s world.
-pub fn empty(scene: &Scene) -> Trace {
+pub(super) fn empty(scene: &Scene) -> Trace {
     Trace {
         bounds: scene.bounds(),
         segments: Vec::new(),
@@ -56,7 +56,7 @@ impl Retracer {
     /// Traces `scene` into `shown` if that fits in the foreground budget; otherwise leaves
     /// `shown` as it is and traces on another thread (see [`Self::poll`]). Either way a trace
     /// still running for an earlier version of the scene is cancelled and forgotten.
-    pub fn retrace(&mut self, scene: &Scene, shown: &mut Trace) {
+    pub(super) fn retrace(&mut self, scene: &Scene, shown: &mut Trace) {
         self.cancel();
         self.job = None;
         let mut next = self.spare.take().unwrap_or_else(|| empty(scene));
@@ -84,7 +84,7 @@ impl Retracer {
 
     /// The background trace, once it has finished (or been cancelled, then with what it had
     /// traced).
-    pub fn poll(&mut self) -> Option<Trace> {
+    pub(super) fn poll(&mut self) -> Option<Trace> {
         let job = self.job.as_ref()?;
         match job.done.try_recv() {
             Ok(trace) => {
@@ -103,19 +103,19 @@ impl Retracer {
 
     /// How far the background trace has got (0 to 1), or `None` when none is running.
     #[must_use]
-    pub fn progress(&self) -> Option<f64> {
+    pub(super) fn progress(&self) -> Option<f64> {
         self.job.as_ref().map(|job| job.progress.fraction())
     }
 
     /// Asks the background trace to stop where it is ([`Self::poll`] then returns what it has).
-    pub fn cancel(&self) {
+    pub(super) fn cancel(&self) {
         if let Some(job) = &self.job {
             job.progress.cancel();
         }
     }
 
     /// Keeps `trace`'s memory for the next trace (the view no longer shows it).
-    pub fn recycle(&mut self, trace: Trace) {
+    pub(super) fn recycle(&mut self, trace: Trace) {
         self.spare = Some(trace);
     }
 }

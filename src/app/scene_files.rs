@@ -15,10 +15,10 @@ use refraction_files::write_atomically;
 use refraction_scene::Scene;
 
 /// The scene file offered first.
-pub const DEFAULT_SCENE_PATH: &str = "scene.toml";
+pub(super) const DEFAULT_SCENE_PATH: &str = "scene.toml";
 
 /// The picture file offered first: SVG, so that a slide can edit the labels.
-pub const DEFAULT_PICTURE_PATH: &str = "scene.svg";
+pub(super) const DEFAULT_PICTURE_PATH: &str = "scene.svg";
 
 /// The icon the picture export's menu shows in a compact row.
 const PICTURE_ICON: &str = "🖼";
@@ -47,7 +47,7 @@ enum Use {
 /// The scene file and picture fields, the dialog and the replace question while they are up,
 /// and what the last action said.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SceneFiles {
+pub(super) struct SceneFiles {
     /// The scene file to save to or open.
     path: String,
     /// The picture file to export to (PNG or SVG by its extension).
@@ -77,7 +77,7 @@ impl SceneFiles {
     /// Shows the row: the scene file, *Open file*, *Save file*, the dialog's *Open…* and
     /// *Save as…*, the picture export's menu and what the last action said; then the dialog or
     /// the replace question, while one is up. Returns the scene opened, if one was.
-    pub fn show(&mut self, ui: &mut Ui, scene: &Scene) -> Option<Scene> {
+    pub(super) fn show(&mut self, ui: &mut Ui, scene: &Scene) -> Option<Scene> {
         let mut opened = None;
         // On a projector's narrow window the dialog's buttons and the export menu show only
         // their icons, so that the row keeps to one line; it wraps rather than cut anything off.

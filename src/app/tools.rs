@@ -16,11 +16,11 @@ use refraction_model::ExplorerState;
 
 /// The window's width a tool takes in presentation: the diagram keeps half the window beside
 /// it (tested), and the panel keeps its width from step to step, so the diagram never jumps.
-pub const PRESENTATION_TOOL_SHARE: f32 = 0.30;
+pub(super) const PRESENTATION_TOOL_SHARE: f32 = 0.30;
 
 /// The tool shown beside the diagram.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Tool {
+pub(super) enum Tool {
     /// Check a student's T.
     Check,
     /// The guided walk through the derivation.
@@ -35,7 +35,7 @@ pub enum Tool {
 
 impl Tool {
     /// Every tool, in the order of the bar.
-    pub const ALL: [Self; 5] = [
+    pub(super) const ALL: [Self; 5] = [
         Self::Check,
         Self::WalkThrough,
         Self::Files,
@@ -45,7 +45,7 @@ impl Tool {
 
     /// The switch's label (also its accessible name).
     #[must_use]
-    pub fn label(self) -> String {
+    pub(super) fn label(self) -> String {
         match self {
             Self::Check => format!("✔ {}", t!("tool-check")),
             Self::WalkThrough => format!("📖 {}", t!("tool-walk-through")),
@@ -81,7 +81,7 @@ impl Tool {
 
 /// The tools and which one is open.
 #[derive(Debug, Default)]
-pub struct Tools {
+pub(super) struct Tools {
     /// The open tool, if any.
     pub open: Option<Tool>,
     /// Check my T.
@@ -101,7 +101,7 @@ impl Tools {
     /// the bar keeps one row, each shows its icon only (its name stays its accessible name and
     /// its hover), and the lesson deck's only while a deck is open (`deck_open`) or its tool
     /// is: a deck is built at the desk.
-    pub fn bar(&mut self, ui: &mut Ui, presenting: bool, deck_open: bool) {
+    pub(super) fn bar(&mut self, ui: &mut Ui, presenting: bool, deck_open: bool) {
         let deck_shown = !presenting || deck_open || self.open == Some(Tool::Deck);
         for tool in Tool::ALL
             .into_iter()
@@ -134,7 +134,7 @@ impl Tools {
     }
 
     /// The open tool in its panel ([`frame`]); the lesson deck's is the window's to show.
-    pub fn panel(
+    pub(super) fn panel(
         &mut self,
         ui: &mut Ui,
         state: &mut ExplorerState,
@@ -158,13 +158,13 @@ impl Tools {
 
     /// The tool opened since the last frame, if one was.
     #[must_use]
-    pub fn just_opened(&self) -> Option<Tool> {
+    pub(super) fn just_opened(&self) -> Option<Tool> {
         self.open.filter(|tool| self.shown != Some(*tool))
     }
 
     /// Opens a file dropped on the window as a log in Check my T, which opens (a renderer's
     /// log is what a student drops; a state or scene has its own Open).
-    pub fn take_dropped(&mut self, ctx: &egui::Context) {
+    pub(super) fn take_dropped(&mut self, ctx: &egui::Context) {
         let dropped = ctx.input(|i| i.raw.dropped_files.first().map(|f| f.path().to_path_buf()));
         if let Some(path) = dropped {
             self.open = Some(Tool::Check);
@@ -174,7 +174,7 @@ impl Tools {
 
     /// What the walk-through highlights, while it is open.
     #[must_use]
-    pub fn focus(&self, state: &ExplorerState) -> Option<Focus> {
+    pub(super) fn focus(&self, state: &ExplorerState) -> Option<Focus> {
         (self.open == Some(Tool::WalkThrough))
             .then(|| self.walk.focus(state))
             .flatten()
@@ -182,7 +182,7 @@ impl Tools {
 
     /// The student's T to draw (whether or not its panel is open, while its case is shown).
     #[must_use]
-    pub fn student(&self, state: &ExplorerState) -> Option<StudentRay> {
+    pub(super) fn student(&self, state: &ExplorerState) -> Option<StudentRay> {
         self.check.student(state)
     }
 }
@@ -190,7 +190,7 @@ impl Tools {
 /// The panel `tool` is shown in: under the diagram at the desk; beside it in presentation,
 /// where the window is wide for its height and a strip across the bottom would squeeze the
 /// diagram into a letterbox.
-pub fn frame(ui: &Ui, tool: Tool, presenting: bool) -> Panel {
+pub(super) fn frame(ui: &Ui, tool: Tool, presenting: bool) -> Panel {
     let window = ui.ctx().content_rect();
     if presenting {
         let width = window.width() * tool.presentation_share();

@@ -10,7 +10,7 @@ use refraction_i18n::t;
 
 /// One typed field: its text and the error of the last attempt to apply it.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct TypedField {
+pub(super) struct TypedField {
     /// What is in the field.
     pub text: String,
     /// Why the last text typed was refused.
@@ -23,7 +23,7 @@ pub struct TypedField {
 impl TypedField {
     /// Shows the field labelled `label`, showing `current` when not being edited. Returns the
     /// text to apply when the user confirmed an edit.
-    pub fn show(
+    pub(super) fn show(
         &mut self,
         ui: &mut Ui,
         label: &str,
@@ -62,19 +62,19 @@ impl TypedField {
     }
 
     /// Records the outcome of applying the text: an error is shown until the next success.
-    pub fn show_outcome(&mut self, outcome: Result<(), String>) {
+    pub(super) fn show_outcome(&mut self, outcome: Result<(), String>) {
         self.error = outcome.err();
     }
 }
 
 /// Shows why something typed or asked for was refused, in the alarm colour.
-pub fn error_label(ui: &mut Ui, message: &str) {
+pub(super) fn error_label(ui: &mut Ui, message: &str) {
     let colour = verdict_colour(ui, false);
     ui.label(RichText::new(format!("⚠ {message}")).color(colour));
 }
 
 /// Shows the outcome of the last action (a file written, a string copied), if any.
-pub fn status(ui: &mut Ui, outcome: Option<&Result<String, String>>) {
+pub(super) fn status(ui: &mut Ui, outcome: Option<&Result<String, String>>) {
     match outcome {
         Some(Ok(message)) => {
             ui.label(message);
@@ -89,7 +89,7 @@ pub fn status(ui: &mut Ui, outcome: Option<&Result<String, String>>) {
 ///
 /// # Errors
 /// The text is not a number.
-pub fn parse_number(text: &str, name: &str) -> Result<f64, String> {
+pub(super) fn parse_number(text: &str, name: &str) -> Result<f64, String> {
     refraction_i18n::read_number(text)
         .ok_or_else(|| t!("typed-not-a-number", name = name, text = text))
 }
@@ -100,7 +100,7 @@ pub fn parse_number(text: &str, name: &str) -> Result<f64, String> {
 ///
 /// # Errors
 /// Not exactly three numbers; the message names the vector.
-pub fn parse_vector(text: &str, name: &str) -> Result<DVec3, String> {
+pub(super) fn parse_vector(text: &str, name: &str) -> Result<DVec3, String> {
     let inner = text.trim_matches(|c: char| "[]() ".contains(c));
     let words = |separators: &[char]| -> Vec<&str> {
         inner
@@ -137,7 +137,7 @@ pub fn parse_vector(text: &str, name: &str) -> Result<DVec3, String> {
 /// A vector as `x, y, z` with enough digits to read back what a student logged, written the
 /// language's way (`x; y; z` where the decimal separator is a comma).
 #[must_use]
-pub fn format_vector(v: DVec3) -> String {
+pub(super) fn format_vector(v: DVec3) -> String {
     let separator = refraction_i18n::locale().list_separator();
     let [x, y, z] = [v.x, v.y, v.z].map(short);
     format!("{x}{separator}{y}{separator}{z}")
@@ -146,7 +146,7 @@ pub fn format_vector(v: DVec3) -> String {
 /// A number with at most 6 decimals and no trailing zeros, with the language's decimal
 /// separator.
 #[must_use]
-pub fn short(x: f64) -> String {
+pub(super) fn short(x: f64) -> String {
     let text = format!("{x:.6}");
     let text = text.trim_end_matches('0').trim_end_matches('.');
     if text == "-0" {

@@ -15,7 +15,7 @@ const PLOT_SIZE: (u32, u32) = (1600, 1000);
 /// Runs the measurement, with a progress line on stderr when it is a terminal; prints the
 /// table (or JSON), then draws the plot into `plot` if given. The plot's path is checked
 /// before the measurement, so a bad one is found at once and a failed plot keeps the table.
-pub fn run(quick: bool, json: bool, plot: Option<&Path>) -> ExitCode {
+pub(crate) fn run(quick: bool, json: bool, plot: Option<&Path>) -> ExitCode {
     let checked = plot.map(|p| Destination::check(p, "--plot", false, &STILL));
     if let Some(Err(message)) = checked {
         return fail("bench", &message);

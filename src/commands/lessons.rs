@@ -16,7 +16,7 @@ use super::output::printable;
 use super::{fail, output_error};
 
 /// Runs `lessons`: each built-in deck as `NAME<TAB>TITLE<TAB>STEPS`, in the language asked for.
-pub fn list() -> ExitCode {
+pub(crate) fn list() -> ExitCode {
     let mut out = io::stdout().lock();
     builtin::catalogue()
         .iter()
@@ -115,7 +115,7 @@ fn remove_stale_steps(folder: &Path, count: usize) {
 /// its steps as SVG pictures of `size` (`OUT` a folder). The output is checked before the deck
 /// is drawn: the teacher's handout or the class's sheet (`sheet`); with `web_base`, each page
 /// of a handout carries its step's link and QR code.
-pub fn render(
+pub(crate) fn render(
     lesson: &str,
     out: &Path,
     size: (u32, u32),

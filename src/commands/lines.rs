@@ -21,7 +21,7 @@ fn stopped(command: &str, input: &str, error: &LinesError) -> ExitCode {
 }
 
 /// Runs `solve` on stdin.
-pub fn solve() -> ExitCode {
+pub(crate) fn solve() -> ExitCode {
     match solver::run(io::stdin().lock(), io::stdout().lock()) {
         Ok(true) => ExitCode::SUCCESS,
         Ok(false) => ExitCode::from(1),
@@ -32,12 +32,12 @@ pub fn solve() -> ExitCode {
 /// The exit status of a `check` run that judged no line (nothing matched the pattern, the input
 /// was empty or blank, a CSV held only its header): not a pass, so that a typo in a CI job's
 /// pattern fails it.
-pub const NOTHING_JUDGED: u8 = 3;
+pub(crate) const NOTHING_JUDGED: u8 = 3;
 
 /// The exit status of a `check` run whose lines are right as far as their API's rules go but
 /// cannot be told right or wrong (the diagnosis's `unchecked`: no `entering`, no indices): not a
 /// pass either, so that a CI job learns that its log checks nothing.
-pub const UNCHECKED: u8 = 4;
+pub(crate) const UNCHECKED: u8 = 4;
 
 /// The log `check` reads: `file`, or stdin when absent, with the name a message gives it.
 struct Input {
@@ -99,7 +99,7 @@ fn summary_target(path: &Path, input: &Input, replace: bool) -> Result<(), Strin
 }
 
 /// How `check` reads its lines and what it writes besides the answers.
-pub struct Reading<'a> {
+pub(crate) struct Reading<'a> {
     /// `--pattern`.
     pub pattern: Option<&'a str>,
     /// `--csv`.
@@ -117,7 +117,7 @@ pub struct Reading<'a> {
 /// Runs `check` (with `--api`, in that API's terms) on `file` or stdin: an answer per line on
 /// stdout, the tally and the diagnosis of the whole log on stderr, and with `--summary` the
 /// diagnosis as JSON in that file.
-pub fn check(file: Option<&Path>, options: &Options, reading: &Reading<'_>) -> ExitCode {
+pub(crate) fn check(file: Option<&Path>, options: &Options, reading: &Reading<'_>) -> ExitCode {
     let format = match (reading.pattern, reading.csv) {
         (Some(text), _) => match Pattern::parse(options.dialect, text) {
             Ok(pattern) => Format::Pattern(pattern),
@@ -188,7 +188,7 @@ fn finished(tally: &str, status: ExitCode) -> ExitCode {
 /// Runs `check --suggest-pattern` on `file` or stdin: the command with the pattern guessed
 /// from the log's first lines on stdout, what else it needs on stderr; status 3 when no line
 /// looks like a refraction.
-pub fn suggest_pattern(file: Option<&Path>, dialect: Dialect) -> ExitCode {
+pub(crate) fn suggest_pattern(file: Option<&Path>, dialect: Dialect) -> ExitCode {
     let input = match Input::open(file) {
         Ok(input) => input,
         Err(e) => return fail("check", &e),

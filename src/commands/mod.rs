@@ -3,12 +3,12 @@
 //! Nothing here prints with `println!` or `eprintln!`, which panic when the stream cannot be
 //! written: every write goes through [`output`] and a failed one sets the exit status.
 
-pub mod bench;
-pub mod lessons;
-pub mod lines;
-pub mod output;
-pub mod render;
-pub mod trace;
+pub(crate) mod bench;
+pub(crate) mod lessons;
+pub(crate) mod lines;
+pub(crate) mod output;
+pub(crate) mod render;
+pub(crate) mod trace;
 
 use std::io::ErrorKind;
 use std::process::ExitCode;
@@ -16,11 +16,11 @@ use std::process::ExitCode;
 /// The exit status when stdout is a closed pipe (`| head`): the output was cut short, so not
 /// 0, and no message (the reader chose to stop). 141 is what a shell reports for a program
 /// killed by SIGPIPE, as `cat` or `grep` would be.
-pub const CLOSED_PIPE: u8 = 141;
+pub(crate) const CLOSED_PIPE: u8 = 141;
 
 /// Prints `refraction-explorer COMMAND: MESSAGE` on stderr, with characters that would act on
 /// a terminal escaped (see [`output::printable`]), and returns exit status 2.
-pub fn fail(command: &str, message: &dyn core::fmt::Display) -> ExitCode {
+pub(crate) fn fail(command: &str, message: &dyn core::fmt::Display) -> ExitCode {
     let space = if command.is_empty() { "" } else { " " };
     let message = message.to_string();
     let message = refraction_tools::brief(&message);
@@ -32,7 +32,7 @@ pub fn fail(command: &str, message: &dyn core::fmt::Display) -> ExitCode {
 
 /// The exit status for a failed write to stdout: [`CLOSED_PIPE`] quietly for a closed pipe,
 /// otherwise the error on stderr and status 2.
-pub fn output_error(command: &str, error: &std::io::Error) -> ExitCode {
+pub(crate) fn output_error(command: &str, error: &std::io::Error) -> ExitCode {
     if error.kind() == ErrorKind::BrokenPipe {
         ExitCode::from(CLOSED_PIPE)
     } else {

@@ -14,7 +14,7 @@ fn acts(c: char) -> bool {
 /// `text` with every character that would act on a terminal escaped as Rust writes it
 /// (`\u{1b}`, `\n`, `\t`), so that a scene title, a medium name or a path from a file cannot
 /// move the cursor, ring the bell, recolour the terminal or break a one-line message.
-pub fn printable(text: &str) -> Cow<'_, str> {
+pub(crate) fn printable(text: &str) -> Cow<'_, str> {
     if !text.chars().any(acts) {
         return Cow::Borrowed(text);
     }
@@ -34,7 +34,7 @@ pub fn printable(text: &str) -> Cow<'_, str> {
 ///
 /// # Errors
 /// Stdout cannot be written (full disk, closed pipe).
-pub fn to_stdout(bytes: &[u8]) -> io::Result<()> {
+pub(crate) fn to_stdout(bytes: &[u8]) -> io::Result<()> {
     let mut out = io::stdout().lock();
     out.write_all(bytes)?;
     out.flush()
@@ -44,7 +44,7 @@ pub fn to_stdout(bytes: &[u8]) -> io::Result<()> {
 ///
 /// # Errors
 /// Stderr cannot be written.
-pub fn to_stderr(text: &str) -> io::Result<()> {
+pub(crate) fn to_stderr(text: &str) -> io::Result<()> {
     let mut err = io::stderr().lock();
     err.write_all(text.as_bytes())?;
     err.write_all(b"\n")?;
@@ -54,7 +54,7 @@ pub fn to_stderr(text: &str) -> io::Result<()> {
 /// A progress line on stderr, `WHAT  42%`, drawn over itself, when stderr is a terminal (a
 /// log file gets no progress noise); the first failed write is kept, stops the line, and is
 /// reported by [`ProgressLine::finish`].
-pub struct ProgressLine {
+pub(crate) struct ProgressLine {
     what: &'static str,
     shown: bool,
     failed: Option<io::Error>,
@@ -62,7 +62,7 @@ pub struct ProgressLine {
 
 impl ProgressLine {
     /// A progress line for `what` (e.g. `measuring...`), shown if stderr is a terminal.
-    pub fn on_terminal(what: &'static str) -> Self {
+    pub(crate) fn on_terminal(what: &'static str) -> Self {
         Self {
             what,
             shown: io::stderr().is_terminal(),
@@ -71,7 +71,7 @@ impl ProgressLine {
     }
 
     /// Shows `fraction` (0 to 1) done.
-    pub fn update(&mut self, fraction: f64) {
+    pub(crate) fn update(&mut self, fraction: f64) {
         if self.shown && self.failed.is_none() {
             let mut err = io::stderr().lock();
             let percent = (fraction * 100.0).clamp(0.0, 100.0);
@@ -81,7 +81,7 @@ impl ProgressLine {
     }
 
     /// Ends the progress line; the error of a failed write, if any.
-    pub fn finish(mut self) -> Option<io::Error> {
+    pub(crate) fn finish(mut self) -> Option<io::Error> {
         if self.shown && self.failed.is_none() {
             self.failed = to_stderr("").err();
         }

@@ -23,11 +23,11 @@ use super::output::ProgressLine;
 use super::{fail, output, output_error};
 
 /// The still formats: what `render` without `--animate` and `bench --plot` write.
-pub const STILL: [ImageFormat; 2] = [ImageFormat::Png, ImageFormat::Svg];
+pub(crate) const STILL: [ImageFormat; 2] = [ImageFormat::Png, ImageFormat::Svg];
 
 /// Where an image goes: a file, written by [`refraction_files::write_atomically`], or stdout (`-`).
 #[derive(Clone, Copy, Debug)]
-pub enum Destination<'a> {
+pub(crate) enum Destination<'a> {
     /// A file (or a FIFO, or a device).
     File(&'a Path),
     /// Standard output.
@@ -40,7 +40,7 @@ pub enum Destination<'a> {
 /// # Errors
 /// An extension that names no format written, or one not among `formats`, in a sentence
 /// naming the path and what may be written there.
-pub fn format_of(
+pub(crate) fn format_of(
     path: &Path,
     option: &str,
     formats: &[ImageFormat],
@@ -78,7 +78,7 @@ impl<'a> Destination<'a> {
     ///
     /// # Errors
     /// What is wrong with the path, in a sentence naming it.
-    pub fn check(
+    pub(crate) fn check(
         path: &'a Path,
         option: &str,
         stdout_allowed: bool,
@@ -107,7 +107,7 @@ impl<'a> Destination<'a> {
     }
 
     /// Writes `bytes` there; `command` names the command in a failure's message.
-    pub fn write(self, command: &str, bytes: &[u8]) -> ExitCode {
+    pub(crate) fn write(self, command: &str, bytes: &[u8]) -> ExitCode {
         match self {
             Self::File(path) => refraction_files::write_atomically(path, bytes)
                 .map_or_else(|e| fail(command, &e), |()| ExitCode::SUCCESS),
@@ -221,7 +221,7 @@ fn animation(args: &RenderArgs, animation: Animation) -> Result<Vec<u8>, String>
 /// Draws what `args` ask for into `--out` (`-`: stdout): a picture of the single interface or
 /// of a traced scene as PNG or SVG, or with `--animate` an animated GIF. The output path, the
 /// size and the animation's frames and rate are checked before anything is traced or drawn.
-pub fn run(args: &RenderArgs) -> ExitCode {
+pub(crate) fn run(args: &RenderArgs) -> ExitCode {
     if let Some(lesson) = &args.lesson {
         let sheet = if args.students {
             Sheet::Students
@@ -250,7 +250,7 @@ pub fn run(args: &RenderArgs) -> ExitCode {
 }
 
 /// What the command line asked of the window.
-pub struct Window {
+pub(crate) struct Window {
     /// The state file to open on.
     pub state: Option<PathBuf>,
     /// The lesson deck to open on (`--lesson`).
@@ -269,7 +269,7 @@ pub struct Window {
 
 /// Opens the explorer window as `window` asks; a state file or a lesson deck that cannot be
 /// read is refused before any window opens.
-pub fn explorer(window: &Window) -> ExitCode {
+pub(crate) fn explorer(window: &Window) -> ExitCode {
     if let Some(Err(e)) = window.lesson.as_deref().map(refraction_deck::Deck::load) {
         return fail("", &e);
     }

@@ -11,7 +11,7 @@ use super::output_error;
 /// Runs `trace`: the scene's summary or JSON on stdout, or the load error on stderr. Titles and
 /// names from a scene file are printed with control characters escaped (in JSON, serde
 /// escapes them).
-pub fn run(scene: &str, json: bool, list: bool) -> ExitCode {
+pub(crate) fn run(scene: &str, json: bool, list: bool) -> ExitCode {
     let mut out = io::stdout().lock();
     let written = if list {
         catalogue()

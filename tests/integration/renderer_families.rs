@@ -28,7 +28,7 @@ const WRONG_ANGLE: f64 = 1e-4;
 
 /// The renderers emulated here.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Family {
+pub(crate) enum Family {
     /// Mitsuba 3's smooth dielectric, printed from Python.
     Mitsuba,
     /// Tungsten's dielectric BSDF, printed from C++.
@@ -41,11 +41,11 @@ pub enum Family {
 
 impl Family {
     /// Every family.
-    pub const ALL: [Self; 4] = [Self::Mitsuba, Self::Tungsten, Self::Cycles, Self::ThreeJs];
+    pub(crate) const ALL: [Self; 4] = [Self::Mitsuba, Self::Tungsten, Self::Cycles, Self::ThreeJs];
 
     /// The bugs that can be injected ([`Bug::None`] not included).
     #[must_use]
-    pub fn bugs(self) -> &'static [Bug] {
+    pub(crate) fn bugs(self) -> &'static [Bug] {
         match self {
             Self::Mitsuba => &[
                 Bug::MitsubaRatioInverted,
@@ -71,7 +71,7 @@ impl Family {
 
     /// The options `check` needs for this family's log, before `--pattern`.
     #[must_use]
-    pub fn options(self) -> &'static str {
+    pub(crate) fn options(self) -> &'static str {
         match self {
             Self::Mitsuba => "--api mitsuba --inside 1.5 --outside 1",
             Self::Tungsten => {
@@ -84,7 +84,7 @@ impl Family {
 
     /// The `--pattern` that reads the log.
     #[must_use]
-    pub fn pattern(self) -> &'static str {
+    pub(crate) fn pattern(self) -> &'static str {
         match self {
             Self::Mitsuba => "wi={wi} inside={!entering} eta={eta} wo={wo}",
             Self::Tungsten => "wi={w} eta={ratio} wo={t_yours}",
@@ -97,7 +97,7 @@ impl Family {
 /// One-line bugs, each as a student makes it in one renderer's code; each names the line it
 /// alters, what the log then shows, and what `check` must name ([`Bug::expected`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Bug {
+pub(crate) enum Bug {
     /// The code as published.
     None,
     /// Mitsuba, `SmoothDielectric`'s constructor: `m_eta = int_ior / ext_ior` written
@@ -150,7 +150,7 @@ impl Bug {
     /// The code the first finding must have, and a piece of its fix: the line to change in
     /// the renderer's own code.
     #[must_use]
-    pub fn expected(self) -> (&'static str, &'static str) {
+    pub(crate) fn expected(self) -> (&'static str, &'static str) {
         match self {
             Self::None => ("none", ""),
             Self::MitsubaRatioInverted => ("eta_inverted", "m_eta = int_ior / ext_ior"),
@@ -186,7 +186,7 @@ impl Bug {
 
 /// One record and its ground truth.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Line {
+pub(crate) struct Line {
     /// The record as printed (several lines for Cycles and for Node's long arrays).
     pub text: String,
     /// The call differs from the bug-free code's for the same ray and random number.
@@ -215,7 +215,7 @@ struct Printed {
 /// The log `family`'s code with `bug` prints for `count` records on rays drawn from `seed`,
 /// with `noise` lines of the renderer's other output between some of them.
 #[must_use]
-pub fn log(family: Family, bug: Bug, count: usize, seed: u64) -> Vec<Line> {
+pub(crate) fn log(family: Family, bug: Bug, count: usize, seed: u64) -> Vec<Line> {
     assert!(
         bug == Bug::None || family.bugs().contains(&bug),
         "{bug:?} is not a bug of {family:?}"
@@ -244,7 +244,7 @@ pub fn log(family: Family, bug: Bug, count: usize, seed: u64) -> Vec<Line> {
 /// The log as a file: records in order, a line of the renderer's other output before every
 /// seventh (Cycles' progress, a Python warning, Node's timing).
 #[must_use]
-pub fn text(family: Family, lines: &[Line]) -> String {
+pub(crate) fn text(family: Family, lines: &[Line]) -> String {
     let noise = match family {
         Family::Mitsuba => "2024-05-01 12:00:01 INFO  [SamplingIntegrator] Rendering 64 spp",
         Family::Tungsten => "Rendering pass 3/16",
@@ -358,7 +358,7 @@ fn shortest_text(
 
 /// Python's `repr` of a float: the shortest round-trip digits, positional from 1e-4 to 1e16,
 /// always with a point (`1.0`, `-0.0`), `1e-05` below.
-pub fn python_float(x: f64) -> String {
+pub(crate) fn python_float(x: f64) -> String {
     let (text, positional) = shortest_text(x, -4..16, "0.0", "nan", |e| format!("{e:02}"));
     if positional && !text.contains('.') {
         format!("{text}.0")
@@ -369,13 +369,13 @@ pub fn python_float(x: f64) -> String {
 
 /// JavaScript's `Number#toString` as Node's `console.log` prints an array element: shortest
 /// round-trip digits, positional from 1e-6 up to 1e21, `-0` kept.
-pub fn js_number(x: f64) -> String {
+pub(crate) fn js_number(x: f64) -> String {
     shortest_text(x, -6..21, "0", "NaN", |e| e.to_string()).0
 }
 
 /// Node's `util.inspect` of a `Float32Array` of three: on one line when it fits in 80
 /// columns (its rule: 33 columns and the elements' widths), else one element a line.
-pub fn node_f32_array(v: Vec3) -> String {
+pub(crate) fn node_f32_array(v: Vec3) -> String {
     let items: Vec<String> = v
         .to_array()
         .iter()
@@ -390,7 +390,7 @@ pub fn node_f32_array(v: Vec3) -> String {
 }
 
 /// Dr.Jit's `repr` of a 3-vector: `[x, y, z]`, each `%g`.
-pub fn drjit_vector(v: Vec3) -> String {
+pub(crate) fn drjit_vector(v: Vec3) -> String {
     let items: Vec<String> = v
         .to_array()
         .iter()

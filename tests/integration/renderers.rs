@@ -37,10 +37,10 @@
 use glam::{DVec3, Vec3};
 
 /// The index of refraction of the glass (`check --inside`).
-pub const INSIDE: f64 = 1.5;
+pub(crate) const INSIDE: f64 = 1.5;
 
 /// The index of refraction around the glass (`check --outside`).
-pub const OUTSIDE: f64 = 1.0;
+pub(crate) const OUTSIDE: f64 = 1.0;
 
 /// Largest angle of incidence drawn, in degrees (grazing rays are left out).
 const MAX_INCIDENCE_DEG: f64 = 88.0;
@@ -52,7 +52,7 @@ const WRONG_ANGLE: f64 = 1e-4;
 
 /// The renderers whose `refract` call paths are emulated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Renderer {
+pub(crate) enum Renderer {
     /// pbrt-v4's `Refract(wi, n, eta, &etap, &wt)`, called the way `DielectricBxDF::Sample_f`
     /// calls it, from a student's tracer in render space (see [`Bug::PbrtEtaInverted`]).
     Pbrt,
@@ -66,11 +66,11 @@ pub enum Renderer {
 
 impl Renderer {
     /// Every renderer.
-    pub const ALL: [Self; 4] = [Self::Pbrt, Self::Smallpt, Self::Rtiow, Self::Glsl];
+    pub(crate) const ALL: [Self; 4] = [Self::Pbrt, Self::Smallpt, Self::Rtiow, Self::Glsl];
 
     /// The bugs that can be injected into this renderer's code ([`Bug::None`] not included).
     #[must_use]
-    pub fn bugs(self) -> &'static [Bug] {
+    pub(crate) fn bugs(self) -> &'static [Bug] {
         match self {
             Self::Pbrt => &[
                 Bug::PbrtEtaInverted,
@@ -89,7 +89,7 @@ impl Renderer {
 
     /// `check --api NAME` for this renderer's log; `None` for smallpt (generic `check`).
     #[must_use]
-    pub fn api(self) -> Option<&'static str> {
+    pub(crate) fn api(self) -> Option<&'static str> {
         match self {
             Self::Pbrt => Some("pbrt"),
             Self::Smallpt => None,
@@ -105,7 +105,7 @@ impl Renderer {
 /// the original has it), the altered line, what the bug does to the log, and the diagnosis
 /// code the whole-log verdict should name ([`Bug::expected_code`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Bug {
+pub(crate) enum Bug {
     /// The code as published: every line right.
     None,
     /// pbrt: the caller passes `1 / eta`. Original (`src/pbrt/bxdfs.cpp`,
@@ -231,7 +231,7 @@ pub enum Bug {
 
 impl Bug {
     /// Every bug, [`Bug::None`] first.
-    pub const ALL: [Self; 11] = [
+    pub(crate) const ALL: [Self; 11] = [
         Self::None,
         Self::PbrtEtaInverted,
         Self::PbrtNoFlipInside,
@@ -247,7 +247,7 @@ impl Bug {
 
     /// The renderer whose code this bug is in; `None` for [`Bug::None`] (any renderer).
     #[must_use]
-    pub fn renderer(self) -> Option<Renderer> {
+    pub(crate) fn renderer(self) -> Option<Renderer> {
         match self {
             Self::None => None,
             Self::PbrtEtaInverted | Self::PbrtNoFlipInside | Self::PbrtNormalTermSign => {
@@ -263,7 +263,7 @@ impl Bug {
 
     /// The diagnosis code the whole-log verdict should name (see each variant for why).
     #[must_use]
-    pub fn expected_code(self) -> &'static str {
+    pub(crate) fn expected_code(self) -> &'static str {
         match self {
             Self::None => "none",
             Self::PbrtEtaInverted
@@ -281,7 +281,7 @@ impl Bug {
 
     /// The fix, in the renderer's own code words (empty for [`Bug::None`]).
     #[must_use]
-    pub fn fix(self) -> &'static str {
+    pub(crate) fn fix(self) -> &'static str {
         match self {
             Self::None => "",
             Self::PbrtEtaInverted => {
@@ -332,7 +332,7 @@ impl Bug {
 
 /// One printed line and its ground truth.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Line {
+pub(crate) struct Line {
     /// The line as the student's code printed it (no newline).
     pub text: String,
     /// The call differs from the bug-free code's for the same ray: an argument or the outcome
@@ -346,7 +346,7 @@ pub struct Line {
 
 /// A whole log with what `check` needs to read it and what its verdict should be.
 #[derive(Clone, Debug)]
-pub struct Log {
+pub(crate) struct Log {
     /// One line per call, in order.
     pub lines: Vec<Line>,
     /// The `--pattern` that reads the lines (see [`pattern`]).
@@ -369,7 +369,13 @@ pub struct Log {
 /// # Panics
 /// When `bug` belongs to another renderer ([`Bug::None`] fits every renderer).
 #[must_use]
-pub fn log(renderer: Renderer, bug: Bug, count: usize, seed: u64, mixed_precision: bool) -> Log {
+pub(crate) fn log(
+    renderer: Renderer,
+    bug: Bug,
+    count: usize,
+    seed: u64,
+    mixed_precision: bool,
+) -> Log {
     if let Some(owner) = bug.renderer() {
         assert!(
             owner == renderer,
@@ -416,7 +422,7 @@ pub fn log(renderer: Renderer, bug: Bug, count: usize, seed: u64, mixed_precisio
 /// the book's `{front_face}`, smallpt through `check` without `--api` (`{w}`, `{n}`,
 /// `{entering}`, `{ratio}`, `{t_yours}`).
 #[must_use]
-pub fn pattern(renderer: Renderer, mixed_precision: bool) -> &'static str {
+pub(crate) fn pattern(renderer: Renderer, mixed_precision: bool) -> &'static str {
     match (renderer, mixed_precision) {
         (Renderer::Pbrt, _) => {
             "Refract wi={wi} n={n} eta={eta} -> wt={wt} etap={etap} ok={returned} entering={entering}"

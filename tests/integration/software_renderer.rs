@@ -100,7 +100,7 @@ fn times(a: Rgba, b: Rgba) -> Rgba {
 
 /// The CPU renderer the snapshots are taken with (`HarnessBuilder::renderer`).
 #[derive(Default)]
-pub struct SoftwareRenderer {
+pub(crate) struct SoftwareRenderer {
     textures: HashMap<TextureId, Texture>,
 }
 

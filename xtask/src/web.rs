@@ -210,7 +210,7 @@ fn write_pages(bindgen: &Path, out: &Path) -> Result<Vec<PathBuf>, String> {
 /// # Errors
 /// A missing tool (with the command that installs it), a failed build, or a file that cannot
 /// be written.
-pub fn web(repository: &Path, out: &Path) -> Result<Vec<(PathBuf, u64)>, String> {
+pub(crate) fn web(repository: &Path, out: &Path) -> Result<Vec<(PathBuf, u64)>, String> {
     check_toolchain(repository)?;
     let bindgen = build(repository)?;
     let written = write_pages(&bindgen, out)?;

@@ -61,7 +61,7 @@ fn pick(extensions: &[&str], ctx: &egui::Context) -> Result<(), JsValue> {
 /// The open or save dialog in a browser: *Choose a file…* opens the browser's picker (the
 /// file chosen is the dialog's choice); a save asks for the name only, and the file is
 /// downloaded.
-pub fn dialog(
+pub(in crate::app) fn dialog(
     purpose: Purpose,
     extensions: &[&str],
     name: &mut String,
@@ -158,7 +158,7 @@ fn download(path: &Path, bytes: &[u8]) -> Result<(), JsValue> {
 }
 
 /// Downloads every file the window wrote since the last frame.
-pub fn deliver_written() {
+pub(super) fn deliver_written() {
     for (path, bytes) in refraction_files::browser::take_written() {
         if let Err(e) = download(&path, &bytes) {
             web_sys::console::error_1(&e);
@@ -169,7 +169,7 @@ pub fn deliver_written() {
 /// Takes the files dropped on the page out of this frame's input, reads each (the browser
 /// reads files only asynchronously) and gives it back to the window in a later frame, once
 /// its bytes can be read under its name; the files read since the last frame go in now.
-pub fn take_dropped(ctx: &egui::Context, raw: &mut egui::RawInput) {
+pub(super) fn take_dropped(ctx: &egui::Context, raw: &mut egui::RawInput) {
     let arriving = core::mem::take(&mut raw.dropped_files);
     raw.dropped_files = DROPPED.with_borrow_mut(core::mem::take);
     for file in arriving {

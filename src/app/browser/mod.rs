@@ -23,7 +23,7 @@ use core::time::Duration;
 use refraction_i18n::t;
 use wasm_bindgen::JsCast as _;
 
-pub use files::dialog;
+pub(super) use files::dialog;
 
 use super::{Explorer, Launch, TITLE};
 

@@ -21,19 +21,19 @@ fn window() -> Option<web_sys::Window> {
 }
 
 /// The page's address without its fragment: where the web build is, for links.
-pub fn address() -> Option<String> {
+pub(super) fn address() -> Option<String> {
     let href = window()?.location().href().ok()?;
     Some(href.split('#').next().unwrap_or_default().to_owned())
 }
 
 /// The address's fragment as the browser keeps it (still percent-encoded), without `#`.
-pub fn fragment() -> String {
+pub(super) fn fragment() -> String {
     let hash = window().and_then(|w| w.location().hash().ok());
     hash.unwrap_or_default().trim_start_matches('#').to_owned()
 }
 
 /// The first of the browser's languages the explorer speaks.
-pub fn language() -> Option<Locale> {
+pub(super) fn language() -> Option<Locale> {
     let navigator = window()?.navigator();
     let languages = navigator.languages();
     let listed = languages.iter().filter_map(|l| l.as_string());
@@ -48,7 +48,7 @@ fn refused(message: String) {
 }
 
 /// What the browser refused since the last call, in words.
-pub fn take_refusals() -> Vec<String> {
+pub(super) fn take_refusals() -> Vec<String> {
     REFUSED.with_borrow_mut(core::mem::take)
 }
 
@@ -89,7 +89,7 @@ fn call_and_watch(
 
 /// Enters or leaves the browser's full screen (presentation). A browser enters it only
 /// shortly after a click or a key; when it refuses, the window says so.
-pub fn full_screen(on: bool, ctx: &egui::Context) {
+pub(super) fn full_screen(on: bool, ctx: &egui::Context) {
     let Some(document) = window().and_then(|w| w.document()) else {
         return;
     };
@@ -110,14 +110,14 @@ pub fn full_screen(on: bool, ctx: &egui::Context) {
 }
 
 /// Whether the page is in the browser's full screen now.
-pub fn is_full_screen() -> bool {
+pub(super) fn is_full_screen() -> bool {
     let document = window().and_then(|w| w.document());
     document.is_some_and(|d| d.fullscreen_element().is_some())
 }
 
 /// Puts `text` on the clipboard; a page that may not (opened from a file, or not in front)
 /// says so in the window.
-pub fn copy(text: &str, ctx: &egui::Context) {
+pub(super) fn copy(text: &str, ctx: &egui::Context) {
     let Some(window) = window() else {
         return;
     };
@@ -148,7 +148,7 @@ pub fn copy(text: &str, ctx: &egui::Context) {
 const STATUS_ID: &str = "status";
 
 /// Says `text` in the page's live region (made on first use), as the window's strip does.
-pub fn announce(text: &str) {
+pub(super) fn announce(text: &str) {
     let Some(document) = window().and_then(|w| w.document()) else {
         return;
     };
@@ -170,7 +170,7 @@ pub fn announce(text: &str) {
 }
 
 /// Sets the page's title (the browser's tab) to `title`.
-pub fn set_title(title: &str) {
+pub(super) fn set_title(title: &str) {
     if let Some(document) = window().and_then(|w| w.document()) {
         document.set_title(title);
     }
@@ -183,7 +183,7 @@ const FRAME_MEASURE: &str = "explorer-frame";
 /// tessellation and the WebGL calls that paint it) as a performance entry that ends now, for
 /// the browser's profiler and `tests/web/measure.mjs` (a `PerformanceObserver` sees it);
 /// the page keeps none of them.
-pub fn report_frame(seconds: f32) {
+pub(super) fn report_frame(seconds: f32) {
     let Some(performance) = window().and_then(|w| w.performance()) else {
         return;
     };
@@ -206,7 +206,7 @@ pub fn report_frame(seconds: f32) {
 
 /// Names the canvas for screen readers with what the diagram says (`summary`), as the desktop
 /// window names its canvas: a page's canvas is a picture to the browser.
-pub fn describe(canvas: &web_sys::HtmlCanvasElement, summary: &str) {
+pub(super) fn describe(canvas: &web_sys::HtmlCanvasElement, summary: &str) {
     canvas.set_attribute("role", "img").ok();
     canvas.set_attribute("aria-label", summary).ok();
 }

@@ -32,7 +32,7 @@ const TRUTH: [&str; 4] = ["from", "to", "travel", "entering"];
 const PRECISION: &str = "precision";
 
 /// The API's short name, as the selector shows it.
-pub fn owner(api: Api) -> &'static str {
+pub(super) fn owner(api: Api) -> &'static str {
     match api {
         // untranslated: the shading language's name
         Api::Glsl => "GLSL",
@@ -140,7 +140,7 @@ fn indices(from_to: Option<(f64, f64)>, mu: f64) -> (f64, f64) {
 
 /// A checked API call: the call, its verdict, and the right call in the API's convention.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Judged {
+pub(super) struct Judged {
     call: Call,
     diagnosis: Diagnosis,
     /// The right arguments for the ray, in the API's convention.
@@ -217,7 +217,7 @@ impl Judged {
 
     /// The verdict: headline, each mistake with what it means, the explanation, what the API
     /// returns, the right T and what is drawn.
-    pub fn show(&self, ui: &mut Ui) {
+    pub(super) fn show(&self, ui: &mut Ui) {
         let d = &self.diagnosis;
         let api = self.call.api;
         let head = match self.mistake_names() {
@@ -259,7 +259,7 @@ impl Judged {
 }
 
 /// The copy buttons for the student's languages; the text copied, if one was clicked.
-pub fn copy_buttons(ui: &mut Ui, judged: &Judged) -> Option<String> {
+pub(super) fn copy_buttons(ui: &mut Ui, judged: &Judged) -> Option<String> {
     ui.horizontal_wrapped(|ui| {
         ui.label(t!("check-copy-as-test"));
         let mut copied = None;
@@ -277,7 +277,7 @@ pub fn copy_buttons(ui: &mut Ui, judged: &Judged) -> Option<String> {
 
 /// The texts of every API's fields, kept apart per API (GLSL's eta is not pbrt's).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct ApiFields {
+pub(super) struct ApiFields {
     texts: HashMap<(Api, &'static str), String>,
 }
 
@@ -309,7 +309,7 @@ impl ApiFields {
     }
 
     /// Fills `api`'s fields from a pasted line's record: its values, the rest emptied.
-    pub fn fill_from(&mut self, api: Api, record: &Record) {
+    pub(super) fn fill_from(&mut self, api: Api, record: &Record) {
         for (name, _) in fields::all(api) {
             let text = match record.get(name) {
                 Some(value) => value_text(value),
@@ -323,7 +323,7 @@ impl ApiFields {
 
     /// Reads and judges `api`'s fields (those the panel shows: a pasted line's `path` and
     /// `point` are not kept).
-    pub fn check(&self, api: Api) -> Result<Checked, String> {
+    pub(super) fn check(&self, api: Api) -> Result<Checked, String> {
         let texts = shown_fields(api)
             .into_iter()
             .flatten()
@@ -342,7 +342,7 @@ impl ApiFields {
     }
 
     /// The convention in use, the API's fields and the truth; whether the user asked to check.
-    pub fn show(&mut self, ui: &mut Ui, api: Api, state: &ExplorerState) -> bool {
+    pub(super) fn show(&mut self, ui: &mut Ui, api: Api, state: &ExplorerState) -> bool {
         let [own, truth] = shown_fields(api);
         if own
             .iter()

@@ -22,10 +22,10 @@ use refraction_tools::api_check::{
 use refraction_tools::diagnosis::Summary;
 
 /// The most characters the box takes (a paste beyond it is cut there): about 500 log lines.
-pub const MAX_PASTED_CHARS: usize = 65_536;
+pub(super) const MAX_PASTED_CHARS: usize = 65_536;
 
 /// The most rows the table shows; the rest are judged and diagnosed but not listed.
-pub const MAX_LINES: usize = 500;
+pub(super) const MAX_LINES: usize = 500;
 
 /// The most lines the failure map draws, and the most failing lines kept to save as tests.
 const MAX_POINTS: usize = 20_000;
@@ -47,7 +47,7 @@ struct Row {
 
 /// The verdicts on a log's lines and its diagnosis.
 #[derive(Clone, Debug)]
-pub struct Table {
+pub(super) struct Table {
     /// How the lines were read: `JSON Lines`, `CSV` or `the pattern` (in the language's words).
     read_as: String,
     rows: Vec<Row>,
@@ -77,7 +77,7 @@ struct Reading {
 
 /// The pasted text (or the file opened), how to read it, and the last table.
 #[derive(Debug, Default)]
-pub struct Bulk {
+pub(super) struct Bulk {
     text: String,
     reading: Reading,
     files: LogFiles,
@@ -415,7 +415,7 @@ impl Bulk {
 
     /// Opens the log file at `path` (dropped on the window): it is judged, and the section
     /// opened on it, when the section shows next.
-    pub fn open_file(&mut self, path: &std::path::Path) {
+    pub(super) fn open_file(&mut self, path: &std::path::Path) {
         self.files.open(path);
     }
 
@@ -491,7 +491,7 @@ impl Bulk {
     /// The collapsible section for logs in `dialect`; the record of the row clicked, to open.
     /// A log just opened (chosen in the dialog or dropped on the window) is judged, and the
     /// section opened on it.
-    pub fn show(&mut self, ui: &mut Ui, dialect: Dialect) -> Option<Record> {
+    pub(super) fn show(&mut self, ui: &mut Ui, dialect: Dialect) -> Option<Record> {
         let fresh = self.files.take_fresh();
         if fresh {
             self.check(dialect);
@@ -508,7 +508,7 @@ impl Bulk {
     /// The options the log is read with (without the indices where they are not valid), for
     /// a row opened in the panel and the tests saved.
     #[must_use]
-    pub fn options(&self, dialect: Dialect) -> Options {
+    pub(super) fn options(&self, dialect: Dialect) -> Options {
         self.reading
             .options(dialect)
             .unwrap_or_else(|_| Options::new(dialect))

@@ -16,14 +16,14 @@ use refraction_tools::api_check::physics::Case;
 use refraction_tools::api_check::{Dialect, Judgement, Options, Record};
 
 /// The most lines judged in the window (a log file can be longer: `check` takes any length).
-pub const MAX_JUDGED: usize = 100_000;
+pub(super) const MAX_JUDGED: usize = 100_000;
 
 /// The most failing lines a saved test file holds.
-pub const MAX_SAVED_FAILING: usize = 100;
+pub(super) const MAX_SAVED_FAILING: usize = 100;
 
 /// A failing line, kept to be saved as a test.
 #[derive(Clone, Debug)]
-pub struct Failing {
+pub(super) struct Failing {
     /// Its line number in the log, from 1.
     pub line: usize,
     /// The call read.
@@ -33,7 +33,7 @@ pub struct Failing {
 }
 
 /// The largest log file the window reads (`check` reads any length from its input).
-pub const MAX_LOG_BYTES: u64 = 16 * 1024 * 1024;
+pub(super) const MAX_LOG_BYTES: u64 = 16 * 1024 * 1024;
 
 /// The extensions the open dialog lists.
 const LOG_EXTENSIONS: &[&str] = &["log", "txt", "csv", "jsonl", "json"];
@@ -41,7 +41,7 @@ const LOG_EXTENSIONS: &[&str] = &["log", "txt", "csv", "jsonl", "json"];
 /// The first line of every test file written, after the language's comment mark: how a file
 /// this tool may replace is told from the student's own code.
 // untranslated: a comment in generated code, which is written in English as the snippets are
-pub const TESTS_MARK: &str = "Regression tests written by refraction-explorer";
+pub(super) const TESTS_MARK: &str = "Regression tests written by refraction-explorer";
 
 /// The language a test file is written in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -186,7 +186,7 @@ enum Use {
 /// The log opened, the dialog while it is up, and a test file waiting for the replace
 /// question.
 #[derive(Debug, Default)]
-pub struct LogFiles {
+pub(super) struct LogFiles {
     opened: Option<Opened>,
     dialog: Option<(Use, FileDialog)>,
     /// A test file about to replace one, and its text.
@@ -202,12 +202,12 @@ pub struct LogFiles {
 impl LogFiles {
     /// The text of the log file opened, if one is.
     #[must_use]
-    pub fn opened_text(&self) -> Option<&str> {
+    pub(super) fn opened_text(&self) -> Option<&str> {
         self.opened.as_ref().map(|o| o.text.as_str())
     }
 
     /// Reads the log at `path` to judge next, or says why it cannot.
-    pub fn open(&mut self, path: &Path) {
+    pub(super) fn open(&mut self, path: &Path) {
         let shown = path.display().to_string();
         match refraction_files::read_capped(path, MAX_LOG_BYTES, &t!("logs-what-log")) {
             Ok(text) => {
@@ -226,13 +226,13 @@ impl LogFiles {
     }
 
     /// Whether a log was opened since the last call (it is judged then).
-    pub fn take_fresh(&mut self) -> bool {
+    pub(super) fn take_fresh(&mut self) -> bool {
         core::mem::take(&mut self.fresh)
     }
 
     /// What file is judged instead of the text box, with a button that goes back to the box;
     /// whether a file is.
-    pub fn opened_ui(&mut self, ui: &mut Ui) -> bool {
+    pub(super) fn opened_ui(&mut self, ui: &mut Ui) -> bool {
         let Some(opened) = &self.opened else {
             return false;
         };
@@ -249,7 +249,7 @@ impl LogFiles {
     }
 
     /// *Open log…*, which puts up the file dialog.
-    pub fn open_button(&mut self, ui: &mut Ui) {
+    pub(super) fn open_button(&mut self, ui: &mut Ui) {
         let button = ui
             .button(t!("logs-open"))
             .on_hover_text(t!("logs-open-hover", most = MAX_JUDGED));
@@ -265,7 +265,7 @@ impl LogFiles {
     }
 
     /// The buttons that save `failing` lines as tests in each of `dialect`'s languages.
-    pub fn save_buttons(&mut self, ui: &mut Ui, dialect: Dialect, failing: &[Failing]) {
+    pub(super) fn save_buttons(&mut self, ui: &mut Ui, dialect: Dialect, failing: &[Failing]) {
         if failing.is_empty() {
             return;
         }
@@ -287,7 +287,7 @@ impl LogFiles {
 
     /// The dialog and the replace question while they are up, and what the last open or save
     /// said; a test file chosen is written from `failing` lines read with `options`.
-    pub fn dialogs(&mut self, ui: &mut Ui, failing: &[Failing], options: &Options) {
+    pub(super) fn dialogs(&mut self, ui: &mut Ui, failing: &[Failing], options: &Options) {
         self.dialog_ui(ui, failing, options);
         if let Some(path) = file_dialog::answer_replace(ui, &mut self.replace, &mut self.status)
             && let Some((_, text)) = self.replacing.take()

@@ -85,7 +85,7 @@ struct Own {
 
 /// The panel's fields and its last verdict.
 #[derive(Debug, Default)]
-pub struct CheckPanel {
+pub(super) struct CheckPanel {
     source: Source,
     own: Own,
     api: api::ApiFields,
@@ -317,7 +317,7 @@ impl CheckPanel {
     /// Checks what the fields hold: opens the case in the explorer and keeps the verdict. A
     /// case that cannot be read leaves the state as it was and says why; an API call whose
     /// case cannot be drawn keeps its verdict and says why it is not drawn.
-    pub fn check(&mut self, state: &mut ExplorerState) {
+    pub(super) fn check(&mut self, state: &mut ExplorerState) {
         let outcome = match self.source {
             Source::Own => self.own.check(),
             Source::Api(api) => self.api.check(api),
@@ -341,7 +341,7 @@ impl CheckPanel {
 
     /// The student's vector to draw, while the explorer shows the case it was checked against.
     #[must_use]
-    pub fn student(&self, state: &ExplorerState) -> Option<StudentRay> {
+    pub(super) fn student(&self, state: &ExplorerState) -> Option<StudentRay> {
         self.current(state).map(|c| c.student.clone())
     }
 
@@ -397,7 +397,7 @@ impl CheckPanel {
 
     /// The selector, the fields, the Check button, the verdict and (for an API) the pasted
     /// log lines.
-    pub fn show(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
+    pub(super) fn show(&mut self, ui: &mut Ui, state: &mut ExplorerState) {
         if [&self.own.w, &self.own.n, &self.own.mu_i, &self.own.mu_t]
             .iter()
             .all(|f| f.is_empty())
@@ -440,7 +440,7 @@ impl CheckPanel {
     }
 
     /// Opens the log file at `path` (dropped on the window) in the log section.
-    pub fn open_log(&mut self, path: &std::path::Path) {
+    pub(super) fn open_log(&mut self, path: &std::path::Path) {
         self.bulk.open_file(path);
     }
 }

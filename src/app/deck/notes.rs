@@ -31,7 +31,7 @@ pub struct Notes {
 /// The buttons that step with a mouse: previous, next, reveal (on a step with a question) and
 /// the notes window; only their icons when `compact` (the strip above a projector's diagram),
 /// their names then their accessible names and hovers. Returns what was clicked.
-pub fn buttons(ui: &mut Ui, notes: &Notes, hidden: bool, compact: bool) -> Vec<Command> {
+pub(super) fn buttons(ui: &mut Ui, notes: &Notes, hidden: bool, compact: bool) -> Vec<Command> {
     let keys = t!("deck-keys");
     let reveal = if hidden {
         t!("deck-reveal")
@@ -116,7 +116,7 @@ fn contents(ui: &mut Ui, notes: &Notes, hidden: bool) -> Vec<Command> {
 
 /// Shows the notes window for `notes` and reads the deck's keys pressed in it. Returns what
 /// its keys and buttons asked, and whether the window was closed.
-pub fn show(ctx: &Context, notes: &Notes, hidden: bool) -> (Vec<Command>, bool) {
+pub(super) fn show(ctx: &Context, notes: &Notes, hidden: bool) -> (Vec<Command>, bool) {
     let title = t!("deck-notes-title", title = &notes.deck);
     let builder = ViewportBuilder::default()
         .with_title(title)

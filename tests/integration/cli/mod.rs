@@ -8,7 +8,7 @@ use std::process::{Command, Output};
 use serde_json::Value;
 
 /// Runs the binary with `args` on a file holding `input`.
-pub fn run(args: &[&str], input: &str) -> Output {
+pub(crate) fn run(args: &[&str], input: &str) -> Output {
     static RUNS: AtomicUsize = AtomicUsize::new(0);
     let name = format!(
         "api-{}-{}.log",
@@ -27,7 +27,7 @@ pub fn run(args: &[&str], input: &str) -> Output {
 }
 
 /// The JSON lines the command wrote.
-pub fn answers(output: &Output) -> Vec<Value> {
+pub(crate) fn answers(output: &Output) -> Vec<Value> {
     String::from_utf8_lossy(&output.stdout)
         .lines()
         .map(|l| serde_json::from_str(l).unwrap())
@@ -35,14 +35,14 @@ pub fn answers(output: &Output) -> Vec<Value> {
 }
 
 /// A folder of this test run's own under the temporary directory, named `prefix-PID-name`.
-pub fn folder(prefix: &str, name: &str) -> PathBuf {
+pub(crate) fn folder(prefix: &str, name: &str) -> PathBuf {
     let folder = std::env::temp_dir().join(format!("{prefix}-{}-{name}", std::process::id()));
     std::fs::create_dir_all(&folder).unwrap();
     folder
 }
 
 /// Runs `render` with `args`.
-pub fn render(args: &[&str]) -> Output {
+pub(crate) fn render(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_refraction-explorer"))
         .arg("render")
         .args(args)
@@ -51,7 +51,7 @@ pub fn render(args: &[&str]) -> Output {
 }
 
 /// What `check` made of a log: its `--summary`, its answers, its stderr and exit status.
-pub struct Checked {
+pub(crate) struct Checked {
     /// The `--summary` file's JSON.
     pub summary: Value,
     /// The answer lines.
@@ -64,7 +64,7 @@ pub struct Checked {
 
 /// Runs `check ARGS --summary FILE LOG` on a log holding `text`, in a folder named after
 /// `prefix` and `name` (kept, with the log, in the folder `FAMILIES_KEEP` names if set).
-pub fn check_log(prefix: &str, name: &str, args: &[&str], text: &str) -> Checked {
+pub(crate) fn check_log(prefix: &str, name: &str, args: &[&str], text: &str) -> Checked {
     let folder = folder(prefix, name);
     let (input, summary) = (folder.join("log.txt"), folder.join("s.json"));
     std::fs::write(&input, text).unwrap();

@@ -10,7 +10,7 @@ use refraction_model::ExplorerState;
 
 /// Shows `app` over the whole window, as eframe's root `Ui` does (the harness's own `Ui` keeps
 /// an 8-point margin that the real window does not have).
-pub fn whole_window(ui: &mut egui::Ui, app: &mut Explorer) {
+pub(crate) fn whole_window(ui: &mut egui::Ui, app: &mut Explorer) {
     let window = ui.ctx().content_rect();
     ui.scope_builder(egui::UiBuilder::new().max_rect(window), |ui| {
         ui.set_clip_rect(window);
@@ -20,7 +20,7 @@ pub fn whole_window(ui: &mut egui::Ui, app: &mut Explorer) {
 
 /// The window showing `explorer`, `size` points in the light theme with the window's fonts,
 /// after its first frame.
-pub fn harness_sized(explorer: Explorer, size: (f32, f32)) -> Harness<'static, Explorer> {
+pub(crate) fn harness_sized(explorer: Explorer, size: (f32, f32)) -> Harness<'static, Explorer> {
     let mut harness = Harness::builder()
         .with_context_setup(refraction_explorer::app::install_fonts)
         .with_size(Vec2::new(size.0, size.1))
@@ -31,30 +31,30 @@ pub fn harness_sized(explorer: Explorer, size: (f32, f32)) -> Harness<'static, E
 }
 
 /// The window showing `explorer`, 1280 × 760 points (see [`harness_sized`]).
-pub fn harness_for(explorer: Explorer) -> Harness<'static, Explorer> {
+pub(crate) fn harness_for(explorer: Explorer) -> Harness<'static, Explorer> {
     harness_sized(explorer, (1280.0, 760.0))
 }
 
 /// The window of a new explorer showing `state`.
-pub fn harness(state: ExplorerState) -> Harness<'static, Explorer> {
+pub(crate) fn harness(state: ExplorerState) -> Harness<'static, Explorer> {
     harness_for(Explorer::new(state))
 }
 
 /// From glass into air, W 30° from the normal: below the critical angle (41.8°).
-pub fn leaving_glass() -> ExplorerState {
+pub(crate) fn leaving_glass() -> ExplorerState {
     let angle = 30_f64.to_radians();
     let w = DVec3::new(angle.sin(), -angle.cos(), 0.0);
     ExplorerState::new(w, DVec3::Y, 1.5, 1.0, Default::default()).unwrap()
 }
 
 /// The centre of the widget labelled `label`.
-pub fn center_of(harness: &Harness<'_, Explorer>, label: &str) -> Pos2 {
+pub(crate) fn center_of(harness: &Harness<'_, Explorer>, label: &str) -> Pos2 {
     harness.get_by_label(label).rect().center()
 }
 
 /// Presses the pointer at `path`'s first point, moves it through the rest and releases it at
 /// the last: a click when the path is one point, a drag otherwise.
-pub fn press_move_release(harness: &mut Harness<'_, Explorer>, path: &[Pos2]) {
+pub(crate) fn press_move_release(harness: &mut Harness<'_, Explorer>, path: &[Pos2]) {
     let (Some(&first), Some(&last)) = (path.first(), path.last()) else {
         return;
     };
@@ -71,7 +71,7 @@ pub fn press_move_release(harness: &mut Harness<'_, Explorer>, path: &[Pos2]) {
 }
 
 /// Drags from `from` to `to` in four pointer moves.
-pub fn drag(harness: &mut Harness<'_, Explorer>, from: Pos2, to: Pos2) {
+pub(crate) fn drag(harness: &mut Harness<'_, Explorer>, from: Pos2, to: Pos2) {
     let path: Vec<Pos2> = (0..=4)
         .map(|step| from + (to - from) * (step as f32 / 4.0))
         .collect();
@@ -79,7 +79,7 @@ pub fn drag(harness: &mut Harness<'_, Explorer>, from: Pos2, to: Pos2) {
 }
 
 /// Replaces the text of the text field `label` with `text` (Enter is not pressed).
-pub fn replace_text(h: &mut Harness<'_, Explorer>, label: &str, text: &str) {
+pub(crate) fn replace_text(h: &mut Harness<'_, Explorer>, label: &str, text: &str) {
     h.get_by_role_and_label(Role::TextInput, label).focus();
     h.run();
     h.key_press_modifiers(Modifiers::COMMAND, Key::A);
@@ -90,27 +90,27 @@ pub fn replace_text(h: &mut Harness<'_, Explorer>, label: &str, text: &str) {
 }
 
 /// Replaces the text of the field labelled `label` and presses Enter.
-pub fn type_into(h: &mut Harness<'_, Explorer>, label: &str, text: &str) {
+pub(crate) fn type_into(h: &mut Harness<'_, Explorer>, label: &str, text: &str) {
     replace_text(h, label, text);
     h.key_press(Key::Enter);
     h.run();
 }
 
 /// Clicks the widget labelled `label`.
-pub fn click(h: &mut Harness<'_, Explorer>, label: &str) {
+pub(crate) fn click(h: &mut Harness<'_, Explorer>, label: &str) {
     h.get_by_label(label).click();
     h.run();
 }
 
 /// Undoes one step with the keyboard.
-pub fn undo(h: &mut Harness<'_, Explorer>) {
+pub(crate) fn undo(h: &mut Harness<'_, Explorer>) {
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run();
 }
 
 /// The smallest size of any non-blank text the last frame drew outside `away_from` (the
 /// diagram's canvas, whose labels are sized by the diagram), in pixels.
-pub fn smallest_text_px(h: &Harness<'_, Explorer>, away_from: egui::Rect) -> f32 {
+pub(crate) fn smallest_text_px(h: &Harness<'_, Explorer>, away_from: egui::Rect) -> f32 {
     fn smallest_in(shape: &egui::Shape, away_from: egui::Rect) -> f32 {
         match shape {
             egui::Shape::Vec(shapes) => shapes
@@ -141,14 +141,14 @@ pub fn smallest_text_px(h: &Harness<'_, Explorer>, away_from: egui::Rect) -> f32
 }
 
 /// Scrolls the panel to the widget labelled `label` and clicks it (the panel is short).
-pub fn reach(h: &mut Harness<'_, Explorer>, label: &str) {
+pub(crate) fn reach(h: &mut Harness<'_, Explorer>, label: &str) {
     h.get_by_label(label).scroll_to_me();
     h.run();
     click(h, label);
 }
 
 /// Replaces the text of the multi-line box of pasted log lines.
-pub fn paste_log(h: &mut Harness<'_, Explorer>, text: &str) {
+pub(crate) fn paste_log(h: &mut Harness<'_, Explorer>, text: &str) {
     let role = egui::Role::MultilineTextInput;
     h.get_by_role_and_label(role, "Log lines").focus();
     h.run();
@@ -160,7 +160,7 @@ pub fn paste_log(h: &mut Harness<'_, Explorer>, text: &str) {
 
 /// The words of every text the last frame painted (labels, and the texts of figures painted
 /// from the diagram's primitives, which have no accessible node of their own).
-pub fn painted_texts(h: &Harness<'_, Explorer>) -> Vec<String> {
+pub(crate) fn painted_texts(h: &Harness<'_, Explorer>) -> Vec<String> {
     fn texts_in(shape: &egui::Shape, into: &mut Vec<String>) {
         match shape {
             egui::Shape::Vec(shapes) => shapes.iter().for_each(|s| texts_in(s, into)),

@@ -13,7 +13,7 @@ use crate::vector_text::{length, spoken, spoken_vector};
 use refraction_i18n::t;
 
 /// Everything the explanation draws on.
-pub struct Context<'a> {
+pub(super) struct Context<'a> {
     /// The call.
     pub call: &'a Call,
     /// The readings of its arguments, the likeliest first.
@@ -421,7 +421,7 @@ fn right_sentence(ctx: &Context<'_>) -> String {
 
 /// The explanation of one verdict.
 #[must_use]
-pub fn explanation(ctx: &Context<'_>) -> String {
+pub(super) fn explanation(ctx: &Context<'_>) -> String {
     let Some(best) = ctx.readings.first() else {
         let mut text = unexplained(ctx);
         if let Some((code, looks)) = ctx.finding {

@@ -19,7 +19,7 @@ use crate::api_check::{Code, Renderer};
 
 /// Where the mistake shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Location {
+pub(super) enum Location {
     /// In the arguments the code passed (the logged eta, normal or incident vector).
     Arguments,
     /// In what the code computed from right arguments.
@@ -28,7 +28,7 @@ pub enum Location {
 
 /// What a fix is for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Fix {
+pub(super) struct Fix {
     /// The finding's code.
     pub code: Code,
     /// The formula's mistake, for a hypothesis of the formula.
