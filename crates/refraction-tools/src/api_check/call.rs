@@ -9,7 +9,7 @@ use refraction_kernel::api::{Api, Args};
 
 use super::fields::{self, Dialect, names};
 use super::record::{Record, Value};
-use super::renderer::Renderer;
+use crate::diagnosis::Renderer;
 use crate::solve::Precision;
 
 /// What the command line adds to every line.

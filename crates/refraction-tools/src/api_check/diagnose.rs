@@ -7,11 +7,11 @@ use refraction_kernel::{Convention, Real};
 use serde_json::Value as Json;
 
 use super::call::{Call, Got};
-use super::code::Code;
 use super::explain;
 use super::readings::{Reading, Tolerance, readings, undo};
 use super::result::{Returns, Seen, returns, transmitted_by};
 use crate::check::{self, Match};
+use crate::diagnosis::Code;
 use crate::diagnosis::formula::{self, Situation};
 use crate::diagnosis::{self, Codes, Evidence, Missing, Readings, Side, Told};
 use crate::solve::{Precision, Request};

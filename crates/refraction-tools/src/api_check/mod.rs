@@ -14,7 +14,6 @@
 //! makes the call, [`diagnose()`] judges it; [`fields::names`] gives each API's field names.
 
 pub mod call;
-pub mod code;
 pub mod csv;
 pub mod diagnose;
 mod explain;
@@ -25,7 +24,6 @@ pub mod pattern;
 pub mod physics;
 pub mod readings;
 pub mod record;
-pub mod renderer;
 pub mod result;
 pub mod suggest;
 
@@ -34,13 +32,12 @@ use std::collections::BTreeMap;
 use refraction_i18n::t;
 use serde::Serialize;
 
+pub use crate::diagnosis::{Code, Renderer};
 pub use call::{Call, Options};
-pub use code::Code;
 pub use diagnose::{Diagnosis, diagnose};
 pub use fields::Dialect;
 pub use pattern::{MAX_PATTERN_BYTES, MAX_PATTERN_LINES, MAX_PLACEHOLDERS, Pattern};
 pub use record::Record;
-pub use renderer::Renderer;
 
 use crate::check::{self, Match};
 use crate::diagnosis::{Evidence, LogTally, Summary};

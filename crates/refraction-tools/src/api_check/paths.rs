@@ -11,9 +11,9 @@ use refraction_kernel::{Convention, Incidence, refract};
 use serde::Serialize;
 
 use super::call::Call;
-use super::code::Code;
 use super::diagnose::Diagnosis;
 use crate::check::MATCH_ANGLE;
+use crate::diagnosis::Code;
 use crate::vector_text::{angle, short, short_vector, unit};
 
 /// Hits kept per path for the sphere retrace; longer paths are retraced through their surfaces.

@@ -16,9 +16,9 @@ use refraction_kernel::{Convention, Incidence, Refraction, refract};
 use serde::Serialize;
 
 use super::call::Options;
-use super::code::Code;
 use super::record::{Record, Value};
 use crate::check::{self, MATCH_ANGLE, Match, Verdict};
+use crate::diagnosis::Code;
 use crate::diagnosis::formula::{self, Outcome, Situation};
 use crate::diagnosis::{self, Codes, Evidence, Readings, Side, Told};
 use crate::solve::{Precision, Request};

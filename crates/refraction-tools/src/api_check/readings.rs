@@ -6,7 +6,7 @@ use glam::DVec3;
 use refraction_kernel::api::{Api, Args, Meaning};
 
 use super::call::{Call, Digits};
-use super::code::Code;
+use crate::diagnosis::Code;
 use crate::vector_text::{angle, length, unit};
 
 /// The mistakes a call's arguments can have, in the order they are undone.

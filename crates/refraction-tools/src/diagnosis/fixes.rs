@@ -15,7 +15,7 @@ use refraction_i18n::t;
 use refraction_kernel::api::Api;
 
 use super::hypotheses::{Sides, Slip};
-use crate::api_check::{Code, Renderer};
+use super::{Code, Renderer};
 
 /// Where the mistake shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

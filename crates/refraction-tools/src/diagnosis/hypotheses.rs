@@ -14,8 +14,8 @@ use std::sync::OnceLock;
 
 use refraction_kernel::api::Api;
 
+use super::Code;
 use super::formula::{self, Outcome, Situation, Variant};
-use crate::api_check::Code;
 use refraction_model::log_map::Side;
 
 /// A set of mistake codes (the argument mistakes a reading of a call assumes).

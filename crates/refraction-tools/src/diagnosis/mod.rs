@@ -23,10 +23,12 @@
 //!
 //! Lines are counted, not kept: a million-line log costs a counter per kind of line.
 
+pub mod code;
 mod fixes;
 pub mod formula;
 pub mod hypotheses;
 mod rank;
+pub mod renderer;
 
 use std::collections::BTreeMap;
 
@@ -34,9 +36,10 @@ use refraction_i18n::t;
 use refraction_kernel::api::Api;
 use serde::Serialize;
 
-use crate::api_check::{Code, Renderer};
+pub use code::Code;
 pub use hypotheses::{Codes, Readings, View};
 pub use refraction_model::log_map::Side;
+pub use renderer::Renderer;
 
 /// How wide a band of angles of incidence the sampling of reflection is judged in, degrees.
 pub const BIN_DEG: f64 = 5.0;

@@ -7,7 +7,7 @@ use refraction_kernel::api::Api;
 use super::fixes::{self, Fix, Location};
 use super::hypotheses::{self, Family, Hypothesis, Sides, Slip};
 use super::{Band, Census, Finding, Kind, LogTally, Missing, NONE, UNCHECKED};
-use crate::api_check::{Code, Renderer};
+use super::{Code, Renderer};
 
 /// What is ranked: a hypothesis of the formula's mistakes, or a set of mistakes some lines
 /// were given on their own (a missed total internal reflection, inputs not unit length...).

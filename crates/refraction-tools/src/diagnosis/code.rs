@@ -1,4 +1,4 @@
-//! The mistake codes of `check --api`.
+//! The mistake codes: what `check --api` names on a line, and what the diagnosis ranks.
 
 use refraction_i18n::t;
 
