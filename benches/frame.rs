@@ -4,21 +4,36 @@
 //! its shapes into meshes; what is left for a GPU is uploading them. Measured at rest and while
 //! the source is dragged, where every frame also retraces the scene. The target is 8 ms.
 //! And the same for One interface while W's handle is dragged, the figure the web build's is
-//! set beside (docs/web.md). `cargo bench --bench frame`.
+//! set beside (docs/web.md), at 1280×720 and at 1920×1080 in presentation; and the label
+//! placer's worst case: the droplet's 1,000 rays, and one label that must be shown with no
+//! free spot anywhere, so that every fallback runs. `cargo bench --bench frame`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use egui::{Context, Event, Modifiers, PointerButton, Pos2, RawInput, Rect, Vec2};
+use refraction_diagram::font::Typeface;
+use refraction_diagram::geometry::Colour;
+use refraction_diagram::placer::{Need, Obstacle, Placer};
+use refraction_diagram::shapes::{Align, Label};
+use refraction_diagram::{Primitive, SceneLayout, ScenePicture};
 use refraction_explorer::app::Explorer;
 use refraction_model::ExplorerState;
 use refraction_scene::{Scene, SourceKind, catalogue};
 
 const SCREEN: Vec2 = Vec2::new(1280.0, 720.0);
 
+/// The projector's larger screen.
+const FULL_HD: Vec2 = Vec2::new(1920.0, 1080.0);
+
 /// Runs one frame with these input events and tessellates it; returns the number of meshes so
 /// that nothing is optimised away.
 fn frame(ctx: &Context, explorer: &mut Explorer, events: Vec<Event>) -> usize {
+    frame_sized(ctx, explorer, events, SCREEN)
+}
+
+/// [`frame`] on a screen of `size` points.
+fn frame_sized(ctx: &Context, explorer: &mut Explorer, events: Vec<Event>, size: Vec2) -> usize {
     let input = RawInput {
-        screen_rect: Some(Rect::from_min_size(Pos2::ZERO, SCREEN)),
+        screen_rect: Some(Rect::from_min_size(Pos2::ZERO, size)),
         events,
         ..RawInput::default()
     };
@@ -84,12 +99,12 @@ fn scenes_frame(c: &mut Criterion) {
     group.finish();
 }
 
-/// Where W's handle is on the screen, as the window tells screen readers (its accessible
-/// node's bounds).
-fn w_handle(ctx: &Context, explorer: &mut Explorer) -> Option<Pos2> {
+/// Where W's handle is on a screen of `size` points, as the window tells screen readers (its
+/// accessible node's bounds).
+fn w_handle(ctx: &Context, explorer: &mut Explorer, size: Vec2) -> Option<Pos2> {
     ctx.enable_accesskit();
     let input = RawInput {
-        screen_rect: Some(Rect::from_min_size(Pos2::ZERO, SCREEN)),
+        screen_rect: Some(Rect::from_min_size(Pos2::ZERO, size)),
         ..RawInput::default()
     };
     let output = ctx.run_ui(input, |ui| explorer.show(ui));
@@ -106,30 +121,105 @@ fn w_handle(ctx: &Context, explorer: &mut Explorer) -> Option<Pos2> {
 }
 
 fn interface_frame(c: &mut Criterion) {
-    let mut group = c.benchmark_group("interface_frame_1280x720");
-    let ctx = Context::default();
-    ctx.set_theme(egui::Theme::Light);
-    let mut explorer = Explorer::new(ExplorerState::default());
-    frame(&ctx, &mut explorer, Vec::new());
-    let Some(w) = w_handle(&ctx, &mut explorer) else {
-        panic!("no W handle on the screen");
-    };
-    let before = explorer.state().clone();
-    frame(&ctx, &mut explorer, vec![Event::PointerMoved(w)]);
-    frame(&ctx, &mut explorer, vec![press(w, true)]);
-    let mut left = false;
-    let mut drag = || {
-        left = !left;
-        let to = w + Vec2::new(if left { -12.0 } else { 12.0 }, 0.0);
-        frame(&ctx, &mut explorer, vec![Event::PointerMoved(to)])
-    };
-    drag();
-    drag();
-    group.bench_function("default_state/dragging_w", |b| b.iter(&mut drag));
-    assert_ne!(explorer.state(), &before, "the drag turned W");
-    frame(&ctx, &mut explorer, vec![press(w, false)]);
+    let mut group = c.benchmark_group("interface_frame");
+    for (name, size, presenting) in [
+        ("1280x720/default_state/dragging_w", SCREEN, false),
+        (
+            "1920x1080_presentation/default_state/dragging_w",
+            FULL_HD,
+            true,
+        ),
+    ] {
+        let ctx = Context::default();
+        ctx.set_theme(egui::Theme::Light);
+        let mut explorer = Explorer::new(ExplorerState::default());
+        explorer.presentation_mut().on = presenting;
+        let frame = |explorer: &mut Explorer, events| frame_sized(&ctx, explorer, events, size);
+        // A few frames for the panels to settle where they stay.
+        for _ in 0..3 {
+            frame(&mut explorer, Vec::new());
+        }
+        let Some(w) = w_handle(&ctx, &mut explorer, size) else {
+            panic!("no W handle on the screen");
+        };
+        let before = explorer.state().clone();
+        frame(&mut explorer, vec![Event::PointerMoved(w)]);
+        frame(&mut explorer, vec![press(w, true)]);
+        let mut left = false;
+        let mut drag = |explorer: &mut Explorer| {
+            left = !left;
+            let to = w + Vec2::new(if left { -12.0 } else { 12.0 }, 0.0);
+            frame(explorer, vec![Event::PointerMoved(to)])
+        };
+        drag(&mut explorer);
+        drag(&mut explorer);
+        group.bench_function(name, |b| b.iter(|| drag(&mut explorer)));
+        assert_ne!(explorer.state(), &before, "the drag turned W");
+        frame(&mut explorer, vec![press(w, false)]);
+    }
     group.finish();
 }
 
-criterion_group!(benches, scenes_frame, interface_frame);
+/// The placer at its worst: the droplet's rays at 1,000 source rays (every segment an
+/// obstacle, as the Scenes view gives them) and a box over the whole drawing, then one label
+/// that must be shown: the rings around its anchor, the far rings, the whole drawing at four
+/// widths, crossing lesser rays, crossing any ray, all in vain.
+fn placer_worst_case(c: &mut Criterion) {
+    let Ok(mut scene) = Scene::embedded("droplet") else {
+        panic!("the droplet is built in");
+    };
+    assert!(
+        scene.set_ray_count(1000).is_ok(),
+        "the droplet takes 1,000 rays"
+    );
+    let trace = scene.trace();
+    let layout = SceneLayout::new(trace.bounds, glam::Vec2::new(SCREEN.x, SCREEN.y));
+    let picture = ScenePicture::new(&scene, &trace, &layout);
+    let Ok(face) = Typeface::egui_default() else {
+        panic!("the font is compiled in");
+    };
+    let shafts: Vec<Obstacle> = picture
+        .primitives
+        .iter()
+        .filter_map(|p| match p {
+            Primitive::Polyline { points, width, .. } => {
+                Some(points.windows(2).map(move |w| Obstacle::Shaft {
+                    a: w[0],
+                    b: w[1],
+                    half_width: width * 0.5 + 1.0,
+                    firm: false,
+                }))
+            }
+            _ => None,
+        })
+        .flatten()
+        .collect();
+    let label = Label {
+        text: "a label with nowhere to go".to_owned(),
+        at: layout.drawing.min + layout.drawing.size() * 0.5,
+        h: Align::Center,
+        v: Align::Center,
+        size: layout.font,
+        colour: Colour::hex(0x000000),
+        background: None,
+    };
+    let name = format!(
+        "droplet_1000_rays/{}_obstacles/no_free_spot",
+        shafts.len() + 1
+    );
+    c.bench_function(&format!("placer/{name}"), |b| {
+        b.iter(|| {
+            let mut placer = Placer::new(&face);
+            for shaft in &shafts {
+                placer.avoid(shaft.clone());
+            }
+            placer.avoid(Obstacle::Box(layout.drawing));
+            placer
+                .place(label.clone(), &layout.drawing, Need::Shown)
+                .is_err()
+        });
+    });
+}
+
+criterion_group!(benches, scenes_frame, interface_frame, placer_worst_case);
 criterion_main!(benches);

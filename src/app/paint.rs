@@ -1,7 +1,7 @@
 //! Draws the diagram's primitives with an egui painter, the screen twin of `render`.
 
 use egui::emath::RectTransform;
-use egui::epaint::CircleShape;
+use egui::epaint::{CircleShape, Mesh, Tessellator};
 use egui::{Align2, Color32, Context, FontId, Id, Painter, Pos2, Response, Shape, Stroke, Ui};
 use glam::Vec2;
 
@@ -62,6 +62,15 @@ fn align(a: Align) -> egui::Align {
 /// Paints `primitives` (canvas pixels) through `to_screen` (canvas → screen points), handing
 /// them to egui in one batch (each separate `Painter::add` takes the context's lock).
 pub(super) fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[Primitive]) {
+    painter.extend(shapes(painter, to_screen, primitives));
+}
+
+/// The egui shapes [`paint`] paints for `primitives`.
+pub(super) fn shapes(
+    painter: &Painter,
+    to_screen: &RectTransform,
+    primitives: &[Primitive],
+) -> Vec<Shape> {
     let at = |p: Vec2| to_screen.transform_pos(Pos2::new(p.x, p.y));
     let points = |ps: &[Vec2]| ps.iter().map(|p| at(*p)).collect::<Vec<_>>();
     let mut shapes = Vec::with_capacity(primitives.len());
@@ -117,7 +126,33 @@ pub(super) fn paint(painter: &Painter, to_screen: &RectTransform, primitives: &[
             }
         }
     }
-    painter.extend(shapes);
+    shapes
+}
+
+/// `shapes` with each run of lines and polygons (a scene's thousands of rays) tessellated
+/// once, into one mesh for `ctx`'s pixels per point; discs and text are kept as they are, in
+/// their places. Shapes kept between frames are then painted without tessellating every ray
+/// again: egui only copies a mesh.
+pub(super) fn meshed(ctx: &Context, shapes: Vec<Shape>) -> Vec<Shape> {
+    let options = ctx.tessellation_options(|o| *o);
+    // No text is tessellated here, so no font texture's size is needed.
+    let mut tessellator = Tessellator::new(ctx.pixels_per_point(), options, [1, 1], Vec::new());
+    let mut out = Vec::new();
+    let mut run = Mesh::default();
+    for shape in shapes {
+        if matches!(shape, Shape::LineSegment { .. } | Shape::Path(_)) {
+            tessellator.tessellate_shape(shape, &mut run);
+            continue;
+        }
+        if !run.is_empty() {
+            out.push(Shape::mesh(core::mem::take(&mut run)));
+        }
+        out.push(shape);
+    }
+    if !run.is_empty() {
+        out.push(Shape::mesh(run));
+    }
+    out
 }
 
 /// Room for a figure of the diagram crate's across `size` points of `ui`, named `about` for

@@ -3,6 +3,8 @@
 //! [`Trace`] on every change) and a click on a hit point opens it in the single-interface view.
 
 use core::time::Duration;
+use std::sync::Arc;
+
 use egui::emath::RectTransform;
 use egui::{
     CentralPanel, ComboBox, CursorIcon, Painter, Panel, Pos2, ProgressBar, Rect, Response,
@@ -12,7 +14,7 @@ use refraction_i18n::t;
 
 use glam::{DVec2, Vec2};
 
-use super::paint::{color, hover_left_out, paint};
+use super::paint::{color, hover_left_out, meshed, paint};
 use super::retrace::{Retracer, empty};
 use super::scene_files::SceneFiles;
 use super::typed::error_label;
@@ -62,6 +64,31 @@ pub struct ScenesView {
     /// The shape (width over height) of the canvas's drawing area the scene was last traced
     /// for: the world is widened to it, so that the scene fills the canvas, not a square in it.
     aspect: Option<f64>,
+    /// Counts the changes of the scene and its trace: the picture is drawn again only when
+    /// it, or anything else the picture is drawn from, has changed.
+    generation: u64,
+    /// The picture drawn last, and what it was drawn from.
+    picture: Option<(PictureKey, Arc<ScenePicture>)>,
+    /// The picture's egui shapes, its rays in one mesh, with the picture's key and where on
+    /// the screen they were laid out, at how many pixels per point.
+    painted: Option<Painted>,
+}
+
+/// A picture's egui shapes (its rays in one mesh), with the key of the picture they were
+/// made from, where on the screen they were laid out, and at how many pixels per point.
+type Painted = (PictureKey, Rect, f32, Vec<egui::Shape>);
+
+/// What the scene's picture is drawn from, besides the scene and its trace (counted by
+/// [`ScenesView::generation`]): an unchanged key reuses the last picture, so that a frame at
+/// rest (a hover, a background trace's progress bar) neither rebuilds the picture of tens of
+/// thousands of segments nor places its labels again.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct PictureKey {
+    generation: u64,
+    layout: SceneLayout,
+    palette: Palette,
+    hidden: bool,
+    language: refraction_i18n::Locale,
 }
 
 impl Default for ScenesView {
@@ -72,6 +99,47 @@ impl Default for ScenesView {
             .unwrap_or_else(|e| unreachable!("the built-in scenes load (tested): {e}"));
         Self::new(scene)
     }
+}
+
+/// The picture `cache` holds when it was drawn from `key`, else the one `draw` draws (kept in
+/// `cache` for the next frame).
+fn cached(
+    cache: &mut Option<(PictureKey, Arc<ScenePicture>)>,
+    key: PictureKey,
+    draw: impl FnOnce() -> ScenePicture,
+) -> Arc<ScenePicture> {
+    match cache {
+        Some((drawn, picture)) if *drawn == key => Arc::clone(picture),
+        _ => Arc::clone(&cache.insert((key, Arc::new(draw()))).1),
+    }
+}
+
+/// Paints `picture` (drawn from `key`) with `painter`, through `to_screen`: while a handle is
+/// dragged, as it is (it changes every frame); at rest, the shapes `kept` from the last frame
+/// when they were made from the same picture at the same place, else its shapes with the rays
+/// tessellated once (and kept for the next frame).
+fn paint_kept(
+    kept: &mut Option<Painted>,
+    (painter, to_screen): (&Painter, &RectTransform),
+    key: PictureKey,
+    picture: &ScenePicture,
+    dragging: bool,
+) {
+    if dragging {
+        *kept = None;
+        paint(painter, to_screen, &picture.primitives);
+        return;
+    }
+    let (rect, ppp) = (*to_screen.to(), painter.ctx().pixels_per_point());
+    let shapes = match kept {
+        Some((k, r, p, shapes)) if (*k, *r, *p) == (key, rect, ppp) => shapes,
+        _ => {
+            let shapes = super::paint::shapes(painter, to_screen, &picture.primitives);
+            let shapes = meshed(painter.ctx(), shapes);
+            &kept.insert((key, rect, ppp, shapes)).3
+        }
+    };
+    painter.extend(shapes.iter().cloned());
 }
 
 /// The canvas point (pixels from the canvas's corner) under the screen point `p`.
@@ -135,6 +203,9 @@ impl ScenesView {
             in_lesson: false,
             more_shown: false,
             aspect: None,
+            generation: 0,
+            picture: None,
+            painted: None,
         }
     }
 
@@ -186,6 +257,7 @@ impl ScenesView {
 
     /// Traces the scene again, its world widened to the canvas's shape once that is known.
     fn retrace(&mut self) {
+        self.generation += 1;
         match self.aspect {
             Some(aspect) => self
                 .retracer
@@ -247,6 +319,7 @@ impl ScenesView {
         if let Some(done) = self.retracer.poll() {
             let shown = core::mem::replace(&mut self.trace, done);
             self.retracer.recycle(shown);
+            self.generation += 1;
         }
         Panel::top("scene-controls").show(ui, |ui| {
             self.controls(ui, presenting);
@@ -373,8 +446,24 @@ impl ScenesView {
             .answer_hidden
             .then(|| refraction_deck::answer::up_to_first_surface(&self.trace));
         let shown = hidden.as_ref().unwrap_or(&self.trace);
-        let picture = ScenePicture::with_palette(&self.scene, shown, &layout, palette);
-        paint(&painter, &to_screen, &picture.primitives);
+        let key = PictureKey {
+            generation: self.generation,
+            layout,
+            palette: *palette,
+            hidden: self.answer_hidden,
+            language: refraction_i18n::locale(),
+        };
+        let scene = &self.scene;
+        let picture = cached(&mut self.picture, key, || {
+            ScenePicture::with_palette(scene, shown, &layout, palette)
+        });
+        paint_kept(
+            &mut self.painted,
+            (&painter, &to_screen),
+            key,
+            &picture,
+            dragging,
+        );
         hover_left_out(&response, &to_screen, &picture.left_out, layout.font * 2.0);
         response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &picture.summary));
         let hovered = response

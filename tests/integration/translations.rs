@@ -344,7 +344,7 @@ fn interface_sources() -> Vec<PathBuf> {
     for file in [
         "crates/refraction-tools/src/check.rs",
         "crates/refraction-tools/src/api_check/explain.rs",
-        "crates/refraction-tools/src/api_check/code.rs",
+        "crates/refraction-tools/src/diagnosis/code.rs",
         "crates/refraction-tools/src/api_check/call.rs",
         "crates/refraction-tools/src/api_check/csv.rs",
         "crates/refraction-tools/src/api_check/mod.rs",

@@ -32,6 +32,7 @@ pub mod geometry;
 pub mod intensities;
 pub mod layout;
 pub mod numbers;
+mod obstacle_grid;
 pub mod overlay;
 pub mod palette;
 pub mod picture;

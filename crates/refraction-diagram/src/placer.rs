@@ -12,6 +12,7 @@ use glam::Vec2;
 
 use super::font::Typeface;
 use super::geometry::{Colour, Rect, clip_segment};
+use super::obstacle_grid::ObstacleGrid;
 use super::shapes::Label;
 
 /// Something a label must not cover.
@@ -172,6 +173,10 @@ pub const PAD: f32 = 0.2;
 pub struct Placer<'f> {
     face: &'f Typeface,
     obstacles: Vec<Obstacle>,
+    /// The obstacles by where they are, built again when more have arrived since.
+    grid: ObstacleGrid,
+    /// The firm shafts' ends, which no leader line may cross.
+    firm_shafts: Vec<(Vec2, Vec2)>,
     placed: Vec<Rect>,
 }
 
@@ -230,12 +235,20 @@ impl<'f> Placer<'f> {
         Self {
             face,
             obstacles: Vec::new(),
+            grid: ObstacleGrid::default(),
+            firm_shafts: Vec::new(),
             placed: Vec::new(),
         }
     }
 
     /// Adds something no later label may cover.
     pub fn avoid(&mut self, obstacle: Obstacle) {
+        if let Obstacle::Shaft {
+            a, b, firm: true, ..
+        } = obstacle
+        {
+            self.firm_shafts.push((a, b));
+        }
         self.obstacles.push(obstacle);
     }
 
@@ -265,8 +278,13 @@ impl<'f> Placer<'f> {
 
     /// Whether `r` covers no placed label and no obstacle but those it may `cross`.
     fn clear_of(&self, r: &Rect, cross: impl Fn(&Obstacle) -> bool) -> bool {
-        let solid = self.obstacles.iter().filter(|o| !cross(o));
-        !solid.into_iter().any(|o| o.touches(r)) && !self.placed.iter().any(|p| p.overlaps(r))
+        let touched = |o: &Obstacle| !cross(o) && o.touches(r);
+        let covers_obstacle = if self.grid.count == self.obstacles.len() {
+            self.grid.near(r).any(|i| touched(&self.obstacles[i]))
+        } else {
+            self.obstacles.iter().any(touched)
+        };
+        !covers_obstacle && !self.placed.iter().any(|p| p.overlaps(r))
     }
 
     /// The first anchor from `steps` (in steps of 0.6 of the label's size around its anchor)
@@ -310,12 +328,10 @@ impl<'f> Placer<'f> {
         }
         // The first pixels leave the anchor, which may lie on a ray's tip.
         let start = anchor + (end - anchor).normalize() * 3.0;
-        !self.obstacles.iter().any(|o| match o {
-            Obstacle::Shaft {
-                a, b, firm: true, ..
-            } => segments_cross(start, end, *a, *b),
-            _ => false,
-        })
+        !self
+            .firm_shafts
+            .iter()
+            .any(|(a, b)| segments_cross(start, end, *a, *b))
     }
 
     /// The free spot inside `bounds` nearest `label`'s anchor, searched on a grid over the
@@ -390,6 +406,9 @@ impl<'f> Placer<'f> {
         bounds: &Rect,
         need: Need,
     ) -> Result<(Label, Option<Vec2>), Label> {
+        if self.grid.count != self.obstacles.len() {
+            self.grid = ObstacleGrid::new(&self.obstacles);
+        }
         let near = self.spot(&label, bounds, 0..=MOST_STEPS, Self::free);
         let far = || {
             self.spot(

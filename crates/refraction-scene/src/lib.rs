@@ -220,11 +220,20 @@ impl Scene {
     /// t > [`T_MIN`]: the shape's position in [`Self::shapes`] and the crossing.
     #[must_use]
     pub fn first_crossing(&self, origin: DVec2, direction: DVec2) -> Option<(usize, Crossing)> {
-        self.shapes
-            .iter()
-            .enumerate()
-            .filter_map(|(i, shape)| shape.first_crossing(origin, direction).map(|c| (i, c)))
-            .min_by(|a, b| a.1.t.total_cmp(&b.1.t))
+        // Piece by piece in one plain loop, the first of equal crossings kept: the tracer's
+        // inner loop (each shape's own first crossing, folded, took three times as long).
+        let mut best: Option<(usize, Crossing)> = None;
+        for (i, shape) in self.shapes.iter().enumerate() {
+            for piece in 0..shape.piece_count() {
+                let Some(c) = shape.piece_crossing(piece, origin, direction) else {
+                    continue;
+                };
+                if best.is_none_or(|(_, b)| c.t < b.t) {
+                    best = Some((i, c));
+                }
+            }
+        }
+        best
     }
 
     /// Moves the source to start at `origin`.
