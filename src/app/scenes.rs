@@ -267,17 +267,20 @@ impl ScenesView {
     }
 
     /// Traces again for a canvas whose drawing area has another shape than the last one's
-    /// (a window resized, presentation switched), unless a handle is being dragged.
-    fn frame_to(&mut self, layout: &SceneLayout) {
+    /// (a window resized, presentation switched), unless a handle is being dragged; returns
+    /// whether it did (the layout of this frame is then the old world's).
+    fn frame_to(&mut self, layout: &SceneLayout) -> bool {
         let size = layout.drawing.size();
         let aspect = f64::from(size.x) / f64::from(size.y.max(1.0));
         let changed = self
             .aspect
             .is_none_or(|before| (before / aspect - 1.0).abs() > 0.01);
-        if changed && self.drag_layout.is_none() && aspect.is_finite() {
+        let retrace = changed && self.drag_layout.is_none() && aspect.is_finite();
+        if retrace {
             self.aspect = Some(aspect);
             self.retrace();
         }
+        retrace
     }
 
     /// Puts back a scene from the undo history: the same scene edited differently is retraced
@@ -439,7 +442,11 @@ impl ScenesView {
             .filter(|_| response.clicked());
         let dragging = self.handles(ui, &response, &to_screen, &layout, &mut clicked_at);
         self.drag_layout = dragging.then_some(layout);
-        self.frame_to(&layout);
+        if self.frame_to(&layout) {
+            // Drawn again at once in the widened world, not at the next pointer move (a
+            // projector left alone would keep this frame's letterbox).
+            ui.ctx().request_repaint();
+        }
         self.drawn = Some((rect, layout));
         // The layout fits the whole trace, so that revealing the answer does not move the view.
         let hidden = self
