@@ -191,22 +191,8 @@ impl Panels {
             return;
         }
         if !*shown {
-            // A thin margin: the arrow's button fits the strip whatever the language.
-            let frame = egui::Frame::side_top_panel(ui.style()).inner_margin(3.0);
             // untranslated: an egui id.
-            side(format!("{id} strip"))
-                .exact_size(STRIP_WIDTH)
-                .resizable(false)
-                .frame(frame)
-                .show(ui, |ui| {
-                    let arrow = if panel.left { "⏵" } else { "⏴" };
-                    let name = panel.words(true, key);
-                    let open = ui.add(Button::new(RichText::new(arrow).strong()));
-                    open.widget_info(|| WidgetInfo::labeled(Role::Button, true, &name));
-                    if open.on_hover_text(&name).clicked() {
-                        *shown = true;
-                    }
-                });
+            strip(ui, panel, side(format!("{id} strip")), shown);
             return;
         }
         let share = if presenting {
@@ -251,4 +237,23 @@ impl Panels {
                     .show(ui, contents);
             });
     }
+}
+
+/// The thin strip a closed panel leaves at its side (`side`, not yet shown): a button with an
+/// arrow that opens it (`shown`).
+fn strip(ui: &mut Ui, panel: &SidePanel, side: Panel, shown: &mut bool) {
+    // A thin margin: the arrow's button fits the strip whatever the language.
+    let frame = egui::Frame::side_top_panel(ui.style()).inner_margin(3.0);
+    side.exact_size(STRIP_WIDTH)
+        .resizable(false)
+        .frame(frame)
+        .show(ui, |ui| {
+            let arrow = if panel.left { "⏵" } else { "⏴" };
+            let name = panel.words(true, panel.key.name());
+            let open = ui.add(Button::new(RichText::new(arrow).strong()));
+            open.widget_info(|| WidgetInfo::labeled(Role::Button, true, &name));
+            if open.on_hover_text(&name).clicked() {
+                *shown = true;
+            }
+        });
 }

@@ -3,8 +3,6 @@
 //! [`Trace`] on every change) and a click on a hit point opens it in the single-interface view.
 
 use core::time::Duration;
-use std::sync::Arc;
-
 use egui::emath::RectTransform;
 use egui::{
     CentralPanel, ComboBox, CursorIcon, Painter, Panel, Pos2, ProgressBar, Rect, Response,
@@ -67,16 +65,46 @@ pub struct ScenesView {
     /// Counts the changes of the scene and its trace: the picture is drawn again only when
     /// it, or anything else the picture is drawn from, has changed.
     generation: u64,
-    /// The picture drawn last, and what it was drawn from.
-    picture: Option<(PictureKey, Arc<ScenePicture>)>,
-    /// The picture's egui shapes, its rays in one mesh, with the picture's key and where on
-    /// the screen they were laid out, at how many pixels per point.
-    painted: Option<Painted>,
+    /// The picture drawn last, what it was drawn from, and its egui shapes.
+    kept: Option<Kept>,
 }
 
-/// A picture's egui shapes (its rays in one mesh), with the key of the picture they were
-/// made from, where on the screen they were laid out, and at how many pixels per point.
-type Painted = (PictureKey, Rect, f32, Vec<egui::Shape>);
+/// The scene's picture as the last frame drew it.
+#[derive(Debug)]
+struct Kept {
+    /// What it was drawn from.
+    key: PictureKey,
+    picture: ScenePicture,
+    /// Its egui shapes, its rays tessellated into one mesh, with where on the screen they were
+    /// laid out and at how many pixels per point (none while a handle is dragged: the picture
+    /// changes every frame then).
+    shapes: Option<(Rect, f32, Vec<egui::Shape>)>,
+}
+
+impl Kept {
+    /// Paints the picture with `painter`, through `to_screen`: while a handle is `dragging`,
+    /// as it is; at rest, the shapes kept from the last frame when they were laid out at the
+    /// same place, else its shapes made afresh (and kept for the next frame).
+    fn paint(&mut self, painter: &Painter, to_screen: &RectTransform, dragging: bool) {
+        if dragging {
+            self.shapes = None;
+            paint(painter, to_screen, &self.picture.primitives);
+            return;
+        }
+        let (rect, ppp) = (*to_screen.to(), painter.ctx().pixels_per_point());
+        if self
+            .shapes
+            .as_ref()
+            .is_none_or(|(r, p, _)| (*r, *p) != (rect, ppp))
+        {
+            let shapes = super::paint::shapes(painter, to_screen, &self.picture.primitives);
+            self.shapes = Some((rect, ppp, meshed(painter.ctx(), shapes)));
+        }
+        if let Some((.., shapes)) = &self.shapes {
+            painter.extend(shapes.iter().cloned());
+        }
+    }
+}
 
 /// What the scene's picture is drawn from, besides the scene and its trace (counted by
 /// [`ScenesView::generation`]): an unchanged key reuses the last picture, so that a frame at
@@ -99,47 +127,6 @@ impl Default for ScenesView {
             .unwrap_or_else(|e| unreachable!("the built-in scenes load (tested): {e}"));
         Self::new(scene)
     }
-}
-
-/// The picture `cache` holds when it was drawn from `key`, else the one `draw` draws (kept in
-/// `cache` for the next frame).
-fn cached(
-    cache: &mut Option<(PictureKey, Arc<ScenePicture>)>,
-    key: PictureKey,
-    draw: impl FnOnce() -> ScenePicture,
-) -> Arc<ScenePicture> {
-    match cache {
-        Some((drawn, picture)) if *drawn == key => Arc::clone(picture),
-        _ => Arc::clone(&cache.insert((key, Arc::new(draw()))).1),
-    }
-}
-
-/// Paints `picture` (drawn from `key`) with `painter`, through `to_screen`: while a handle is
-/// dragged, as it is (it changes every frame); at rest, the shapes `kept` from the last frame
-/// when they were made from the same picture at the same place, else its shapes with the rays
-/// tessellated once (and kept for the next frame).
-fn paint_kept(
-    kept: &mut Option<Painted>,
-    (painter, to_screen): (&Painter, &RectTransform),
-    key: PictureKey,
-    picture: &ScenePicture,
-    dragging: bool,
-) {
-    if dragging {
-        *kept = None;
-        paint(painter, to_screen, &picture.primitives);
-        return;
-    }
-    let (rect, ppp) = (*to_screen.to(), painter.ctx().pixels_per_point());
-    let shapes = match kept {
-        Some((k, r, p, shapes)) if (*k, *r, *p) == (key, rect, ppp) => shapes,
-        _ => {
-            let shapes = super::paint::shapes(painter, to_screen, &picture.primitives);
-            let shapes = meshed(painter.ctx(), shapes);
-            &kept.insert((key, rect, ppp, shapes)).3
-        }
-    };
-    painter.extend(shapes.iter().cloned());
 }
 
 /// The canvas point (pixels from the canvas's corner) under the screen point `p`.
@@ -204,8 +191,7 @@ impl ScenesView {
             more_shown: false,
             aspect: None,
             generation: 0,
-            picture: None,
-            painted: None,
+            kept: None,
         }
     }
 
@@ -460,17 +446,17 @@ impl ScenesView {
             hidden: self.answer_hidden,
             language: refraction_i18n::locale(),
         };
+        if self.kept.as_ref().is_some_and(|kept| kept.key != key) {
+            self.kept = None;
+        }
         let scene = &self.scene;
-        let picture = cached(&mut self.picture, key, || {
-            ScenePicture::with_palette(scene, shown, &layout, palette)
-        });
-        paint_kept(
-            &mut self.painted,
-            (&painter, &to_screen),
+        let kept = self.kept.get_or_insert_with(|| Kept {
             key,
-            &picture,
-            dragging,
-        );
+            picture: ScenePicture::with_palette(scene, shown, &layout, palette),
+            shapes: None,
+        });
+        kept.paint(&painter, &to_screen, dragging);
+        let picture = &kept.picture;
         hover_left_out(&response, &to_screen, &picture.left_out, layout.font * 2.0);
         response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &picture.summary));
         let hovered = response

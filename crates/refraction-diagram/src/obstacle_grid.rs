@@ -58,20 +58,19 @@ impl ObstacleGrid {
     /// The grid of `obstacles`: cells of [`CELL`] pixels (larger where the obstacles spread
     /// over more than [`MOST_CELLS`] of them) over the box they lie within.
     pub(crate) fn new(obstacles: &[Obstacle]) -> Self {
-        let boxes: Vec<Rect> = obstacles
+        let boxes: Vec<Rect> = obstacles.iter().map(bounding_box).collect();
+        let finite = |r: &&Rect| r.min.is_finite() && r.max.is_finite();
+        let Some((origin, end)) = boxes
             .iter()
-            .map(bounding_box)
-            .filter(|r| r.min.is_finite() && r.max.is_finite())
-            .collect();
-        let Some(first) = boxes.first() else {
+            .filter(finite)
+            .map(|r| (r.min, r.max))
+            .reduce(|(lo, hi), (min, max)| (lo.min(min), hi.max(max)))
+        else {
             return Self {
                 count: obstacles.len(),
                 ..Self::default()
             };
         };
-        let (origin, end) = boxes.iter().fold((first.min, first.max), |(lo, hi), r| {
-            (lo.min(r.min), hi.max(r.max))
-        });
         let span = (end - origin).max_element();
         let cell = CELL.max(span / MOST_CELLS as f32);
         let count_along = |length: f32| ((length / cell).floor() as usize + 1).min(MOST_CELLS);
@@ -84,14 +83,13 @@ impl ObstacleGrid {
             rows,
             cells: vec![Vec::new(); columns * rows],
         };
-        for (index, obstacle) in obstacles.iter().enumerate() {
-            let r = bounding_box(obstacle);
-            if !(r.min.is_finite() && r.max.is_finite()) {
+        for (index, (obstacle, r)) in obstacles.iter().zip(&boxes).enumerate() {
+            if !finite(&r) {
                 continue;
             }
             let index = u32::try_from(index).unwrap_or(u32::MAX);
             let long_shaft = matches!(obstacle, Obstacle::Shaft { .. });
-            for (column, row) in grid.cells_under(&r) {
+            for (column, row) in grid.cells_under(r) {
                 // A long diagonal ray's box covers many cells it never crosses.
                 if long_shaft && !obstacle.touches(&grid.cell_rect(column, row)) {
                     continue;

@@ -247,6 +247,35 @@ impl DiagramBuilder<'_> {
             return (self.shapes, Vec::new());
         };
         let mut placer = Placer::new(face);
+        self.avoid_figures(&mut placer, handles);
+        let drawing = self.layout.drawing;
+        let below_banner = Rect {
+            min: Vec2::new(0.0, self.layout.banner.max.y),
+            max: self.layout.canvas.max,
+        };
+        let mut placement = placer.place_all(labels.into_iter().map(|(rank, label)| {
+            let bounds = if drawing.contains(label.at) {
+                drawing
+            } else {
+                below_banner
+            };
+            // The labels a lesson teaches are never dropped; the construction and the media's
+            // names give way first.
+            let need = if rank <= Rank::Landmark {
+                Need::Shown
+            } else {
+                Need::Optional
+            };
+            (label, bounds, need)
+        }));
+        let left_out = core::mem::take(&mut placement.left_out);
+        self.shapes.extend(placement.figures());
+        (self.shapes, left_out)
+    }
+
+    /// Tells `placer` what no label may cover: marked points, every arrow's shaft and head
+    /// (W, N and T firmly), the lines kept clear, the hit point and the handles.
+    fn avoid_figures(&self, placer: &mut Placer<'_>, handles: &[Handle]) {
         for shape in &self.shapes {
             // A marked point (Huygens's A and B, a student's tip): no label covers it.
             if let Figure::Disc { center, radius, .. } = shape {
@@ -294,29 +323,6 @@ impl DiagramBuilder<'_> {
         for handle in handles {
             placer.avoid(Obstacle::Box(Diagram::grab_area(handle)));
         }
-        let drawing = self.layout.drawing;
-        let below_banner = Rect {
-            min: Vec2::new(0.0, self.layout.banner.max.y),
-            max: self.layout.canvas.max,
-        };
-        let mut placement = placer.place_all(labels.into_iter().map(|(rank, label)| {
-            let bounds = if drawing.contains(label.at) {
-                drawing
-            } else {
-                below_banner
-            };
-            // The labels a lesson teaches are never dropped; the construction and the media's
-            // names give way first.
-            let need = if rank <= Rank::Landmark {
-                Need::Shown
-            } else {
-                Need::Optional
-            };
-            (label, bounds, need)
-        }));
-        let left_out = core::mem::take(&mut placement.left_out);
-        self.shapes.extend(placement.figures());
-        (self.shapes, left_out)
     }
 
     /// An arrow from the hit point along the unit diagram direction `d`, `length` long, with a

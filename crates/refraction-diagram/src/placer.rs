@@ -278,13 +278,11 @@ impl<'f> Placer<'f> {
 
     /// Whether `r` covers no placed label and no obstacle but those it may `cross`.
     fn clear_of(&self, r: &Rect, cross: impl Fn(&Obstacle) -> bool) -> bool {
-        let touched = |o: &Obstacle| !cross(o) && o.touches(r);
-        let covers_obstacle = if self.grid.count == self.obstacles.len() {
-            self.grid.near(r).any(|i| touched(&self.obstacles[i]))
-        } else {
-            self.obstacles.iter().any(touched)
-        };
-        !covers_obstacle && !self.placed.iter().any(|p| p.overlaps(r))
+        // `place` builds the grid of every obstacle before it looks for a spot.
+        // untranslated: a panic message for the engineer, never shown to a user.
+        debug_assert_eq!(self.grid.count, self.obstacles.len(), "a stale grid");
+        let touched = |i: usize| !cross(&self.obstacles[i]) && self.obstacles[i].touches(r);
+        !self.grid.near(r).any(touched) && !self.placed.iter().any(|p| p.overlaps(r))
     }
 
     /// The first anchor from `steps` (in steps of 0.6 of the label's size around its anchor)

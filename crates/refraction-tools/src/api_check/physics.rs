@@ -323,6 +323,27 @@ fn logged(case: &Case) -> Outcome {
     }
 }
 
+/// The sentence for a judged case: a sampled reflection's chance (`sampled`, when the line
+/// is right), the mistakes that would give the wrong line (`first`, the likeliest), or the
+/// verdict's own words.
+fn explanation(
+    verdict: &Verdict,
+    ok: bool,
+    first: Option<&Vec<Code>>,
+    sampled: Option<f64>,
+) -> String {
+    match (first, sampled) {
+        (_, Some(f)) if ok => t!("check-physics-sampled", f = spoken(f)),
+        (Some(codes), None) if !ok && verdict.matches.is_none() => {
+            let meanings: Vec<String> = codes.iter().map(|c| c.meaning()).collect();
+            let mistakes = meanings.join("; ");
+            let said = t!("check-physics-explained", mistakes = mistakes);
+            format!("{} {said}", verdict.explanation)
+        }
+        _ => verdict.explanation.clone(),
+    }
+}
+
 /// Judges one case.
 ///
 /// # Errors
@@ -379,16 +400,7 @@ pub fn judge(case: &Case) -> Result<Judged, String> {
             travel: true,
         },
     };
-    let explanation = match (alternatives.first(), sampled) {
-        (_, Some(f)) if ok => t!("check-physics-sampled", f = spoken(f)),
-        (Some(codes), None) if !ok && verdict.matches.is_none() => {
-            let meanings: Vec<String> = codes.iter().map(|c| c.meaning()).collect();
-            let mistakes = meanings.join("; ");
-            let said = t!("check-physics-explained", mistakes = mistakes);
-            format!("{} {said}", verdict.explanation)
-        }
-        _ => verdict.explanation.clone(),
-    };
+    let explanation = explanation(&verdict, ok, alternatives.first(), sampled);
     let point = map_point(case, &r, &evidence);
     let readings = readings(case, &r, ok && sampled.is_none(), logged);
     Ok(Judged {
