@@ -1,4 +1,4 @@
-//! The right panel: the discriminant k, the quadratic in b, the candidates table, the source's
+//! The right panel: the discriminant k, the quadratic in b, the candidates table, the paper's
 //! equations with numbers, and the kernel's warnings. Every number is the kernel's.
 
 use egui::{Grid, RichText, Sense, Stroke, Ui, Vec2};
@@ -38,7 +38,7 @@ fn discriminant(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     painter.vline(zero, rect.y_range(), Stroke::new(2.0, color(palette.ink)));
 }
 
-/// The source's eq. 20 in b, with the kernel's two roots. The plot is fitted afresh every
+/// The paper's eq. 20 in b, with the kernel's two roots. The plot is fitted afresh every
 /// frame to both roots (or the vertex, on total internal reflection).
 fn quadratic(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     let q = Quadratic::of(r);
@@ -175,7 +175,7 @@ fn candidates(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     ui.label(t!("readouts-candidates-note"));
 }
 
-/// The source's key equations with the numbers substituted.
+/// The paper's key equations with the numbers substituted.
 fn source_equations(ui: &mut Ui, r: &Refraction<f64>) {
     for eq in equations(r) {
         ui.label(RichText::new(format!("({})  {}", eq.number, eq.formula)).strong());

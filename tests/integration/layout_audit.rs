@@ -151,11 +151,11 @@ fn set_up(h: &mut Harness<'_, Explorer>, present: bool, theme: &str, tool: Optio
         h.key_press(egui::Key::Escape);
         h.run();
     }
-    settle(h);
+    run_three_more_frames(h);
 }
 
 /// A few more frames: panels settle their sizes over a frame or two.
-fn settle(h: &mut Harness<'_, Explorer>) {
+fn run_three_more_frames(h: &mut Harness<'_, Explorer>) {
     for _ in 0..3 {
         h.run();
     }
@@ -780,7 +780,7 @@ fn audit_interface(states: &[ExplorerState]) -> Vec<(String, Measured)> {
                     let theme = (i + t) % themes.len();
                     h.state_mut().set_state(state.clone());
                     h.state_mut().presentation_mut().theme = Theme::ALL[theme];
-                    settle(&mut h);
+                    run_three_more_frames(&mut h);
                     let what = format!(
                         "{language} {}×{} {} {}, state {i}, {}",
                         size.0,
@@ -818,10 +818,10 @@ fn audit_panels(
             egui::Key::F2
         };
         h.key_press(if present { key } else { other });
-        settle(&mut h);
+        run_three_more_frames(&mut h);
         for (i, state) in states.iter().enumerate() {
             h.state_mut().set_state(state.clone());
-            settle(&mut h);
+            run_three_more_frames(&mut h);
             let what = format!(
                 "{language} {}×{} {} panel {name}, state {i}",
                 size.0,
@@ -856,7 +856,7 @@ fn audit_scenes() -> Vec<(String, Measured)> {
                     scene.set_ray_count(1000).unwrap();
                 }
                 h.state_mut().open_scene(scene);
-                settle(&mut h);
+                run_three_more_frames(&mut h);
                 let what = format!(
                     "{language} {}×{} {} scene {}",
                     size.0,
@@ -1136,7 +1136,7 @@ fn a_lesson_step_with_a_question_keeps_the_layout_rules_in_presentation() {
                 measured.push((what.clone(), m));
                 if step < 4 {
                     h.key_press(egui::Key::PageDown);
-                    settle(&mut h);
+                    run_three_more_frames(&mut h);
                 }
             }
         }

@@ -31,7 +31,7 @@ pub fn ease(s: f32) -> f32 {
 /// An animation the `render --animate` command and *Export animation* write.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Animation {
-    /// `μ_t` moves to `μ_i`, so that μ → 1 and T turns into W: why the source picks its signs.
+    /// `μ_t` moves to `μ_i`, so that μ → 1 and T turns into W: why the paper picks its signs.
     Mu,
     /// W swings from normal incidence to grazing; from the denser medium, so that total
     /// internal reflection appears on the way, at the critical angle.

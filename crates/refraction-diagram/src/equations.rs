@@ -1,25 +1,25 @@
-//! The source's key equations (7, 12, 17, 18, 21, 22) in the chosen convention, with the
+//! The paper's key equations (7, 12, 17, 18, 21, 22) in the chosen convention, with the
 //! current numbers substituted. Every number comes from the kernel (or, for eq. 22 with a
-//! flipped normal, from the source's formula taken literally, [`refraction_kernel::seed`]).
+//! flipped normal, from the paper's formula taken literally, [`refraction_kernel::seed`]).
 
 use refraction_i18n::t;
 use refraction_kernel::{Convention, Refraction, seed};
 
 use super::numbers::{number, vector};
 
-/// One equation of the source, as written there and with numbers.
+/// One equation of the paper, as written there and with numbers.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Equation {
-    /// The source's number, e.g. `2.21` (section.equation).
+    /// The paper's number, e.g. `2.21` (section.equation).
     pub number: String,
-    /// The equation as the source writes it, with the sine named as the language's schools
+    /// The equation as the paper writes it, with the sine named as the language's schools
     /// write it (`sin`, `sen`).
     pub formula: String,
     /// The same with the current numbers, and what follows from them.
     pub substituted: String,
 }
 
-/// What the source's two sections write differently among the key equations: Section 1 has W
+/// What the paper's two sections write differently among the key equations: Section 1 has W
 /// point back toward the origin, Section 2 along the ray, and the signs of a and b follow.
 struct Wording {
     /// Eq. 18's conclusion: which root for a the section takes, and why.
@@ -62,7 +62,7 @@ pub(crate) fn term(x: f64) -> String {
     }
 }
 
-/// The a the source chooses in `r`'s convention: −μ or +μ.
+/// The a the paper chooses in `r`'s convention: −μ or +μ.
 pub(crate) fn chosen_a(r: &Refraction<f64>) -> f64 {
     r.convention.travel_sign::<f64>() * r.mu
 }
@@ -141,7 +141,7 @@ fn squared_a(r: &Refraction<f64>) -> String {
     t!("diagram-eq-so", given = given, then = then)
 }
 
-/// Eq. 18: the two roots for a and the one the source takes.
+/// Eq. 18: the two roots for a and the one the paper takes.
 fn roots_of_a(r: &Refraction<f64>, chosen: &str) -> String {
     format!("a = ±{}; {chosen} = {}", n(r.mu), n(chosen_a(r)))
 }
@@ -166,7 +166,7 @@ fn roots_of_b(r: &Refraction<f64>) -> String {
     )
 }
 
-/// Eq. 22: the source's root for b, taken literally; with a flipped normal, how it goes wrong.
+/// Eq. 22: the paper's root for b, taken literally; with a flipped normal, how it goes wrong.
 fn choice_of_b(r: &Refraction<f64>) -> String {
     match (seed::weights(r.w, r.n, r.mu, r.convention), r.transmission) {
         (Some((_, b)), Some(tr)) if r.normal_flipped => {

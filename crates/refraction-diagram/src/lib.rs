@@ -19,7 +19,7 @@
 //! - [`animation`]: the frames of the animations exported for slides;
 //! - [`fresnel_plot`]: reflectance and transmittance against the angle of incidence;
 //! - [`intensities`]: the share of the light each ray carries, for s, p or unpolarised light;
-//! - [`walkthrough`]: the source's derivation step by step with the live numbers;
+//! - [`walkthrough`]: the paper's derivation step by step with the live numbers;
 //! - [`wavefronts`]: why it bends: the fronts λ/μ apart, their speeds, Huygens's construction.
 
 pub mod accuracy_plot;

@@ -29,7 +29,7 @@ pub const T: Colour = Colour::hex(0x0072B2);
 pub const REFLECTED: Colour = Colour::hex(0xCC79A7);
 /// The rejected candidates.
 pub const REJECTED: Colour = Colour::hex(0x6E6E6E);
-/// The source's formula with the un-flipped normal (the bug's wrong T) and other warnings.
+/// The paper's formula with the un-flipped normal (the bug's wrong T) and other warnings.
 pub const WARNING: Colour = Colour::hex(0xD55E00);
 /// The critical-angle line.
 pub const CRITICAL: Colour = Colour::hex(0x7B3294);

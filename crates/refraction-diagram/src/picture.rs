@@ -175,7 +175,7 @@ enum Rank {
     Vectors,
     /// The angles θi and θt and the incoming and reflected rays.
     Rays,
-    /// The outward-normal bug: −N and the wrong T of the source's formula.
+    /// The outward-normal bug: −N and the wrong T of the paper's formula.
     Bug,
     /// The three rejected candidates.
     Candidates,
@@ -551,7 +551,7 @@ impl DiagramBuilder<'_> {
         }
     }
 
-    /// What the source's formula gives with N as given when the kernel had to flip it: the
+    /// What the paper's formula gives with N as given when the kernel had to flip it: the
     /// wrong T of a ray tracer that forgets to flip an outward normal.
     fn outward_normal_bug(&mut self, r: &Refraction<f64>) {
         if !r.normal_flipped {

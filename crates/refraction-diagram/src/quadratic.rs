@@ -1,4 +1,4 @@
-//! The source's quadratic in b (eq. 20), whose roots merge and vanish at the critical angle.
+//! The paper's quadratic in b (eq. 20), whose roots merge and vanish at the critical angle.
 
 use glam::Vec2;
 use refraction_kernel::Refraction;

@@ -51,7 +51,7 @@ pub fn rule(rejection: Rejection) -> String {
     }
 }
 
-/// The rows for the kernel's four candidates, in the source's order (empty on total internal
+/// The rows for the kernel's four candidates, in the paper's order (empty on total internal
 /// reflection, where there are none).
 #[must_use]
 pub fn rows(r: &Refraction<f64>) -> Vec<CandidateRow> {

@@ -1,4 +1,4 @@
-//! The source's derivation as a sequence of steps, each with its equations in the source's
+//! The paper's derivation as a sequence of steps, each with its equations in the paper's
 //! numbering, the current numbers substituted, what the step argues in plain words, and the
 //! parts of the diagram it is about ([`Focus`]). Every number is the kernel's.
 
@@ -12,7 +12,7 @@ use refraction_kernel::{Convention, Refraction};
 pub struct Step {
     /// A short title in the current language, e.g. `The two roots for a`.
     pub title: String,
-    /// The source's equations for this step, with numbers.
+    /// The paper's equations for this step, with numbers.
     pub equations: Vec<Equation>,
     /// What the step argues, in words a student follows.
     pub explanation: String,
@@ -20,7 +20,7 @@ pub struct Step {
     pub focus: Focus,
 }
 
-/// One step as the source takes it, before any numbers.
+/// One step as the paper takes it, before any numbers.
 struct Description {
     title: fn() -> String,
     /// The equations the step cites, by their number within the section.
@@ -30,7 +30,7 @@ struct Description {
     focus: Focus,
 }
 
-/// The source's eight steps, in its order.
+/// The paper's eight steps, in its order.
 const STEPS: [Description; 8] = [
     Description {
         title: || t!("diagram-step-snell"),
@@ -82,7 +82,7 @@ const STEPS: [Description; 8] = [
     },
 ];
 
-/// What the source's two sections write differently in the steps beyond the key equations.
+/// What the paper's two sections write differently in the steps beyond the key equations.
 struct Wording {
     /// Eq. 8: cosθi from wn.
     cos_i: &'static str,
@@ -123,7 +123,7 @@ fn wording(convention: Convention) -> &'static Wording {
     }
 }
 
-/// Every step for the refraction `r`, in the source's order.
+/// Every step for the refraction `r`, in the paper's order.
 #[must_use]
 pub fn steps(r: &Refraction<f64>) -> Vec<Step> {
     let mut all = equations(r);
@@ -146,7 +146,7 @@ pub fn steps(r: &Refraction<f64>) -> Vec<Step> {
         .collect()
 }
 
-/// An equation of the source that the key-equation list does not carry.
+/// An equation of the paper that the key-equation list does not carry.
 fn equation(r: &Refraction<f64>, number: u8, formula: &str, values: String) -> Equation {
     Equation {
         number: format!("{}.{number}", r.convention.section()),
@@ -258,7 +258,7 @@ fn choice_of_a(r: &Refraction<f64>) -> String {
     }
 }
 
-/// Step 8's words: with an outward normal the source's root is the wrong side.
+/// Step 8's words: with an outward normal the paper's root is the wrong side.
 fn choice_of_b(r: &Refraction<f64>) -> String {
     if r.normal_flipped {
         t!("diagram-step-choice-b-flipped")

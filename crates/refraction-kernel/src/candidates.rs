@@ -1,4 +1,4 @@
-//! The four (a, b) pairs that satisfy the source's squared constraints, and why three of them
+//! The four (a, b) pairs that satisfy the paper's squared constraints, and why three of them
 //! are not the refracted ray.
 //!
 //! Squaring Snell's law (eq. 5) and requiring |T| = 1 (eq. 12) give a = ±μ (eq. 18) and, for
@@ -20,7 +20,7 @@ pub enum Rejection {
 }
 
 impl Rejection {
-    /// All three, in the order the source meets them (a first, then b).
+    /// All three, in the order the paper meets them (a first, then b).
     pub const ALL: [Self; 3] = [Self::WrongBend, Self::WrongSide, Self::Reversed];
 
     /// A short stable name, as used in JSON: `wrong_side`, `wrong_bend`, `reversed`.
@@ -105,7 +105,7 @@ impl<S: Real> Candidate<S> {
     }
 }
 
-/// The four candidates given the chosen (a, b), T, wn = Ŵ·N̂ and N̂, ordered as the source
+/// The four candidates given the chosen (a, b), T, wn = Ŵ·N̂ and N̂, ordered as the paper
 /// enumerates them: a = +μ then a = −μ (eq. 18), and for each the +√k root then the −√k root
 /// (eq. 21).
 ///

@@ -141,7 +141,7 @@ impl Checks {
         self.normal_part <= tolerance
     }
 
-    /// Whether T's part along the surface points the way the incoming ray's does: the source's
+    /// Whether T's part along the surface points the way the incoming ray's does: the paper's
     /// μ → 1 argument for the sign of a.
     ///
     /// # Examples

@@ -5,15 +5,15 @@ use std::fmt;
 
 use super::real::{Real, Vector3};
 
-/// Which way the incoming vector W points, as in the source derivation.
+/// Which way the incoming vector W points, as in the paper.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Convention {
-    /// W is the direction the ray travels in: the source's Section 2, as in GLSL and glam.
+    /// W is the direction the ray travels in: the paper's Section 2, as in GLSL and glam.
     #[default]
     AlongRay,
-    /// W points back toward the ray's origin: the source's Section 1, as in pbrt and Mitsuba.
+    /// W points back toward the ray's origin: the paper's Section 1, as in pbrt and Mitsuba.
     TowardOrigin,
 }
 
@@ -50,7 +50,7 @@ impl Convention {
             .find(|c| c.name() == name)
     }
 
-    /// The source section that derives this convention (1 or 2).
+    /// The paper's section that derives this convention (1 or 2).
     ///
     /// # Examples
     ///

@@ -61,7 +61,7 @@
 //!
 //! # Features
 //!
-//! None is on by default; [`seed`], the source's formula taken literally (to show what it
+//! None is on by default; [`seed`], the paper's formula taken literally (to show what it
 //! loses and the outward-normal bug it makes), is always there.
 //! - `serde`: serialisation of the input types and of [`Fresnel`].
 //! - `variants`: the variants the explorer's `bench` command compares: `batch` (the default

@@ -1,4 +1,4 @@
-//! The kernel's full answer for one interface: T, the reflection, the source's numbers, the four
+//! The kernel's full answer for one interface: T, the reflection, the paper's numbers, the four
 //! candidates and the warnings.
 
 use super::candidates::{Candidate, candidates};
@@ -83,7 +83,7 @@ impl<S: Real> Refraction<S> {
         self.transmission.is_none()
     }
 
-    /// wn = Ŵ·N̂ as in the source (with the vectors as given).
+    /// wn = Ŵ·N̂ as in the paper (with the vectors as given).
     ///
     /// # Examples
     ///

@@ -1,4 +1,4 @@
-//! The source derivation's formula taken literally (eq. 1.21/1.22 and 2.21/2.22), kept as a
+//! The paper's formula taken literally (eq. 1.21/1.22 and 2.21/2.22), kept as a
 //! named variant so that what it loses can be shown beside the default kernel.
 //!
 //! It uses N exactly as given (no flip toward the incoming ray, which is the classic bug when a
@@ -8,7 +8,7 @@
 use super::input::Convention;
 use super::real::{Real as _, Vector3};
 
-/// The source's (a, b) for unit `w` and `n` in the given convention, or `None` when its
+/// The paper's (a, b) for unit `w` and `n` in the given convention, or `None` when its
 /// discriminant μ²wn² − μ² + 1 is negative (total internal reflection).
 ///
 /// Section 1 (W toward the origin): a = −μ, b = μ·wn − √k. Section 2 (W along the ray): a = μ,
@@ -42,7 +42,7 @@ pub fn weights<V: Vector3>(
     Some((a, -a * wn - k.sqrt()))
 }
 
-/// The source's T = a·W + b·N for unit `w` and `n`, or `None` on total internal reflection.
+/// The paper's T = a·W + b·N for unit `w` and `n`, or `None` on total internal reflection.
 /// N is used as given: the formula assumes it faces the incoming ray.
 ///
 /// # Examples

@@ -1,8 +1,8 @@
-//! The default refraction arithmetic: the source's T = a·W + b·N with the discriminant and the
+//! The default refraction arithmetic: the paper's T = a·W + b·N with the discriminant and the
 //! b root rearranged so that nothing cancels where the problem itself is well-conditioned.
 //!
 //! Work in the travel form: `d` is the unit direction of travel, `n` the unit normal that faces
-//! it (d·n ≤ 0), cosθi = −d·n, μ = `μ_i/μ_t`. The source's discriminant k = μ²wn² − μ² + 1 and the
+//! it (d·n ≤ 0), cosθi = −d·n, μ = `μ_i/μ_t`. The paper's discriminant k = μ²wn² − μ² + 1 and the
 //! GLSL form 1 − μ²(1 − cos²θi) lose accuracy in two places:
 //! - equal or near-equal indices at grazing incidence: 1 − cos²θi is fine, but μ² − 1 and
 //!   μ²cos²θi cancel. Here k = (μ·cosθi)² + (1 − μ)(1 + μ), where 1 − μ is exact (Sterbenz);
@@ -10,7 +10,7 @@
 //!   When cos²θi > ½, sin²θi comes from the tangential part n × (d × n) instead, and
 //!   k = 1 − μ²·sin²θi.
 //!
-//! T itself is built as μ·(d + cosθi·n) − cosθt·n, the same vector as the source's μ·d + b·n
+//! T itself is built as μ·(d + cosθi·n) − cosθt·n, the same vector as the paper's μ·d + b·n
 //! (b = μ·cosθi − cosθt, eq. 20–22 of Section 2, see `docs/derivation.md`) but without its two
 //! terms of size μ cancelling when μ is large: T is unit length up to a few roundings for every
 //! accepted μ (up to 1/ε² either way), where μ·d + b·n would return a zero or a long vector

@@ -3,7 +3,7 @@
 
 use super::real::Real;
 
-/// The transmitted ray and the source's weights for it: T = a·W + b·N.
+/// The transmitted ray and the paper's weights for it: T = a·W + b·N.
 ///
 /// In [`crate::Refraction`] W and N are Ŵ and N̂, the vectors as given, normalised, before any flip
 /// (so a = ±μ by the convention); in [`crate::Facing`] they are the travel direction d and

@@ -9,7 +9,7 @@ use super::{seed, stable, trig};
 /// One way of computing T.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Variant {
-    /// The source's formula taken literally ([`seed`]).
+    /// The paper's formula taken literally ([`seed`]).
     Seed,
     /// The default kernel ([`crate::transmit`]).
     Stable,

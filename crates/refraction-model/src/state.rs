@@ -92,7 +92,7 @@ pub enum Lesson {
     /// at right angles.
     Brewster,
     /// A ray leaving a water droplet at 40°, with the droplet's outward normal: the normal the
-    /// kernel must turn round, and the wrong T of the source's formula beside it.
+    /// kernel must turn round, and the wrong T of the paper's formula beside it.
     DropletExit,
 }
 
@@ -398,7 +398,7 @@ impl ExplorerState {
     }
 
     /// Switches the convention. The ray stays where it is, so W turns around: that is the
-    /// whole difference between the source's two sections.
+    /// whole difference between the paper's two sections.
     pub fn set_convention(&mut self, convention: Convention) {
         if convention != self.convention {
             let turned = self.update(-self.w, self.n, self.mu_i, self.mu_t, convention);

@@ -26,7 +26,7 @@ diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T e
 diagram-critical-angle = Grenzwinkel θc = { $angle }°
 diagram-kernel-normal = −N: die Normale des Kernels
 diagram-outward-normal-bug =
-    Formel der Quelle mit N wie gegeben: Lösung der falschen Seite,
+    Formel des Artikels mit N wie gegeben: Lösung der falschen Seite,
     das falsche T des Fehlers mit äußerer Normale
 diagram-index-scale = Index μ
 diagram-incoming-ray = einfallender Strahl
@@ -142,8 +142,8 @@ diagram-huygens-tir =
 
 ## Die Schlüsselgleichungen
 
-diagram-eq-toward-origin-a = W zeigt von T weg, also wählt die Quelle a = −μ
-diagram-eq-along-ray-a = W zeigt entlang T, also wählt die Quelle a = +μ
+diagram-eq-toward-origin-a = W zeigt von T weg, also wählt der Artikel a = −μ
+diagram-eq-along-ray-a = W zeigt entlang T, also wählt der Artikel a = +μ
 diagram-eq-no-refracted-ray = kein reelles (a, b): es gibt keinen gebrochenen Strahl
 diagram-eq-no-b-with-10 = kein reelles b erfüllt sie zusammen mit Gl. 10
 diagram-eq-so = { $given }, also { $then }

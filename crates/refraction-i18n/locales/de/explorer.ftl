@@ -90,23 +90,23 @@ typed-not-three-numbers = { $name }: drei Zahlen x, y, z erwartet, { $count } er
 
 readouts-discriminant = Diskriminante k = μ²wn² − μ² + 1 = { $k } ≥ 0: T existiert
 readouts-discriminant-tir = Diskriminante k = μ²wn² − μ² + 1 = { $k } < 0: Totalreflexion
-# $section ist der Abschnitt der Quelle (1 oder 2), dessen Gleichung 20 dies ist.
+# $section ist der Abschnitt des Artikels (1 oder 2), dessen Gleichung 20 dies ist.
 readouts-quadratic = Gl. { $section }.20, die quadratische Gleichung in b: b² + 2a·wn·b + a² − 1 = 0 mit a = { $a }, wn = { $wn }
 readouts-no-roots = keine reellen Nullstellen: Die Parabel erreicht null nicht mehr
 readouts-roots = Lösungen b = { $roots } (die b der Kandidaten für dieses a)
 readouts-candidates = Die vier Kandidaten
 readouts-candidate = Kandidat
-# Die Spaltenköpfe der Prüfungen: das quadrierte Snelliussche Brechungsgesetz (Gl. 10 der Quelle), die Seite der Fläche, auf der T liegt, die Richtung, in die T gebrochen wird.
+# Die Spaltenköpfe der Prüfungen: das quadrierte Snelliussche Brechungsgesetz (Gl. 10 des Artikels), die Seite der Fläche, auf der T liegt, die Richtung, in die T gebrochen wird.
 readouts-check-snell = Gl. 10
 readouts-check-side = Seite
 readouts-check-bend = Brechung
 readouts-no-candidates = Keine Kandidaten: k < 0, also gibt es keine reelle Lösung für b und kein T.
-readouts-candidates-note = Alle vier haben die Länge 1 und erfüllen das quadrierte Snelliussche Gesetz (Gl. 10): Durch das Quadrieren lassen sie sich nicht unterscheiden. Nur Seite und Brechung (das Argument μ = 1 der Quelle) wählen T aus.
+readouts-candidates-note = Alle vier haben die Länge 1 und erfüllen das quadrierte Snelliussche Gesetz (Gl. 10): Durch das Quadrieren lassen sie sich nicht unterscheiden. Nur Seite und Brechung (das Argument μ = 1 des Artikels) wählen T aus.
 readouts-warnings = Kernel-Warnungen
 readouts-no-warnings = Keine Warnungen: W und N haben die Länge 1, und N zeigt zum Strahl.
 readouts-warning-not-unit = { $vector } hat die Länge { $length }, nicht 1: Er wurde normiert (nicht normierte Vektoren sind ein häufiger Fehler in Raytracern)
 readouts-warning-flipped = N zeigt vom einfallenden Strahl weg (wie eine äußere Normale dort, wo ein Strahl eine Kugel verlässt): Der Kernel hat −N verwendet, die Normale, die zum Strahl zeigt
-readouts-equations = Gleichungen der Quelle, Abschnitt { $section }
+readouts-equations = Gleichungen des Artikels, Abschnitt { $section }
 
 ## Schritt für Schritt
 

@@ -28,7 +28,7 @@ diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T e
 diagram-critical-angle = critical angle θc = { $angle }°
 diagram-kernel-normal = −N: the normal the kernel uses
 diagram-outward-normal-bug =
-    source formula with un-flipped N: the wrong-side root,
+    paper's formula with un-flipped N: the wrong-side root,
     the wrong T of the outward-normal bug
 diagram-index-scale = index μ
 diagram-incoming-ray = incoming ray
@@ -144,8 +144,8 @@ diagram-huygens-tir =
 
 ## The key equations
 
-diagram-eq-toward-origin-a = W points away from T, so the source takes a = −μ
-diagram-eq-along-ray-a = W points along T, so the source takes a = +μ
+diagram-eq-toward-origin-a = W points away from T, so the paper takes a = −μ
+diagram-eq-along-ray-a = W points along T, so the paper takes a = +μ
 diagram-eq-no-refracted-ray = no real (a, b): there is no refracted ray
 diagram-eq-no-b-with-10 = no real b satisfies it together with eq. 10
 # An equation with numbers, and what follows from it.

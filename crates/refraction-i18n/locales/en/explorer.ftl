@@ -90,23 +90,23 @@ typed-not-three-numbers = { $name }: expected three numbers x, y, z, got { $coun
 
 readouts-discriminant = Discriminant k = μ²wn² − μ² + 1 = { $k } ≥ 0: T exists
 readouts-discriminant-tir = Discriminant k = μ²wn² − μ² + 1 = { $k } < 0: total internal reflection
-# $section is the source's section (1 or 2) whose equation 20 this is.
+# $section is the paper's section (1 or 2) whose equation 20 this is.
 readouts-quadratic = Eq. { $section }.20, the quadratic in b: b² + 2a·wn·b + a² − 1 = 0 with a = { $a }, wn = { $wn }
 readouts-no-roots = no real roots: the parabola no longer reaches zero
 readouts-roots = roots b = { $roots } (the candidates' b for this a)
 readouts-candidates = The four candidates
 readouts-candidate = candidate
-# The checks' column headings: squared Snell's law (the source's eq. 10), the side of the surface T is on, the way T bends.
+# The checks' column headings: squared Snell's law (the paper's eq. 10), the side of the surface T is on, the way T bends.
 readouts-check-snell = eq. 10
 readouts-check-side = side
 readouts-check-bend = bend
 readouts-no-candidates = No candidates: k < 0, so b has no real roots and no T exists.
-readouts-candidates-note = All four are unit length and satisfy squared Snell (eq. 10): squaring cannot tell them apart. Only the side and the bend (the source's μ = 1 argument) pick T.
+readouts-candidates-note = All four are unit length and satisfy squared Snell (eq. 10): squaring cannot tell them apart. Only the side and the bend (the paper's μ = 1 argument) pick T.
 readouts-warnings = Kernel warnings
 readouts-no-warnings = No warnings: W and N are unit length and N faces the ray.
 readouts-warning-not-unit = { $vector } has length { $length }, not 1: it was normalised (un-normalised vectors are a common ray-tracer bug)
 readouts-warning-flipped = N points away from the incoming ray (as an outward normal does where a ray leaves a sphere): the kernel used −N, the normal that faces the ray
-readouts-equations = Source equations, Section { $section }
+readouts-equations = The paper's equations, Section { $section }
 
 ## The walk-through
 

@@ -26,7 +26,7 @@ diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T e
 diagram-critical-angle = ángulo límite θc = { $angle }°
 diagram-kernel-normal = −N: la normal que usa el kernel
 diagram-outward-normal-bug =
-    fórmula de la fuente con N sin invertir: la raíz del lado equivocado,
+    fórmula del artículo con N sin invertir: la raíz del lado equivocado,
     la T errónea del fallo de la normal exterior
 diagram-index-scale = índice μ
 diagram-incoming-ray = rayo incidente
@@ -142,8 +142,8 @@ diagram-huygens-tir =
 
 ## Las ecuaciones clave
 
-diagram-eq-toward-origin-a = W se aleja de T, así que la fuente toma a = −μ
-diagram-eq-along-ray-a = W apunta en el sentido de T, así que la fuente toma a = +μ
+diagram-eq-toward-origin-a = W se aleja de T, así que el artículo toma a = −μ
+diagram-eq-along-ray-a = W apunta en el sentido de T, así que el artículo toma a = +μ
 diagram-eq-no-refracted-ray = no hay (a, b) real: no hay rayo refractado
 diagram-eq-no-b-with-10 = ningún b real la cumple junto con la ec. 10
 diagram-eq-so = { $given }, así que { $then }

@@ -90,23 +90,23 @@ typed-not-three-numbers = { $name }: se esperaban tres números x, y, z; se reci
 
 readouts-discriminant = Discriminante k = μ²wn² − μ² + 1 = { $k } ≥ 0: T existe
 readouts-discriminant-tir = Discriminante k = μ²wn² − μ² + 1 = { $k } < 0: reflexión total
-# $section es la sección de la fuente (1 o 2) cuya ecuación 20 es esta.
+# $section es la sección del artículo (1 o 2) cuya ecuación 20 es esta.
 readouts-quadratic = Ec. { $section }.20, la ecuación cuadrática en b: b² + 2a·wn·b + a² − 1 = 0 con a = { $a }, wn = { $wn }
 readouts-no-roots = sin raíces reales: la parábola ya no llega a cero
 readouts-roots = raíces b = { $roots } (los b de los candidatos para este a)
 readouts-candidates = Los cuatro candidatos
 readouts-candidate = candidato
-# Los encabezados de columna de las comprobaciones: la ley de Snell al cuadrado (la ec. 10 de la fuente), el lado de la superficie en que está T, el sentido en que se desvía T.
+# Los encabezados de columna de las comprobaciones: la ley de Snell al cuadrado (la ec. 10 del artículo), el lado de la superficie en que está T, el sentido en que se desvía T.
 readouts-check-snell = ec. 10
 readouts-check-side = lado
 readouts-check-bend = desvío
 readouts-no-candidates = Sin candidatos: k < 0, así que b no tiene raíces reales y no existe T.
-readouts-candidates-note = Los cuatro son unitarios y cumplen la ley de Snell al cuadrado (ec. 10): elevar al cuadrado no permite distinguirlos. Solo el lado y el desvío (el argumento μ = 1 de la fuente) eligen T.
+readouts-candidates-note = Los cuatro son unitarios y cumplen la ley de Snell al cuadrado (ec. 10): elevar al cuadrado no permite distinguirlos. Solo el lado y el desvío (el argumento μ = 1 del artículo) eligen T.
 readouts-warnings = Avisos del kernel
 readouts-no-warnings = Sin avisos: W y N son unitarios y N mira hacia el rayo.
 readouts-warning-not-unit = { $vector } tiene longitud { $length }, no 1: se normalizó (los vectores sin normalizar son un error común en los trazadores de rayos)
 readouts-warning-flipped = N apunta en sentido contrario al rayo incidente (como una normal exterior donde un rayo sale de una esfera): el kernel usó −N, la normal que mira hacia el rayo
-readouts-equations = Ecuaciones de la fuente, sección { $section }
+readouts-equations = Ecuaciones del artículo, sección { $section }
 
 ## El paso a paso
 

@@ -26,7 +26,7 @@ diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0 : T
 diagram-critical-angle = angle limite θc = { $angle }°
 diagram-kernel-normal = −N : la normale qu’utilise le noyau
 diagram-outward-normal-bug =
-    formule de la source avec N non retournée : la racine du mauvais côté,
+    formule de l’article avec N non retournée : la racine du mauvais côté,
     le T erroné du bogue de la normale extérieure
 diagram-index-scale = indice μ
 diagram-incoming-ray = rayon incident
@@ -142,8 +142,8 @@ diagram-huygens-tir =
 
 ## Les équations clés
 
-diagram-eq-toward-origin-a = W s’éloigne de T, donc la source prend a = −μ
-diagram-eq-along-ray-a = W pointe dans le sens de T, donc la source prend a = +μ
+diagram-eq-toward-origin-a = W s’éloigne de T, donc l’article prend a = −μ
+diagram-eq-along-ray-a = W pointe dans le sens de T, donc l’article prend a = +μ
 diagram-eq-no-refracted-ray = pas de (a, b) réel : il n’y a pas de rayon réfracté
 diagram-eq-no-b-with-10 = aucun b réel ne la vérifie avec l’éq. 10
 diagram-eq-so = { $given }, donc { $then }

@@ -90,23 +90,23 @@ typed-not-three-numbers = { $name } : trois nombres x, y, z attendus, { $count 
 
 readouts-discriminant = Discriminant k = μ²wn² − μ² + 1 = { $k } ≥ 0 : T existe
 readouts-discriminant-tir = Discriminant k = μ²wn² − μ² + 1 = { $k } < 0 : réflexion totale
-# $section est la section de la source (1 ou 2) dont c’est l’équation 20.
+# $section est la section de l’article (1 ou 2) dont c’est l’équation 20.
 readouts-quadratic = Éq. { $section }.20, l’équation du second degré en b : b² + 2a·wn·b + a² − 1 = 0 avec a = { $a }, wn = { $wn }
 readouts-no-roots = pas de racine réelle : la parabole n’atteint plus zéro
 readouts-roots = racines b = { $roots } (les b des candidats pour ce a)
 readouts-candidates = Les quatre candidats
 readouts-candidate = candidat
-# Les en-têtes de colonne des vérifications : la loi de Snell-Descartes au carré (l’éq. 10 de la source), le côté de la surface où se trouve T, le sens dans lequel T est dévié.
+# Les en-têtes de colonne des vérifications : la loi de Snell-Descartes au carré (l’éq. 10 de l’article), le côté de la surface où se trouve T, le sens dans lequel T est dévié.
 readouts-check-snell = éq. 10
 readouts-check-side = côté
 readouts-check-bend = déviation
 readouts-no-candidates = Aucun candidat : k < 0, donc b n’a pas de racine réelle et T n’existe pas.
-readouts-candidates-note = Les quatre sont unitaires et vérifient la loi de Snell-Descartes au carré (éq. 10) : l’élévation au carré ne permet pas de les distinguer. Seuls le côté et la déviation (l’argument μ = 1 de la source) désignent T.
+readouts-candidates-note = Les quatre sont unitaires et vérifient la loi de Snell-Descartes au carré (éq. 10) : l’élévation au carré ne permet pas de les distinguer. Seuls le côté et la déviation (l’argument μ = 1 de l’article) désignent T.
 readouts-warnings = Avertissements du noyau
 readouts-no-warnings = Aucun avertissement : W et N sont unitaires et N fait face au rayon.
 readouts-warning-not-unit = { $vector } a une longueur de { $length }, pas 1 : il a été normalisé (les vecteurs non normalisés sont un bogue courant en lancer de rayons)
 readouts-warning-flipped = N pointe à l’opposé du rayon incident (comme une normale extérieure là où un rayon sort d’une sphère) : le noyau a utilisé −N, la normale tournée vers le rayon
-readouts-equations = Équations de la source, section { $section }
+readouts-equations = Équations de l’article, section { $section }
 
 ## Le pas à pas
 

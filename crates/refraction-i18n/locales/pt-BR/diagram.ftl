@@ -26,7 +26,7 @@ diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T e
 diagram-critical-angle = ângulo limite θc = { $angle }°
 diagram-kernel-normal = −N: a normal que o kernel usa
 diagram-outward-normal-bug =
-    fórmula da fonte com N sem inverter: a raiz do lado errado,
+    fórmula do artigo com N sem inverter: a raiz do lado errado,
     o T errado do defeito da normal externa
 diagram-index-scale = índice μ
 diagram-incoming-ray = raio incidente
@@ -142,8 +142,8 @@ diagram-huygens-tir =
 
 ## As equações-chave
 
-diagram-eq-toward-origin-a = W aponta para longe de T, então a fonte toma a = −μ
-diagram-eq-along-ray-a = W aponta no sentido de T, então a fonte toma a = +μ
+diagram-eq-toward-origin-a = W aponta para longe de T, então o artigo toma a = −μ
+diagram-eq-along-ray-a = W aponta no sentido de T, então o artigo toma a = +μ
 diagram-eq-no-refracted-ray = não há (a, b) real: não há raio refratado
 diagram-eq-no-b-with-10 = nenhum b real a satisfaz junto com a eq. 10
 diagram-eq-so = { $given }, então { $then }

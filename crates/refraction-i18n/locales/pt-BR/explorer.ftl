@@ -90,23 +90,23 @@ typed-not-three-numbers = { $name }: esperados três números x, y, z; recebidos
 
 readouts-discriminant = Discriminante k = μ²wn² − μ² + 1 = { $k } ≥ 0: T existe
 readouts-discriminant-tir = Discriminante k = μ²wn² − μ² + 1 = { $k } < 0: reflexão total
-# $section é a seção da fonte (1 ou 2) cuja equação 20 é esta.
+# $section é a seção do artigo (1 ou 2) cuja equação 20 é esta.
 readouts-quadratic = Eq. { $section }.20, a equação do segundo grau em b: b² + 2a·wn·b + a² − 1 = 0 com a = { $a }, wn = { $wn }
 readouts-no-roots = sem raízes reais: a parábola não chega mais a zero
 readouts-roots = raízes b = { $roots } (os b dos candidatos para este a)
 readouts-candidates = Os quatro candidatos
 readouts-candidate = candidato
-# Os cabeçalhos de coluna das verificações: a lei de Snell ao quadrado (a eq. 10 da fonte), o lado da superfície em que T está, o sentido em que T se desvia.
+# Os cabeçalhos de coluna das verificações: a lei de Snell ao quadrado (a eq. 10 do artigo), o lado da superfície em que T está, o sentido em que T se desvia.
 readouts-check-snell = eq. 10
 readouts-check-side = lado
 readouts-check-bend = desvio
 readouts-no-candidates = Nenhum candidato: k < 0, então b não tem raízes reais e T não existe.
-readouts-candidates-note = Os quatro são unitários e satisfazem a lei de Snell ao quadrado (eq. 10): elevar ao quadrado não os distingue. Só o lado e o desvio (o argumento μ = 1 da fonte) escolhem T.
+readouts-candidates-note = Os quatro são unitários e satisfazem a lei de Snell ao quadrado (eq. 10): elevar ao quadrado não os distingue. Só o lado e o desvio (o argumento μ = 1 do artigo) escolhem T.
 readouts-warnings = Avisos do kernel
 readouts-no-warnings = Sem avisos: W e N são unitários e N está voltado para o raio.
 readouts-warning-not-unit = { $vector } tem comprimento { $length }, não 1: foi normalizado (vetores não normalizados são um bug comum em traçadores de raios)
 readouts-warning-flipped = N aponta para longe do raio incidente (como uma normal externa onde um raio sai de uma esfera): o kernel usou −N, a normal voltada para o raio
-readouts-equations = Equações da fonte, seção { $section }
+readouts-equations = Equações do artigo, seção { $section }
 
 ## O passo a passo
 

@@ -26,7 +26,7 @@ diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T �
 diagram-critical-angle = предельный угол θc = { $angle }°
 diagram-kernel-normal = −N: нормаль, которую берёт ядро
 diagram-outward-normal-bug =
-    формула источника с неразвёрнутой N: корень не с той стороны,
+    формула статьи с неразвёрнутой N: корень не с той стороны,
     неверный T из-за ошибки внешней нормали
 diagram-index-scale = показатель μ
 diagram-incoming-ray = падающий луч
@@ -160,8 +160,8 @@ diagram-huygens-tir =
 
 ## Ключевые уравнения
 
-diagram-eq-toward-origin-a = W направлен от T, поэтому источник берёт a = −μ
-diagram-eq-along-ray-a = W направлен вдоль T, поэтому источник берёт a = +μ
+diagram-eq-toward-origin-a = W направлен от T, поэтому статья берёт a = −μ
+diagram-eq-along-ray-a = W направлен вдоль T, поэтому статья берёт a = +μ
 diagram-eq-no-refracted-ray = нет действительных (a, b): преломлённого луча нет
 diagram-eq-no-b-with-10 = никакое действительное b не удовлетворяет ему вместе с ур. 10
 diagram-eq-so = { $given }, поэтому { $then }
