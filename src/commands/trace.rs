@@ -3,7 +3,7 @@
 use std::io::{self, Write as _};
 use std::process::ExitCode;
 
-use refraction_scene::{Report, Scene, catalogue};
+use refraction_scene::{TraceReport, Scene, catalogue};
 
 use super::output::{printable, to_stderr};
 use super::output_error;
@@ -29,7 +29,7 @@ pub(crate) fn run(scene: &str, json: bool, list: bool) -> ExitCode {
         };
         let traced = scene.trace();
         if json {
-            serde_json::to_writer(&mut out, &Report::new(&scene, &traced))
+            serde_json::to_writer(&mut out, &TraceReport::new(&scene, &traced))
                 .map_err(io::Error::from)
                 .and_then(|()| writeln!(out))
         } else {

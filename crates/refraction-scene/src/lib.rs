@@ -5,7 +5,7 @@
 //!   its setters for an editor, and [`Scene::trace`].
 //! - [`Trace`]: segments, paths, hits and the [`Counts`] of what was computed.
 //! - [`catalogue`]: the scenes built into the binary (from `assets/scenes/`).
-//! - [`Report`]: the JSON of the `trace` command.
+//! - [`TraceReport`]: the JSON of the `trace` command.
 //!
 //! The file format is described in the repository's user guide (`docs/scenes.md`).
 
@@ -16,7 +16,7 @@ mod format;
 mod fresnel;
 mod medium;
 mod outline;
-mod report;
+mod trace_report;
 mod search;
 mod shape;
 mod source;
@@ -36,7 +36,7 @@ pub use format::{
 pub use fresnel::Fresnel;
 pub use medium::{Dispersion, Medium, REFERENCE_WAVELENGTH_NM, WHITE_WAVELENGTHS_NM};
 pub use outline::{Outline, Piece};
-pub use report::Report;
+pub use trace_report::TraceReport;
 pub use search::MAX_INTERSECTION_TESTS;
 pub use shape::{Crossing, Lens, Shape, T_MIN};
 pub use source::{Light, Source, SourceKind, traced_wavelength};

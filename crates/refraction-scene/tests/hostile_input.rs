@@ -10,7 +10,7 @@ use std::path::Path;
 
 use glam::DVec2;
 use proptest::prelude::*;
-use refraction_scene::{Budget, MAX_COORDINATE, Progress, Report, Scene, Stop, Trace, catalogue};
+use refraction_scene::{Budget, MAX_COORDINATE, Progress, TraceReport, Scene, Stop, Trace, catalogue};
 use serde_json::Value;
 
 /// A budget small enough for hundreds of traces in a test run.
@@ -61,7 +61,7 @@ fn traced(scene: &Scene, budget: Budget) -> Trace {
 /// not unit length.
 fn not_finite(scene: &Scene, budget: Budget) -> Option<String> {
     let trace = traced(scene, budget);
-    let json = serde_json::to_value(Report::new(scene, &trace)).ok()?;
+    let json = serde_json::to_value(TraceReport::new(scene, &trace)).ok()?;
     let mut found = Vec::new();
     misplaced_nulls(&json, "", &mut found);
     let off_unit = trace
@@ -210,7 +210,7 @@ fn a_runaway_trace_stops_at_its_budget_and_says_why() {
     };
     let trace = traced(&scene, few_tests);
     assert_eq!(trace.counts.stopped, Some(Stop::Tests(2_000)));
-    let json = serde_json::to_value(Report::new(&scene, &trace)).unwrap();
+    let json = serde_json::to_value(TraceReport::new(&scene, &trace)).unwrap();
     let message = json["counts"]["stopped"].as_str().unwrap();
     assert!(
         message.contains("budget of 2000 intersection tests"),

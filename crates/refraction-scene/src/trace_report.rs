@@ -38,7 +38,7 @@ pub struct MediumReport<'a> {
 
 /// The whole report of one trace.
 #[derive(Debug, Serialize)]
-pub struct Report<'a> {
+pub struct TraceReport<'a> {
     /// The scene's name.
     pub scene: &'a str,
     /// Its title.
@@ -59,7 +59,7 @@ pub struct Report<'a> {
     pub counts: Counts,
 }
 
-impl<'a> Report<'a> {
+impl<'a> TraceReport<'a> {
     /// The report of `trace`, a trace of `scene`.
     #[must_use]
     pub fn new(scene: &'a Scene, trace: &'a Trace) -> Self {
