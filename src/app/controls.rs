@@ -313,9 +313,16 @@ impl Controls {
             ..overlay.clone()
         };
         self.export_status = Some(
-            refraction_render::export(state, &overlay, self.export_size, path)
-                .map_err(|e| e.to_string())
-                .map(|()| t!("controls-exported", path = path.display().to_string())),
+            refraction_render::write(
+                refraction_render::Picture::Interface {
+                    state,
+                    overlay: &overlay,
+                },
+                self.export_size,
+                path,
+            )
+            .map_err(|e| e.to_string())
+            .map(|()| t!("controls-exported", path = path.display().to_string())),
         );
     }
 }

@@ -286,7 +286,7 @@ pub(super) fn scene_picture(
     path: &Path,
 ) -> Result<String, String> {
     outcome(
-        refraction_render::export_scene(scene, size.0, size.1, path),
+        refraction_render::write(refraction_render::Picture::Scene(scene), size, path),
         path,
     )
 }

@@ -111,11 +111,12 @@ fn save_qr(url: &str, format: ImageFormat) -> Result<String, String> {
     let path = file_dialog::numbered(Path::new(""), "refraction-qr", extension);
     let code = Code::new(url).map_err(|e| too_long(&e))?;
     let side = QR_PICTURE_SIDE;
+    let draw = |size: glam::Vec2, _: &_| code.primitives(glam::Vec2::ZERO, size.x);
     let bytes = refraction_render::still(
+        refraction_render::Picture::Drawn(&draw),
         (format, refraction_render::svg::Labels::default()),
         (side, side),
         &path,
-        |size, _| code.primitives(glam::Vec2::ZERO, size.x),
     )
     .map_err(|e| t!("files-not-exported", reason = e.to_string()))?;
     refraction_files::write_atomically(&path, &bytes)

@@ -44,7 +44,8 @@ pub(crate) fn run(quick: bool, json: bool, plot: Option<&Path>) -> ExitCode {
         return ExitCode::SUCCESS;
     };
     let (width, height) = PLOT_SIZE;
-    match refraction_render::export_accuracy_plot(&report, width, height, path) {
+    let picture = refraction_render::Picture::AccuracyPlot(&report);
+    match refraction_render::write(picture, (width, height), path) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => fail("bench", &e),
     }

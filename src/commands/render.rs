@@ -15,7 +15,7 @@ use refraction_model::ExplorerState;
 use refraction_render::animation::AnimationSpec;
 use refraction_render::handout::Sheet;
 use refraction_render::svg::Labels;
-use refraction_render::{self as render, format::ImageFormat};
+use refraction_render::{self as render, Picture, format::ImageFormat};
 use refraction_scene::Scene;
 use refraction_tools::state_file;
 
@@ -148,7 +148,7 @@ fn picture(args: &RenderArgs, format: ImageFormat) -> Result<Vec<u8>, String> {
         )),
         (Some(scene), None) => {
             let s = Scene::load(scene).map_err(|e| e.to_string())?;
-            render::scene_file(&s, format, size, out).map_err(|e| e.to_string())
+            render::still(Picture::Scene(&s), format, size, out).map_err(|e| e.to_string())
         }
         (None, state) => {
             let s = initial_state(state.as_deref())?;
@@ -165,15 +165,16 @@ fn view_file(
     size: (u32, u32),
     out: &Path,
 ) -> Result<Vec<u8>, String> {
-    let palette = refraction_diagram::palette::Palette::STANDARD;
+    let overlay = Overlay::default();
     let drawn = match view {
-        ViewArg::Interface => render::interface_file(state, &Overlay::default(), format, size, out),
-        ViewArg::Fresnel => {
-            let plot = refraction_diagram::fresnel_plot::FresnelPlot::of(state);
-            render::still(format, size, out, |canvas, face| {
-                refraction_diagram::fresnel_plot::primitives(&plot, canvas, face, &palette)
-            })
+        ViewArg::Interface => {
+            let picture = Picture::Interface {
+                state,
+                overlay: &overlay,
+            };
+            render::still(picture, format, size, out)
         }
+        ViewArg::Fresnel => render::still(Picture::FresnelPlot(state), format, size, out),
         ViewArg::Accuracy => {
             let mut progress = ProgressLine::on_terminal("measuring...");
             let config = refraction_bench::Config::QUICK;
@@ -181,9 +182,7 @@ fn view_file(
             if let Some(e) = progress.finish() {
                 return Err(format!("cannot write the progress to stderr: {e}"));
             }
-            render::still(format, size, out, |canvas, face| {
-                refraction_diagram::accuracy_plot::primitives(&report, canvas, face, &palette)
-            })
+            render::still(Picture::AccuracyPlot(&report), format, size, out)
         }
     };
     drawn.map_err(|e| e.to_string())

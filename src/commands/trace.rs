@@ -3,7 +3,7 @@
 use std::io::{self, Write as _};
 use std::process::ExitCode;
 
-use refraction_scene::{TraceReport, Scene, catalogue};
+use refraction_scene::{Scene, TraceReport, catalogue};
 
 use super::output::{printable, to_stderr};
 use super::output_error;

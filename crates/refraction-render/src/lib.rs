@@ -1,6 +1,8 @@
-//! The diagram off screen: a PNG of [`Diagram::primitives`] drawn with tiny-skia, labels in
-//! egui's own font ([`text`]); the same primitives as SVG ([`svg`]); animations as GIF
-//! ([`animation`]); a lesson's handout as PDF ([`handout`]); every file written atomically ([`refraction_files::write_atomically`]).
+//! The diagram off screen. A [`Picture`] (the interface's diagram, a traced scene, a plot, or
+//! any primitives) is drawn by [`pixmap`] with tiny-skia, its labels in egui's own font
+//! ([`text`]); [`still`] gives it as PNG or SVG ([`svg`]) bytes and [`write`] writes it. Animations
+//! are GIFs ([`animation`]) and a lesson's handout a PDF ([`handout`]); every file is written
+//! atomically ([`refraction_files::write_atomically`]).
 
 pub mod animation;
 pub mod format;
@@ -19,7 +21,8 @@ use refraction_diagram::geometry::Colour;
 use refraction_diagram::{Diagram, Overlay, Primitive, SceneLayout, ScenePicture};
 use refraction_files::write_atomically;
 use refraction_model::ExplorerState;
-use refraction_scene::{Scene, Trace};
+use refraction_model::report::Report;
+use refraction_scene::Scene;
 
 /// The export size when none is given.
 pub const DEFAULT_SIZE: (u32, u32) = (1920, 1080);
@@ -181,7 +184,7 @@ pub fn check_size(width: u32, height: u32) -> Result<(), RenderError> {
 ///
 /// # Errors
 /// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
-pub fn draw_primitives(
+pub(crate) fn draw_primitives(
     width: u32,
     height: u32,
     primitives: impl FnOnce(Vec2, &Typeface) -> Vec<Primitive>,
@@ -195,212 +198,92 @@ pub fn draw_primitives(
     Ok(pixmap)
 }
 
-/// The primitives of the diagram of `state` with `overlay`, for a canvas size: what the PNG
-/// and the SVG both draw.
-fn interface<'a>(
-    state: &'a ExplorerState,
-    overlay: &'a Overlay,
-) -> impl FnOnce(Vec2, &Typeface) -> Vec<Primitive> + 'a {
-    |size, _| Diagram::with_overlay(state, size, overlay).primitives()
+/// What a still picture shows: the one thing every export, command and window draws off screen.
+#[derive(Clone, Copy)]
+pub enum Picture<'a> {
+    /// The single interface's diagram of a state, with the overlay's extras switched on.
+    Interface {
+        /// The state drawn.
+        state: &'a ExplorerState,
+        /// What is drawn over it (intensities, wavefronts, the answer hidden, …).
+        overlay: &'a Overlay,
+    },
+    /// A scene, traced, as the Scenes view shows it; traced only once the size is checked.
+    Scene(&'a Scene),
+    /// The plot of a `bench` report.
+    AccuracyPlot(&'a Report),
+    /// The Fresnel plot of a state's interface.
+    FresnelPlot(&'a ExplorerState),
+    /// Anything else drawn from the diagram's primitives (a QR code, a deck's step) for a
+    /// canvas size, in egui's font.
+    Drawn(&'a dyn Fn(Vec2, &Typeface) -> Vec<Primitive>),
 }
 
-/// The primitives of `scene` traced as `trace`, for a canvas size.
-fn traced<'a>(
-    scene: &'a Scene,
-    trace: &'a Trace,
-) -> impl FnOnce(Vec2, &Typeface) -> Vec<Primitive> + 'a {
-    |size, _| ScenePicture::new(scene, trace, &SceneLayout::new(trace.bounds, size)).primitives
+impl Picture<'_> {
+    /// Its primitives for a canvas of `size`, in drawing order.
+    fn primitives(self, size: Vec2, face: &Typeface) -> Vec<Primitive> {
+        let palette = refraction_diagram::palette::Palette::STANDARD;
+        match self {
+            Self::Interface { state, overlay } => {
+                Diagram::with_overlay(state, size, overlay).primitives()
+            }
+            Self::Scene(scene) => {
+                let trace = scene.trace();
+                ScenePicture::new(scene, &trace, &SceneLayout::new(trace.bounds, size)).primitives
+            }
+            Self::AccuracyPlot(report) => {
+                refraction_diagram::accuracy_plot::primitives(report, size, face, &palette)
+            }
+            Self::FresnelPlot(state) => {
+                let plot = refraction_diagram::fresnel_plot::FresnelPlot::of(state);
+                refraction_diagram::fresnel_plot::primitives(&plot, size, face, &palette)
+            }
+            Self::Drawn(draw) => draw(size, face),
+        }
+    }
 }
 
-/// The diagram of `state` with `overlay` drawn on a `width` × `height` pixmap.
+/// `picture` drawn on a `width` × `height` pixmap.
 ///
 /// # Errors
-/// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
-pub fn render(
-    state: &ExplorerState,
-    overlay: &Overlay,
-    width: u32,
-    height: u32,
-) -> Result<Pixmap, RenderError> {
-    draw_primitives(width, height, interface(state, overlay))
+/// A size outside [`SIZE_LIMITS`] (checked before a scene is traced), or an unreadable
+/// embedded font.
+pub fn pixmap(picture: Picture<'_>, (width, height): (u32, u32)) -> Result<Pixmap, RenderError> {
+    draw_primitives(width, height, |size, face| picture.primitives(size, face))
 }
 
-/// The diagram of `state` with `overlay` as a `width` × `height` SVG document ([`svg`]).
+/// `picture` at `width` × `height` as the bytes of a `format` file: PNG pixels or an SVG
+/// document, its labels written as `labels` says; `path` only names the file in a message.
 ///
 /// # Errors
-/// As [`render`].
-pub fn interface_svg(
-    state: &ExplorerState,
-    overlay: &Overlay,
-    width: u32,
-    height: u32,
-) -> Result<String, RenderError> {
-    svg::document(
-        width,
-        height,
-        svg::Labels::default(),
-        interface(state, overlay),
-    )
-}
-
-/// A pixmap as PNG bytes.
-///
-/// # Errors
-/// The encoder failed.
-pub fn encode(pixmap: &Pixmap) -> Result<Vec<u8>, RenderError> {
-    pixmap
-        .encode_png()
-        .map_err(|e| RenderError::Encode(e.to_string()))
-}
-
-/// The diagram of `state` with `overlay` as PNG bytes.
-///
-/// # Errors
-/// As [`render`], or a failed encoding.
-pub fn png(
-    state: &ExplorerState,
-    overlay: &Overlay,
-    width: u32,
-    height: u32,
-) -> Result<Vec<u8>, RenderError> {
-    encode(&render(state, overlay, width, height)?)
-}
-
-/// A still picture drawn by `primitives` at `width` × `height` as the bytes of a `format`
-/// file: PNG pixels or an SVG document, its labels written as `labels` says.
-///
-/// # Errors
-/// As [`draw_primitives`], a failed encoding, or [`RenderError::NotStill`] for GIF (`path`
-/// names the file in the message).
+/// As [`pixmap`], a failed encoding, or [`RenderError::NotStill`] for GIF.
 pub fn still(
+    picture: Picture<'_>,
     (format, labels): (ImageFormat, svg::Labels),
     (width, height): (u32, u32),
     path: &Path,
-    primitives: impl FnOnce(Vec2, &Typeface) -> Vec<Primitive>,
 ) -> Result<Vec<u8>, RenderError> {
     match format {
-        ImageFormat::Png => encode(&draw_primitives(width, height, primitives)?),
-        ImageFormat::Svg => {
-            svg::document(width, height, labels, primitives).map(String::into_bytes)
-        }
+        ImageFormat::Png => pixmap(picture, (width, height))?
+            .encode_png()
+            .map_err(|e| RenderError::Encode(e.to_string())),
+        ImageFormat::Svg => svg::document(width, height, labels, |size, face| {
+            picture.primitives(size, face)
+        })
+        .map(String::into_bytes),
         ImageFormat::Gif => Err(RenderError::NotStill(path.display().to_string())),
     }
 }
 
-/// The diagram of `state` with `overlay` as the bytes of a `format` file ([`still`]); `path`
-/// only names the file in a message.
+/// Writes `picture` at `path`, atomically, as PNG or SVG by the path's extension
+/// ([`ImageFormat::for_path`]), its SVG labels outlined.
 ///
 /// # Errors
-/// As [`still`].
-pub fn interface_file(
-    state: &ExplorerState,
-    overlay: &Overlay,
-    format: (ImageFormat, svg::Labels),
-    size: (u32, u32),
-    path: &Path,
-) -> Result<Vec<u8>, RenderError> {
-    still(format, size, path, interface(state, overlay))
-}
-
-/// `scene`, traced, as the bytes of a `format` file ([`still`]); `path` only names the file
-/// in a message. The size is checked before the scene is traced.
-///
-/// # Errors
-/// As [`still`].
-pub fn scene_file(
-    scene: &Scene,
-    format: (ImageFormat, svg::Labels),
-    (width, height): (u32, u32),
-    path: &Path,
-) -> Result<Vec<u8>, RenderError> {
-    check_size(width, height)?;
-    still(format, (width, height), path, traced(scene, &scene.trace()))
-}
-
-/// Writes the diagram of `state` with `overlay` at `path`, atomically, as PNG or SVG by the
-/// path's extension ([`ImageFormat::for_path`]).
-///
-/// # Errors
-/// An extension that names no still format, as [`png`] or [`interface_svg`], or the file
-/// cannot be written (the message names it).
-pub fn export(
-    state: &ExplorerState,
-    overlay: &Overlay,
-    size: (u32, u32),
-    path: &Path,
-) -> Result<(), RenderError> {
-    let format = ImageFormat::for_path(path)?;
-    let bytes = interface_file(state, overlay, (format, svg::Labels::default()), size, path)?;
-    write_atomically(path, &bytes).map_err(RenderError::Write)
-}
-
-/// Writes the plot of a `bench` report at `path`, atomically, as PNG or SVG by the path's
-/// extension.
-///
-/// # Errors
-/// As [`still`], an extension that names no still format, or the file cannot be written (the
+/// An extension that names no still format, as [`still`], or the file cannot be written (the
 /// message names it).
-pub fn export_accuracy_plot(
-    report: &refraction_model::report::Report,
-    width: u32,
-    height: u32,
-    path: &Path,
-) -> Result<(), RenderError> {
+pub fn write(picture: Picture<'_>, size: (u32, u32), path: &Path) -> Result<(), RenderError> {
     let format = ImageFormat::for_path(path)?;
-    let bytes = still(
-        (format, svg::Labels::default()),
-        (width, height),
-        path,
-        |size, face| {
-            let palette = refraction_diagram::palette::Palette::STANDARD;
-            refraction_diagram::accuracy_plot::primitives(report, size, face, &palette)
-        },
-    )?;
-    write_atomically(path, &bytes).map_err(RenderError::Write)
-}
-
-/// `scene`, traced, drawn on a `width` × `height` pixmap as the explorer's Scenes view shows
-/// it.
-///
-/// # Errors
-/// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
-pub fn render_scene(scene: &Scene, width: u32, height: u32) -> Result<Pixmap, RenderError> {
-    check_size(width, height)?;
-    draw_primitives(width, height, traced(scene, &scene.trace()))
-}
-
-/// `scene`, traced, as a `width` × `height` SVG document, as [`render_scene`] draws it.
-///
-/// # Errors
-/// As [`render_scene`].
-pub fn scene_svg(scene: &Scene, width: u32, height: u32) -> Result<String, RenderError> {
-    check_size(width, height)?;
-    svg::document(
-        width,
-        height,
-        svg::Labels::default(),
-        traced(scene, &scene.trace()),
-    )
-}
-
-/// Writes `scene`, traced, at `path`, atomically, as PNG or SVG by the path's extension.
-///
-/// # Errors
-/// As [`scene_file`], an extension that names no still format, or the file cannot be written
-/// (the message names it).
-pub fn export_scene(
-    scene: &Scene,
-    width: u32,
-    height: u32,
-    path: &Path,
-) -> Result<(), RenderError> {
-    let format = ImageFormat::for_path(path)?;
-    let bytes = scene_file(
-        scene,
-        (format, svg::Labels::default()),
-        (width, height),
-        path,
-    )?;
+    let bytes = still(picture, (format, svg::Labels::default()), size, path)?;
     write_atomically(path, &bytes).map_err(RenderError::Write)
 }
 
@@ -412,7 +295,18 @@ mod tests {
     #[test]
     fn the_png_decodes_at_the_requested_size_and_t_is_drawn_in_its_colour() {
         let state = ExplorerState::default();
-        let bytes = png(&state, &Overlay::default(), 1920, 1080).unwrap();
+        let overlay = Overlay::default();
+        let picture = Picture::Interface {
+            state: &state,
+            overlay: &overlay,
+        };
+        let bytes = still(
+            picture,
+            (ImageFormat::Png, svg::Labels::default()),
+            (1920, 1080),
+            Path::new("t.png"),
+        )
+        .unwrap();
         let decoded = Pixmap::decode_png(&bytes).unwrap();
         assert_eq!((decoded.width(), decoded.height()), (1920, 1080));
         let layout = refraction_diagram::Layout::new(Vec2::new(1920.0, 1080.0));
@@ -440,7 +334,7 @@ mod tests {
     fn every_built_in_scene_renders_with_its_rays_in_their_colours() {
         for info in refraction_scene::catalogue() {
             let scene = Scene::embedded(info.name).unwrap();
-            let pixmap = render_scene(&scene, 800, 500).unwrap();
+            let pixmap = pixmap(Picture::Scene(&scene), (800, 500)).unwrap();
             assert_eq!((pixmap.width(), pixmap.height()), (800, 500));
             let colours: Vec<_> = scene
                 .source()
@@ -466,15 +360,18 @@ mod tests {
     #[test]
     fn bad_sizes_and_paths_are_errors_with_clear_messages() {
         let state = ExplorerState::default();
-        let err = png(&state, &Overlay::default(), 0, 1080)
-            .unwrap_err()
-            .to_string();
+        let overlay = Overlay::default();
+        let picture = Picture::Interface {
+            state: &state,
+            overlay: &overlay,
+        };
+        let err = pixmap(picture, (0, 1080)).unwrap_err().to_string();
         assert!(
             err.contains("0×1080") && err.contains("64 to 8192"),
             "{err}"
         );
         let path = Path::new("/nonexistent-folder/x.png");
-        let err = export(&state, &Overlay::default(), (640, 360), path).unwrap_err();
+        let err = write(picture, (640, 360), path).unwrap_err();
         assert!(err.to_string().contains("/nonexistent-folder/x.png"));
     }
 
@@ -489,9 +386,11 @@ mod tests {
             ..Overlay::default()
         };
         let path = Path::new("slide.svg");
-        let svg = interface_file(
-            &state,
-            &overlay,
+        let svg = still(
+            Picture::Interface {
+                state: &state,
+                overlay: &overlay,
+            },
             (ImageFormat::Svg, svg::Labels::Text),
             (640, 360),
             path,
@@ -504,9 +403,11 @@ mod tests {
             "the wavefronts are in the SVG"
         );
         // Outlined (the default), the words are in each label's title.
-        let plain = interface_file(
-            &state,
-            &Overlay::default(),
+        let plain = still(
+            Picture::Interface {
+                state: &state,
+                overlay: &Overlay::default(),
+            },
             (ImageFormat::Svg, svg::Labels::Outlined),
             (640, 360),
             path,
@@ -522,11 +423,15 @@ mod tests {
             "{plain}"
         );
         let png = (ImageFormat::Png, svg::Labels::default());
-        let png = interface_file(&state, &overlay, png, (640, 360), path).unwrap();
+        let picture = Picture::Interface {
+            state: &state,
+            overlay: &overlay,
+        };
+        let png = still(picture, png, (640, 360), path).unwrap();
         assert!(Pixmap::decode_png(&png).is_ok());
         let gif = Path::new("x.gif");
         let format = (ImageFormat::Gif, svg::Labels::default());
-        let err = interface_file(&state, &overlay, format, (640, 360), gif);
+        let err = still(picture, format, (640, 360), gif);
         assert!(
             err.unwrap_err()
                 .to_string()

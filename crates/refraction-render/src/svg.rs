@@ -318,7 +318,7 @@ fn draw_group(
     }
 }
 
-/// A `width` × `height` SVG document of `primitives`, in drawing order, as [`crate::draw_primitives`]
+/// A `width` × `height` SVG document of `primitives`, in drawing order, as [`crate::pixmap`]
 /// draws them into pixels, its labels written as `labels` says.
 ///
 /// # Errors

@@ -88,10 +88,9 @@ fn drawn_alone(animation: Animation, frames: usize, size: (u32, u32)) -> Vec<Vec
     (0..frames)
         .map(|index| {
             let frame = animation.frame(&start, index, frames);
-            let pixmap = refraction_render::draw_primitives(size.0, size.1, |size, _| {
-                frame.primitives(size, &Overlay::default())
-            })
-            .expect("the frame draws");
+            let draw = |size, _: &_| frame.primitives(size, &Overlay::default());
+            let pixmap = refraction_render::pixmap(refraction_render::Picture::Drawn(&draw), size)
+                .expect("the frame draws");
             pixmap.data().to_vec()
         })
         .collect()

@@ -70,7 +70,8 @@ fn every_file_in_assets_is_built_in_loads_traces_and_renders() {
             assert!(s.from.is_finite() && s.to.is_finite(), "{name}");
         }
         let png =
-            refraction_render::render_scene(&from_file, 640, 360).unwrap_or_else(|e| panic!("{e}"));
+            refraction_render::pixmap(refraction_render::Picture::Scene(&from_file), (640, 360))
+                .unwrap_or_else(|e| panic!("{e}"));
         assert_eq!((png.width(), png.height()), (640, 360), "{name}");
     }
 }

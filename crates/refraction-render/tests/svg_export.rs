@@ -22,8 +22,9 @@ use tiny_skia::{IntSize, Pixmap};
 
 use refraction_diagram::{Diagram, Overlay, Primitive};
 use refraction_model::ExplorerState;
+use refraction_render::format::ImageFormat;
 use refraction_render::svg::{self, Labels};
-use refraction_render::{interface_svg, render, render_scene, scene_svg};
+use refraction_render::{Picture, RenderError, pixmap, still};
 use refraction_scene::Scene;
 
 /// A channel difference a viewer would notice.
@@ -160,15 +161,26 @@ fn the_interface_diagram_as_svg_looks_like_the_png_and_keeps_its_labels_as_text(
         let size = Vec2::new(width as f32, height as f32);
         let primitives = Diagram::with_overlay(&state, size, &overlay).primitives();
         let document = text_svg(&primitives, (width, height));
-        let png = render(&state, &overlay, width, height).unwrap();
+        let picture = Picture::Interface {
+            state: &state,
+            overlay: &overlay,
+        };
+        let png = pixmap(picture, (width, height)).unwrap();
         let texts = labels(&primitives);
         assert!(texts.len() > 5, "{what}: only {} labels", texts.len());
         compare(what, &document, &png, &texts);
         // Outlined (the default), the labels are the PNG's glyphs as paths.
-        let outlined = interface_svg(&state, &overlay, width, height).unwrap();
+        let outlined = outlined_svg(picture, (width, height)).unwrap();
         assert!(!outlined.contains("<text"), "{what}");
         compare(&format!("{what}, outlined"), &outlined, &png, &[]);
     }
+}
+
+/// `picture` as an SVG document of `size` with its labels outlined (the default).
+fn outlined_svg(picture: Picture<'_>, size: (u32, u32)) -> Result<String, RenderError> {
+    let format = (ImageFormat::Svg, Labels::Outlined);
+    let bytes = still(picture, format, size, std::path::Path::new("picture.svg"))?;
+    Ok(String::from_utf8(bytes).expect("an SVG document is UTF-8"))
 }
 
 /// `primitives` as an SVG of `size` with its labels as text.
@@ -180,8 +192,8 @@ fn text_svg(primitives: &[Primitive], (width, height): (u32, u32)) -> String {
 fn scenes_export_to_svg_too() {
     for name in ["droplet", "dispersing-prism"] {
         let scene = Scene::embedded(name).unwrap();
-        let document = scene_svg(&scene, 960, 540).unwrap();
-        let png = render_scene(&scene, 960, 540).unwrap();
+        let document = outlined_svg(Picture::Scene(&scene), (960, 540)).unwrap();
+        let png = pixmap(Picture::Scene(&scene), (960, 540)).unwrap();
         compare(name, &document, &png, &[]);
     }
 }
@@ -189,7 +201,9 @@ fn scenes_export_to_svg_too() {
 #[test]
 fn a_bad_size_is_refused_before_the_scene_is_traced() {
     let scene = Scene::embedded("droplet").unwrap();
-    let err = scene_svg(&scene, 9000, 540).unwrap_err().to_string();
+    let err = outlined_svg(Picture::Scene(&scene), (9000, 540))
+        .unwrap_err()
+        .to_string();
     assert!(err.contains("9000×540"), "{err}");
 }
 

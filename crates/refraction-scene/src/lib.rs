@@ -16,12 +16,12 @@ mod format;
 mod fresnel;
 mod medium;
 mod outline;
-mod trace_report;
 mod search;
 mod shape;
 mod source;
 mod spec;
 mod trace;
+mod trace_report;
 mod write;
 
 use glam::DVec2;
@@ -36,7 +36,6 @@ pub use format::{
 pub use fresnel::Fresnel;
 pub use medium::{Dispersion, Medium, REFERENCE_WAVELENGTH_NM, WHITE_WAVELENGTHS_NM};
 pub use outline::{Outline, Piece};
-pub use trace_report::TraceReport;
 pub use search::MAX_INTERSECTION_TESTS;
 pub use shape::{Crossing, Lens, Shape, T_MIN};
 pub use source::{Light, Source, SourceKind, traced_wavelength};
@@ -44,6 +43,7 @@ pub use spec::Numbers;
 pub use trace::{
     Budget, Counts, End, Hit, MAX_SEGMENTS, Outcome, Path, Progress, Segment, Side, Stop, Trace,
 };
+pub use trace_report::TraceReport;
 pub use write::WriteError;
 
 /// A scene ready to trace: media, shapes, a source and the effects it asks for.

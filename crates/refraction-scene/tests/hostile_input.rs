@@ -10,7 +10,9 @@ use std::path::Path;
 
 use glam::DVec2;
 use proptest::prelude::*;
-use refraction_scene::{Budget, MAX_COORDINATE, Progress, TraceReport, Scene, Stop, Trace, catalogue};
+use refraction_scene::{
+    Budget, MAX_COORDINATE, Progress, Scene, Stop, Trace, TraceReport, catalogue,
+};
 use serde_json::Value;
 
 /// A budget small enough for hundreds of traces in a test run.
