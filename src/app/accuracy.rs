@@ -123,9 +123,7 @@ impl AccuracyView {
 /// each named beside it, the bound, whole decades), painted across the view; hovering a marker
 /// shows its figures.
 fn plot(ui: &mut Ui, report: &Report, palette: &Palette) {
-    let Ok(face) = Typeface::egui_default() else {
-        return;
-    };
+    let face = Typeface::egui_default();
     let width = ui.available_width();
     let height = (ui.available_height() * 0.6).clamp(300.0, width * 0.62);
     let size = Vec2::new(width, height);

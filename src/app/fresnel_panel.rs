@@ -27,7 +27,7 @@ const LARGEST_CLICKED_DEG: f64 = 89.9;
 /// The plot as the diagram draws it for an export (curves, landmarks, cursor, legend, values,
 /// source), painted across the panel; the θi clicked or dragged to on it, if any.
 fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) -> Option<f64> {
-    let face = Typeface::egui_default().ok()?;
+    let face = Typeface::egui_default();
     let width = ui.available_width();
     // Room under the plot for the landmarks in words; in a narrow strip, as tall as its words
     // need (the panel scrolls).

@@ -470,7 +470,7 @@ fn check_label_contrast(
 
 /// The interface diagram as the window drew it, with its labels checked.
 fn audit_diagram(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>) {
-    let face = Typeface::egui_default().unwrap();
+    let face = Typeface::egui_default();
     let rect = canvas_rect(h);
     let size = GVec2::new(rect.width(), rect.height());
     let explorer = h.state();
@@ -558,7 +558,7 @@ fn audit_diagram(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<Strin
 /// The Scenes canvas as the window drew it, with its labels checked against the hit markers
 /// and handles.
 fn audit_scene(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>) {
-    let face = Typeface::egui_default().unwrap();
+    let face = Typeface::egui_default();
     let rect = canvas_rect(h);
     let scenes = h.state().scenes();
     let layout = SceneLayout::for_scene(
@@ -915,7 +915,7 @@ fn russian_keeps_the_layout_rules() {
 fn the_audit_finds_what_it_looks_for() {
     // The checks themselves: a label on an arrowhead, on a handle, on another label, or out
     // of the canvas is found.
-    let face = Typeface::egui_default().unwrap();
+    let face = Typeface::egui_default();
     let canvas = Rect::from_min_size(GVec2::ZERO, GVec2::new(200.0, 100.0));
     let label = |text: &str, at: GVec2| Label {
         text: text.to_owned(),

@@ -451,7 +451,7 @@ mod tests {
             row("stable", "f64", 3.0, 1.2),
             row("seed", "f32", 1.5, 900.0),
         ]);
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let dark = Palette::new(crate::palette::Theme::HighContrastDark, true);
         let shapes = primitives(&report, Vec2::new(800.0, 500.0), &face, &dark);
         assert!(
@@ -498,7 +498,7 @@ mod tests {
         .map(|(v, p, ns, err)| row(v, p, ns, err))
         .collect();
         let report = report(rows);
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         for locale in refraction_i18n::Locale::ALL {
             refraction_i18n::set_locale(locale);
             for size in [

@@ -259,7 +259,7 @@ mod tests {
                 ]
             })
             .collect();
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let size = Vec2::new(480.0, height(&points, 480.0));
         let drawn = primitives(&points, size, &face, &Palette::STANDARD);
         let words = texts(&drawn);
@@ -304,7 +304,7 @@ mod tests {
 
     #[test]
     fn a_log_without_judged_lines_says_so() {
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let drawn = primitives(&[], Vec2::new(300.0, 200.0), &face, &Palette::STANDARD);
         assert_eq!(texts(&drawn), ["No line was judged."]);
     }

@@ -9,14 +9,7 @@ use std::sync::OnceLock;
 use glam::Vec2;
 use skrifa::instance::{LocationRef, Size};
 use skrifa::outline::{DrawSettings, OutlinePen};
-use skrifa::raw::ReadError;
 use skrifa::{FontRef, GlyphId, MetadataProvider as _};
-
-/// The embedded font could not be read: a broken build, never bad input.
-#[derive(Debug, thiserror::Error)]
-// untranslated: a broken build's message for developers, never caused by a user.
-#[error("cannot read the embedded font: {0}")]
-pub struct FontError(ReadError);
 
 /// A font at hand for measuring and outlining labels.
 pub struct Typeface {
@@ -101,14 +94,19 @@ impl<P: OutlinePen> OutlinePen for Placed<'_, P> {
 }
 
 impl Typeface {
-    /// egui's default proportional font.
+    /// egui's default proportional font. It is compiled in, so a build that runs has it: no
+    /// caller needs a fallback.
     ///
-    /// # Errors
-    /// The embedded font cannot be read (a broken build).
-    pub fn egui_default() -> Result<Self, FontError> {
-        let font = FontRef::new(epaint_default_fonts::UBUNTU_LIGHT).map_err(FontError)?;
+    /// # Panics
+    /// Only in a broken build, whose compiled-in font is not a font (this module's tests read
+    /// it).
+    #[must_use]
+    pub fn egui_default() -> Self {
+        let font = FontRef::new(epaint_default_fonts::UBUNTU_LIGHT)
+            // untranslated: a broken build's message for developers, never caused by a user.
+            .expect("egui's default font is compiled in and is a font");
         let metrics = METRICS.get_or_init(|| read_metrics(&font));
-        Ok(Self { font, metrics })
+        Self { font, metrics }
     }
 
     fn glyph(&self, ch: char) -> GlyphId {
@@ -212,18 +210,8 @@ mod tests {
     }
 
     #[test]
-    fn an_unreadable_font_says_so() {
-        let broken = FontRef::new(&[0; 4]).map(|_| ()).map_err(FontError);
-        let message = broken.unwrap_err().to_string();
-        assert!(
-            message.starts_with("cannot read the embedded font: "),
-            "{message}"
-        );
-    }
-
-    #[test]
     fn the_labels_characters_are_in_the_font_and_measure_sensibly() {
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         for ch in "θμ°−√·²±≥ΔabWNT()".chars() {
             assert!(face.covers(ch), "{ch}");
         }

@@ -568,7 +568,7 @@ mod tests {
     fn no_text_covers_another_wide_or_narrow_in_any_language() {
         // Issue 22: in "Glass → air beyond θc" the landmarks' names merged and their own
         // lines struck them through.
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let plot_of = || FresnelPlot::of(&state(DVec3::new(0.8, -0.6, 0.0), 1.5, 1.0));
         for locale in refraction_i18n::Locale::ALL {
             refraction_i18n::set_locale(locale);
@@ -597,7 +597,7 @@ mod tests {
     fn the_view_names_its_landmarks_and_its_source_and_maps_x_to_angles() {
         let plot = FresnelPlot::of(&state(DVec3::new(0.3, -0.9, 0.0), 1.5, 1.0));
         let size = Vec2::new(1280.0, 720.0);
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let primitives = primitives(&plot, size, &face, &Palette::new(Theme::Standard, false));
         let texts = texts(&primitives);
         for wanted in [

@@ -112,7 +112,7 @@ const BANNER_MARGIN: f32 = 0.6;
 fn layout_with_banner(
     size: Vec2,
     text: &str,
-    face: Option<&Typeface>,
+    face: &Typeface,
     index_scale: bool,
 ) -> (Layout, String) {
     let layout = Layout::new(size);
@@ -120,9 +120,6 @@ fn layout_with_banner(
         layout
     } else {
         layout.without_scale()
-    };
-    let Some(face) = face else {
-        return (layout, text.to_owned());
     };
     let font = layout.font;
     let room = layout.banner.size().x - 2.0 * font * BANNER_MARGIN;
@@ -154,7 +151,6 @@ struct DiagramBuilder<'a> {
     state: &'a ExplorerState,
     overlay: &'a Overlay,
     palette: Palette,
-    face: Option<Typeface>,
     shapes: Vec<Figure>,
     /// Labels wait here, with their rank, to be placed last and on top.
     labels: Vec<(Rank, Label)>,
@@ -240,13 +236,8 @@ impl DiagramBuilder<'_> {
     fn finish(mut self, handles: &[Handle]) -> (Vec<Figure>, Vec<Label>) {
         let mut labels = core::mem::take(&mut self.labels);
         labels.sort_by_key(|(rank, _)| *rank);
-        let Some(face) = self.face.as_ref() else {
-            // No font (a broken build): nothing can be measured, so nothing is moved.
-            self.shapes
-                .extend(labels.into_iter().map(|(_, l)| Figure::Text(l)));
-            return (self.shapes, Vec::new());
-        };
-        let mut placer = Placer::new(face);
+        let face = Typeface::egui_default();
+        let mut placer = Placer::new(&face);
         self.avoid_figures(&mut placer, handles);
         let drawing = self.layout.drawing;
         let below_banner = Rect {
@@ -880,10 +871,9 @@ impl Diagram {
     #[must_use]
     pub fn with_overlay(state: &ExplorerState, size: Vec2, overlay: &Overlay) -> Self {
         let r = state.refraction();
-        let face = Typeface::egui_default().ok();
+        let face = Typeface::egui_default();
         let summary = summary(state, overlay.hide_answer);
-        let (layout, banner) =
-            layout_with_banner(size, &summary, face.as_ref(), overlay.index_scale);
+        let (layout, banner) = layout_with_banner(size, &summary, &face, overlay.index_scale);
         let layout = layout.panned(overlay.pan_zoom);
         let palette = overlay.palette;
         let mut b = DiagramBuilder {
@@ -891,7 +881,6 @@ impl Diagram {
             state,
             overlay,
             palette,
-            face,
             labels: Vec::new(),
             rank: Rank::Media,
             shapes: vec![Figure::Fill {
@@ -1303,7 +1292,7 @@ mod tests {
 
     #[test]
     fn every_label_fits_on_small_and_large_canvases() {
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let mut tir = ExplorerState::default();
         tir.set_mu_i(1.5).unwrap();
         tir.set_mu_t(1.0).unwrap();
@@ -1330,7 +1319,7 @@ mod tests {
         // Issue 22: "θt" and "a·W" washed out T and W; in the normal-incidence lesson three
         // labels hid T.
         use refraction_model::Lesson;
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let sizes = [
             Vec2::new(500.0, 560.0),
             Vec2::new(760.0, 520.0),

@@ -558,7 +558,7 @@ mod tests {
     #[test]
     fn a_label_breaks_between_words_and_a_page_inside_a_word_too_long() {
         // Issue 32: a diagram's label read "преломляет/ся", broken inside the word.
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let narrow = face.width("преломля", 14.0);
         let wrapped = wrap(&face, "знак преломляется", 14.0, narrow);
         assert_eq!(wrapped, "знак\nпреломляется");
@@ -611,7 +611,7 @@ mod tests {
 
     #[test]
     fn a_label_with_room_stays_at_its_anchor() {
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let mut placer = Placer::new(&face);
         let placed = placer.place(label("T", Vec2::new(50.0, 50.0)), &canvas(), Need::Optional);
         assert_eq!(placed.unwrap(), (label("T", Vec2::new(50.0, 50.0)), None));
@@ -619,7 +619,7 @@ mod tests {
 
     #[test]
     fn a_label_moves_off_an_arrowhead_and_into_the_canvas() {
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let mut placer = Placer::new(&face);
         let head = vec![
             Vec2::new(45.0, 45.0),
@@ -649,7 +649,7 @@ mod tests {
 
     #[test]
     fn a_label_with_no_room_is_left_out_not_overlapped() {
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let mut placer = Placer::new(&face);
         placer.avoid(Obstacle::Box(canvas()));
         let placement = placer.place_all([(
@@ -681,7 +681,7 @@ mod tests {
 
     #[test]
     fn a_label_stays_off_a_shaft_and_goes_farther_with_a_leader_when_nothing_near_is_free() {
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let mut placer = Placer::new(&face);
         // A thick ray across the canvas through the anchor.
         let shaft = Obstacle::Shaft {
@@ -746,7 +746,7 @@ mod tests {
 
     #[test]
     fn wrapping_keeps_every_line_inside_the_width() {
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let text = "k = -0.25 < 0: no real root for b, no refracted ray; all light is reflected";
         let wrapped = wrap(&face, text, 14.0, 200.0);
         assert!(wrapped.lines().count() > 1);
@@ -788,7 +788,7 @@ mod tests {
                 1..25,
             ),
         ) {
-            let face = Typeface::egui_default().unwrap();
+            let face = Typeface::egui_default();
             let mut placer = Placer::new(&face);
             for o in &obstacles {
                 placer.avoid(o.clone());

@@ -460,7 +460,7 @@ mod tests {
 
     #[test]
     fn a_legend_row_wraps_its_entries_and_a_long_one_wraps_its_words() {
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let entry = |text: &str| LegendEntry {
             sample: Sample::Marker(MarkerStyle {
                 shape: Marker::Circle,

@@ -112,14 +112,14 @@ impl SceneLayout {
     #[must_use]
     pub fn for_scene(scene: &Scene, trace: &Trace, size: Vec2) -> Self {
         let layout = Self::new(trace.bounds, size);
-        let face = Typeface::egui_default().ok();
+        let face = Typeface::egui_default();
         let rows = banner_rows(scene, trace, layout.font, &Palette::STANDARD);
         let room = layout.banner_room();
         let lines: f32 = rows
             .iter()
             .map(|(pieces, size)| {
-                let count = flow(face.as_ref(), pieces, *size, room).len();
-                count as f32 * line_height(face.as_ref(), *size)
+                let count = flow(&face, pieces, *size, room).len();
+                count as f32 * face.line_height(*size)
             })
             .sum();
         let height = lines + layout.font * BANNER_PAD * 2.0;
@@ -274,19 +274,6 @@ impl SceneLayout {
 const BANNER_MARGIN: f32 = 0.6;
 const BANNER_PAD: f32 = 0.3;
 
-/// The extent of a label's text (estimated if the font is missing, which only a broken build
-/// can cause).
-fn measure(face: Option<&Typeface>, text: &str, size: f32) -> Vec2 {
-    face.map_or_else(
-        || Vec2::new(text.chars().count() as f32 * size * 0.55, size * 1.2),
-        |face| face.measure(text, size),
-    )
-}
-
-fn line_height(face: Option<&Typeface>, size: f32) -> f32 {
-    face.map_or(size * 1.2, |face| face.line_height(size))
-}
-
 /// One run of text of one colour on a banner line, starting `x` pixels from the margin.
 struct Run {
     text: String,
@@ -295,18 +282,13 @@ struct Run {
 }
 
 /// Coloured pieces of text laid out in lines `room` pixels wide, broken between words.
-fn flow(
-    face: Option<&Typeface>,
-    pieces: &[(String, Colour)],
-    size: f32,
-    room: f32,
-) -> Vec<Vec<Run>> {
+fn flow(face: &Typeface, pieces: &[(String, Colour)], size: f32, room: f32) -> Vec<Vec<Run>> {
     let mut lines: Vec<Vec<Run>> = vec![Vec::new()];
     let mut x = 0.0;
     for (text, colour) in pieces {
         for word in text.split_inclusive(' ') {
-            let width = measure(face, word, size).x;
-            let inked = measure(face, word.trim_end(), size).x;
+            let width = face.measure(word, size).x;
+            let inked = face.measure(word.trim_end(), size).x;
             if x > 0.0 && x + inked > room {
                 lines.push(Vec::new());
                 x = 0.0;
@@ -436,7 +418,7 @@ struct ScenePictureBuilder<'a> {
     /// The shapes' outlines: a label over one would hide a face or a surface, so labels keep
     /// off them where they can.
     faces: Vec<(Vec2, Vec2)>,
-    face: Option<Typeface>,
+    face: Typeface,
     out: Vec<Primitive>,
 }
 
@@ -494,12 +476,8 @@ impl ScenePictureBuilder<'_> {
     /// nearest free spot is far; none is left out (a scene's labels name what it teaches).
     fn place(&mut self, handles: &[SceneHandle]) -> Vec<Label> {
         let labels = core::mem::take(&mut self.labels);
-        let Some(face) = self.face.as_ref() else {
-            // No font (a broken build): nothing can be measured, so nothing is moved.
-            self.out.extend(labels.into_iter().map(Primitive::Text));
-            return Vec::new();
-        };
-        let mut placer = Placer::new(face);
+        let face = Typeface::egui_default();
+        let mut placer = Placer::new(&face);
         for p in &self.out[self.marks_from..] {
             match p {
                 Primitive::Disc { center, radius, .. } => placer.avoid(Obstacle::Disc {
@@ -802,7 +780,7 @@ impl ScenePictureBuilder<'_> {
         let room = self.layout.banner_room();
         let mut y = banner.min.y + font * BANNER_PAD;
         for (pieces, size) in banner_rows(scene, trace, font, &self.palette) {
-            for line in flow(self.face.as_ref(), &pieces, size, room) {
+            for line in flow(&self.face, &pieces, size, room) {
                 for run in line {
                     self.out.push(Primitive::Text(Label {
                         text: run.text,
@@ -814,7 +792,7 @@ impl ScenePictureBuilder<'_> {
                         background: None,
                     }));
                 }
-                y += line_height(self.face.as_ref(), size);
+                y += self.face.line_height(size);
             }
         }
         format!("{}: {}", title(scene), counts_text(&trace.counts))
@@ -1006,7 +984,7 @@ impl ScenePicture {
             rays_from: 0,
             faces: Vec::new(),
             marks_from: 0,
-            face: Typeface::egui_default().ok(),
+            face: Typeface::egui_default(),
             out: Vec::with_capacity(trace.segments.len() + trace.hits.len() / 4 + 64),
         };
         let handles = layout.handles(scene);
@@ -1143,7 +1121,7 @@ mod tests {
     fn a_scenes_labels_lie_off_its_rays() {
         // Issue 22: "F2 flint" covered the prism's fan, "BK7" the lens's converging rays,
         // "cladding" lay inside the core.
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         for name in [
             "dispersing-prism",
             "lens",
@@ -1340,7 +1318,7 @@ mod tests {
 
     #[test]
     fn every_scene_draws_with_every_label_inside_the_canvas() {
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         for info in refraction_scene::catalogue() {
             let (scene, trace) = traced(info.name);
             for size in [Vec2::new(640.0, 360.0), Vec2::new(1920.0, 1080.0)] {

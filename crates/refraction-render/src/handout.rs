@@ -308,10 +308,9 @@ fn fonts() -> Arc<usvg::fontdb::Database> {
 /// `pages` as one PDF document titled `title`.
 ///
 /// # Errors
-/// The embedded font cannot be read, or a page cannot be converted (a broken build: the pages
-/// are the project's own SVG).
+/// A page cannot be converted (a broken build: the pages are the project's own SVG).
 pub fn pdf(title: &str, pages: &[Page<'_>]) -> Result<Vec<u8>, RenderError> {
-    let face = Typeface::egui_default()?;
+    let face = Typeface::egui_default();
     let mut options = usvg::Options {
         fontdb: fonts(),
         ..usvg::Options::default()
@@ -433,7 +432,7 @@ mod tests {
     #[test]
     fn one_long_word_is_broken_into_lines_and_cut_at_the_page_s_foot() {
         // Issue 31: one 200,000-character word held a handout for 85 s.
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let word = "x".repeat(200_000);
         let page = Page {
             heading: "Deck · 1 / 1".to_owned(),
@@ -469,7 +468,7 @@ mod tests {
 
     #[test]
     fn the_diagram_fills_the_page_and_its_words_are_nine_points_or_more() {
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let page = |notes: &str, writing_lines: bool| Page {
             heading: "Deck · 1 / 2".to_owned(),
             title: "A step".to_owned(),

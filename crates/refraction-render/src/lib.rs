@@ -16,7 +16,7 @@ use glam::Vec2;
 use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Transform};
 
 use crate::format::ImageFormat;
-use refraction_diagram::font::{FontError, Typeface};
+use refraction_diagram::font::Typeface;
 use refraction_diagram::geometry::Colour;
 use refraction_diagram::{Diagram, Overlay, Primitive, SceneLayout, ScenePicture};
 use refraction_files::write_atomically;
@@ -46,9 +46,6 @@ pub enum RenderError {
         /// Requested height.
         height: u32,
     },
-    /// The embedded font could not be read.
-    #[error(transparent)]
-    Font(#[from] FontError),
     /// PNG encoding failed; the encoder's message.
     #[error("cannot encode the PNG: {0}")]
     Encode(String),
@@ -183,7 +180,7 @@ pub fn check_size(width: u32, height: u32) -> Result<(), RenderError> {
 /// A `width` × `height` pixmap with `primitives` drawn on it in order.
 ///
 /// # Errors
-/// A size outside [`SIZE_LIMITS`], or an unreadable embedded font.
+/// A size outside [`SIZE_LIMITS`].
 pub(crate) fn draw_primitives(
     width: u32,
     height: u32,
@@ -191,7 +188,7 @@ pub(crate) fn draw_primitives(
 ) -> Result<Pixmap, RenderError> {
     check_size(width, height)?;
     let mut pixmap = Pixmap::new(width, height).ok_or(RenderError::BadSize { width, height })?;
-    let face = Typeface::egui_default()?;
+    let face = Typeface::egui_default();
     for primitive in primitives(Vec2::new(width as f32, height as f32), &face) {
         draw(&mut pixmap, &face, &primitive);
     }
@@ -246,8 +243,7 @@ impl Picture<'_> {
 /// `picture` drawn on a `width` × `height` pixmap.
 ///
 /// # Errors
-/// A size outside [`SIZE_LIMITS`] (checked before a scene is traced), or an unreadable
-/// embedded font.
+/// A size outside [`SIZE_LIMITS`] (checked before a scene is traced).
 pub fn pixmap(picture: Picture<'_>, (width, height): (u32, u32)) -> Result<Pixmap, RenderError> {
     draw_primitives(width, height, |size, face| picture.primitives(size, face))
 }

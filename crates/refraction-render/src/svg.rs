@@ -322,7 +322,7 @@ fn draw_group(
 /// draws them into pixels, its labels written as `labels` says.
 ///
 /// # Errors
-/// A size outside [`crate::SIZE_LIMITS`], or an unreadable embedded font.
+/// A size outside [`crate::SIZE_LIMITS`].
 pub fn document(
     width: u32,
     height: u32,
@@ -330,7 +330,7 @@ pub fn document(
     primitives: impl FnOnce(Vec2, &Typeface) -> Vec<Primitive>,
 ) -> Result<String, RenderError> {
     check_size(width, height)?;
-    let face = Typeface::egui_default()?;
+    let face = Typeface::egui_default();
     let primitives = primitives(Vec2::new(width as f32, height as f32), &face);
     let mut out = format!(
         "{}width=\"{width}\" height=\"{height}\" viewBox=\"0 0 {width} {height}\">\n",
@@ -380,7 +380,7 @@ mod tests {
     #[test]
     fn an_outlined_label_is_glyph_paths_inside_its_box_named_by_its_words() {
         // Issue 32: librsvg ignores textLength, so text in a missing font ran out of its box.
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let mut out = String::new();
         let label = Label {
             text: "θi = 40°\nW & N".to_owned(),

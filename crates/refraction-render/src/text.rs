@@ -47,7 +47,7 @@ mod tests {
 
     #[test]
     fn ink_makes_a_path_and_spaces_do_not() {
-        let face = Typeface::egui_default().unwrap();
+        let face = Typeface::egui_default();
         let path = outline(&face, "T", Vec2::new(10.0, 10.0), 20.0).unwrap();
         assert!(path.bounds().left() >= 10.0 && path.bounds().top() >= 10.0);
         assert!(outline(&face, "  ", Vec2::ZERO, 20.0).is_none());

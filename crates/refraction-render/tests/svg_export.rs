@@ -236,7 +236,7 @@ fn on_a_machine_without_the_font_the_labels_keep_their_widths() {
     let tree = usvg::Tree::from_str(&document, &options).unwrap();
     let mut widths = Vec::new();
     laid_out_widths(tree.root(), &mut widths);
-    let face = refraction_diagram::font::Typeface::egui_default().unwrap();
+    let face = refraction_diagram::font::Typeface::egui_default();
     let expected: Vec<(String, f32)> = Diagram::with_overlay(&state, size, &overlay)
         .primitives()
         .iter()

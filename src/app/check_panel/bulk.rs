@@ -293,7 +293,8 @@ impl Table {
             .map
             .as_ref()
             .is_some_and(|(s, p, _)| *s == size && *p == palette);
-        if !fresh && let Ok(face) = Typeface::egui_default() {
+        if !fresh {
+            let face = Typeface::egui_default();
             let drawn = failure_map::primitives(&self.points, size, &face, &palette);
             self.map = Some((size, palette, drawn));
         }
