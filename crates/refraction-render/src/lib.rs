@@ -1,6 +1,6 @@
 //! The diagram off screen. A [`Picture`] (the interface's diagram, a traced scene, a plot, or
 //! any primitives) is drawn by [`pixmap`] with tiny-skia, its labels in egui's own font
-//! ([`text`]); [`still`] gives it as PNG or SVG ([`svg`]) bytes and [`write`] writes it. Animations
+//! ([`text`]); [`still`] gives it as PNG or SVG ([`svg`]) bytes and [`write()`] writes it. Animations
 //! are GIFs ([`animation`]) and a lesson's handout a PDF ([`handout`]); every file is written
 //! atomically ([`refraction_files::write_atomically`]).
 
