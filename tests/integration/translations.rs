@@ -347,6 +347,7 @@ fn interface_sources() -> Vec<PathBuf> {
         "crates/refraction-tools/src/diagnosis/code.rs",
         "crates/refraction-tools/src/api_check/call.rs",
         "crates/refraction-tools/src/api_check/csv.rs",
+        "crates/refraction-tools/src/api_check/error.rs",
         "crates/refraction-tools/src/api_check/mod.rs",
         "crates/refraction-tools/src/api_check/pattern.rs",
         "crates/refraction-tools/src/api_check/record.rs",
