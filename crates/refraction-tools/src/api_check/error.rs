@@ -3,8 +3,6 @@
 //! (`t!`): the lines may be judged on other threads, and the words are made where they are
 //! read (the window in its user's language, `check`'s JSON in English).
 
-use core::fmt;
-
 use glam::DVec3;
 use refraction_i18n::{decimal, t};
 use refraction_kernel::api::Api;
@@ -14,29 +12,34 @@ use super::pattern::{MAX_PATTERN_BYTES, MAX_PATTERN_LINES, MAX_PLACEHOLDERS};
 use crate::error::{JsonError, RequestError, VectorError};
 
 /// Why a `--pattern` cannot be used.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum PatternError {
     /// Longer than [`MAX_PATTERN_BYTES`].
+    #[error("{}", t!("check-pattern-too-long", bytes = *bytes, limit = MAX_PATTERN_BYTES))]
     TooLong {
         /// Its length in bytes.
         bytes: usize,
     },
     /// More than [`MAX_PLACEHOLDERS`] placeholders.
+    #[error("{}", t!("check-pattern-too-many", count = *count, limit = MAX_PLACEHOLDERS))]
     TooManyPlaceholders {
         /// How many it has.
         count: usize,
     },
     /// A record over more than [`MAX_PATTERN_LINES`] lines.
+    #[error("{}", t!("check-pattern-too-many-lines", count = *count, limit = MAX_PATTERN_LINES))]
     TooManyLines {
         /// How many lines it takes.
         count: usize,
     },
     /// A `{` without its `}`.
+    #[error("{}", t!("check-pattern-unclosed", pattern = pattern))]
     Unclosed {
         /// The pattern.
         pattern: String,
     },
     /// A field named twice.
+    #[error("{}", t!("check-pattern-twice", field = *field, pattern = pattern))]
     Twice {
         /// The field.
         field: &'static str,
@@ -44,21 +47,25 @@ pub enum PatternError {
         pattern: String,
     },
     /// Two fields with nothing between them.
+    #[error("{}", t!("check-pattern-adjacent", pattern = pattern))]
     Adjacent {
         /// The pattern.
         pattern: String,
     },
     /// No field at all.
+    #[error("{}", t!("check-pattern-no-field", pattern = pattern))]
     NoField {
         /// The pattern.
         pattern: String,
     },
     /// `{!name}` where `name` is not a flag.
+    #[error("{}", t!("check-pattern-negated-not-flag", field = field))]
     NegatedNotFlag {
         /// The name written.
         field: String,
     },
     /// A placeholder that names none of the dialect's fields.
+    #[error("{}", unknown_in_pattern(field, *dialect))]
     UnknownField {
         /// The name written.
         field: String,
@@ -67,48 +74,20 @@ pub enum PatternError {
     },
 }
 
-impl fmt::Display for PatternError {
-    #[rustfmt::skip] // the t! keys stay where the translation tests find them
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let words = match self {
-            Self::TooLong { bytes } => {
-                t!("check-pattern-too-long", bytes = *bytes, limit = MAX_PATTERN_BYTES)
-            }
-            Self::TooManyPlaceholders { count } => {
-                t!("check-pattern-too-many", count = *count, limit = MAX_PLACEHOLDERS)
-            }
-            Self::TooManyLines { count } => {
-                t!("check-pattern-too-many-lines", count = *count, limit = MAX_PATTERN_LINES)
-            }
-            Self::Unclosed { pattern } => t!("check-pattern-unclosed", pattern = pattern),
-            Self::Twice { field, pattern } => {
-                t!("check-pattern-twice", field = *field, pattern = pattern)
-            }
-            Self::Adjacent { pattern } => t!("check-pattern-adjacent", pattern = pattern),
-            Self::NoField { pattern } => t!("check-pattern-no-field", pattern = pattern),
-            Self::NegatedNotFlag { field } => t!("check-pattern-negated-not-flag", field = field),
-            Self::UnknownField { field, dialect } => {
-                let (api, listed) = (dialect.name(), fields::listed(*dialect));
-                t!("check-pattern-unknown-field", field = field, api = api, expected = listed)
-            }
-        };
-        f.write_str(&words)
-    }
-}
-
-impl core::error::Error for PatternError {}
-
 /// Why a CSV line, or the header naming its columns, cannot be read.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum CsvError {
     /// A quote opened and never closed.
+    #[error("{}", t!("check-csv-unclosed-quote"))]
     UnclosedQuote,
     /// The header names a column twice.
+    #[error("{}", t!("check-csv-duplicate-column", column = column))]
     DuplicateColumn {
         /// The heading.
         column: String,
     },
     /// The header lacks a column the line needs.
+    #[error("{}", no_column(field, names, *dialect))]
     NoColumn {
         /// The field without a column.
         field: &'static str,
@@ -118,6 +97,7 @@ pub enum CsvError {
         dialect: Dialect,
     },
     /// The header has some of a vector's components and not all three.
+    #[error("{}", t!("check-csv-partial-vector", field = *field, count = *count))]
     PartialVector {
         /// The vector field.
         field: &'static str,
@@ -125,6 +105,7 @@ pub enum CsvError {
         count: usize,
     },
     /// A line with another number of cells than the header has columns.
+    #[error("{}", t!("check-csv-cells", count = *count, columns = *columns))]
     Cells {
         /// The line's cells.
         count: usize,
@@ -132,29 +113,6 @@ pub enum CsvError {
         columns: usize,
     },
 }
-
-impl fmt::Display for CsvError {
-    #[rustfmt::skip] // the t! keys stay where the translation tests find them
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let words = match self {
-            Self::UnclosedQuote => t!("check-csv-unclosed-quote"),
-            Self::DuplicateColumn { column } => t!("check-csv-duplicate-column", column = column),
-            Self::NoColumn { field, names, dialect } => {
-                let expected = fields::listed(*dialect);
-                t!("check-csv-no-column", field = *field, names = names, expected = expected)
-            }
-            Self::PartialVector { field, count } => {
-                t!("check-csv-partial-vector", field = *field, count = *count)
-            }
-            Self::Cells { count, columns } => {
-                t!("check-csv-cells", count = *count, columns = *columns)
-            }
-        };
-        f.write_str(&words)
-    }
-}
-
-impl core::error::Error for CsvError {}
 
 /// What a missing argument is, in the message that names it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -184,28 +142,34 @@ impl Role {
 
 /// Why one line of `check` (a call of an API, or any renderer's refraction) cannot be judged.
 /// A field is named as the line wrote it.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum LineError {
     /// Not JSON, in a JSON Lines input.
-    Json(JsonError),
+    #[error(transparent)]
+    Json(#[from] JsonError),
     /// JSON that is not an object.
+    #[error("{}", t!("check-json-not-object", fields = fields::listed(*dialect)))]
     NotAnObject {
         /// Whose fields were expected.
         dialect: Dialect,
     },
     /// A pattern or CSV header's name for a field the dialect does not have.
+    #[error("{}", t!("check-unknown-field", field = field))]
     UnknownField {
         /// The name.
         field: String,
     },
     /// A field's text that is not a number or a vector.
+    #[error("`{field}`: {error}")]
     Text {
         /// The field.
         field: String,
         /// Why the text cannot be read.
+        #[source]
         error: VectorError,
     },
     /// A flag's text that is not true/false or 1/0.
+    #[error("{}", t!("check-field-not-flag-got", field = field, text = text))]
     NotFlagText {
         /// The field.
         field: String,
@@ -213,11 +177,13 @@ pub enum LineError {
         text: String,
     },
     /// A JSON field that must be a number.
+    #[error("{}", t!("check-field-not-number-json", field = field))]
     NotNumber {
         /// The field.
         field: String,
     },
     /// A JSON array with other than three numbers.
+    #[error("{}", t!("check-field-not-three", field = field, count = *count))]
     NotThree {
         /// The field.
         field: String,
@@ -225,26 +191,31 @@ pub enum LineError {
         count: usize,
     },
     /// A JSON vector field that is neither an array nor a string.
+    #[error("{}", t!("check-field-not-a-vector", field = field))]
     NotAVector {
         /// The field.
         field: String,
     },
     /// A JSON flag that is neither a boolean, a number nor a string.
+    #[error("{}", t!("check-field-not-flag", field = field))]
     NotFlag {
         /// The field.
         field: String,
     },
     /// A JSON label that is neither a string nor a number.
+    #[error("{}", t!("check-field-not-label", field = field))]
     NotLabel {
         /// The field.
         field: String,
     },
     /// A field read as something else than the 3 numbers it must be.
+    #[error("{}", t!("check-field-not-vector", field = field))]
     NotVector {
         /// The field.
         field: String,
     },
     /// A required argument is absent.
+    #[error("{}", t!("check-field-missing", field = field, what = role.words()))]
     Missing {
         /// The field.
         field: String,
@@ -252,6 +223,7 @@ pub enum LineError {
         role: Role,
     },
     /// An argument vector with a component NaN or infinite.
+    #[error("{}", t!("check-field-not-finite", field = field, value = value.to_string()))]
     NotFinite {
         /// The field.
         field: String,
@@ -259,11 +231,13 @@ pub enum LineError {
         value: DVec3,
     },
     /// An argument vector that is zero.
+    #[error("{}", t!("check-field-zero-vector", field = field))]
     ZeroVector {
         /// The field.
         field: String,
     },
     /// An index or ratio that is not a finite number > 0.
+    #[error("{}", t!("check-field-not-positive", field = field, value = decimal(&value.to_string())))]
     NotPositive {
         /// The field.
         field: String,
@@ -271,15 +245,19 @@ pub enum LineError {
         value: f64,
     },
     /// `from` without `to`, or `to` without `from`.
+    #[error("{}", t!("check-from-and-to-together"))]
     FromAndToApart,
     /// A `travel` that is not a finite non-zero vector.
+    #[error("{}", t!("check-travel-not-finite"))]
     TravelNotFinite,
     /// The result is null although the call says it returned one.
+    #[error("{}", t!("check-result-null", field = *field, returned = fields::RETURNED))]
     ResultNull {
         /// The result's field.
         field: &'static str,
     },
     /// What the call returned is absent.
+    #[error("{}", t!("check-result-missing", field = *field, api = api.name()))]
     ResultMissing {
         /// The result's field.
         field: &'static str,
@@ -287,22 +265,28 @@ pub enum LineError {
         api: Api,
     },
     /// A `precision` that is not `f32` or `f64`.
+    #[error("{}", t!("check-unknown-precision", text = text))]
     UnknownPrecision {
         /// The text.
         text: String,
     },
     /// A `convention` that is not `along_ray` or `toward_origin`.
+    #[error("{}", t!("check-physics-unknown-convention", text = text))]
     UnknownConvention {
         /// The text.
         text: String,
     },
     /// Any renderer's line without the indices on either side.
+    #[error("{}", t!("check-physics-no-indices"))]
     NoIndices,
     /// `--paths` and a hit without its `path`.
+    #[error("{}", NO_PATH)]
     NoPath,
     /// A call judged without an API: a caller's mistake, never a user's.
+    #[error("{}", NO_API)]
     NoApi,
     /// An argument too large for the student's precision.
+    #[error("{}", t!("check-too-large", value = format!("{value:e}"), precision = *precision))]
     TooLarge {
         /// The argument.
         value: f64,
@@ -310,14 +294,18 @@ pub enum LineError {
         precision: &'static str,
     },
     /// A CSV line that cannot be read.
-    Csv(CsvError),
+    #[error(transparent)]
+    Csv(#[from] CsvError),
     /// A CSV line after a header that could not be used.
-    NoHeader(CsvError),
+    #[error("{}", t!("check-csv-no-header", reason = .0.to_string()))]
+    NoHeader(#[source] CsvError),
     /// A log line, or lines gathered, that the pattern does not match (under `--strict`).
+    #[error("{}", t!("check-line-not-matching"))]
     NotMatching,
     /// The refraction problem of any renderer's line is refused (a zero vector, an index that
     /// is not positive).
-    Request(RequestError),
+    #[error(transparent)]
+    Request(#[from] RequestError),
 }
 
 /// [`LineError::NoPath`]'s words.
@@ -328,96 +316,28 @@ const NO_PATH: &str = "missing field `path` (the ray this hit belongs to, with -
 // untranslated: a programmer's mistake, never a user's
 const NO_API: &str = "a call needs an API: judge any renderer's lines with physics";
 
-impl fmt::Display for LineError {
-    #[rustfmt::skip] // the t! keys stay where the translation tests find them
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let words = match self {
-            Self::Json(error) => return error.fmt(f),
-            Self::Text { field, error } => return write!(f, "`{field}`: {error}"),
-            Self::Csv(error) => return error.fmt(f),
-            Self::Request(error) => return error.fmt(f),
-            Self::NotAnObject { dialect } => {
-                t!("check-json-not-object", fields = fields::listed(*dialect))
-            }
-            Self::UnknownField { field } => t!("check-unknown-field", field = field),
-            Self::NotFlagText { field, text } => {
-                t!("check-field-not-flag-got", field = field, text = text)
-            }
-            Self::NotNumber { field } => t!("check-field-not-number-json", field = field),
-            Self::NotThree { field, count } => {
-                t!("check-field-not-three", field = field, count = *count)
-            }
-            Self::NotAVector { field } => t!("check-field-not-a-vector", field = field),
-            Self::NotFlag { field } => t!("check-field-not-flag", field = field),
-            Self::NotLabel { field } => t!("check-field-not-label", field = field),
-            Self::NotVector { field } => t!("check-field-not-vector", field = field),
-            Self::Missing { field, role } => {
-                t!("check-field-missing", field = field, what = role.words())
-            }
-            Self::NotFinite { field, value } => {
-                t!("check-field-not-finite", field = field, value = value.to_string())
-            }
-            Self::ZeroVector { field } => t!("check-field-zero-vector", field = field),
-            Self::NotPositive { field, value } => {
-                t!("check-field-not-positive", field = field, value = decimal(&value.to_string()))
-            }
-            Self::FromAndToApart => t!("check-from-and-to-together"),
-            Self::TravelNotFinite => t!("check-travel-not-finite"),
-            Self::ResultNull { field } => {
-                t!("check-result-null", field = *field, returned = fields::RETURNED)
-            }
-            Self::ResultMissing { field, api } => {
-                t!("check-result-missing", field = *field, api = api.name())
-            }
-            Self::UnknownPrecision { text } => t!("check-unknown-precision", text = text),
-            Self::UnknownConvention { text } => {
-                t!("check-physics-unknown-convention", text = text)
-            }
-            Self::NoIndices => t!("check-physics-no-indices"),
-            Self::NoPath => return f.write_str(NO_PATH),
-            Self::NoApi => return f.write_str(NO_API),
-            Self::TooLarge { value, precision } => {
-                t!("check-too-large", value = format!("{value:e}"), precision = *precision)
-            }
-            Self::NoHeader(error) => t!("check-csv-no-header", reason = error.to_string()),
-            Self::NotMatching => t!("check-line-not-matching"),
-        };
-        f.write_str(&words)
-    }
-}
-
-impl core::error::Error for LineError {
-    fn source(&self) -> Option<&(dyn core::error::Error + 'static)> {
-        match self {
-            Self::Json(error) => Some(error),
-            Self::Text { error, .. } => Some(error),
-            Self::Csv(error) | Self::NoHeader(error) => Some(error),
-            Self::Request(error) => Some(error),
-            _ => None,
-        }
-    }
-}
-
-impl From<JsonError> for LineError {
-    fn from(error: JsonError) -> Self {
-        Self::Json(error)
-    }
-}
-
-impl From<CsvError> for LineError {
-    fn from(error: CsvError) -> Self {
-        Self::Csv(error)
-    }
-}
-
-impl From<RequestError> for LineError {
-    fn from(error: RequestError) -> Self {
-        Self::Request(error)
-    }
-}
-
 impl From<refraction_kernel::InputError> for LineError {
     fn from(error: refraction_kernel::InputError) -> Self {
         Self::Request(error.into())
     }
+}
+
+fn unknown_in_pattern(field: &str, dialect: Dialect) -> String {
+    let (api, expected) = (dialect.name(), fields::listed(dialect));
+    t!(
+        "check-pattern-unknown-field",
+        field = field,
+        api = api,
+        expected = expected
+    )
+}
+
+fn no_column(field: &str, names: &str, dialect: Dialect) -> String {
+    let expected = fields::listed(dialect);
+    t!(
+        "check-csv-no-column",
+        field = field,
+        names = names,
+        expected = expected
+    )
 }
