@@ -1,7 +1,8 @@
 //! The refraction explorer's tools, with no window: the JSON Lines of the `solve` and `check`
 //! commands (requests, answers, the verdicts of `check`), `check --api`'s reading of a student's
 //! call in their own API's terms ([`api_check`]: JSON, log patterns, CSV), and the explorer's
-//! state file (one `solve` line). The window's *Check my T* panel calls the same functions, so
+//! state file (one `solve` line), and the code a case or a failing line is written as
+//! ([`snippets`]: a unit test in the student's language). The window's *Check my T* panel calls the same functions, so
 //! the window and the commands agree.
 //! [`answer_lines`] is the loop both commands share: one answer per
 //! non-empty input line, in order, streaming, with bad lines answered rather than fatal.
@@ -12,6 +13,7 @@ pub mod diagnosis;
 pub mod error;
 mod fields;
 pub mod link;
+pub mod snippets;
 pub mod solve;
 pub mod state_file;
 pub mod vector_text;

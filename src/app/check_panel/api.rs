@@ -11,7 +11,6 @@ use glam::DVec3;
 
 use super::refusal::Refusal;
 use super::{Checked, Shown, field, headline, right_t};
-use crate::app::snippets::api::{self as snippets, ApiCase, Language};
 use refraction_diagram::overlay::{StudentRay, VectorNames};
 use refraction_i18n::t;
 use refraction_kernel::Convention;
@@ -22,6 +21,7 @@ use refraction_tools::api_check::call::Got;
 use refraction_tools::api_check::fields::{self, Kind, names};
 use refraction_tools::api_check::record::Value;
 use refraction_tools::api_check::{Call, Diagnosis, Options, Record, check_record};
+use refraction_tools::snippets::api::{self as snippets, ApiCase, Language};
 use refraction_tools::state_file;
 use refraction_tools::vector_text::{spoken, spoken_vector};
 use serde_json::Value as Json;

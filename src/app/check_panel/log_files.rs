@@ -9,12 +9,12 @@ use egui::{RichText, Ui};
 
 use super::refusal::Refusal;
 use crate::app::file_dialog::{self, FileDialog, Purpose, Target};
-use crate::app::snippets::api::{self as api_snippets, Language, Name};
-use crate::app::snippets::{self, AnyCase, AnyLanguage};
 use crate::app::typed::error_label;
 use refraction_i18n::t;
 use refraction_tools::api_check::physics::Case;
 use refraction_tools::api_check::{Dialect, Judgement, Options, Record};
+use refraction_tools::snippets::api::{self as api_snippets, Language, Name};
+use refraction_tools::snippets::{self, AnyCase, AnyLanguage};
 
 /// The most lines judged in the window (a log file can be longer: `check` takes any length).
 pub(super) const MAX_JUDGED: usize = 100_000;
@@ -127,7 +127,7 @@ fn tests_text(
                     yours: case.yours,
                 })
                 .collect();
-            snippets::any_renderer_tests(language, &cases).map_err(Refusal::Tests)?
+            snippets::any_renderer_tests(language, &cases)?
         }
     };
     let mark = language.comment();

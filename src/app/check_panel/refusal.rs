@@ -53,9 +53,6 @@ pub(super) enum Refusal {
         /// Its highest.
         high: f64,
     },
-    /// The tests of any renderer's lines cannot be written (their problem was judged, so this
-    /// does not happen): the snippets' own words.
-    Tests(String),
     /// A test file name without the language's extension.
     TestsExtension {
         /// The file.
@@ -84,7 +81,6 @@ impl fmt::Display for Refusal {
             Self::Check(error) => return error.fmt(f),
             Self::Request(error) => return error.fmt(f),
             Self::Input(error) => return error.fmt(f),
-            Self::Tests(words) => return f.write_str(words),
             Self::Vector { field, error } => return write!(f, "{field}: {error}"),
             Self::NotANumber { field, text } => {
                 t!("check-field-not-number", field = field, text = text.trim())
