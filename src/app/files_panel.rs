@@ -13,8 +13,9 @@ use super::file_dialog::{
 use super::typed::status;
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 use crate::app::link::LinkRow;
-use crate::app::snippets;
 use refraction_model::ExplorerState;
+use refraction_tools::error::RequestError;
+use refraction_tools::snippets;
 use refraction_tools::state_file::{self, LoadError};
 
 /// The file name offered first.
@@ -24,7 +25,7 @@ pub(super) const DEFAULT_PATH: &str = "refraction-state.json";
 /// language) and how to write it.
 type Format = (
     fn() -> String,
-    fn(&refraction_tools::solve::Request) -> Result<String, String>,
+    fn(&refraction_tools::solve::Request) -> Result<String, RequestError>,
 );
 
 /// The copy buttons, in order. The programming languages' names are the same in every language.
@@ -257,7 +258,7 @@ impl FilesPanel {
                             self.copied = Some(text);
                             self.status = Some(Ok(t!("files-copied", what = label)));
                         }
-                        Err(e) => self.status = Some(Err(e)),
+                        Err(e) => self.status = Some(Err(e.to_string())),
                     }
                 }
             }

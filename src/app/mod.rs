@@ -29,7 +29,6 @@ mod readouts;
 mod retrace;
 mod scene_files;
 mod scenes;
-pub mod snippets;
 mod tools;
 mod typed;
 pub mod walkthrough;

@@ -362,7 +362,7 @@ proptest! {
         let mut session = Session::new(Options::new(api), Format::JsonLines, false, false);
         match session.answer(&line) {
             Ok(reply) => assert_api_answer(&reply, &line),
-            Err(message) => prop_assert!(!message.clone().is_empty()),
+            Err(message) => prop_assert!(!message.to_string().is_empty()),
         }
     }
 
@@ -390,7 +390,7 @@ proptest! {
             for log_line in [line.as_str(), noise.as_str()] {
                 match session.answer(log_line) {
                     Ok(reply) => assert_api_answer(&reply, log_line),
-                    Err(message) => prop_assert!(!message.clone().is_empty()),
+                    Err(message) => prop_assert!(!message.to_string().is_empty()),
                 }
             }
             if let Some(summary) = session.finish() {

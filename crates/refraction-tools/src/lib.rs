@@ -1,7 +1,8 @@
 //! The refraction explorer's tools, with no window: the JSON Lines of the `solve` and `check`
 //! commands (requests, answers, the verdicts of `check`), `check --api`'s reading of a student's
 //! call in their own API's terms ([`api_check`]: JSON, log patterns, CSV), and the explorer's
-//! state file (one `solve` line). The window's *Check my T* panel calls the same functions, so
+//! state file (one `solve` line), and the code a case or a failing line is written as
+//! ([`snippets`]: a unit test in the student's language). The window's *Check my T* panel calls the same functions, so
 //! the window and the commands agree.
 //! [`answer_lines`] is the loop both commands share: one answer per
 //! non-empty input line, in order, streaming, with bad lines answered rather than fatal.
@@ -12,6 +13,7 @@ pub mod diagnosis;
 pub mod error;
 mod fields;
 pub mod link;
+pub mod snippets;
 pub mod solve;
 pub mod state_file;
 pub mod vector_text;
@@ -107,12 +109,24 @@ fn next_line(input: &mut impl BufRead, buffer: &mut Vec<u8>) -> io::Result<Next>
 /// line: not part of the text.
 const BYTE_ORDER_MARK: &[u8] = b"\xEF\xBB\xBF";
 
-/// The message for an over-long line `number`.
-fn too_long(number: usize) -> String {
-    format!(
+/// Why [`answer_lines`] answers a line itself, with an error line, before any work on it.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum UnreadLine {
+    /// Longer than [`MAX_LINE_BYTES`]: skipped to its end.
+    #[error(
         "line {number} is longer than 1 MiB ({MAX_LINE_BYTES} bytes), the longest line read: \
          skipped to its end"
-    )
+    )]
+    TooLong {
+        /// The line's number, from 1.
+        number: usize,
+    },
+    /// Not UTF-8 text.
+    #[error("the line is not valid UTF-8 (byte {byte})")]
+    NotUtf8 {
+        /// The first byte that is not, from 1.
+        byte: usize,
+    },
 }
 
 /// The most lines read before they are answered together: enough to keep every core busy for
@@ -131,15 +145,15 @@ struct Item {
     /// Its number, counting every input line from 1.
     number: usize,
     /// Where its bytes lie in the chunk's buffer, or why it has none (too long).
-    bytes: Result<core::ops::Range<usize>, String>,
+    bytes: Result<core::ops::Range<usize>, UnreadLine>,
 }
 
 /// What a worker made of one line.
 enum Outcome<W> {
     /// Blank: no answer.
     Blank,
-    /// Not answerable (not UTF-8, too long): the message of its error line.
-    Bad(String),
+    /// Not answerable (not UTF-8, too long): why, for its error line.
+    Bad(UnreadLine),
     /// The work's result.
     Done(W),
 }
@@ -176,7 +190,7 @@ impl Chunk {
                 _ => &line,
             };
             let bytes = if let Next::TooLong { .. } = next {
-                Err(too_long(*number))
+                Err(UnreadLine::TooLong { number: *number })
             } else {
                 let start = chunk.bytes.len();
                 chunk.bytes.extend_from_slice(text);
@@ -197,15 +211,15 @@ impl Chunk {
         Ok(chunk)
     }
 
-    /// `work` on each line, the lines shared out in order among `threads` threads.
+    /// `work` on each line, the lines shared out in order among `threads` threads, each of
+    /// which speaks the calling thread's language (`work` may word what it finds).
     fn work<W: Send>(&self, threads: usize, work: &(impl Fn(&str) -> W + Sync)) -> Vec<Outcome<W>> {
         let one = |item: &Item| match &item.bytes {
-            Err(message) => Outcome::Bad(message.clone()),
+            Err(unread) => Outcome::Bad(unread.clone()),
             Ok(range) => match core::str::from_utf8(&self.bytes[range.clone()]) {
-                Err(e) => Outcome::Bad(format!(
-                    "the line is not valid UTF-8 (byte {})",
-                    e.valid_up_to() + 1
-                )),
+                Err(e) => Outcome::Bad(UnreadLine::NotUtf8 {
+                    byte: e.valid_up_to() + 1,
+                }),
                 Ok(text) if text.trim().is_empty() => Outcome::Blank,
                 Ok(text) => Outcome::Done(work(text.trim())),
             },
@@ -214,11 +228,17 @@ impl Chunk {
         if threads <= 1 || self.items.len() <= share {
             return self.items.iter().map(one).collect();
         }
+        let locale = refraction_i18n::locale();
         std::thread::scope(|scope| {
             let parts: Vec<_> = self
                 .items
                 .chunks(share)
-                .map(|part| scope.spawn(move || part.iter().map(one).collect::<Vec<_>>()))
+                .map(|part| {
+                    scope.spawn(move || {
+                        refraction_i18n::set_locale(locale);
+                        part.iter().map(one).collect::<Vec<_>>()
+                    })
+                })
                 .collect();
             // A worker panics only if `work` does; pass that on rather than lose lines.
             parts
@@ -269,9 +289,9 @@ pub fn answer_lines<W: Send, E: core::fmt::Display>(
         for (item, outcome) in chunk.items.iter().zip(chunk.work(threads, &work)) {
             let reply = match outcome {
                 Outcome::Blank => continue,
-                Outcome::Bad(message) => {
+                Outcome::Bad(unread) => {
                     refused();
-                    Err(message)
+                    Err(unread.to_string())
                 }
                 Outcome::Done(result) => finish(result).map_err(|e| e.to_string()),
             };
@@ -414,7 +434,7 @@ mod tests {
                 line.parse::<usize>()
                     .map_err(|e| format!("not {line}: {e}"))
             };
-            let finish = |parsed: Result<usize, String>| {
+            let finish = |parsed: Result<usize, _>| {
                 let k = parsed?;
                 order.push(k);
                 Ok::<_, String>(format!("{{\"k\":{k}}}"))

@@ -9,8 +9,8 @@ use std::collections::HashMap;
 use egui::{RichText, Ui};
 use glam::DVec3;
 
+use super::refusal::Refusal;
 use super::{Checked, Shown, field, headline, right_t};
-use crate::app::snippets::api::{self as snippets, ApiCase, Language};
 use refraction_diagram::overlay::{StudentRay, VectorNames};
 use refraction_i18n::t;
 use refraction_kernel::Convention;
@@ -21,6 +21,7 @@ use refraction_tools::api_check::call::Got;
 use refraction_tools::api_check::fields::{self, Kind, names};
 use refraction_tools::api_check::record::Value;
 use refraction_tools::api_check::{Call, Diagnosis, Options, Record, check_record};
+use refraction_tools::snippets::api::{self as snippets, ApiCase, Language};
 use refraction_tools::state_file;
 use refraction_tools::vector_text::{spoken, spoken_vector};
 use serde_json::Value as Json;
@@ -146,7 +147,7 @@ pub(super) struct Judged {
     /// The right arguments for the ray, in the API's convention.
     right: Args<f64>,
     /// The right call as the explorer's state, or why it cannot be drawn.
-    picture: Result<ExplorerState, String>,
+    picture: Result<ExplorerState, Refusal>,
 }
 
 /// The right call in `api`'s convention as the explorer's state, with μ = `mu` drawn by the
@@ -156,17 +157,22 @@ fn picture(
     right: Args<f64>,
     mu: f64,
     from_to: Option<(f64, f64)>,
-) -> Result<ExplorerState, String> {
+) -> Result<ExplorerState, Refusal> {
     let (low, high) = INDEX_RANGE;
     let (mu_i, mu_t) = indices(from_to, mu);
     if ![mu_i, mu_t].iter().all(|x| (low..=high).contains(x)) {
-        let [mu, low, high] = [mu, low, high].map(spoken);
-        return Err(t!("check-picture-outside", mu = mu, low = low, high = high));
+        return Err(Refusal::PictureOutside { mu, low, high });
     }
     let Args {
         incident, normal, ..
     } = right;
-    ExplorerState::new(incident, normal, mu_i, mu_t, convention(api)).map_err(|e| e.to_string())
+    Ok(ExplorerState::new(
+        incident,
+        normal,
+        mu_i,
+        mu_t,
+        convention(api),
+    )?)
 }
 
 impl Judged {
@@ -236,7 +242,7 @@ impl Judged {
         right_t(ui, d.t, spoken_vector);
         let drawn = match &self.picture {
             Ok(state) => self.drawn(state),
-            Err(why) => t!("check-api-not-drawn", why = why),
+            Err(why) => t!("check-api-not-drawn", why = why.to_string()),
         };
         ui.label(drawn);
     }
@@ -323,7 +329,7 @@ impl ApiFields {
 
     /// Reads and judges `api`'s fields (those the panel shows: a pasted line's `path` and
     /// `point` are not kept).
-    pub(super) fn check(&self, api: Api) -> Result<Checked, String> {
+    pub(super) fn check(&self, api: Api) -> Result<Checked, Refusal> {
         let texts = shown_fields(api)
             .into_iter()
             .flatten()

@@ -9,6 +9,7 @@ use egui::{CollapsingHeader, Grid, RichText, Sense, TextEdit, Ui};
 use glam::Vec2;
 
 use super::log_files::{Failing, LogFiles, MAX_JUDGED, MAX_SAVED_FAILING};
+use super::refusal::Refusal;
 use super::{JSON_LINE_START, field};
 use crate::app::paint::{self, verdict_colour, window_palette};
 use crate::app::typed::error_label;
@@ -17,7 +18,8 @@ use refraction_diagram::{Primitive, failure_map};
 use refraction_i18n::t;
 use refraction_model::log_map::LinePoint;
 use refraction_tools::api_check::{
-    Dialect, Format, Judgement, Options, Pattern, Record, SAMPLED, SKIPPED, Session, Tally, fields,
+    Dialect, Format, Judgement, LineError, Options, Pattern, PatternError, Record, SAMPLED,
+    SKIPPED, Session, Tally, fields,
 };
 use refraction_tools::diagnosis::Summary;
 
@@ -42,7 +44,7 @@ struct Row {
     /// Its line number in the log, from 1.
     line: usize,
     /// The call read and its verdict, or why the line could not be judged.
-    verdict: Result<(Record, Judgement), String>,
+    verdict: Result<(Record, Judgement), LineError>,
 }
 
 /// The verdicts on a log's lines and its diagnosis.
@@ -81,13 +83,17 @@ pub(super) struct Bulk {
     text: String,
     reading: Reading,
     files: LogFiles,
-    table: Option<Result<Table, String>>,
+    table: Option<Result<Table, Refusal>>,
     selected: Option<usize>,
 }
 
 /// How the lines are written: by the pattern when one is given, else JSON Lines when the first
 /// line is an object, else CSV with that line as its header.
-fn how_written(dialect: Dialect, pattern: &str, text: &str) -> Result<(Format, String), String> {
+fn how_written(
+    dialect: Dialect,
+    pattern: &str,
+    text: &str,
+) -> Result<(Format, String), PatternError> {
     if !pattern.trim().is_empty() {
         let pattern = Pattern::parse(dialect, pattern.trim())?;
         return Ok((Format::Pattern(pattern), t!("check-read-as-pattern")));
@@ -115,19 +121,22 @@ fn example_pattern(dialect: Dialect) -> String {
 }
 
 /// An index typed into the field named `name`: empty for none, else a finite number above 0.
-fn index(text: &str, name: &str) -> Result<Option<f64>, String> {
+fn index(text: &str, name: &str) -> Result<Option<f64>, Refusal> {
     if text.trim().is_empty() {
         return Ok(None);
     }
     refraction_i18n::read_number(text)
         .filter(|x| x.is_finite() && *x > 0.0)
         .map(Some)
-        .ok_or_else(|| t!("logs-index-invalid", field = name, text = text.trim()))
+        .ok_or_else(|| Refusal::Index {
+            field: name.to_owned(),
+            text: text.to_owned(),
+        })
 }
 
 impl Reading {
     /// The options of a run in `dialect` with the indices typed.
-    fn options(&self, dialect: Dialect) -> Result<Options, String> {
+    fn options(&self, dialect: Dialect) -> Result<Options, Refusal> {
         Ok(Options {
             inside: index(&self.inside, &t!("logs-inside"))?,
             outside: index(&self.outside, &t!("logs-outside"))?,
@@ -149,7 +158,7 @@ impl Reading {
 }
 
 /// Judges every non-empty line of `text` (up to [`MAX_JUDGED`]) in `dialect`.
-fn judge(dialect: Dialect, reading: &Reading, text: &str) -> Result<Table, String> {
+fn judge(dialect: Dialect, reading: &Reading, text: &str) -> Result<Table, Refusal> {
     let options = reading.options(dialect)?;
     let (format, read_as) = how_written(dialect, &reading.pattern, text)?;
     let mut session = Session::new(options, format, false, false);
@@ -326,7 +335,7 @@ impl Table {
                         judgement.explanation().to_owned(),
                     ]
                 }
-                Err(e) => ["✖".to_owned(), t!("check-row-error"), e.clone()],
+                Err(e) => ["✖".to_owned(), t!("check-row-error"), e.to_string()],
             };
             lines.push(format!("{}\t{}", row.line, cells.join("\t")));
         }
@@ -399,7 +408,7 @@ impl Row {
             Err(e) => {
                 ui.label(RichText::new("✖").color(verdict_colour(ui, false)));
                 ui.label(t!("check-row-error"));
-                error_label(ui, &shortened(e));
+                error_label(ui, &shortened(&e.to_string()));
             }
         }
         clicked
@@ -479,7 +488,7 @@ impl Bulk {
         match &mut self.table {
             None => None,
             Some(Err(e)) => {
-                error_label(ui, e);
+                error_label(ui, &e.to_string());
                 None
             }
             Some(Ok(table)) => {
@@ -557,7 +566,15 @@ mod tests {
         assert_eq!(table.rows[0].line, 2);
         assert!(table.rows[0].verdict.is_ok());
         let e = table.rows[1].verdict.as_ref().unwrap_err();
-        assert!(e.contains("2 cells where the header has 4"), "{e}");
+        let cells = refraction_tools::api_check::CsvError::Cells {
+            count: 2,
+            columns: 4,
+        };
+        assert_eq!(*e, LineError::Csv(cells));
+        assert!(
+            e.to_string().contains("2 cells where the header has 4"),
+            "{e}"
+        );
         let log = "start\nLOG (0.6, -0.8, 0) | 0 1 0 | 0.666667 | (0.4, -0.916515, 0)\n";
         let pattern = "LOG {uv} | {n} | {etai_over_etat} | {refracted}";
         let table = judge(Dialect::Api(Api::Rtiow), &reading(pattern), log).unwrap();
@@ -571,7 +588,11 @@ mod tests {
         // Right by the book's rules, but nothing says which side the ray comes from (issue 34).
         assert_eq!(table.summary.diagnosis[0].code, "unchecked");
         let e = judge(Dialect::Api(Api::Rtiow), &reading("LOG {I}"), log).unwrap_err();
-        assert!(e.contains("unknown field {I}"), "{e}");
+        assert!(
+            matches!(&e, Refusal::Pattern(PatternError::UnknownField { field, .. }) if field == "I"),
+            "{e:?}"
+        );
+        assert!(e.to_string().contains("unknown field {I}"), "{e}");
     }
 
     #[test]
@@ -622,6 +643,10 @@ mod tests {
         assert_eq!(table.failing.len(), 1);
         with_indices.inside = "-1".to_owned();
         let e = judge(Dialect::Physics, &with_indices, &line).unwrap_err();
-        assert!(e.contains("-1"), "{e}");
+        assert!(
+            matches!(&e, Refusal::Index { text, .. } if text == "-1"),
+            "{e:?}"
+        );
+        assert!(e.to_string().contains("-1"), "{e}");
     }
 }

@@ -7,13 +7,14 @@ use std::path::{Path, PathBuf};
 
 use egui::{RichText, Ui};
 
+use super::refusal::Refusal;
 use crate::app::file_dialog::{self, FileDialog, Purpose, Target};
-use crate::app::snippets::api::{self as api_snippets, Language, Name};
-use crate::app::snippets::{self, AnyCase, AnyLanguage};
 use crate::app::typed::error_label;
 use refraction_i18n::t;
 use refraction_tools::api_check::physics::Case;
 use refraction_tools::api_check::{Dialect, Judgement, Options, Record};
+use refraction_tools::snippets::api::{self as api_snippets, Language, Name};
+use refraction_tools::snippets::{self, AnyCase, AnyLanguage};
 
 /// The most lines judged in the window (a log file can be longer: `check` takes any length).
 pub(super) const MAX_JUDGED: usize = 100_000;
@@ -95,7 +96,7 @@ fn tests_text(
     language: TestLanguage,
     failing: &[Failing],
     options: &Options,
-) -> Result<String, String> {
+) -> Result<String, Refusal> {
     let body = match language {
         TestLanguage::Api(language) => {
             let cases: Vec<(Name, api_snippets::ApiCase<'_>)> = failing
@@ -143,18 +144,18 @@ fn tests_text(
 ///
 /// # Errors
 /// The name has another extension, the path is a folder, or the file there is not ours.
-fn tests_target(path: &Path, language: TestLanguage) -> Result<Target, String> {
-    let shown = path.display().to_string();
+fn tests_target(path: &Path, language: TestLanguage) -> Result<Target, Refusal> {
     let extension = language.extension();
     if path.extension().and_then(|e| e.to_str()) != Some(extension) {
-        return Err(t!(
-            "logs-tests-extension",
-            path = shown,
-            extension = extension
-        ));
+        return Err(Refusal::TestsExtension {
+            path: path.to_path_buf(),
+            extension,
+        });
     }
     if path.is_dir() {
-        return Err(t!("files-is-a-folder", path = shown));
+        return Err(Refusal::IsAFolder {
+            path: path.to_path_buf(),
+        });
     }
     let Ok(text) = std::fs::read(path) else {
         return Ok(Target::New);
@@ -163,7 +164,9 @@ fn tests_target(path: &Path, language: TestLanguage) -> Result<Target, String> {
     if text.is_empty() || text.starts_with(ours.as_bytes()) {
         Ok(Target::Replaces)
     } else {
-        Err(t!("logs-tests-not-ours", path = shown))
+        Err(Refusal::NotOurTests {
+            path: path.to_path_buf(),
+        })
     }
 }
 
@@ -340,7 +343,7 @@ impl LogFiles {
         let text = match tests_text(language, failing, options) {
             Ok(text) => text,
             Err(e) => {
-                self.status = Some(Err(e));
+                self.status = Some(Err(e.to_string()));
                 return;
             }
         };
@@ -350,7 +353,7 @@ impl LogFiles {
                 self.replace = Some(path.to_path_buf());
                 self.replacing = Some((path.to_path_buf(), text));
             }
-            Err(e) => self.status = Some(Err(e)),
+            Err(e) => self.status = Some(Err(e.to_string())),
         }
     }
 
@@ -386,9 +389,20 @@ mod tests {
         let theirs = folder.join("theirs.cpp");
         std::fs::write(&theirs, "#include <cmath>\nint main() {}\n").unwrap();
         let e = tests_target(&theirs, cpp).unwrap_err();
-        assert!(e.contains("theirs.cpp"), "{e}");
+        assert_eq!(e, Refusal::NotOurTests { path: theirs });
+        assert!(e.to_string().contains("theirs.cpp"), "{e}");
         let e = tests_target(&folder.join("tests.txt"), cpp).unwrap_err();
-        assert!(e.contains(".cpp"), "{e}");
+        assert!(
+            matches!(
+                e,
+                Refusal::TestsExtension {
+                    extension: "cpp",
+                    ..
+                }
+            ),
+            "{e:?}"
+        );
+        assert!(e.to_string().contains(".cpp"), "{e}");
         let python = TestLanguage::Any(AnyLanguage::Python);
         assert!(
             tests_target(&ours, python).is_err(),

@@ -9,6 +9,7 @@
 mod api;
 mod bulk;
 mod log_files;
+mod refusal;
 
 use egui::{RichText, TextEdit, Ui};
 use glam::DVec3;
@@ -25,6 +26,7 @@ use refraction_tools::api_check::{Dialect, Record, physics};
 use refraction_tools::check::{self, Match, Verdict};
 use refraction_tools::solve::{Precision, Request};
 use refraction_tools::state_file;
+use refusal::Refusal;
 
 /// Whose fields the panel reads.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -90,7 +92,7 @@ pub(super) struct CheckPanel {
     own: Own,
     api: api::ApiFields,
     bulk: bulk::Bulk,
-    outcome: Option<Result<Checked, String>>,
+    outcome: Option<Result<Checked, Refusal>>,
     copied: Option<String>,
     /// Scroll the verdict into view next frame: it is new.
     reveal: bool,
@@ -132,14 +134,19 @@ fn convention_words(convention: Convention) -> (String, String) {
 }
 
 /// Reads a number typed into the field named `name`, with a decimal point or comma.
-fn number(text: &str, name: &str) -> Result<f64, String> {
-    refraction_i18n::read_number(text)
-        .ok_or_else(|| t!("check-field-not-number", field = name, text = text.trim()))
+fn number(text: &str, name: &str) -> Result<f64, Refusal> {
+    refraction_i18n::read_number(text).ok_or_else(|| Refusal::NotANumber {
+        field: name.to_owned(),
+        text: text.to_owned(),
+    })
 }
 
 /// Reads a vector typed into the field named `name`.
-fn vector_field(text: &str, name: &str) -> Result<[f64; 3], String> {
-    check::parse_vector(text).map_err(|e| format!("{name}: {e}"))
+fn vector_field(text: &str, name: &str) -> Result<[f64; 3], Refusal> {
+    check::parse_vector(text).map_err(|error| Refusal::Vector {
+        field: name.to_owned(),
+        error,
+    })
 }
 
 /// A text field labelled `label`, at most `width` wide (less in a narrow panel); whether Enter
@@ -201,9 +208,9 @@ impl Own {
 
     /// The case and the student's T from the fields: a whole JSON line in "Your T", or the
     /// separate fields in the panel's convention.
-    fn read(&self) -> Result<(Request, [f64; 3]), String> {
+    fn read(&self) -> Result<(Request, [f64; 3]), Refusal> {
         if self.yours.trim_start().starts_with(JSON_LINE_START) {
-            return check::parse_line(self.yours.trim()).map_err(|e| e.to_string());
+            return Ok(check::parse_line(self.yours.trim())?);
         }
         let request = Request {
             w: vector_field(&self.w, "W")?,
@@ -220,12 +227,11 @@ impl Own {
     }
 
     /// Checks the T in the fields; the case to open and the verdict.
-    fn check(&mut self) -> Result<Checked, String> {
+    fn check(&mut self) -> Result<Checked, Refusal> {
         let (request, yours) = self.read()?;
-        let verdict = check::check(&request, yours).map_err(|e| e.to_string())?;
+        let verdict = check::check(&request, yours)?;
         let [w, n] = [request.w, request.n].map(DVec3::from_array);
-        let case = ExplorerState::new(w, n, request.mu_i, request.mu_t, request.convention)
-            .map_err(|e| e.to_string())?;
+        let case = ExplorerState::new(w, n, request.mu_i, request.mu_t, request.convention)?;
         self.fill(&request);
         Ok(Checked {
             opened: Some(case),
@@ -374,7 +380,7 @@ impl CheckPanel {
         let drawn = self.current(state).is_some();
         match &self.outcome {
             None => {}
-            Some(Err(message)) => error_label(ui, message),
+            Some(Err(refusal)) => error_label(ui, &refusal.to_string()),
             Some(Ok(checked)) => {
                 match &checked.shown {
                     Shown::Own(v) => own_verdict(ui, v),
@@ -430,7 +436,7 @@ impl CheckPanel {
                 match physics::Case::from_record(record, &self.bulk.options(dialect)) {
                     Ok(case) => self.own.fill_case(&case),
                     Err(e) => {
-                        self.outcome = Some(Err(e));
+                        self.outcome = Some(Err(e.into()));
                         return;
                     }
                 }

@@ -3,10 +3,10 @@
 //! logged numbers.
 
 use glam::DVec3;
-use refraction_i18n::{decimal, t};
 use refraction_kernel::Convention;
 use refraction_kernel::api::{Api, Args};
 
+use super::error::{LineError, Role};
 use super::fields::{self, Dialect, names};
 use super::record::{Record, Value};
 use crate::diagnosis::Renderer;
@@ -158,37 +158,46 @@ pub struct Call {
     pub etap: Option<f64>,
 }
 
-fn vector(record: &Record, name: &str) -> Result<Option<DVec3>, String> {
+fn vector(record: &Record, name: &str) -> Result<Option<DVec3>, LineError> {
     match record.get(name) {
         None => Ok(None),
         Some(Value::Vector(v)) => Ok(Some(DVec3::from_array(*v))),
-        Some(_) => Err(t!("check-field-not-vector", field = name)),
+        Some(_) => Err(LineError::NotVector {
+            field: name.to_owned(),
+        }),
     }
 }
 
-/// The argument vector `name` (`what` says what it is), finite and not zero.
-fn required_vector(record: &Record, name: &str, what: String) -> Result<DVec3, String> {
-    let missing = || t!("check-field-missing", field = name, what = what);
-    let v = vector(record, name)?.ok_or_else(missing)?;
-    if !v.is_finite() {
-        let value = v.to_string();
-        return Err(t!("check-field-not-finite", field = name, value = value));
+/// The argument vector `name` (`role` says what it is), finite and not zero.
+fn required_vector(record: &Record, name: &str, role: Role) -> Result<DVec3, LineError> {
+    let field = || name.to_owned();
+    let missing = || LineError::Missing {
+        field: field(),
+        role,
+    };
+    let value = vector(record, name)?.ok_or_else(missing)?;
+    if !value.is_finite() {
+        return Err(LineError::NotFinite {
+            field: field(),
+            value,
+        });
     }
-    if v == DVec3::ZERO {
-        return Err(t!("check-field-zero-vector", field = name));
+    if value == DVec3::ZERO {
+        return Err(LineError::ZeroVector { field: field() });
     }
-    Ok(v)
+    Ok(value)
 }
 
-fn number(record: &Record, name: &str) -> Result<Option<f64>, String> {
+fn number(record: &Record, name: &str) -> Result<Option<f64>, LineError> {
+    let field = || name.to_owned();
     match record.get(name) {
         None => Ok(None),
         Some(Value::Number(x)) if x.is_finite() && *x > 0.0 => Ok(Some(*x)),
-        Some(Value::Number(x)) => {
-            let value = decimal(&x.to_string());
-            Err(t!("check-field-not-positive", field = name, value = value))
-        }
-        Some(_) => Err(t!("check-field-not-number-json", field = name)),
+        Some(Value::Number(x)) => Err(LineError::NotPositive {
+            field: field(),
+            value: *x,
+        }),
+        Some(_) => Err(LineError::NotNumber { field: field() }),
     }
 }
 
@@ -208,7 +217,7 @@ fn label(record: &Record, name: &str) -> Option<String> {
 
 /// Whether the ray enters, from the normal taken as the outward one: pbrt's and Mitsuba's
 /// `wi` (back along the ray) on the side the normal points to.
-fn entering_from_normal(record: &Record, options: &Options) -> Result<Option<bool>, String> {
+fn entering_from_normal(record: &Record, options: &Options) -> Result<Option<bool>, LineError> {
     let Dialect::Api(api @ (Api::Pbrt | Api::Mitsuba)) = options.dialect else {
         return Ok(None);
     };
@@ -224,12 +233,12 @@ fn entering_from_normal(record: &Record, options: &Options) -> Result<Option<boo
     Ok(vector(record, n.incident)?.map(|wi| wi.dot(normal) > 0.0))
 }
 
-fn truth(record: &Record, options: &Options) -> Result<Truth, String> {
+fn truth(record: &Record, options: &Options) -> Result<Truth, LineError> {
     let logged = flag(record, "entering");
     let given = match (number(record, "from")?, number(record, "to")?) {
         (Some(from), Some(to)) => Some((from, to)),
         (None, None) => None,
-        _ => return Err(t!("check-from-and-to-together")),
+        _ => return Err(LineError::FromAndToApart),
     };
     let assumed = match (logged, given) {
         (None, None) => entering_from_normal(record, options)?,
@@ -246,7 +255,7 @@ fn truth(record: &Record, options: &Options) -> Result<Truth, String> {
     });
     let travel = vector(record, "travel")?;
     if travel.is_some_and(|t| !t.is_finite() || t == DVec3::ZERO) {
-        return Err(t!("check-travel-not-finite"));
+        return Err(LineError::TravelNotFinite);
     }
     Ok(Truth {
         from_to: given.or(from_sides),
@@ -258,30 +267,31 @@ fn truth(record: &Record, options: &Options) -> Result<Truth, String> {
     })
 }
 
-fn got(record: &Record, api: Api) -> Result<Got, String> {
-    let name = names(api).result;
+fn got(record: &Record, api: Api) -> Result<Got, LineError> {
+    let field = names(api).result;
     let returned = flag(record, fields::RETURNED);
-    match (record.get(name), returned) {
+    match (record.get(field), returned) {
         (_, Some(false)) => Ok(Got::Nothing),
-        (Some(Value::Null), Some(true)) => {
-            let returned = fields::RETURNED;
-            Err(t!("check-result-null", field = name, returned = returned))
-        }
+        (Some(Value::Null), Some(true)) => Err(LineError::ResultNull { field }),
         (Some(Value::Null), None) => Ok(Got::Nothing),
         (Some(Value::Vector(v)), _) => Ok(Got::Vector(DVec3::from_array(*v))),
-        (None, _) => Err(t!("check-result-missing", field = name, api = api.name())),
-        (Some(_), _) => Err(t!("check-field-not-vector", field = name)),
+        (None, _) => Err(LineError::ResultMissing { field, api }),
+        (Some(_), _) => Err(LineError::NotVector {
+            field: field.to_owned(),
+        }),
     }
 }
 
-fn precision(record: &Record, options: &Options) -> Result<Precision, String> {
+fn precision(record: &Record, options: &Options) -> Result<Precision, LineError> {
     match label(record, "precision").as_deref() {
         None => Ok(options
             .precision
             .unwrap_or_else(|| fields::usual_precision(options.dialect))),
         Some("f32" | "float") => Ok(Precision::F32),
         Some("f64" | "double") => Ok(Precision::F64),
-        Some(other) => Err(t!("check-unknown-precision", text = other)),
+        Some(other) => Err(LineError::UnknownPrecision {
+            text: other.to_owned(),
+        }),
     }
 }
 
@@ -291,24 +301,22 @@ impl Call {
     /// # Errors
     /// A missing or ill-typed field, a non-finite or zero argument vector, an eta that is not
     /// a finite number > 0; the message names the field.
-    pub fn from_record(record: &Record, options: &Options) -> Result<Self, String> {
+    pub fn from_record(record: &Record, options: &Options) -> Result<Self, LineError> {
         let Dialect::Api(api) = options.dialect else {
-            // untranslated: a programmer's mistake, never a user's
-            const NO_API: &str = "a call needs an API: judge any renderer's lines with physics";
-            return Err(NO_API.into());
+            return Err(LineError::NoApi);
         };
         let n = names(api);
         let normal = if api == Api::Mitsuba && record.get(n.normal).is_none() {
             DVec3::Z
         } else {
-            required_vector(record, n.normal, t!("check-what-normal"))?
+            required_vector(record, n.normal, Role::Normal)?
         };
         let args = Args {
-            incident: required_vector(record, n.incident, t!("check-what-incident"))?,
+            incident: required_vector(record, n.incident, Role::Incident)?,
             normal,
-            eta: number(record, n.eta)?.ok_or_else(|| {
-                let (eta, what) = (n.eta, t!("check-what-eta"));
-                t!("check-field-missing", field = eta, what = what)
+            eta: number(record, n.eta)?.ok_or_else(|| LineError::Missing {
+                field: n.eta.to_owned(),
+                role: Role::Eta,
             })?,
         };
         Ok(Self {
@@ -339,7 +347,7 @@ impl Call {
 mod tests {
     use super::*;
 
-    fn call(api: Api, line: &str, options: &Options) -> Result<Call, String> {
+    fn call(api: Api, line: &str, options: &Options) -> Result<Call, LineError> {
         Call::from_record(&Record::from_json_line(api, line)?, options)
     }
 
@@ -384,7 +392,7 @@ mod tests {
         ];
         for (api, line, message) in cases {
             let e = call(api, line, &Options::new(api)).unwrap_err();
-            assert!(e.contains(message), "{e}");
+            assert!(e.to_string().contains(message), "{e}");
         }
         let pbrt = r#"{"wi":[0,1,0],"n":[0,1,0],"eta":1.5,"returned":false}"#;
         assert_eq!(

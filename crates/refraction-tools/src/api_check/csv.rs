@@ -2,9 +2,9 @@
 //! quoted when it holds commas: `"0.6, -0.8, 0"`) or three (`uv.x,uv.y,uv.z`, `uv_x,...` or
 //! `uv[0],...`); columns the API has no field for are ignored; an empty cell is an absent field.
 
-use refraction_i18n::t;
 use refraction_kernel::api::Api;
 
+use super::error::{CsvError, LineError};
 use super::fields::{self, Dialect, Kind, names};
 use super::record::Record;
 
@@ -30,7 +30,7 @@ pub struct Header {
 ///
 /// # Errors
 /// An unclosed quote.
-pub fn cells(line: &str) -> Result<Vec<String>, String> {
+pub fn cells(line: &str) -> Result<Vec<String>, CsvError> {
     let mut out = vec![String::new()];
     let mut quoted = false;
     let mut chars = line.chars().peekable();
@@ -50,7 +50,7 @@ pub fn cells(line: &str) -> Result<Vec<String>, String> {
         }
     }
     if quoted {
-        return Err(t!("check-csv-unclosed-quote"));
+        return Err(CsvError::UnclosedQuote);
     }
     Ok(out.into_iter().map(|c| c.trim().to_owned()).collect())
 }
@@ -84,7 +84,7 @@ impl Header {
     ///
     /// # Errors
     /// A missing argument or result column, a vector with only some of its components.
-    pub fn parse(dialect: impl Into<Dialect>, line: &str) -> Result<Self, String> {
+    pub fn parse(dialect: impl Into<Dialect>, line: &str) -> Result<Self, CsvError> {
         let dialect = dialect.into();
         let headings = cells(line)?;
         let columns: Vec<Column> = headings.iter().map(|c| column(dialect, c)).collect();
@@ -97,8 +97,8 @@ impl Header {
         };
         for (i, c) in columns.iter().enumerate() {
             if columns[..i].iter().any(|earlier| clash(c, earlier)) {
-                let heading = headings[i].as_str();
-                return Err(t!("check-csv-duplicate-column", column = heading));
+                let column = headings[i].clone();
+                return Err(CsvError::DuplicateColumn { column });
             }
         }
         let has = |field: &str| {
@@ -122,9 +122,12 @@ impl Header {
                 _ => false,
             };
             if !optional && !has(field) {
-                let (f, h, l) = (field, line.trim(), fields::listed(dialect));
-                let e = t!("check-csv-no-column", field = f, names = h, expected = l);
-                return Err(e);
+                let names = line.trim().to_owned();
+                return Err(CsvError::NoColumn {
+                    field,
+                    names,
+                    dialect,
+                });
             }
         }
         for (field, _) in fields::all(dialect) {
@@ -132,7 +135,7 @@ impl Header {
                 .filter(|&axis| columns.contains(&Column::Component(field, axis)))
                 .count();
             if axes != 0 && axes != 3 {
-                return Err(t!("check-csv-partial-vector", field = field, count = axes));
+                return Err(CsvError::PartialVector { field, count: axes });
             }
         }
         Ok(Self { dialect, columns })
@@ -142,11 +145,11 @@ impl Header {
     ///
     /// # Errors
     /// A different number of cells than the header has columns, or a bad value.
-    pub fn record(&self, line: &str) -> Result<Record, String> {
+    pub fn record(&self, line: &str) -> Result<Record, LineError> {
         let cells = cells(line)?;
         if cells.len() != self.columns.len() {
             let (count, columns) = (cells.len(), self.columns.len());
-            return Err(t!("check-csv-cells", count = count, columns = columns));
+            return Err(CsvError::Cells { count, columns }.into());
         }
         let mut texts: Vec<(&str, String)> = Vec::new();
         let mut parts: Vec<(&str, [&str; 3])> = Vec::new();
@@ -201,18 +204,22 @@ mod tests {
     #[test]
     fn bad_headers_and_lines_say_why() {
         let e = Header::parse(Api::Rtiow, "uv,n,refracted").unwrap_err();
-        assert!(e.contains("no column `etai_over_etat`"), "{e}");
+        assert!(e.to_string().contains("no column `etai_over_etat`"), "{e}");
         let e = Header::parse(Api::Glsl, "I,N,eta,result,N").unwrap_err();
-        assert!(e.contains("`N` more than once"), "{e}");
+        assert!(e.to_string().contains("`N` more than once"), "{e}");
         let e = Header::parse(Api::Glsl, "I,I.x,I.y,I.z,N,eta,result").unwrap_err();
-        assert!(e.contains("`I.x` more than once"), "{e}");
+        assert!(e.to_string().contains("`I.x` more than once"), "{e}");
         let e = Header::parse(Api::Glsl, "I.x,I.y,N,eta,result").unwrap_err();
-        assert!(e.contains("only 2 of `I`'s 3 components"), "{e}");
+        assert!(
+            e.to_string().contains("only 2 of `I`'s 3 components"),
+            "{e}"
+        );
         let header = Header::parse(Api::Glsl, "I,N,eta,result").unwrap();
         assert!(
             header
                 .record("1,2")
                 .unwrap_err()
+                .to_string()
                 .contains("2 cells where the header has 4")
         );
         assert!(cells(r#"a,"b"#).is_err());

@@ -7,6 +7,7 @@ use refraction_kernel::{Convention, Real};
 use serde_json::Value as Json;
 
 use super::call::{Call, Got};
+use super::error::LineError;
 use super::explain;
 use super::readings::{Reading, Tolerance, readings, undo};
 use super::result::{Returns, Seen, returns, transmitted_by};
@@ -289,7 +290,7 @@ fn formula_readings(readings: &[Reading], seen: Seen, right: bool, tolerance: f6
     }
 }
 
-fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, String> {
+fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, LineError> {
     let tolerance = Tolerance::new(&call.digits, S::EPSILON.to_f64());
     let returns = returns::<S>(call, &tolerance)?;
     let seen = returns.see(call.got);
@@ -424,7 +425,7 @@ pub fn point(call: &Call, diagnosis: &Diagnosis) -> LinePoint {
 ///
 /// # Errors
 /// An argument too large for that precision.
-pub fn diagnose(call: &Call) -> Result<Diagnosis, String> {
+pub fn diagnose(call: &Call) -> Result<Diagnosis, LineError> {
     match call.precision {
         Precision::F32 => diagnose_in::<f32>(call),
         Precision::F64 => diagnose_in::<f64>(call),

@@ -16,6 +16,7 @@
 pub mod call;
 pub mod csv;
 pub mod diagnose;
+pub mod error;
 mod explain;
 pub mod fields;
 pub mod gather;
@@ -29,12 +30,12 @@ pub mod suggest;
 
 use std::collections::BTreeMap;
 
-use refraction_i18n::t;
 use serde::Serialize;
 
 pub use crate::diagnosis::{Code, Renderer};
 pub use call::{Call, Options};
 pub use diagnose::{Diagnosis, diagnose};
+pub use error::{CsvError, LineError, PatternError};
 pub use fields::Dialect;
 pub use pattern::{MAX_PATTERN_BYTES, MAX_PATTERN_LINES, MAX_PLACEHOLDERS, Pattern};
 pub use record::Record;
@@ -79,7 +80,7 @@ pub fn answer_line(call: &Call, diagnosis: &Diagnosis) -> String {
 ///
 /// # Errors
 /// The record is not a complete call (see [`Call::from_record`]) or does not fit the precision.
-pub fn check_record(record: &Record, options: &Options) -> Result<(Call, Diagnosis), String> {
+pub fn check_record(record: &Record, options: &Options) -> Result<(Call, Diagnosis), LineError> {
     let call = Call::from_record(record, options)?;
     let diagnosis = diagnose(&call)?;
     Ok((call, diagnosis))
@@ -243,7 +244,7 @@ impl Judgement {
 ///
 /// # Errors
 /// The record is not a complete call or case, or does not fit the precision.
-pub fn judge_record(record: &Record, options: &Options) -> Result<Judgement, String> {
+pub fn judge_record(record: &Record, options: &Options) -> Result<Judgement, LineError> {
     match options.dialect {
         Dialect::Api(_) => check_record(record, options).map(|j| Judgement::Api(Box::new(j))),
         Dialect::Physics => physics::Case::from_record(record, options)
@@ -256,7 +257,7 @@ pub fn judge_record(record: &Record, options: &Options) -> Result<Judgement, Str
 enum Judged {
     /// A judged line, or why the line holds nothing that can be judged (boxed: a judgement is
     /// large, and the chunks hold many of the other kinds).
-    Line(Box<Result<Judgement, String>>),
+    Line(Box<Result<Judgement, LineError>>),
     /// A log line the pattern does not match on its own: it may be part of a record printed
     /// over several lines, gathered in order.
     Unmatched(String),
@@ -271,13 +272,13 @@ struct Reader {
     options: Options,
     format: Format,
     strict: bool,
-    header: std::sync::OnceLock<Result<csv::Header, String>>,
+    header: std::sync::OnceLock<Result<csv::Header, CsvError>>,
 }
 
 /// What one line holds before it is judged.
 enum Read {
     /// The fields of a call, or why the line holds none that can be read.
-    Record(Result<Record, String>),
+    Record(Result<Record, LineError>),
     /// A log line the pattern does not match.
     Unmatched,
     /// A CSV line read before the header was known.
@@ -300,7 +301,7 @@ impl Reader {
             Format::Csv => match self.header.get() {
                 None => return Read::Deferred,
                 Some(Ok(header)) => header.record(line),
-                Some(Err(e)) => Err(t!("check-csv-no-header", reason = e)),
+                Some(Err(e)) => Err(LineError::NoHeader(e.clone())),
             },
         })
     }
@@ -318,9 +319,9 @@ impl Reader {
 
     /// Takes `line` as the CSV header (called in order, while none is known); why it is
     /// unusable, if it is.
-    fn take_header(&self, line: &str) -> Option<String> {
+    fn take_header(&self, line: &str) -> Option<LineError> {
         let header = csv::Header::parse(self.options.dialect, line);
-        let failed = header.as_ref().err().cloned();
+        let failed = header.as_ref().err().cloned().map(LineError::Csv);
         // Only this thread sets the header, between chunks: it cannot be set already.
         let _ = self.header.set(header);
         failed
@@ -351,7 +352,7 @@ struct Books {
 
 impl Books {
     /// The answer to a judged line, in input order: nothing for a line without a call.
-    fn answer(&mut self, reader: &Reader, judged: Judged) -> Result<String, String> {
+    fn answer(&mut self, reader: &Reader, judged: Judged) -> Result<String, LineError> {
         let judged = match judged {
             Judged::Line(judged) => {
                 self.forget_gathered();
@@ -398,9 +399,9 @@ impl Books {
     }
 
     /// Counts `lines` log lines the pattern matched no part of: an error under `--strict`.
-    fn skip(&mut self, reader: &Reader, lines: usize) -> Result<(), String> {
+    fn skip(&mut self, reader: &Reader, lines: usize) -> Result<(), LineError> {
         if lines > 0 && reader.strict {
-            return Err(t!("check-line-not-matching"));
+            return Err(LineError::NotMatching);
         }
         for _ in 0..lines {
             self.tally.add(SKIPPED);
@@ -415,7 +416,7 @@ impl Books {
         &mut self,
         reader: &Reader,
         line: &str,
-    ) -> Result<Option<Result<Record, String>>, String> {
+    ) -> Result<Option<Result<Record, LineError>>, LineError> {
         let (Some(gather), Format::Pattern(pattern)) = (&mut self.gather, &reader.format) else {
             self.skip(reader, 1)?;
             return Ok(None);
@@ -425,7 +426,7 @@ impl Books {
         Ok(step.record.map(|record| match reader.read(&record) {
             Read::Record(record) => record,
             // The gathered text matched: it reads as a record.
-            Read::Unmatched | Read::Deferred => Err(t!("check-line-not-matching")),
+            Read::Unmatched | Read::Deferred => Err(LineError::NotMatching),
         }))
     }
 
@@ -434,7 +435,7 @@ impl Books {
         &mut self,
         reader: &Reader,
         line: &str,
-    ) -> Result<Option<Result<Judgement, String>>, String> {
+    ) -> Result<Option<Result<Judgement, LineError>>, LineError> {
         Ok(self
             .gathered_record(reader, line)?
             .map(|record| judge_record(&record?, &reader.options)))
@@ -489,7 +490,7 @@ impl Session {
     ///
     /// # Errors
     /// Why the line cannot be judged; the loop answers it with `{"line", "error"}`.
-    pub fn answer(&mut self, line: &str) -> Result<String, String> {
+    pub fn answer(&mut self, line: &str) -> Result<String, LineError> {
         let judged = self.reader.judge(line);
         self.books.answer(&self.reader, judged)
     }
@@ -533,7 +534,7 @@ impl Session {
     /// # Errors
     /// The line is not a record of the API's fields (the message says why), a log line does
     /// not match the pattern under `strict`, or the CSV header is unusable.
-    pub fn record(&mut self, line: &str) -> Result<Option<Record>, String> {
+    pub fn record(&mut self, line: &str) -> Result<Option<Record>, LineError> {
         match self.reader.read(line) {
             Read::Record(record) => {
                 self.books.forget_gathered();
@@ -558,7 +559,7 @@ impl Session {
     /// # Errors
     /// Why the line cannot be judged (counted as unreadable), as [`Session::record`] and
     /// [`judge_record`] say.
-    pub fn judge_line(&mut self, line: &str) -> Result<Option<(Record, Judgement)>, String> {
+    pub fn judge_line(&mut self, line: &str) -> Result<Option<(Record, Judgement)>, LineError> {
         let judged = self.record(line).and_then(|record| {
             record
                 .map(|record| {

@@ -12,6 +12,7 @@ use serde::Serialize;
 
 use super::call::Call;
 use super::diagnose::Diagnosis;
+use super::error::LineError;
 use crate::check::MATCH_ANGLE;
 use crate::diagnosis::Code;
 use crate::vector_text::{angle, short, short_vector, unit};
@@ -254,10 +255,8 @@ impl Paths {
     ///
     /// # Errors
     /// The hit has no `path`.
-    pub fn hit(&mut self, call: &Call, diagnosis: &Diagnosis) -> Result<Option<String>, String> {
-        let id = call.path.clone().ok_or_else(|| {
-            "missing field `path` (the ray this hit belongs to, with --paths)".to_owned()
-        })?;
+    pub fn hit(&mut self, call: &Call, diagnosis: &Diagnosis) -> Result<Option<String>, LineError> {
+        let id = call.path.clone().ok_or(LineError::NoPath)?;
         let (current, ended) = match self.current.take() {
             Some(path) if path.id == id => (path.with(call, diagnosis), None),
             previous => (Path::new(id, call, diagnosis), previous),

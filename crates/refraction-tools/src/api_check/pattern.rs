@@ -12,7 +12,7 @@
 //! field named once), and matching is a search without recursion that never tries the same
 //! piece at the same place twice: its time and memory grow linearly with the line's length.
 
-use refraction_i18n::t;
+use super::error::PatternError;
 
 use super::fields::{self, Dialect, Kind};
 use super::record::accepts;
@@ -94,7 +94,7 @@ fn literal_at(literal: &str, line: &str, at: usize) -> Option<usize> {
 }
 
 /// The pieces of `text`: literals, `{field}`s and `{_}`s.
-fn pieces_of(dialect: Dialect, text: &str) -> Result<Vec<Piece>, String> {
+fn pieces_of(dialect: Dialect, text: &str) -> Result<Vec<Piece>, PatternError> {
     let mut pieces = Vec::new();
     let mut chars = text.chars().peekable();
     while let Some(c) = chars.next() {
@@ -117,7 +117,10 @@ fn pieces_of(dialect: Dialect, text: &str) -> Result<Vec<Piece>, String> {
                     match chars.next() {
                         Some('}') => break,
                         Some(c) => name.push(c),
-                        None => return Err(t!("check-pattern-unclosed", pattern = text)),
+                        None => {
+                            let pattern = text.to_owned();
+                            return Err(PatternError::Unclosed { pattern });
+                        }
                     }
                 }
                 pieces.push(Pattern::field(dialect, name.trim())?);
@@ -135,14 +138,10 @@ impl Pattern {
     /// A pattern longer than [`MAX_PATTERN_BYTES`] or with more than [`MAX_PLACEHOLDERS`]
     /// placeholders, an unknown field, a field named twice, an unclosed `{`, two fields with
     /// nothing between them, or no field.
-    pub fn parse(dialect: impl Into<Dialect>, text: &str) -> Result<Self, String> {
+    pub fn parse(dialect: impl Into<Dialect>, text: &str) -> Result<Self, PatternError> {
         if text.len() > MAX_PATTERN_BYTES {
             let bytes = text.len();
-            return Err(t!(
-                "check-pattern-too-long",
-                bytes = bytes,
-                limit = MAX_PATTERN_BYTES
-            ));
+            return Err(PatternError::TooLong { bytes });
         }
         let pieces = pieces_of(dialect.into(), text)?;
         let placeholders = pieces
@@ -150,8 +149,8 @@ impl Pattern {
             .filter(|p| !matches!(p, Piece::Literal(_)))
             .count();
         if placeholders > MAX_PLACEHOLDERS {
-            let (count, limit) = (placeholders, MAX_PLACEHOLDERS);
-            return Err(t!("check-pattern-too-many", count = count, limit = limit));
+            let count = placeholders;
+            return Err(PatternError::TooManyPlaceholders { count });
         }
         let names: Vec<&str> = pieces
             .iter()
@@ -162,25 +161,24 @@ impl Pattern {
             .collect();
         let twice = (1..names.len()).find(|&i| names[..i].contains(&names[i]));
         if let Some(i) = twice {
-            return Err(t!("check-pattern-twice", field = names[i], pattern = text));
+            let (field, pattern) = (names[i], text.to_owned());
+            return Err(PatternError::Twice { field, pattern });
         }
         let adjacent = pieces
             .windows(2)
             .any(|w| !matches!(w[0], Piece::Literal(_)) && !matches!(w[1], Piece::Literal(_)));
         if adjacent {
-            return Err(t!("check-pattern-adjacent", pattern = text));
+            let pattern = text.to_owned();
+            return Err(PatternError::Adjacent { pattern });
         }
         if names.is_empty() {
-            return Err(t!("check-pattern-no-field", pattern = text));
+            let pattern = text.to_owned();
+            return Err(PatternError::NoField { pattern });
         }
         let pattern = Self { pieces };
         if pattern.lines() > MAX_PATTERN_LINES {
-            let (count, limit) = (pattern.lines(), MAX_PATTERN_LINES);
-            return Err(t!(
-                "check-pattern-too-many-lines",
-                count = count,
-                limit = limit
-            ));
+            let count = pattern.lines();
+            return Err(PatternError::TooManyLines { count });
         }
         Ok(pattern)
     }
@@ -207,22 +205,23 @@ impl Pattern {
         })
     }
 
-    #[rustfmt::skip] // the t! keys stay where the translation tests find them
-    fn field(dialect: Dialect, name: &str) -> Result<Piece, String> {
+    fn field(dialect: Dialect, name: &str) -> Result<Piece, PatternError> {
         if name == "_" {
             return Ok(Piece::Anything);
         }
         if let Some(flag) = name.strip_prefix('!') {
             return match fields::find(dialect, flag.trim()) {
                 Some((name, Kind::Flag)) => Ok(Piece::Field(name, Kind::Flag, true)),
-                _ => Err(t!("check-pattern-negated-not-flag", field = flag.trim())),
+                _ => Err(PatternError::NegatedNotFlag {
+                    field: flag.trim().to_owned(),
+                }),
             };
         }
         fields::find(dialect, name)
             .map(|(name, kind)| Piece::Field(name, kind, false))
-            .ok_or_else(|| {
-                let (a, listed) = (dialect.name(), fields::listed(dialect));
-                t!("check-pattern-unknown-field", field = name, api = a, expected = listed)
+            .ok_or_else(|| PatternError::UnknownField {
+                field: name.to_owned(),
+                dialect,
             })
     }
 
@@ -535,14 +534,16 @@ mod tests {
 
     #[test]
     fn a_field_named_twice_or_a_pattern_past_its_limits_is_refused() {
-        let e = Pattern::parse(Api::Glsl, "I={I} N={N} again={I} eta={eta}").unwrap_err();
+        let e = Pattern::parse(Api::Glsl, "I={I} N={N} again={I} eta={eta}")
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("{I} is named twice"), "{e}");
         // Issue 31: 10,000 placeholders overflowed a worker's stack; now a usage error.
         let many = format!("{}{{I}}", "{_} ".repeat(10_000));
-        let e = Pattern::parse(Api::Glsl, &many).unwrap_err();
+        let e = Pattern::parse(Api::Glsl, &many).unwrap_err().to_string();
         assert!(e.contains("at most 4096 are read"), "{e}");
         let many = format!("{}{{I}}", "{_} ".repeat(MAX_PLACEHOLDERS));
-        let e = Pattern::parse(Api::Glsl, &many).unwrap_err();
+        let e = Pattern::parse(Api::Glsl, &many).unwrap_err().to_string();
         assert!(e.contains("33 placeholders: at most 32"), "{e}");
         let most = format!("{}{{I}}", "{_} ".repeat(MAX_PLACEHOLDERS - 1));
         assert!(Pattern::parse(Api::Glsl, &most).is_ok());
@@ -585,7 +586,9 @@ mod tests {
 
     #[test]
     fn bad_patterns_say_why() {
-        let e = Pattern::parse(Api::Glsl, "{uv} {N}").unwrap_err();
+        let e = Pattern::parse(Api::Glsl, "{uv} {N}")
+            .unwrap_err()
+            .to_string();
         assert!(
             e.contains("unknown field {uv}") && e.contains("I, N, eta"),
             "{e}"
@@ -593,16 +596,19 @@ mod tests {
         assert!(
             Pattern::parse(Api::Glsl, "{I}{N}")
                 .unwrap_err()
+                .to_string()
                 .contains("nothing between")
         );
         assert!(
             Pattern::parse(Api::Glsl, "{I")
                 .unwrap_err()
+                .to_string()
                 .contains("unclosed")
         );
         assert!(
             Pattern::parse(Api::Glsl, "just text")
                 .unwrap_err()
+                .to_string()
                 .contains("no field")
         );
         assert!(Pattern::parse(Api::Glsl, "{{ {I} }}").is_ok());

@@ -16,6 +16,7 @@ use refraction_kernel::{Convention, Incidence, Refraction, refract};
 use serde::Serialize;
 
 use super::call::Options;
+use super::error::{LineError, Role};
 use super::record::{Record, Value};
 use crate::check::{self, MATCH_ANGLE, Match, Verdict};
 use crate::diagnosis::Code;
@@ -86,21 +87,25 @@ impl Case {
     ///
     /// # Errors
     /// A missing `w`, `n` or `t_yours`, no indices, or an unknown convention or precision.
-    pub fn from_record(record: &Record, options: &Options) -> Result<Self, String> {
-        let required = |name: &str, what: String| {
-            vector(record, name).ok_or_else(|| t!("check-field-missing", field = name, what = what))
+    pub fn from_record(record: &Record, options: &Options) -> Result<Self, LineError> {
+        let required = |name: &str, role| {
+            vector(record, name).ok_or_else(|| LineError::Missing {
+                field: name.to_owned(),
+                role,
+            })
         };
-        let w = required("w", t!("check-what-incident"))?;
+        let w = required("w", Role::Incident)?;
         let convention = match label(record, "convention") {
             None => options.convention.unwrap_or_default(),
-            Some(name) => Convention::from_name(&name)
-                .ok_or_else(|| t!("check-physics-unknown-convention", text = name))?,
+            Some(name) => {
+                Convention::from_name(&name).ok_or(LineError::UnknownConvention { text: name })?
+            }
         };
         // A normal the line does not print is `--normal`'s, the outward one: it tells the side.
         let (n, outward) = match (vector(record, "n"), options.normal) {
             (Some(n), _) => (n, None),
             (None, Some(n)) => (n, Some(n)),
-            (None, None) => (required("n", t!("check-what-normal"))?, None),
+            (None, None) => (required("n", Role::Normal)?, None),
         };
         let entering = match record.get("entering") {
             Some(Value::Flag(b)) => Some(*b),
@@ -109,17 +114,20 @@ impl Case {
                 (along < 0.0) == (convention == Convention::AlongRay)
             }),
         };
-        let (mu_i, mu_t) = indices(record, entering, options.sides())
-            .ok_or_else(|| t!("check-physics-no-indices"))?;
+        let (mu_i, mu_t) =
+            indices(record, entering, options.sides()).ok_or(LineError::NoIndices)?;
         let precision = match label(record, "precision").as_deref() {
             None => options.precision.unwrap_or_default(),
             Some("f64" | "double") => Precision::F64,
             Some("f32" | "float") => Precision::F32,
-            Some(other) => return Err(t!("check-unknown-precision", text = other)),
+            Some(other) => {
+                let text = other.to_owned();
+                return Err(LineError::UnknownPrecision { text });
+            }
         };
         let yours = match record.get("t_yours") {
             Some(Value::Null) => None,
-            _ => Some(required("t_yours", t!("check-your-t-in-error"))?),
+            _ => Some(required("t_yours", Role::YourT)?),
         };
         Ok(Self {
             request: Request {
@@ -348,18 +356,16 @@ fn explanation(
 ///
 /// # Errors
 /// The problem cannot be refracted (a zero vector, an index that is not positive).
-pub fn judge(case: &Case) -> Result<Judged, String> {
+pub fn judge(case: &Case) -> Result<Judged, LineError> {
     let nothing = [0.0; 3];
-    let verdict =
-        check::check(&case.request, case.yours.unwrap_or(nothing)).map_err(|e| e.to_string())?;
+    let verdict = check::check(&case.request, case.yours.unwrap_or(nothing))?;
     let r = refract(&Incidence::<f64> {
         w: DVec3::from_array(case.request.w),
         n: DVec3::from_array(case.request.n),
         mu_i: case.request.mu_i,
         mu_t: case.request.mu_t,
         convention: case.request.convention,
-    })
-    .map_err(|e| e.to_string())?;
+    })?;
     let wrong_ratio = case
         .ratio
         .is_some_and(|ratio| (ratio / r.mu - 1.0).abs() > 1e-4);

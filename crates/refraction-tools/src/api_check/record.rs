@@ -1,9 +1,9 @@
 //! One logged call as named values, read from a JSON line or from the texts a `--pattern` or
 //! CSV header names, with the significant digits its numbers were written with.
 
-use refraction_i18n::t;
 use serde_json::Value as Json;
 
+use super::error::LineError;
 use super::fields::{self, Dialect, Kind};
 use crate::vector_text::{digits_of, json_vector_digits, parse_number, parse_vector};
 
@@ -123,9 +123,12 @@ pub(super) fn accepts(kind: Kind, text: &str) -> bool {
 ///
 /// # Errors
 /// The text is not a value of that kind; the message names the field.
-pub fn from_text(kind: Kind, name: &str, text: &str) -> Result<(Value, u32), String> {
+pub fn from_text(kind: Kind, name: &str, text: &str) -> Result<(Value, u32), LineError> {
     let text = text.trim();
-    let wrap = |e: crate::error::VectorError| format!("`{name}`: {e}");
+    let wrap = |error| LineError::Text {
+        field: name.to_owned(),
+        error,
+    };
     match kind {
         Kind::VectorOrNull if is_null_text(text) => Ok((Value::Null, 0)),
         Kind::Vector | Kind::VectorOrNull => parse_vector(text)
@@ -134,14 +137,19 @@ pub fn from_text(kind: Kind, name: &str, text: &str) -> Result<(Value, u32), Str
         Kind::Number => parse_number(text)
             .map(|n| (Value::Number(n.value), n.digits))
             .map_err(wrap),
-        Kind::Flag => flag_text(text)
-            .map(|f| (Value::Flag(f), 0))
-            .ok_or_else(|| t!("check-field-not-flag-got", field = name, text = text)),
+        Kind::Flag => {
+            flag_text(text)
+                .map(|f| (Value::Flag(f), 0))
+                .ok_or_else(|| LineError::NotFlagText {
+                    field: name.to_owned(),
+                    text: text.to_owned(),
+                })
+        }
         Kind::Label => Ok((Value::Label(text.to_owned()), 0)),
     }
 }
 
-fn json_number(value: &Json, name: &str) -> Result<(f64, u32), String> {
+fn json_number(value: &Json, name: &str) -> Result<(f64, u32), LineError> {
     match value {
         Json::Number(n) => {
             let x = n.as_f64().unwrap_or(f64::NAN);
@@ -150,12 +158,17 @@ fn json_number(value: &Json, name: &str) -> Result<(f64, u32), String> {
         Json::Null => Ok((f64::NAN, 0)),
         Json::String(text) => parse_number(text)
             .map(|n| (n.value, n.digits))
-            .map_err(|e| format!("`{name}`: {e}")),
-        _ => Err(t!("check-field-not-number-json", field = name)),
+            .map_err(|error| LineError::Text {
+                field: name.to_owned(),
+                error,
+            }),
+        _ => Err(LineError::NotNumber {
+            field: name.to_owned(),
+        }),
     }
 }
 
-fn json_vector(value: &Json, name: &str) -> Result<(Value, u32), String> {
+fn json_vector(value: &Json, name: &str) -> Result<(Value, u32), LineError> {
     match value {
         Json::String(text) => from_text(Kind::Vector, name, text),
         Json::Array(items) if items.len() == 3 => {
@@ -165,16 +178,18 @@ fn json_vector(value: &Json, name: &str) -> Result<(Value, u32), String> {
             }
             Ok((Value::Vector(out), json_vector_digits(out)))
         }
-        Json::Array(items) => {
-            let n = items.len();
-            Err(t!("check-field-not-three", field = name, count = n))
-        }
-        _ => Err(t!("check-field-not-a-vector", field = name)),
+        Json::Array(items) => Err(LineError::NotThree {
+            field: name.to_owned(),
+            count: items.len(),
+        }),
+        _ => Err(LineError::NotAVector {
+            field: name.to_owned(),
+        }),
     }
 }
 
 /// Reads the JSON `value` as a value of `kind`, with its significant digits.
-fn from_json(kind: Kind, name: &str, value: &Json) -> Result<(Value, u32), String> {
+fn from_json(kind: Kind, name: &str, value: &Json) -> Result<(Value, u32), LineError> {
     match (kind, value) {
         (Kind::VectorOrNull, Json::Null) => Ok((Value::Null, 0)),
         (Kind::Vector | Kind::VectorOrNull, _) => json_vector(value, name),
@@ -188,8 +203,12 @@ fn from_json(kind: Kind, name: &str, value: &Json) -> Result<(Value, u32), Strin
         }
         (Kind::Label, Json::String(text)) => Ok((Value::Label(text.clone()), 0)),
         (Kind::Label, Json::Number(n)) => Ok((Value::Label(n.to_string()), 0)),
-        (Kind::Flag, _) => Err(t!("check-field-not-flag", field = name)),
-        (Kind::Label, _) => Err(t!("check-field-not-label", field = name)),
+        (Kind::Flag, _) => Err(LineError::NotFlag {
+            field: name.to_owned(),
+        }),
+        (Kind::Label, _) => Err(LineError::NotLabel {
+            field: name.to_owned(),
+        }),
     }
 }
 
@@ -233,14 +252,11 @@ impl Record {
     ///
     /// # Errors
     /// Malformed JSON (with its column), not an object, or an ill-typed field.
-    pub fn from_json_line(dialect: impl Into<Dialect>, line: &str) -> Result<Self, String> {
+    pub fn from_json_line(dialect: impl Into<Dialect>, line: &str) -> Result<Self, LineError> {
         let dialect = dialect.into();
-        let object: Object = serde_json::from_str(line)
-            .map_err(|e| crate::error::JsonError::from(&e).to_string())?;
-        let listed = || fields::listed(dialect);
-        let object = object
-            .0
-            .ok_or_else(|| t!("check-json-not-object", fields = listed()))?;
+        let object: Object =
+            serde_json::from_str(line).map_err(|e| crate::error::JsonError::from(&e))?;
+        let object = object.0.ok_or(LineError::NotAnObject { dialect })?;
         let mut record = Self::default();
         for (name, kind) in fields::all(dialect) {
             match object.get(name) {
@@ -259,11 +275,13 @@ impl Record {
     pub fn from_texts<'a>(
         dialect: impl Into<Dialect>,
         texts: impl IntoIterator<Item = (&'a str, &'a str)>,
-    ) -> Result<Self, String> {
+    ) -> Result<Self, LineError> {
         let (dialect, mut record) = (dialect.into(), Self::default());
         for (name, text) in texts {
-            let (field, kind) = fields::find(dialect, name)
-                .ok_or_else(|| t!("check-unknown-field", field = name))?;
+            let (field, kind) =
+                fields::find(dialect, name).ok_or_else(|| LineError::UnknownField {
+                    field: name.to_owned(),
+                })?;
             record.push(field, from_text(kind, name, text)?);
         }
         Ok(record)
@@ -281,10 +299,10 @@ mod tests {
         let twice =
             r#"{"I":[0.6,-0.8,0],"N":[0,1,0],"eta":0.5,"result":[0,-1,0],"result":[1,0,0]}"#;
         let e = Record::from_json_line(Api::Glsl, twice).unwrap_err();
-        assert!(e.contains("duplicate field `result`"), "{e}");
+        assert!(e.to_string().contains("duplicate field `result`"), "{e}");
         for other in ["[1, 2]", "1", "\"I\"", "null", "true"] {
             let e = Record::from_json_line(Api::Glsl, other).unwrap_err();
-            assert!(e.contains("JSON object"), "{other}: {e}");
+            assert!(e.to_string().contains("JSON object"), "{other}: {e}");
         }
     }
 
@@ -320,8 +338,11 @@ mod tests {
         assert_eq!(r.get("wt"), Some(&Value::Null));
         assert_eq!(r.get("from"), None);
         let e = Record::from_texts(Api::Glsl, [("wt", "1 2 3")]).unwrap_err();
-        assert!(e.contains("unknown field `wt`"), "{e}");
+        assert!(e.to_string().contains("unknown field `wt`"), "{e}");
         let e = Record::from_json_line(Api::Glsl, r#"{"entering":"maybe"}"#).unwrap_err();
-        assert!(e.contains("`entering` must be true/false"), "{e}");
+        assert!(
+            e.to_string().contains("`entering` must be true/false"),
+            "{e}"
+        );
     }
 }

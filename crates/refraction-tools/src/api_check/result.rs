@@ -3,12 +3,12 @@
 //! is that, the API's "nothing transmitted", or something else (and then what it resembles).
 
 use glam::DVec3;
-use refraction_i18n::t;
 use refraction_kernel::api::{Api, Args, Returned};
 use refraction_kernel::{Real, Vector3 as _};
 use serde_json::{Value as Json, json};
 
 use super::call::{Call, Got};
+use super::error::LineError;
 use super::readings::Tolerance;
 use crate::vector_text::{angle, length};
 
@@ -38,17 +38,19 @@ fn wide<S: Real>(v: S::Vec3) -> DVec3 {
     DVec3::from_array(v.to_array().map(Real::to_f64))
 }
 
-fn narrow<S: Real>(args: Args<f64>) -> Result<Args<S>, String> {
+fn narrow<S: Real>(args: Args<f64>) -> Result<Args<S>, LineError> {
     let convert = |x: f64| {
         let y = S::from_f64(x);
         if y.is_finite() {
             Ok(y)
         } else {
-            let (value, precision) = (format!("{x:e}"), S::NAME);
-            Err(t!("check-too-large", value = value, precision = precision))
+            Err(LineError::TooLarge {
+                value: x,
+                precision: S::NAME,
+            })
         }
     };
-    let vector = |v: DVec3| -> Result<S::Vec3, String> {
+    let vector = |v: DVec3| -> Result<S::Vec3, LineError> {
         Ok(S::Vec3::new(convert(v.x)?, convert(v.y)?, convert(v.z)?))
     };
     Ok(Args {
@@ -126,7 +128,7 @@ pub fn transmitted_by<S: Real>(api: Api, args: Args<f64>) -> Option<DVec3> {
 ///
 /// # Errors
 /// An argument too large for `S`.
-pub fn returns<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<Returns, String> {
+pub fn returns<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<Returns, LineError> {
     let returned = call.api.call(narrow::<S>(call.args)?);
     let transmitted = returned.transmitted().map(wide::<S>);
     let step = (2.0 * tolerance.arguments()).max(8.0 * tolerance.epsilon);

@@ -505,6 +505,7 @@ fn each_path_gets_its_summary_and_a_hit_without_path_is_refused() {
         session
             .answer(&lone)
             .unwrap_err()
+            .to_string()
             .contains("missing field `path`")
     );
 }
@@ -593,6 +594,43 @@ fn explanations_come_in_the_threads_language_with_its_decimal_comma() {
             .contains("pass 1/1.5 = 0.666667"),
         "English again once the language is set back"
     );
+}
+
+#[test]
+fn lines_judged_on_other_threads_speak_the_callers_language() {
+    // Issue 35: the workers judged in the default language whatever the caller spoke.
+    use refraction_i18n::{Locale, set_locale, t};
+    let wrong = glsl_eta_inverted();
+    let zero = r#"{"I":[0,0,0],"N":[0,1,0],"eta":1,"result":[0,0,0]}"#;
+    let text: String = (0..400)
+        .flat_map(|k| [if k % 2 == 0 { wrong.as_str() } else { zero }, "\n"])
+        .collect();
+    set_locale(Locale::De);
+    let explained = answer(Api::Glsl, &wrong)["explanation"].clone();
+    let refused = t!("check-field-zero-vector", field = "I");
+    let mut session = Session::new(options(Api::Glsl), Format::JsonLines, false, false);
+    let mut out = Vec::new();
+    let answered = session.run(text.as_bytes(), &mut out, 4);
+    set_locale(Locale::En);
+    assert!(!answered.unwrap());
+    assert!(refused.ends_with("ist der Nullvektor"), "{refused}");
+    assert!(
+        explained.as_str().unwrap().starts_with("In GLSL ist eta"),
+        "{explained}"
+    );
+    let answers: Vec<Value> = String::from_utf8(out)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(answers.len(), 400);
+    for (k, a) in answers.iter().enumerate() {
+        if k % 2 == 0 {
+            assert_eq!(a["explanation"], explained, "line {}", k + 1);
+        } else {
+            assert_eq!(a["error"], refused.as_str(), "line {}", k + 1);
+        }
+    }
 }
 
 /// Issue 23: a line that is not UTF-8 was left out of the tally of a pattern run.

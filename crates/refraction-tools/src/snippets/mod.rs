@@ -1,11 +1,13 @@
 //! The current case as text to paste elsewhere: a `solve` line, code calling a reference
 //! function (Rust, GLSL, C++ with glm) and a unit-test vector, each with the expected T; and a
-//! student's checked call as a unit test in their own language ([`api`]).
+//! student's checked call as a unit test in their own language ([`api`]). The window copies
+//! them and writes a log's failing lines as a file of tests with them.
 
 pub mod api;
 
+use crate::error::{JsonError, RequestError};
+use crate::solve::Request;
 use refraction_kernel::{Convention, refract};
-use refraction_tools::solve::Request;
 
 /// A number as a float literal that Rust, GLSL and C++ all read back exactly (`1.0`, `0.1`,
 /// `1e-7`; never `1`).
@@ -27,11 +29,8 @@ struct Expected {
     normal_flipped: bool,
 }
 
-fn expected(request: &Request) -> Result<Expected, String> {
-    let r = request
-        .incidence::<f64>()
-        .and_then(|incidence| Ok(refract(&incidence)?))
-        .map_err(|e| e.to_string())?;
+fn expected(request: &Request) -> Result<Expected, RequestError> {
+    let r = refract(&request.incidence::<f64>()?)?;
     Ok(Expected {
         t: r.t().map(|t| t.to_array()),
         weights: r.transmission.map(|t| (t.a, t.b)),
@@ -43,7 +42,7 @@ fn expected(request: &Request) -> Result<Expected, String> {
 ///
 /// # Errors
 /// The request cannot be refracted.
-pub fn rust(request: &Request) -> Result<String, String> {
+pub fn rust(request: &Request) -> Result<String, RequestError> {
     let t = expected(request)?.t;
     let convention = match request.convention {
         Convention::AlongRay => "AlongRay",
@@ -71,7 +70,7 @@ pub fn rust(request: &Request) -> Result<String, String> {
 
 /// The built-in `refract(I, N, eta)` call of GLSL and glm for this case: I is the travel
 /// direction (−W for `toward_origin`), N is turned to face it, and eta = `μ_i/μ_t`.
-fn shading_call(request: &Request, vec3: &str, refract_fn: &str) -> Result<String, String> {
+fn shading_call(request: &Request, vec3: &str, refract_fn: &str) -> Result<String, RequestError> {
     let expected = expected(request)?;
     let incident = match request.convention {
         Convention::AlongRay => "normalize(W)",
@@ -99,7 +98,7 @@ fn shading_call(request: &Request, vec3: &str, refract_fn: &str) -> Result<Strin
 ///
 /// # Errors
 /// The request cannot be refracted.
-pub fn glsl(request: &Request) -> Result<String, String> {
+pub fn glsl(request: &Request) -> Result<String, RequestError> {
     shading_call(request, "vec3", "refract")
 }
 
@@ -107,7 +106,7 @@ pub fn glsl(request: &Request) -> Result<String, String> {
 ///
 /// # Errors
 /// The request cannot be refracted.
-pub fn cpp(request: &Request) -> Result<String, String> {
+pub fn cpp(request: &Request) -> Result<String, RequestError> {
     shading_call(request, "glm::vec3", "glm::refract")
         .map(|text| format!("#include <glm/glm.hpp>\nusing glm::normalize;\n{text}"))
 }
@@ -117,10 +116,10 @@ pub fn cpp(request: &Request) -> Result<String, String> {
 ///
 /// # Errors
 /// The request cannot be refracted.
-pub fn test_vector(request: &Request) -> Result<String, String> {
+pub fn test_vector(request: &Request) -> Result<String, RequestError> {
     let Expected { t, weights, .. } = expected(request)?;
-    let mut value: serde_json::Value =
-        serde_json::from_str(&request.to_json_line()).map_err(|e| e.to_string())?;
+    let mut value: serde_json::Value = serde_json::from_str(&request.to_json_line())
+        .map_err(|e| RequestError::from(JsonError::from(&e)))?;
     value["t_expected"] = serde_json::json!(t);
     value["tir"] = serde_json::json!(t.is_none());
     value["a"] = serde_json::json!(weights.map(|w| w.0));
@@ -149,16 +148,16 @@ pub struct AnyCase<'a> {
 }
 
 /// The tolerance of a test in `precision`.
-fn any_tolerance(precision: refraction_tools::solve::Precision) -> &'static str {
+fn any_tolerance(precision: crate::solve::Precision) -> &'static str {
     match precision {
-        refraction_tools::solve::Precision::F32 => "1e-5",
-        refraction_tools::solve::Precision::F64 => "1e-12",
+        crate::solve::Precision::F32 => "1e-5",
+        crate::solve::Precision::F64 => "1e-12",
     }
 }
 
 /// One case's test body in `language`: the call with the log's arguments and the expected T
 /// (the kernel's) or total internal reflection, after a comment saying what the code gave.
-fn any_test(language: AnyLanguage, case: &AnyCase<'_>) -> Result<String, String> {
+fn any_test(language: AnyLanguage, case: &AnyCase<'_>) -> Result<String, RequestError> {
     let r = case.request;
     let t = expected(r)?.t;
     let gave = case.yours.map_or_else(
@@ -234,7 +233,10 @@ fn cpp_main(names: impl Iterator<Item = String>) -> String {
 ///
 /// # Errors
 /// A line's problem cannot be refracted (it was judged, so it can).
-pub fn any_renderer_tests(language: AnyLanguage, cases: &[AnyCase<'_>]) -> Result<String, String> {
+pub fn any_renderer_tests(
+    language: AnyLanguage,
+    cases: &[AnyCase<'_>],
+) -> Result<String, RequestError> {
     let convention = cases
         .first()
         .map_or_else(Convention::default, |c| c.request.convention);
@@ -258,7 +260,7 @@ pub fn any_renderer_tests(language: AnyLanguage, cases: &[AnyCase<'_>]) -> Resul
 #[cfg(test)]
 mod tests {
     use super::*;
-    use refraction_tools::solve::Precision;
+    use crate::solve::Precision;
 
     fn request(w: [f64; 3], n: [f64; 3], convention: Convention) -> Request {
         Request {

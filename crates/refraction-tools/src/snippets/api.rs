@@ -10,9 +10,9 @@ use refraction_kernel::api::{Api, Args};
 use serde_json::Value as Json;
 
 use super::literal;
-use refraction_tools::api_check::fields::names;
-use refraction_tools::api_check::{Call, Code, Diagnosis};
-use refraction_tools::solve::Precision;
+use crate::api_check::fields::names;
+use crate::api_check::{Call, Code, Diagnosis};
+use crate::solve::Precision;
 
 /// The language a test is written in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -433,7 +433,7 @@ pub fn test(language: Language, case: &ApiCase<'_>) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use refraction_tools::api_check::{Options, Record, check_record};
+    use crate::api_check::{Options, Record, check_record};
 
     /// The test of a logged line, with the verdict's own fields.
     fn snippet(api: Api, line: &str, language: Language) -> String {
