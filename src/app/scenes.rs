@@ -147,8 +147,8 @@ fn hit_text(scene: &Scene, hit: &Hit) -> String {
     let (mu_i, mu_t) = (number(hit.mu_i, 4), number(hit.mu_t, 4));
     let wavelength = number(traced_wavelength(hit.light), 1);
     let side = match hit.side {
-        Side::Entering => "entering",
-        Side::Leaving => "leaving",
+        Side::Outside => "entering",
+        Side::Inside => "leaving",
     };
     t!(
         "scenes-hit",
@@ -563,12 +563,8 @@ mod tests {
     fn a_hovered_hit_says_which_way_the_ray_crosses_in_the_windows_language() {
         let scene = Scene::embedded("droplet").unwrap();
         let trace = scene.trace();
-        let entering = trace
-            .hits
-            .iter()
-            .find(|h| h.side == Side::Entering)
-            .unwrap();
-        let leaving = trace.hits.iter().find(|h| h.side == Side::Leaving).unwrap();
+        let entering = trace.hits.iter().find(|h| h.side == Side::Outside).unwrap();
+        let leaving = trace.hits.iter().find(|h| h.side == Side::Inside).unwrap();
         let english = (hit_text(&scene, entering), hit_text(&scene, leaving));
         refraction_i18n::set_locale(Locale::De);
         let german = hit_text(&scene, leaving);

@@ -62,7 +62,7 @@ fn clicking_the_droplets_exit_opens_it_with_the_flipped_normal() {
         .trace()
         .hits
         .iter()
-        .find(|hit| hit.side == Side::Leaving)
+        .find(|hit| hit.side == Side::Inside)
         .unwrap();
     let at = scenes.to_screen(exit.point).unwrap();
     press_move_release(&mut h, &[at]);

@@ -891,8 +891,8 @@ impl HitKind {
     fn of(hit: &Hit) -> Self {
         match (hit.outcome, hit.side) {
             (Outcome::TotalInternalReflection, _) => Self::TotalInternalReflection,
-            (Outcome::Refracted, Side::Leaving) => Self::Leaving,
-            (Outcome::Refracted, Side::Entering) => Self::Entering,
+            (Outcome::Refracted, Side::Inside) => Self::Leaving,
+            (Outcome::Refracted, Side::Outside) => Self::Entering,
         }
     }
 
@@ -1309,7 +1309,7 @@ mod tests {
     fn a_click_picks_the_nearest_hit_only_when_close() {
         let (_, trace) = traced("droplet");
         let layout = SceneLayout::new(trace.bounds, Vec2::new(1000.0, 700.0));
-        let hit = trace.hits.iter().find(|h| h.side == Side::Leaving).unwrap();
+        let hit = trace.hits.iter().find(|h| h.side == Side::Inside).unwrap();
         let p = layout.at(hit.point) + Vec2::new(2.0, 0.0);
         let picked = layout.hit_near(&trace, p).unwrap();
         assert!(layout.at(picked.point).distance(p) <= layout.pick_radius());

@@ -81,6 +81,7 @@ mod input;
 mod real;
 mod refraction;
 pub mod seed;
+mod side;
 mod stable;
 mod transmission;
 mod transmit;
@@ -97,6 +98,7 @@ pub use input::{
 };
 pub use real::{Real, Vector3};
 pub use refraction::{Refraction, refract};
+pub use side::Side;
 pub use stable::{Facing, refract_facing};
 pub use transmission::Transmission;
 pub use transmit::{Transmitted, transmit, transmit_pbrt};

@@ -6,15 +6,7 @@
 
 use glam::DVec3;
 
-/// Which side of the surface a ray arrives from.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum Side {
-    /// From outside the object (entering it).
-    Outside,
-    /// From inside the object (leaving it), or from the normal's far side where only the
-    /// normal tells.
-    Inside,
-}
+pub use refraction_kernel::Side;
 
 /// One judged line of a log, as its failure map shows it.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -13,6 +13,7 @@ use super::bounds::Bounds;
 use super::fresnel::Fresnel;
 use super::search::{MAX_INTERSECTION_TESTS, Search};
 use super::source::{Light, serialize_wavelength, traced_wavelength};
+pub use refraction_kernel::Side;
 use refraction_kernel::{Convention, Incidence, refract_facing};
 
 /// The most segments one trace records; past it the trace stops and says so
@@ -167,16 +168,6 @@ impl fmt::Display for Counts {
         }
         Ok(())
     }
-}
-
-/// Which way a ray crosses a boundary, relative to the shape's region.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Side {
-    /// Into the region: the outward normal faces the ray.
-    Entering,
-    /// Out of the region: the outward normal points along the ray, and the kernel turns it.
-    Leaving,
 }
 
 /// What happened at a hit.
@@ -515,11 +506,11 @@ impl Tracer<'_> {
                 break End::Screen;
             }
             let side = if d.dot(crossing.normal) < 0.0 {
-                Side::Entering
+                Side::Outside
             } else {
-                Side::Leaving
+                Side::Inside
             };
-            let entering = side == Side::Entering;
+            let entering = side == Side::Outside;
             let before = self.search.medium_where(x, Some((shape, !entering)));
             let after = self.search.medium_where(x, Some((shape, entering)));
             self.segment(origin, x, before, colour, &mut ray);
@@ -572,8 +563,8 @@ impl Tracer<'_> {
     fn interact(&mut self, ray: &mut Ray, mut hit: Hit) -> Outcome {
         let effects = *self.scene.effects();
         let facing = match hit.side {
-            Side::Entering => hit.n,
-            Side::Leaving => -hit.n,
+            Side::Outside => hit.n,
+            Side::Inside => -hit.n,
         };
         let mu = hit.mu_i / hit.mu_t;
         self.trace.counts.kernel_calls += 1;

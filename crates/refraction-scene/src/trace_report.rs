@@ -102,3 +102,26 @@ impl<'a> TraceReport<'a> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_hit_says_entering_or_leaving_as_a_log_does() {
+        let scene = Scene::embedded("droplet").unwrap();
+        let trace = scene.trace();
+        let json = serde_json::to_value(TraceReport::new(&scene, &trace)).unwrap();
+        let sides: Vec<&str> = json["hits"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|hit| hit["side"].as_str().unwrap())
+            .collect();
+        assert!(
+            sides.contains(&"entering") && sides.contains(&"leaving"),
+            "{sides:?}"
+        );
+        assert!(sides.iter().all(|s| ["entering", "leaving"].contains(s)));
+    }
+}

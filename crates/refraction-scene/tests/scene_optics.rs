@@ -69,12 +69,7 @@ fn the_right_angle_prism_reflects_totally_where_the_critical_angle_says() {
         prism
             .set_source_direction(DVec2::from_angle(angle))
             .unwrap();
-        for hit in prism
-            .trace()
-            .hits
-            .iter()
-            .filter(|h| h.side == Side::Leaving)
-        {
+        for hit in prism.trace().hits.iter().filter(|h| h.side == Side::Inside) {
             let sin_i = hit.w.perp_dot(hit.n).abs();
             let critical_sin = hit.mu_t / hit.mu_i;
             if (sin_i - critical_sin).abs() < 1e-9 {
@@ -128,7 +123,7 @@ fn the_droplet_reaches_the_primary_rainbow_angle_for_each_wavelength() {
         };
         let parent_path = &trace.paths[parent.path];
         if path.reflections != 1
-            || parent.side != Side::Leaving
+            || parent.side != Side::Inside
             || parent_path.parent_hit.is_some()
             || path.segments.len() != 2
         {
@@ -158,7 +153,7 @@ fn leaving_the_droplet_the_outward_normal_is_turned_by_the_kernel() {
     let leaving: Vec<&Hit> = trace
         .hits
         .iter()
-        .filter(|h| h.side == Side::Leaving)
+        .filter(|h| h.side == Side::Inside)
         .collect();
     assert!(!leaving.is_empty());
     for hit in leaving {
