@@ -14,6 +14,7 @@ mod bench_variants;
 mod check_api_cli;
 mod check_cli;
 mod clipboard;
+mod dev_profile;
 mod diagnosis_cli;
 mod docs_commands;
 mod explorer_canvas;
