@@ -54,6 +54,85 @@ fn dragging_the_source_retraces_the_scene() {
     );
 }
 
+/// The droplet at 1,000 rays per colour (43,396 segments): too big to trace every frame of a
+/// drag on a classroom machine.
+fn dense_droplet() -> Harness<'static, Explorer> {
+    let mut scene = Scene::embedded("droplet").unwrap();
+    scene.set_ray_count(1000).unwrap();
+    let mut explorer = Explorer::new(ExplorerState::default());
+    explorer.open_scene(scene);
+    harness_for(explorer)
+}
+
+#[test]
+fn a_dense_scene_drags_as_a_draft_and_is_whole_again_when_the_pointer_lets_go() {
+    let mut h = dense_droplet();
+    h.run();
+    let full = h.state().scenes().trace().counts;
+    assert_eq!(full.source_rays, 7000, "{full:?}");
+    assert_eq!(h.state().scenes().draft(), None);
+    let from = h.get_by_label("Source handle").rect().center();
+    h.hover_at(from);
+    h.run();
+    h.drag_at(from);
+    h.run();
+    for step in 1..=3 {
+        h.hover_at(from + Vec2::new(0.0, 8.0 * step as f32));
+        h.run();
+        let scenes = h.state().scenes();
+        let every = scenes.draft().expect("a draft while the pointer drags");
+        let drafted = scenes.trace().counts;
+        assert!(
+            drafted.segments < 7_500 && drafted.source_rays < full.source_rays,
+            "1 in {every}: {drafted:?}"
+        );
+        assert_eq!(drafted.wavelengths, full.wavelengths, "every colour kept");
+        let note = format!("Draft while dragging: one ray in {every}");
+        assert!(
+            h.query_by_label_contains(&note).is_some(),
+            "the canvas says {note}"
+        );
+    }
+    h.drop_at(from + Vec2::new(0.0, 24.0));
+    h.run();
+    let scenes = h.state().scenes();
+    assert_eq!(scenes.draft(), None);
+    assert!(h.query_by_label_contains("Draft while dragging").is_none());
+    let whole = scenes.trace();
+    assert_eq!(whole.counts.source_rays, full.source_rays);
+    // Exactly what a fresh view of the moved scene traces.
+    let mut explorer = Explorer::new(ExplorerState::default());
+    explorer.open_scene(scenes.scene().clone());
+    let mut fresh = harness_for(explorer);
+    fresh.run();
+    assert_eq!(fresh.state().scenes().trace().segments, whole.segments);
+}
+
+#[test]
+fn every_built_in_scene_at_its_own_ray_count_drags_in_full() {
+    for info in refraction_scene::catalogue() {
+        let mut explorer = Explorer::new(ExplorerState::default());
+        explorer.open_scene(Scene::embedded(info.name).unwrap());
+        let mut h = harness_for(explorer);
+        h.run();
+        let Some(handle) = h.query_by_label("Source handle").map(|n| n.rect().center()) else {
+            continue;
+        };
+        let rays = h.state().scenes().trace().counts.source_rays;
+        h.hover_at(handle);
+        h.run();
+        h.drag_at(handle);
+        h.run();
+        h.hover_at(handle + Vec2::new(0.0, 10.0));
+        h.run();
+        let scenes = h.state().scenes();
+        assert_eq!(scenes.draft(), None, "{}", info.name);
+        assert_eq!(scenes.trace().counts.source_rays, rays, "{}", info.name);
+        h.drop_at(handle + Vec2::new(0.0, 10.0));
+        h.run();
+    }
+}
+
 #[test]
 fn clicking_the_droplets_exit_opens_it_with_the_flipped_normal() {
     let mut h = droplet();

@@ -132,6 +132,7 @@ fresnel-no-critical = Kein Grenzwinkel: Das Licht geht in ein Medium mit höhere
 
 scenes-scene = Szene
 scenes-rays = Strahlen
+scenes-draft = Entwurf beim Ziehen: jeder { $every }. Strahl
 scenes-reset-hover = die Szene so, wie sie in ihrer Datei steht
 scenes-file = Szenendatei
 scenes-open = Datei öffnen

@@ -132,6 +132,8 @@ fresnel-no-critical = No critical angle: the light goes into a medium of higher 
 
 scenes-scene = Scene
 scenes-rays = Rays
+# While a handle is dragged in a scene of many rays, the canvas shows one ray in $every until the pointer lets go.
+scenes-draft = Draft while dragging: one ray in { $every }
 scenes-reset-hover = the scene as its file has it
 scenes-file = Scene file
 scenes-open = Open file

@@ -132,6 +132,7 @@ fresnel-no-critical = Sin ángulo límite: la luz pasa a un medio de índice may
 
 scenes-scene = Escena
 scenes-rays = Rayos
+scenes-draft = Borrador al arrastrar: un rayo de cada { $every }
 scenes-reset-hover = la escena tal como está en su archivo
 scenes-file = Archivo de escena
 scenes-open = Abrir archivo

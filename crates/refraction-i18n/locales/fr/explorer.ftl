@@ -132,6 +132,7 @@ fresnel-no-critical = Pas d’angle limite : la lumière passe dans un milieu d
 
 scenes-scene = Scène
 scenes-rays = Rayons
+scenes-draft = Esquisse pendant le glissement : un rayon sur { $every }
 scenes-reset-hover = la scène telle que son fichier la décrit
 scenes-file = Fichier de scène
 scenes-open = Ouvrir un fichier

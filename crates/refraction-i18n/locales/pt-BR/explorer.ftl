@@ -132,6 +132,7 @@ fresnel-no-critical = Sem ângulo limite: a luz passa para um meio de índice ma
 
 scenes-scene = Cena
 scenes-rays = Raios
+scenes-draft = Rascunho ao arrastar: um raio a cada { $every }
 scenes-reset-hover = a cena como está no seu arquivo
 scenes-file = Arquivo de cena
 scenes-open = Abrir arquivo

@@ -132,6 +132,7 @@ fresnel-no-critical = Предельного угла нет: свет пере�
 
 scenes-scene = Сцена
 scenes-rays = Лучи
+scenes-draft = Черновик при перетаскивании: каждый { $every }-й луч
 scenes-reset-hover = сцена в том виде, в каком она записана в файле
 scenes-file = Файл сцены
 scenes-open = Открыть файл
