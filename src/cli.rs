@@ -210,6 +210,11 @@ pub enum Command {
         /// being read).
         #[arg(long, requires = "summary")]
         replace: bool,
+        /// Also write the first 100 failing lines as unit tests to this file, in the language its
+        /// extension names: .cpp or .py (any renderer's, or pbrt's and the book's C++), .glsl.
+        /// A file already there must be empty or a test file check wrote (or the window saved).
+        #[arg(long, value_name = "FILE")]
+        tests: Option<PathBuf>,
         /// With --pattern, answer a line that does not match with an error instead of skipping it.
         #[arg(long, requires = "pattern")]
         strict: bool,

@@ -71,6 +71,7 @@ fn main() -> ExitCode {
             paths,
             summary,
             replace,
+            tests,
             convention,
             normal,
             renderer,
@@ -93,6 +94,7 @@ fn main() -> ExitCode {
                 paths,
                 summary: summary.as_deref(),
                 replace,
+                tests: tests.as_deref(),
             },
         ),
         Some(Command::Check { file, api, .. }) => commands::lines::suggest_pattern(

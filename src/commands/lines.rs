@@ -8,6 +8,7 @@ use std::process::ExitCode;
 use refraction_i18n::t;
 use refraction_tools::api_check::{Dialect, Format, Options, Pattern, Session, suggest};
 use refraction_tools::diagnosis::{Verdict, looks_like_summary};
+use refraction_tools::snippets::tests_file::{self, TestLanguage};
 use refraction_tools::{self as jsonl, LinesError, solve as solver};
 
 use super::{fail, output, output_error};
@@ -112,6 +113,44 @@ pub(crate) struct Reading<'a> {
     pub summary: Option<&'a Path>,
     /// `--replace`: `--summary` may write over a file that is not a summary.
     pub replace: bool,
+    /// `--tests`: the file the first failing lines go to, as unit tests.
+    pub tests: Option<&'a Path>,
+}
+
+/// The language of the tests `--tests` asks for at `path`, if they may be written there; else
+/// the failure, said on stderr.
+fn tests_language(path: &Path, dialect: Dialect) -> Result<TestLanguage, ExitCode> {
+    let Some(language) = TestLanguage::for_path(dialect, path) else {
+        let extensions: Vec<&str> = TestLanguage::of(dialect)
+            .iter()
+            .map(|l| l.extension())
+            .collect();
+        let (shown, extensions) = (path.display(), extensions.join(" or ."));
+        let said =
+            format!("--tests {shown}: name a .{extensions} file, the languages of its tests");
+        return Err(fail("check", &said));
+    };
+    match tests_file::replaces(path, language) {
+        Ok(_) => Ok(language),
+        Err(e) => Err(fail("check", &e)),
+    }
+}
+
+/// Writes the failing lines `session` kept as tests in `language` at `path`; what it did, for
+/// the tally, or the failure, said on stderr.
+fn write_tests(session: &Session, language: TestLanguage, path: &Path) -> Result<String, ExitCode> {
+    let (failing, shown) = (session.failing(), path.display());
+    if failing.is_empty() {
+        return Ok(format!("no failing line: {shown} left as it was"));
+    }
+    let text =
+        tests_file::text(language, failing, session.options()).map_err(|e| fail("check", &e))?;
+    refraction_files::write_atomically(path, text.as_bytes()).map_err(|e| fail("check", &e))?;
+    let count = failing.len();
+    let lines = if count == 1 { "line" } else { "lines" };
+    Ok(format!(
+        "{count} failing {lines} written as tests to {shown}"
+    ))
 }
 
 /// Runs `check` (with `--api`, in that API's terms) on `file` or stdin: an answer per line on
@@ -135,8 +174,18 @@ pub(crate) fn check(file: Option<&Path>, options: &Options, reading: &Reading<'_
     {
         return fail("check", &e);
     }
+    let tests = match reading.tests {
+        Some(path) => match tests_language(path, options.dialect) {
+            Ok(language) => Some((path, language)),
+            Err(status) => return status,
+        },
+        None => None,
+    };
     let (lines, name) = (input.lines, input.name);
     let mut session = Session::new(*options, format, reading.strict, reading.paths);
+    if tests.is_some() {
+        session.keep_failing();
+    }
     let mut output = io::stdout().lock();
     let result = session
         .run(lines, &mut output, jsonl::threads())
@@ -164,6 +213,12 @@ pub(crate) fn check(file: Option<&Path>, options: &Options, reading: &Reading<'_
         tally.push(format!("check: {counted}"));
     }
     tally.extend(summary.sentences().iter().map(|s| format!("check: {s}")));
+    if let Some((path, language)) = tests {
+        match write_tests(&session, language, path) {
+            Ok(said) => tally.push(format!("check: {said}")),
+            Err(status) => return status,
+        }
+    }
     let status = match summary.verdict() {
         Verdict::NothingJudged => ExitCode::from(NOTHING_JUDGED),
         _ if !answered || !session.all_ok() => ExitCode::from(1),

@@ -135,3 +135,60 @@ fn a_csv_log_is_read_by_its_header() {
             .contains("no usable CSV header")
     );
 }
+
+#[test]
+fn tests_writes_the_failing_lines_as_tests_and_never_over_other_code() {
+    // Issue 35: `check` writes the failing lines as tests, as the window's log section does.
+    let folder = cli::folder("check-tests", "glsl");
+    let tests = folder.join("regressions.glsl");
+    let tests_arg = tests.to_str().unwrap();
+    let input = [
+        r#"{"I":[0.642788,-0.766044,0],"N":[0,1,0],"eta":0.666667,"result":[0.428525,-0.90353,0],"from":1,"to":1.5}"#,
+        r#"{"I":[0.3,-0.953939,0],"N":[0,1,0],"eta":1.5,"result":"vec3(0.45, -0.893029, 0)","from":1,"to":1.5}"#,
+    ]
+    .join("\n");
+    let output = run(&["check", "--api", "glsl", "--tests", tests_arg], &input);
+    assert_eq!(output.status.code(), Some(1));
+    let written = std::fs::read_to_string(&tests).unwrap();
+    assert!(
+        written.starts_with("// Regression tests written by refraction-explorer: the first 1 "),
+        "{written}"
+    );
+    assert!(written.contains("line_2"), "{written}");
+    assert!(
+        !written.contains("line_1"),
+        "only the failing line: {written}"
+    );
+    let tally = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        tally.contains("1 failing line written as tests to"),
+        "{tally}"
+    );
+    // Run again: the file is one of ours, so it is replaced.
+    let again = run(&["check", "--api", "glsl", "--tests", tests_arg], &input);
+    assert_eq!(again.status.code(), Some(1));
+    // The student's own code is never written over, and a name must say the language.
+    std::fs::write(&tests, "void main() {}\n").unwrap();
+    let refused = run(&["check", "--api", "glsl", "--tests", tests_arg], &input);
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(
+        answers(&refused).is_empty(),
+        "refused before any line is read"
+    );
+    assert!(
+        String::from_utf8_lossy(&refused.stderr).contains("is not a test file this tool wrote")
+    );
+    assert_eq!(std::fs::read_to_string(&tests).unwrap(), "void main() {}\n");
+    let other = folder.join("t.rs");
+    let refused = run(
+        &["check", "--api", "glsl", "--tests", other.to_str().unwrap()],
+        &input,
+    );
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(
+        String::from_utf8_lossy(&refused.stderr).contains("name a .glsl or .py file"),
+        "{}",
+        String::from_utf8_lossy(&refused.stderr)
+    );
+    std::fs::remove_dir_all(&folder).unwrap();
+}

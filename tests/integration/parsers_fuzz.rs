@@ -360,7 +360,7 @@ proptest! {
             line
         };
         let mut session = Session::new(Options::new(api), Format::JsonLines, false, false);
-        match session.answer(&line) {
+        match session.answer(1, &line) {
             Ok(reply) => assert_api_answer(&reply, &line),
             Err(message) => prop_assert!(!message.to_string().is_empty()),
         }
@@ -388,7 +388,7 @@ proptest! {
             let Ok(parsed) = Pattern::parse(api, text) else { continue };
             let mut session = Session::new(Options::new(api), Format::Pattern(parsed), false, true);
             for log_line in [line.as_str(), noise.as_str()] {
-                match session.answer(log_line) {
+                match session.answer(1, log_line) {
                     Ok(reply) => assert_api_answer(&reply, log_line),
                     Err(message) => prop_assert!(!message.to_string().is_empty()),
                 }

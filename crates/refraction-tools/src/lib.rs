@@ -259,8 +259,8 @@ pub fn threads() -> usize {
 /// Writes an answer for every non-empty line of `input` to `output`, in input order. The lines
 /// are read in chunks (at most 4,096 lines or about 4 MiB, and no
 /// line over [`MAX_LINE_BYTES`] is kept), `work` runs on each line of a chunk on `threads`
-/// threads, then `finish` turns each result into the answer, in order, on this thread (it may
-/// keep a tally or other state). A line that `finish` rejects, that is not UTF-8 or that is
+/// threads, then `finish` turns each result into the answer, in order, on this thread, with
+/// the line's number (it may keep a tally or other state). A line that `finish` rejects, that is not UTF-8 or that is
 /// too long is answered with `{"line": K, "error": "..."}` (K counts every input line from 1)
 /// and the run goes on; a too-long line is answered as soon as it passes the limit, and the
 /// rest of it is read past without being kept. An empty answer writes nothing (a log line that
@@ -276,7 +276,7 @@ pub fn answer_lines<W: Send, E: core::fmt::Display>(
     output: impl Write,
     threads: usize,
     work: impl Fn(&str) -> W + Sync,
-    mut finish: impl FnMut(W) -> Result<String, E>,
+    mut finish: impl FnMut(usize, W) -> Result<String, E>,
     mut refused: impl FnMut(),
 ) -> Result<bool, LinesError> {
     let mut input = io::BufReader::with_capacity(READ_BUFFER_BYTES, input);
@@ -293,7 +293,7 @@ pub fn answer_lines<W: Send, E: core::fmt::Display>(
                     refused();
                     Err(unread.to_string())
                 }
-                Outcome::Done(result) => finish(result).map_err(|e| e.to_string()),
+                Outcome::Done(result) => finish(item.number, result).map_err(|e| e.to_string()),
             };
             let text = reply.unwrap_or_else(|message| {
                 all_answered = false;
@@ -328,7 +328,7 @@ mod tests {
             &mut out,
             2,
             |line| line.len(),
-            |len| Ok::<_, String>(format!("{{\"len\":{len}}}")),
+            |_, len| Ok::<_, String>(format!("{{\"len\":{len}}}")),
             || {},
         )
         .unwrap();
@@ -408,7 +408,7 @@ mod tests {
             Vec::new(),
             1,
             str::len,
-            |len| Ok::<_, String>(len.to_string()),
+            |_, len| Ok::<_, String>(len.to_string()),
             || refused += 1,
         )
         .unwrap();
@@ -434,7 +434,7 @@ mod tests {
                 line.parse::<usize>()
                     .map_err(|e| format!("not {line}: {e}"))
             };
-            let finish = |parsed: Result<usize, _>| {
+            let finish = |_, parsed: Result<usize, _>| {
                 let k = parsed?;
                 order.push(k);
                 Ok::<_, String>(format!("{{\"k\":{k}}}"))
@@ -490,12 +490,12 @@ mod tests {
             Vec::new(),
             2,
             echo,
-            |r| r,
+            |_, r| r,
             || {},
         );
         assert!(matches!(err, Err(LinesError::Read(_))), "{err:?}");
         let mut full = [0_u8; 4];
-        let err = answer_lines(&b"abcdef\n"[..], &mut full[..], 2, echo, |r| r, || {});
+        let err = answer_lines(&b"abcdef\n"[..], &mut full[..], 2, echo, |_, r| r, || {});
         assert!(matches!(err, Err(LinesError::Write(_))), "{err:?}");
     }
 }

@@ -302,7 +302,7 @@ pub fn answer(line: &str) -> Result<String, RequestError> {
 /// # Errors
 /// Reading `input` or writing `output` failed.
 pub fn run(input: impl Read, output: impl Write) -> Result<bool, crate::LinesError> {
-    crate::answer_lines(input, output, crate::threads(), answer, |r| r, || {})
+    crate::answer_lines(input, output, crate::threads(), answer, |_, r| r, || {})
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@
 use egui::{CollapsingHeader, Grid, RichText, Sense, TextEdit, Ui};
 use glam::Vec2;
 
-use super::log_files::{Failing, LogFiles, MAX_JUDGED, MAX_SAVED_FAILING};
+use super::log_files::{LogFiles, MAX_JUDGED};
 use super::refusal::Refusal;
 use super::{JSON_LINE_START, field};
 use crate::app::paint::{self, verdict_colour, window_palette};
@@ -22,6 +22,7 @@ use refraction_tools::api_check::{
     SKIPPED, Session, Tally, fields,
 };
 use refraction_tools::diagnosis::Summary;
+use refraction_tools::snippets::tests_file::{Failing, MAX_TESTS};
 
 /// The most characters the box takes (a paste beyond it is cut there): about 500 log lines.
 pub(super) const MAX_PASTED_CHARS: usize = 65_536;
@@ -58,7 +59,7 @@ pub(super) struct Table {
     summary: Summary,
     /// Where each judged line lands on the failure map (the first [`MAX_POINTS`]).
     points: Vec<LinePoint>,
-    /// The failing lines, to be saved as tests (the first [`MAX_SAVED_FAILING`]).
+    /// The failing lines, to be saved as tests (the first [`MAX_TESTS`]).
     failing: Vec<Failing>,
     /// Judged lines the table does not list.
     not_listed: usize,
@@ -190,7 +191,7 @@ fn judge(dialect: Dialect, reading: &Reading, text: &str) -> Result<Table, Refus
         if points.len() < MAX_POINTS {
             points.push(judgement.point());
         }
-        if !judgement.ok() && failing.len() < MAX_SAVED_FAILING {
+        if !judgement.ok() && failing.len() < MAX_TESTS {
             failing.push(Failing {
                 line,
                 record: record.clone(),

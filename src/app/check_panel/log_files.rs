@@ -11,27 +11,12 @@ use super::refusal::Refusal;
 use crate::app::file_dialog::{self, FileDialog, Purpose, Target};
 use crate::app::typed::error_label;
 use refraction_i18n::t;
-use refraction_tools::api_check::physics::Case;
-use refraction_tools::api_check::{Dialect, Judgement, Options, Record};
-use refraction_tools::snippets::api::{self as api_snippets, Language, Name};
-use refraction_tools::snippets::{self, AnyCase, AnyLanguage};
+use refraction_tools::api_check::{Dialect, Options};
+use refraction_tools::snippets::AnyLanguage;
+use refraction_tools::snippets::tests_file::{self, Failing, MAX_TESTS, TestLanguage};
 
 /// The most lines judged in the window (a log file can be longer: `check` takes any length).
 pub(super) const MAX_JUDGED: usize = 100_000;
-
-/// The most failing lines a saved test file holds.
-pub(super) const MAX_SAVED_FAILING: usize = 100;
-
-/// A failing line, kept to be saved as a test.
-#[derive(Clone, Debug)]
-pub(super) struct Failing {
-    /// Its line number in the log, from 1.
-    pub line: usize,
-    /// The call read.
-    pub record: Record,
-    /// Its verdict.
-    pub judgement: Judgement,
-}
 
 /// The largest log file the window reads (`check` reads any length from its input).
 pub(super) const MAX_LOG_BYTES: u64 = 16 * 1024 * 1024;
@@ -39,135 +24,24 @@ pub(super) const MAX_LOG_BYTES: u64 = 16 * 1024 * 1024;
 /// The extensions the open dialog lists.
 const LOG_EXTENSIONS: &[&str] = &["log", "txt", "csv", "jsonl", "json"];
 
-/// The first line of every test file written, after the language's comment mark: how a file
-/// this tool may replace is told from the student's own code.
-// untranslated: a comment in generated code, which is written in English as the snippets are
-pub(super) const TESTS_MARK: &str = "Regression tests written by refraction-explorer";
-
-/// The language a test file is written in.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum TestLanguage {
-    /// A named API's language.
-    Api(Language),
-    /// Any renderer's own refraction.
-    Any(AnyLanguage),
-}
-
-impl TestLanguage {
-    /// The languages offered for `dialect`.
-    fn of(dialect: Dialect) -> Vec<Self> {
-        match dialect.api() {
-            Some(api) => Language::of(api).iter().map(|l| Self::Api(*l)).collect(),
-            None => vec![Self::Any(AnyLanguage::Cpp), Self::Any(AnyLanguage::Python)],
-        }
-    }
-
-    /// The button's label.
-    fn label(self) -> String {
-        match self {
-            Self::Api(language) => language.label().to_owned(),
-            // untranslated: a programming language's name
-            Self::Any(AnyLanguage::Cpp) => "C++".to_owned(),
-            // untranslated: a programming language's name
-            Self::Any(AnyLanguage::Python) => "Python".to_owned(),
-        }
-    }
-
-    /// The file's extension.
-    fn extension(self) -> &'static str {
-        match self {
-            Self::Api(Language::Glsl) => "glsl",
-            Self::Api(Language::CppPbrt | Language::CppBook) | Self::Any(AnyLanguage::Cpp) => "cpp",
-            Self::Api(Language::Python) | Self::Any(AnyLanguage::Python) => "py",
-        }
-    }
-
-    /// The mark that starts a comment line.
-    fn comment(self) -> &'static str {
-        match self.extension() {
-            "py" => "#",
-            _ => "//",
-        }
+/// A test language's button label.
+fn label(language: TestLanguage) -> String {
+    match language {
+        TestLanguage::Api(language) => language.label().to_owned(),
+        // untranslated: a programming language's name
+        TestLanguage::Any(AnyLanguage::Cpp) => "C++".to_owned(),
+        // untranslated: a programming language's name
+        TestLanguage::Any(AnyLanguage::Python) => "Python".to_owned(),
     }
 }
 
-/// The tests of `failing` lines in `language`, after the mark that tells the file as ours.
-fn tests_text(
-    language: TestLanguage,
-    failing: &[Failing],
-    options: &Options,
-) -> Result<String, Refusal> {
-    let body = match language {
-        TestLanguage::Api(language) => {
-            let cases: Vec<(Name, api_snippets::ApiCase<'_>)> = failing
-                .iter()
-                .filter_map(|f| match &f.judgement {
-                    Judgement::Api(judged) => {
-                        let (call, diagnosis) = &**judged;
-                        Some((
-                            Name::Line(f.line),
-                            api_snippets::ApiCase::of(call, diagnosis),
-                        ))
-                    }
-                    Judgement::Physics(_) => None,
-                })
-                .collect();
-            api_snippets::file(language, &cases)
-        }
-        TestLanguage::Any(language) => {
-            let cases: Vec<(usize, Case)> = failing
-                .iter()
-                .map(|f| Case::from_record(&f.record, options).map(|case| (f.line, case)))
-                .collect::<Result<_, _>>()?;
-            let cases: Vec<AnyCase<'_>> = cases
-                .iter()
-                .map(|(line, case)| AnyCase {
-                    line: *line,
-                    request: &case.request,
-                    yours: case.yours,
-                })
-                .collect();
-            snippets::any_renderer_tests(language, &cases)?
-        }
-    };
-    let mark = language.comment();
-    let count = failing.len();
-    Ok(format!(
-        // untranslated: a comment in generated code, in English as the snippets are
-        "{mark} {TESTS_MARK}: the first {count} failing lines of a log, a test each.\n{body}"
-    ))
-}
-
-/// Whether the tests in `language` may be written at `path`: its name must end in the
-/// language's extension, and a file already there must be a test file this tool wrote (or
-/// empty), never the student's own code.
-///
-/// # Errors
-/// The name has another extension, the path is a folder, or the file there is not ours.
+/// Whether tests in `language` may be written at `path`, as the file dialog's target.
 fn tests_target(path: &Path, language: TestLanguage) -> Result<Target, Refusal> {
-    let extension = language.extension();
-    if path.extension().and_then(|e| e.to_str()) != Some(extension) {
-        return Err(Refusal::TestsExtension {
-            path: path.to_path_buf(),
-            extension,
-        });
-    }
-    if path.is_dir() {
-        return Err(Refusal::IsAFolder {
-            path: path.to_path_buf(),
-        });
-    }
-    let Ok(text) = std::fs::read(path) else {
-        return Ok(Target::New);
-    };
-    let ours = format!("{} {TESTS_MARK}", language.comment());
-    if text.is_empty() || text.starts_with(ours.as_bytes()) {
-        Ok(Target::Replaces)
+    Ok(if tests_file::replaces(path, language)? {
+        Target::Replaces
     } else {
-        Err(Refusal::NotOurTests {
-            path: path.to_path_buf(),
-        })
-    }
+        Target::New
+    })
 }
 
 /// A log file read whole, judged in place of the text box.
@@ -273,10 +147,10 @@ impl LogFiles {
             return;
         }
         ui.horizontal_wrapped(|ui| {
-            let count = failing.len().min(MAX_SAVED_FAILING);
+            let count = failing.len().min(MAX_TESTS);
             ui.label(t!("logs-save-tests", count = count));
             for language in TestLanguage::of(dialect) {
-                if ui.button(format!("💾 {}", language.label())).clicked() {
+                if ui.button(format!("💾 {}", label(language))).clicked() {
                     let folder = std::env::current_dir().unwrap_or_default();
                     let extension = language.extension();
                     let name = file_dialog::numbered(&folder, "refract-regression", extension);
@@ -340,7 +214,7 @@ impl LogFiles {
         failing: &[Failing],
         options: &Options,
     ) {
-        let text = match tests_text(language, failing, options) {
+        let text = match tests_file::text(language, failing, options) {
             Ok(text) => text,
             Err(e) => {
                 self.status = Some(Err(e.to_string()));
@@ -377,37 +251,20 @@ mod tests {
     use super::*;
 
     #[test]
-    fn tests_replace_only_a_test_file_of_ours_of_their_language() {
+    fn a_test_file_of_ours_is_replaced_after_the_question_and_no_other_file_at_all() {
         let folder = std::env::temp_dir().join(format!("log-files-{}", std::process::id()));
         std::fs::create_dir_all(&folder).unwrap();
         let cpp = TestLanguage::Any(AnyLanguage::Cpp);
-        let new = folder.join("new.cpp");
-        assert_eq!(tests_target(&new, cpp), Ok(Target::New));
+        assert_eq!(tests_target(&folder.join("new.cpp"), cpp), Ok(Target::New));
         let ours = folder.join("ours.cpp");
-        std::fs::write(&ours, format!("// {TESTS_MARK}: the first 3 …\n")).unwrap();
+        let mark = tests_file::TESTS_MARK;
+        std::fs::write(&ours, format!("// {mark}: the first 3 …\n")).unwrap();
         assert_eq!(tests_target(&ours, cpp), Ok(Target::Replaces));
         let theirs = folder.join("theirs.cpp");
-        std::fs::write(&theirs, "#include <cmath>\nint main() {}\n").unwrap();
+        std::fs::write(&theirs, "int main() {}\n").unwrap();
         let e = tests_target(&theirs, cpp).unwrap_err();
-        assert_eq!(e, Refusal::NotOurTests { path: theirs });
-        assert!(e.to_string().contains("theirs.cpp"), "{e}");
-        let e = tests_target(&folder.join("tests.txt"), cpp).unwrap_err();
-        assert!(
-            matches!(
-                e,
-                Refusal::TestsExtension {
-                    extension: "cpp",
-                    ..
-                }
-            ),
-            "{e:?}"
-        );
-        assert!(e.to_string().contains(".cpp"), "{e}");
-        let python = TestLanguage::Any(AnyLanguage::Python);
-        assert!(
-            tests_target(&ours, python).is_err(),
-            "a .cpp is not a Python file"
-        );
+        let not_ours = tests_file::TargetError::NotOurs { path: theirs };
+        assert_eq!(e, Refusal::Target(not_ours));
         std::fs::remove_dir_all(&folder).unwrap();
     }
 }

@@ -2,12 +2,11 @@
 //! panel's own, worded when shown, in the window's language of the moment.
 
 use core::fmt;
-use std::path::PathBuf;
-
 use refraction_i18n::t;
 use refraction_kernel::InputError;
 use refraction_tools::api_check::{LineError, PatternError};
 use refraction_tools::error::{CheckError, RequestError, VectorError};
+use refraction_tools::snippets::tests_file::TargetError;
 use refraction_tools::vector_text::spoken;
 
 /// Why the panel refused a case, a call, a log or a test file.
@@ -53,23 +52,8 @@ pub(super) enum Refusal {
         /// Its highest.
         high: f64,
     },
-    /// A test file name without the language's extension.
-    TestsExtension {
-        /// The file.
-        path: PathBuf,
-        /// The extension it needs.
-        extension: &'static str,
-    },
-    /// A test file name that is a folder.
-    IsAFolder {
-        /// The folder.
-        path: PathBuf,
-    },
-    /// A file there that this tool did not write.
-    NotOurTests {
-        /// The file.
-        path: PathBuf,
-    },
+    /// Where the tests may not be written.
+    Target(TargetError),
 }
 
 impl fmt::Display for Refusal {
@@ -81,6 +65,7 @@ impl fmt::Display for Refusal {
             Self::Check(error) => return error.fmt(f),
             Self::Request(error) => return error.fmt(f),
             Self::Input(error) => return error.fmt(f),
+            Self::Target(error) => return error.fmt(f),
             Self::Vector { field, error } => return write!(f, "{field}: {error}"),
             Self::NotANumber { field, text } => {
                 t!("check-field-not-number", field = field, text = text.trim())
@@ -91,16 +76,6 @@ impl fmt::Display for Refusal {
             Self::PictureOutside { mu, low, high } => {
                 let [mu, low, high] = [*mu, *low, *high].map(spoken);
                 t!("check-picture-outside", mu = mu, low = low, high = high)
-            }
-            Self::TestsExtension { path, extension } => {
-                let path = path.display().to_string();
-                t!("logs-tests-extension", path = path, extension = *extension)
-            }
-            Self::IsAFolder { path } => {
-                t!("files-is-a-folder", path = path.display().to_string())
-            }
-            Self::NotOurTests { path } => {
-                t!("logs-tests-not-ours", path = path.display().to_string())
             }
         };
         f.write_str(&words)
@@ -134,5 +109,11 @@ impl From<RequestError> for Refusal {
 impl From<InputError> for Refusal {
     fn from(error: InputError) -> Self {
         Self::Input(error)
+    }
+}
+
+impl From<TargetError> for Refusal {
+    fn from(error: TargetError) -> Self {
+        Self::Target(error)
     }
 }

@@ -42,6 +42,7 @@ pub use record::Record;
 
 use crate::check::{self, Match};
 use crate::diagnosis::{Evidence, LogTally, Summary};
+use crate::snippets::tests_file::{Failing, MAX_TESTS};
 use gather::Gather;
 
 /// The JSON answer for one call.
@@ -253,11 +254,14 @@ pub fn judge_record(record: &Record, options: &Options) -> Result<Judgement, Lin
     }
 }
 
+/// A line's record and its judgement, or why it has none.
+type JudgedLine = Result<(Record, Judgement), LineError>;
+
 /// What a line holds, as far as it can be judged without the run's state (on any thread).
 enum Judged {
-    /// A judged line, or why the line holds nothing that can be judged (boxed: a judgement is
-    /// large, and the chunks hold many of the other kinds).
-    Line(Box<Result<Judgement, LineError>>),
+    /// A judged line and the record it was read as, or why the line holds nothing that can be
+    /// judged (boxed: a judgement is large, and the chunks hold many of the other kinds).
+    Line(Box<JudgedLine>),
     /// A log line the pattern does not match on its own: it may be part of a record printed
     /// over several lines, gathered in order.
     Unmatched(String),
@@ -309,9 +313,9 @@ impl Reader {
     /// Judges one line, or leaves it for [`Books::settle`] when it needs the run's state.
     fn judge(&self, line: &str) -> Judged {
         match self.read(line) {
-            Read::Record(record) => Judged::Line(Box::new(
-                record.and_then(|record| judge_record(&record, &self.options)),
-            )),
+            Read::Record(record) => Judged::Line(Box::new(record.and_then(|record| {
+                judge_record(&record, &self.options).map(|judged| (record, judged))
+            }))),
             Read::Unmatched => Judged::Unmatched(line.to_owned()),
             Read::Deferred => Judged::Deferred(line.to_owned()),
         }
@@ -338,8 +342,8 @@ impl Reader {
     }
 }
 
-/// What a run keeps as it goes: the paths followed, the tally, whether all was right, and the
-/// counts the diagnosis of the whole log is made from.
+/// What a run keeps as it goes: the paths followed, the tally, whether all was right, the
+/// counts the diagnosis of the whole log is made from, and the first failing lines if asked.
 #[derive(Debug)]
 struct Books {
     paths: Option<paths::Paths>,
@@ -348,11 +352,18 @@ struct Books {
     tally: Tally,
     all_ok: bool,
     log: LogTally,
+    /// The first [`MAX_TESTS`] failing lines, when kept.
+    failing: Option<Vec<Failing>>,
 }
 
 impl Books {
-    /// The answer to a judged line, in input order: nothing for a line without a call.
-    fn answer(&mut self, reader: &Reader, judged: Judged) -> Result<String, LineError> {
+    /// The answer to a judged line `number`, in input order: nothing for a line without a call.
+    fn answer(
+        &mut self,
+        reader: &Reader,
+        number: usize,
+        judged: Judged,
+    ) -> Result<String, LineError> {
         let judged = match judged {
             Judged::Line(judged) => {
                 self.forget_gathered();
@@ -364,16 +375,17 @@ impl Books {
             },
             Judged::Deferred(line) => match reader.judge_in_order(&line) {
                 None => return Ok(String::new()),
-                Some(judged) => return self.answer(reader, judged),
+                Some(judged) => return self.answer(reader, number, judged),
             },
         };
         let ended = match (&judged, &mut self.paths) {
-            (Ok(Judgement::Api(judged)), Some(paths)) => paths.hit(&judged.0, &judged.1),
+            (Ok((_, Judgement::Api(judged))), Some(paths)) => paths.hit(&judged.0, &judged.1),
             _ => Ok(None),
         };
         match judged.and_then(|judged| ended.map(|ended| (judged, ended))) {
-            Ok((judgement, ended)) => {
+            Ok(((record, judgement), ended)) => {
                 self.count(&judgement);
+                self.keep(number, record, &judgement);
                 let text = judgement.answer_line();
                 Ok(ended.map_or_else(|| text.clone(), |summary| format!("{summary}\n{text}")))
             }
@@ -389,6 +401,20 @@ impl Books {
         judgement.count(&mut self.tally);
         self.log.add(judgement.evidence());
         self.all_ok &= judgement.ok();
+    }
+
+    /// Keeps line `number` to be written as a test, if failing lines are kept and it fails.
+    fn keep(&mut self, number: usize, record: Record, judgement: &Judgement) {
+        if let Some(failing) = &mut self.failing
+            && !judgement.ok()
+            && failing.len() < MAX_TESTS
+        {
+            failing.push(Failing {
+                line: number,
+                record,
+                judgement: judgement.clone(),
+            });
+        }
     }
 
     /// Counts a line that could not be read as a call.
@@ -431,14 +457,11 @@ impl Books {
     }
 
     /// [`Books::gathered_record`], judged.
-    fn gathered(
-        &mut self,
-        reader: &Reader,
-        line: &str,
-    ) -> Result<Option<Result<Judgement, LineError>>, LineError> {
-        Ok(self
-            .gathered_record(reader, line)?
-            .map(|record| judge_record(&record?, &reader.options)))
+    fn gathered(&mut self, reader: &Reader, line: &str) -> Result<Option<JudgedLine>, LineError> {
+        Ok(self.gathered_record(reader, line)?.map(|record| {
+            let record = record?;
+            judge_record(&record, &reader.options).map(|judged| (record, judged))
+        }))
     }
 
     /// Lines gathered toward a record that a line matched on its own (or the input's end)
@@ -482,17 +505,36 @@ impl Session {
                 tally: Tally::default(),
                 all_ok: true,
                 log: LogTally::default(),
+                failing: None,
             },
         }
     }
 
-    /// Answers one line: a JSON answer, or nothing for a line without a call.
+    /// Answers line `number` (from 1): a JSON answer, or nothing for a line without a call.
     ///
     /// # Errors
     /// Why the line cannot be judged; the loop answers it with `{"line", "error"}`.
-    pub fn answer(&mut self, line: &str) -> Result<String, LineError> {
+    pub fn answer(&mut self, number: usize, line: &str) -> Result<String, LineError> {
         let judged = self.reader.judge(line);
-        self.books.answer(&self.reader, judged)
+        self.books.answer(&self.reader, number, judged)
+    }
+
+    /// Keeps the first [`MAX_TESTS`] failing lines that [`Session::run`] and
+    /// [`Session::answer`] judge from now on, to be written as tests ([`Session::failing`]).
+    pub fn keep_failing(&mut self) {
+        self.books.failing.get_or_insert_with(Vec::new);
+    }
+
+    /// The failing lines kept (see [`Session::keep_failing`]), in input order.
+    #[must_use]
+    pub fn failing(&self) -> &[Failing] {
+        self.books.failing.as_deref().unwrap_or_default()
+    }
+
+    /// The options the lines are judged with.
+    #[must_use]
+    pub fn options(&self) -> &Options {
+        &self.reader.options
     }
 
     /// Answers every non-empty line of `input` on `output` in order, the lines judged on
@@ -514,7 +556,7 @@ impl Session {
             output,
             threads,
             |line| reader.judge(line),
-            |judged| books.answer(reader, judged),
+            |number, judged| books.answer(reader, number, judged),
             || refused += 1,
         );
         books.forget_gathered();

@@ -65,7 +65,7 @@ fn options(api: Api) -> Options {
 
 fn answer(api: Api, text: &str) -> Value {
     let reply = Session::new(options(api), Format::JsonLines, false, false)
-        .answer(text)
+        .answer(1, text)
         .unwrap();
     serde_json::from_str(&reply).unwrap()
 }
@@ -375,7 +375,7 @@ fn summaries(lines: &[String]) -> Vec<Value> {
     let mut session = Session::new(options(Api::Glsl), Format::JsonLines, false, true);
     let mut out: Vec<Value> = Vec::new();
     for line in lines {
-        let reply = session.answer(line).unwrap();
+        let reply = session.answer(1, line).unwrap();
         out.extend(
             reply
                 .lines()
@@ -503,7 +503,7 @@ fn each_path_gets_its_summary_and_a_hit_without_path_is_refused() {
     let lone = line(Api::Glsl, args, returned(Api::Glsl, args), json!({}));
     assert!(
         session
-            .answer(&lone)
+            .answer(1, &lone)
             .unwrap_err()
             .to_string()
             .contains("missing field `path`")

@@ -4,6 +4,7 @@
 //! them and writes a log's failing lines as a file of tests with them.
 
 pub mod api;
+pub mod tests_file;
 
 use crate::error::{JsonError, RequestError};
 use crate::solve::Request;
