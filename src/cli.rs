@@ -73,17 +73,14 @@ pub struct Cli {
 ///
 /// # Errors
 /// Another scheme, or white space; the message says what is expected.
-pub fn web_base(url: &str) -> Result<String, String> {
+pub fn web_base(url: &str) -> Result<String, ArgError> {
     let url = url.trim();
     let schemes = ["http://", "https://", "file://"];
     let known = schemes
         .iter()
         .any(|s| url.len() > s.len() && url[..s.len()].eq_ignore_ascii_case(s));
     if !known || url.contains(char::is_whitespace) {
-        return Err(format!(
-            "`{url}` is not the address of a web page: give the address where the web build's \
-             folder is hosted, such as https://school.example/explorer/"
-        ));
+        return Err(ArgError::WebBase(url.to_owned()));
     }
     Ok(url.split('#').next().unwrap_or(url).to_owned())
 }
@@ -92,14 +89,8 @@ pub fn web_base(url: &str) -> Result<String, String> {
 ///
 /// # Errors
 /// A code with no translation; the message lists the known ones.
-pub fn language(code: &str) -> Result<Locale, String> {
-    Locale::from_tag(code).ok_or_else(|| {
-        let known: Vec<&str> = Locale::ALL.iter().map(|l| l.code()).collect();
-        format!(
-            "no translation for `{code}`: choose one of {}",
-            known.join(", ")
-        )
-    })
+pub fn language(code: &str) -> Result<Locale, ArgError> {
+    Locale::from_tag(code).ok_or_else(|| ArgError::Language(code.to_owned()))
 }
 
 /// The views as the command line names them.
@@ -360,41 +351,32 @@ pub enum ViewArg {
 ///
 /// # Errors
 /// An unknown name; the message lists the animations.
-pub fn parse_animation(name: &str) -> Result<Animation, String> {
-    Animation::from_name(name).ok_or_else(|| {
-        let names: Vec<&str> = Animation::ALL.iter().map(|a| a.name()).collect();
-        format!(
-            "no animation is called {name:?}: the animations are {}",
-            names.join(", ")
-        )
-    })
+pub fn parse_animation(name: &str) -> Result<Animation, ArgError> {
+    Animation::from_name(name).ok_or_else(|| ArgError::Animation(name.to_owned()))
 }
 
 /// Reads `--api NAME`.
 ///
 /// # Errors
 /// An unknown name; the message lists the known ones.
-pub fn parse_api(name: &str) -> Result<Api, String> {
-    Api::from_name(name).ok_or_else(|| {
-        format!("unknown API \"{name}\": expected glsl (or hlsl, wgsl, glm, glam), pbrt, rtiow or mitsuba")
-    })
+pub fn parse_api(name: &str) -> Result<Api, ArgError> {
+    Api::from_name(name).ok_or_else(|| ArgError::Api(name.to_owned()))
 }
 
 /// Reads `--convention along-ray|toward-origin` (or with an underscore).
 ///
 /// # Errors
 /// Anything else.
-pub fn parse_convention(name: &str) -> Result<Convention, String> {
-    Convention::from_name(&name.replace('-', "_")).ok_or_else(|| {
-        format!("unknown convention \"{name}\": expected along-ray or toward-origin")
-    })
+pub fn parse_convention(name: &str) -> Result<Convention, ArgError> {
+    Convention::from_name(&name.replace('-', "_"))
+        .ok_or_else(|| ArgError::Convention(name.to_owned()))
 }
 
 /// Reads `--normal`: an axis (`+z`, `-z`, `x`...) or a vector as programs print it.
 ///
 /// # Errors
 /// Anything else, or the zero vector.
-pub fn parse_normal(text: &str) -> Result<[f64; 3], String> {
+pub fn parse_normal(text: &str) -> Result<[f64; 3], ArgError> {
     let axis = |i: usize, sign: f64| {
         let mut v = [0.0; 3];
         v[i] = sign;
@@ -409,14 +391,12 @@ pub fn parse_normal(text: &str) -> Result<[f64; 3], String> {
         return Ok(axis(i, sign));
     }
     let v = refraction_tools::vector_text::parse_vector(text)
-        .map_err(|e| format!("--normal: {e}: expected +z, -z, +x... or three numbers"))?
+        .map_err(ArgError::Normal)?
         .value;
     if v.iter().all(|c| c.is_finite()) && v != [0.0; 3] {
         Ok(v)
     } else {
-        Err(format!(
-            "--normal must be a finite vector other than zero, not {text}"
-        ))
+        Err(ArgError::ZeroNormal(text.to_owned()))
     }
 }
 
@@ -424,25 +404,19 @@ pub fn parse_normal(text: &str) -> Result<[f64; 3], String> {
 ///
 /// # Errors
 /// An unknown name; the message lists the known ones.
-pub fn parse_renderer(name: &str) -> Result<Renderer, String> {
-    Renderer::from_name(name).ok_or_else(|| {
-        let names: Vec<&str> = Renderer::ALL.iter().map(|r| r.name()).collect();
-        format!(
-            "unknown renderer \"{name}\": expected one of {}",
-            names.join(", ")
-        )
-    })
+pub fn parse_renderer(name: &str) -> Result<Renderer, ArgError> {
+    Renderer::from_name(name).ok_or_else(|| ArgError::Renderer(name.to_owned()))
 }
 
 /// Reads `--precision f32|f64`.
 ///
 /// # Errors
 /// Anything else.
-pub fn parse_precision(name: &str) -> Result<Precision, String> {
+pub fn parse_precision(name: &str) -> Result<Precision, ArgError> {
     match name {
         "f32" | "float" => Ok(Precision::F32),
         "f64" | "double" => Ok(Precision::F64),
-        _ => Err(format!("unknown precision \"{name}\": expected f32 or f64")),
+        _ => Err(ArgError::Precision(name.to_owned())),
     }
 }
 
@@ -450,12 +424,67 @@ pub fn parse_precision(name: &str) -> Result<Precision, String> {
 ///
 /// # Errors
 /// Anything else; the message says what was given.
-pub fn parse_index(text: &str) -> Result<f64, String> {
+pub fn parse_index(text: &str) -> Result<f64, ArgError> {
     match text.trim().parse::<f64>() {
         Ok(x) if x.is_finite() && x > 0.0 => Ok(x),
-        Ok(x) => Err(format!(
-            "an index of refraction must be a finite number > 0, not {x}"
-        )),
-        Err(e) => Err(format!("\"{text}\" is not a number: {e}")),
+        Ok(x) => Err(ArgError::Index(x)),
+        Err(source) => Err(ArgError::NotANumber {
+            text: text.to_owned(),
+            source,
+        }),
     }
+}
+
+/// Why a value on the command line was refused. Worded by its `Display` in English, as clap's
+/// own messages around it are; each names the value given and what is expected.
+#[derive(Debug, thiserror::Error)]
+pub enum ArgError {
+    /// `--web-base` that is not an http, https or file URL, or holds white space.
+    #[error(
+        "`{0}` is not the address of a web page: give the address where the web build's \
+         folder is hosted, such as https://school.example/explorer/"
+    )]
+    WebBase(String),
+    /// `--lang` with no translation.
+    #[error("no translation for `{0}`: choose one of {known}", known = names(Locale::ALL.iter().map(|l| l.code())))]
+    Language(String),
+    /// An unknown animation.
+    #[error("no animation is called {0:?}: the animations are {known}", known = names(Animation::ALL.iter().map(|a| a.name())))]
+    Animation(String),
+    /// An unknown `--api`.
+    #[error(
+        "unknown API \"{0}\": expected glsl (or hlsl, wgsl, glm, glam), pbrt, rtiow or mitsuba"
+    )]
+    Api(String),
+    /// An unknown `--convention`.
+    #[error("unknown convention \"{0}\": expected along-ray or toward-origin")]
+    Convention(String),
+    /// A `--normal` that is neither an axis nor a vector.
+    #[error("--normal: {0}: expected +z, -z, +x... or three numbers")]
+    Normal(#[source] refraction_tools::error::VectorError),
+    /// A `--normal` of zero length or with a component that is not finite.
+    #[error("--normal must be a finite vector other than zero, not {0}")]
+    ZeroNormal(String),
+    /// An unknown `--renderer`.
+    #[error("unknown renderer \"{0}\": expected one of {known}", known = names(Renderer::ALL.iter().map(|r| r.name())))]
+    Renderer(String),
+    /// An unknown `--precision`.
+    #[error("unknown precision \"{0}\": expected f32 or f64")]
+    Precision(String),
+    /// An index of refraction that is not finite or not above 0.
+    #[error("an index of refraction must be a finite number > 0, not {0}")]
+    Index(f64),
+    /// An index of refraction that is not a number.
+    #[error("\"{text}\" is not a number: {source}")]
+    NotANumber {
+        /// The text given.
+        text: String,
+        /// Why it does not parse.
+        source: core::num::ParseFloatError,
+    },
+}
+
+/// The known names, comma-separated.
+fn names<'a>(all: impl Iterator<Item = &'a str>) -> String {
+    all.collect::<Vec<_>>().join(", ")
 }

@@ -2,7 +2,7 @@
 
 use std::fs::File;
 use std::io::{self, BufRead, Read as _, Write as _};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use refraction_i18n::t;
@@ -49,7 +49,7 @@ struct Input {
 }
 
 impl Input {
-    fn open(file: Option<&Path>) -> Result<Self, String> {
+    fn open(file: Option<&Path>) -> Result<Self, StartError> {
         let Some(path) = file else {
             return Ok(Self {
                 lines: Box::new(io::stdin().lock()),
@@ -57,14 +57,13 @@ impl Input {
                 file: refraction_files::standard_input(),
             });
         };
-        let opened =
-            File::open(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+        let unreadable = |source| StartError::Read {
+            path: path.to_path_buf(),
+            source,
+        };
+        let opened = File::open(path).map_err(unreadable)?;
         Ok(Self {
-            lines: Box::new(io::BufReader::new(
-                opened
-                    .try_clone()
-                    .map_err(|e| format!("cannot read {}: {e}", path.display()))?,
-            )),
+            lines: Box::new(io::BufReader::new(opened.try_clone().map_err(unreadable)?)),
             name: path.display().to_string(),
             file: Some(opened),
         })
@@ -73,30 +72,70 @@ impl Input {
 
 /// Whether `--summary` may write at `path`: never over the log being read, and over a file
 /// already there only if it is empty or a summary `check` wrote, unless `replace` says so.
-fn summary_target(path: &Path, input: &Input, replace: bool) -> Result<(), String> {
-    let shown = path.display();
-    refraction_files::check_writable(path).map_err(|e| e.to_string())?;
+fn summary_target(path: &Path, input: &Input, replace: bool) -> Result<(), StartError> {
+    refraction_files::check_writable(path).map_err(StartError::Unwritable)?;
+    let path_buf = || path.to_path_buf();
     if input
         .file
         .as_ref()
         .is_some_and(|f| refraction_files::names_open_file(path, f))
     {
-        return Err(format!(
-            "cannot write {shown}: it is the log being read ({}); give --summary another file",
-            input.name
-        ));
+        return Err(StartError::IsTheLog {
+            path: path_buf(),
+            log: input.name.clone(),
+        });
     }
-    let start = refraction_files::first_bytes(path, 64)
-        .map_err(|e| format!("cannot write {shown}: cannot read what is there: {e}"))?;
+    let start =
+        refraction_files::first_bytes(path, 64).map_err(|source| StartError::Unreadable {
+            path: path_buf(),
+            source,
+        })?;
     match start {
         Some(bytes) if !replace && !bytes.is_empty() && !looks_like_summary(&bytes) => {
-            Err(format!(
-                "cannot write {shown}: it holds something other than a summary of check's; \
-                 give another file, or add --replace to write over it"
-            ))
+            Err(StartError::NotASummary(path_buf()))
         }
         _ => Ok(()),
     }
+}
+
+/// Why `check` cannot start: its log cannot be opened, or its `--summary` file may not be
+/// written. Each message names the file, in the command line's English.
+#[derive(Debug, thiserror::Error)]
+enum StartError {
+    /// The log cannot be opened.
+    #[error("cannot read {}: {source}", path.display())]
+    Read {
+        /// The log.
+        path: PathBuf,
+        /// Why.
+        source: io::Error,
+    },
+    /// The summary's path cannot be written (its own message names it).
+    #[error(transparent)]
+    Unwritable(io::Error),
+    /// The summary's path is the log being read.
+    #[error("cannot write {}: it is the log being read ({log}); give --summary another file", path.display())]
+    IsTheLog {
+        /// The summary's path.
+        path: PathBuf,
+        /// The log's name as messages give it.
+        log: String,
+    },
+    /// What is at the summary's path cannot be read to tell whether it is a summary.
+    #[error("cannot write {}: cannot read what is there: {source}", path.display())]
+    Unreadable {
+        /// The summary's path.
+        path: PathBuf,
+        /// Why.
+        source: io::Error,
+    },
+    /// The summary's path holds something else, and `--replace` was not given.
+    #[error(
+        "cannot write {}: it holds something other than a summary of check's; give another \
+         file, or add --replace to write over it",
+        .0.display()
+    )]
+    NotASummary(PathBuf),
 }
 
 /// How `check` reads its lines and what it writes besides the answers.

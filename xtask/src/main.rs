@@ -19,6 +19,10 @@ use std::process::ExitCode;
 
 use clap_complete::Shell;
 
+/// Why a task failed: a sentence naming what and where (an I/O error with its path, a missing
+/// tool with the command that installs it), printed after `xtask: `.
+pub(crate) type Failure = Box<dyn core::error::Error>;
+
 /// What `cargo xtask` without a known task prints.
 const USAGE: &str = "usage: cargo xtask dist-assets [OUT_DIR]\n       cargo xtask web [OUT_DIR]\n\n\
     dist-assets  write the man pages (OUT_DIR/man/*.1) and the bash, zsh and fish completions\n\
@@ -110,7 +114,7 @@ fn default_out_dir() -> PathBuf {
 ///
 /// # Errors
 /// A folder that cannot be made, or a file that cannot be removed or written, named.
-fn dist_assets(out: &Path) -> Result<usize, String> {
+fn dist_assets(out: &Path) -> Result<usize, Failure> {
     let man = out.join("man");
     let completions = out.join("completions");
     let icons = out.join("icons");
@@ -135,7 +139,7 @@ fn dist_assets(out: &Path) -> Result<usize, String> {
 ///
 /// # Errors
 /// A file that cannot be removed, named.
-fn remove_earlier(out: &Path) -> Result<(), String> {
+fn remove_earlier(out: &Path) -> Result<(), Failure> {
     let mut earlier = Vec::new();
     if let Ok(pages) = std::fs::read_dir(out.join("man")) {
         for page in pages.flatten() {
@@ -166,7 +170,7 @@ fn remove_earlier(out: &Path) -> Result<(), String> {
 ///
 /// # Errors
 /// The SVG cannot be read or parsed, or a PNG cannot be encoded or written.
-fn icon_pngs(dir: &Path) -> Result<usize, String> {
+fn icon_pngs(dir: &Path) -> Result<usize, Failure> {
     let source = repository()
         .join("packaging")
         .join("refraction-explorer.svg");
@@ -207,7 +211,7 @@ fn icon_pngs(dir: &Path) -> Result<usize, String> {
 ///
 /// # Errors
 /// A page that cannot be written, named.
-fn man_pages(dir: &Path) -> Result<usize, String> {
+fn man_pages(dir: &Path) -> Result<usize, Failure> {
     // As clap_mangen's own `generate_to`: built, so that each command's page is named after
     // the program and the command, and without the `help` command, which needs no page.
     let mut program = refraction_explorer::cli::command().disable_help_subcommand(true);

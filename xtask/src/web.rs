@@ -13,6 +13,8 @@ use std::process::Command;
 
 use refraction_explorer::web_page::{self, Script};
 
+use crate::Failure;
+
 /// The Debian packages that build the standard library for WebAssembly and link it.
 const PACKAGES: &str = "rustc-web cargo-web rust-web-src lld-22";
 
@@ -62,7 +64,7 @@ fn has_library_source() -> bool {
 ///
 /// # Errors
 /// What is missing, each with the command that installs it.
-fn check_toolchain(repository: &Path) -> Result<String, String> {
+fn check_toolchain(repository: &Path) -> Result<String, Failure> {
     let lock = std::fs::read_to_string(repository.join("Cargo.lock"))
         .map_err(|e| format!("cannot read Cargo.lock: {e}"))?;
     let bindgen = locked_version(&lock, "wasm-bindgen")
@@ -92,25 +94,26 @@ fn check_toolchain(repository: &Path) -> Result<String, String> {
         Err(format!(
             "the web build needs what is missing here; install it and run again:\n  {}",
             missing.join("\n  ")
-        ))
+        )
+        .into())
     }
 }
 
 /// Runs `command`, or says what failed.
-fn run(command: &mut Command, what: &str) -> Result<(), String> {
+fn run(command: &mut Command, what: &str) -> Result<(), Failure> {
     let status = command
         .status()
         .map_err(|e| format!("cannot run {what}: {e}"))?;
     if status.success() {
         Ok(())
     } else {
-        Err(format!("{what} failed ({status})"))
+        Err(format!("{what} failed ({status})").into())
     }
 }
 
 /// Builds the module in `target/wasm` and runs wasm-bindgen on it; returns the folder
 /// wasm-bindgen wrote.
-fn build(repository: &Path) -> Result<PathBuf, String> {
+fn build(repository: &Path) -> Result<PathBuf, Failure> {
     let target = repository.join("target").join("wasm");
     let mut cargo = Command::new(CARGO);
     cargo
@@ -173,7 +176,7 @@ fn base64(bytes: &[u8]) -> String {
 
 /// Writes the folder's page and files and the single file into `out`, from what wasm-bindgen
 /// wrote in `bindgen`; returns the files written.
-fn write_pages(bindgen: &Path, out: &Path) -> Result<Vec<PathBuf>, String> {
+fn write_pages(bindgen: &Path, out: &Path) -> Result<Vec<PathBuf>, Failure> {
     let read = |name: &str| {
         let path = bindgen.join(name);
         std::fs::read(&path).map_err(|e| format!("cannot read {}: {e}", path.display()))
@@ -199,7 +202,7 @@ fn write_pages(bindgen: &Path, out: &Path) -> Result<Vec<PathBuf>, String> {
             let path = out.join(name);
             std::fs::write(&path, bytes)
                 .map(|()| path.clone())
-                .map_err(|e| format!("cannot write {}: {e}", path.display()))
+                .map_err(|e| Failure::from(format!("cannot write {}: {e}", path.display())))
         })
         .collect()
 }
@@ -210,7 +213,7 @@ fn write_pages(bindgen: &Path, out: &Path) -> Result<Vec<PathBuf>, String> {
 /// # Errors
 /// A missing tool (with the command that installs it), a failed build, or a file that cannot
 /// be written.
-pub(crate) fn web(repository: &Path, out: &Path) -> Result<Vec<(PathBuf, u64)>, String> {
+pub(crate) fn web(repository: &Path, out: &Path) -> Result<Vec<(PathBuf, u64)>, Failure> {
     check_toolchain(repository)?;
     let bindgen = build(repository)?;
     let written = write_pages(&bindgen, out)?;
