@@ -36,7 +36,7 @@ const MAX_SLIDER_RAYS: usize = 1000;
 /// takes 23 ms a frame) is traced with every k-th ray while the pointer moves, so that a drag
 /// keeps under 4 ms a frame (`cargo bench --bench frame`), and in full again when it ends.
 /// Every built-in scene at its own ray count traces in full.
-const DRAFT_SEGMENTS: usize = 5_000;
+const DRAFT_SEGMENTS: usize = 2_000;
 
 /// The Scenes view's state: the scene as edited, its trace, and what the canvas remembers
 /// between frames.

@@ -83,7 +83,7 @@ fn a_dense_scene_drags_as_a_draft_and_is_whole_again_when_the_pointer_lets_go() 
         let every = scenes.draft().expect("a draft while the pointer drags");
         let drafted = scenes.trace().counts;
         assert!(
-            drafted.segments < 7_500 && drafted.source_rays < full.source_rays,
+            drafted.segments < 3_000 && drafted.source_rays < full.source_rays,
             "1 in {every}: {drafted:?}"
         );
         assert_eq!(drafted.wavelengths, full.wavelengths, "every colour kept");
