@@ -107,7 +107,7 @@ fn main() -> ExitCode {
         Some(Command::Trace { scene, json, list }) => commands::trace::run(&scene, json, list),
         Some(Command::Render(args)) => commands::render::run(&args),
         Some(Command::Lessons) => commands::lessons::list(),
-        None => commands::render::explorer(&commands::render::Window {
+        None => commands::window::open(&commands::window::Window {
             state: cli.state,
             lesson: cli.lesson,
             present: cli.present,

@@ -9,6 +9,7 @@ pub(crate) mod lines;
 pub(crate) mod output;
 pub(crate) mod render;
 pub(crate) mod trace;
+pub(crate) mod window;
 
 use std::io::ErrorKind;
 use std::process::ExitCode;
@@ -26,7 +27,7 @@ pub(crate) fn fail(command: &str, message: &dyn core::fmt::Display) -> ExitCode 
     let message = refraction_tools::brief(&message);
     let line = format!("refraction-explorer{space}{command}: {message}");
     // The exit status says it failed even when stderr cannot say why.
-    let _ = output::to_stderr(&output::printable(&line));
+    output::to_stderr(&output::printable(&line)).ok();
     ExitCode::from(2)
 }
 

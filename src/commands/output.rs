@@ -1,7 +1,6 @@
 //! Writing to stdout and stderr without panicking (`println!` and `eprintln!` panic when the
 //! stream cannot be written), and text from files made safe to print on a terminal.
 
-use core::fmt::Write as _;
 use std::borrow::Cow;
 use std::io::{self, IsTerminal as _, Write as _};
 
@@ -21,8 +20,7 @@ pub(crate) fn printable(text: &str) -> Cow<'_, str> {
     let mut out = String::with_capacity(text.len() + 8);
     for c in text.chars() {
         if acts(c) {
-            // Writing into a String cannot fail.
-            let _ = write!(out, "{}", c.escape_default());
+            out.extend(c.escape_default());
         } else {
             out.push(c);
         }

@@ -2,15 +2,12 @@
 //! SVG, an animation of the diagram as a GIF, or the explorer in a window.
 
 use std::io::{self, IsTerminal as _};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::ExitCode;
 
 use refraction_diagram::Overlay;
 use refraction_diagram::animation::Animation;
-use refraction_diagram::palette::Theme;
-use refraction_explorer::app::{self, Launch, View};
 use refraction_explorer::cli::{RenderArgs, ViewArg};
-use refraction_i18n::Locale;
 use refraction_model::ExplorerState;
 use refraction_render::animation::AnimationSpec;
 use refraction_render::handout::Sheet;
@@ -245,50 +242,5 @@ pub(crate) fn run(args: &RenderArgs) -> ExitCode {
     match drawn {
         Ok((to, bytes)) => to.write("render", &bytes),
         Err(message) => fail("render", &message),
-    }
-}
-
-/// What the command line asked of the window.
-pub(crate) struct Window {
-    /// The state file to open on.
-    pub state: Option<PathBuf>,
-    /// The lesson deck to open on (`--lesson`).
-    pub lesson: Option<String>,
-    /// Start in presentation mode.
-    pub present: bool,
-    /// The view to show.
-    pub view: Option<View>,
-    /// The theme.
-    pub theme: Option<Theme>,
-    /// The language (`--lang`).
-    pub language: Option<Locale>,
-    /// The web build's address for links (`--web-base`).
-    pub web_base: Option<String>,
-}
-
-/// Opens the explorer window as `window` asks; a state file or a lesson deck that cannot be
-/// read is refused before any window opens.
-pub(crate) fn explorer(window: &Window) -> ExitCode {
-    if let Some(Err(e)) = window.lesson.as_deref().map(refraction_deck::Deck::load) {
-        return fail("", &e);
-    }
-    let launch = window
-        .state
-        .as_deref()
-        .map(|p| state_file::open(p).map_err(|e| e.to_string()))
-        .transpose()
-        .map(|state| Launch {
-            state,
-            lesson: window.lesson.clone(),
-            present: window.present,
-            view: window.view,
-            theme: window.theme,
-            language: window.language,
-            system_language: sys_locale::get_locale().and_then(|tag| Locale::from_tag(&tag)),
-            web_base: window.web_base.clone(),
-        });
-    match launch.and_then(|launch| app::run(launch).map_err(|e| e.to_string())) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(message) => fail("", &message),
     }
 }

@@ -23,7 +23,7 @@ pub(crate) fn run(scene: &str, json: bool, list: bool) -> ExitCode {
             Err(e) => {
                 let message = format!("refraction-explorer trace: {e}");
                 // Exit status 1 says it failed even when stderr cannot say why.
-                let _ = to_stderr(&printable(&message));
+                to_stderr(&printable(&message)).ok();
                 return ExitCode::from(1);
             }
         };

@@ -84,7 +84,7 @@ fn web_task(out: &Path) -> ExitCode {
 
 /// `message` on stderr (a failed write changes nothing: the status says it all), then `status`.
 fn say(message: &str, status: ExitCode) -> ExitCode {
-    let _ = writeln!(std::io::stderr(), "{message}");
+    writeln!(std::io::stderr(), "{message}").ok();
     status
 }
 

@@ -173,7 +173,7 @@ impl Typeface {
                     let settings = DrawSettings::unhinted(Size::new(size), LocationRef::default());
                     // A glyph whose outline cannot be drawn (a broken glyph in the font) is
                     // left out, as documented: the rest of the label still reads.
-                    let _ = glyph.draw(settings, &mut placed);
+                    glyph.draw(settings, &mut placed).ok();
                 }
                 placed.x += metrics.advance_width(id).unwrap_or(0.0);
             }

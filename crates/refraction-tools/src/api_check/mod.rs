@@ -327,7 +327,7 @@ impl Reader {
         let header = csv::Header::parse(self.options.dialect, line);
         let failed = header.as_ref().err().cloned().map(LineError::Csv);
         // Only this thread sets the header, between chunks: it cannot be set already.
-        let _ = self.header.set(header);
+        self.header.set(header).ok();
         failed
     }
 
