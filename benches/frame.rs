@@ -2,7 +2,8 @@
 //! (each built-in beam or fan scene, set to 1,000 rays), on egui's headless context: the UI
 //! pass (the scene picture built and painted, every widget laid out) and the tessellation of
 //! its shapes into meshes; what is left for a GPU is uploading them. Measured at rest and while
-//! the source is dragged, where every frame also retraces the scene. The target is 8 ms.
+//! the source is dragged, where every frame also retraces the scene (a draft of one ray in k
+//! for a scene of more than 2,000 segments: see `src/app/scenes.rs`). The target is 4 ms.
 //! And the same for One interface while W's handle is dragged, the figure the web build's is
 //! set beside (docs/web.md), at 1280×720 and at 1920×1080 in presentation; and the label
 //! placer's worst case: the droplet's 1,000 rays, and one label that must be shown with no

@@ -18,7 +18,7 @@ pub(super) const VIEW_BUDGET: Budget = Budget {
 };
 
 /// What a trace may cost on the UI thread: about 10 ms of tracing (the built-in scenes at 1,000
-/// rays need at most two fifths of it: the droplet's 43,396 segments, 3.9 ms in `cargo bench -p
+/// rays need at most two fifths of it: the droplet's 43,396 segments, 4.0 ms in `cargo bench -p
 /// refraction-scene --bench trace`). A trace that reaches either limit is traced again in the
 /// background, up to [`VIEW_BUDGET`].
 const FOREGROUND: Budget = Budget {
