@@ -15,11 +15,11 @@ use refraction_diagram::intensities::Polarisation;
 use refraction_diagram::wavefronts::WaveOptions;
 
 /// How long the fronts take to move by one spacing, in seconds: slow enough to follow one.
-pub const WAVE_PERIOD_SECONDS: f64 = 2.0;
+pub(super) const WAVE_PERIOD_SECONDS: f64 = 2.0;
 
 /// The switches and the fronts' phase.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct EffectsMenu {
+pub(super) struct EffectsMenu {
     /// The *Intensities* switch.
     pub intensities: bool,
     /// The light the shares are for.
@@ -37,7 +37,7 @@ pub struct EffectsMenu {
 impl EffectsMenu {
     /// Turns on what a lesson is about: at Brewster's angle, the rays by their share of p light
     /// (the reflected one vanishes), so that the preset shows Brewster's angle.
-    pub fn start(&mut self, lesson: refraction_model::Lesson) {
+    pub(super) fn start(&mut self, lesson: refraction_model::Lesson) {
         if lesson == refraction_model::Lesson::Brewster {
             self.intensities = true;
             self.polarisation = Polarisation::P;
@@ -46,13 +46,13 @@ impl EffectsMenu {
 
     /// The light the rays are drawn for, while *Intensities* is on.
     #[must_use]
-    pub fn intensities(&self) -> Option<Polarisation> {
+    pub(super) fn intensities(&self) -> Option<Polarisation> {
         self.intensities.then_some(self.polarisation)
     }
 
     /// The fronts to draw, while *Wavefronts* is on.
     #[must_use]
-    pub fn waves(&self) -> Option<WaveOptions> {
+    pub(super) fn waves(&self) -> Option<WaveOptions> {
         self.waves.then_some(WaveOptions {
             phase: self.phase,
             huygens: self.huygens,
@@ -60,7 +60,7 @@ impl EffectsMenu {
     }
 
     /// Moves the fronts on by this frame's time while they move, and asks for the next frame.
-    pub fn animate(&mut self, ctx: &Context) {
+    pub(super) fn animate(&mut self, ctx: &Context) {
         if !(self.waves && self.moving) {
             return;
         }
@@ -71,16 +71,10 @@ impl EffectsMenu {
         ctx.request_repaint();
     }
 
-    /// Whether something moves on its own, so that undo waits for it.
-    #[must_use]
-    pub fn animating(&self) -> bool {
-        self.waves && self.moving
-    }
-
     /// The *Effects* menu for the top bar (one button, so that the bar keeps its rows on a
     /// projector): the two switches, and each switch's options while it is on. The button
     /// shows selected while an effect is on; the menu stays open until a click outside it.
-    pub fn menu(&mut self, ui: &mut Ui) {
+    pub(super) fn menu(&mut self, ui: &mut Ui) {
         let on = self.intensities || self.waves;
         let button = Button::new(t!("effects-menu")).selected(on);
         let config = MenuConfig::new().close_behavior(PopupCloseBehavior::CloseOnClickOutside);
@@ -140,6 +134,5 @@ mod tests {
         frame(&mut effects);
         let phase = effects.waves().unwrap().phase;
         assert!(phase > 0.0 && phase < 1.0, "{phase}");
-        assert!(effects.animating());
     }
 }

@@ -18,7 +18,7 @@ use refraction_model::ExplorerState;
 use refraction_scene::Scene;
 
 /// How many steps back the history reaches; older ones are forgotten.
-pub const LIMIT: usize = 1000;
+pub(super) const LIMIT: usize = 1000;
 
 /// Everything undo restores. The scene is shared between the steps that did not change it
 /// (most steps edit the single interface), so a thousand steps hold a few scenes, not a
@@ -65,7 +65,7 @@ impl Snapshot {
 
 /// What one undo or redo changed, in words and by view.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Change {
+pub(super) struct Change {
     /// E.g. `Undid μt 1.5 → 1.333`.
     pub words: String,
     /// Whether the single interface changed.
@@ -126,7 +126,7 @@ fn interface_changes(from: &ExplorerState, to: &ExplorerState) -> Vec<String> {
 
 /// What moving from `from` to `to` by `travel` changed, in words.
 #[must_use]
-pub fn describe(travel: Travel, from: &Snapshot, to: &Snapshot) -> Change {
+pub(super) fn describe(travel: Travel, from: &Snapshot, to: &Snapshot) -> Change {
     let mut parts = interface_changes(&from.interface, &to.interface);
     let in_interface = from.interface != to.interface;
     let in_scene = from.scene != to.scene;
@@ -274,7 +274,7 @@ fn shortcut(ui: &Ui) -> Option<Travel> {
 /// The Undo and Redo buttons, and their shortcuts: which way the user asked to move. A
 /// `compact` bar (presentation) shows only their arrows; their names stay their accessible
 /// names and hover texts.
-pub fn controls<T: Clone + PartialEq>(
+pub(super) fn controls<T: Clone + PartialEq>(
     ui: &mut Ui,
     history: &History<T>,
     compact: bool,

@@ -23,7 +23,7 @@ use super::typed::status;
 use super::{Explorer, View};
 
 /// Where eframe keeps the web build's address between runs.
-pub const WEB_BASE_KEY: &str = "explorer_web_base";
+pub(super) const WEB_BASE_KEY: &str = "explorer_web_base";
 
 /// The size of the QR code's picture when saved, in pixels.
 const QR_PICTURE_SIDE: u32 = 800;
@@ -31,7 +31,7 @@ const QR_PICTURE_SIDE: u32 = 800;
 /// The link row of the *Save, open, share* tool: the web build's address, *Copy link*,
 /// *QR code* and the link itself, to read or select.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct LinkRow {
+pub(super) struct LinkRow {
     /// The web build's address, as typed (empty: none set).
     pub base: String,
     /// The link of what the class sees, set by the window each frame (`None` without an
@@ -45,7 +45,7 @@ pub struct LinkRow {
 
 impl LinkRow {
     /// The row: the address field, *Copy link*, *QR code*, then the link.
-    pub fn ui(&mut self, ui: &mut Ui) {
+    pub(super) fn ui(&mut self, ui: &mut Ui) {
         ui.horizontal_wrapped(|ui| {
             let name = ui.label(t!("link-web-base"));
             ui.add(
@@ -85,7 +85,7 @@ impl LinkRow {
 /// The window's sharing state: the QR code shown, and what a link that could not be opened
 /// (or a copy the browser refused) said.
 #[derive(Debug, Default)]
-pub struct Sharing {
+pub(super) struct Sharing {
     /// Whether the QR code is shown over the diagram.
     pub qr_open: bool,
     /// A message for the strip above the window, until it is closed.

@@ -3,8 +3,10 @@
 //! scene whose hit points open here. The state lives in [`ExplorerState`]; drawing
 //! comes from [`refraction_diagram`]; nothing here computes refraction.
 //!
-//! The classroom tools each live in their own module: [`history`] (undo/redo), [`presentation`],
-//! and under the diagram (`tools`) check my T, the walk-through and save/open/share.
+//! The classroom tools each live in their own module: `history` (undo/redo), `presentation`,
+//! and under the diagram (`tools`) check my T, the walk-through and save/open/share. The
+//! modules are private: the commands, the web build and the tests reach the window through
+//! [`Explorer`], [`Launch`], [`View`], [`ScenesView`], [`handout`] and `browser::start`.
 
 mod accuracy;
 mod background;
@@ -13,28 +15,30 @@ pub mod browser;
 mod canvas;
 mod check_panel;
 mod controls;
-pub mod deck;
-pub mod effects_menu;
+mod deck;
+mod effects_menu;
 mod export;
 mod file_dialog;
 mod files_panel;
 mod fonts;
 mod fresnel_panel;
-pub mod history;
-pub mod link;
+mod history;
+mod link;
 mod paint;
-pub mod panels;
-pub mod presentation;
+mod panels;
+mod presentation;
 mod readouts;
 mod retrace;
 mod scene_files;
 mod scenes;
 mod tools;
 mod typed;
-pub mod walkthrough;
+mod walkthrough;
 mod widgets;
 
+pub use deck::handout;
 pub use fonts::install as install_fonts;
+pub use presentation::ZOOM as PRESENTATION_ZOOM;
 
 use egui::{Panel, RichText, ScrollArea, Ui};
 

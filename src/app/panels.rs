@@ -10,11 +10,11 @@ use egui::{Button, Key, Panel, RichText, Role, ScrollArea, Ui, WidgetInfo};
 use refraction_i18n::t;
 
 /// The width of a collapsed panel's strip, in points.
-pub const STRIP_WIDTH: f32 = 36.0;
+pub(super) const STRIP_WIDTH: f32 = 36.0;
 
 /// One side panel: where it sits, its name, its key and its sizes.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SidePanel {
+pub(super) struct SidePanel {
     /// Its egui id at the desk (presentation adds a suffix).
     pub id: &'static str,
     /// The key that opens and closes it.
@@ -41,7 +41,7 @@ impl SidePanel {
 }
 
 /// The controls panel (F2).
-pub const CONTROLS: SidePanel = SidePanel {
+pub(super) const CONTROLS: SidePanel = SidePanel {
     id: "controls",
     key: Key::F2,
     left: true,
@@ -50,7 +50,7 @@ pub const CONTROLS: SidePanel = SidePanel {
 };
 
 /// The numbers panel (F3): k, the quadratic in b, the candidates, the equations.
-pub const NUMBERS: SidePanel = SidePanel {
+pub(super) const NUMBERS: SidePanel = SidePanel {
     id: "readouts",
     key: Key::F3,
     left: false,
@@ -60,7 +60,7 @@ pub const NUMBERS: SidePanel = SidePanel {
 
 /// Which side panels are open in one mode.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Open {
+pub(super) struct Open {
     /// The controls panel.
     pub controls: bool,
     /// The numbers panel.
@@ -79,7 +79,7 @@ impl Open {
 
 /// The side panels' switches, at the desk and in presentation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Panels {
+pub(super) struct Panels {
     /// At the desk: both open at first.
     pub desk: Open,
     /// In presentation: both closed at first.
@@ -103,7 +103,7 @@ impl Default for Panels {
 
 impl Panels {
     /// The switches of the mode shown.
-    pub fn mode(&mut self, presenting: bool) -> &mut Open {
+    pub(super) fn mode(&mut self, presenting: bool) -> &mut Open {
         if presenting {
             &mut self.presenting
         } else {
@@ -115,7 +115,7 @@ impl Panels {
     /// would squeeze the panel's controls (a label wrapped letter by letter at 1280×720) or
     /// the diagram below its share. The one opened last stays, the other gives way
     /// (`tool_opened`: the tool was opened this frame). Returns whether the tool must close.
-    pub fn make_room(&mut self, tool_opened: bool) -> bool {
+    pub(super) fn make_room(&mut self, tool_opened: bool) -> bool {
         let mut close_tool = false;
         for panel in [CONTROLS, NUMBERS] {
             let shown = self.presenting.of(&panel);
@@ -132,7 +132,7 @@ impl Panels {
 
     /// In presentation, where a closed panel leaves no strip, a switch for each panel in the
     /// bar: its arrow, named (for screen readers and on hover) with what it does and its key.
-    pub fn bar_switches(&mut self, ui: &mut Ui) {
+    pub(super) fn bar_switches(&mut self, ui: &mut Ui) {
         for panel in [CONTROLS, NUMBERS] {
             let shown = self.presenting.of(&panel);
             let arrow = match (panel.left, *shown) {
@@ -149,7 +149,7 @@ impl Panels {
     }
 
     /// Toggles the panels whose keys were pressed (unless a text field has the keyboard).
-    pub fn keys(&mut self, ui: &Ui, presenting: bool) {
+    pub(super) fn keys(&mut self, ui: &Ui, presenting: bool) {
         if ui.ctx().text_edit_focused() {
             return;
         }
@@ -164,7 +164,7 @@ impl Panels {
 
     /// Shows `panel` at the side of `ui`: its contents in a vertical scroll area when open,
     /// else a strip with a button that opens it.
-    pub fn show(
+    pub(super) fn show(
         &mut self,
         ui: &mut Ui,
         panel: &SidePanel,

@@ -19,12 +19,12 @@ pub const ZOOM: f32 = 1.6;
 const COMPACT_COMBO_WIDTH: f32 = 40.0;
 
 /// The smallest text anywhere in the window, in points (pixels at zoom 1).
-pub const SMALLEST_TEXT: f32 = 13.0;
+pub(super) const SMALLEST_TEXT: f32 = 13.0;
 
 /// The window's text sizes in points: nothing under [`SMALLEST_TEXT`], so that at zoom 1 every
 /// word reads at a glance and in presentation ([`ZOOM`]) every word is at least 20 pixels.
 #[must_use]
-pub fn text_styles() -> std::collections::BTreeMap<TextStyle, FontId> {
+pub(super) fn text_styles() -> std::collections::BTreeMap<TextStyle, FontId> {
     use FontFamily::{Monospace, Proportional};
     [
         (TextStyle::Small, FontId::new(SMALLEST_TEXT, Proportional)),
@@ -81,7 +81,7 @@ fn weak(text: Color32, back: Color32) -> Color32 {
 /// The egui look of a theme: the standard light one, or black on white / white on black with
 /// strong borders.
 #[must_use]
-pub fn visuals(theme: Theme) -> egui::Visuals {
+pub(super) fn visuals(theme: Theme) -> egui::Visuals {
     let (mut visuals, text, back) = match theme {
         Theme::Standard => {
             let mut visuals = egui::Visuals::light();

@@ -284,7 +284,7 @@ impl ScenesView {
     }
 
     /// One ray in how many a drag's frames trace, while a handle is dragged in a scene whose
-    /// full trace has more than [`DRAFT_SEGMENTS`] segments.
+    /// full trace has more segments than a frame may draw (2,000).
     #[must_use]
     pub fn draft(&self) -> Option<usize> {
         self.draft

@@ -10,18 +10,18 @@ use refraction_diagram::walkthrough::steps;
 use refraction_model::ExplorerState;
 
 /// How long the μ → 1 morph takes, in seconds.
-pub const MORPH_SECONDS: f32 = 3.0;
+pub(super) const MORPH_SECONDS: f32 = 3.0;
 
 /// Smoothstep: starts and ends gently, so the class sees both ends of the morph.
 #[must_use]
-pub fn ease(s: f32) -> f32 {
+pub(super) fn ease(s: f32) -> f32 {
     let s = if s.is_nan() { 0.0 } else { s.clamp(0.0, 1.0) };
     s * s * (3.0 - 2.0 * s)
 }
 
 /// A value moving from `from` to `to` over `duration` seconds along [`ease`].
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Morph {
+pub(super) struct Morph {
     from: f64,
     to: f64,
     elapsed: f32,
@@ -31,7 +31,7 @@ pub struct Morph {
 impl Morph {
     /// A morph from `from` to `to` lasting `duration` seconds (at least one frame).
     #[must_use]
-    pub fn new(from: f64, to: f64, duration: f32) -> Self {
+    pub(super) fn new(from: f64, to: f64, duration: f32) -> Self {
         Self {
             from,
             to,
@@ -42,7 +42,7 @@ impl Morph {
 
     /// Moves `dt` seconds on (negative or NaN time is ignored) and returns the value there:
     /// exactly `to` at the end.
-    pub fn advance(&mut self, dt: f32) -> f64 {
+    pub(super) fn advance(&mut self, dt: f32) -> f64 {
         if dt > 0.0 {
             self.elapsed = (self.elapsed + dt).min(self.duration);
         }
@@ -55,14 +55,14 @@ impl Morph {
 
     /// Whether the morph has reached its end.
     #[must_use]
-    pub fn done(&self) -> bool {
+    pub(super) fn done(&self) -> bool {
         self.elapsed >= self.duration
     }
 }
 
 /// The walk-through's place and its running morph.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct WalkThrough {
+pub(super) struct WalkThrough {
     /// The step shown (0-based).
     pub step: usize,
     morph: Option<Morph>,
@@ -71,23 +71,23 @@ pub struct WalkThrough {
 impl WalkThrough {
     /// What the diagram highlights for the step shown.
     #[must_use]
-    pub fn focus(&self, state: &ExplorerState) -> Option<Focus> {
+    pub(super) fn focus(&self, state: &ExplorerState) -> Option<Focus> {
         steps(state.refraction()).get(self.step).map(|s| s.focus)
     }
 
     /// Whether the μ → 1 morph is running.
     #[must_use]
-    pub fn animating(&self) -> bool {
+    pub(super) fn animating(&self) -> bool {
         self.morph.is_some()
     }
 
     /// Starts morphing `μ_t` to `μ_i`, so that μ = `μ_i/μ_t` goes to 1.
-    pub fn start_morph(&mut self, state: &ExplorerState) {
+    pub(super) fn start_morph(&mut self, state: &ExplorerState) {
         self.morph = Some(Morph::new(state.mu_t(), state.mu_i(), MORPH_SECONDS));
     }
 
     /// Moves a running morph on by this frame's time and asks for the next frame.
-    pub fn animate(&mut self, ctx: &Context, state: &mut ExplorerState) {
+    pub(super) fn animate(&mut self, ctx: &Context, state: &mut ExplorerState) {
         let Some(morph) = self.morph.as_mut() else {
             return;
         };
@@ -102,7 +102,7 @@ impl WalkThrough {
     }
 
     /// The step with its equations and the buttons to move on.
-    pub fn show(&mut self, ui: &mut Ui, state: &ExplorerState) {
+    pub(super) fn show(&mut self, ui: &mut Ui, state: &ExplorerState) {
         let all = steps(state.refraction());
         self.step = self.step.min(all.len() - 1);
         ui.horizontal_wrapped(|ui| {

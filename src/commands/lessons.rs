@@ -7,7 +7,7 @@ use std::process::ExitCode;
 
 use glam::Vec2;
 use refraction_deck::{Deck, builtin};
-use refraction_explorer::app::deck::handout::{pdf, picture};
+use refraction_explorer::app::handout::{pdf, picture};
 use refraction_render::format::ImageFormat;
 use refraction_render::handout::Sheet;
 use refraction_render::{check_size, svg};

@@ -1,5 +1,5 @@
-//! `render` and the default command: the explorer's diagram or a traced scene as a PNG or an
-//! SVG, an animation of the diagram as a GIF, or the explorer in a window.
+//! `render`: the explorer's diagram or a traced scene as a PNG or an SVG, or an animation of
+//! the diagram as a GIF.
 
 use std::io::{self, IsTerminal as _};
 use std::path::Path;
@@ -22,6 +22,90 @@ use super::{fail, output, output_error};
 /// The still formats: what `render` without `--animate` and `bench --plot` write.
 pub(crate) const STILL: [ImageFormat; 2] = [ImageFormat::Png, ImageFormat::Svg];
 
+/// Why `render` (or `bench --plot`) refuses what it was asked, or cannot draw it: each worded
+/// once, in the commands' English, naming the option and the path.
+#[derive(Debug, thiserror::Error)]
+pub(crate) enum RenderFailure {
+    /// The path's extension names no format written.
+    #[error(transparent)]
+    Format(#[from] refraction_render::format::UnsupportedFormat),
+    /// A format written, but not by this option.
+    #[error(
+        "{option} {path}: `.{extension}` ({name}) is not written here; give a name ending in \
+         {allowed}{hint}"
+    )]
+    NotWrittenHere {
+        /// The option that named the path (`--out`, `--plot`).
+        option: String,
+        /// The path, as given.
+        path: String,
+        /// Its format's extension.
+        extension: &'static str,
+        /// Its format's name.
+        name: &'static str,
+        /// The extensions this option writes, joined by "or".
+        allowed: String,
+        /// Where the format is written instead, if anywhere.
+        hint: &'static str,
+    },
+    /// The path cannot be written (a missing folder, a directory, no permission).
+    #[error(transparent)]
+    Unwritable(std::io::Error),
+    /// `-` given where standard output already carries the command's own output.
+    #[error(
+        "{0} - is not allowed here: standard output has the command's own output; give a file \
+         name (./- for a file named -)"
+    )]
+    StdoutNotAllowed(String),
+    /// `-` given while standard output is a terminal.
+    #[error(
+        "{option} - writes {name} bytes to standard output, which is a terminal: redirect it \
+         (> file.{extension}, | viewer) or give a file name"
+    )]
+    StdoutIsTerminal {
+        /// The option (`--out`).
+        option: String,
+        /// The format's name.
+        name: &'static str,
+        /// The format's extension.
+        extension: &'static str,
+    },
+    /// The state file cannot be read.
+    #[error(transparent)]
+    State(#[from] state_file::LoadError),
+    /// The scene cannot be loaded.
+    #[error(transparent)]
+    Scene(#[from] refraction_scene::LoadError),
+    /// The picture cannot be drawn (a bad size, an animation's limits, an encoder).
+    #[error(transparent)]
+    Render(#[from] render::RenderError),
+    /// Both a scene and a state file.
+    #[error(
+        "give a SCENE ({scene}) or --state ({state}), not both: --state is the single-interface \
+         problem, SCENE a traced scene"
+    )]
+    SceneAndState {
+        /// The scene named.
+        scene: String,
+        /// The state file named.
+        state: String,
+    },
+    /// `--view` with a scene.
+    #[error(
+        "--view draws the single interface's views, not a scene ({0}): give --state or nothing"
+    )]
+    ViewOfScene(String),
+    /// `--animate` with a scene.
+    #[error("--animate draws the single interface, not a scene ({0}): give --state or nothing")]
+    AnimatedScene(String),
+    /// `--animate` with another view than the diagram.
+    #[error("--animate draws the diagram: leave out --view")]
+    AnimatedView,
+    /// The progress line could not be written.
+    #[error("cannot write the progress to stderr: {0}")]
+    Progress(std::io::Error),
+}
+
 /// Where an image goes: a file, written by [`refraction_files::write_atomically`], or stdout (`-`).
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum Destination<'a> {
@@ -35,16 +119,16 @@ pub(crate) enum Destination<'a> {
 /// for a path without one (`-`, `/dev/stdout`).
 ///
 /// # Errors
-/// An extension that names no format written, or one not among `formats`, in a sentence
-/// naming the path and what may be written there.
+/// An extension that names no format written, or one not among `formats`, naming the path
+/// and what may be written there.
 pub(crate) fn format_of(
     path: &Path,
     option: &str,
     formats: &[ImageFormat],
-) -> Result<ImageFormat, String> {
+) -> Result<ImageFormat, RenderFailure> {
     let format = match path.extension() {
         None => formats.first().copied().unwrap_or(ImageFormat::Png),
-        Some(_) => ImageFormat::for_path(path).map_err(|e| e.to_string())?,
+        Some(_) => ImageFormat::for_path(path)?,
     };
     if formats.contains(&format) {
         return Ok(format);
@@ -58,13 +142,14 @@ pub(crate) fn format_of(
     } else {
         ""
     };
-    Err(format!(
-        "{option} {}: `.{}` ({}) is not written here; give a name ending in {}{hint}",
-        path.display(),
-        format.extension(),
-        format.name(),
-        allowed.join(" or ")
-    ))
+    Err(RenderFailure::NotWrittenHere {
+        option: option.to_owned(),
+        path: path.display().to_string(),
+        extension: format.extension(),
+        name: format.name(),
+        allowed: allowed.join(" or "),
+        hint,
+    })
 }
 
 impl<'a> Destination<'a> {
@@ -74,31 +159,27 @@ impl<'a> Destination<'a> {
     /// stdout must then be neither a terminal nor closed.
     ///
     /// # Errors
-    /// What is wrong with the path, in a sentence naming it.
+    /// What is wrong with the path, naming it.
     pub(crate) fn check(
         path: &'a Path,
         option: &str,
         stdout_allowed: bool,
         formats: &[ImageFormat],
-    ) -> Result<Self, String> {
+    ) -> Result<Self, RenderFailure> {
         let format = format_of(path, option, formats)?;
         if path != Path::new("-") {
-            refraction_files::check_writable(path).map_err(|e| e.to_string())?;
+            refraction_files::check_writable(path).map_err(RenderFailure::Unwritable)?;
             return Ok(Self::File(path));
         }
         if !stdout_allowed {
-            return Err(format!(
-                "{option} - is not allowed here: standard output has the command's own output; \
-                 give a file name (./- for a file named -)"
-            ));
+            return Err(RenderFailure::StdoutNotAllowed(option.to_owned()));
         }
         if io::stdout().is_terminal() {
-            return Err(format!(
-                "{option} - writes {} bytes to standard output, which is a terminal: redirect \
-                 it (> file.{}, | viewer) or give a file name",
-                format.name(),
-                format.extension()
-            ));
+            return Err(RenderFailure::StdoutIsTerminal {
+                option: option.to_owned(),
+                name: format.name(),
+                extension: format.extension(),
+            });
         }
         Ok(Self::Stdout)
     }
@@ -114,16 +195,13 @@ impl<'a> Destination<'a> {
     }
 }
 
-fn initial_state(path: Option<&Path>) -> Result<ExplorerState, String> {
-    path.map_or_else(
-        || Ok(ExplorerState::default()),
-        |p| state_file::open(p).map_err(|e| e.to_string()),
-    )
+fn initial_state(path: Option<&Path>) -> Result<ExplorerState, RenderFailure> {
+    Ok(path.map_or_else(|| Ok(ExplorerState::default()), state_file::open)?)
 }
 
 /// The picture asked for, as the bytes of a `format` file: `scene` traced, or else the state
 /// in `state` (or the default). The size is checked before the scene is traced.
-fn picture(args: &RenderArgs, format: ImageFormat) -> Result<Vec<u8>, String> {
+fn picture(args: &RenderArgs, format: ImageFormat) -> Result<Vec<u8>, RenderFailure> {
     let size = (args.width, args.height);
     let labels = if args.svg_text {
         Labels::Text
@@ -131,21 +209,19 @@ fn picture(args: &RenderArgs, format: ImageFormat) -> Result<Vec<u8>, String> {
         Labels::Outlined
     };
     let format = (format, labels);
-    render::check_size(size.0, size.1).map_err(|e| e.to_string())?;
+    render::check_size(size.0, size.1)?;
     let out = args.out.as_path();
     match (&args.scene, &args.state) {
-        (Some(scene), Some(state)) => Err(format!(
-            "give a SCENE ({scene}) or --state ({}), not both: --state is the single-interface \
-             problem, SCENE a traced scene",
-            state.display()
-        )),
-        (Some(scene), None) if args.view != ViewArg::Interface => Err(format!(
-            "--view draws the single interface's views, not a scene ({scene}): give --state or \
-             nothing"
-        )),
+        (Some(scene), Some(state)) => Err(RenderFailure::SceneAndState {
+            scene: scene.clone(),
+            state: state.display().to_string(),
+        }),
+        (Some(scene), None) if args.view != ViewArg::Interface => {
+            Err(RenderFailure::ViewOfScene(scene.clone()))
+        }
         (Some(scene), None) => {
-            let s = Scene::load(scene).map_err(|e| e.to_string())?;
-            render::still(Picture::Scene(&s), format, size, out).map_err(|e| e.to_string())
+            let s = Scene::load(scene)?;
+            Ok(render::still(Picture::Scene(&s), format, size, out)?)
         }
         (None, state) => {
             let s = initial_state(state.as_deref())?;
@@ -161,7 +237,7 @@ fn view_file(
     format: (ImageFormat, Labels),
     size: (u32, u32),
     out: &Path,
-) -> Result<Vec<u8>, String> {
+) -> Result<Vec<u8>, RenderFailure> {
     let overlay = Overlay::default();
     let drawn = match view {
         ViewArg::Interface => {
@@ -177,29 +253,27 @@ fn view_file(
             let config = refraction_bench::Config::QUICK;
             let report = refraction_bench::run(&config, &mut |f| progress.update(f));
             if let Some(e) = progress.finish() {
-                return Err(format!("cannot write the progress to stderr: {e}"));
+                return Err(RenderFailure::Progress(e));
             }
             render::still(Picture::AccuracyPlot(&report), format, size, out)
         }
     };
-    drawn.map_err(|e| e.to_string())
+    Ok(drawn?)
 }
 
 /// The animation asked for as GIF bytes, with a progress line on a terminal. The frames, rate
 /// and size are checked before the state file is read.
-fn animation(args: &RenderArgs, animation: Animation) -> Result<Vec<u8>, String> {
+fn animation(args: &RenderArgs, animation: Animation) -> Result<Vec<u8>, RenderFailure> {
     if let Some(scene) = &args.scene {
-        return Err(format!(
-            "--animate draws the single interface, not a scene ({scene}): give --state or nothing"
-        ));
+        return Err(RenderFailure::AnimatedScene(scene.clone()));
     }
     if args.view != ViewArg::Interface {
-        return Err("--animate draws the diagram: leave out --view".to_owned());
+        return Err(RenderFailure::AnimatedView);
     }
     let mut spec = AnimationSpec::new(animation, (args.width, args.height));
     spec.frames = args.frames.unwrap_or(spec.frames);
     spec.fps = args.fps.unwrap_or(spec.fps);
-    spec.check().map_err(|e| e.to_string())?;
+    spec.check()?;
     let start = initial_state(args.state.as_deref())?;
     let mut progress = ProgressLine::on_terminal("drawing frames...");
     let drawn = render::animation::gif(&start, &Overlay::default(), &spec, |done, all| {
@@ -207,9 +281,9 @@ fn animation(args: &RenderArgs, animation: Animation) -> Result<Vec<u8>, String>
         true
     });
     let failed = progress.finish();
-    let bytes = drawn.map_err(|e| e.to_string())?;
+    let bytes = drawn?;
     match failed {
-        Some(e) => Err(format!("cannot write the progress to stderr: {e}")),
+        Some(e) => Err(RenderFailure::Progress(e)),
         None => Ok(bytes),
     }
 }

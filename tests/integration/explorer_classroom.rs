@@ -55,7 +55,7 @@ fn presentation_mode_zooms_the_ui_and_the_themes_change_panels_and_diagram() {
     assert!(h.state().presentation().on);
     assert_eq!(
         h.ctx.zoom_factor(),
-        refraction_explorer::app::presentation::ZOOM
+        refraction_explorer::app::PRESENTATION_ZOOM
     );
     // 1280 pixels zoomed are 800 points: the controls give way to the diagram.
     assert!(h.query_by_label("Flip N").is_none());

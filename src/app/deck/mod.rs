@@ -23,7 +23,7 @@
 
 pub mod handout;
 mod notes;
-pub mod panel;
+pub(super) mod panel;
 
 use egui::{Key, Modifiers, Panel, RichText, Ui};
 use refraction_deck::{Deck, Effect, Light, Step, StepTool, StepView};
@@ -33,7 +33,7 @@ use refraction_diagram::wavefronts::WaveOptions;
 use refraction_i18n::t;
 use refraction_scene::Scene;
 
-pub use notes::Notes;
+pub(super) use notes::Notes;
 
 use super::tools::Tool;
 use super::{Explorer, View};
@@ -176,7 +176,7 @@ fn polarisation(light: Light) -> Polarisation {
 /// answer shown. The handout and a step's picture draw with it; the window sets its own
 /// switches from the step.
 #[must_use]
-pub fn overlay_of(step: &Step) -> Overlay {
+pub(super) fn overlay_of(step: &Step) -> Overlay {
     Overlay {
         intensities: step
             .has(Effect::Intensities)

@@ -18,7 +18,7 @@ use crate::app::typed::status;
 use crate::app::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 
 /// The deck file offered first.
-pub const DEFAULT_DECK_PATH: &str = "lesson.toml";
+pub(crate) const DEFAULT_DECK_PATH: &str = "lesson.toml";
 
 /// The extensions the dialog lists.
 const DECK_FILES: &[&str] = &["toml"];
