@@ -141,11 +141,10 @@ impl Default for ScenesView {
 /// Paints `note` (a drag shows a draft: one ray in so many, the full picture returns when the
 /// pointer lets go) in the canvas's lower left corner.
 fn draft_note(painter: &Painter, canvas: Rect, note: &str, font_px: f32, palette: &Palette) {
-    let text = note.to_owned();
     let margin = font_px * 0.5;
     let at = canvas.left_bottom() + egui::vec2(margin, -margin);
     let galley = painter.layout_no_wrap(
-        text,
+        note.to_owned(),
         egui::FontId::proportional(font_px),
         color(palette.ink),
     );
@@ -514,11 +513,14 @@ impl ScenesView {
         }
         let picture = &kept.picture;
         hover_left_out(&response, &to_screen, &picture.left_out, layout.font * 2.0);
-        let about = match &note {
-            Some(note) => format!("{} {note}", picture.summary),
-            None => picture.summary.clone(),
-        };
-        response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &about));
+        // Worded only when asked for (a screen reader, the tests), not on every frame.
+        response.widget_info(|| {
+            let about = match &note {
+                Some(note) => format!("{} {note}", picture.summary),
+                None => picture.summary.clone(),
+            };
+            WidgetInfo::labeled(Role::Image, true, about)
+        });
         let hovered = response
             .hover_pos()
             .and_then(|p| layout.hit_near(shown, canvas_point(&to_screen, p)));

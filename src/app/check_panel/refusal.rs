@@ -82,38 +82,22 @@ impl fmt::Display for Refusal {
     }
 }
 
-impl From<LineError> for Refusal {
-    fn from(error: LineError) -> Self {
-        Self::Line(error)
-    }
+/// `From` each tools' error a refusal carries as it came.
+macro_rules! carried {
+    ($($error:ty => $variant:ident),* $(,)?) => {
+        $(impl From<$error> for Refusal {
+            fn from(error: $error) -> Self {
+                Self::$variant(error)
+            }
+        })*
+    };
 }
 
-impl From<PatternError> for Refusal {
-    fn from(error: PatternError) -> Self {
-        Self::Pattern(error)
-    }
-}
-
-impl From<CheckError> for Refusal {
-    fn from(error: CheckError) -> Self {
-        Self::Check(error)
-    }
-}
-
-impl From<RequestError> for Refusal {
-    fn from(error: RequestError) -> Self {
-        Self::Request(error)
-    }
-}
-
-impl From<InputError> for Refusal {
-    fn from(error: InputError) -> Self {
-        Self::Input(error)
-    }
-}
-
-impl From<TargetError> for Refusal {
-    fn from(error: TargetError) -> Self {
-        Self::Target(error)
-    }
+carried! {
+    LineError => Line,
+    PatternError => Pattern,
+    CheckError => Check,
+    RequestError => Request,
+    InputError => Input,
+    TargetError => Target,
 }
