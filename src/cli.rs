@@ -17,7 +17,7 @@ use refraction_i18n::Locale;
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
 use refraction_scene::DEFAULT_SCENE;
-use refraction_tools::api_check::Renderer;
+use refraction_tools::call_check::Renderer;
 use refraction_tools::solve::Precision;
 
 use crate::app::View;

@@ -14,7 +14,7 @@ use clap::Parser as _;
 use refraction_diagram::palette::Theme;
 use refraction_explorer::app::View;
 use refraction_explorer::cli::{Cli, Command};
-use refraction_tools::api_check::Dialect;
+use refraction_tools::call_check::Dialect;
 
 /// The command line, or the exit status after `--help`, `--version` or a usage error. A usage
 /// error is one line, as every other error is: clap's first line, without its usage block.
@@ -78,7 +78,7 @@ fn main() -> ExitCode {
             suggest_pattern,
         }) if !suggest_pattern => commands::lines::check(
             file.as_deref(),
-            &refraction_tools::api_check::Options {
+            &refraction_tools::call_check::Options {
                 dialect: api.map_or(Dialect::Physics, Dialect::Api),
                 inside,
                 outside,

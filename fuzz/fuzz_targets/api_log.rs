@@ -9,7 +9,7 @@ mod answer;
 mod message;
 
 use refraction_kernel::api::Api;
-use refraction_tools::api_check::{Dialect, Format, Options, Pattern, Session};
+use refraction_tools::call_check::{Dialect, Format, Options, Pattern, Session};
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {
     let Some((&pick, rest)) = data.split_first() else {

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use refraction_i18n::t;
-use refraction_tools::api_check::{Dialect, Format, Options, Pattern, Session, suggest};
+use refraction_tools::call_check::{Dialect, Format, Options, Pattern, Session, suggest};
 use refraction_tools::diagnosis::{Verdict, looks_like_summary};
 use refraction_tools::snippets::tests_file::{self, TestLanguage};
 use refraction_tools::{self as jsonl, LinesError, solve as solver};

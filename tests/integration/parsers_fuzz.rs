@@ -13,8 +13,8 @@ use proptest::prelude::*;
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
 use refraction_model::ExplorerState;
-use refraction_tools::api_check::{Format, Options, Pattern, Session};
-use refraction_tools::{check, solve, state_file};
+use refraction_tools::call_check::{Format, Options, Pattern, Session};
+use refraction_tools::{candidate_check, solve, state_file};
 use serde_json::Value;
 
 const CASES: u32 = 384;
@@ -198,7 +198,7 @@ proptest! {
 
     #[test]
     fn a_check_line_is_judged_with_finite_json_or_an_error(line in any_line()) {
-        match check::answer(&line) {
+        match candidate_check::answer(&line) {
             Ok((text, verdict)) => {
                 let answer: Value = serde_json::from_str(&text).expect("the answer is JSON");
                 if !answer["t"].is_null() {
@@ -219,7 +219,7 @@ proptest! {
             prop::collection::vec(number(), 0..5).prop_map(|v| format!("vec3({})", v.join(", "))),
         ]
     ) {
-        if let Err(message) = check::parse_vector(&text) {
+        if let Err(message) = candidate_check::parse_vector(&text) {
             prop_assert!(!message.to_string().is_empty());
         }
     }
@@ -350,7 +350,7 @@ proptest! {
     #[test]
     fn a_check_api_json_line_is_judged_or_refused(api in api(), line in any_line(), swap in any::<bool>()) {
         // The solve fields renamed to the API's own, so that mutations hit its reader.
-        let names = refraction_tools::api_check::fields::names(api);
+        let names = refraction_tools::call_check::fields::names(api);
         let line = if swap {
             line.replace("\"w\"", &format!("\"{}\"", names.incident))
                 .replace("\"n\"", &format!("\"{}\"", names.normal))
@@ -374,7 +374,7 @@ proptest! {
         noise in any::<String>(),
         pattern_noise in "[ -~{}]{0,30}",
     ) {
-        let names = refraction_tools::api_check::fields::names(api);
+        let names = refraction_tools::call_check::fields::names(api);
         let fields = [names.incident, names.normal, names.eta, names.result];
         let pattern = format!(
             "LOG{literal}{{{}}} | {{{}}} | {{{}}} | {{{}}}",

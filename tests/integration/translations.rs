@@ -342,16 +342,16 @@ fn interface_sources() -> Vec<PathBuf> {
     rust_files(&root().join("crates/refraction-diagram/src"), &mut files);
     // The sentences of "Check my T" that the window shows (and `check` prints in English).
     for file in [
-        "crates/refraction-tools/src/check.rs",
-        "crates/refraction-tools/src/api_check/explain.rs",
+        "crates/refraction-tools/src/candidate_check.rs",
+        "crates/refraction-tools/src/call_check/explain.rs",
         "crates/refraction-tools/src/diagnosis/code.rs",
-        "crates/refraction-tools/src/api_check/call.rs",
-        "crates/refraction-tools/src/api_check/csv.rs",
-        "crates/refraction-tools/src/api_check/error.rs",
-        "crates/refraction-tools/src/api_check/mod.rs",
-        "crates/refraction-tools/src/api_check/pattern.rs",
-        "crates/refraction-tools/src/api_check/record.rs",
-        "crates/refraction-tools/src/api_check/result.rs",
+        "crates/refraction-tools/src/call_check/call.rs",
+        "crates/refraction-tools/src/call_check/csv.rs",
+        "crates/refraction-tools/src/call_check/error.rs",
+        "crates/refraction-tools/src/call_check/mod.rs",
+        "crates/refraction-tools/src/call_check/pattern.rs",
+        "crates/refraction-tools/src/call_check/record.rs",
+        "crates/refraction-tools/src/call_check/result.rs",
         "crates/refraction-tools/src/vector_text.rs",
     ] {
         files.push(root().join(file));

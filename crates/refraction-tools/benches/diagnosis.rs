@@ -12,7 +12,7 @@ use core::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use refraction_kernel::api::Api;
-use refraction_tools::api_check::{
+use refraction_tools::call_check::{
     Dialect, Format, MAX_PLACEHOLDERS, Options, Pattern, Record, Session, judge_record,
 };
 use refraction_tools::diagnosis::LogTally;

@@ -1,14 +1,21 @@
 //! The refraction explorer's tools, with no window: the JSON Lines of the `solve` and `check`
-//! commands (requests, answers, the verdicts of `check`), `check --api`'s reading of a student's
-//! call in their own API's terms ([`api_check`]: JSON, log patterns, CSV), and the explorer's
-//! state file (one `solve` line), and the code a case or a failing line is written as
-//! ([`snippets`]: a unit test in the student's language). The window's *Check my T* panel calls the same functions, so
-//! the window and the commands agree.
-//! [`answer_lines`] is the loop both commands share: one answer per
-//! non-empty input line, in order, streaming, with bad lines answered rather than fatal.
+//! commands, the explorer's state file (one `solve` line), and the code a case or a failing
+//! line is written as ([`snippets`]: a unit test in the student's language). What `check` judges
+//! is in three modules, from one T to a whole log:
+//!
+//! - [`candidate_check`]: one T against the four candidates, in the physics convention (W, N,
+//!   μ): which one it is and the mix-up that produces it (a `check` line, *Check my T*);
+//! - [`call_check`]: one call read in its own dialect, an API's (`check --api`) or physics'
+//!   (any renderer's own refraction), from JSON, log patterns or CSV, and judged on its own;
+//! - [`diagnosis`]: the whole log, the one mistake in the student's code that explains its
+//!   wrong lines, from the evidence [`call_check`] counts.
+//!
+//! The window's *Check my T* panel calls the same functions, so the window and the commands
+//! agree. [`answer_lines`] is the loop both commands share: one answer per non-empty input
+//! line, in order, streaming, with bad lines answered rather than fatal.
 
-pub mod api_check;
-pub mod check;
+pub mod call_check;
+pub mod candidate_check;
 pub mod diagnosis;
 pub mod error;
 mod fields;

@@ -1,8 +1,9 @@
 //! Check my T in a student's API: that API's own argument fields and the optional truth, the
-//! verdict of [`refraction_tools::api_check`] (the mistakes with what each means, the explanation in
-//! the API's language, what the API returns, the right T), and the case drawn in the API's
-//! convention: the right call's incident vector as the API means it (GLSL's I and the book's
-//! uv along the ray, pbrt's and Mitsuba's wi back toward the origin), μ as the API's eta means.
+//! verdict of [`refraction_tools::call_check`] (the mistakes with what each means, the
+//! explanation in the API's language, what the API returns, the right T), and the case drawn in
+//! the API's convention: the right call's incident vector as the API means it (GLSL's I and the
+//! book's uv along the ray, pbrt's and Mitsuba's wi back toward the origin), μ as the API's eta
+//! means.
 
 use std::collections::HashMap;
 
@@ -17,10 +18,10 @@ use refraction_kernel::Convention;
 use refraction_kernel::api::{Api, Args};
 use refraction_model::ExplorerState;
 use refraction_model::INDEX_RANGE;
-use refraction_tools::api_check::call::Got;
-use refraction_tools::api_check::fields::{self, Kind, names};
-use refraction_tools::api_check::record::Value;
-use refraction_tools::api_check::{Call, Diagnosis, Options, Record, check_record};
+use refraction_tools::call_check::call::Got;
+use refraction_tools::call_check::fields::{self, Kind, names};
+use refraction_tools::call_check::record::Value;
+use refraction_tools::call_check::{Call, Diagnosis, Options, Record, check_record};
 use refraction_tools::snippets::api::{self as snippets, ApiCase, Language};
 use refraction_tools::state_file;
 use refraction_tools::vector_text::{spoken, spoken_vector};

@@ -17,7 +17,7 @@ use refraction_diagram::font::Typeface;
 use refraction_diagram::{Primitive, failure_map};
 use refraction_i18n::t;
 use refraction_model::log_map::LinePoint;
-use refraction_tools::api_check::{
+use refraction_tools::call_check::{
     Dialect, Format, Judgement, LineError, Options, Pattern, PatternError, Record, SAMPLED,
     SKIPPED, Session, Tally, fields,
 };
@@ -567,7 +567,7 @@ mod tests {
         assert_eq!(table.rows[0].line, 2);
         assert!(table.rows[0].verdict.is_ok());
         let e = table.rows[1].verdict.as_ref().unwrap_err();
-        let cells = refraction_tools::api_check::CsvError::Cells {
+        let cells = refraction_tools::call_check::CsvError::Cells {
             count: 2,
             columns: 4,
         };

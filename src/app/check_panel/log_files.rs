@@ -11,7 +11,7 @@ use super::refusal::Refusal;
 use crate::app::file_dialog::{self, FileDialog, Purpose, Target};
 use crate::app::typed::error_label;
 use refraction_i18n::t;
-use refraction_tools::api_check::{Dialect, Options};
+use refraction_tools::call_check::{Dialect, Options};
 use refraction_tools::snippets::AnyLanguage;
 use refraction_tools::snippets::tests_file::{self, Failing, MAX_TESTS, TestLanguage};
 

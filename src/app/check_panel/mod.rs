@@ -4,7 +4,8 @@
 //! etai_over_etat, refracted`, Mitsuba's `wi, n, eta, wo`, with the optional truth). The
 //! explorer opens that case, drawn in the convention in use (shown in the panel), says what is
 //! wrong and why, and draws the student's vector beside the right one. The verdicts are those of
-//! [`refraction_tools::check`] and [`refraction_tools::api_check`], so the window and `check` agree.
+//! [`refraction_tools::candidate_check`] and [`refraction_tools::call_check`], so the window and
+//! `check` agree.
 
 mod api;
 mod bulk;
@@ -22,8 +23,8 @@ use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
 use refraction_model::ExplorerState;
-use refraction_tools::api_check::{Dialect, Record, physics};
-use refraction_tools::check::{self, Match, Verdict};
+use refraction_tools::call_check::{Dialect, Record, physics};
+use refraction_tools::candidate_check::{self, Match, Verdict};
 use refraction_tools::solve::{Precision, Request};
 use refraction_tools::state_file;
 use refusal::Refusal;
@@ -143,7 +144,7 @@ fn number(text: &str, name: &str) -> Result<f64, Refusal> {
 
 /// Reads a vector typed into the field named `name`.
 fn vector_field(text: &str, name: &str) -> Result<[f64; 3], Refusal> {
-    check::parse_vector(text).map_err(|error| Refusal::Vector {
+    candidate_check::parse_vector(text).map_err(|error| Refusal::Vector {
         field: name.to_owned(),
         error,
     })
@@ -210,7 +211,7 @@ impl Own {
     /// separate fields in the panel's convention.
     fn read(&self) -> Result<(Request, [f64; 3]), Refusal> {
         if self.yours.trim_start().starts_with(JSON_LINE_START) {
-            return Ok(check::parse_line(self.yours.trim())?);
+            return Ok(candidate_check::parse_line(self.yours.trim())?);
         }
         let request = Request {
             w: vector_field(&self.w, "W")?,
@@ -229,7 +230,7 @@ impl Own {
     /// Checks the T in the fields; the case to open and the verdict.
     fn check(&mut self) -> Result<Checked, Refusal> {
         let (request, yours) = self.read()?;
-        let verdict = check::check(&request, yours)?;
+        let verdict = candidate_check::check(&request, yours)?;
         let [w, n] = [request.w, request.n].map(DVec3::from_array);
         let case = ExplorerState::new(w, n, request.mu_i, request.mu_t, request.convention)?;
         self.fill(&request);

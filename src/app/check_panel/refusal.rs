@@ -4,7 +4,7 @@
 use core::fmt;
 use refraction_i18n::t;
 use refraction_kernel::InputError;
-use refraction_tools::api_check::{LineError, PatternError};
+use refraction_tools::call_check::{LineError, PatternError};
 use refraction_tools::error::{CheckError, RequestError, VectorError};
 use refraction_tools::snippets::tests_file::TargetError;
 use refraction_tools::vector_text::spoken;

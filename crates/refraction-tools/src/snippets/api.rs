@@ -10,8 +10,8 @@ use refraction_kernel::api::{Api, Args};
 use serde_json::Value as Json;
 
 use super::literal;
-use crate::api_check::fields::names;
-use crate::api_check::{Call, Code, Diagnosis};
+use crate::call_check::fields::names;
+use crate::call_check::{Call, Code, Diagnosis};
 use crate::solve::Precision;
 
 /// The language a test is written in.
@@ -433,7 +433,7 @@ pub fn test(language: Language, case: &ApiCase<'_>) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::api_check::{Options, Record, check_record};
+    use crate::call_check::{Options, Record, check_record};
 
     /// The test of a logged line, with the verdict's own fields.
     fn snippet(api: Api, line: &str, language: Language) -> String {

@@ -8,8 +8,8 @@ use refraction_i18n::t;
 
 use super::api::{self, ApiCase, Language, Name};
 use super::{AnyCase, AnyLanguage, any_renderer_tests};
-use crate::api_check::physics::Case;
-use crate::api_check::{Dialect, Judgement, LineError, Options, Record};
+use crate::call_check::physics::Case;
+use crate::call_check::{Dialect, Judgement, LineError, Options, Record};
 
 /// The most failing lines a test file holds.
 pub const MAX_TESTS: usize = 100;

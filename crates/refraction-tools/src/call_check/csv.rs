@@ -181,7 +181,7 @@ impl Header {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::api_check::record::Value;
+    use crate::call_check::record::Value;
 
     #[test]
     fn vectors_in_one_column_or_three() {

@@ -1,5 +1,7 @@
-//! The verdict on one call: the result mistake (if any) and what the result resembles, the
-//! readings of the arguments, the physically right T, and the answer's fields.
+//! The verdict on one API call ([`verdict()`]): the result mistake (if any) and what the result
+//! resembles, the readings of the arguments, the physically right T, and the answer's fields.
+//! It judges the call alone; the evidence it gives ([`evidence`]) goes to
+//! [`crate::diagnosis`], which names the one mistake behind the whole log.
 
 use glam::DVec3;
 use refraction_kernel::api::{Api, Args, Meaning};
@@ -11,7 +13,7 @@ use super::error::LineError;
 use super::explain;
 use super::readings::{Reading, Tolerance, readings, undo};
 use super::result::{Returns, Seen, returns, transmitted_by};
-use crate::check::{self, Match};
+use crate::candidate_check::{self, Match};
 use crate::diagnosis::Code;
 use crate::diagnosis::formula::{self, Situation};
 use crate::diagnosis::{self, Codes, Evidence, Missing, Readings, Side, Told};
@@ -229,7 +231,7 @@ fn physical(meaning: &Meaning<f64>, got: Got) -> (Option<Match>, Option<[f64; 3]
         Got::Vector(v) => v.to_array(),
         Got::Nothing => [0.0; 3],
     };
-    check::check(&request, yours).map_or((None, None), |v| (v.matches, v.correct))
+    candidate_check::check(&request, yours).map_or((None, None), |v| (v.matches, v.correct))
 }
 
 /// The explanations as sets of codes, and all their codes in order.
@@ -290,7 +292,7 @@ fn formula_readings(readings: &[Reading], seen: Seen, right: bool, tolerance: f6
     }
 }
 
-fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, LineError> {
+fn verdict_in<S: Real>(call: &Call) -> Result<Diagnosis, LineError> {
     let tolerance = Tolerance::new(&call.digits, S::EPSILON.to_f64());
     let returns = returns::<S>(call, &tolerance)?;
     let seen = returns.see(call.got);
@@ -321,7 +323,7 @@ fn diagnose_in<S: Real>(call: &Call) -> Result<Diagnosis, LineError> {
         &readings,
         seen,
         ok && sampled.is_none(),
-        check::MATCH_ANGLE.max(2.0 * returns.distance),
+        candidate_check::MATCH_ANGLE.max(2.0 * returns.distance),
     );
     Ok(Diagnosis {
         ok,
@@ -425,9 +427,9 @@ pub fn point(call: &Call, diagnosis: &Diagnosis) -> LinePoint {
 ///
 /// # Errors
 /// An argument too large for that precision.
-pub fn diagnose(call: &Call) -> Result<Diagnosis, LineError> {
+pub fn verdict(call: &Call) -> Result<Diagnosis, LineError> {
     match call.precision {
-        Precision::F32 => diagnose_in::<f32>(call),
-        Precision::F64 => diagnose_in::<f64>(call),
+        Precision::F32 => verdict_in::<f32>(call),
+        Precision::F64 => verdict_in::<f64>(call),
     }
 }

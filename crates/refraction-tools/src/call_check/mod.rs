@@ -1,21 +1,26 @@
-//! `check --api NAME`: a student's call checked in their own API's conventions. Each line
-//! carries the API's own argument names and what came back (see [`fields`]), with optional
-//! truth (`from`, `to`, `travel`, `entering`); the answer says whether the call is right, which
-//! mistakes explain what came back ([`Code`]), what the API returns for these arguments and the
-//! physically right T.
+//! One call, read in its own dialect ([`Dialect`]): an API's (`check --api NAME`) or physics'
+//! (`check` without `--api`, any renderer's own refraction, in [`physics`]). A line is read
+//! from JSON, a `--pattern` log or CSV into a [`Record`], judged on its own (a [`Judgement`]:
+//! for an API's call, its [`verdict()`]), and counted toward the diagnosis of the whole log
+//! ([`crate::diagnosis`], which names the one mistake behind all the wrong lines). Which of the
+//! four candidates a T is comes from [`crate::candidate_check`].
 //!
-//! The diagnosis tries every combination of the argument mistakes (`eta_inverted`,
+//! In an API's dialect, each line carries the API's own argument names and what came back (see
+//! [`fields`]), with optional truth (`from`, `to`, `travel`, `entering`); the answer says
+//! whether the call is right, which mistakes explain what came back ([`Code`]), what the API
+//! returns for these arguments and the physically right T.
+//!
+//! The verdict on a call tries every combination of the argument mistakes (`eta_inverted`,
 //! `incident_reversed`, `normal_not_facing`, `not_unit_input`) against the API's contract and
 //! the truth, keeps the fewest that fit (all of them when several fit equally, the likeliest
 //! first), and compares what came back with what the API returns for the arguments as logged
 //! (`not_the_api_result`, `missed_tir`), within the rounding of the logged digits.
 //!
 //! For the explorer: [`Record::from_texts`] reads the API's fields from text, [`Call::from_record`]
-//! makes the call, [`diagnose()`] judges it; [`fields::names`] gives each API's field names.
+//! makes the call, [`verdict()`] judges it; [`fields::names`] gives each API's field names.
 
 pub mod call;
 pub mod csv;
-pub mod diagnose;
 pub mod error;
 mod explain;
 pub mod fields;
@@ -27,6 +32,7 @@ pub mod readings;
 pub mod record;
 pub mod result;
 pub mod suggest;
+pub mod verdict;
 
 use std::collections::BTreeMap;
 
@@ -34,13 +40,13 @@ use serde::Serialize;
 
 pub use crate::diagnosis::{Code, Renderer};
 pub use call::{Call, Options};
-pub use diagnose::{Diagnosis, diagnose};
 pub use error::{CsvError, LineError, PatternError};
 pub use fields::Dialect;
 pub use pattern::{MAX_PATTERN_BYTES, MAX_PATTERN_LINES, MAX_PLACEHOLDERS, Pattern};
 pub use record::Record;
+pub use verdict::{Diagnosis, verdict};
 
-use crate::check::{self, Match};
+use crate::candidate_check::{self, Match};
 use crate::diagnosis::{Evidence, LogTally, Summary};
 use crate::snippets::tests_file::{Failing, MAX_TESTS};
 use gather::Gather;
@@ -49,7 +55,7 @@ use gather::Gather;
 #[derive(Serialize)]
 struct Answer<'a> {
     #[serde(flatten)]
-    verdict: check::Answer<'a>,
+    verdict: candidate_check::Answer<'a>,
     api_result: &'a serde_json::Value,
     mistakes: Vec<&'static str>,
     alternatives: Vec<Vec<&'static str>>,
@@ -63,7 +69,7 @@ struct Answer<'a> {
 pub fn answer_line(call: &Call, diagnosis: &Diagnosis) -> String {
     let names = |codes: &[Code]| codes.iter().map(|c| c.name()).collect::<Vec<_>>();
     let answer = Answer {
-        verdict: check::Answer {
+        verdict: candidate_check::Answer {
             ok: diagnosis.ok,
             matches: diagnosis.matches.map(Match::name),
             explanation: &diagnosis.explanation,
@@ -83,7 +89,7 @@ pub fn answer_line(call: &Call, diagnosis: &Diagnosis) -> String {
 /// The record is not a complete call (see [`Call::from_record`]) or does not fit the precision.
 pub fn check_record(record: &Record, options: &Options) -> Result<(Call, Diagnosis), LineError> {
     let call = Call::from_record(record, options)?;
-    let diagnosis = diagnose(&call)?;
+    let diagnosis = verdict(&call)?;
     Ok((call, diagnosis))
 }
 
@@ -199,7 +205,7 @@ impl Judgement {
     #[must_use]
     pub fn evidence(&self) -> Evidence {
         match self {
-            Self::Api(judged) => diagnose::evidence(&judged.0, &judged.1),
+            Self::Api(judged) => verdict::evidence(&judged.0, &judged.1),
             Self::Physics(judged) => judged.evidence(),
         }
     }
@@ -227,7 +233,7 @@ impl Judgement {
     #[must_use]
     pub fn point(&self) -> refraction_model::log_map::LinePoint {
         match self {
-            Self::Api(judged) => diagnose::point(&judged.0, &judged.1),
+            Self::Api(judged) => verdict::point(&judged.0, &judged.1),
             Self::Physics(judged) => judged.point,
         }
     }

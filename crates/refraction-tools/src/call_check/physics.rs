@@ -18,7 +18,7 @@ use serde::Serialize;
 use super::call::Options;
 use super::error::{LineError, Role};
 use super::record::{Record, Value};
-use crate::check::{self, MATCH_ANGLE, Match, Verdict};
+use crate::candidate_check::{self, MATCH_ANGLE, Match, Verdict};
 use crate::diagnosis::Code;
 use crate::diagnosis::formula::{self, Outcome, Situation};
 use crate::diagnosis::{self, Codes, Evidence, Readings, Side, Told};
@@ -234,7 +234,7 @@ fn alternatives(case: &Case, r: &Refraction<f64>, verdict: &Verdict) -> Vec<Vec<
     }
     if found.is_empty() {
         let unit_length = yours.is_some_and(|y| {
-            (length(y) - 1.0).abs() > check::LENGTH_TOLERANCE
+            (length(y) - 1.0).abs() > candidate_check::LENGTH_TOLERANCE
                 && verdict.matches == Some(Match::Chosen)
         });
         found.push(vec![match (r.is_tir(), yours) {
@@ -358,7 +358,7 @@ fn explanation(
 /// The problem cannot be refracted (a zero vector, an index that is not positive).
 pub fn judge(case: &Case) -> Result<Judged, LineError> {
     let nothing = [0.0; 3];
-    let verdict = check::check(&case.request, case.yours.unwrap_or(nothing))?;
+    let verdict = candidate_check::check(&case.request, case.yours.unwrap_or(nothing))?;
     let r = refract(&Incidence::<f64> {
         w: DVec3::from_array(case.request.w),
         n: DVec3::from_array(case.request.n),
@@ -431,7 +431,7 @@ pub fn judge(case: &Case) -> Result<Judged, LineError> {
 #[derive(Serialize)]
 struct Answer<'a> {
     #[serde(flatten)]
-    verdict: check::Answer<'a>,
+    verdict: candidate_check::Answer<'a>,
     mistakes: Vec<&'static str>,
     alternatives: Vec<Vec<&'static str>>,
 }
@@ -441,7 +441,7 @@ struct Answer<'a> {
 pub fn answer_line(judged: &Judged) -> String {
     let v = &judged.verdict;
     let answer = Answer {
-        verdict: check::Answer {
+        verdict: candidate_check::Answer {
             ok: v.ok,
             matches: v.matches.map(Match::name),
             explanation: &v.explanation,
@@ -481,7 +481,7 @@ pub fn tally_kind(judged: &Judged) -> &'static str {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::api_check::fields::Dialect;
+    use crate::call_check::fields::Dialect;
     use crate::vector_text::unit;
 
     fn case(text: &str) -> Case {
@@ -605,7 +605,7 @@ mod tests {
         assert!(judged.verdict.explanation.contains("sampled"), "{judged:?}");
         assert_eq!(judged.evidence.alternatives, [vec![Code::FalseTir]]);
         assert!(judged.evidence.sample.is_some_and(|ln_f| ln_f < 0.0));
-        assert_eq!(tally_kind(&judged), crate::api_check::SAMPLED);
+        assert_eq!(tally_kind(&judged), crate::call_check::SAMPLED);
     }
 
     #[test]

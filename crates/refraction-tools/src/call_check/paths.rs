@@ -11,9 +11,9 @@ use refraction_kernel::{Convention, Incidence, refract};
 use serde::Serialize;
 
 use super::call::Call;
-use super::diagnose::Diagnosis;
 use super::error::LineError;
-use crate::check::MATCH_ANGLE;
+use super::verdict::Diagnosis;
+use crate::candidate_check::MATCH_ANGLE;
 use crate::diagnosis::Code;
 use crate::vector_text::{angle, short, short_vector, unit};
 

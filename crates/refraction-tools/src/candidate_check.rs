@@ -1,5 +1,9 @@
-//! "Check my T": which of the four candidates a student's refracted ray is, and the sign choice
-//! or convention mix-up that produces it, in words a student understands.
+//! One T against the four candidates: which of them a student's refracted ray is, in the
+//! physics convention (W, N, μ: the `solve` fields), and the sign choice or convention mix-up
+//! that produces it, in words a student understands. This is the verdict of "Check my T" and of
+//! a `check` line; [`crate::call_check`] reads a whole call in its own dialect (an API's, or
+//! physics') and asks this module which candidate the physically meant T is, and
+//! [`crate::diagnosis`] names the one mistake behind a whole log.
 
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -146,7 +150,7 @@ fn refracted<S: Real>(
             let (ok, matches, text) = matched(candidate.rejection, off, unit_note.is_some());
             (ok, Some(matches), text)
         }
-        None => (false, None, diagnose_unmatched::<S>(incidence, r, yours)),
+        None => (false, None, why_unmatched::<S>(incidence, r, yours)),
     };
     let note = unit_note.unwrap_or_default();
     (ok, matches, format!("{text}{note}"))
@@ -169,7 +173,7 @@ fn matched(rejection: Option<Rejection>, off: f64, not_unit: bool) -> (bool, Mat
 
 /// Why a T that matches no candidate is wrong: a swapped index ratio, a T outside the plane of
 /// incidence, or simply how far it is from the right answer.
-fn diagnose_unmatched<S: Real>(
+fn why_unmatched<S: Real>(
     incidence: &Incidence<S>,
     r: &refraction_kernel::Refraction<S>,
     yours: glam::DVec3,

@@ -4,10 +4,10 @@
 use refraction_kernel::api::Api;
 
 use super::call::Call;
-use super::diagnose::Resemblance;
 use super::fields::names;
 use super::readings::{Reading, normal_points_inward};
 use super::result::{Returns, Seen};
+use super::verdict::Resemblance;
 use crate::diagnosis::Code;
 use crate::vector_text::{length, spoken, spoken_vector};
 use refraction_i18n::t;

@@ -213,7 +213,7 @@ pub fn readings(call: &Call, tolerance: &Tolerance) -> Vec<Reading> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::api_check::call::{Got, Truth};
+    use crate::call_check::call::{Got, Truth};
     use crate::solve::Precision;
 
     fn glsl(i: DVec3, n: DVec3, eta: f64, truth: Truth) -> Call {
