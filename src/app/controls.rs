@@ -7,11 +7,12 @@ use std::path::{Path, PathBuf};
 use egui::{ComboBox, DragValue, Slider, SliderClamping, Ui};
 
 use super::file_dialog::{self, Choice, FileDialog, Purpose, Target};
-use super::typed::{TypedField, format_vector, parse_number, parse_vector, short, status};
+use super::status::{self, Look, Status};
+use super::typed::{TypedError, TypedField, format_vector, parse_number, parse_vector, short};
 use refraction_diagram::Overlay;
 use refraction_diagram::overlay::PanZoom;
-use refraction_kernel::Convention;
-use refraction_model::{ExplorerState, HandleId, Lesson};
+use refraction_kernel::{Convention, InputError};
+use refraction_model::{AngleError, ExplorerState, HandleId, Lesson};
 use refraction_model::{INDEX_RANGE, MATERIALS, material_of};
 
 /// What the controls keep between frames.
@@ -29,7 +30,7 @@ pub(super) struct Controls {
     n: TypedField,
     export_size: (u32, u32),
     export_path: String,
-    export_status: Option<Result<String, String>>,
+    export_status: Option<Status>,
     /// The export's save dialog, while it is up.
     export_dialog: Option<FileDialog>,
     /// An image the user is asked about replacing.
@@ -56,16 +57,38 @@ impl Default for Controls {
     }
 }
 
+/// Why a value typed, dragged or picked in the controls was not applied, worded when shown.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+enum NotApplied {
+    /// The text is not a number, or not a vector.
+    #[error(transparent)]
+    Typed(#[from] TypedError),
+    /// The kernel refuses the index, named by its symbol.
+    #[error("{symbol}: {error}")]
+    Index {
+        /// `μi` or `μt`.
+        symbol: &'static str,
+        /// Why.
+        error: InputError,
+    },
+    /// The angle of incidence cannot be shown.
+    #[error(transparent)]
+    Angle(#[from] AngleError),
+    /// The kernel refuses W and N (a zero vector, a component that is not finite).
+    #[error(transparent)]
+    Vectors(#[from] InputError),
+}
+
 /// Sets the index of `handle`, named `symbol` in the error if the kernel refuses it.
 fn set_index(
     state: &mut ExplorerState,
     handle: HandleId,
-    symbol: &str,
+    symbol: &'static str,
     index: f64,
-) -> Result<(), String> {
+) -> Result<(), NotApplied> {
     state
         .set_index(handle, index)
-        .map_err(|e| format!("{symbol}: {e}"))
+        .map_err(|error| NotApplied::Index { symbol, error })
 }
 
 /// The slider, typed value and preset of one index.
@@ -104,8 +127,9 @@ fn index_controls(
         90.0,
     );
     if let Some(text) = typed {
-        let outcome =
-            parse_number(&text, symbol).and_then(|value| set_index(state, handle, symbol, value));
+        let outcome = parse_number(&text, symbol)
+            .map_err(NotApplied::from)
+            .and_then(|value| set_index(state, handle, symbol, value));
         field.show_outcome(outcome);
     }
     let current = material_of(state.index(handle));
@@ -183,11 +207,9 @@ impl Controls {
             .theta_i
             .show(ui, &t!("controls-incidence"), current, 90.0)
         {
-            let outcome = parse_number(&text, "θi").and_then(|degrees| {
-                state
-                    .set_incidence_degrees(degrees)
-                    .map_err(|e| e.to_string())
-            });
+            let outcome = parse_number(&text, "θi")
+                .map_err(NotApplied::from)
+                .and_then(|degrees| Ok(state.set_incidence_degrees(degrees)?));
             self.theta_i.show_outcome(outcome);
         }
     }
@@ -238,12 +260,14 @@ impl Controls {
         ui.label(t!("controls-typed-vectors-hint"));
         if let Some(text) = self.w.show(ui, "W =", format_vector(state.w()), 170.0) {
             let outcome = parse_vector(&text, "W")
-                .and_then(|w| state.set_vectors(w, state.n()).map_err(|e| e.to_string()));
+                .map_err(NotApplied::from)
+                .and_then(|w| Ok(state.set_vectors(w, state.n())?));
             self.w.show_outcome(outcome);
         }
         if let Some(text) = self.n.show(ui, "N =", format_vector(state.n()), 170.0) {
             let outcome = parse_vector(&text, "N")
-                .and_then(|n| state.set_vectors(state.w(), n).map_err(|e| e.to_string()));
+                .map_err(NotApplied::from)
+                .and_then(|n| Ok(state.set_vectors(state.w(), n)?));
             self.n.show_outcome(outcome);
         }
         ui.separator();
@@ -294,7 +318,7 @@ impl Controls {
         if let Some(path) = file_dialog::answer_replace(ui, replacing, &mut self.export_status) {
             self.write_image(&path, state, overlay);
         }
-        status(ui, self.export_status.as_ref());
+        status::show(ui, self.export_status.as_ref(), Look::Plain);
     }
 
     /// Exports to `path` at once when it is new, after a question when it holds an image of
@@ -303,7 +327,7 @@ impl Controls {
         match file_dialog::picture_target(&path) {
             Ok(Target::New) => self.write_image(&path, state, overlay),
             Ok(Target::Replaces) => self.export_replace = Some(path),
-            Err(e) => self.export_status = Some(Err(e)),
+            Err(e) => self.export_status = Some(Status::Refused(e.to_string())),
         }
     }
 
@@ -312,18 +336,18 @@ impl Controls {
             pan_zoom: PanZoom::default(),
             ..overlay.clone()
         };
-        self.export_status = Some(
-            refraction_render::write(
-                refraction_render::Picture::Interface {
-                    state,
-                    overlay: &overlay,
-                },
-                self.export_size,
-                path,
-            )
-            .map_err(|e| e.to_string())
-            .map(|()| t!("controls-exported", path = path.display().to_string())),
+        let written = refraction_render::write(
+            refraction_render::Picture::Interface {
+                state,
+                overlay: &overlay,
+            },
+            self.export_size,
+            path,
         );
+        self.export_status = Some(match written {
+            Ok(()) => Status::Done(t!("controls-exported", path = path.display().to_string())),
+            Err(e) => Status::Refused(e.to_string()),
+        });
     }
 }
 

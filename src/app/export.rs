@@ -11,8 +11,8 @@ use std::sync::Arc;
 use egui::{ComboBox, DragValue, ProgressBar, TextEdit, Ui};
 
 use super::background::{self, Job as Background};
-use super::file_dialog::{self, Kind, Target};
-use super::typed::status;
+use super::file_dialog::{self, Kind, Target, WriteRefusal};
+use super::status::{self, Look, Status};
 use refraction_diagram::Overlay;
 use refraction_diagram::animation::Animation;
 use refraction_diagram::numbers::number;
@@ -21,7 +21,7 @@ use refraction_files::check_writable;
 use refraction_i18n::t;
 use refraction_model::ExplorerState;
 use refraction_render::animation::{AnimationSpec, FPS_LIMITS, FRAME_LIMITS, export_gif};
-use refraction_render::format::ImageFormat;
+use refraction_render::format::{ImageFormat, UnsupportedFormat};
 use refraction_render::{RenderError, SIZE_LIMITS};
 use refraction_scene::Scene;
 
@@ -53,7 +53,7 @@ pub(super) struct AnimationExport {
     size: (u32, u32),
     path: String,
     running: Option<Job>,
-    status: Option<Result<String, String>>,
+    status: Option<Status>,
     /// A GIF the user is asked about replacing.
     replace: Option<PathBuf>,
 }
@@ -80,20 +80,41 @@ fn not_exported(reason: &impl core::fmt::Display) -> String {
 }
 
 /// What an export that ended says: the file written, or why nothing was.
-fn outcome(result: Result<(), RenderError>, path: &Path) -> Result<String, String> {
+pub(super) fn outcome(result: Result<(), RenderError>, path: &Path) -> Status {
     match result {
-        Ok(()) => Ok(t!("files-wrote", path = path.display().to_string())),
-        Err(RenderError::Cancelled) => Err(t!("files-export-cancelled")),
-        Err(e) => Err(not_exported(&e)),
+        Ok(()) => Status::Done(t!("files-wrote", path = path.display().to_string())),
+        Err(RenderError::Cancelled) => Status::Refused(t!("files-export-cancelled")),
+        Err(e) => Status::Refused(not_exported(&e)),
     }
 }
 
+/// Why an animation export does not start: what was asked for, or where, is refused. Worded
+/// when shown, in the window's language.
+#[derive(Debug, thiserror::Error)]
+enum NotStarted {
+    /// The frames, rate or size are outside their limits.
+    #[error("{}", not_exported(.0))]
+    Spec(RenderError),
+    /// The name is not a GIF's.
+    #[error("{}", t!("files-gif-needed", path = .0.display().to_string()))]
+    NotAGif(PathBuf),
+    /// The name's extension names no format.
+    #[error("{}", not_exported(.0))]
+    Format(UnsupportedFormat),
+    /// No file can be written there.
+    #[error("{}", not_exported(.0))]
+    Unwritable(std::io::Error),
+    /// The path is a folder, or a file of another kind is there.
+    #[error(transparent)]
+    Target(#[from] WriteRefusal),
+}
+
 /// Checks `path` as the GIF to write: a `.gif` name (in any case) where a file can be written.
-fn check_gif_path(path: &Path) -> Result<(), String> {
+fn check_gif_path(path: &Path) -> Result<(), NotStarted> {
     match ImageFormat::for_path(path) {
-        Ok(ImageFormat::Gif) => check_writable(path).map_err(|e| not_exported(&e)),
-        Ok(_) => Err(t!("files-gif-needed", path = path.display().to_string())),
-        Err(e) => Err(not_exported(&e)),
+        Ok(ImageFormat::Gif) => check_writable(path).map_err(NotStarted::Unwritable),
+        Ok(_) => Err(NotStarted::NotAGif(path.to_path_buf())),
+        Err(e) => Err(NotStarted::Format(e)),
     }
 }
 
@@ -120,13 +141,13 @@ impl AnimationExport {
         let checked = self
             .spec()
             .check()
-            .map_err(|e| not_exported(&e))
+            .map_err(NotStarted::Spec)
             .and_then(|()| check_gif_path(&path))
-            .and_then(|()| file_dialog::target(&path, Kind::Gif));
+            .and_then(|()| Ok(file_dialog::target(&path, Kind::Gif)?));
         match checked {
             Ok(Target::New) => self.begin(path, state, overlay, ctx),
             Ok(Target::Replaces) => self.replace = Some(path),
-            Err(why) => self.status = Some(Err(why)),
+            Err(why) => self.status = Some(Status::Refused(why.to_string())),
         }
     }
 
@@ -190,7 +211,7 @@ impl AnimationExport {
         let job = self.running.take()?;
         self.status = Some(match job.handle.join() {
             Ok(result) => outcome(result, &job.path),
-            Err(_) => Err(t!("files-export-crashed")),
+            Err(_) => Status::Refused(t!("files-export-crashed")),
         });
         None
     }
@@ -248,7 +269,7 @@ impl AnimationExport {
         if let Some(path) = file_dialog::answer_replace(ui, &mut self.replace, &mut self.status) {
             self.begin(path, state, overlay, ui.ctx());
         }
-        status(ui, self.status.as_ref());
+        status::show(ui, self.status.as_ref(), Look::Plain);
     }
 
     /// Frames, rate and size, within their limits.
@@ -276,15 +297,9 @@ impl AnimationExport {
 }
 
 /// Writes `scene`, traced, at `path` as PNG or SVG by its extension, at `size`; what happened,
-/// in words.
-///
-/// # Errors
-/// The message of a bad path, size or extension, or of a failed write.
-pub(super) fn scene_picture(
-    scene: &Scene,
-    size: (u32, u32),
-    path: &Path,
-) -> Result<String, String> {
+/// in words: the file written, or the message of a bad path, size or extension, or of a failed
+/// write.
+pub(super) fn scene_picture(scene: &Scene, size: (u32, u32), path: &Path) -> Status {
     outcome(
         refraction_render::write(refraction_render::Picture::Scene(scene), size, path),
         path,

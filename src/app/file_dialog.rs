@@ -23,6 +23,8 @@ use std::path::{Path, PathBuf};
 use egui::{Id, Modal, RichText, ScrollArea, TextEdit, Ui};
 use refraction_i18n::t;
 
+use super::status::Status;
+
 /// What a file holds, as far as replacing it is concerned.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum Kind {
@@ -120,25 +122,70 @@ pub(super) enum Target {
     Replaces,
 }
 
+/// Why a file may not be written where it was asked: the path, the kind it was to hold and
+/// what is there, worded when shown, in the window's language.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub(super) enum WriteRefusal {
+    /// The name does not end in the kind's extension.
+    #[error(
+        "{}",
+        t!(
+            "files-wrong-extension",
+            path = path.display().to_string(),
+            kind = kind.id(),
+            extension = kind.extension()
+        )
+    )]
+    WrongExtension {
+        /// The path asked for.
+        path: PathBuf,
+        /// The kind to write.
+        kind: Kind,
+    },
+    /// The path is a folder.
+    #[error("{}", t!("files-is-a-folder", path = path.display().to_string()))]
+    IsAFolder {
+        /// The folder.
+        path: PathBuf,
+    },
+    /// A file of another kind is there.
+    #[error(
+        "{}",
+        t!(
+            "files-holds-another-kind",
+            path = path.display().to_string(),
+            found = found.map_or("other", Kind::id),
+            kind = kind.id()
+        )
+    )]
+    AnotherKind {
+        /// The file.
+        path: PathBuf,
+        /// What it holds (`None`: none of the kinds).
+        found: Option<Kind>,
+        /// The kind to write.
+        kind: Kind,
+    },
+}
+
 /// Whether `kind` may be written at `path`: its name must say that kind and a file already
 /// there must hold that kind (or nothing).
 ///
 /// # Errors
 /// The name says another kind (or none), the path is a folder, or the file there holds
 /// something else; the message names the path and what it holds.
-pub(super) fn target(path: &Path, kind: Kind) -> Result<Target, String> {
-    let shown = path.display().to_string();
+pub(super) fn target(path: &Path, kind: Kind) -> Result<Target, WriteRefusal> {
     // A deck and a scene share `.toml`: the name says the extension, the contents the kind.
     if Kind::of_name(path).map(Kind::extension) != Some(kind.extension()) {
-        return Err(t!(
-            "files-wrong-extension",
-            path = &shown,
-            kind = kind.id(),
-            extension = kind.extension()
-        ));
+        return Err(WriteRefusal::WrongExtension {
+            path: path.to_path_buf(),
+            kind,
+        });
     }
     if path.is_dir() {
-        return Err(t!("files-is-a-folder", path = &shown));
+        return Err(WriteRefusal::IsAFolder {
+            path: path.to_path_buf(),
+        });
     }
     // The first bytes tell the kind; a file that cannot be read is left for the writer to report.
     let Some(bytes) = first_bytes(path) else {
@@ -147,12 +194,11 @@ pub(super) fn target(path: &Path, kind: Kind) -> Result<Target, String> {
     match Kind::of_contents(&bytes) {
         _ if bytes.is_empty() => Ok(Target::Replaces),
         Some(found) if found == kind => Ok(Target::Replaces),
-        found => Err(t!(
-            "files-holds-another-kind",
-            path = &shown,
-            found = found.map_or("other", Kind::id),
-            kind = kind.id()
-        )),
+        found => Err(WriteRefusal::AnotherKind {
+            path: path.to_path_buf(),
+            found,
+            kind,
+        }),
     }
 }
 
@@ -181,7 +227,7 @@ fn utf8_prefix(bytes: &[u8]) -> Option<&str> {
 ///
 /// # Errors
 /// As [`target`].
-pub(super) fn picture_target(path: &Path) -> Result<Target, String> {
+pub(super) fn picture_target(path: &Path) -> Result<Target, WriteRefusal> {
     let kind = Kind::of_name(path).filter(|kind| matches!(kind, Kind::Png | Kind::Svg));
     target(path, kind.unwrap_or(Kind::Png))
 }
@@ -238,7 +284,7 @@ fn confirm_replace(ui: &Ui, pending: &Path) -> Option<bool> {
 pub(super) fn answer_replace(
     ui: &Ui,
     pending: &mut Option<PathBuf>,
-    status: &mut Option<Result<String, String>>,
+    status: &mut Option<Status>,
 ) -> Option<PathBuf> {
     let replace = confirm_replace(ui, pending.as_deref()?)?;
     let path = pending.take()?;
@@ -246,7 +292,7 @@ pub(super) fn answer_replace(
         return Some(path);
     }
     let shown = path.display().to_string();
-    *status = Some(Ok(t!("files-left-as-it-was", path = shown)));
+    *status = Some(Status::Done(t!("files-left-as-it-was", path = shown)));
     None
 }
 
@@ -527,9 +573,9 @@ mod tests {
         assert_eq!(target(&state, Kind::State), Ok(Target::Replaces));
         assert_eq!(target(&png, Kind::Png), Ok(Target::Replaces));
         assert_eq!(target(&dir.join("new.json"), Kind::State), Ok(Target::New));
-        let refused = target(&png, Kind::State).unwrap_err();
+        let refused = target(&png, Kind::State).unwrap_err().to_string();
         assert!(refused.contains("ending in .json"), "{refused}");
-        let refused = target(&disguised, Kind::State).unwrap_err();
+        let refused = target(&disguised, Kind::State).unwrap_err().to_string();
         assert!(refused.contains("holds a PNG image"), "{refused}");
         let refused = target(&dir.join("state.png"), Kind::Png);
         assert_eq!(refused, Ok(Target::New));
@@ -571,7 +617,7 @@ mod tests {
         let dir = scratch("scenes");
         let state = dir.join("lesson.toml");
         std::fs::write(&state, b"{\"w\":[0,-1,0]}").unwrap();
-        let refused = target(&state, Kind::Scene).unwrap_err();
+        let refused = target(&state, Kind::Scene).unwrap_err().to_string();
         assert!(
             refused.contains("holds a saved state (JSON), not a scene (TOML)"),
             "{refused}"
@@ -579,7 +625,7 @@ mod tests {
         let scene_file = dir.join("slab.toml");
         std::fs::write(&scene_file, scene).unwrap();
         assert_eq!(target(&scene_file, Kind::Scene), Ok(Target::Replaces));
-        let refused = target(&scene_file, Kind::Deck).unwrap_err();
+        let refused = target(&scene_file, Kind::Deck).unwrap_err().to_string();
         assert!(
             refused.contains("holds a scene (TOML), not a lesson deck (TOML)"),
             "{refused}"
@@ -594,6 +640,7 @@ mod tests {
         assert!(
             target(&scene_file, Kind::Gif)
                 .unwrap_err()
+                .to_string()
                 .contains("ending in .gif")
         );
         // A picture is a PNG or an SVG: any other name is refused as not being a .png.
@@ -601,6 +648,7 @@ mod tests {
         assert!(
             picture_target(&scene_file)
                 .unwrap_err()
+                .to_string()
                 .contains("ending in .png")
         );
         // No name, or a folder: the next free number there.
@@ -626,8 +674,10 @@ mod tests {
         let disguised = dir.join("disguised.json");
         std::fs::write(&disguised, b"\x89PNG\r\n\x1a\n").unwrap();
         refraction_i18n::set_locale(refraction_i18n::Locale::De);
-        let refused = target(&disguised, Kind::State).unwrap_err();
-        let named = target(&dir.join("picture.svg"), Kind::Png).unwrap_err();
+        let refused = target(&disguised, Kind::State).unwrap_err().to_string();
+        let named = target(&dir.join("picture.svg"), Kind::Png)
+            .unwrap_err()
+            .to_string();
         refraction_i18n::set_locale(refraction_i18n::Locale::En);
         assert!(
             refused.ends_with("enthält ein PNG-Bild, keinen gespeicherten Zustand (JSON): Die Datei bleibt unverändert; bitte einen anderen Namen wählen"),

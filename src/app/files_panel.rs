@@ -10,7 +10,7 @@ use refraction_i18n::t;
 use super::file_dialog::{
     FileDialog, Kind, Purpose, Target, answer_replace, chosen_file, first_bytes, target,
 };
-use super::typed::status;
+use super::status::{self, Look, Status};
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 use crate::app::link::LinkRow;
 use refraction_model::ExplorerState;
@@ -60,7 +60,7 @@ fn open_failed(error: &LoadError) -> String {
 pub(super) struct FilesPanel {
     path: String,
     pasted: String,
-    status: Option<Result<String, String>>,
+    status: Option<Status>,
     copied: Option<String>,
     /// The open or save dialog, while it is up.
     dialog: Option<FileDialog>,
@@ -106,17 +106,16 @@ impl FilesPanel {
         match target(&path, Kind::State) {
             Ok(Target::New) => self.write(state, &path),
             Ok(Target::Replaces) => self.replace = Some(path),
-            Err(e) => self.status = Some(Err(e)),
+            Err(e) => self.status = Some(Status::Refused(e.to_string())),
         }
     }
 
     fn write(&mut self, state: &ExplorerState, path: &std::path::Path) {
         let shown = path.display().to_string();
-        self.status = Some(
-            state_file::save(state, path)
-                .map(|()| t!("files-saved", path = &shown))
-                .map_err(|reason| t!("files-not-saved", reason = reason.to_string())),
-        );
+        self.status = Some(match state_file::save(state, path) {
+            Ok(()) => Status::Done(t!("files-saved", path = &shown)),
+            Err(reason) => Status::Refused(t!("files-not-saved", reason = reason.to_string())),
+        });
     }
 
     /// The dialog and the replace question, while either is up.
@@ -137,11 +136,13 @@ impl FilesPanel {
     /// state as it was and says why.
     pub(super) fn open(&mut self, state: &mut ExplorerState) {
         let path = PathBuf::from(self.path.trim());
-        let outcome = state_file::open(&path).map(|opened| {
-            *state = opened;
-            t!("files-opened", path = path.display().to_string())
+        self.status = Some(match state_file::open(&path) {
+            Ok(opened) => {
+                *state = opened;
+                Status::Done(t!("files-opened", path = path.display().to_string()))
+            }
+            Err(e) => self.open_as_what_it_is(&path, &e),
         });
-        self.status = Some(outcome.or_else(|e| self.open_as_what_it_is(&path, &e)));
         // The share string shown was the old state's.
         self.copied = None;
     }
@@ -149,29 +150,33 @@ impl FilesPanel {
     /// A file that is not a state but a scene or a lesson deck (a TOML file picked by
     /// mistake) is opened as one, and the window shows it; anything else keeps the state's
     /// error.
-    fn open_as_what_it_is(&mut self, path: &Path, error: &LoadError) -> Result<String, String> {
+    fn open_as_what_it_is(&mut self, path: &Path, error: &LoadError) -> Status {
         let start = first_bytes(path);
         let shown = path.display().to_string();
         let not_a_state = || open_failed(error);
         match start.as_deref().and_then(Kind::of_contents) {
-            Some(Kind::Deck) => {
-                let deck = refraction_deck::Deck::load(&shown).map_err(|e| e.to_string())?;
-                self.opened = Some(Opened::Deck(Box::new(deck)));
-                Ok(t!("files-opened-as-deck", path = shown))
-            }
-            Some(Kind::Scene) => {
-                let scene = refraction_scene::Scene::load(&shown).map_err(|e| {
+            Some(Kind::Deck) => match refraction_deck::Deck::load(&shown) {
+                Ok(deck) => {
+                    self.opened = Some(Opened::Deck(Box::new(deck)));
+                    Status::Done(t!("files-opened-as-deck", path = shown))
+                }
+                Err(e) => Status::Refused(e.to_string()),
+            },
+            Some(Kind::Scene) => match refraction_scene::Scene::load(&shown) {
+                Ok(scene) => {
+                    self.opened = Some(Opened::Scene(Box::new(scene)));
+                    Status::Done(t!("files-opened-as-scene", path = shown))
+                }
+                Err(e) => {
                     let (state, scene) = (not_a_state(), e.to_string());
-                    t!(
+                    Status::Refused(t!(
                         "files-neither-state-nor-scene",
                         state = state,
                         scene = scene
-                    )
-                })?;
-                self.opened = Some(Opened::Scene(Box::new(scene)));
-                Ok(t!("files-opened-as-scene", path = shown))
-            }
-            _ => Err(not_a_state()),
+                    ))
+                }
+            },
+            _ => Status::Refused(not_a_state()),
         }
     }
 
@@ -182,16 +187,15 @@ impl FilesPanel {
 
     /// Applies the pasted share string, or says why it cannot be.
     pub(super) fn apply_pasted(&mut self, state: &mut ExplorerState) {
-        self.status = Some(
-            state_file::parse(&self.pasted)
-                .map(|pasted| {
-                    *state = pasted;
-                    // The share string shown was the old state's.
-                    self.copied = None;
-                    t!("files-share-applied")
-                })
-                .map_err(|reason| t!("files-share-refused", reason = reason.to_string())),
-        );
+        self.status = Some(match state_file::parse(&self.pasted) {
+            Ok(pasted) => {
+                *state = pasted;
+                // The share string shown was the old state's.
+                self.copied = None;
+                Status::Done(t!("files-share-applied"))
+            }
+            Err(reason) => Status::Refused(t!("files-share-refused", reason = reason.to_string())),
+        });
     }
 
     /// Shows the panel: file, share string, copy buttons, and the last outcome.
@@ -237,7 +241,7 @@ impl FilesPanel {
             {
                 ui.ctx().copy_text(share.clone());
                 self.copied = Some(share);
-                self.status = Some(Ok(t!("files-share-copied")));
+                self.status = Some(Status::Done(t!("files-share-copied")));
             }
             let name = ui.label(t!("files-paste-share"));
             ui.add(TextEdit::singleline(&mut self.pasted).desired_width(260.0))
@@ -256,14 +260,14 @@ impl FilesPanel {
                         Ok(text) => {
                             ui.ctx().copy_text(text.clone());
                             self.copied = Some(text);
-                            self.status = Some(Ok(t!("files-copied", what = label)));
+                            self.status = Some(Status::Done(t!("files-copied", what = label)));
                         }
-                        Err(e) => self.status = Some(Err(e.to_string())),
+                        Err(e) => self.status = Some(Status::Refused(e.to_string())),
                     }
                 }
             }
         });
-        status(ui, self.status.as_ref());
+        status::show(ui, self.status.as_ref(), Look::Plain);
         if let Some(text) = &self.copied {
             ui.label(RichText::new(text).monospace().small());
         }

@@ -14,13 +14,13 @@ use egui::{Id, Key, Modal, Panel, RichText, TextEdit, Ui};
 use refraction_deck::builtin;
 use refraction_diagram::qr::Code;
 use refraction_i18n::t;
+use refraction_render::RenderError;
 use refraction_render::format::ImageFormat;
-use refraction_tools::link::{self, Link};
+use refraction_tools::link::{self, Link, LinkError};
 
 use super::deck::{Command, handout};
-use super::file_dialog;
-use super::typed::status;
-use super::{Explorer, View};
+use super::status::{self, Look, Status};
+use super::{Explorer, View, export, file_dialog};
 
 /// Where eframe keeps the web build's address between runs.
 pub(super) const WEB_BASE_KEY: &str = "explorer_web_base";
@@ -40,7 +40,7 @@ pub(super) struct LinkRow {
     /// Set when *QR code* is pressed, for the window to show it.
     pub qr_asked: bool,
     /// What the last *Copy link* said.
-    said: Option<Result<String, String>>,
+    said: Option<Status>,
 }
 
 impl LinkRow {
@@ -60,7 +60,7 @@ impl LinkRow {
                 && let Some(url) = &self.url
             {
                 ui.ctx().copy_text(url.clone());
-                self.said = Some(Ok(t!("link-copied")));
+                self.said = Some(Status::Done(t!("link-copied")));
             }
             if ui
                 .button(t!("link-qr"))
@@ -78,7 +78,7 @@ impl LinkRow {
                 ui.label(RichText::new(t!("link-no-web-base")).weak());
             }
         }
-        status(ui, self.said.as_ref());
+        status::show(ui, self.said.as_ref(), Look::Plain);
     }
 }
 
@@ -91,7 +91,7 @@ pub(super) struct Sharing {
     /// A message for the strip above the window, until it is closed.
     pub notice: Option<String>,
     /// What the QR code's *Save* buttons said.
-    saved: Option<Result<String, String>>,
+    saved: Option<Status>,
 }
 
 /// The web build's address `base` as a link's start, or `None` when it is empty.
@@ -106,22 +106,61 @@ fn too_long(error: &refraction_diagram::qr::TooLong) -> String {
 
 /// Writes the QR code of `url` as a picture of `format` under the next free
 /// `refraction-qr-NNN` name; what happened, in words.
-fn save_qr(url: &str, format: ImageFormat) -> Result<String, String> {
+fn save_qr(url: &str, format: ImageFormat) -> Status {
     let extension = format.extension();
     let path = file_dialog::numbered(Path::new(""), "refraction-qr", extension);
-    let code = Code::new(url).map_err(|e| too_long(&e))?;
+    let code = match Code::new(url) {
+        Ok(code) => code,
+        Err(e) => return Status::Refused(too_long(&e)),
+    };
     let side = QR_PICTURE_SIDE;
     let draw = |size: glam::Vec2, _: &_| code.primitives(glam::Vec2::ZERO, size.x);
-    let bytes = refraction_render::still(
+    let written = refraction_render::still(
         refraction_render::Picture::Drawn(&draw),
         (format, refraction_render::svg::Labels::default()),
         (side, side),
         &path,
     )
-    .map_err(|e| t!("files-not-exported", reason = e.to_string()))?;
-    refraction_files::write_atomically(&path, &bytes)
-        .map(|()| t!("files-wrote", path = path.display().to_string()))
-        .map_err(|e| t!("files-not-exported", reason = e.to_string()))
+    .and_then(|bytes| {
+        refraction_files::write_atomically(&path, &bytes).map_err(RenderError::Write)
+    });
+    export::outcome(written, &path)
+}
+
+/// Why a link was not opened: the link itself, or the lesson or step it names. Worded when
+/// shown, in the window's language.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum LinkRefusal {
+    /// The link is cut short, damaged or from a newer version.
+    #[error("{}", .0.message())]
+    Link(#[from] LinkError),
+    /// No built-in lesson has this name.
+    #[error(
+        "{}",
+        t!("link-no-lesson", name = name.as_str(), names = builtin::names().join(", "))
+    )]
+    NoLesson {
+        /// The name in the link.
+        name: String,
+    },
+    /// The lesson has fewer steps.
+    #[error(
+        "{}",
+        t!(
+            "link-no-step",
+            name = name.as_str(),
+            step = step.to_string(),
+            count = count.to_string()
+        )
+    )]
+    NoStep {
+        /// The lesson's name.
+        name: String,
+        /// The step in the link, from 1.
+        step: usize,
+        /// How many steps the lesson has.
+        count: usize,
+    },
 }
 
 impl Explorer {
@@ -159,30 +198,21 @@ impl Explorer {
     ///
     /// # Errors
     /// A fragment cut short, damaged or from a newer version, an unknown deck or a step past
-    /// its end: the message, in the current language; nothing is changed.
-    pub fn open_link(&mut self, fragment: &str) -> Result<(), String> {
-        match link::parse(fragment).map_err(|e| e.message())? {
+    /// its end (worded, when shown, in the current language); nothing is changed.
+    pub fn open_link(&mut self, fragment: &str) -> Result<(), LinkRefusal> {
+        match link::parse(fragment)? {
             None => {}
             Some(Link::State(state)) => {
                 self.state = *state;
                 self.view = View::Interface;
             }
             Some(Link::Lesson { name, step }) => {
-                let deck = builtin::deck(&name).ok_or_else(|| {
-                    t!(
-                        "link-no-lesson",
-                        name = name.as_str(),
-                        names = builtin::names().join(", ")
-                    )
-                })?;
+                let Some(deck) = builtin::deck(&name) else {
+                    return Err(LinkRefusal::NoLesson { name });
+                };
                 let count = deck.steps.len();
                 if step > count {
-                    return Err(t!(
-                        "link-no-step",
-                        name = name.as_str(),
-                        step = step.to_string(),
-                        count = count.to_string()
-                    ));
+                    return Err(LinkRefusal::NoStep { name, step, count });
                 }
                 self.open_deck(deck);
                 self.deck_command(Command::GoTo(step - 1));
@@ -262,7 +292,7 @@ impl Explorer {
                 }
                 ui.label(RichText::new(t!("link-qr-close")).weak());
             });
-            status(ui, self.sharing.saved.as_ref());
+            status::show(ui, self.sharing.saved.as_ref(), Look::Plain);
         });
         if modal.should_close() {
             self.sharing.qr_open = false;

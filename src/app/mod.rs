@@ -6,7 +6,8 @@
 //! The classroom tools each live in their own module: `history` (undo/redo), `presentation`,
 //! and under the diagram (`tools`) check my T, the walk-through and save/open/share. The
 //! modules are private: the commands, the web build and the tests reach the window through
-//! [`Explorer`], [`Launch`], [`View`], [`ScenesView`], [`handout`] and `browser::start`.
+//! [`Explorer`], [`Launch`], [`View`], [`ScenesView`], [`handout`], [`Status`] and
+//! `browser::start`.
 
 mod accuracy;
 mod background;
@@ -31,6 +32,7 @@ mod readouts;
 mod retrace;
 mod scene_files;
 mod scenes;
+mod status;
 mod tools;
 mod typed;
 mod walkthrough;
@@ -56,6 +58,7 @@ use refraction_model::ExplorerState;
 use refraction_scene::Scene;
 use refraction_tools::state_file;
 pub use scenes::ScenesView;
+pub use status::Status;
 use tools::Tools;
 
 /// The window title: the program's name, the same in every language (so that a window

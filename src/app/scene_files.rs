@@ -4,12 +4,12 @@
 
 use std::path::{Path, PathBuf};
 
-use egui::{Label, RichText, Role, TextEdit, Ui, WidgetInfo};
+use egui::{Role, TextEdit, Ui, WidgetInfo};
 use refraction_i18n::t;
 
 use super::export;
 use super::file_dialog::{self, FileDialog, Kind, Purpose, Target, picture_target};
-use super::paint::verdict_colour;
+use super::status::{self, Look, Status};
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 use refraction_files::write_atomically;
 use refraction_scene::Scene;
@@ -53,7 +53,7 @@ pub(super) struct SceneFiles {
     /// The picture file to export to (PNG or SVG by its extension).
     picture_path: String,
     /// What the last save, open or export said.
-    status: Option<Result<String, String>>,
+    status: Option<Status>,
     /// The file dialog, while it is up, and what its file is for.
     dialog: Option<(Use, FileDialog)>,
     /// A file the user is asked about replacing (its name says whether with the scene or
@@ -116,19 +116,10 @@ impl SceneFiles {
             if compact {
                 menu.response.on_hover_text(name);
             }
-            self.last_outcome(ui);
+            // What the last save, open or export said, cut to the row's end.
+            status::show(ui, self.status.as_ref(), Look::Cut);
         });
         opened.or_else(|| self.dialogs(ui, scene))
-    }
-
-    /// What the last save, open or export said, cut to the row's end (all of it on hover).
-    fn last_outcome(&self, ui: &mut Ui) {
-        let text = match &self.status {
-            Some(Ok(done)) => RichText::new(done),
-            Some(Err(why)) => RichText::new(format!("⚠ {why}")).color(verdict_colour(ui, false)),
-            None => return,
-        };
-        ui.add(Label::new(text).truncate());
     }
 
     /// Puts up the file dialog for `usage`, starting from the file in its field.
@@ -147,11 +138,11 @@ impl SceneFiles {
         let path = self.path.trim().to_owned();
         match Scene::load(&path) {
             Ok(scene) => {
-                self.status = Some(Ok(t!("scenes-opened", path = path)));
+                self.status = Some(Status::Done(t!("scenes-opened", path = path)));
                 Some(scene)
             }
             Err(e) => {
-                self.status = Some(Err(e.to_string()));
+                self.status = Some(Status::Refused(e.to_string()));
                 None
             }
         }
@@ -169,7 +160,7 @@ impl SceneFiles {
         match file_dialog::target(&path, Kind::Scene) {
             Ok(Target::New) => self.write(scene, &path),
             Ok(Target::Replaces) => self.replace = Some(path),
-            Err(e) => self.status = Some(Err(e)),
+            Err(e) => self.status = Some(Status::Refused(e.to_string())),
         }
     }
 
@@ -205,7 +196,7 @@ impl SceneFiles {
         match picture_target(&path) {
             Ok(Target::New) => self.write(scene, &path),
             Ok(Target::Replaces) => self.replace = Some(path),
-            Err(e) => self.status = Some(Err(e)),
+            Err(e) => self.status = Some(Status::Refused(e.to_string())),
         }
     }
 
@@ -217,11 +208,14 @@ impl SceneFiles {
             Some(Kind::Png | Kind::Svg) => {
                 export::scene_picture(scene, refraction_render::DEFAULT_SIZE, path)
             }
-            _ => scene
+            _ => match scene
                 .to_toml()
-                .map_err(|e| e.to_string())
-                .and_then(|text| write_atomically(path, text.as_bytes()).map_err(|e| e.to_string()))
-                .map(|()| t!("scenes-saved", path = shown)),
+                .map(|text| write_atomically(path, text.as_bytes()))
+            {
+                Ok(Ok(())) => Status::Done(t!("scenes-saved", path = shown)),
+                Ok(Err(e)) => Status::Refused(e.to_string()),
+                Err(e) => Status::Refused(e.to_string()),
+            },
         });
     }
 

@@ -2,6 +2,8 @@
 //! what was typed, if it differs, on Enter (or when focus leaves), and shows an inline error instead when the
 //! text is refused, keeping the last good state.
 
+use core::fmt;
+
 use egui::{RichText, TextEdit, Ui};
 use glam::DVec3;
 
@@ -61,27 +63,43 @@ impl TypedField {
         submitted
     }
 
-    /// Records the outcome of applying the text: an error is shown until the next success.
-    pub(super) fn show_outcome(&mut self, outcome: Result<(), String>) {
-        self.error = outcome.err();
+    /// Records the outcome of applying the text: an error is shown, in words, until the next
+    /// success.
+    pub(super) fn show_outcome(&mut self, outcome: Result<(), impl fmt::Display>) {
+        self.error = outcome.err().map(|error| error.to_string());
     }
 }
 
-/// Shows why something typed or asked for was refused, in the alarm colour.
+/// Why something typed or asked for was refused, as it is shown: after ⚠, in the alarm colour.
+pub(super) fn warning(ui: &Ui, message: &str) -> RichText {
+    RichText::new(format!("⚠ {message}")).color(verdict_colour(ui, false))
+}
+
+/// Shows why something typed or asked for was refused ([`warning`]).
 pub(super) fn error_label(ui: &mut Ui, message: &str) {
-    let colour = verdict_colour(ui, false);
-    ui.label(RichText::new(format!("⚠ {message}")).color(colour));
+    ui.label(warning(ui, message));
 }
 
-/// Shows the outcome of the last action (a file written, a string copied), if any.
-pub(super) fn status(ui: &mut Ui, outcome: Option<&Result<String, String>>) {
-    match outcome {
-        Some(Ok(message)) => {
-            ui.label(message);
-        }
-        Some(Err(message)) => error_label(ui, message),
-        None => {}
-    }
+/// Why a typed number or vector was refused: the field's name and what was typed, worded when
+/// shown, in the window's language.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub(super) enum TypedError {
+    /// A word that is not a number.
+    #[error("{}", t!("typed-not-a-number", name = name, text = text))]
+    NotANumber {
+        /// The field's name (`θi`, `W`).
+        name: String,
+        /// The word typed.
+        text: String,
+    },
+    /// A vector of other than three numbers.
+    #[error("{}", t!("typed-not-three-numbers", name = name, count = *count))]
+    NotThree {
+        /// The vector's name.
+        name: String,
+        /// How many numbers were typed.
+        count: usize,
+    },
 }
 
 /// Parses a number as typed, with a decimal point or a decimal comma whatever the language
@@ -89,9 +107,11 @@ pub(super) fn status(ui: &mut Ui, outcome: Option<&Result<String, String>>) {
 ///
 /// # Errors
 /// The text is not a number.
-pub(super) fn parse_number(text: &str, name: &str) -> Result<f64, String> {
-    refraction_i18n::read_number(text)
-        .ok_or_else(|| t!("typed-not-a-number", name = name, text = text))
+pub(super) fn parse_number(text: &str, name: &str) -> Result<f64, TypedError> {
+    refraction_i18n::read_number(text).ok_or_else(|| TypedError::NotANumber {
+        name: name.to_owned(),
+        text: text.to_owned(),
+    })
 }
 
 /// Parses a 3D vector typed as `x, y, z` (commas and/or spaces, optional brackets), or with
@@ -100,7 +120,7 @@ pub(super) fn parse_number(text: &str, name: &str) -> Result<f64, String> {
 ///
 /// # Errors
 /// Not exactly three numbers; the message names the vector.
-pub(super) fn parse_vector(text: &str, name: &str) -> Result<DVec3, String> {
+pub(super) fn parse_vector(text: &str, name: &str) -> Result<DVec3, TypedError> {
     let inner = text.trim_matches(|c: char| "[]() ".contains(c));
     let words = |separators: &[char]| -> Vec<&str> {
         inner
@@ -121,11 +141,10 @@ pub(super) fn parse_vector(text: &str, name: &str) -> Result<DVec3, String> {
         words(&[',', ';'])
     };
     if parts.len() != 3 {
-        return Err(t!(
-            "typed-not-three-numbers",
-            name = name,
-            count = parts.len()
-        ));
+        return Err(TypedError::NotThree {
+            name: name.to_owned(),
+            count: parts.len(),
+        });
     }
     let mut v = [0.0; 3];
     for (slot, part) in v.iter_mut().zip(&parts) {
@@ -197,11 +216,11 @@ mod tests {
             DVec3::new(0.6, -0.8, 0.0)
         );
         assert_eq!(
-            parse_vector("1, 2", "N").unwrap_err(),
+            parse_vector("1, 2", "N").unwrap_err().to_string(),
             "N: expected three numbers x, y, z, got 2"
         );
         assert_eq!(
-            parse_vector("1, x, 2", "N").unwrap_err(),
+            parse_vector("1, x, 2", "N").unwrap_err().to_string(),
             "N: “x” is not a number"
         );
         assert!(parse_number("NaN", "μt").unwrap().is_nan());
@@ -221,7 +240,7 @@ mod tests {
             parse_vector("0,6, -0,8, 0", "W"),
             parse_vector(&written.1, "W"),
         );
-        let refused = parse_number("1,5x", "μt").unwrap_err();
+        let refused = parse_number("1,5x", "μt").unwrap_err().to_string();
         refraction_i18n::set_locale(refraction_i18n::Locale::En);
         assert_eq!(written.0, "-0,8");
         assert_eq!(written.1, "0,6; -0,8; 0");

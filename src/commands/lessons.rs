@@ -7,10 +7,11 @@ use std::process::ExitCode;
 
 use glam::Vec2;
 use refraction_deck::{Deck, builtin};
-use refraction_explorer::app::handout::{pdf, picture};
+use refraction_explorer::app::handout::{HandoutError, pdf, picture};
 use refraction_render::format::ImageFormat;
 use refraction_render::handout::Sheet;
-use refraction_render::{check_size, svg};
+use refraction_render::{RenderError, check_size, svg};
+use refraction_scene::LoadError;
 
 use super::output::printable;
 use super::{fail, output_error};
@@ -41,9 +42,41 @@ enum Out {
     Folder(PathBuf),
 }
 
+/// Why `render --lesson` wrote nothing: each worded once, in the commands' English (the
+/// deck's, the renderer's and the file system's own messages as they came).
+#[derive(Debug, thiserror::Error)]
+enum LessonFailure {
+    /// `--out` names neither a handout nor a folder.
+    #[error(
+        "--out {0}: with --lesson, give a handout's name ending in .pdf, or a folder ending in / \
+         for one SVG per step (step-01.svg, step-02.svg, …)"
+    )]
+    NeitherHandoutNorFolder(String),
+    /// The size is outside the limits, or a picture cannot be drawn.
+    #[error(transparent)]
+    Render(#[from] RenderError),
+    /// The deck, or a step's scene, cannot be opened.
+    #[error(transparent)]
+    Deck(#[from] LoadError),
+    /// The handout cannot be made.
+    #[error(transparent)]
+    Handout(#[from] HandoutError),
+    /// The pictures' folder cannot be made.
+    #[error("cannot make the folder {}: {source}", folder.display())]
+    Folder {
+        /// The folder.
+        folder: PathBuf,
+        /// Why.
+        source: io::Error,
+    },
+    /// A file cannot be written (its own message names it).
+    #[error(transparent)]
+    Unwritable(io::Error),
+}
+
 /// What `--out` asks for: a folder when it ends in `/` or is one, a handout when it ends in
 /// `.pdf`.
-fn out_of(out: &Path) -> Result<Out, String> {
+fn out_of(out: &Path) -> Result<Out, LessonFailure> {
     let text = out.to_string_lossy();
     if text.ends_with('/') || out.is_dir() {
         return Ok(Out::Folder(out.to_path_buf()));
@@ -52,13 +85,10 @@ fn out_of(out: &Path) -> Result<Out, String> {
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("pdf"));
     if pdf {
-        refraction_files::check_writable(out).map_err(|e| e.to_string())?;
+        refraction_files::check_writable(out).map_err(LessonFailure::Unwritable)?;
         return Ok(Out::Handout(out.to_path_buf()));
     }
-    Err(format!(
-        "--out {text}: with --lesson, give a handout's name ending in .pdf, or a folder ending \
-         in / for one SVG per step (step-01.svg, step-02.svg, …)"
-    ))
+    Err(LessonFailure::NeitherHandoutNorFolder(text.into_owned()))
 }
 
 /// The name of step `number`'s picture (`step-01.svg`).
@@ -70,7 +100,7 @@ fn step_file(number: usize) -> String {
 /// missing), at `size` pixels: every picture is drawn before any is written, then all are
 /// written or none. Pictures of later steps that a longer deck left there (ours: our SVG's
 /// first line) are removed, so that the folder holds this deck's steps only.
-fn pictures(deck: &Deck, folder: &Path, (width, height): (u32, u32)) -> Result<(), String> {
+fn pictures(deck: &Deck, folder: &Path, (width, height): (u32, u32)) -> Result<(), LessonFailure> {
     let size = Vec2::new(width as f32, height as f32);
     let texts = deck
         .steps
@@ -78,11 +108,13 @@ fn pictures(deck: &Deck, folder: &Path, (width, height): (u32, u32)) -> Result<(
         .map(|step| {
             let primitives = picture(deck, step, size, false)?;
             svg::document(width, height, svg::Labels::default(), |_, _| primitives)
-                .map_err(|e| e.to_string())
+                .map_err(LessonFailure::from)
         })
-        .collect::<Result<Vec<String>, String>>()?;
-    std::fs::create_dir_all(folder)
-        .map_err(|e| format!("cannot make the folder {}: {e}", folder.display()))?;
+        .collect::<Result<Vec<String>, LessonFailure>>()?;
+    std::fs::create_dir_all(folder).map_err(|source| LessonFailure::Folder {
+        folder: folder.to_path_buf(),
+        source,
+    })?;
     let paths: Vec<PathBuf> = (1..=texts.len())
         .map(|i| folder.join(step_file(i)))
         .collect();
@@ -91,7 +123,7 @@ fn pictures(deck: &Deck, folder: &Path, (width, height): (u32, u32)) -> Result<(
         .zip(&texts)
         .map(|(path, text)| (path.as_path(), text.as_bytes()))
         .collect();
-    refraction_files::write_all_atomically(&files).map_err(|e| e.to_string())?;
+    refraction_files::write_all_atomically(&files).map_err(LessonFailure::Unwritable)?;
     remove_stale_steps(folder, texts.len());
     Ok(())
 }
@@ -121,13 +153,13 @@ pub(crate) fn render(
     size: (u32, u32),
     (sheet, web_base): (Sheet, Option<&str>),
 ) -> ExitCode {
-    let checked = check_size(size.0, size.1).map_err(|e| e.to_string());
+    let checked = check_size(size.0, size.1).map_err(LessonFailure::from);
     let drawn = checked.and_then(|()| out_of(out)).and_then(|to| {
-        let deck = Deck::load(lesson).map_err(|e| e.to_string())?;
+        let deck = Deck::load(lesson)?;
         match to {
             Out::Handout(path) => {
                 let bytes = pdf(&deck, sheet, web_base)?;
-                refraction_files::write_atomically(&path, &bytes).map_err(|e| e.to_string())
+                refraction_files::write_atomically(&path, &bytes).map_err(LessonFailure::Unwritable)
             }
             Out::Folder(folder) => pictures(&deck, &folder, size),
         }

@@ -11,7 +11,7 @@ use egui::{Key, Role, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT as _, Queryable as _};
 use refraction_deck::{Deck, StepView};
-use refraction_explorer::app::{Explorer, View};
+use refraction_explorer::app::{Explorer, Status, View};
 use refraction_i18n::t;
 use refraction_model::ExplorerState;
 
@@ -89,8 +89,10 @@ fn a_deck_file_gone_by_the_time_the_window_opens_is_said_in_the_deck_tool() {
     let mut explorer = Explorer::new(ExplorerState::default());
     explorer.open_lesson("no-such-deck-file.toml");
     assert!(explorer.lesson().deck.is_none());
-    let said = explorer.lesson().panel.status.clone();
-    let said = said.and_then(Result::err).unwrap_or_default();
+    let said = match explorer.lesson().panel.status.clone() {
+        Some(Status::Refused(why)) => why,
+        _ => String::new(),
+    };
     assert!(said.contains("no-such-deck-file.toml"), "{said}");
     let h = harness_sized(explorer, (1280.0, 720.0));
     assert!(

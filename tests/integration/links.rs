@@ -79,7 +79,7 @@ fn a_broken_link_changes_nothing_and_says_why() {
         ("#lesson=snell&v=2", "newer version"),
         ("#zoom=2", "newer version"),
     ] {
-        let said = explorer.open_link(fragment).unwrap_err();
+        let said = explorer.open_link(fragment).unwrap_err().to_string();
         assert!(said.contains(why), "{fragment}: {said}");
         assert_eq!(explorer.state(), &leaving_glass(), "{fragment}");
         assert!(explorer.lesson().current().is_none(), "{fragment}");

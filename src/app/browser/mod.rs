@@ -58,7 +58,7 @@ impl Page {
             return;
         }
         if let Err(why) = self.explorer.open_link(&fragment) {
-            let said = t!("web-link-not-opened", reason = why);
+            let said = t!("web-link-not-opened", reason = why.to_string());
             self.explorer.sharing.notice = Some(said);
         }
         self.fragment = fragment;

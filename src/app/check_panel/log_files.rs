@@ -5,11 +5,11 @@
 
 use std::path::{Path, PathBuf};
 
-use egui::{RichText, Ui};
+use egui::Ui;
 
 use super::refusal::Refusal;
 use crate::app::file_dialog::{self, FileDialog, Purpose, Target};
-use crate::app::typed::error_label;
+use crate::app::status::{self, Look, Status};
 use refraction_i18n::t;
 use refraction_tools::call_check::{Dialect, Options};
 use refraction_tools::snippets::AnyLanguage;
@@ -71,7 +71,7 @@ pub(super) struct LogFiles {
     /// The path of `replacing` while the question is up (what [`file_dialog::answer_replace`]
     /// clears).
     replace: Option<PathBuf>,
-    status: Option<Result<String, String>>,
+    status: Option<Status>,
     /// A log opened since the last frame (dropped, or chosen), to judge now.
     fresh: bool,
 }
@@ -97,7 +97,11 @@ impl LogFiles {
             }
             Err(e) => {
                 let reason = e.to_string();
-                self.status = Some(Err(t!("logs-read-failed", path = shown, reason = reason)));
+                self.status = Some(Status::Refused(t!(
+                    "logs-read-failed",
+                    path = shown,
+                    reason = reason
+                )));
             }
         }
     }
@@ -171,7 +175,8 @@ impl LogFiles {
         {
             self.write(&path, &text);
         }
-        self.status_ui(ui);
+        // What the last open or save said.
+        status::show(ui, self.status.as_ref(), Look::SmallDone);
     }
 
     /// The extensions a test file in `language` is listed with.
@@ -180,17 +185,6 @@ impl LogFiles {
             "glsl" => &["glsl"],
             "cpp" => &["cpp"],
             _ => &["py"],
-        }
-    }
-
-    /// What the last open or save said.
-    fn status_ui(&self, ui: &mut Ui) {
-        match &self.status {
-            Some(Ok(said)) => {
-                ui.label(RichText::new(said).small());
-            }
-            Some(Err(e)) => error_label(ui, e),
-            None => {}
         }
     }
 
@@ -217,7 +211,7 @@ impl LogFiles {
         let text = match tests_file::text(language, failing, options) {
             Ok(text) => text,
             Err(e) => {
-                self.status = Some(Err(e.to_string()));
+                self.status = Some(Status::Refused(e.to_string()));
                 return;
             }
         };
@@ -227,7 +221,7 @@ impl LogFiles {
                 self.replace = Some(path.to_path_buf());
                 self.replacing = Some((path.to_path_buf(), text));
             }
-            Err(e) => self.status = Some(Err(e.to_string())),
+            Err(e) => self.status = Some(Status::Refused(e.to_string())),
         }
     }
 
@@ -235,8 +229,8 @@ impl LogFiles {
         let shown = path.display().to_string();
         self.status = Some(
             match refraction_files::write_atomically(path, text.as_bytes()) {
-                Ok(()) => Ok(t!("files-wrote", path = shown)),
-                Err(e) => Err(t!(
+                Ok(()) => Status::Done(t!("files-wrote", path = shown)),
+                Err(e) => Status::Refused(t!(
                     "logs-write-failed",
                     path = shown,
                     reason = e.to_string()

@@ -7,10 +7,25 @@ use glam::Vec2;
 use refraction_deck::{Deck, Step, StepView, builtin};
 use refraction_diagram::{Diagram, Overlay, Primitive, SceneLayout, ScenePicture};
 use refraction_i18n::t;
+use refraction_render::RenderError;
 use refraction_render::handout::{self, Page, Sheet};
+use refraction_scene::LoadError;
 use refraction_tools::link::{self, Link};
 
 use super::overlay_of;
+use crate::app::status::Status;
+
+/// Why a deck's handout could not be made: each error as it came, worded by its own
+/// `Display`.
+#[derive(Debug, thiserror::Error)]
+pub enum HandoutError {
+    /// A step's scene cannot be opened.
+    #[error(transparent)]
+    Scene(#[from] LoadError),
+    /// A page cannot be converted to PDF.
+    #[error(transparent)]
+    Pdf(#[from] RenderError),
+}
 
 /// The picture of `step` of `deck` on a canvas of `size` pixels, its answer shown unless
 /// `hidden` (and the step asks a question): the one interface with the step's effects, or its
@@ -23,7 +38,7 @@ pub fn picture(
     step: &Step,
     size: Vec2,
     hidden: bool,
-) -> Result<Vec<Primitive>, String> {
+) -> Result<Vec<Primitive>, LoadError> {
     let hidden = hidden && step.hides_answer();
     match step.view {
         StepView::One => {
@@ -34,7 +49,7 @@ pub fn picture(
             Ok(Diagram::with_overlay(&step.state, size, &overlay).primitives())
         }
         StepView::Scenes => {
-            let scene = deck.scene(step).map_err(|e| e.to_string())?;
+            let scene = deck.scene(step)?;
             let trace = scene.trace();
             let layout = SceneLayout::new(trace.bounds, size);
             let shown = if hidden {
@@ -85,10 +100,10 @@ fn page<'a>(
     deck: &'a Deck,
     index: usize,
     (sheet, web_base): (Sheet, Option<&str>),
-) -> Result<Page<'a>, String> {
+) -> Result<Page<'a>, LoadError> {
     let step = &deck.steps[index];
     if step.view == StepView::Scenes {
-        deck.scene(step).map_err(|e| e.to_string())?;
+        deck.scene(step)?;
     }
     let number = t!(
         "deck-step-number",
@@ -122,11 +137,11 @@ fn page<'a>(
 ///
 /// # Errors
 /// A step's scene cannot be opened, or a page cannot be converted.
-pub fn pdf(deck: &Deck, sheet: Sheet, web_base: Option<&str>) -> Result<Vec<u8>, String> {
+pub fn pdf(deck: &Deck, sheet: Sheet, web_base: Option<&str>) -> Result<Vec<u8>, HandoutError> {
     let pages = (0..deck.steps.len())
         .map(|i| page(deck, i, (sheet, web_base)))
         .collect::<Result<Vec<_>, _>>()?;
-    handout::pdf(&deck.title, &pages).map_err(|e| e.to_string())
+    Ok(handout::pdf(&deck.title, &pages)?)
 }
 
 impl crate::app::Explorer {
@@ -139,14 +154,15 @@ impl crate::app::Explorer {
         };
         let base = Some(self.web_base()).filter(|b| !b.is_empty());
         let path = crate::app::file_dialog::numbered(Path::new(""), "handout", "pdf");
-        let written = pdf(deck, Sheet::Teacher, base).and_then(|bytes| {
-            refraction_files::write_atomically(&path, &bytes).map_err(|e| e.to_string())
+        let written = pdf(deck, Sheet::Teacher, base)
+            .map_err(|e| e.to_string())
+            .and_then(|bytes| {
+                refraction_files::write_atomically(&path, &bytes).map_err(|e| e.to_string())
+            });
+        self.lesson.panel.status = Some(match written {
+            Ok(()) => Status::Done(t!("files-wrote", path = path.display().to_string())),
+            Err(reason) => Status::Refused(t!("files-not-exported", reason = reason)),
         });
-        self.lesson.panel.status = Some(
-            written
-                .map(|()| t!("files-wrote", path = path.display().to_string()))
-                .map_err(|reason| t!("files-not-exported", reason = reason)),
-        );
     }
 }
 

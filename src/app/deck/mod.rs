@@ -35,6 +35,7 @@ use refraction_scene::Scene;
 
 pub(super) use notes::Notes;
 
+use super::status::Status;
 use super::tools::Tool;
 use super::{Explorer, View};
 
@@ -211,7 +212,7 @@ impl Explorer {
         match Deck::load(name) {
             Ok(deck) => self.open_deck(deck),
             Err(e) => {
-                self.lesson.panel.status = Some(Err(e.to_string()));
+                self.lesson.panel.status = Some(Status::Refused(e.to_string()));
                 self.tools.open = Some(Tool::Deck);
             }
         }
@@ -251,15 +252,15 @@ impl Explorer {
             return;
         };
         let step = deck.steps[index].clone();
-        let scene = (step.view == StepView::Scenes || step.scene.is_some())
-            .then(|| deck.scene(&step).map_err(|e| e.to_string()));
+        let scene =
+            (step.view == StepView::Scenes || step.scene.is_some()).then(|| deck.scene(&step));
         self.lesson.current = Some(index);
         self.lesson.revealed = !step.hides_answer();
         self.state = step.state.clone();
         self.presentation.pan_zoom = Default::default();
         match scene {
             Some(Ok(scene)) => self.scenes = super::ScenesView::new(scene),
-            Some(Err(why)) => self.lesson.panel.status = Some(Err(why)),
+            Some(Err(why)) => self.lesson.panel.status = Some(Status::Refused(why.to_string())),
             None => {}
         }
         self.view = match step.view {

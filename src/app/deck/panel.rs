@@ -14,7 +14,7 @@ use super::title_of;
 use crate::app::file_dialog::{
     FileDialog, Kind, Purpose, Target, answer_replace, chosen_file, target,
 };
-use crate::app::typed::status;
+use crate::app::status::{self, Look, Status};
 use crate::app::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 
 /// The deck file offered first.
@@ -43,7 +43,7 @@ pub enum Action {
 pub struct DeckPanel {
     path: String,
     /// What the last save, open or step said.
-    pub status: Option<Result<String, String>>,
+    pub status: Option<Status>,
     dialog: Option<FileDialog>,
     replace: Option<PathBuf>,
     /// Whether the deck changed since it was opened or saved.
@@ -118,7 +118,7 @@ impl DeckPanel {
                 self.edited |= fields(ui, step);
             }
         }
-        status(ui, self.status.as_ref());
+        status::show(ui, self.status.as_ref(), Look::Plain);
         if self.edited {
             ui.label(RichText::new(t!("deck-edited")).weak());
         }
@@ -242,12 +242,12 @@ impl DeckPanel {
         let path = self.path.trim().to_owned();
         match Deck::load(&path) {
             Ok(deck) => {
-                self.status = Some(Ok(t!("deck-opened", path = path)));
+                self.status = Some(Status::Done(t!("deck-opened", path = path)));
                 self.edited = false;
                 Some(Action::Open(deck))
             }
             Err(e) => {
-                self.status = Some(Err(e.to_string()));
+                self.status = Some(Status::Refused(e.to_string()));
                 None
             }
         }
@@ -257,14 +257,14 @@ impl DeckPanel {
     /// deck file, never over a file of another kind or to a name that is not `.toml`.
     fn save(&mut self, deck: Option<&Deck>) {
         if deck.is_none_or(|d| d.steps.is_empty()) {
-            self.status = Some(Err(t!("deck-nothing-to-save")));
+            self.status = Some(Status::Refused(t!("deck-nothing-to-save")));
             return;
         }
         let path = PathBuf::from(self.path.trim());
         match target(&path, Kind::Deck) {
             Ok(Target::New) => self.write(deck, &path),
             Ok(Target::Replaces) => self.replace = Some(path),
-            Err(e) => self.status = Some(Err(e)),
+            Err(e) => self.status = Some(Status::Refused(e.to_string())),
         }
     }
 
@@ -280,9 +280,9 @@ impl DeckPanel {
         self.status = Some(match written {
             Ok(()) => {
                 self.edited = false;
-                Ok(t!("deck-saved", path = shown))
+                Status::Done(t!("deck-saved", path = shown))
             }
-            Err(reason) => Err(t!("deck-not-saved", reason = reason)),
+            Err(reason) => Status::Refused(t!("deck-not-saved", reason = reason)),
         });
     }
 
