@@ -7,7 +7,8 @@
 //! And the same for One interface while W's handle is dragged, the figure the web build's is
 //! set beside (docs/web.md), at 1280×720 and at 1920×1080 in presentation; and the label
 //! placer's worst case: the droplet's 1,000 rays, and one label that must be shown with no
-//! free spot anywhere, so that every fallback runs. `cargo bench --bench frame`.
+//! free spot anywhere, so that every fallback runs (see [`placer_worst_case`]).
+//! `cargo bench --bench frame`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use egui::{Context, Event, Modifiers, PointerButton, Pos2, RawInput, Rect, Vec2};
@@ -15,7 +16,7 @@ use refraction_diagram::font::Typeface;
 use refraction_diagram::geometry::Colour;
 use refraction_diagram::placer::{Need, Obstacle, Placer};
 use refraction_diagram::shapes::{Align, Label};
-use refraction_diagram::{Primitive, SceneLayout, ScenePicture};
+use refraction_diagram::{SceneLayout, ScenePicture};
 use refraction_explorer::app::Explorer;
 use refraction_model::ExplorerState;
 use refraction_scene::{Scene, SourceKind, catalogue};
@@ -161,10 +162,14 @@ fn interface_frame(c: &mut Criterion) {
     group.finish();
 }
 
-/// The placer at its worst: the droplet's rays at 1,000 source rays (every segment an
-/// obstacle, as the Scenes view gives them) and a box over the whole drawing, then one label
-/// that must be shown: the rings around its anchor, the far rings, the whole drawing at four
-/// widths, crossing lesser rays, crossing any ray, all in vain.
+/// The placer at its worst: the droplet at 1,000 source rays, whose picture keeps its labels
+/// off the hit markers, the handles, 3,000 of its ray segments and its face (what
+/// [`ScenePicture::label_obstacles`] gives), then one label that must be shown in the middle of
+/// the drawing, and nowhere free: the rings around its anchor, the far rings, the whole drawing
+/// in each of its shapes, crossing lesser rays, crossing any ray. Two ways for nowhere to be
+/// free: a box over the whole drawing (so that every fallback runs in vain), and rays
+/// everywhere (a lesser shaft every 6 pixels across the drawing, given after the droplet's, so
+/// that each test reads the cell's rays before it meets one; the label ends crossing them).
 fn placer_worst_case(c: &mut Criterion) {
     let Ok(mut scene) = Scene::embedded("droplet") else {
         panic!("the droplet is built in");
@@ -175,49 +180,44 @@ fn placer_worst_case(c: &mut Criterion) {
     );
     let trace = scene.trace();
     let layout = SceneLayout::new(trace.bounds, glam::Vec2::new(SCREEN.x, SCREEN.y));
-    let picture = ScenePicture::new(&scene, &trace, &layout);
+    let obstacles = ScenePicture::label_obstacles(&scene, &trace, &layout);
     let face = Typeface::egui_default();
-    let shafts: Vec<Obstacle> = picture
-        .primitives
-        .iter()
-        .filter_map(|p| match p {
-            Primitive::Polyline { points, width, .. } => {
-                Some(points.windows(2).map(move |w| Obstacle::Shaft {
-                    a: w[0],
-                    b: w[1],
-                    half_width: width * 0.5 + 1.0,
-                    firm: false,
-                }))
-            }
-            _ => None,
-        })
-        .flatten()
-        .collect();
+    let drawing = layout.drawing;
+    let hatching = (0..)
+        .map(|k| drawing.min.y + 6.0 * k as f32)
+        .take_while(|&y| y <= drawing.max.y)
+        .map(|y| Obstacle::Shaft {
+            a: glam::Vec2::new(drawing.min.x, y),
+            b: glam::Vec2::new(drawing.max.x, y),
+            half_width: 1.0,
+            firm: false,
+        });
+    let cases = [
+        ("a_box_over_the_drawing", vec![Obstacle::Box(drawing)]),
+        ("rays_everywhere", hatching.collect()),
+    ];
     let label = Label {
         text: "a label with nowhere to go".to_owned(),
-        at: layout.drawing.min + layout.drawing.size() * 0.5,
+        at: drawing.min + drawing.size() * 0.5,
         h: Align::Center,
         v: Align::Center,
         size: layout.font,
         colour: Colour::hex(0x000000),
         background: None,
     };
-    let name = format!(
-        "droplet_1000_rays/{}_obstacles/no_free_spot",
-        shafts.len() + 1
-    );
-    c.bench_function(&format!("placer/{name}"), |b| {
-        b.iter(|| {
-            let mut placer = Placer::new(&face);
-            for shaft in &shafts {
-                placer.avoid(shaft.clone());
-            }
-            placer.avoid(Obstacle::Box(layout.drawing));
-            placer
-                .place(label.clone(), &layout.drawing, Need::Shown)
-                .is_err()
+    for (name, blockers) in cases {
+        let all: Vec<Obstacle> = obstacles.iter().chain(&blockers).cloned().collect();
+        let name = format!("droplet_1000_rays/{}_obstacles/{name}", all.len());
+        c.bench_function(&format!("placer/{name}"), |b| {
+            b.iter(|| {
+                let mut placer = Placer::new(&face);
+                for obstacle in &all {
+                    placer.avoid(obstacle.clone());
+                }
+                placer.place(label.clone(), &drawing, Need::Shown).is_err()
+            });
         });
-    });
+    }
 }
 
 criterion_group!(benches, scenes_frame, interface_frame, placer_worst_case);

@@ -30,6 +30,7 @@ pub mod font;
 pub mod fresnel_plot;
 pub mod geometry;
 pub mod intensities;
+mod lattice;
 pub mod layout;
 pub mod numbers;
 mod obstacle_grid;

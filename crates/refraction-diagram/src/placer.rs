@@ -11,8 +11,9 @@
 use glam::Vec2;
 
 use super::font::Typeface;
-use super::geometry::{Colour, Rect, clip_segment};
-use super::obstacle_grid::ObstacleGrid;
+use super::geometry::{Colour, Rect};
+use super::lattice::{Shape, Squares};
+use super::obstacle_grid::{Crossable, ObstacleGrid};
 use super::shapes::Label;
 
 /// Something a label must not cover.
@@ -53,15 +54,30 @@ impl Obstacle {
             Self::Polygon(points) => convex_overlaps(points, r),
             Self::Shaft {
                 a, b, half_width, ..
-            } => {
-                let grown = Rect {
-                    min: r.min - Vec2::splat(*half_width),
-                    max: r.max + Vec2::splat(*half_width),
-                };
-                clip_segment(*a, *b, &grown).is_some()
-            }
+            } => shaft_touches(*a, *b, *half_width, r),
         }
     }
+}
+
+/// Whether the line `a`–`b` passes within `half_width` of the box `r` (touching counts): it
+/// meets `r` grown by `half_width` where their boxes overlap and the grown box's corners are
+/// not all on one side of the line. No division, as the placer asks it of many thousands of
+/// ray segments a frame.
+fn shaft_touches(a: Vec2, b: Vec2, half_width: f32, r: &Rect) -> bool {
+    if !(a.is_finite() && b.is_finite()) {
+        return false;
+    }
+    let (min, max) = (
+        r.min - Vec2::splat(half_width),
+        r.max + Vec2::splat(half_width),
+    );
+    if a.max(b).cmplt(min).any() || max.cmplt(a.min(b)).any() {
+        return false;
+    }
+    let d = b - a;
+    let sides = [min, Vec2::new(max.x, min.y), max, Vec2::new(min.x, max.y)]
+        .map(|corner| d.perp_dot(corner - a));
+    !(sides.iter().all(|&s| s > 0.0) || sides.iter().all(|&s| s < 0.0))
 }
 
 /// Whether the convex polygon `points` and the box `r` overlap (separating axis test: the box's
@@ -94,7 +110,7 @@ fn convex_overlaps(points: &[Vec2], r: &Rect) -> bool {
 }
 
 /// The box of a label whose text measures `extent`, anchored at `at`, with its margin.
-fn boxed(label: &Label, extent: Vec2, at: Vec2) -> Rect {
+pub(crate) fn boxed(label: &Label, extent: Vec2, at: Vec2) -> Rect {
     let pad = Vec2::splat(label.size * PAD);
     let min = at - extent * Vec2::new(label.h.fraction(), label.v.fraction()) - pad;
     Rect {
@@ -260,29 +276,29 @@ impl<'f> Placer<'f> {
 
     /// Free of every obstacle and every label placed so far.
     fn free(&self, r: &Rect) -> bool {
-        self.clear_of(r, |_| false)
+        self.clear_of(r, Crossable::Nothing)
     }
 
     /// Free of everything but the shafts that are not firm: what a label that must be shown
     /// settles for first (it may cross a lesser ray, never a handle, an arrowhead, a marked
     /// point or another label).
     fn free_but_lesser_shafts(&self, r: &Rect) -> bool {
-        self.clear_of(r, |o| matches!(o, Obstacle::Shaft { firm: false, .. }))
+        self.clear_of(r, Crossable::LesserShafts)
     }
 
     /// Free of everything but the rays' shafts: a shown label's last resort where the canvas
     /// is so small that only crossing W, N or T would keep it.
     fn free_but_shafts(&self, r: &Rect) -> bool {
-        self.clear_of(r, |o| matches!(o, Obstacle::Shaft { .. }))
+        self.clear_of(r, Crossable::Shafts)
     }
 
     /// Whether `r` covers no placed label and no obstacle but those it may `cross`.
-    fn clear_of(&self, r: &Rect, cross: impl Fn(&Obstacle) -> bool) -> bool {
+    fn clear_of(&self, r: &Rect, cross: Crossable) -> bool {
         // `place` builds the grid of every obstacle before it looks for a spot.
         // untranslated: a panic message for the engineer, never shown to a user.
         debug_assert_eq!(self.grid.count, self.obstacles.len(), "a stale grid");
-        let touched = |i: usize| !cross(&self.obstacles[i]) && self.obstacles[i].touches(r);
-        !self.grid.near(r).any(touched) && !self.placed.iter().any(|p| p.overlaps(r))
+        let touched = |i: usize| self.obstacles[i].touches(r);
+        !self.grid.any_near(r, cross, touched) && !self.placed.iter().any(|p| p.overlaps(r))
     }
 
     /// The first anchor from `steps` (in steps of 0.6 of the label's size around its anchor)
@@ -332,63 +348,80 @@ impl<'f> Placer<'f> {
             .any(|(a, b)| segments_cross(start, end, *a, *b))
     }
 
-    /// The free spot inside `bounds` nearest `label`'s anchor, searched on a grid over the
-    /// whole of `bounds` (a label that must be shown tries it before crossing any ray, where
-    /// the rings around its anchor found nothing).
-    fn nearest_anywhere(
-        &self,
-        label: &Label,
-        bounds: &Rect,
-        free: impl Fn(&Self, &Rect) -> bool,
-    ) -> Option<(Vec2, Rect)> {
-        let step = label.size * 0.6;
-        let extent = self.face.measure(&label.text, label.size);
-        let size = bounds.max - bounds.min;
-        // Bounds a label fits in hold no more than a few thousand grid points. They are tried
-        // nearest first, so the search ends at the first free one.
-        let (columns, rows) = ((size.x / step) as usize, (size.y / step) as usize);
-        let pad = Vec2::splat(label.size * PAD);
-        let offset = pad + extent * Vec2::new(label.h.fraction(), label.v.fraction());
-        let mut spots: Vec<(f32, Vec2)> = (0..=rows)
-            .flat_map(|row| (0..=columns).map(move |column| (column, row)))
-            .map(|(column, row)| {
-                let at = bounds.min + Vec2::new(column as f32, row as f32) * step + offset;
-                (at.distance(label.at), at)
-            })
-            .collect();
-        spots.sort_by(|a, b| a.0.total_cmp(&b.0));
-        spots.into_iter().find_map(|(_, at)| {
-            let moved = boxed(label, extent, at);
-            let inside = moved.min.cmpge(bounds.min).all() && moved.max.cmple(bounds.max).all();
-            (inside && free(self, &moved)).then_some((at, moved))
-        })
-    }
-
-    /// [`Self::nearest_anywhere`] for `label` as it is, else with its text broken into
-    /// narrower lines (a long label that fits nowhere whole often fits between the rays in
-    /// more lines); the label keeps the narrower text only where that found a spot.
-    fn narrower(
-        &self,
-        label: &mut Label,
-        bounds: &Rect,
-        free: impl Fn(&Self, &Rect) -> bool + Copy,
-    ) -> Option<(Vec2, Rect)> {
-        if let Some(spot) = self.nearest_anywhere(label, bounds, free) {
-            return Some(spot);
-        }
+    /// `label` in each shape a label that must be shown tries anywhere in `bounds`: as it is,
+    /// then broken into narrower lines (a long label that fits nowhere whole often fits
+    /// between the rays in more lines), each shape once.
+    fn shapes(&self, label: &Label) -> Vec<Shape> {
         let widest = self.face.measure(&label.text, label.size).x;
+        let mut texts = vec![label.text.clone()];
         for share in [0.7, 0.5, 0.35] {
             let text = wrap(self.face, &label.text, label.size, widest * share);
-            let narrow = Label {
-                text,
-                ..label.clone()
-            };
-            if let Some(spot) = self.nearest_anywhere(&narrow, bounds, free) {
-                *label = narrow;
-                return Some(spot);
+            if !texts.contains(&text) {
+                texts.push(text);
             }
         }
-        None
+        texts
+            .into_iter()
+            .map(|text| {
+                let extent = self.face.measure(&text, label.size);
+                Shape::new(
+                    Label {
+                        text,
+                        ..label.clone()
+                    },
+                    extent,
+                )
+            })
+            .collect()
+    }
+
+    /// Where a label that must be shown goes when no ring around its anchor is free: the spot
+    /// in `bounds` nearest its anchor that is free and reached by a leader crossing no firm
+    /// shaft, else one that is free, else one free but for lesser shafts; each tried with
+    /// every one of the label's [`Self::shapes`] in turn. The label keeps the text of the
+    /// shape that found its spot.
+    fn anywhere(&self, label: &mut Label, bounds: &Rect) -> Option<(Vec2, Rect)> {
+        let shapes = self.shapes(label);
+        let anchor = label.at;
+        let touched = |cross| {
+            move |r: &Rect| {
+                self.grid
+                    .any_near(r, cross, |i| self.obstacles[i].touches(r))
+            }
+        };
+        let all = Squares::new(bounds, label.size, touched(Crossable::Nothing));
+        // One pass over a shape's spots finds its nearest spot with a clear leader and, on the
+        // way, its nearest free one, kept for when no shape has a clear leader.
+        let mut nearest_free = Vec::new();
+        let found = shapes
+            .iter()
+            .find_map(|shape| {
+                let mut free = None;
+                let clear = shape.spots(bounds, &all).into_iter().find(|&(at, r)| {
+                    let ok = self.free(&r);
+                    if ok && free.is_none() {
+                        free = Some((at, r));
+                    }
+                    ok && self.leader_clear(anchor, &r)
+                });
+                nearest_free.push(free);
+                clear.map(|spot| (shape, spot))
+            })
+            .or_else(|| {
+                let mut free = shapes.iter().zip(nearest_free);
+                free.find_map(|(shape, spot)| spot.map(|spot| (shape, spot)))
+            })
+            .or_else(|| {
+                let solid = Squares::new(bounds, label.size, touched(Crossable::LesserShafts));
+                shapes.iter().find_map(|shape| {
+                    let mut spots = shape.spots(bounds, &solid).into_iter();
+                    let spot = spots.find(|(_, r)| self.free_but_lesser_shafts(r))?;
+                    Some((shape, spot))
+                })
+            });
+        let (shape, spot) = found?;
+        label.text.clone_from(&shape.label.text);
+        Some(spot)
     }
 
     /// Places `label` inside `bounds`: at its anchor if that covers nothing, else at the
@@ -424,15 +457,11 @@ impl<'f> Placer<'f> {
             (Some(found), _) => Some(found),
             (None, Need::Optional) => None,
             (None, Need::Shown) => {
-                let steps = || 0..=MOST_STEPS_WITH_LEADER;
+                let steps = 0..=MOST_STEPS_WITH_LEADER;
                 // A leader across W, N or T is avoided where it can be, then settled for
                 // before the label itself crosses a ray.
-                let anchor = label.at;
-                let clear = move |p: &Self, r: &Rect| p.free(r) && p.leader_clear(anchor, r);
-                self.narrower(&mut label, bounds, clear)
-                    .or_else(|| self.narrower(&mut label, bounds, Self::free))
-                    .or_else(|| self.narrower(&mut label, bounds, Self::free_but_lesser_shafts))
-                    .or_else(|| self.spot(&label, bounds, steps(), Self::free_but_shafts))
+                self.anywhere(&mut label, bounds)
+                    .or_else(|| self.spot(&label, bounds, steps, Self::free_but_shafts))
                     .map(|spot| {
                         let far = spot.0.distance(label.at) > label.size * 0.6 * MOST_STEPS as f32;
                         (spot, far)
@@ -776,6 +805,32 @@ mod tests {
                 ])
             }),
         ]
+    }
+
+    proptest! {
+        #[test]
+        fn a_shaft_touches_a_box_where_its_line_meets_the_grown_box(
+            a in (-50.0_f32..150.0, -50.0_f32..150.0),
+            b in (-50.0_f32..150.0, -50.0_f32..150.0),
+            half_width in 0.0_f32..5.0,
+            corner in (0.0_f32..100.0, 0.0_f32..100.0),
+            size in (0.0_f32..60.0, 0.0_f32..60.0),
+        ) {
+            let (a, b) = (Vec2::new(a.0, a.1), Vec2::new(b.0, b.1));
+            let r = Rect::from_min_size(Vec2::new(corner.0, corner.1), Vec2::new(size.0, size.1));
+            let clipped = |grow: f32| {
+                let grown = Rect {
+                    min: r.min - Vec2::splat(half_width + grow),
+                    max: r.max + Vec2::splat(half_width + grow),
+                };
+                crate::geometry::clip_segment(a, b, &grown).is_some()
+            };
+            let touches = shaft_touches(a, b, half_width, &r);
+            // The same answer as clipping the line to the grown box, but where rounding
+            // decides: within a hundredth of a pixel of its border.
+            prop_assert!(!touches || clipped(0.01), "touches, yet the line misses");
+            prop_assert!(touches || !clipped(-0.01), "the line meets it, yet no touch");
+        }
     }
 
     proptest! {

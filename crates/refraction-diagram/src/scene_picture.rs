@@ -440,9 +440,9 @@ impl ScenePictureBuilder<'_> {
         });
     }
 
-    /// Tells `placer` to keep labels off the rays: each segment of each ray drawn, or of every
-    /// few where thousands are drawn (their fans are dense; the labels still find the gaps).
-    fn avoid_rays(&self, placer: &mut Placer<'_>) {
+    /// The ray segments labels keep off: each segment of each ray drawn, or of every few where
+    /// thousands are drawn (their fans are dense; the labels still find the gaps).
+    fn ray_obstacles(&self) -> impl Iterator<Item = Obstacle> + '_ {
         /// The most ray segments the labels are checked against.
         const MOST_SEGMENTS: usize = 3000;
         let rays = &self.out[self.rays_from..self.marks_from];
@@ -461,14 +461,47 @@ impl ScenePictureBuilder<'_> {
                 .collect::<Vec<_>>(),
             _ => Vec::new(),
         });
-        for (a, b, width) in segments.step_by(stride) {
-            placer.avoid(Obstacle::Shaft {
+        segments
+            .step_by(stride)
+            .map(|(a, b, width)| Obstacle::Shaft {
                 a,
                 b,
                 half_width: width * 0.5 + 1.0,
                 firm: false,
+            })
+    }
+
+    /// Everything the labels keep off: the hit markers, the aim's arrowhead, the handles'
+    /// grab areas, the rays ([`Self::ray_obstacles`]) and the shapes' faces.
+    fn obstacles(&self, handles: &[SceneHandle]) -> Vec<Obstacle> {
+        let marks = self.out[self.marks_from..].iter().filter_map(|p| match p {
+            Primitive::Disc { center, radius, .. } => Some(Obstacle::Disc {
+                center: *center,
+                radius: *radius,
+            }),
+            Primitive::Polygon { points, .. } if points.len() == 3 => {
+                Some(Obstacle::Polygon(points.clone()))
+            }
+            _ => None,
+        });
+        let grabs = handles.iter().map(|h| Obstacle::Box(h.grab_area()));
+        // A curved face is many short pieces: every few of them is enough to keep off it.
+        let stride = self.faces.len().div_ceil(1000).max(1);
+        let faces = self
+            .faces
+            .iter()
+            .step_by(stride)
+            .map(|&(a, b)| Obstacle::Shaft {
+                a,
+                b,
+                half_width: 1.5 * self.unit(),
+                firm: false,
             });
-        }
+        marks
+            .chain(grabs)
+            .chain(self.ray_obstacles())
+            .chain(faces)
+            .collect()
     }
 
     /// Places the waiting labels inside the drawing area, off the hit markers, the handles,
@@ -478,31 +511,8 @@ impl ScenePictureBuilder<'_> {
         let labels = core::mem::take(&mut self.labels);
         let face = Typeface::egui_default();
         let mut placer = Placer::new(&face);
-        for p in &self.out[self.marks_from..] {
-            match p {
-                Primitive::Disc { center, radius, .. } => placer.avoid(Obstacle::Disc {
-                    center: *center,
-                    radius: *radius,
-                }),
-                Primitive::Polygon { points, .. } if points.len() == 3 => {
-                    placer.avoid(Obstacle::Polygon(points.clone()));
-                }
-                _ => {}
-            }
-        }
-        for handle in handles {
-            placer.avoid(Obstacle::Box(handle.grab_area()));
-        }
-        self.avoid_rays(&mut placer);
-        // A curved face is many short pieces: every few of them is enough to keep off it.
-        let stride = self.faces.len().div_ceil(1000).max(1);
-        for &(a, b) in self.faces.iter().step_by(stride) {
-            placer.avoid(Obstacle::Shaft {
-                a,
-                b,
-                half_width: 1.5 * self.unit(),
-                firm: false,
-            });
+        for obstacle in self.obstacles(handles) {
+            placer.avoid(obstacle);
         }
         let drawing = self.layout.drawing;
         let mut placement = placer.place_all(labels.into_iter().map(|l| (l, drawing, Need::Shown)));
@@ -977,6 +987,36 @@ impl ScenePicture {
         layout: &SceneLayout,
         palette: &Palette,
     ) -> Self {
+        let (mut b, handles) = ScenePictureBuilder::drawn(scene, trace, layout, palette);
+        let left_out = b.place(&handles);
+        let summary = b.banner(scene, trace);
+        Self {
+            primitives: b.out,
+            handles,
+            left_out,
+            summary,
+        }
+    }
+
+    /// What the labels of [`ScenePicture::new`]'s picture are kept off (the hit markers, the
+    /// aim's arrowhead, the handles, at most 3,000 ray segments and 1,000 pieces of the faces),
+    /// in the order the placer is given them: what the frame benchmark's placer works on.
+    #[must_use]
+    pub fn label_obstacles(scene: &Scene, trace: &Trace, layout: &SceneLayout) -> Vec<Obstacle> {
+        let (b, handles) = ScenePictureBuilder::drawn(scene, trace, layout, &Palette::STANDARD);
+        b.obstacles(&handles)
+    }
+}
+
+impl<'a> ScenePictureBuilder<'a> {
+    /// The picture up to its labels: the shapes, the rays, the hit markers and the handles
+    /// drawn, the labels waiting to be placed; and the handles.
+    fn drawn(
+        scene: &Scene,
+        trace: &Trace,
+        layout: &'a SceneLayout,
+        palette: &Palette,
+    ) -> (Self, Vec<SceneHandle>) {
         let mut b = ScenePictureBuilder {
             layout,
             palette: *palette,
@@ -995,14 +1035,7 @@ impl ScenePicture {
         b.hits(trace);
         b.handles(&handles);
         b.media_labels(scene, &handles);
-        let left_out = b.place(&handles);
-        let summary = b.banner(scene, trace);
-        Self {
-            primitives: b.out,
-            handles,
-            left_out,
-            summary,
-        }
+        (b, handles)
     }
 }
 
