@@ -32,7 +32,7 @@ libfuzzer_sys::fuzz_target!(|data: &[u8]| {
             };
             match Pattern::parse(dialect, text) {
                 Ok(pattern) => (Format::Pattern(pattern), &rest[end..]),
-                Err(e) => return message::assert_message(&e, data),
+                Err(e) => return message::assert_message(&e.to_string(), data),
             }
         }
     };

@@ -23,13 +23,16 @@ libfuzzer_sys::fuzz_target!(|data: &[u8]| {
         return;
     };
     // Placeholders in the thousands: a middle of `{_} | ` repeated 2,000 times and more.
-    let text = format!("uv={{uv}} {} n={{n}} r={{refracted}}", middle.repeat(repeats.min(4_000)));
+    let text = format!(
+        "uv={{uv}} {} n={{n}} r={{refracted}}",
+        middle.repeat(repeats.min(4_000))
+    );
     match Pattern::parse(Api::Rtiow, &text) {
         Ok(pattern) => {
             if let Some(captured) = pattern.capture(line) {
                 assert!(captured.iter().all(|(_, t)| line.contains(t)));
             }
         }
-        Err(e) => message::assert_message(&e, data),
+        Err(e) => message::assert_message(&e.to_string(), data),
     }
 });

@@ -12,7 +12,7 @@ use egui::{ComboBox, DragValue, ProgressBar, TextEdit, Ui};
 
 use super::background::{self, Job as Background};
 use super::file_dialog::{self, Kind, Target, WriteRefusal};
-use super::status::{self, Look, Status};
+use super::status::{self, Look, Status, not_exported};
 use refraction_diagram::Overlay;
 use refraction_diagram::animation::Animation;
 use refraction_diagram::numbers::number;
@@ -74,17 +74,12 @@ impl Default for AnimationExport {
     }
 }
 
-/// Why an export wrote nothing, in the current language around the renderer's own reason.
-fn not_exported(reason: &impl core::fmt::Display) -> String {
-    t!("files-not-exported", reason = reason.to_string())
-}
-
-/// What an export that ended says: the file written, or why nothing was.
+/// What an export that ended says: the file written, that it was cancelled, or why nothing
+/// was written.
 pub(super) fn outcome(result: Result<(), RenderError>, path: &Path) -> Status {
     match result {
-        Ok(()) => Status::Done(t!("files-wrote", path = path.display().to_string())),
         Err(RenderError::Cancelled) => Status::Refused(t!("files-export-cancelled")),
-        Err(e) => Status::Refused(not_exported(&e)),
+        result => status::exported(result, path),
     }
 }
 

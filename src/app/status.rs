@@ -1,7 +1,11 @@
-//! What a panel says after it acted (a file written, a link copied, or why nothing was), and
-//! the one function every panel shows it with.
+//! What a panel says after it acted (a file written, a link copied, or why nothing was), the
+//! words for a file written or not exported, and the one function every panel shows it with.
+
+use core::fmt::Display;
+use std::path::Path;
 
 use egui::{Label, RichText, Ui, WidgetText};
+use refraction_i18n::t;
 
 use super::typed::warning;
 
@@ -13,6 +17,24 @@ pub enum Status {
     Done(String),
     /// Why nothing was done: a name refused, a file that cannot be read or written.
     Refused(String),
+}
+
+/// What a panel says after it wrote the file at `path`.
+pub(super) fn wrote(path: &Path) -> Status {
+    Status::Done(t!("files-wrote", path = path.display().to_string()))
+}
+
+/// Why an export wrote nothing, in the window's language around the reason's own words.
+pub(super) fn not_exported(reason: &impl Display) -> String {
+    t!("files-not-exported", reason = reason.to_string())
+}
+
+/// What an export came to: the file at `path` written, or why nothing was.
+pub(super) fn exported(result: Result<(), impl Display>, path: &Path) -> Status {
+    match result {
+        Ok(()) => wrote(path),
+        Err(reason) => Status::Refused(not_exported(&reason)),
+    }
 }
 
 /// How a panel shows its status line. A refusal looks the same in each: after ⚠, in the alarm

@@ -7,7 +7,7 @@ use std::process::ExitCode;
 
 use glam::Vec2;
 use refraction_deck::{Deck, builtin};
-use refraction_explorer::app::handout::{HandoutError, pdf, picture};
+use refraction_explorer::app::handout::{HandoutError, picture, write};
 use refraction_render::format::ImageFormat;
 use refraction_render::handout::Sheet;
 use refraction_render::{RenderError, check_size, svg};
@@ -58,7 +58,7 @@ enum LessonFailure {
     /// The deck, or a step's scene, cannot be opened.
     #[error(transparent)]
     Deck(#[from] LoadError),
-    /// The handout cannot be made.
+    /// The handout cannot be made or written.
     #[error(transparent)]
     Handout(#[from] HandoutError),
     /// The pictures' folder cannot be made.
@@ -157,10 +157,7 @@ pub(crate) fn render(
     let drawn = checked.and_then(|()| out_of(out)).and_then(|to| {
         let deck = Deck::load(lesson)?;
         match to {
-            Out::Handout(path) => {
-                let bytes = pdf(&deck, sheet, web_base)?;
-                refraction_files::write_atomically(&path, &bytes).map_err(LessonFailure::Unwritable)
-            }
+            Out::Handout(path) => Ok(write(&deck, sheet, web_base, &path)?),
             Out::Folder(folder) => pictures(&deck, &folder, size),
         }
     });

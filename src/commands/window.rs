@@ -35,23 +35,22 @@ pub(crate) fn open(window: &Window) -> ExitCode {
     if let Some(Err(e)) = window.lesson.as_deref().map(refraction_deck::Deck::load) {
         return fail("", &e);
     }
-    let launch = window
-        .state
-        .as_deref()
-        .map(|p| state_file::open(p).map_err(|e| e.to_string()))
-        .transpose()
-        .map(|state| Launch {
-            state,
-            lesson: window.lesson.clone(),
-            present: window.present,
-            view: window.view,
-            theme: window.theme,
-            language: window.language,
-            system_language: sys_locale::get_locale().and_then(|tag| Locale::from_tag(&tag)),
-            web_base: window.web_base.clone(),
-        });
-    match launch.and_then(|launch| app::run(launch).map_err(|e| e.to_string())) {
+    let state = match window.state.as_deref().map(state_file::open).transpose() {
+        Ok(state) => state,
+        Err(e) => return fail("", &e),
+    };
+    let launch = Launch {
+        state,
+        lesson: window.lesson.clone(),
+        present: window.present,
+        view: window.view,
+        theme: window.theme,
+        language: window.language,
+        system_language: sys_locale::get_locale().and_then(|tag| Locale::from_tag(&tag)),
+        web_base: window.web_base.clone(),
+    };
+    match app::run(launch) {
         Ok(()) => ExitCode::SUCCESS,
-        Err(message) => fail("", &message),
+        Err(e) => fail("", &e),
     }
 }

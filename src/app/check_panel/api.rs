@@ -21,7 +21,7 @@ use refraction_model::INDEX_RANGE;
 use refraction_tools::call_check::call::Got;
 use refraction_tools::call_check::fields::{self, Kind, names};
 use refraction_tools::call_check::record::Value;
-use refraction_tools::call_check::{Call, Diagnosis, Options, Record, check_record};
+use refraction_tools::call_check::{Call, CallVerdict, Options, Record, check_record};
 use refraction_tools::snippets::api::{self as snippets, ApiCase, Language};
 use refraction_tools::state_file;
 use refraction_tools::vector_text::{spoken, spoken_vector};
@@ -144,7 +144,7 @@ fn indices(from_to: Option<(f64, f64)>, mu: f64) -> (f64, f64) {
 #[derive(Clone, Debug, PartialEq)]
 pub(super) struct Judged {
     call: Call,
-    diagnosis: Diagnosis,
+    verdict: CallVerdict,
     /// The right arguments for the ray, in the API's convention.
     right: Args<f64>,
     /// The right call as the explorer's state, or why it cannot be drawn.
@@ -177,13 +177,13 @@ fn picture(
 }
 
 impl Judged {
-    fn new(call: Call, diagnosis: Diagnosis) -> Self {
-        let m = diagnosis.right;
-        let right = snippets::right_args(&call, &diagnosis);
+    fn new(call: Call, verdict: CallVerdict) -> Self {
+        let m = verdict.right;
+        let right = snippets::right_args(&call, &verdict);
         let picture = picture(call.api, right, m.mu, call.truth.from_to);
         Self {
             call,
-            diagnosis,
+            verdict,
             right,
             picture,
         }
@@ -196,7 +196,7 @@ impl Judged {
             Got::Vector(v) => v,
             Got::Nothing => DVec3::ZERO,
         };
-        let what = if self.diagnosis.ok {
+        let what = if self.verdict.ok {
             t!("check-student-right")
         } else {
             self.mistake_names()
@@ -213,19 +213,19 @@ impl Judged {
     }
 
     fn mistake_names(&self) -> Option<String> {
-        let codes: Vec<&str> = self.diagnosis.mistakes.iter().map(|c| c.name()).collect();
+        let codes: Vec<&str> = self.verdict.mistakes.iter().map(|c| c.name()).collect();
         (!codes.is_empty()).then(|| codes.join(", "))
     }
 
     /// The case a unit test is written from.
     fn case(&self) -> ApiCase<'_> {
-        ApiCase::of(&self.call, &self.diagnosis)
+        ApiCase::of(&self.call, &self.verdict)
     }
 
     /// The verdict: headline, each mistake with what it means, the explanation, what the API
     /// returns, the right T and what is drawn.
     pub(super) fn show(&self, ui: &mut Ui) {
-        let d = &self.diagnosis;
+        let d = &self.verdict;
         let api = self.call.api;
         let head = match self.mistake_names() {
             _ if d.ok => t!("check-api-right-headline", signature = api.signature()),
@@ -339,8 +339,8 @@ impl ApiFields {
                 (!text.trim().is_empty()).then_some((name, text.as_str()))
             });
         let record = Record::from_texts(api, texts)?;
-        let (call, diagnosis) = check_record(&record, &Options::new(api))?;
-        let judged = Judged::new(call, diagnosis);
+        let (call, verdict) = check_record(&record, &Options::new(api))?;
+        let judged = Judged::new(call, verdict);
         Ok(Checked {
             opened: judged.picture.clone().ok(),
             student: judged.student(),

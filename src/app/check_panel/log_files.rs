@@ -226,13 +226,12 @@ impl LogFiles {
     }
 
     fn write(&mut self, path: &Path, text: &str) {
-        let shown = path.display().to_string();
         self.status = Some(
             match refraction_files::write_atomically(path, text.as_bytes()) {
-                Ok(()) => Status::Done(t!("files-wrote", path = shown)),
+                Ok(()) => status::wrote(path),
                 Err(e) => Status::Refused(t!(
                     "logs-write-failed",
-                    path = shown,
+                    path = path.display().to_string(),
                     reason = e.to_string()
                 )),
             },

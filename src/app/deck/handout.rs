@@ -13,10 +13,10 @@ use refraction_scene::LoadError;
 use refraction_tools::link::{self, Link};
 
 use super::overlay_of;
-use crate::app::status::Status;
+use crate::app::status;
 
-/// Why a deck's handout could not be made: each error as it came, worded by its own
-/// `Display`.
+/// Why a deck's handout could not be made or written: each error as it came, worded by its
+/// own `Display`.
 #[derive(Debug, thiserror::Error)]
 pub enum HandoutError {
     /// A step's scene cannot be opened.
@@ -25,6 +25,9 @@ pub enum HandoutError {
     /// A page cannot be converted to PDF.
     #[error(transparent)]
     Pdf(#[from] RenderError),
+    /// The handout's file cannot be written (its own message names it).
+    #[error(transparent)]
+    Write(std::io::Error),
 }
 
 /// The picture of `step` of `deck` on a canvas of `size` pixels, its answer shown unless
@@ -144,6 +147,20 @@ pub fn pdf(deck: &Deck, sheet: Sheet, web_base: Option<&str>) -> Result<Vec<u8>,
     Ok(handout::pdf(&deck.title, &pages)?)
 }
 
+/// Writes the handout of `deck` ([`pdf`]) at `path`, all of it or nothing.
+///
+/// # Errors
+/// A step's scene cannot be opened, a page cannot be converted, or the file cannot be written.
+pub fn write(
+    deck: &Deck,
+    sheet: Sheet,
+    web_base: Option<&str>,
+    path: &Path,
+) -> Result<(), HandoutError> {
+    let bytes = pdf(deck, sheet, web_base)?;
+    refraction_files::write_atomically(path, &bytes).map_err(HandoutError::Write)
+}
+
 impl crate::app::Explorer {
     /// Writes the open deck's handout as the next free `handout-NNN.pdf` (in a browser, a
     /// download), with each step's link when a web address is set; the deck tool says what
@@ -154,15 +171,8 @@ impl crate::app::Explorer {
         };
         let base = Some(self.web_base()).filter(|b| !b.is_empty());
         let path = crate::app::file_dialog::numbered(Path::new(""), "handout", "pdf");
-        let written = pdf(deck, Sheet::Teacher, base)
-            .map_err(|e| e.to_string())
-            .and_then(|bytes| {
-                refraction_files::write_atomically(&path, &bytes).map_err(|e| e.to_string())
-            });
-        self.lesson.panel.status = Some(match written {
-            Ok(()) => Status::Done(t!("files-wrote", path = path.display().to_string())),
-            Err(reason) => Status::Refused(t!("files-not-exported", reason = reason)),
-        });
+        let written = write(deck, Sheet::Teacher, base, &path);
+        self.lesson.panel.status = Some(status::exported(written, &path));
     }
 }
 

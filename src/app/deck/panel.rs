@@ -3,6 +3,7 @@
 //! step's title, question and notes, and opens and saves deck files through the file dialog
 //! (after a question before a deck file is replaced, never over a file of another kind).
 
+use core::fmt::Display;
 use std::path::{Path, PathBuf};
 
 use egui::{ComboBox, RichText, Role, TextEdit, Ui, WidgetInfo};
@@ -272,17 +273,19 @@ impl DeckPanel {
         let Some(deck) = deck else {
             return;
         };
-        let shown = path.display().to_string();
+        let not_saved = |reason: &dyn Display| {
+            Status::Refused(t!("deck-not-saved", reason = reason.to_string()))
+        };
         let written = deck
             .to_toml()
-            .map_err(|e| e.to_string())
-            .and_then(|text| write_atomically(path, text.as_bytes()).map_err(|e| e.to_string()));
+            .map(|text| write_atomically(path, text.as_bytes()));
         self.status = Some(match written {
-            Ok(()) => {
+            Ok(Ok(())) => {
                 self.edited = false;
-                Status::Done(t!("deck-saved", path = shown))
+                Status::Done(t!("deck-saved", path = path.display().to_string()))
             }
-            Err(reason) => Status::Refused(t!("deck-not-saved", reason = reason)),
+            Ok(Err(e)) => not_saved(&e),
+            Err(e) => not_saved(&e),
         });
     }
 

@@ -44,7 +44,7 @@ pub use error::{CsvError, LineError, PatternError};
 pub use fields::Dialect;
 pub use pattern::{MAX_PATTERN_BYTES, MAX_PATTERN_LINES, MAX_PLACEHOLDERS, Pattern};
 pub use record::Record;
-pub use verdict::{Diagnosis, verdict};
+pub use verdict::{CallVerdict, verdict};
 
 use crate::candidate_check::{self, Match};
 use crate::diagnosis::{Evidence, LogTally, Summary};
@@ -66,18 +66,18 @@ struct Answer<'a> {
 
 /// The answer line for a judged call.
 #[must_use]
-pub fn answer_line(call: &Call, diagnosis: &Diagnosis) -> String {
+pub fn answer_line(call: &Call, verdict: &CallVerdict) -> String {
     let names = |codes: &[Code]| codes.iter().map(|c| c.name()).collect::<Vec<_>>();
     let answer = Answer {
         verdict: candidate_check::Answer {
-            ok: diagnosis.ok,
-            matches: diagnosis.matches.map(Match::name),
-            explanation: &diagnosis.explanation,
-            t: diagnosis.t,
+            ok: verdict.ok,
+            matches: verdict.matches.map(Match::name),
+            explanation: &verdict.explanation,
+            t: verdict.t,
         },
-        api_result: &diagnosis.api_result,
-        mistakes: names(&diagnosis.mistakes),
-        alternatives: diagnosis.alternatives.iter().map(|a| names(a)).collect(),
+        api_result: &verdict.api_result,
+        mistakes: names(&verdict.mistakes),
+        alternatives: verdict.alternatives.iter().map(|a| names(a)).collect(),
         path: call.path.as_deref(),
     };
     crate::json_line(&answer)
@@ -87,10 +87,10 @@ pub fn answer_line(call: &Call, diagnosis: &Diagnosis) -> String {
 ///
 /// # Errors
 /// The record is not a complete call (see [`Call::from_record`]) or does not fit the precision.
-pub fn check_record(record: &Record, options: &Options) -> Result<(Call, Diagnosis), LineError> {
+pub fn check_record(record: &Record, options: &Options) -> Result<(Call, CallVerdict), LineError> {
     let call = Call::from_record(record, options)?;
-    let diagnosis = verdict(&call)?;
-    Ok((call, diagnosis))
+    let verdict = verdict(&call)?;
+    Ok((call, verdict))
 }
 
 /// Counts of verdicts by mistake, for the summary on stderr.
@@ -124,15 +124,15 @@ impl Tally {
 
     /// Counts a verdict: `ok`, a sampled reflection, or the line's explanations as one kind,
     /// ties joined (`unexplained` when none fits).
-    pub fn add_verdict(&mut self, diagnosis: &Diagnosis) {
-        if diagnosis.ok && diagnosis.sampled.is_some() {
+    pub fn add_verdict(&mut self, verdict: &CallVerdict) {
+        if verdict.ok && verdict.sampled.is_some() {
             self.add(SAMPLED);
-        } else if diagnosis.ok {
+        } else if verdict.ok {
             self.add("ok");
-        } else if diagnosis.alternatives.is_empty() {
+        } else if verdict.alternatives.is_empty() {
             self.add("unexplained");
         } else {
-            self.add(&tied(&diagnosis.alternatives));
+            self.add(&tied(&verdict.alternatives));
         }
     }
 
@@ -173,11 +173,12 @@ pub const SKIPPED: &str = "skipped (not matching the pattern)";
 // untranslated: the tally's name, as `check` prints it on stderr (the panel says it in words)
 pub const SAMPLED: &str = "reflected (sampled)";
 
-/// A judged line: an API call and its diagnosis, or any renderer's refraction and its verdict.
+/// A judged line: an API call and its [`CallVerdict`], or any renderer's refraction and its
+/// verdict.
 #[derive(Clone, Debug)]
 pub enum Judgement {
-    /// A call of a named API (boxed: a diagnosis is large).
-    Api(Box<(Call, Diagnosis)>),
+    /// A call of a named API (boxed: a verdict is large).
+    Api(Box<(Call, CallVerdict)>),
     /// Any renderer's own refraction (`check` without `--api`; boxed as the call is).
     Physics(Box<physics::Judged>),
 }

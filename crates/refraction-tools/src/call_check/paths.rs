@@ -12,7 +12,7 @@ use serde::Serialize;
 
 use super::call::Call;
 use super::error::LineError;
-use super::verdict::Diagnosis;
+use super::verdict::CallVerdict;
 use crate::candidate_check::MATCH_ANGLE;
 use crate::diagnosis::Code;
 use crate::vector_text::{angle, short, short_vector, unit};
@@ -115,8 +115,8 @@ fn through_sphere(start: DVec3, hits: &[Hit], centre: DVec3, radius: f64) -> DVe
 }
 
 impl Path {
-    fn new(id: String, call: &Call, diagnosis: &Diagnosis) -> Self {
-        let start = unit(diagnosis.right.travel);
+    fn new(id: String, call: &Call, verdict: &CallVerdict) -> Self {
+        let start = unit(verdict.right.travel);
         Self {
             id,
             hits: 0,
@@ -124,25 +124,25 @@ impl Path {
             through_surfaces: start,
             start,
             kept: Vec::new(),
-            outgoing: diagnosis.outgoing,
+            outgoing: verdict.outgoing,
         }
-        .with(call, diagnosis)
+        .with(call, verdict)
     }
 
-    fn with(mut self, call: &Call, diagnosis: &Diagnosis) -> Self {
+    fn with(mut self, call: &Call, verdict: &CallVerdict) -> Self {
         self.hits += 1;
-        if !diagnosis.ok && self.wrong.len() < MAX_KEPT {
-            self.wrong.push((self.hits, diagnosis.mistakes.clone()));
+        if !verdict.ok && self.wrong.len() < MAX_KEPT {
+            self.wrong.push((self.hits, verdict.mistakes.clone()));
         }
         let hit = Hit {
             point: call.point,
-            normal: diagnosis.right.normal,
-            mu: diagnosis.right.mu,
+            normal: verdict.right.normal,
+            mu: verdict.right.mu,
         };
         // Where the logged ray still is the right one, the retrace takes it up: rounding in
         // the logged numbers then cannot pile up over a long path, and a ray already sent wrong
         // (much farther off than that) is still followed on its own.
-        let incoming = unit(diagnosis.right.travel);
+        let incoming = unit(verdict.right.travel);
         if angle(incoming, self.through_surfaces) <= MATCH_ANGLE / 4.0 {
             self.through_surfaces = incoming;
         }
@@ -152,7 +152,7 @@ impl Path {
         } else {
             self.kept.clear();
         }
-        self.outgoing = diagnosis.outgoing;
+        self.outgoing = verdict.outgoing;
         self
     }
 
@@ -255,11 +255,11 @@ impl Paths {
     ///
     /// # Errors
     /// The hit has no `path`.
-    pub fn hit(&mut self, call: &Call, diagnosis: &Diagnosis) -> Result<Option<String>, LineError> {
+    pub fn hit(&mut self, call: &Call, verdict: &CallVerdict) -> Result<Option<String>, LineError> {
         let id = call.path.clone().ok_or(LineError::NoPath)?;
         let (current, ended) = match self.current.take() {
-            Some(path) if path.id == id => (path.with(call, diagnosis), None),
-            previous => (Path::new(id, call, diagnosis), previous),
+            Some(path) if path.id == id => (path.with(call, verdict), None),
+            previous => (Path::new(id, call, verdict), previous),
         };
         self.current = Some(current);
         Ok(ended.map(|path| self.close(&path)))

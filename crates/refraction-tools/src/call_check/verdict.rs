@@ -59,9 +59,10 @@ pub enum Resemblance {
     },
 }
 
-/// The verdict on one call.
+/// The verdict on one API call, as [`verdict()`] gives it (the whole log's mistake is
+/// [`crate::diagnosis`]'s to name).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Diagnosis {
+pub struct CallVerdict {
     /// Whether the call is right: no mistakes.
     pub ok: bool,
     /// The mistakes of every equally good explanation, the likeliest first.
@@ -292,7 +293,7 @@ fn formula_readings(readings: &[Reading], seen: Seen, right: bool, tolerance: f6
     }
 }
 
-fn verdict_in<S: Real>(call: &Call) -> Result<Diagnosis, LineError> {
+fn verdict_in<S: Real>(call: &Call) -> Result<CallVerdict, LineError> {
     let tolerance = Tolerance::new(&call.digits, S::EPSILON.to_f64());
     let returns = returns::<S>(call, &tolerance)?;
     let seen = returns.see(call.got);
@@ -325,7 +326,7 @@ fn verdict_in<S: Real>(call: &Call) -> Result<Diagnosis, LineError> {
         ok && sampled.is_none(),
         candidate_check::MATCH_ANGLE.max(2.0 * returns.distance),
     );
-    Ok(Diagnosis {
+    Ok(CallVerdict {
         ok,
         mistakes,
         alternatives,
@@ -347,7 +348,7 @@ fn verdict_in<S: Real>(call: &Call) -> Result<Diagnosis, LineError> {
 /// `entering` is logged for pbrt or Mitsuba whether the normal is the outward one, whether it
 /// is a sampled reflection, and, for a right call whose ratio nothing checks, what is missing.
 #[must_use]
-pub fn evidence(call: &Call, diagnosis: &Diagnosis) -> Evidence {
+pub fn evidence(call: &Call, verdict: &CallVerdict) -> Evidence {
     let either_side = matches!(call.api, Api::Pbrt | Api::Mitsuba);
     // pbrt's and Mitsuba's wi points back along the ray: the normal is on the incoming side
     // when it points the way wi does. GLSL's I and the book's uv point along the ray.
@@ -363,7 +364,7 @@ pub fn evidence(call: &Call, diagnosis: &Diagnosis) -> Evidence {
         None if either_side => Some(Side::Inside),
         None => None,
     };
-    let m = &diagnosis.right;
+    let m = &verdict.right;
     let cos = m.travel.dot(m.normal) / (length(m.travel) * length(m.normal));
     let logged_entering = call
         .truth
@@ -376,23 +377,23 @@ pub fn evidence(call: &Call, diagnosis: &Diagnosis) -> Evidence {
     };
     // A reflection read as sampled is a false total internal reflection if the log shows
     // that the code never transmits at its angles.
-    let alternatives = if diagnosis.ok && diagnosis.sampled.is_some() {
+    let alternatives = if verdict.ok && verdict.sampled.is_some() {
         vec![vec![Code::FalseTir]]
     } else {
-        diagnosis.alternatives.clone()
+        verdict.alternatives.clone()
     };
     Evidence {
-        ok: diagnosis.ok,
+        ok: verdict.ok,
         alternatives,
-        views: diagnosis.readings.views(),
+        views: verdict.readings.views(),
         side,
         past_critical: m.mu * m.mu * (1.0 - cos * cos) > 1.0,
         normal_outward: logged_entering
             .filter(|_| either_side)
             .map(|entering| toward_origin == entering),
         band: diagnosis::band(log_map::incidence_deg(m.travel, m.normal)),
-        transmitted: diagnosis.transmitted,
-        sample: diagnosis.sampled.map(f64::ln),
+        transmitted: verdict.transmitted,
+        sample: verdict.sampled.map(f64::ln),
         unchecked,
         told: Told {
             entering: logged_entering.is_some(),
@@ -405,10 +406,10 @@ pub fn evidence(call: &Call, diagnosis: &Diagnosis) -> Evidence {
 /// the direction the student's code sent the ray in is from the right one (T, or the
 /// reflected ray past the critical angle; none is known when the call's ray is unknown).
 #[must_use]
-pub fn point(call: &Call, diagnosis: &Diagnosis) -> LinePoint {
-    let evidence = evidence(call, diagnosis);
-    let m = &diagnosis.right;
-    let right = match diagnosis.t {
+pub fn point(call: &Call, verdict: &CallVerdict) -> LinePoint {
+    let evidence = evidence(call, verdict);
+    let m = &verdict.right;
+    let right = match verdict.t {
         Some(t) => Some(DVec3::from_array(t)),
         None => evidence
             .past_critical
@@ -416,10 +417,10 @@ pub fn point(call: &Call, diagnosis: &Diagnosis) -> LinePoint {
     };
     LinePoint {
         incidence_deg: log_map::incidence_deg(m.travel, m.normal),
-        error_deg: right.map_or(0.0, |right| log_map::angle_deg(diagnosis.outgoing, right)),
+        error_deg: right.map_or(0.0, |right| log_map::angle_deg(verdict.outgoing, right)),
         side: evidence.side,
         past_critical: evidence.past_critical,
-        ok: diagnosis.ok,
+        ok: verdict.ok,
     }
 }
 
@@ -427,7 +428,7 @@ pub fn point(call: &Call, diagnosis: &Diagnosis) -> LinePoint {
 ///
 /// # Errors
 /// An argument too large for that precision.
-pub fn verdict(call: &Call) -> Result<Diagnosis, LineError> {
+pub fn verdict(call: &Call) -> Result<CallVerdict, LineError> {
     match call.precision {
         Precision::F32 => verdict_in::<f32>(call),
         Precision::F64 => verdict_in::<f64>(call),

@@ -11,7 +11,7 @@ use serde_json::Value as Json;
 
 use super::literal;
 use crate::call_check::fields::names;
-use crate::call_check::{Call, Code, Diagnosis};
+use crate::call_check::{Call, CallVerdict, Code};
 use crate::solve::Precision;
 
 /// The language a test is written in.
@@ -74,15 +74,15 @@ impl<'a> ApiCase<'a> {
     /// The case of a judged call: its arguments and what the API returns for them, and the
     /// right call for its ray ([`right_args`]).
     #[must_use]
-    pub fn of(call: &'a Call, diagnosis: &'a Diagnosis) -> Self {
+    pub fn of(call: &'a Call, verdict: &'a CallVerdict) -> Self {
         Self {
             api: call.api,
             args: call.args,
-            returned: &diagnosis.api_result,
+            returned: &verdict.api_result,
             precision: call.precision,
-            mistakes: &diagnosis.mistakes,
-            right: right_args(call, diagnosis),
-            t: diagnosis.t,
+            mistakes: &verdict.mistakes,
+            right: right_args(call, verdict),
+            t: verdict.t,
         }
     }
 }
@@ -90,8 +90,8 @@ impl<'a> ApiCase<'a> {
 /// The right arguments for a judged call's ray in its API's convention: the normal facing the
 /// ray, and the ratio the ray's media give.
 #[must_use]
-pub fn right_args(call: &Call, diagnosis: &Diagnosis) -> Args<f64> {
-    let m = diagnosis.right;
+pub fn right_args(call: &Call, verdict: &CallVerdict) -> Args<f64> {
+    let m = verdict.right;
     let facing = if m.travel.dot(m.normal) > 0.0 {
         -m.normal
     } else {

@@ -94,8 +94,8 @@ pub fn text(
                 .iter()
                 .filter_map(|f| match &f.judgement {
                     Judgement::Api(judged) => {
-                        let (call, diagnosis) = &**judged;
-                        Some((Name::Line(f.line), ApiCase::of(call, diagnosis)))
+                        let (call, verdict) = &**judged;
+                        Some((Name::Line(f.line), ApiCase::of(call, verdict)))
                     }
                     Judgement::Physics(_) => None,
                 })
