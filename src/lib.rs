@@ -10,6 +10,11 @@
 //!   line: `crates/refraction-web` starts the window in a browser page).
 //! - [`web_page`]: the HTML page that loads the web build, which `cargo xtask web` writes.
 
+/// The window title: the program's name, the same in every language (so that a window
+/// manager's rules and a teacher's shortcut find it), and the web page's title.
+// untranslated: the program's name.
+pub const TITLE: &str = "Refraction explorer";
+
 pub mod app;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod cli;

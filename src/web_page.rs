@@ -8,7 +8,7 @@
 
 use refraction_i18n::{Locale, set_locale, t};
 
-use crate::app::TITLE;
+use crate::TITLE;
 
 /// The id of the page's canvas, which the module starts the explorer on.
 pub const CANVAS_ID: &str = "explorer";

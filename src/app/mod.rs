@@ -44,6 +44,7 @@ pub use presentation::ZOOM as PRESENTATION_ZOOM;
 
 use egui::{Panel, RichText, ScrollArea, Ui};
 
+use crate::TITLE;
 use accuracy::AccuracyView;
 use controls::Controls;
 use effects_menu::EffectsMenu;
@@ -60,11 +61,6 @@ use refraction_tools::state_file;
 pub use scenes::ScenesView;
 pub use status::Status;
 use tools::Tools;
-
-/// The window title: the program's name, the same in every language (so that a window
-/// manager's rules and a teacher's shortcut find it).
-// untranslated: the program's name.
-pub const TITLE: &str = "Refraction explorer";
 
 /// Where eframe keeps the last state between runs.
 const STORAGE_KEY: &str = "explorer_state";

@@ -8,7 +8,7 @@ use glam::Vec2;
 use refraction_diagram::Primitive;
 use refraction_diagram::geometry::Colour;
 use refraction_diagram::palette::Palette;
-use refraction_diagram::placer::PAD;
+use refraction_diagram::shapes::PAD;
 use refraction_diagram::shapes::{Align, Label};
 
 /// The egui colour of a diagram colour.

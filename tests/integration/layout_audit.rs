@@ -390,7 +390,7 @@ struct Obstacles {
     heads: Vec<(String, Vec<GVec2>)>,
     discs: Vec<(String, GVec2, f32)>,
     /// The rays' shafts: what no label may lie on.
-    shafts: Vec<(String, refraction_diagram::placer::Obstacle)>,
+    shafts: Vec<(String, refraction_diagram::obstacle::Obstacle)>,
 }
 
 fn check_labels(
@@ -490,7 +490,7 @@ fn audit_diagram(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<Strin
         } = shape
         {
             if *role == refraction_diagram::shapes::ArrowRole::Vector {
-                let shaft = refraction_diagram::placer::Obstacle::Shaft {
+                let shaft = refraction_diagram::obstacle::Obstacle::Shaft {
                     a: *from,
                     b: *to,
                     half_width: stroke.width * 0.5,
@@ -596,7 +596,7 @@ fn audit_scene(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>
         .iter()
         .filter(|s| s.intensity.is_none_or(|i| i >= 0.05))
         .map(|s| {
-            let shaft = refraction_diagram::placer::Obstacle::Shaft {
+            let shaft = refraction_diagram::obstacle::Obstacle::Shaft {
                 a: layout.at(s.from),
                 b: layout.at(s.to),
                 half_width: 0.5,
@@ -943,7 +943,7 @@ fn the_audit_finds_what_it_looks_for() {
         discs: vec![("W handle".to_owned(), GVec2::new(20.0, 20.0), 5.0)],
         shafts: vec![(
             "T's shaft".to_owned(),
-            refraction_diagram::placer::Obstacle::Shaft {
+            refraction_diagram::obstacle::Obstacle::Shaft {
                 a: GVec2::new(150.0, 80.0),
                 b: GVec2::new(250.0, 95.0),
                 half_width: 1.0,

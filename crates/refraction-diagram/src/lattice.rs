@@ -10,8 +10,7 @@
 use glam::Vec2;
 
 use super::geometry::Rect;
-use super::placer::{PAD, boxed};
-use super::shapes::Label;
+use super::shapes::{Label, PAD};
 
 /// The lattice over `bounds` for a label of `size`: its step and how many steps it spans
 /// along each side.
@@ -60,7 +59,7 @@ impl Shape {
                 let at = anchor(corner);
                 // Measured from the anchor, so that what is checked is exactly what a
                 // reader of the label's anchor computes.
-                let r = boxed(label, self.extent, at);
+                let r = label.boxed(self.extent, at);
                 let inside = r.min.cmpge(bounds.min).all() && r.max.cmple(bounds.max).all();
                 let distance = at.distance(label.at);
                 inside.then_some((u64::from(distance.to_bits()) << 32) | i as u64)
@@ -71,7 +70,7 @@ impl Shape {
             .map(|key| {
                 let i = key as u32 as usize;
                 let at = anchor((i % (columns + 1), i / (columns + 1)));
-                (at, boxed(label, self.extent, at))
+                (at, label.boxed(self.extent, at))
             })
             .collect()
     }

@@ -33,6 +33,7 @@ pub mod intensities;
 mod lattice;
 pub mod layout;
 pub mod numbers;
+pub mod obstacle;
 mod obstacle_grid;
 pub mod overlay;
 pub mod palette;

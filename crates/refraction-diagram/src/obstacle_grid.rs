@@ -15,7 +15,7 @@ use core::ops::Range;
 use glam::Vec2;
 
 use super::geometry::Rect;
-use super::placer::Obstacle;
+use super::obstacle::Obstacle;
 
 /// The side of a cell in pixels: about a line of label text, so that a label's box spans a
 /// handful of cells.

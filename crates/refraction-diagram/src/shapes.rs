@@ -4,7 +4,7 @@
 
 use glam::Vec2;
 
-use super::geometry::{Colour, arrowhead, dash};
+use super::geometry::{Colour, Rect, arrowhead, dash};
 
 /// A dash pattern, named so that a test (or a reader without colour vision) can tell the
 /// strokes apart.
@@ -107,6 +107,24 @@ pub struct Label {
     pub colour: Colour,
     /// A box behind the text, for legibility over lines and shading.
     pub background: Option<Colour>,
+}
+
+/// The margin drawn around a label's text (its background box), as a fraction of its size: the
+/// painters draw the background this much larger than the text.
+pub const PAD: f32 = 0.2;
+
+impl Label {
+    /// The box the label covers with its anchor at `at`, when its text measures `extent`: the
+    /// text and the background's margin ([`PAD`]).
+    #[must_use]
+    pub fn boxed(&self, extent: Vec2, at: Vec2) -> Rect {
+        let pad = Vec2::splat(self.size * PAD);
+        let min = at - extent * Vec2::new(self.h.fraction(), self.v.fraction()) - pad;
+        Rect {
+            min,
+            max: min + extent + pad * 2.0,
+        }
+    }
 }
 
 /// One thing the diagram draws.

@@ -25,7 +25,8 @@ use wasm_bindgen::JsCast as _;
 
 pub(super) use files::dialog;
 
-use super::{Explorer, Launch, TITLE};
+use super::{Explorer, Launch};
+use crate::TITLE;
 
 /// How often the settings and the last state are written to the browser's storage: a page
 /// can be closed at any moment, and the browser does not always say so.

@@ -21,8 +21,8 @@ use refraction_tools::call_check::{
     Dialect, Format, Judgement, LineError, Options, Pattern, PatternError, Record, SAMPLED,
     SKIPPED, Session, Tally, fields,
 };
+use refraction_tools::call_check::{Failing, MAX_TESTS};
 use refraction_tools::diagnosis::Summary;
-use refraction_tools::snippets::tests_file::{Failing, MAX_TESTS};
 
 /// The most characters the box takes (a paste beyond it is cut there): about 500 log lines.
 pub(super) const MAX_PASTED_CHARS: usize = 65_536;

@@ -12,8 +12,9 @@ use crate::app::file_dialog::{self, FileDialog, Purpose, Target};
 use crate::app::status::{self, Look, Status};
 use refraction_i18n::t;
 use refraction_tools::call_check::{Dialect, Options};
+use refraction_tools::call_check::{Failing, MAX_TESTS};
 use refraction_tools::snippets::AnyLanguage;
-use refraction_tools::snippets::tests_file::{self, Failing, MAX_TESTS, TestLanguage};
+use refraction_tools::snippets::tests_file::{self, TestLanguage};
 
 /// The most lines judged in the window (a log file can be longer: `check` takes any length).
 pub(super) const MAX_JUDGED: usize = 100_000;

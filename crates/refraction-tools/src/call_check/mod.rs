@@ -48,7 +48,6 @@ pub use verdict::{CallVerdict, verdict};
 
 use crate::candidate_check::{self, Match};
 use crate::diagnosis::{Evidence, LogTally, Summary};
-use crate::snippets::tests_file::{Failing, MAX_TESTS};
 use gather::Gather;
 
 /// The JSON answer for one call.
@@ -91,6 +90,20 @@ pub fn check_record(record: &Record, options: &Options) -> Result<(Call, CallVer
     let call = Call::from_record(record, options)?;
     let verdict = verdict(&call)?;
     Ok((call, verdict))
+}
+
+/// The most failing lines a session keeps to be written as tests (a test file holds no more).
+pub const MAX_TESTS: usize = 100;
+
+/// A failing line, kept to be written as a test.
+#[derive(Clone, Debug)]
+pub struct Failing {
+    /// Its line number in the log, from 1.
+    pub line: usize,
+    /// The call read.
+    pub record: Record,
+    /// Its verdict.
+    pub judgement: Judgement,
 }
 
 /// Counts of verdicts by mistake, for the summary on stderr.

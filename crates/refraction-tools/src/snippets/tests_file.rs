@@ -9,10 +9,7 @@ use refraction_i18n::t;
 use super::api::{self, ApiCase, Language, Name};
 use super::{AnyCase, AnyLanguage, any_renderer_tests};
 use crate::call_check::physics::Case;
-use crate::call_check::{Dialect, Judgement, LineError, Options, Record};
-
-/// The most failing lines a test file holds.
-pub const MAX_TESTS: usize = 100;
+use crate::call_check::{Dialect, Failing, Judgement, LineError, Options};
 
 /// The first line of every test file written, after the language's comment mark: how a file
 /// this tool may replace is told from the student's own code.
@@ -65,17 +62,6 @@ impl TestLanguage {
             _ => "//",
         }
     }
-}
-
-/// A failing line, kept to be written as a test.
-#[derive(Clone, Debug)]
-pub struct Failing {
-    /// Its line number in the log, from 1.
-    pub line: usize,
-    /// The call read.
-    pub record: Record,
-    /// Its verdict.
-    pub judgement: Judgement,
 }
 
 /// The tests of `failing` lines (read with `options`) in `language`, after the mark that
