@@ -32,6 +32,7 @@ mod layout_audit;
 mod lesson_deck;
 mod lessons_cli;
 mod links;
+mod module_circles;
 mod parsers_fuzz;
 mod render_cli;
 mod renderer_families;
