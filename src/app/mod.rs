@@ -44,7 +44,6 @@ pub use presentation::ZOOM as PRESENTATION_ZOOM;
 
 use egui::{Panel, RichText, ScrollArea, Ui};
 
-use crate::TITLE;
 use accuracy::AccuracyView;
 use controls::Controls;
 use effects_menu::EffectsMenu;
@@ -558,7 +557,7 @@ impl eframe::App for Explorer {
 pub fn run(launch: Launch) -> Result<(), eframe::Error> {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
-            .with_title(TITLE)
+            .with_title(crate::TITLE)
             .with_inner_size([1200.0, 680.0])
             .with_min_inner_size([900.0, 560.0])
             .with_fullscreen(launch.present),
@@ -566,7 +565,7 @@ pub fn run(launch: Launch) -> Result<(), eframe::Error> {
         ..eframe::NativeOptions::default()
     };
     eframe::run_native(
-        TITLE,
+        crate::TITLE,
         options,
         Box::new(move |cc| {
             install_fonts(&cc.egui_ctx);
