@@ -474,16 +474,7 @@ impl ScenesView {
             .interact_pointer_pos()
             .filter(|_| response.clicked());
         let dragging = self.handles(ui, &response, &to_screen, &layout, &mut clicked_at);
-        self.drag_layout = dragging.then_some(layout);
-        if !dragging && self.draft.take().is_some() {
-            // The drag has ended: the scene in full again, in this frame.
-            self.retrace();
-        }
-        if self.frame_to(&layout) {
-            // Drawn again at once in the widened world, not at the next pointer move (a
-            // projector left alone would keep this frame's letterbox).
-            ui.ctx().request_repaint();
-        }
+        self.after_handles(ui, dragging, &layout);
         self.drawn = Some((rect, layout));
         // The layout fits the whole trace, so that revealing the answer does not move the view.
         let hidden = self
@@ -539,6 +530,21 @@ impl ScenesView {
         )
         .map_err(|e| self.error = Some(e.to_string()))
         .ok()
+    }
+
+    /// After the handles of a frame drawn with `layout`: a drag keeps that layout; a drag that
+    /// has ended traces the scene in full again, in this frame; the world is widened to a
+    /// canvas of another shape.
+    fn after_handles(&mut self, ui: &Ui, dragging: bool, layout: &SceneLayout) {
+        self.drag_layout = dragging.then_some(*layout);
+        if !dragging && self.draft.take().is_some() {
+            self.retrace();
+        }
+        if self.frame_to(layout) {
+            // Drawn again at once in the widened world, not at the next pointer move (a
+            // projector left alone would keep this frame's letterbox).
+            ui.ctx().request_repaint();
+        }
     }
 
     /// One draggable, named widget per handle of `layout`; a drag edits the scene (and

@@ -9,6 +9,7 @@
 
 use glam::Vec2;
 
+use super::buckets;
 use super::geometry::Rect;
 use super::shapes::{Label, PAD};
 
@@ -80,26 +81,14 @@ impl Shape {
 /// counting sort, the steps from `most_steps` on as one), then each step's few by their keys.
 /// The order of one sort of them all, in a fraction of the time for the thousands of spots of
 /// a drawing.
-pub(crate) fn sort_keys_by_steps(keys: &mut Vec<u64>, step: f32, most_steps: usize) {
+fn sort_keys_by_steps(keys: &mut Vec<u64>, step: f32, most_steps: usize) {
     let steps_of = |key: u64| {
         let distance = f32::from_bits((key >> 32) as u32);
         // The cast truncates (NaN to 0): every key's bucket is no less than an earlier one's.
         ((distance / step) as usize).min(most_steps)
     };
-    let mut starts = vec![0_usize; most_steps + 2];
-    for &key in keys.iter() {
-        starts[steps_of(key) + 1] += 1;
-    }
-    for i in 0..=most_steps {
-        starts[i + 1] += starts[i];
-    }
-    let mut next = starts.clone();
-    let mut sorted = vec![0_u64; keys.len()];
-    for &key in keys.iter() {
-        let at = &mut next[steps_of(key)];
-        sorted[*at] = key;
-        *at += 1;
-    }
+    let (mut sorted, starts) =
+        buckets::sorted(keys, most_steps + 1, |&key| steps_of(key), |&key| key);
     for bucket in starts.windows(2) {
         sorted[bucket[0]..bucket[1]].sort_unstable();
     }

@@ -24,6 +24,7 @@
 
 pub mod accuracy_plot;
 pub mod animation;
+mod buckets;
 pub mod equations;
 pub mod failure_map;
 pub mod font;

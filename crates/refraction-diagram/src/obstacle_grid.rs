@@ -14,6 +14,7 @@ use core::ops::Range;
 
 use glam::Vec2;
 
+use super::buckets;
 use super::geometry::Rect;
 use super::obstacle::Obstacle;
 
@@ -68,7 +69,7 @@ pub(crate) struct ObstacleGrid {
     rows: usize,
     /// Where each (cell, rank) list starts in `entries`, cell by cell, rank by rank, and
     /// one past the last list's end.
-    starts: Vec<u32>,
+    starts: Vec<usize>,
     /// The obstacles, list after list.
     entries: Vec<Entry>,
 }
@@ -210,31 +211,12 @@ impl ObstacleGrid {
     /// obstacles in the order given.
     fn sort_into_lists(&mut self, pairs: &[(u32, Entry)]) {
         let lists = self.columns * self.rows * RANKS;
-        let mut starts = vec![0_u32; lists + 1];
-        for &(list, _) in pairs {
-            starts[list as usize + 1] += 1;
-        }
-        for i in 0..lists {
-            starts[i + 1] += starts[i];
-        }
-        let mut next = starts.clone();
-        let mut entries = vec![
-            Entry {
-                index: 0,
-                within: Rect {
-                    min: Vec2::ZERO,
-                    max: Vec2::ZERO
-                }
-            };
-            pairs.len()
-        ];
-        for &(list, entry) in pairs {
-            let at = &mut next[list as usize];
-            entries[*at as usize] = entry;
-            *at += 1;
-        }
-        self.starts = starts;
-        self.entries = entries;
+        (self.entries, self.starts) = buckets::sorted(
+            pairs,
+            lists,
+            |&(list, _)| list as usize,
+            |&(_, entry)| entry,
+        );
     }
 
     /// The cell's own box, grown by a pixel (so that an obstacle on its border is in it).
@@ -279,10 +261,7 @@ impl ObstacleGrid {
         for row in self.along(r.min.y, r.max.y, self.origin.y, self.rows) {
             for column in columns.clone() {
                 let list = (row * self.columns + column) * RANKS;
-                let (from, to) = (
-                    self.starts[list] as usize,
-                    self.starts[list + ranks] as usize,
-                );
+                let (from, to) = (self.starts[list], self.starts[list + ranks]);
                 for entry in &self.entries[from..to] {
                     let within = &entry.within;
                     let apart = within.max.cmplt(r.min).any() || r.max.cmplt(within.min).any();
