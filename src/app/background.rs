@@ -30,6 +30,7 @@ impl<T> Job<T> {
     #[must_use]
     #[cfg_attr(
         target_arch = "wasm32",
+        // untranslated: a lint's reason, for developers.
         expect(clippy::unused_self, reason = "a desktop's job asks its thread")
     )]
     pub(super) fn is_finished(&self) -> bool {

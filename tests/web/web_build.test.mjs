@@ -159,6 +159,26 @@ test('a panic is shown over the page with its message, a reload and the last sta
   });
 });
 
+test('a dropped file too large for the page is refused before it is read, and said', async () => {
+  await served(async (context, base) => {
+    const page = await newPage(context);
+    await open(page, base);
+    await page.evaluate(() => {
+      const file = new File([new Uint8Array(17 * 1024 * 1024)], 'huge.log');
+      const data = new DataTransfer();
+      data.items.add(file);
+      const canvas = document.getElementById('explorer');
+      for (const type of ['dragenter', 'dragover', 'drop']) {
+        canvas.dispatchEvent(new DragEvent(type, { dataTransfer: data, bubbles: true, cancelable: true }));
+      }
+    });
+    await page.waitForFunction(() => /huge\.log is 17\.0 MB/.test(document.getElementById('status')?.textContent ?? ''));
+    const words = await page.textContent('#status');
+    assert.match(words, /at most 16 MB/, words);
+    assert.deepEqual(page.errors, [], 'no console error');
+  });
+});
+
 test('inside another page, a link opens the explorer in a tab of its own at the same state', async () => {
   await served(async (context, base) => {
     const page = await newPage(context);

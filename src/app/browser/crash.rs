@@ -76,6 +76,7 @@ pub(super) fn panic_if_asked(fragment: &str) {
     let asked = cfg!(debug_assertions) && fragment == DEBUG_PANIC_FRAGMENT;
     assert!(
         !asked,
+        // untranslated: a panic's message, which the overlay quotes as the program said it.
         "panicked on purpose: the address asked for it ({DEBUG_PANIC_FRAGMENT})"
     );
 }
