@@ -61,7 +61,7 @@ web-one-thread = En un navegador esto se ejecuta en el único hilo de la página
 
 ## The installable page, a panic over the page, the page's file reads, inside another page (issue 44)
 
-web-manifest-description = Arrastra el rayo, la normal y los índices de refracción, y mira cómo responden el rayo refractado, sus cuatro candidatos de signo y la reflexión total interna.
+web-manifest-description = Arrastra el rayo, la normal y los índices de refracción, y mira cómo responden el rayo refractado, sus cuatro candidatos de signo y la reflexión total.
 web-crash-title = El explorador se detuvo: un error en su programa. Lo que dijo:
 web-crash-reload = Recargar la página
 web-crash-reopen = Recargar con el último estado, para no perder nada (o copia este enlace para guardarlo):

@@ -61,13 +61,13 @@ web-one-thread = Dans un navigateur, ceci tourne sur le seul fil d’exécution 
 
 ## The installable page, a panic over the page, the page's file reads, inside another page (issue 44)
 
-web-manifest-description = Faites glisser le rayon, la normale et les indices de réfraction, et regardez le rayon réfracté, ses quatre candidats de signe et la réflexion totale interne suivre.
-web-crash-title = L’explorateur s’est arrêté : une erreur dans son programme. Ce qu’il a dit :
+web-manifest-description = Fais glisser le rayon, la normale et les indices de réfraction, et regarde le rayon réfracté, ses quatre candidats de signe et la réflexion totale suivre.
+web-crash-title = L’explorateur s’est arrêté : une erreur dans son programme. Ce qu’il a dit :
 web-crash-reload = Recharger la page
-web-crash-reopen = Recharger avec le dernier état, pour ne rien perdre (ou copiez ce lien pour le garder) :
+web-crash-reopen = Recharger avec le dernier état, pour ne rien perdre (ou copie ce lien pour le garder) :
 # $name: the file's name; $reason: the browser's own words
 web-read-failed = Le navigateur n’a pas pu lire { $name } ({ $reason }).
 # $name: the file's name; $size and $limit: sizes in MB
-web-file-too-large = { $name } pèse { $size } Mo : la page ouvre des fichiers de { $limit } Mo au plus.
+web-file-too-large = { $name } pèse { $size } Mo : la page ouvre des fichiers de { $limit } Mo au plus.
 web-open-in-tab = ↗ Ouvrir dans un nouvel onglet
-web-open-in-tab-hover = Cette page est dans une autre page : ouvrez l’explorateur dans un onglet à lui pour le plein écran et la copie
+web-open-in-tab-hover = Cette page est dans une autre page : ouvre l’explorateur dans un onglet à lui pour le plein écran et la copie

@@ -61,7 +61,7 @@ web-one-thread = No navegador isto roda na única thread da página: a página n
 
 ## The installable page, a panic over the page, the page's file reads, inside another page (issue 44)
 
-web-manifest-description = Arraste o raio, a normal e os índices de refração e veja o raio refratado, seus quatro candidatos de sinal e a reflexão interna total responderem.
+web-manifest-description = Arraste o raio, a normal e os índices de refração e veja o raio refratado, seus quatro candidatos de sinal e a reflexão total responderem.
 web-crash-title = O explorador parou: um erro no seu programa. O que ele disse:
 web-crash-reload = Recarregar a página
 web-crash-reopen = Recarregar com o último estado, para nada se perder (ou copie este link para guardá-lo):
@@ -70,4 +70,4 @@ web-read-failed = O navegador não conseguiu ler { $name } ({ $reason }).
 # $name: the file's name; $size and $limit: sizes in MB
 web-file-too-large = { $name } tem { $size } MB: a página abre arquivos de no máximo { $limit } MB.
 web-open-in-tab = ↗ Abrir em uma nova aba
-web-open-in-tab-hover = Esta página está dentro de outra: abra o explorador em uma aba própria para a tela cheia e para copiar
+web-open-in-tab-hover = Esta página está dentro de outra: abra o explorador em uma aba própria para apresentar em todo o monitor e para copiar
