@@ -4,6 +4,7 @@
 //! written: every write goes through [`output`] and a failed one sets the exit status.
 
 pub(crate) mod bench;
+pub(crate) mod inputs;
 pub(crate) mod lessons;
 pub(crate) mod lines;
 pub(crate) mod output;

@@ -526,3 +526,102 @@ fn check_that_judged_no_line_exits_with_its_own_status() {
         assert!(stderr(&output).contains("No line was judged"), "{output:?}");
     }
 }
+
+/// A one-step deck file's text (the step's scene `scene`, if any).
+fn deck_text(title: &str, scene: Option<&str>) -> String {
+    let scene = scene.map_or_else(String::new, |s| {
+        format!("view = \"scenes\"\nscene = \"{s}\"\n")
+    });
+    format!(
+        "[deck]\nversion = 1\ntitle = \"{title}\"\n\n[[step]]\ntitle = \"One\"\n{scene}\
+         w = [0.6, -0.8, 0]\nn = [0, 1, 0]\nmu_i = 1\nmu_t = 1.5\n"
+    )
+}
+
+#[test]
+fn render_never_writes_over_a_file_it_reads_under_any_name() {
+    // Issue 40: `render --lesson deck.pdf --out deck.pdf` replaced the deck with the handout.
+    let folder = folder("output-is-input");
+    let deck = folder.join("deck.pdf");
+    let text = deck_text("Mine", None);
+    fs::write(&deck, &text).unwrap();
+    fs::hard_link(&deck, folder.join("alias.pdf")).unwrap();
+    let state = folder.join("state.svg");
+    fs::write(&state, GOOD).unwrap();
+    let scene = folder.join("step-01.svg");
+    fs::write(
+        &scene,
+        "title = \"Ray\"\n[source]\nkind = \"ray\"\norigin = [0, 0]\ndirection = [1, 0]\n",
+    )
+    .unwrap();
+    let scene_deck = folder.join("scenes.toml");
+    fs::write(&scene_deck, deck_text("Scenes", Some("step-01.svg"))).unwrap();
+    let path = |name: &str| folder.join(name).display().to_string();
+    let (deck_arg, state_arg) = (path("deck.pdf"), path("state.svg"));
+    for (args, stdin) in [
+        (
+            vec!["render", "--lesson", &deck_arg, "--out", &deck_arg],
+            None,
+        ),
+        (
+            vec!["render", "--lesson", &deck_arg, "--out", &path("alias.pdf")],
+            None,
+        ),
+        (
+            vec!["render", "--lesson", "/dev/stdin", "--out", &deck_arg],
+            Some(&deck),
+        ),
+        (
+            vec![
+                "render",
+                "--lesson",
+                &path("scenes.toml"),
+                "--out",
+                &path(""),
+            ],
+            None,
+        ),
+        (
+            vec!["render", "--state", &state_arg, "--out", &state_arg],
+            None,
+        ),
+        (
+            vec![
+                "render",
+                &path("step-01.svg"),
+                "--out",
+                &path("step-01.svg"),
+            ],
+            None,
+        ),
+    ] {
+        let mut command = Command::new(BIN);
+        command.args(&args);
+        if let Some(stdin) = stdin {
+            command.stdin(File::open(stdin).unwrap());
+        }
+        let output = command.output().unwrap();
+        assert_eq!(output.status.code(), Some(2), "{args:?}: {output:?}");
+        let said = stderr(&output);
+        assert!(
+            said.contains("being read") && said.contains("nothing was written"),
+            "{args:?}: {said}"
+        );
+    }
+    let appended = Command::new(BIN)
+        .args(["render", "--state", &state_arg, "--out", "-"])
+        .stdout(File::options().append(true).open(&state).unwrap())
+        .output()
+        .unwrap();
+    assert_eq!(appended.status.code(), Some(2), "{appended:?}");
+    assert_eq!(fs::read_to_string(&deck).unwrap(), text);
+    assert_eq!(fs::read_to_string(&state).unwrap(), GOOD);
+    assert!(fs::read_to_string(&scene).unwrap().starts_with("title"));
+    let handout = path("handout.pdf");
+    let output = run(&["render", "--lesson", &deck_arg, "--out", &handout], "");
+    assert!(
+        output.status.success(),
+        "another name is written: {output:?}"
+    );
+    fs::remove_dir_all(&folder).unwrap();
+}
