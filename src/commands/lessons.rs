@@ -76,6 +76,9 @@ enum LessonFailure {
     /// `--out` names the deck or one of its scene files.
     #[error(transparent)]
     OutputIsInput(#[from] OutputIsInput),
+    /// `--web-base` cannot start a link.
+    #[error(transparent)]
+    WebBase(#[from] super::WebBaseRefused),
 }
 
 /// What `--out` asks for: a folder when it ends in `/` or is one, a handout when it ends in
@@ -179,17 +182,21 @@ pub(crate) fn render(
     (sheet, web_base): (Sheet, Option<&str>),
 ) -> ExitCode {
     let checked = check_size(size.0, size.1).map_err(LessonFailure::from);
-    let drawn = checked.and_then(|()| out_of(out)).and_then(|to| {
-        let deck = Deck::load(lesson)?;
-        let inputs = inputs_of(lesson, &deck);
-        match to {
-            Out::Handout(path) => {
-                refuse_inputs([path.as_path()], "--out", &inputs)?;
-                Ok(write(&deck, sheet, web_base, &path)?)
+    let base = checked.and_then(|()| Ok(super::web_base(web_base)?));
+    let drawn = base
+        .and_then(|base| Ok((base, out_of(out)?)))
+        .and_then(|(base, to)| {
+            let web_base = base.as_deref();
+            let deck = Deck::load(lesson)?;
+            let inputs = inputs_of(lesson, &deck);
+            match to {
+                Out::Handout(path) => {
+                    refuse_inputs([path.as_path()], "--out", &inputs)?;
+                    Ok(write(&deck, sheet, web_base, &path)?)
+                }
+                Out::Folder(folder) => pictures(&deck, &folder, size, &inputs),
             }
-            Out::Folder(folder) => pictures(&deck, &folder, size, &inputs),
-        }
-    });
+        });
     match drawn {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => fail("render", &message),

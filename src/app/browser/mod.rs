@@ -21,6 +21,7 @@ mod page;
 use core::time::Duration;
 
 use refraction_i18n::t;
+use refraction_tools::link;
 use wasm_bindgen::JsCast as _;
 
 pub(super) use files::dialog;
@@ -172,8 +173,10 @@ fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement
         ..Launch::default()
     };
     let mut explorer = Explorer::launched(launch, saved);
+    // The page's own address, where it can start a link (a `file:` page's can, with a word
+    // in the QR dialog that a phone cannot open it).
     if explorer.web_base().is_empty()
-        && let Some(address) = page::address()
+        && let Some(address) = page::address().and_then(|a| link::web_base(&a).ok())
     {
         explorer.set_web_base(&address);
     }
