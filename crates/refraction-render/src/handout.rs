@@ -131,7 +131,7 @@ impl Foot {
             bytes: link.len(),
             most_mm: (QR_MOST_SIDE * MM_PER_PT).round() as u32,
         };
-        let code = refraction_diagram::qr::Code::new(link).map_err(|_| too_long())?;
+        let code = refraction_diagram::qr::Code::new(link).map_err(|_too_long| too_long())?;
         let side = (code.side_in_modules() as f32 * QR_MODULE_PT).max(QR_SIDE);
         if side > QR_MOST_SIDE {
             return Err(too_long());

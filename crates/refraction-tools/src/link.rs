@@ -537,4 +537,105 @@ mod tests {
         assert_eq!(decode("%CE"), Err(LinkError::CutShort));
         assert!(matches!(decode("%CEx"), Err(LinkError::Malformed(_))));
     }
+
+    #[test]
+    fn a_web_address_is_checked_once_for_every_way_it_comes_in() {
+        // Issue 40: U+202E, port 99999, bad escapes and `javascript:` were accepted.
+        assert_eq!(
+            web_base(" HTTPS://School.Example/explorer/#old "),
+            Ok("https://school.example/explorer/".to_owned())
+        );
+        assert_eq!(
+            web_base("file:///home/teacher/explorer/index.html"),
+            Ok("file:///home/teacher/explorer/index.html".to_owned())
+        );
+        assert_eq!(
+            web_base("http://localhost:8080/%C3%A9/"),
+            Ok("http://localhost:8080/%C3%A9/".to_owned())
+        );
+        let refused = |text: &str| web_base(text).unwrap_err();
+        assert_eq!(refused(""), WebBaseError::Empty);
+        assert_eq!(
+            refused("https://school.example/\u{202e}lmth.x"),
+            WebBaseError::Unseen("\\u{202e}".to_owned())
+        );
+        assert!(matches!(refused("https://a b/"), WebBaseError::Unseen(_)));
+        assert!(matches!(
+            refused("https://a.example/\u{200b}"),
+            WebBaseError::Unseen(_)
+        ));
+        assert_eq!(refused("https://school.example:99999/"), WebBaseError::Port);
+        assert_eq!(
+            refused("https://school.example/%zz/"),
+            WebBaseError::Escape("%zz".to_owned())
+        );
+        assert_eq!(
+            refused("https://school.example/%4"),
+            WebBaseError::Escape("%4".to_owned())
+        );
+        assert_eq!(
+            refused("javascript:alert(1)"),
+            WebBaseError::Scheme("javascript".to_owned())
+        );
+        assert!(matches!(
+            refused("data:text/html,x"),
+            WebBaseError::Scheme(_)
+        ));
+        assert!(matches!(refused("school.example"), WebBaseError::Scheme(_)));
+        assert_eq!(
+            refused("https://me:pw@school.example/"),
+            WebBaseError::Credentials
+        );
+        assert!(matches!(refused("https://"), WebBaseError::Host(_)));
+        assert!(matches!(
+            refused("https://exa%20mple/"),
+            WebBaseError::Host(_)
+        ));
+        let long = format!("https://school.example/{}/", "a".repeat(MAX_WEB_BASE_BYTES));
+        assert_eq!(refused(&long), WebBaseError::TooLong(long.len()));
+        for error in [
+            WebBaseError::Port,
+            WebBaseError::Empty,
+            WebBaseError::Credentials,
+        ] {
+            assert!(error.message().contains(&error.reason()));
+        }
+    }
+
+    #[test]
+    fn a_link_s_parts_are_named_once_and_what_a_refusal_quotes_is_bounded() {
+        // Issue 40: `===` was "a newer version … ()", a state given twice opened the first.
+        assert!(matches!(parse("==="), Err(LinkError::Malformed(_))));
+        assert!(matches!(
+            parse("#=x&lesson=snell"),
+            Err(LinkError::Malformed(_))
+        ));
+        let state = fragment(&Link::State(Box::new(beyond_critical())));
+        assert!(matches!(
+            parse(&format!("{state}&{state}")),
+            Err(LinkError::Malformed(reason)) if reason.contains("state")
+        ));
+        assert!(matches!(
+            parse("lesson=snell&lesson=tir"),
+            Err(LinkError::Malformed(_))
+        ));
+        // A field of the state this version does not read: a newer version's link.
+        let json = state_file::to_json(&beyond_critical());
+        let more = format!("state={}", encode(&json.replace('}', ",\"zoom\":2}")));
+        assert_eq!(parse(&more), Err(LinkError::Newer("zoom".to_owned())));
+        // A 20,000-character part is quoted by its first 60 characters.
+        let long = format!("lesson=snell&{}=1", "x".repeat(20_000));
+        let Err(LinkError::Newer(part)) = parse(&long) else {
+            panic!("a part this version does not read")
+        };
+        assert!(part.chars().count() < ECHO_CHARS + 12, "{part}");
+        assert!(part.ends_with("… (+19940)"), "{part}");
+        assert_eq!(echo("a\u{202e}b\u{1b}", ECHO_CHARS), "a\\u{202e}b\\u{1b}");
+        // A bad escape before a character of several bytes is quoted, not a panic.
+        assert!(matches!(decode("%aé"), Err(LinkError::Malformed(m)) if m.contains("%aé")));
+        assert!(matches!(
+            parse("lesson=%a\u{1F600}"),
+            Err(LinkError::Malformed(_))
+        ));
+    }
 }

@@ -55,6 +55,9 @@ impl Page {
     /// Opens the page's fragment, if it changed since it was last opened; a link that cannot
     /// be opened is said in the window and changes nothing.
     fn follow_address(&mut self) {
+        if !page::fragment_changed() {
+            return;
+        }
         let fragment = page::fragment();
         if fragment == self.fragment {
             return;
@@ -121,7 +124,9 @@ impl Page {
                     number = number,
                     count = deck.steps.len().to_string()
                 );
-                format!("{TITLE} · {} · {at}", deck.title)
+                // A deck file's title may be of any length: a tab shows a few words.
+                let title = link::echo(&deck.title, link::ECHO_CHARS);
+                format!("{TITLE} · {title} · {at}")
             });
         let title = step.unwrap_or_else(|| TITLE.to_owned());
         if title != self.title {
@@ -166,6 +171,7 @@ impl eframe::App for Page {
 /// then what the address's fragment names.
 fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement) -> Page {
     super::install_fonts(&cc.egui_ctx);
+    page::watch_fragment(&cc.egui_ctx);
     cc.egui_ctx.set_theme(egui::Theme::Light);
     let saved = |key: &str| cc.storage?.get_string(key);
     let launch = Launch {
