@@ -13,7 +13,7 @@ use refraction_render::handout::Sheet;
 use refraction_render::{RenderError, check_size, svg};
 use refraction_scene::LoadError;
 
-use super::inputs::{Input, OutputIsInput, refuse_inputs};
+use super::inputs::{Input, OtherKind, OutputIsInput, refuse_inputs, refuse_other_kinds};
 use super::output::printable;
 use super::{fail, output_error};
 
@@ -76,6 +76,9 @@ enum LessonFailure {
     /// `--out` names the deck or one of its scene files.
     #[error(transparent)]
     OutputIsInput(#[from] OutputIsInput),
+    /// `--out` (or a picture in its folder) holds a file of another kind.
+    #[error(transparent)]
+    OtherKind(#[from] OtherKind),
     /// `--web-base` cannot start a link.
     #[error(transparent)]
     WebBase(#[from] super::WebBaseRefused),
@@ -118,6 +121,11 @@ fn pictures(
         .map(|i| folder.join(step_file(i)))
         .collect();
     refuse_inputs(paths.iter().map(PathBuf::as_path), "--out", inputs)?;
+    refuse_other_kinds(
+        paths.iter().map(PathBuf::as_path),
+        "--out",
+        "an SVG picture",
+    )?;
     let size = Vec2::new(width as f32, height as f32);
     let texts = deck
         .steps
@@ -192,6 +200,7 @@ pub(crate) fn render(
             match to {
                 Out::Handout(path) => {
                     refuse_inputs([path.as_path()], "--out", &inputs)?;
+                    refuse_other_kinds([path.as_path()], "--out", "a PDF")?;
                     Ok(write(&deck, sheet, web_base, &path)?)
                 }
                 Out::Folder(folder) => pictures(&deck, &folder, size, &inputs),

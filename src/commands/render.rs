@@ -16,7 +16,7 @@ use refraction_render::{self as render, Picture, format::ImageFormat};
 use refraction_scene::Scene;
 use refraction_tools::state_file;
 
-use super::inputs::{Input, OutputIsInput, refuse_inputs};
+use super::inputs::{Input, OtherKind, OutputIsInput, kind_of, refuse_inputs, refuse_other_kinds};
 use super::output::ProgressLine;
 use super::{fail, output, output_error};
 
@@ -108,6 +108,9 @@ pub(crate) enum RenderFailure {
     /// `--out` names the state file or the scene file read.
     #[error(transparent)]
     OutputIsInput(#[from] OutputIsInput),
+    /// `--out` (or `--plot`) names a file of another kind.
+    #[error(transparent)]
+    OtherKind(#[from] OtherKind),
 }
 
 /// Where an image goes: a file, written by [`refraction_files::write_atomically`], or stdout (`-`).
@@ -336,6 +339,8 @@ pub(crate) fn run(args: &RenderArgs) -> ExitCode {
             Destination::Stdout => Path::new("/dev/stdout"),
         };
         refuse_inputs([path], "--out", &inputs_of(args))?;
+        let format = format_of(&args.out, "--out", formats)?;
+        refuse_other_kinds([path], "--out", kind_of(format))?;
         let bytes = match args.animate {
             Some(a) => animation(args, a),
             None => format_of(&args.out, "--out", formats).and_then(|f| picture(args, f)),

@@ -766,3 +766,64 @@ fn a_web_address_that_cannot_start_a_link_is_refused_saying_why() {
     }
     assert!(!PathBuf::from("unused.pdf").exists());
 }
+
+#[test]
+fn an_output_of_another_kind_is_never_replaced() {
+    // Issue 40's second pass: `render --lesson snell --out notes.pdf` replaced a text file.
+    let folder = folder("other-kind");
+    let notes = folder.join("notes.pdf");
+    fs::write(&notes, "my lesson plan\n").unwrap();
+    let picture = folder.join("plan.png");
+    fs::write(&picture, "not a picture").unwrap();
+    let step = folder.join("steps").join("step-01.svg");
+    fs::create_dir_all(step.parent().unwrap()).unwrap();
+    fs::write(&step, "[deck]\n").unwrap();
+    let steps = format!("{}/", step.parent().unwrap().display());
+    for args in [
+        vec![
+            "render",
+            "--lesson",
+            "snell",
+            "--out",
+            notes.to_str().unwrap(),
+        ],
+        vec!["render", "--out", picture.to_str().unwrap()],
+        vec!["render", "--lesson", "snell", "--out", &steps],
+        vec!["bench", "--quick", "--plot", picture.to_str().unwrap()],
+    ] {
+        let output = run(&args, "");
+        assert_eq!(output.status.code(), Some(2), "{args:?}: {output:?}");
+        assert!(
+            stderr(&output).contains("which is never replaced"),
+            "{output:?}"
+        );
+    }
+    assert_eq!(fs::read_to_string(&notes).unwrap(), "my lesson plan\n");
+    assert_eq!(fs::read_to_string(&picture).unwrap(), "not a picture");
+    assert_eq!(fs::read_to_string(&step).unwrap(), "[deck]\n");
+    // A file of the kind written, or an empty one, is replaced.
+    fs::write(&notes, "").unwrap();
+    let again = run(
+        &[
+            "render",
+            "--lesson",
+            "snell",
+            "--out",
+            notes.to_str().unwrap(),
+        ],
+        "",
+    );
+    assert!(again.status.success(), "{again:?}");
+    let twice = run(
+        &[
+            "render",
+            "--lesson",
+            "snell",
+            "--out",
+            notes.to_str().unwrap(),
+        ],
+        "",
+    );
+    assert!(twice.status.success(), "{twice:?}");
+    fs::remove_dir_all(&folder).unwrap();
+}
