@@ -638,4 +638,41 @@ mod tests {
             Err(LinkError::Malformed(_))
         ));
     }
+
+    /// A generator of hostile text: pieces a link or an address is made of, and worse.
+    fn hostile(seed: &mut u64, pieces: usize) -> String {
+        const PIECES: [&str; 24] = [
+            "%", "%4", "%zz", "%C3", "%A9", "=", "&", "#", "state", "lesson", "step", "v", "1",
+            "é", "\u{202e}", "\u{0}", "\u{1b}", "\u{200b}", "{", "}", "\"", ":", "/", "https://",
+        ];
+        let mut out = String::new();
+        for _ in 0..pieces {
+            // xorshift64: the same inputs every run.
+            *seed ^= *seed << 13;
+            *seed ^= *seed >> 7;
+            *seed ^= *seed << 17;
+            out.push_str(PIECES[(*seed % PIECES.len() as u64) as usize]);
+        }
+        out
+    }
+
+    #[test]
+    fn hostile_links_and_addresses_never_panic_and_are_quoted_briefly() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15;
+        for round in 0..3_000 {
+            let text = hostile(&mut seed, 1 + round % 40);
+            if let Err(e) = parse(&text) {
+                let said = e.message();
+                assert!(said.chars().count() < 400, "{text:?}: {said}");
+                assert!(!said.chars().any(is_unseen), "{text:?}: {said:?}");
+            }
+            match web_base(&text) {
+                Ok(base) => {
+                    assert_eq!(web_base(&base).as_ref(), Ok(&base), "{text:?}");
+                    assert!(!base.chars().any(|c| is_unseen(c) || c.is_whitespace()));
+                }
+                Err(e) => assert!(!e.message().chars().any(is_unseen), "{text:?}"),
+            }
+        }
+    }
 }
