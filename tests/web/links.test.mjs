@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 
 import {
-  W_COLOUR, close, colours, launch, newPage, open, pixels, placesOf, ready, serve,
+  W_COLOUR, colours, inBrowser, open, pixels, placesOf, ready, serve, status,
 } from './browser.mjs';
 
 let server;
@@ -17,23 +17,6 @@ before(async () => {
 });
 
 after(() => server.close());
-
-/** Runs `check` on a new page of a browser with a fresh profile. */
-async function inBrowser(check) {
-  const context = await launch();
-  try {
-    const page = await newPage(context);
-    await check(page);
-    assert.deepEqual(page.errors, [], 'no console error');
-  } finally {
-    await close(context);
-  }
-}
-
-/** What the page's live region says (the window's strip, for screen readers). */
-async function status(page) {
-  return page.evaluate(() => document.getElementById('status')?.textContent ?? '');
-}
 
 /** Opens `fragment` on a page that was showing the default (a link followed in place). */
 async function follow(page, fragment) {
