@@ -59,17 +59,17 @@ web-copy-refused = Le navigateur n’a pas permis de copier ({ $reason }) : sé
 web-not-secure = une page ouverte depuis un fichier ou par http n’a pas toujours accès au presse-papiers
 web-one-thread = Dans un navigateur, ceci tourne sur le seul fil d’exécution de la page : la page ne répond plus jusqu’à la fin.
 
-# Rien de perdu (issue 40) : liens refusés avec une raison claire, l’adresse web vérifiée en un seul endroit.
-link-part-without-name = une partie du lien n’a pas de nom (« { $part } »)
+# Rien de perdu (issue 40) : liens refusés avec une raison claire, l’adresse web vérifiée en un seul endroit.
+link-part-without-name = une partie du lien n’a pas de nom (« { $part } »)
 link-part-twice = le lien donne { $part } deux fois
-link-web-base-refused = Cette adresse web ne peut pas servir : { $reason }.
+link-web-base-refused = Cette adresse web ne peut pas servir : { $reason }.
 link-web-base-empty = aucune adresse n’a été donnée
-link-web-base-scheme = elle commence par « { $scheme } », et non par http://, https:// ou file://
+link-web-base-scheme = elle commence par « { $scheme } », et non par http://, https:// ou file://
 link-web-base-unseen = elle contient { $character }, qu’une adresse ne peut pas contenir (ni espace, ni caractère de contrôle, ni marque invisible)
-link-web-base-escape = « { $escape } » n’est pas un échappement pour cent (un % est suivi de deux chiffres hexadécimaux)
+link-web-base-escape = « { $escape } » n’est pas un échappement pour cent (un % est suivi de deux chiffres hexadécimaux)
 link-web-base-credentials = elle contient un nom d’utilisateur ou un mot de passe, que chaque lien et chaque code QR montreraient
-link-web-base-too-long = elle fait { $bytes } octets : au plus { $most } gardent les codes QR des liens lisibles sur papier
+link-web-base-too-long = elle fait { $bytes } octets : au plus { $most } gardent les codes QR des liens lisibles sur papier
 link-web-base-port = son port n’est pas un nombre de 0 à 65535
 link-web-base-host = son hôte manque ou n’est ni un nom ni une adresse IP valides ({ $reason })
-storage-web-base-unusable = L’adresse web gardée de la dernière fois n’est pas utilisée : { $reason }.
-storage-state-unreadable = L’état gardé de la dernière fois n’a pas pu être lu ({ $reason }) : l’explorateur part de l’état par défaut.
+storage-web-base-unusable = L’adresse web gardée de la dernière fois n’est pas utilisée : { $reason }.
+storage-state-unreadable = L’état gardé de la dernière fois n’a pas pu être lu ({ $reason }) : l’explorateur part de l’état par défaut.
