@@ -74,9 +74,14 @@ impl LinkRow {
             Some(url) => {
                 ui.add(egui::Label::new(RichText::new(url).monospace().weak()).selectable(true));
             }
-            None => {
-                ui.label(RichText::new(t!("link-no-web-base")).weak());
-            }
+            None => match link::web_base(&self.base) {
+                Err(refusal) if !self.base.trim().is_empty() => {
+                    ui.label(RichText::new(refusal.message()).color(ui.visuals().warn_fg_color));
+                }
+                _ => {
+                    ui.label(RichText::new(t!("link-no-web-base")).weak());
+                }
+            },
         }
         status::show(ui, self.said.as_ref(), Look::Plain);
     }
@@ -94,14 +99,36 @@ pub(super) struct Sharing {
     saved: Option<Status>,
 }
 
-/// The web build's address `base` as a link's start, or `None` when it is empty.
-fn base_of(base: &str) -> Option<&str> {
-    Some(base.trim()).filter(|b| !b.is_empty())
+/// The web build's address `base` as a link's start ([`link::web_base`]), or `None` when it
+/// is empty or cannot start a link (the row says why).
+fn base_of(base: &str) -> Option<String> {
+    link::web_base(base).ok()
 }
+
+/// The most characters of a strip's message shown: a refusal quotes a link, which can be
+/// megabytes long.
+const NOTICE_CHARS: usize = 400;
 
 /// Why a link has no QR code, in words.
 fn too_long(error: &refraction_diagram::qr::TooLong) -> String {
     t!("link-qr-too-long", bytes = error.0.to_string())
+}
+
+/// What the strip says when what the last run kept cannot be used: the state that could not
+/// be read (the reader's reason), the web address refused; `None` when both were fine.
+pub(super) fn storage_notice(
+    unreadable_state: Option<&str>,
+    refused_base: Option<link::WebBaseError>,
+) -> Option<String> {
+    let state = unreadable_state.map(|reason| {
+        t!(
+            "storage-state-unreadable",
+            reason = link::echo(reason, link::ECHO_CHARS * 3)
+        )
+    });
+    let base = refused_base.map(|e| t!("storage-web-base-unusable", reason = e.reason()));
+    let said: Vec<String> = state.into_iter().chain(base).collect();
+    (!said.is_empty()).then(|| said.join(" "))
 }
 
 /// Writes the QR code of `url` as a picture of `format` under the next free
@@ -137,7 +164,11 @@ pub enum LinkRefusal {
     /// No built-in lesson has this name.
     #[error(
         "{}",
-        t!("link-no-lesson", name = name.as_str(), names = builtin::names().join(", "))
+        t!(
+            "link-no-lesson",
+            name = link::echo(name, link::ECHO_CHARS),
+            names = builtin::names().join(", ")
+        )
     )]
     NoLesson {
         /// The name in the link.
@@ -148,7 +179,7 @@ pub enum LinkRefusal {
         "{}",
         t!(
             "link-no-step",
-            name = name.as_str(),
+            name = link::echo(name, link::ECHO_CHARS),
             step = step.to_string(),
             count = count.to_string()
         )
@@ -179,7 +210,7 @@ impl Explorer {
     /// The link of what the class sees at the web build's address, if one is set.
     #[must_use]
     pub fn link_url(&self) -> Option<String> {
-        base_of(&self.tools.files.share.base).map(|base| link::url(base, &self.link()))
+        base_of(&self.tools.files.share.base).map(|base| link::url(&base, &self.link()))
     }
 
     /// The web build's address (empty: none).
@@ -235,10 +266,15 @@ impl Explorer {
             self.sharing.qr_open = !self.sharing.qr_open;
         }
         if let Some(notice) = self.sharing.notice.clone() {
+            // Esc closes the strip, unless a dialog over the window takes it first.
+            let escape = !self.sharing.qr_open
+                && !typing
+                && ui.input_mut(|i| i.consume_key(egui::Modifiers::NONE, Key::Escape));
+            let shown = link::echo(&notice, NOTICE_CHARS);
             Panel::top("link-notice").show(ui, |ui| {
                 ui.horizontal_wrapped(|ui| {
-                    ui.label(RichText::new(format!("⚠ {notice}")).strong());
-                    if ui.button(t!("link-notice-close")).clicked() {
+                    ui.label(RichText::new(format!("⚠ {shown}")).strong());
+                    if ui.button(t!("link-notice-close")).clicked() || escape {
                         self.sharing.notice = None;
                     }
                 });

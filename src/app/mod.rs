@@ -195,21 +195,38 @@ impl Explorer {
     /// reads a value eframe kept, by key).
     #[must_use]
     pub fn launched(launch: Launch, saved: impl Fn(&str) -> Option<String>) -> Self {
-        let restored = || {
-            let json = saved(STORAGE_KEY)?;
-            state_file::parse(&json).ok()
-        };
         let from_state_file = launch.state.is_some();
-        let mut explorer = Self::new(launch.state.or_else(restored).unwrap_or_default());
+        // The state kept from last time, unless a state file was given: one that cannot be
+        // read is said (in the window's language, once it is set) rather than dropped.
+        let (restored, unreadable) = match saved(STORAGE_KEY).filter(|_| !from_state_file) {
+            None => (None, None),
+            Some(json) => match state_file::parse(&json) {
+                Ok(state) => (Some(state), None),
+                Err(e) => (None, Some(e.to_string())),
+            },
+        };
+        let mut explorer = Self::new(launch.state.or(restored).unwrap_or_default());
         if let Some(look) = saved(LOOK_KEY) {
             explorer.presentation.restore_look(&look);
         }
         if let Some(view) = saved(VIEW_KEY) {
             explorer.restore_view(&view);
         }
-        if let Some(base) = launch.web_base.or_else(|| saved(link::WEB_BASE_KEY)) {
-            explorer.set_web_base(&base);
-        }
+        // The command line's address is checked already; the one kept may not be (it was
+        // typed, or kept by an older version): it is used only if it can start a link.
+        let stored_base = launch.web_base.is_none().then(|| saved(link::WEB_BASE_KEY));
+        let refused_base = match (launch.web_base, stored_base.flatten()) {
+            (Some(base), _) => {
+                explorer.set_web_base(&base);
+                None
+            }
+            (None, Some(base)) if !base.trim().is_empty() => {
+                refraction_tools::link::web_base(&base)
+                    .map(|base| explorer.set_web_base(&base))
+                    .err()
+            }
+            (None, _) => None,
+        };
         if from_state_file {
             explorer.view = View::Interface;
         }
@@ -223,6 +240,7 @@ impl Explorer {
         explorer.command_line_language = launch.language;
         explorer.system_language = launch.system_language;
         refraction_i18n::set_locale(explorer.language());
+        explorer.sharing.notice = link::storage_notice(unreadable.as_deref(), refused_base);
         if let Some(name) = launch.lesson {
             explorer.open_lesson(&name);
         }

@@ -2,6 +2,7 @@
 // through playwright-core, a static server for target/web on the loopback address, and ways
 // to read the explorer's page (its canvas's accessible name, its pixels).
 
+import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import http from 'node:http';
 import os from 'node:os';
@@ -232,4 +233,24 @@ export async function drag(page, from, dx, dy, steps = 20) {
   }
   await page.mouse.up();
   await frames(page, 3);
+}
+
+/**
+ * Runs `check` on a new page of a browser with a fresh profile (nothing kept from another
+ * test), speaking `locale`; fails if the page logged a console error.
+ */
+export async function inBrowser(check, locale = 'en-US') {
+  const context = await launch(undefined, locale);
+  try {
+    const page = await newPage(context);
+    await check(page);
+    assert.deepEqual(page.errors, [], 'no console error');
+  } finally {
+    await close(context);
+  }
+}
+
+/** What the page's live region says (the window's strip, for screen readers). */
+export async function status(page) {
+  return page.evaluate(() => document.getElementById('status')?.textContent ?? '');
 }

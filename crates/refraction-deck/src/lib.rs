@@ -27,7 +27,9 @@ mod step;
 
 use std::path::PathBuf;
 
-pub use file::{MAX_DECK_FILE_BYTES, MAX_STEPS, VERSION, looks_like_deck, resolve_scene};
+pub use file::{
+    MAX_DECK_FILE_BYTES, MAX_STEPS, VERSION, looks_like_deck, resolve_scene, scene_file,
+};
 pub use step::{Effect, Light, Step, StepTool, StepView};
 
 use refraction_scene::{LoadError, Scene};
@@ -45,6 +47,22 @@ pub struct Deck {
 }
 
 impl Deck {
+    /// The scene files the deck's steps read, each once, in the order of the steps (built-in
+    /// scenes are no files): with the deck's own file, what a command that writes must never
+    /// write over.
+    #[must_use]
+    pub fn scene_files(&self) -> Vec<PathBuf> {
+        let mut files: Vec<PathBuf> = Vec::new();
+        for name in self.steps.iter().filter_map(|s| s.scene.as_deref()) {
+            if let Some(path) = scene_file(name, self.folder.as_deref())
+                && !files.contains(&path)
+            {
+                files.push(path);
+            }
+        }
+        files
+    }
+
     /// The scene `step` shows on the Scenes view, its effects with the step's added.
     ///
     /// # Errors

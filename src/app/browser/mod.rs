@@ -22,6 +22,7 @@ mod page;
 use core::time::Duration;
 
 use refraction_i18n::t;
+use refraction_tools::link;
 use wasm_bindgen::JsCast as _;
 
 pub(super) use files::dialog;
@@ -57,6 +58,9 @@ impl Page {
     /// Opens the page's fragment, if it changed since it was last opened; a link that cannot
     /// be opened is said in the window and changes nothing.
     fn follow_address(&mut self) {
+        if !page::fragment_changed() {
+            return;
+        }
         let fragment = page::fragment();
         if fragment == self.fragment {
             return;
@@ -124,7 +128,9 @@ impl Page {
                     number = number,
                     count = deck.steps.len().to_string()
                 );
-                format!("{TITLE} · {} · {at}", deck.title)
+                // A deck file's title may be of any length: a tab shows a few words.
+                let title = link::echo(&deck.title, link::ECHO_CHARS);
+                format!("{TITLE} · {title} · {at}")
             });
         let title = step.unwrap_or_else(|| TITLE.to_owned());
         if title != self.title {
@@ -170,6 +176,7 @@ impl eframe::App for Page {
 /// then what the address's fragment names.
 fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement) -> Page {
     super::install_fonts(&cc.egui_ctx);
+    page::watch_fragment(&cc.egui_ctx);
     cc.egui_ctx.set_theme(egui::Theme::Light);
     let saved = |key: &str| cc.storage?.get_string(key);
     let launch = Launch {
@@ -177,8 +184,10 @@ fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement
         ..Launch::default()
     };
     let mut explorer = Explorer::launched(launch, saved);
+    // The page's own address, where it can start a link (a `file:` page's can, with a word
+    // in the QR dialog that a phone cannot open it).
     if explorer.web_base().is_empty()
-        && let Some(address) = page::address()
+        && let Some(address) = page::address().and_then(|a| link::web_base(&a).ok())
     {
         explorer.set_web_base(&address);
     }

@@ -113,14 +113,10 @@ fn page<'a>(
         number = (index + 1).to_string(),
         count = deck.steps.len().to_string()
     );
-    let heading = if deck.title.is_empty() {
-        number
-    } else {
-        format!("{} · {number}", deck.title)
-    };
     let students = sheet == Sheet::Students;
     Ok(Page {
-        heading,
+        deck: deck.title.clone(),
+        heading: number,
         title: step.title.clone(),
         question: step
             .question
@@ -169,9 +165,19 @@ impl crate::app::Explorer {
         let Some(deck) = &self.lesson.deck else {
             return;
         };
-        let base = Some(self.web_base()).filter(|b| !b.is_empty());
+        // An address that cannot start a link is said, not left off the pages in silence.
+        let base = match self.web_base().trim() {
+            "" => None,
+            typed => match link::web_base(typed) {
+                Ok(base) => Some(base),
+                Err(refused) => {
+                    self.lesson.panel.status = Some(status::Status::Refused(refused.message()));
+                    return;
+                }
+            },
+        };
         let path = crate::app::file_dialog::numbered(Path::new(""), "handout", "pdf");
-        let written = write(deck, Sheet::Teacher, base, &path);
+        let written = write(deck, Sheet::Teacher, base.as_deref(), &path);
         self.lesson.panel.status = Some(status::exported(written, &path));
     }
 }
