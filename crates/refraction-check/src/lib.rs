@@ -26,8 +26,8 @@ pub use call_check::record::Value;
 pub use call_check::verdict::CallVerdict;
 pub use call_check::{
     Call, CsvError, Dialect, Failing, Format, Judgement, LineError, MAX_TESTS, Options,
-    PatternError, Record, SAMPLED, SKIPPED, Session, Tally, check_record, fields, judge_record,
-    suggest,
+    PatternError, Record, SAMPLED, SKIPPED, Session, Tally, UNDECIDED, check_record, fields,
+    judge_record, suggest,
 };
 pub use diagnosis::{
     Code, LogTally, MAX_SUMMARY_BYTES, Renderer, Summary, Verdict, looks_like_summary,

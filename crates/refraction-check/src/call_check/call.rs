@@ -170,10 +170,29 @@ pub struct Digits {
     pub result: u32,
     /// The ray's direction of travel, when logged.
     pub travel: u32,
+    /// Which of them show a decimal point or an exponent: their one- or two-digit numbers
+    /// (`0.6`, `1.5`) may be a fixed format's rounding (`%.1f`) rather than the values they say.
+    pub decimal: Decimals,
+}
+
+/// Which of a call's numbers were written with a decimal point or an exponent (see
+/// [`Digits::decimal`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Decimals {
+    /// The incident vector's.
+    pub incident: bool,
+    /// The normal's.
+    pub normal: bool,
+    /// The index ratio's.
+    pub eta: bool,
+    /// What came back.
+    pub result: bool,
+    /// The ray's direction of travel.
+    pub travel: bool,
 }
 
 impl Digits {
-    /// Every number written with `digits` digits.
+    /// Every number written with `digits` digits and a decimal point.
     #[must_use]
     pub fn all(digits: u32) -> Self {
         Self {
@@ -182,6 +201,34 @@ impl Digits {
             eta: digits,
             result: digits,
             travel: digits,
+            decimal: Decimals {
+                incident: true,
+                normal: true,
+                eta: true,
+                result: true,
+                travel: true,
+            },
+        }
+    }
+
+    /// The digits of `record`'s fields `incident`, `normal`, `eta` and `result` (and
+    /// `travel`).
+    fn of(record: &Record, incident: &str, normal: &str, eta: &str, result: &str) -> Self {
+        let [incident, normal, eta, result, travel] =
+            [incident, normal, eta, result, "travel"].map(|name| record.written(name));
+        Self {
+            incident: incident.digits,
+            normal: normal.digits,
+            eta: eta.digits,
+            result: result.digits,
+            travel: travel.digits,
+            decimal: Decimals {
+                incident: incident.decimal,
+                normal: normal.decimal,
+                eta: eta.decimal,
+                result: result.decimal,
+                travel: travel.decimal,
+            },
         }
     }
 }
@@ -376,13 +423,7 @@ impl Call {
             got: got(record, api)?,
             truth: truth(record, options)?,
             precision: precision(record, options)?,
-            digits: Digits {
-                incident: record.digits(n.incident),
-                normal: record.digits(n.normal),
-                eta: record.digits(n.eta),
-                result: record.digits(n.result),
-                travel: record.digits("travel"),
-            },
+            digits: Digits::of(record, n.incident, n.normal, n.eta, n.result),
             path: label(record, "path"),
             point: vector(record, "point")?,
             // Judged only where Refract returned true: on false pbrt leaves it unwritten.

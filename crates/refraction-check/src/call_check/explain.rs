@@ -419,6 +419,18 @@ fn right_sentence(ctx: &Context<'_>) -> String {
     format!("{right}{}", unchecked_note(ctx.call))
 }
 
+/// The explanation of a call whose printed digits cannot tell it right or wrong: it looks
+/// like `shown` (the mistakes as printed, or none named), yet numbers within their rounding
+/// make it a right call.
+pub(super) fn undecided(shown: &str) -> String {
+    let shown = if shown.is_empty() {
+        "unexplained"
+    } else {
+        shown
+    };
+    t!("check-undecided", shown = shown)
+}
+
 /// The explanation of one verdict.
 #[must_use]
 pub(super) fn explanation(ctx: &Context<'_>) -> String {

@@ -131,6 +131,8 @@ fn verdict_kind(verdict: &CallVerdict) -> String {
         SAMPLED.to_owned()
     } else if verdict.ok {
         "ok".to_owned()
+    } else if verdict.undecided {
+        UNDECIDED.to_owned()
     } else if verdict.alternatives.is_empty() {
         "unexplained".to_owned()
     } else {
@@ -192,6 +194,10 @@ pub const SKIPPED: &str = "skipped (not matching the pattern)";
 // untranslated: the tally's name, as `check` prints it on stderr (the panel says it in words)
 pub const SAMPLED: &str = "reflected (sampled)";
 
+/// The tally's name for calls whose printed digits cannot tell them right or wrong.
+// untranslated: the tally's name, as `check` prints it on stderr (the code of the log's finding)
+pub const UNDECIDED: &str = "too_few_digits";
+
 /// A judged line: an API call and its [`CallVerdict`], or any renderer's refraction and its
 /// verdict.
 #[derive(Clone, Debug)]
@@ -209,6 +215,16 @@ impl Judgement {
         match self {
             Self::Api(judged) => judged.1.ok,
             Self::Physics(judged) => judged.verdict.ok,
+        }
+    }
+
+    /// Whether the line is wrong: not right, and not a call its printed digits cannot tell
+    /// right or wrong.
+    #[must_use]
+    pub fn fails(&self) -> bool {
+        match self {
+            Self::Api(judged) => !judged.1.ok && !judged.1.undecided,
+            Self::Physics(judged) => !judged.verdict.ok,
         }
     }
 
@@ -434,13 +450,13 @@ impl Books {
     fn count(&mut self, judgement: &Judgement) {
         judgement.count(&mut self.tally);
         self.log.add(judgement.evidence());
-        self.all_ok &= judgement.ok();
+        self.all_ok &= !judgement.fails();
     }
 
     /// Keeps line `number` to be written as a test, if failing lines are kept and it fails.
     fn keep(&mut self, number: usize, record: Record, judgement: &Judgement) {
         if let Some(failing) = &mut self.failing
-            && !judgement.ok()
+            && judgement.fails()
             && failing.len() < MAX_TESTS
         {
             failing.push(Failing {
@@ -687,5 +703,7 @@ impl Session {
     }
 }
 
+#[cfg(test)]
+mod ecosystem_tests;
 #[cfg(test)]
 mod tests;

@@ -29,6 +29,18 @@ fn rounding(digits: u32) -> f64 {
     }
 }
 
+/// Relative rounding of a number written with `digits` significant digits where a fixed
+/// format may have printed it (`decimal`: it shows a point or an exponent): half a unit in
+/// the last digit, however few digits (`0.6` printed by `%.1f` is anything from 0.55 to 0.65).
+/// Numbers without a point (`0`, `1`) say what they are.
+fn loose_rounding(digits: u32, decimal: bool) -> f64 {
+    if !decimal || digits == 0 || digits >= 17 {
+        rounding(digits)
+    } else {
+        0.5 * 10f64.powi(1 - i32::try_from(digits).unwrap_or(17))
+    }
+}
+
 /// How closely each logged number can be trusted: its own rounding, or a few ulps of the
 /// student's working precision.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -45,6 +57,10 @@ pub(crate) struct Tolerance {
     pub travel: f64,
     /// The machine epsilon of the student's working precision.
     pub epsilon: f64,
+    /// Whether this is the second look at a call the first judged wrong: every number trusted
+    /// only as far as its printed digits go (a short one too), and a sign the digits cannot
+    /// decide (of N·I against the API's contract) taken either way.
+    pub loose: bool,
 }
 
 impl Tolerance {
@@ -59,7 +75,33 @@ impl Tolerance {
             result: rounding(digits.result),
             travel: rounding(digits.travel),
             epsilon,
+            loose: false,
         }
+    }
+
+    /// The tolerance of [`Tolerance::loose`]: each number trusted to its printed digits and no
+    /// further, however few.
+    #[must_use]
+    pub(crate) fn loose(digits: &Digits, epsilon: f64) -> Self {
+        let d = &digits.decimal;
+        Self {
+            incident: loose_rounding(digits.incident, d.incident),
+            normal: loose_rounding(digits.normal, d.normal),
+            eta: loose_rounding(digits.eta, d.eta),
+            result: loose_rounding(digits.result, d.result),
+            travel: loose_rounding(digits.travel, d.travel),
+            epsilon,
+            loose: true,
+        }
+    }
+
+    /// Whether the sign of the cosine between `a` and `b` (N·I) cannot be told from their
+    /// printed digits: only on a second look.
+    #[must_use]
+    pub(crate) fn sign_undecided(&self, a: DVec3, b: DVec3) -> bool {
+        let lengths = length(a) * length(b);
+        let margin = 4.0 * (self.incident + self.normal) + 16.0 * self.epsilon;
+        self.loose && lengths > 0.0 && (a.dot(b) / lengths).abs() <= margin
     }
 
     /// The coarsest rounding of the call's arguments, by which they may be moved.
@@ -142,7 +184,9 @@ fn fit(call: &Call, codes: Vec<Code>, tolerance: &Tolerance) -> Option<Reading> 
     let args = undo(&codes, call.args);
     let meaning = call.api.meaning(args);
     let truth = &call.truth;
-    let fits = meaning.within_contract
+    let contract =
+        meaning.within_contract || tolerance.sign_undecided(call.args.incident, call.args.normal);
+    let fits = contract
         && truth
             .travel
             .is_none_or(|t| tolerance.same_direction(meaning.travel, t))

@@ -89,7 +89,47 @@ impl<'de> serde::de::Visitor<'de> for ObjectVisitor {
 /// The fields of one logged call, each with the significant digits it was written with.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Record {
-    values: Vec<(&'static str, Value, u32)>,
+    values: Vec<(&'static str, Value, Written)>,
+}
+
+/// How a field's numbers were written: the significant digits each is trusted to, and
+/// whether they show a decimal point or an exponent (a fixed format's `0.6` may be 0.55 to
+/// 0.65; a printed `0`, `1` or `-1` is the value it says).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Written {
+    /// Significant digits (see [`Record::digits`]).
+    pub digits: u32,
+    /// Whether a number of the field has a decimal point or an exponent.
+    pub decimal: bool,
+}
+
+impl Written {
+    /// Digits written in full text: `decimal` when one of its numbers has a point or an
+    /// exponent.
+    fn of_text(digits: u32, text: &str) -> Self {
+        let bytes = text.as_bytes();
+        let exponent = bytes
+            .windows(2)
+            .any(|w| (w[0].is_ascii_digit() || w[0] == b'.') && matches!(w[1], b'e' | b'E'));
+        let point = bytes
+            .windows(2)
+            .any(|w| w[0] == b'.' && w[1].is_ascii_digit())
+            || bytes
+                .windows(2)
+                .any(|w| w[0].is_ascii_digit() && w[1] == b'.');
+        Self {
+            digits,
+            decimal: point || exponent,
+        }
+    }
+
+    /// Digits of numbers held as values: `decimal` when one has a fractional part.
+    fn of_values(digits: u32, values: &[f64]) -> Self {
+        Self {
+            digits,
+            decimal: values.iter().any(|x| x.is_finite() && x.fract() != 0.0),
+        }
+    }
 }
 
 fn flag_text(text: &str) -> Option<bool> {
@@ -123,41 +163,39 @@ pub(super) fn accepts(kind: Kind, text: &str) -> bool {
 ///
 /// # Errors
 /// The text is not a value of that kind; the message names the field.
-pub(crate) fn from_text(kind: Kind, name: &str, text: &str) -> Result<(Value, u32), LineError> {
+pub(crate) fn from_text(kind: Kind, name: &str, text: &str) -> Result<(Value, Written), LineError> {
     let text = text.trim();
     let wrap = |error| LineError::Text {
         field: name.to_owned(),
         error,
     };
     match kind {
-        Kind::VectorOrNull if is_null_text(text) => Ok((Value::Null, 0)),
+        Kind::VectorOrNull if is_null_text(text) => Ok((Value::Null, Written::default())),
         Kind::Vector | Kind::VectorOrNull => parse_vector(text)
-            .map(|v| (Value::Vector(v.value), v.digits))
+            .map(|v| (Value::Vector(v.value), Written::of_text(v.digits, text)))
             .map_err(wrap),
         Kind::Number => parse_number(text)
-            .map(|n| (Value::Number(n.value), n.digits))
+            .map(|n| (Value::Number(n.value), Written::of_text(n.digits, text)))
             .map_err(wrap),
-        Kind::Flag => {
-            flag_text(text)
-                .map(|f| (Value::Flag(f), 0))
-                .ok_or_else(|| LineError::NotFlagText {
-                    field: name.to_owned(),
-                    text: text.to_owned(),
-                })
-        }
-        Kind::Label => Ok((Value::Label(text.to_owned()), 0)),
+        Kind::Flag => flag_text(text)
+            .map(|f| (Value::Flag(f), Written::default()))
+            .ok_or_else(|| LineError::NotFlagText {
+                field: name.to_owned(),
+                text: text.to_owned(),
+            }),
+        Kind::Label => Ok((Value::Label(text.to_owned()), Written::default())),
     }
 }
 
-fn json_number(value: &Json, name: &str) -> Result<(f64, u32), LineError> {
+fn json_number(value: &Json, name: &str) -> Result<(f64, Written), LineError> {
     match value {
         Json::Number(n) => {
             let x = n.as_f64().unwrap_or(f64::NAN);
-            Ok((x, digits_of(x)))
+            Ok((x, Written::of_values(digits_of(x), &[x])))
         }
-        Json::Null => Ok((f64::NAN, 0)),
+        Json::Null => Ok((f64::NAN, Written::default())),
         Json::String(text) => parse_number(text)
-            .map(|n| (n.value, n.digits))
+            .map(|n| (n.value, Written::of_text(n.digits, text)))
             .map_err(|error| LineError::Text {
                 field: name.to_owned(),
                 error,
@@ -168,7 +206,7 @@ fn json_number(value: &Json, name: &str) -> Result<(f64, u32), LineError> {
     }
 }
 
-fn json_vector(value: &Json, name: &str) -> Result<(Value, u32), LineError> {
+fn json_vector(value: &Json, name: &str) -> Result<(Value, Written), LineError> {
     match value {
         Json::String(text) => from_text(Kind::Vector, name, text),
         Json::Array(items) if items.len() == 3 => {
@@ -176,7 +214,8 @@ fn json_vector(value: &Json, name: &str) -> Result<(Value, u32), LineError> {
             for (i, (slot, item)) in out.iter_mut().zip(items).enumerate() {
                 *slot = json_number(item, &format!("{name}[{i}]"))?.0;
             }
-            Ok((Value::Vector(out), json_vector_digits(out)))
+            let written = Written::of_values(json_vector_digits(out), &out);
+            Ok((Value::Vector(out), written))
         }
         Json::Array(items) => Err(LineError::NotThree {
             field: name.to_owned(),
@@ -189,20 +228,20 @@ fn json_vector(value: &Json, name: &str) -> Result<(Value, u32), LineError> {
 }
 
 /// Reads the JSON `value` as a value of `kind`, with its significant digits.
-fn from_json(kind: Kind, name: &str, value: &Json) -> Result<(Value, u32), LineError> {
+fn from_json(kind: Kind, name: &str, value: &Json) -> Result<(Value, Written), LineError> {
     match (kind, value) {
-        (Kind::VectorOrNull, Json::Null) => Ok((Value::Null, 0)),
+        (Kind::VectorOrNull, Json::Null) => Ok((Value::Null, Written::default())),
         (Kind::Vector | Kind::VectorOrNull, _) => json_vector(value, name),
         (Kind::Number, _) => json_number(value, name).map(|(x, d)| (Value::Number(x), d)),
-        (Kind::Flag, Json::Bool(b)) => Ok((Value::Flag(*b), 0)),
+        (Kind::Flag, Json::Bool(b)) => Ok((Value::Flag(*b), Written::default())),
         (Kind::Flag, Json::Number(_) | Json::String(_)) => {
             let text = value
                 .as_str()
                 .map_or_else(|| value.to_string(), str::to_owned);
             from_text(kind, name, &text)
         }
-        (Kind::Label, Json::String(text)) => Ok((Value::Label(text.clone()), 0)),
-        (Kind::Label, Json::Number(n)) => Ok((Value::Label(n.to_string()), 0)),
+        (Kind::Label, Json::String(text)) => Ok((Value::Label(text.clone()), Written::default())),
+        (Kind::Label, Json::Number(n)) => Ok((Value::Label(n.to_string()), Written::default())),
         (Kind::Flag, _) => Err(LineError::NotFlag {
             field: name.to_owned(),
         }),
@@ -228,10 +267,16 @@ impl Record {
     /// (17 digits or more, `%a`).
     #[must_use]
     pub fn digits(&self, name: &str) -> u32 {
+        self.written(name).digits
+    }
+
+    /// How field `name`'s numbers were written (the default for a field absent).
+    #[must_use]
+    pub(crate) fn written(&self, name: &str) -> Written {
         self.values
             .iter()
             .find(|(n, ..)| *n == name)
-            .map_or(0, |(.., digits)| *digits)
+            .map_or_else(Written::default, |(.., written)| *written)
     }
 
     /// Turns flag `name` round, if the record has it: a pattern's `{!entering}` for a renderer
@@ -244,8 +289,8 @@ impl Record {
         }
     }
 
-    fn push(&mut self, name: &'static str, (value, digits): (Value, u32)) {
-        self.values.push((name, value, digits));
+    fn push(&mut self, name: &'static str, (value, written): (Value, Written)) {
+        self.values.push((name, value, written));
     }
 
     /// Reads one JSON line of `api`'s fields; other fields are ignored.

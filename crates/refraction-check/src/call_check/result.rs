@@ -10,7 +10,7 @@ use serde_json::{Value as Json, json};
 use super::call::{Call, Got};
 use super::error::LineError;
 use super::readings::Tolerance;
-use refraction_tools::vector_text::{angle, length};
+use refraction_tools::vector_text::{angle, length, unit};
 
 /// What the API returns for the logged arguments, and how sure that is.
 #[derive(Clone, Debug, PartialEq)]
@@ -116,6 +116,43 @@ fn moved(args: Args<f64>, step: f64) -> Vec<Args<f64>> {
     out
 }
 
+/// Where a second look finds that the printed digits cannot decide the sign of
+/// k = 1 − μ²·(1 − cos²θi): the directions the API returns for a k from 0 up to what the
+/// rounding allows, the root √k running along the normal, and how far apart they are (with
+/// what the arguments' rounding moves each). Empty where the sign is decided.
+fn undecided_roots(call: &Call, tolerance: &Tolerance) -> (Vec<Option<DVec3>>, f64) {
+    if !tolerance.loose {
+        return (Vec::new(), 0.0);
+    }
+    let m = call.api.meaning(call.args);
+    let d = unit(m.travel);
+    // The normal against the ray, whichever side the digits put it on.
+    let n = unit(m.normal) * -d.dot(m.normal).signum();
+    let (cos_i, mu) = (-d.dot(n), m.mu);
+    let sin2 = 1.0 - cos_i * cos_i;
+    let k = 1.0 - mu * mu * sin2;
+    // How far each rounding moves k: through cosθi (each vector's rounding, on every
+    // component) and through μ.
+    let cos_error = 3f64.sqrt() * (tolerance.incident + tolerance.normal);
+    let k_error =
+        2.0 * mu * mu * (cos_i.abs() * cos_error + sin2 * tolerance.eta) + 16.0 * tolerance.epsilon;
+    if !k.is_finite() || k.abs() > k_error {
+        return (Vec::new(), 0.0);
+    }
+    let top = (k + k_error).max(0.0).sqrt();
+    let roots = (0..=ROOT_STEPS)
+        .map(|i| {
+            let root = top * f64::from(i) / f64::from(ROOT_STEPS);
+            Some(d * mu + n * (mu * cos_i - root))
+        })
+        .collect();
+    let apart = top / f64::from(ROOT_STEPS) + 2.0 * mu * cos_error;
+    (roots, apart)
+}
+
+/// How many steps [`undecided_roots`] takes from k = 0 to the largest k rounding allows.
+const ROOT_STEPS: u32 = 16;
+
 /// What `api` transmits for `args` in precision `S` (`None` also when they overflow `S`).
 pub(crate) fn transmitted_by<S: Real>(api: Api, args: Args<f64>) -> Option<DVec3> {
     narrow::<S>(args)
@@ -132,18 +169,21 @@ pub(crate) fn returns<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<Ret
     let returned = call.api.call(narrow::<S>(call.args)?);
     let transmitted = returned.transmitted().map(wide::<S>);
     let step = (2.0 * tolerance.arguments()).max(8.0 * tolerance.epsilon);
-    let nearby: Vec<Option<DVec3>> = moved(call.args, step)
+    let mut nearby: Vec<Option<DVec3>> = moved(call.args, step)
         .into_iter()
         .map(|args| transmitted_by::<S>(call.api, args))
         .collect();
-    let borderline = nearby.iter().any(|t| t.is_some() != transmitted.is_some());
-    let spread = transmitted.map_or(0.0, |t| {
+    let (roots, apart) = undecided_roots(call, tolerance);
+    let spread = transmitted.map_or(apart, |t| {
         nearby
             .iter()
             .flatten()
             .map(|other| (*other - t).length())
-            .fold(0.0, f64::max)
+            .fold(apart, f64::max)
     });
+    let borderline =
+        !roots.is_empty() || nearby.iter().any(|t| t.is_some() != transmitted.is_some());
+    nearby.extend(roots);
     let size = match call.got {
         Got::Vector(v) if v.is_finite() => v.abs().max_element().max(1.0),
         _ => 1.0,
@@ -156,7 +196,10 @@ pub(crate) fn returns<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<Ret
         formula: returned.formula().map(wide::<S>),
         nearby,
         borderline,
-        distance: 2.0 * spread + 4.0 * tolerance.result * size + 16.0 * tolerance.epsilon,
+        // A second look allows every argument's rounding at once, not one at a time.
+        distance: if tolerance.loose { 4.0 } else { 2.0 } * spread
+            + 4.0 * tolerance.result * size
+            + 16.0 * tolerance.epsilon,
         reflection: d - n * (2.0 * d.dot(n) / n.length_squared()),
         etap: match &returned {
             Returned::Pbrt(Some(r)) => Some(r.etap.to_f64()),

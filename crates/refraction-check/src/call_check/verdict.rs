@@ -88,6 +88,10 @@ pub struct CallVerdict {
     pub sampled: Option<f64>,
     /// Whether the code sent the ray along a direction (not the API's "nothing transmitted").
     pub transmitted: bool,
+    /// Whether the call cannot be told right or wrong from its printed digits: wrong as
+    /// printed, but right for numbers within their rounding (a sign of N·I, of k or of a root
+    /// that the digits do not decide). Never a mistake: `ok` is false and `mistakes` empty.
+    pub undecided: bool,
 }
 
 /// The result mistake and what the result resembles, or `None` when it is the API's answer
@@ -97,6 +101,7 @@ fn finding<S: Real>(
     r: &Returns,
     seen: Seen,
     sampled: bool,
+    tolerance: &Tolerance,
 ) -> Option<(Code, Resemblance)> {
     let direction = match seen {
         Seen::Nothing(_) if r.may_reflect() || sampled => None,
@@ -124,7 +129,7 @@ fn finding<S: Real>(
             Some((code, looks))
         }
     };
-    direction.or_else(|| etap_finding(call, r, S::EPSILON.to_f64()))
+    direction.or_else(|| etap_finding(call, r, tolerance))
 }
 
 /// What a formula returns: a direction, or that nothing is transmitted.
@@ -163,9 +168,8 @@ fn without_flip(call: &Call, r: &Returns, seen: Seen) -> bool {
 }
 
 /// pbrt's logged `etap` against the one its `Refract` used, where the direction is right.
-fn etap_finding(call: &Call, r: &Returns, epsilon: f64) -> Option<(Code, Resemblance)> {
+fn etap_finding(call: &Call, r: &Returns, tolerance: &Tolerance) -> Option<(Code, Resemblance)> {
     let (logged, used) = (call.etap?, r.etap?);
-    let tolerance = Tolerance::new(&call.digits, epsilon);
     if tolerance.same_ratio(logged, used) {
         return None;
     }
@@ -293,13 +297,40 @@ fn formula_readings(readings: &[Reading], seen: Seen, right: bool, tolerance: f6
     }
 }
 
+/// Judges `call` in precision `S`; a call wrong as printed is looked at again with each
+/// number trusted only to its printed digits, and is undecided if that makes it right.
 fn verdict_in<S: Real>(call: &Call) -> Result<CallVerdict, LineError> {
-    let tolerance = Tolerance::new(&call.digits, S::EPSILON.to_f64());
-    let returns = returns::<S>(call, &tolerance)?;
+    let epsilon = S::EPSILON.to_f64();
+    let tight = judge_with::<S>(call, &Tolerance::new(&call.digits, epsilon))?;
+    if tight.ok {
+        return Ok(tight);
+    }
+    let loose = judge_with::<S>(call, &Tolerance::loose(&call.digits, epsilon))?;
+    Ok(if loose.ok { undecided(tight) } else { tight })
+}
+
+/// The verdict on a call that its printed digits cannot tell right or wrong: what it would
+/// be as printed, and that numbers within their rounding make it right.
+fn undecided(tight: CallVerdict) -> CallVerdict {
+    let shown: Vec<&str> = tight.mistakes.iter().map(|c| c.name()).collect();
+    let explanation = explain::undecided(&shown.join(", "));
+    CallVerdict {
+        ok: false,
+        mistakes: Vec::new(),
+        alternatives: Vec::new(),
+        explanation,
+        undecided: true,
+        readings: Readings::default(),
+        ..tight
+    }
+}
+
+fn judge_with<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<CallVerdict, LineError> {
+    let returns = returns::<S>(call, tolerance)?;
     let seen = returns.see(call.got);
     let sampled = sampled_reflection(call, &returns);
-    let finding = finding::<S>(call, &returns, seen, sampled.is_some());
-    let readings = readings(call, &tolerance);
+    let finding = finding::<S>(call, &returns, seen, sampled.is_some(), tolerance);
+    let readings = readings(call, tolerance);
     let right = readings
         .first()
         .map_or_else(|| call.api.meaning(call.args), |r| r.meaning);
@@ -339,6 +370,7 @@ fn verdict_in<S: Real>(call: &Call) -> Result<CallVerdict, LineError> {
         readings: formula_readings,
         sampled,
         transmitted: matches!(seen, Seen::Direction(_)),
+        undecided: false,
     })
 }
 
@@ -371,6 +403,7 @@ pub(crate) fn evidence(call: &Call, verdict: &CallVerdict) -> Evidence {
         .entering
         .filter(|_| !call.truth.entering_from_normal);
     let unchecked = match (call.truth.mu(), call.truth.sides_given) {
+        _ if verdict.undecided => Some(Missing::Digits),
         (Some(_), _) => None,
         (None, true) => Some(Missing::Entering),
         (None, false) => Some(Missing::Indices),
@@ -383,7 +416,8 @@ pub(crate) fn evidence(call: &Call, verdict: &CallVerdict) -> Evidence {
         verdict.alternatives.clone()
     };
     Evidence {
-        ok: verdict.ok,
+        // Not a wrong line: the diagnosis counts it with the lines its log cannot check.
+        ok: verdict.ok || verdict.undecided,
         alternatives,
         views: verdict.readings.views(),
         side,

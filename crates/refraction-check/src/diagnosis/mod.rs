@@ -55,6 +55,9 @@ pub enum Missing {
     Entering,
     /// Neither the indices nor `from` and `to`.
     Indices,
+    /// The printed digits cannot decide a sign the verdict rests on (of N·I, of k, of a
+    /// root): the line is wrong as printed but right for numbers within their rounding.
+    Digits,
 }
 
 /// Which truth fields a line logged (so that the diagnosis does not ask for them).
@@ -182,7 +185,7 @@ pub struct LogTally {
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Finding {
     /// The mistake's code; `none` for a log without one, `unchecked` for one whose lines
-    /// cannot be told right or wrong.
+    /// cannot be told right or wrong, `too_few_digits` for lines whose printed digits cannot.
     pub code: &'static str,
     /// How many judged lines it explains (every judged line for `none`).
     pub lines: usize,
@@ -226,6 +229,10 @@ pub(crate) const NONE: &str = "none";
 /// The code of a log whose lines cannot be told right or wrong (see [`Missing`]).
 pub(crate) const UNCHECKED: &str = "unchecked";
 
+/// The code of a log some of whose lines cannot be told right or wrong from their printed
+/// digits (see [`Missing::Digits`]): no line is wrong, but its print is too coarse.
+pub(crate) const TOO_FEW_DIGITS: &str = "too_few_digits";
+
 /// The code of a log whose judged lines are all right but some of whose lines could not be read
 /// (issue 40: the summary said `none` while the status said a failure).
 pub(crate) const UNREADABLE: &str = "unreadable";
@@ -251,6 +258,13 @@ impl Finding {
     pub fn sentence(&self, first: bool) -> String {
         if self.code == UNREADABLE {
             return t!("check-diagnosis-unreadable", lines = self.lines);
+        }
+        if self.code == TOO_FEW_DIGITS {
+            return t!(
+                "check-diagnosis-too-few-digits",
+                place = &self.place,
+                fix = &self.fix
+            );
         }
         if self.code == UNCHECKED {
             return t!(
@@ -335,7 +349,7 @@ impl Summary {
         match self.diagnosis.first().map(|f| f.code) {
             None => Verdict::NothingJudged,
             Some(NONE) => Verdict::None,
-            Some(UNCHECKED) => Verdict::Unchecked,
+            Some(UNCHECKED | TOO_FEW_DIGITS) => Verdict::Unchecked,
             Some(UNREADABLE) => Verdict::Unreadable,
             Some(_) => Verdict::Mistake,
         }
@@ -397,7 +411,8 @@ impl LogTally {
     pub fn summary(&self, api: Option<Api>, renderer: Option<Renderer>) -> Summary {
         let (mut ok, mut sampled) = (0, 0);
         for (kind, &count) in &self.kinds {
-            if !self.failing(kind) {
+            // A line its digits cannot decide is neither right nor wrong.
+            if !self.failing(kind) && kind.unchecked != Some(Missing::Digits) {
                 ok += count;
                 sampled += if kind.sample.is_some() { count } else { 0 };
             }
@@ -417,7 +432,7 @@ impl LogTally {
     fn with_unreadable(&self, mut findings: Vec<Finding>) -> Vec<Finding> {
         let clean = findings
             .first()
-            .is_some_and(|f| f.code == NONE || f.code == UNCHECKED);
+            .is_some_and(|f| [NONE, UNCHECKED, TOO_FEW_DIGITS].contains(&f.code));
         if self.unreadable > 0 && clean {
             findings.retain(|f| f.code != NONE);
             findings.insert(

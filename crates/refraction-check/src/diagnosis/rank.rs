@@ -6,7 +6,7 @@ use refraction_kernel::api::Api;
 
 use super::fixes::{self, Fix, Location};
 use super::hypotheses::{self, Family, Hypothesis, Sides, Slip};
-use super::{Band, Census, Finding, Kind, LogTally, Missing, NONE, UNCHECKED};
+use super::{Band, Census, Finding, Kind, LogTally, Missing, NONE, TOO_FEW_DIGITS, UNCHECKED};
 use super::{Code, Renderer};
 
 /// What is ranked: a hypothesis of the formula's mistakes, or a set of mistakes some lines
@@ -106,6 +106,7 @@ pub(super) fn findings(
         findings.push(lines.finding(best, &ranked, renderer));
         left.retain(|i| !best.kinds.contains(i));
     }
+    findings.extend(lines.undecided());
     findings.extend(lines.unchecked());
     if findings.is_empty() {
         findings.push(Finding {
@@ -398,12 +399,34 @@ impl Lines<'_> {
         }
     }
 
+    /// The finding for lines whose printed digits cannot tell them right or wrong, if there
+    /// are: the log's precision is too low.
+    fn undecided(&self) -> Option<Finding> {
+        let mut lines = Census::default();
+        for (kind, count) in &self.kinds {
+            if kind.unchecked == Some(Missing::Digits) {
+                lines.add(kind.side, kind.past_critical, *count);
+            }
+        }
+        (lines.total() > 0).then(|| Finding {
+            code: TOO_FEW_DIGITS,
+            lines: lines.total(),
+            place: self.tally.place(&lines),
+            fix: t!("check-too-few-digits-fix"),
+            with: Vec::new(),
+            alike: Vec::new(),
+            tell_apart: Vec::new(),
+        })
+    }
+
     /// The finding for right lines whose ratio cannot be told right or wrong, if there are.
     fn unchecked(&self) -> Option<Finding> {
         let mut lines = Census::default();
         let mut entering = 0;
         for (kind, count) in &self.kinds {
-            if let (Some(missing), true) = (kind.unchecked, kind.ok) {
+            if let (Some(missing @ (Missing::Entering | Missing::Indices)), true) =
+                (kind.unchecked, kind.ok)
+            {
                 lines.add(kind.side, kind.past_critical, *count);
                 entering += if missing == Missing::Entering {
                     *count

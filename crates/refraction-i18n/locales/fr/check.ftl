@@ -364,3 +364,8 @@ check-diagnosis-unreadable = { $lines } lignes du journal n’ont pas pu être l
 
 # check --suggest-pattern on JSON Lines (issue 40)
 check-suggest-json-lines = le journal est en JSON Lines, dont les clés nomment les champs : il n’a pas besoin de motif
+
+# check: calls whose printed digits cannot tell them right or wrong (issue 43, item 1)
+check-undecided = Impossible à dire avec les chiffres imprimés : tel qu’il est imprimé, l’appel ressemble à { $shown }, mais des nombres dans les limites de leur arrondi en font un appel juste (un signe dont dépend le verdict, de N·I, de k ou d’une racine, est plus proche de zéro que ne le montrent les chiffres). Imprime plus de chiffres pour en juger.
+check-diagnosis-too-few-digits = Impossible de dire si elles sont justes ou fausses avec les chiffres imprimés, { $place } : chacune est fausse telle qu’elle est imprimée mais juste pour des nombres dans les limites de leur arrondi, car un signe dont dépend le verdict (de N·I, de k = 1 − η²·(1 − (N·I)²) ou d’une racine) est plus proche de zéro que ne le montre la précision du journal. La précision du journal est trop faible : { $fix }.
+check-too-few-digits-fix = imprime chaque nombre avec au moins 6 chiffres significatifs (printf en C ou dans un shader : %.6g ; C# : ToString("G9"), le Vector3 de Unity : ToString("F6") ; flux C++ : std::setprecision(9) ; Rust : {"{"}:?{"}"} ; Python : repr)

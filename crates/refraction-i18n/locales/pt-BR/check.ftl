@@ -364,3 +364,8 @@ check-diagnosis-unreadable = { $lines } linhas do log não puderam ser lidas (ca
 
 # check --suggest-pattern on JSON Lines (issue 40)
 check-suggest-json-lines = o log é JSON Lines, cujas chaves nomeiam os campos: ele não precisa de padrão
+
+# check: calls whose printed digits cannot tell them right or wrong (issue 43, item 1)
+check-undecided = Não dá para dizer pelos dígitos impressos: como foi impressa, a chamada parece { $shown }, mas números dentro do seu arredondamento a tornam uma chamada certa (um sinal de que o veredito depende, de N·I, de k ou de uma raiz, está mais perto de zero do que os dígitos mostram). Imprima mais dígitos para julgá-la.
+check-diagnosis-too-few-digits = Não dá para dizer se estão certas ou erradas pelos dígitos impressos, { $place }: cada uma está errada como foi impressa, mas certa para números dentro do seu arredondamento, porque um sinal de que o veredito depende (de N·I, de k = 1 − η²·(1 − (N·I)²) ou de uma raiz) está mais perto de zero do que a precisão do log mostra. A precisão do log é baixa demais: { $fix }.
+check-too-few-digits-fix = imprima cada número com pelo menos 6 dígitos significativos (printf em C ou num shader: %.6g; C#: ToString("G9"), o Vector3 do Unity: ToString("F6"); streams de C++: std::setprecision(9); Rust: {"{"}:?{"}"}; Python: repr)

@@ -372,3 +372,8 @@ check-diagnosis-unreadable = { $lines } строк журнала не удал�
 
 # check --suggest-pattern on JSON Lines (issue 40)
 check-suggest-json-lines = журнал в формате JSON Lines, ключи которого называют поля: шаблон не нужен
+
+# check: calls whose printed digits cannot tell them right or wrong (issue 43, item 1)
+check-undecided = По напечатанным цифрам не понять: в напечатанном виде вызов похож на { $shown }, но числа в пределах их округления делают его верным (знак, от которого зависит вердикт, — N·I, k или корня — ближе к нулю, чем показывают цифры). Печатайте больше цифр, чтобы его оценить.
+check-diagnosis-too-few-digits = По напечатанным цифрам не понять, верны они или нет, { $place }: каждая неверна в напечатанном виде, но верна для чисел в пределах их округления, потому что знак, от которого зависит вердикт (N·I, k = 1 − η²·(1 − (N·I)²) или корня), ближе к нулю, чем показывает точность лога. Точность лога слишком мала: { $fix }.
+check-too-few-digits-fix = печатайте каждое число хотя бы с 6 значащими цифрами (printf в C или в шейдере: %.6g; C#: ToString("G9"), Vector3 в Unity: ToString("F6"); потоки C++: std::setprecision(9); Rust: {"{"}:?{"}"}; Python: repr)
