@@ -92,6 +92,41 @@ pub(super) struct Sharing {
     pub notice: Option<String>,
     /// What the QR code's *Save* buttons said.
     saved: Option<Status>,
+    /// The web address being typed in the QR code's dialog, kept apart from the one set until
+    /// Enter or *Show the QR code*: set at each key, the first letter made a link and the
+    /// dialog swapped its field for that letter's QR code, losing the rest of the typing.
+    draft: String,
+    /// The dialog has just opened: its address field takes the keyboard.
+    focus_draft: bool,
+}
+
+/// The QR code dialog's address field (focused when the dialog opens, `focus`, so that the
+/// teacher types at once) and its button: the address typed into `draft`, returned once
+/// Enter or the button gives it.
+fn address_field(ui: &mut Ui, draft: &mut String, focus: &mut bool) -> Option<String> {
+    ui.horizontal_wrapped(|ui| {
+        let name = ui.label(t!("link-web-base"));
+        let field = ui
+            .add(
+                TextEdit::singleline(draft)
+                    .hint_text("https://…")
+                    .desired_width(300.0),
+            )
+            .labelled_by(name.id)
+            .on_hover_text(t!("link-web-base-hover"));
+        if core::mem::take(focus) {
+            field.request_focus();
+        }
+        let entered = field.lost_focus() && ui.input(|i| i.key_pressed(Key::Enter));
+        let shown = ui
+            .add_enabled(
+                base_of(draft).is_some(),
+                egui::Button::new(t!("link-qr-show")),
+            )
+            .clicked();
+        ((entered || shown) && base_of(draft).is_some()).then(|| core::mem::take(draft))
+    })
+    .inner
 }
 
 /// The web build's address `base` as a link's start, or `None` when it is empty.
@@ -227,6 +262,7 @@ impl Explorer {
         // Only the tool shows it (a deck's step is matched against the built-in decks).
         let shown = self.tools.open == Some(super::tools::Tool::Files);
         self.tools.files.share.url = shown.then(|| self.link_url()).flatten();
+        let was_open = self.sharing.qr_open;
         if core::mem::take(&mut self.tools.files.share.qr_asked) {
             self.sharing.qr_open = true;
         }
@@ -234,6 +270,7 @@ impl Explorer {
         if !typing && ui.input_mut(|i| i.consume_key(egui::Modifiers::NONE, Key::Q)) {
             self.sharing.qr_open = !self.sharing.qr_open;
         }
+        self.sharing.focus_draft |= self.sharing.qr_open && !was_open;
         if let Some(notice) = self.sharing.notice.clone() {
             Panel::top("link-notice").show(ui, |ui| {
                 ui.horizontal_wrapped(|ui| {
@@ -261,7 +298,11 @@ impl Explorer {
             let Some(url) = url else {
                 ui.heading(t!("link-qr"));
                 ui.label(t!("link-no-web-base"));
-                self.tools.files.share.ui(ui);
+                let sharing = &mut self.sharing;
+                if let Some(base) = address_field(ui, &mut sharing.draft, &mut sharing.focus_draft)
+                {
+                    self.set_web_base(&base);
+                }
                 return;
             };
             match Code::new(&url) {

@@ -163,6 +163,8 @@ pub struct Explorer {
     system_language: Option<Locale>,
     /// The QR code shown, and what a link that could not be opened said.
     sharing: link::Sharing,
+    /// The window's title last given to the window ([`Explorer::title`]).
+    titled: String,
 }
 
 impl Explorer {
@@ -188,6 +190,7 @@ impl Explorer {
             command_line_language: None,
             system_language: Some(refraction_i18n::locale()),
             sharing: link::Sharing::default(),
+            titled: crate::TITLE.to_owned(),
         }
     }
 
@@ -307,6 +310,7 @@ impl Explorer {
             hide_answer: self.lesson.hides_answer(),
             index_scale: !self.diagram_only(),
             simple: self.presentation.simple,
+            paper: false,
         }
     }
 
@@ -360,6 +364,12 @@ impl Explorer {
             self.view = View::Interface;
         }
         self.sharing(ui);
+        let title = self.title();
+        if title != self.titled {
+            ui.ctx()
+                .send_viewport_cmd(egui::ViewportCommand::Title(title.clone()));
+            self.titled = title;
+        }
         Panel::top("views").show(ui, |ui| self.bar(ui));
         if !self.diagram_only() {
             self.deck_frame(ui);
@@ -500,7 +510,9 @@ impl Explorer {
         // First, so that the tool has the window's full height beside (or width under) the
         // panels.
         let palette = self.presentation.palette();
-        self.tools.panel(ui, &mut self.state, presenting, &palette);
+        let hidden = self.lesson.hides_answer();
+        self.tools
+            .panel(ui, &mut self.state, (presenting, hidden), &palette);
         match self.tools.files.take_opened() {
             Some(files_panel::Opened::Scene(scene)) => self.open_scene(*scene),
             Some(files_panel::Opened::Deck(deck)) => self.open_deck(*deck),

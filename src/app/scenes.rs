@@ -417,8 +417,12 @@ impl ScenesView {
                 self.open(scene);
             }
             // One line each, whatever the language: a cut line shows its whole text on hover,
-            // and the scene keeps the window's height.
-            ui.add(egui::Label::new(scene_words::description(&self.scene)).truncate());
+            // and the scene keeps the window's height. A scene's description says what its
+            // light does (the fibre's total internal reflection, the slab's parallel exit): the
+            // answer of a question asked about it, left out until it is revealed.
+            if !self.answer_hidden {
+                ui.add(egui::Label::new(scene_words::description(&self.scene)).truncate());
+            }
             if !self.in_lesson {
                 ui.add(egui::Label::new(RichText::new(t!("scenes-hint")).weak()).truncate());
             }
@@ -494,7 +498,11 @@ impl ScenesView {
         let scene = &self.scene;
         let kept = self.kept.get_or_insert_with(|| Kept {
             key,
-            picture: ScenePicture::with_palette(scene, shown, &layout, palette),
+            picture: if hidden.is_some() {
+                ScenePicture::asking(scene, shown, &layout, palette)
+            } else {
+                ScenePicture::with_palette(scene, shown, &layout, palette)
+            },
             shapes: None,
         });
         kept.paint(&painter, &to_screen, dragging);

@@ -44,6 +44,43 @@ fn copy_link_gives_the_state_at_the_web_address_and_the_qr_code_shows_it() {
     );
 }
 
+/// Q with no web address set, the documented first use in front of a class: the dialog's
+/// field has the keyboard at once and takes the whole address typed key by key (it took one
+/// letter, then showed that letter's QR code); Enter shows the QR code of the whole link.
+#[test]
+fn the_qr_dialog_takes_a_whole_address_typed_key_by_key() {
+    let mut h = harness(leaving_glass());
+    h.key_press(Key::Q);
+    h.run();
+    assert!(h.query_by_label_contains("No web address is set").is_some());
+    h.run();
+    for key in BASE.chars() {
+        h.event(egui::Event::Text(key.to_string()));
+        h.run();
+    }
+    let field = h.get_by_role_and_label(Role::TextInput, "Web address");
+    assert_eq!(
+        field.value().as_deref(),
+        Some(BASE),
+        "every key typed is kept"
+    );
+    assert_eq!(h.state().web_base(), "", "nothing is set before Enter");
+    h.key_press(Key::Enter);
+    h.run();
+    h.run();
+    let expected = link::url(BASE, &Link::State(Box::new(leaving_glass())));
+    assert_eq!(h.state().web_base(), BASE);
+    let qr = h.get_by_role_and_label(Role::Figure, &expected);
+    assert!(qr.rect().width() >= 300.0, "large: {:?}", qr.rect());
+    // The code is drawn from the link it is named with (one `url` in the dialog), and the
+    // link is written under it.
+    assert_eq!(
+        h.query_all_by_label(&expected).count(),
+        2,
+        "the code and the link"
+    );
+}
+
 #[test]
 fn a_lesson_link_opens_the_step_and_the_link_follows_what_the_class_sees() {
     let launch = Launch {

@@ -26,7 +26,6 @@ use wasm_bindgen::JsCast as _;
 pub(super) use files::dialog;
 
 use super::{Explorer, Launch};
-use crate::TITLE;
 
 /// How often the settings and the last state are written to the browser's storage: a page
 /// can be closed at any moment, and the browser does not always say so.
@@ -109,20 +108,7 @@ impl Page {
             page::describe(&self.canvas, &summary);
             self.described = summary;
         }
-        let lesson = self.explorer.lesson();
-        let step = lesson
-            .current()
-            .zip(lesson.deck.as_ref())
-            .map(|((i, _), deck)| {
-                let number = (i + 1).to_string();
-                let at = t!(
-                    "deck-step-number",
-                    number = number,
-                    count = deck.steps.len().to_string()
-                );
-                format!("{TITLE} · {} · {at}", deck.title)
-            });
-        let title = step.unwrap_or_else(|| TITLE.to_owned());
+        let title = self.explorer.title();
         if title != self.title {
             page::set_title(&title);
             self.title = title;

@@ -199,6 +199,32 @@ fn light(polarisation: Polarisation) -> Light {
 }
 
 impl Explorer {
+    /// The window's title (in a browser, the page's): the program's name and, while a deck's
+    /// step is shown, the deck's title and where the step is (`… · Snell's law in ten
+    /// minutes · 2 / 5`). Never the step's own title or question, which the strip shows: a
+    /// title is read aloud and listed where a hidden answer has no business.
+    #[must_use]
+    pub fn title(&self) -> String {
+        let Some((index, deck)) = self
+            .lesson
+            .current()
+            .map(|(i, _)| i)
+            .zip(self.lesson.deck.as_ref())
+        else {
+            return crate::TITLE.to_owned();
+        };
+        let at = t!(
+            "deck-step-number",
+            number = (index + 1).to_string(),
+            count = deck.steps.len().to_string()
+        );
+        if deck.title.trim().is_empty() {
+            format!("{} · {at}", crate::TITLE)
+        } else {
+            format!("{} · {} · {at}", crate::TITLE, deck.title)
+        }
+    }
+
     /// The lesson deck shown, where it is, and its tool.
     #[must_use]
     pub fn lesson(&self) -> &Lesson {
