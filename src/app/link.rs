@@ -217,6 +217,13 @@ impl Explorer {
         base_of(&self.tools.files.share.base).map(|base| link::url(base, &self.link()))
     }
 
+    /// The link of what the class sees for the students' own devices (the QR code's): the
+    /// link that also asks for the student's view, at the web build's address, if one is set.
+    #[must_use]
+    pub fn student_link_url(&self) -> Option<String> {
+        base_of(&self.tools.files.share.base).map(|base| link::student_url(base, &self.link()))
+    }
+
     /// The web build's address (empty: none).
     #[must_use]
     pub fn web_base(&self) -> &str {
@@ -235,7 +242,11 @@ impl Explorer {
     /// A fragment cut short, damaged or from a newer version, an unknown deck or a step past
     /// its end (worded, when shown, in the current language); nothing is changed.
     pub fn open_link(&mut self, fragment: &str) -> Result<(), LinkRefusal> {
-        match link::parse(fragment)? {
+        let parsed = link::parse(fragment)?;
+        if parsed.is_some() {
+            self.student.asked = link::asks_student_view(fragment);
+        }
+        match parsed {
             None => {}
             Some(Link::State(state)) => {
                 self.state = *state;
@@ -287,12 +298,13 @@ impl Explorer {
     }
 
     /// The QR code of what the class sees, large and centred over the window, with the link
-    /// under it; without an address, the field to type one.
+    /// under it; without an address, the field to type one. The code opens the student's
+    /// view: it is for the students' phones.
     fn qr_modal(&mut self, ui: &Ui) {
         let screen = ui.ctx().content_rect();
         let share = if self.presentation.on { 0.72 } else { 0.5 };
         let side = (screen.width().min(screen.height()) * share).max(160.0);
-        let url = self.link_url();
+        let url = self.student_link_url();
         let modal = Modal::new(Id::unique("qr-code")).show(ui.ctx(), |ui| {
             ui.set_max_width(side.max(360.0));
             let Some(url) = url else {

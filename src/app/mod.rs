@@ -33,6 +33,8 @@ mod retrace;
 mod scene_files;
 mod scenes;
 mod status;
+mod step_buttons;
+mod student;
 mod tools;
 mod typed;
 mod walkthrough;
@@ -165,6 +167,8 @@ pub struct Explorer {
     sharing: link::Sharing,
     /// The window's title last given to the window ([`Explorer::title`]).
     titled: String,
+    /// Whether the student's view is asked for or turned down.
+    student: student::StudentView,
 }
 
 impl Explorer {
@@ -191,6 +195,7 @@ impl Explorer {
             system_language: Some(refraction_i18n::locale()),
             sharing: link::Sharing::default(),
             titled: crate::TITLE.to_owned(),
+            student: student::StudentView::default(),
         }
     }
 
@@ -311,6 +316,7 @@ impl Explorer {
             index_scale: !self.diagram_only(),
             simple: self.presentation.simple,
             paper: false,
+            touch: false,
         }
     }
 
@@ -370,6 +376,30 @@ impl Explorer {
                 .send_viewport_cmd(egui::ViewportCommand::Title(title.clone()));
             self.titled = title;
         }
+        if self.student.shown(ui.ctx(), self.presentation.on) {
+            self.show_student(ui);
+        } else {
+            self.show_teacher(ui);
+        }
+        let settled = !ui.input(|i| i.pointer.any_down()) && !self.tools.walk.animating();
+        if settled {
+            let (state, scene) = (&self.state, self.scenes.scene());
+            self.history.record_unless(
+                |present| present.same_as(state, scene),
+                |present| Snapshot::after(present, state, scene),
+            );
+        }
+    }
+
+    /// Whether the window shows the student's view now (a small screen, or a link that
+    /// asked for it; never in presentation).
+    #[must_use]
+    pub fn shows_student_view(&self, ctx: &egui::Context) -> bool {
+        self.student.shown(ctx, self.presentation.on)
+    }
+
+    /// The teacher's window: the bar, the deck's strip and tool, then the view.
+    fn show_teacher(&mut self, ui: &mut Ui) {
         Panel::top("views").show(ui, |ui| self.bar(ui));
         if !self.diagram_only() {
             self.deck_frame(ui);
@@ -393,14 +423,6 @@ impl Explorer {
                     ScrollArea::vertical().show(ui, |ui| self.accuracy.show(ui, &palette));
                 });
             }
-        }
-        let settled = !ui.input(|i| i.pointer.any_down()) && !self.tools.walk.animating();
-        if settled {
-            let (state, scene) = (&self.state, self.scenes.scene());
-            self.history.record_unless(
-                |present| present.same_as(state, scene),
-                |present| Snapshot::after(present, state, scene),
-            );
         }
     }
 
@@ -428,6 +450,9 @@ impl Explorer {
                 if self.presentation.on {
                     self.panels.bar_switches(ui);
                 }
+            }
+            if !self.presentation.on {
+                self.student.switch(ui);
             }
             // What the last undo did, in what is left of the bar's last row, cut with "…"
             // (the whole on hover): it never grows the bar by a row.

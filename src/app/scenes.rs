@@ -352,15 +352,21 @@ impl ScenesView {
         palette: &Palette,
         presenting: bool,
     ) -> Option<ExplorerState> {
+        Panel::top("scene-controls").show(ui, |ui| {
+            self.controls(ui, presenting);
+            self.trace_status(ui);
+        });
+        self.show_canvas(ui, palette)
+    }
+
+    /// The canvas alone, over what `ui` has left (the student's view, which shows no scene
+    /// controls): returns the single-interface problem of the hit point clicked, if one was.
+    pub(super) fn show_canvas(&mut self, ui: &mut Ui, palette: &Palette) -> Option<ExplorerState> {
         if let Some(done) = self.retracer.poll() {
             let shown = core::mem::replace(&mut self.trace, done);
             self.retracer.recycle(shown);
             self.generation += 1;
         }
-        Panel::top("scene-controls").show(ui, |ui| {
-            self.controls(ui, presenting);
-            self.trace_status(ui);
-        });
         CentralPanel::no_frame()
             .show(ui, |ui| self.canvas(ui, palette))
             .inner

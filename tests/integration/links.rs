@@ -29,7 +29,9 @@ fn copy_link_gives_the_state_at_the_web_address_and_the_qr_code_shows_it() {
     let mut other = Explorer::new(Default::default());
     other.open_link(fragment).unwrap();
     assert_eq!(other.state(), h.state().state());
-    // The QR code: its picture is named with the link, and Q closes it.
+    // The QR code: its picture is named with the link for the students' phones (the student's
+    // view), and Q closes it.
+    let expected = format!("{expected}&view=student");
     click(&mut h, "QR code");
     let qr = h.get_by_role_and_label(Role::Figure, &expected);
     assert!(qr.rect().width() >= 300.0, "large: {:?}", qr.rect());
@@ -68,7 +70,7 @@ fn the_qr_dialog_takes_a_whole_address_typed_key_by_key() {
     h.key_press(Key::Enter);
     h.run();
     h.run();
-    let expected = link::url(BASE, &Link::State(Box::new(leaving_glass())));
+    let expected = link::student_url(BASE, &Link::State(Box::new(leaving_glass())));
     assert_eq!(h.state().web_base(), BASE);
     let qr = h.get_by_role_and_label(Role::Figure, &expected);
     assert!(qr.rect().width() >= 300.0, "large: {:?}", qr.rect());

@@ -126,6 +126,9 @@ pub struct Overlay {
     /// media's labels give both indices), and a hidden answer's banner names only the
     /// convention, where the window says how to reveal it.
     pub paper: bool,
+    /// Handles sized for a finger (a phone's student view): each handle's grab area is at least
+    /// [`TOUCH_TARGET`](super::picture::TOUCH_TARGET) pixels across, as WCAG's target size asks.
+    pub touch: bool,
 }
 
 impl Default for Overlay {
@@ -141,6 +144,7 @@ impl Default for Overlay {
             index_scale: true,
             simple: false,
             paper: false,
+            touch: false,
         }
     }
 }

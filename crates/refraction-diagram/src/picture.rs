@@ -153,6 +153,10 @@ fn layout_with_banner(
 /// How much larger than a handle its grab area is (half-side over radius).
 pub const GRAB_SCALE: f32 = 1.6;
 
+/// The least side of a handle's grab area for a finger ([`Overlay::touch`]), in pixels (CSS
+/// pixels in a browser): 44, WCAG 2.1's target size (2.5.5) and Apple's and Google's guides.
+pub const TOUCH_TARGET: f32 = 44.0;
+
 /// The shade of a medium in `palette`: lighter for lower index (clamped to [`INDEX_RANGE`]).
 #[must_use]
 pub fn medium_colour(palette: &Palette, index: f64) -> Colour {
@@ -203,6 +207,16 @@ enum Rank {
 impl DiagramBuilder<'_> {
     fn font(&self) -> f32 {
         self.layout.font
+    }
+
+    /// A handle's radius: `radius`, or for a finger at least what gives a grab area
+    /// [`TOUCH_TARGET`] across.
+    fn handle_radius(&self, radius: f32) -> f32 {
+        if self.overlay.touch {
+            radius.max(TOUCH_TARGET * 0.5 / GRAB_SCALE)
+        } else {
+            radius
+        }
     }
 
     fn stroke(&self, width: f32, colour: Colour, dash: Dash) -> Stroke {
@@ -695,8 +709,10 @@ impl DiagramBuilder<'_> {
             (HandleId::MuT, 1.0, self.state.mu_t(), "μt"),
         ]
         .map(|(id, side, index, text)| {
-            let center = Vec2::new(scale.x + side * font * 0.8, scale.y_of(index));
-            let radius = font * 0.75;
+            let radius = self.handle_radius(font * 0.75);
+            // Apart by their grab areas' width, so that a finger takes the one it is on.
+            let apart = (font * 0.8).max(radius * GRAB_SCALE);
+            let center = Vec2::new(scale.x + side * apart, scale.y_of(index));
             let fill = medium_colour(&self.palette, index);
             self.shapes.push(Figure::Disc {
                 center,
@@ -892,7 +908,7 @@ impl DiagramBuilder<'_> {
     /// A round handle at a tip (on paper, none is drawn: nothing there can be dragged).
     fn tip_handle(&mut self, id: HandleId, d: DVec2, colour: Colour) -> Handle {
         let center = self.at(d);
-        let radius = self.font() * 0.6;
+        let radius = self.handle_radius(self.font() * 0.6);
         if self.overlay.paper {
             return Handle { id, center, radius };
         }

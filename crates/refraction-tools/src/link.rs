@@ -14,9 +14,10 @@
 //! ```
 //!
 //! A fragment is a list of `name=value` parts joined by `&`, each value percent-encoded. This
-//! version reads `state`, `lesson`, `step` and `v` (the link format, [`FORMAT`]); a later
-//! format, or a part this version does not know, is refused as a link from a newer version,
-//! never half read.
+//! version reads `state`, `lesson`, `step`, `view=student` (the student's view, whatever the
+//! screen: see [`student_url`]) and `v` (the link format, [`FORMAT`]); a later format, or a
+//! part this version does not know, is refused as a link from a newer version, never half
+//! read.
 
 use refraction_i18n::t;
 use refraction_model::ExplorerState;
@@ -134,6 +135,25 @@ pub fn url(base: &str, link: &Link) -> String {
     format!("{base}#{}", fragment(link))
 }
 
+/// The part that asks for the student's view: the question, the diagram across the screen,
+/// handles a finger can take, and nothing of the teacher's.
+pub const STUDENT_VIEW: &str = "view=student";
+
+/// [`url`] for the class's own devices (what a QR code opens): the link that also asks for
+/// the student's view ([`STUDENT_VIEW`]).
+#[must_use]
+pub fn student_url(base: &str, link: &Link) -> String {
+    format!("{}&{STUDENT_VIEW}", url(base, link))
+}
+
+/// Whether the fragment `fragment` (with or without its `#`) asks for the student's view.
+/// A fragment that cannot be read asks for nothing ([`parse`] says why).
+#[must_use]
+pub fn asks_student_view(fragment: &str) -> bool {
+    let fragment = fragment.strip_prefix('#').unwrap_or(fragment);
+    fragment.split('&').any(|part| part == STUDENT_VIEW)
+}
+
 /// The parts of a fragment, each name with its decoded value, in order.
 fn parts(fragment: &str) -> Result<Vec<(&str, String)>, LinkError> {
     fragment
@@ -189,9 +209,13 @@ pub fn parse(fragment: &str) -> Result<Option<Link>, LinkError> {
     }
     if let Some((name, _)) = parts
         .iter()
-        .find(|(n, _)| !["state", "lesson", "step", "v"].contains(n))
+        .find(|(n, _)| !["state", "lesson", "step", "view", "v"].contains(n))
     {
         return Err(LinkError::Newer((*name).to_owned()));
+    }
+    // Only the student's view is a view a link names; another is a newer version's.
+    if let Some(view) = value("view").filter(|v| *v != "student") {
+        return Err(LinkError::Newer(format!("view={view}")));
     }
     match (value("state"), value("lesson")) {
         (Some(_), Some(_)) => Err(LinkError::Malformed(t!("link-state-and-lesson"))),
@@ -326,6 +350,29 @@ mod tests {
         for error in [LinkError::CutShort, LinkError::Newer("v=2".to_owned())] {
             assert!(!error.message().is_empty());
         }
+    }
+
+    #[test]
+    fn a_link_for_the_class_asks_for_the_student_s_view() {
+        let link = Link::Lesson {
+            name: "snell".to_owned(),
+            step: 2,
+        };
+        let url = student_url("https://school.example/explorer/", &link);
+        assert_eq!(
+            url,
+            "https://school.example/explorer/#lesson=snell&step=2&view=student"
+        );
+        let fragment = &url[url.find('#').unwrap()..];
+        assert_eq!(parse(fragment), Ok(Some(link.clone())));
+        assert!(asks_student_view(fragment));
+        assert!(!asks_student_view("#lesson=snell&step=2"));
+        let state = student_url("x", &Link::State(Box::new(beyond_critical())));
+        assert!(asks_student_view(&state[state.find('#').unwrap()..]));
+        assert_eq!(
+            parse("lesson=snell&view=teacher"),
+            Err(LinkError::Newer("view=teacher".to_owned()))
+        );
     }
 
     #[test]

@@ -107,7 +107,7 @@ impl Lesson {
 
     /// The keys pressed this frame that ask something of the deck (see the module's
     /// [precedence](self#keys)), taken out of the input so that nothing else acts on them.
-    fn keys(ui: &Ui) -> Vec<Command> {
+    pub(super) fn keys(ui: &Ui) -> Vec<Command> {
         if ui.ctx().text_edit_focused() {
             return Vec::new();
         }
