@@ -106,16 +106,14 @@ pub fn summary(state: &ExplorerState, hide_answer: bool) -> String {
 }
 
 /// The banner's words for `overlay`: the [`summary`], or on paper with the answer hidden the
-/// convention alone (a sheet has nothing to reveal with).
+/// convention alone, without the sign of a it gives (a sheet has nothing to reveal with, and
+/// a question may ask for the sign).
 fn banner_words(state: &ExplorerState, overlay: &Overlay) -> String {
     if overlay.paper && overlay.hide_answer {
-        let convention = state.convention();
-        let words = match convention {
-            Convention::TowardOrigin => t!("diagram-banner-toward-origin"),
-            Convention::AlongRay => t!("diagram-banner-along-ray"),
-        };
-        let section = convention.section().to_string();
-        t!("diagram-banner-section", section = section, words = words)
+        match state.convention() {
+            Convention::TowardOrigin => t!("diagram-banner-asked-toward-origin"),
+            Convention::AlongRay => t!("diagram-banner-asked-along-ray"),
+        }
     } else {
         summary(state, overlay.hide_answer)
     }

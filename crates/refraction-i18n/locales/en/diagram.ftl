@@ -23,6 +23,10 @@ diagram-banner-tir =
 diagram-banner-toward-origin = W points back toward the origin, so a = −μ
 diagram-banner-along-ray = W is the direction of travel, so a = +μ
 diagram-banner-section = Section { $section }: { $words }
+# The banner on paper while the answer is hidden: the convention without the sign of a,
+# which a question may ask for
+diagram-banner-asked-toward-origin = Section 1: W points back toward the origin
+diagram-banner-asked-along-ray = Section 2: W is the direction of travel
 # The banner's second line: the angles of incidence (i) and refraction (t) and k.
 diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T exists
 diagram-critical-angle = critical angle θc = { $angle }°

@@ -22,6 +22,10 @@ diagram-banner-tir =
 diagram-banner-toward-origin = W apunta de vuelta al origen, así que a = −μ
 diagram-banner-along-ray = W es la dirección de propagación, así que a = +μ
 diagram-banner-section = Sección { $section }: { $words }
+# The banner on paper while the answer is hidden: the convention without the sign of a,
+# which a question may ask for
+diagram-banner-asked-toward-origin = Sección 1: W apunta de vuelta hacia el origen
+diagram-banner-asked-along-ray = Sección 2: W es la dirección de propagación
 diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T existe
 diagram-critical-angle = ángulo límite θc = { $angle }°
 diagram-kernel-normal = −N: la normal que usa el kernel

@@ -22,6 +22,10 @@ diagram-banner-tir =
 diagram-banner-toward-origin = W направлен обратно к началу луча, поэтому a = −μ
 diagram-banner-along-ray = W — направление распространения, поэтому a = +μ
 diagram-banner-section = Раздел { $section }: { $words }
+# The banner on paper while the answer is hidden: the convention without the sign of a,
+# which a question may ask for
+diagram-banner-asked-toward-origin = Раздел 1: W направлен обратно к началу луча
+diagram-banner-asked-along-ray = Раздел 2: W — направление распространения
 diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T существует
 diagram-critical-angle = предельный угол θc = { $angle }°
 diagram-kernel-normal = −N: нормаль, которую берёт ядро
