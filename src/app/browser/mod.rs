@@ -45,6 +45,8 @@ struct Page {
     described: String,
     /// The page's title, last set.
     title: String,
+    /// Whether the student's view was shown, last said on the canvas.
+    student: Option<bool>,
     /// The strip's message, last said in the page's live region.
     announced: Option<String>,
 }
@@ -99,9 +101,15 @@ impl Page {
         }
     }
 
-    /// Names the canvas with what the diagram says, titles the page with the deck's step
-    /// shown, and says the strip's message in the page's live region, each when it changed.
-    fn describe(&mut self) {
+    /// Names the canvas with what the diagram says, says on it which view is shown, titles
+    /// the page with the deck's step shown, and says the strip's message in the page's live
+    /// region, each when it changed.
+    fn describe(&mut self, ctx: &egui::Context) {
+        let student = self.explorer.shows_student_view(ctx);
+        if self.student != Some(student) {
+            page::show_view(&self.canvas, student);
+            self.student = Some(student);
+        }
         let hidden = self.explorer.lesson().hides_answer();
         let summary = refraction_diagram::picture::summary(self.explorer.state(), hidden);
         if summary != self.described {
@@ -134,7 +142,7 @@ impl eframe::App for Page {
         self.follow_presentation(ui.ctx());
         self.follow_clipboard(ui.ctx());
         files::deliver_written();
-        self.describe();
+        self.describe(ui.ctx());
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
@@ -171,6 +179,7 @@ fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement
         full_screen: false,
         described: String::new(),
         title: String::new(),
+        student: None,
         announced: None,
     };
     page.follow_address();
