@@ -14,6 +14,9 @@ use refraction_i18n::t;
 use refraction_diagram::intensities::Polarisation;
 use refraction_diagram::wavefronts::WaveOptions;
 
+/// The *Effects* menu's icon in presentation's bar.
+const EFFECTS_ICON: &str = "✨";
+
 /// How long the fronts take to move by one spacing, in seconds: slow enough to follow one.
 pub(super) const WAVE_PERIOD_SECONDS: f64 = 2.0;
 
@@ -74,14 +77,25 @@ impl EffectsMenu {
     /// The *Effects* menu for the top bar (one button, so that the bar keeps its rows on a
     /// projector): the two switches, and each switch's options while it is on. The button
     /// shows selected while an effect is on; the menu stays open until a click outside it.
-    pub(super) fn menu(&mut self, ui: &mut Ui) {
+    ///
+    /// In presentation (`compact`), where the bar keeps one row in every language, the button
+    /// shows its icon; its name stays its accessible name and leads its hover.
+    pub(super) fn menu(&mut self, ui: &mut Ui, compact: bool) {
         let on = self.intensities || self.waves;
-        let button = Button::new(t!("effects-menu")).selected(on);
+        let name = t!("effects-menu");
+        let shown = if compact { EFFECTS_ICON } else { name.as_str() };
+        let button = Button::new(shown).selected(on);
         let config = MenuConfig::new().close_behavior(PopupCloseBehavior::CloseOnClickOutside);
         let (response, _) = MenuButton::from_button(button)
             .config(config)
             .ui(ui, |ui| self.switches(ui));
-        response.on_hover_text(t!("effects-menu-hover"));
+        response.widget_info(|| egui::WidgetInfo::selected(egui::Role::Button, true, on, &name));
+        let hover = t!("effects-menu-hover");
+        if compact {
+            response.on_hover_text(format!("{name}: {hover}"));
+        } else {
+            response.on_hover_text(hover);
+        }
     }
 
     /// The switches and their options, one under the other.

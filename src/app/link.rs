@@ -129,6 +129,32 @@ fn address_field(ui: &mut Ui, draft: &mut String, focus: &mut bool) -> Option<St
     .inner
 }
 
+/// The least width of the QR code's dialog, in points: the address field and its button.
+const QR_DIALOG_WIDTH: f32 = 360.0;
+
+/// The QR code's side in its dialog, in points: half the window's shorter side at the desk,
+/// three quarters on a projector, and never so large that the dialog (the code in its quiet
+/// zone, the link `url` under it, the buttons and the margins) runs out of the window: it ran
+/// off the top of a 1280×720 projector.
+fn qr_side(ui: &Ui, url: &str, presenting: bool) -> f32 {
+    let screen = ui.ctx().content_rect();
+    let share = if presenting { 0.72 } else { 0.5 };
+    let wanted = screen.width().min(screen.height()) * share;
+    let font = egui::TextStyle::Monospace.resolve(ui.style());
+    let wrap = wanted.max(QR_DIALOG_WIDTH);
+    let link = ui
+        .painter()
+        .layout(url.to_owned(), font, egui::Color32::PLACEHOLDER, wrap)
+        .size()
+        .y;
+    let spacing = ui.spacing();
+    // The rows under the link (a file's warning, the buttons, what they said), the spaces
+    // between the rows and the dialog's frame.
+    let rows = 3.0 * spacing.interact_size.y + 5.0 * spacing.item_spacing.y;
+    let frame = 2.0 * (spacing.window_margin.topf() + spacing.window_margin.bottomf()) + 8.0;
+    wanted.min(screen.height() - link - rows - frame).max(120.0)
+}
+
 /// The web build's address `base` as a link's start, or `None` when it is empty.
 fn base_of(base: &str) -> Option<&str> {
     Some(base.trim()).filter(|b| !b.is_empty())
@@ -301,12 +327,10 @@ impl Explorer {
     /// under it; without an address, the field to type one. The code opens the student's
     /// view: it is for the students' phones.
     fn qr_modal(&mut self, ui: &Ui) {
-        let screen = ui.ctx().content_rect();
-        let share = if self.presentation.on { 0.72 } else { 0.5 };
-        let side = (screen.width().min(screen.height()) * share).max(160.0);
         let url = self.student_link_url();
+        let side = qr_side(ui, url.as_deref().unwrap_or_default(), self.presentation.on);
         let modal = Modal::new(Id::unique("qr-code")).show(ui.ctx(), |ui| {
-            ui.set_max_width(side.max(360.0));
+            ui.set_max_width(side.max(QR_DIALOG_WIDTH));
             let Some(url) = url else {
                 ui.heading(t!("link-qr"));
                 ui.label(t!("link-no-web-base"));

@@ -446,7 +446,7 @@ impl Explorer {
                 .bar(ui, self.presentation.on, self.lesson.deck.is_some());
             if self.view == View::Interface {
                 ui.separator();
-                self.effects.menu(ui);
+                self.effects.menu(ui, self.presentation.on);
                 if self.presentation.on {
                     self.panels.bar_switches(ui);
                 }

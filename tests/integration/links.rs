@@ -24,11 +24,13 @@ fn copy_link_gives_the_state_at_the_web_address_and_the_qr_code_shows_it() {
     assert!(h.query_by_label(&expected).is_some(), "the link is shown");
     click(&mut h, "🔗 Copy link");
     assert!(h.query_by_label("Link copied.").is_some());
-    // The link reads back as the state shown.
+    // The link reads back as the state shown, to far below what the diagram shows.
     let fragment = &expected[expected.find('#').unwrap()..];
     let mut other = Explorer::new(Default::default());
     other.open_link(fragment).unwrap();
-    assert_eq!(other.state(), h.state().state());
+    let (opened, shown) = (other.state(), h.state().state());
+    assert!((opened.incidence_degrees() - shown.incidence_degrees()).abs() < 1e-4);
+    assert_eq!((opened.mu_i(), opened.mu_t()), (shown.mu_i(), shown.mu_t()));
     // The QR code: its picture is named with the link for the students' phones (the student's
     // view), and Q closes it.
     let expected = format!("{expected}&view=student");
@@ -80,6 +82,38 @@ fn the_qr_dialog_takes_a_whole_address_typed_key_by_key() {
         h.query_all_by_label(&expected).count(),
         2,
         "the code and the link"
+    );
+}
+
+/// On a 1280×720 projector (presentation) the QR code of a state's link stays inside the
+/// window with its quiet zone, the link and the buttons under it (it ran off the top), and
+/// the link's numbers are as short as the diagram shows them.
+#[test]
+fn the_qr_code_stays_inside_a_projectors_window() {
+    let launch = Launch {
+        state: Some(leaving_glass()),
+        web_base: Some(BASE.to_owned()),
+        present: true,
+        ..Launch::default()
+    };
+    let mut h = common::harness_sized(Explorer::launched(launch, |_| None), (1280.0, 720.0));
+    h.key_press(Key::Q);
+    h.run();
+    h.run();
+    let expected = link::student_url(BASE, &Link::State(Box::new(leaving_glass())));
+    assert!(
+        expected.len() < 150,
+        "{} characters: {expected}",
+        expected.len()
+    );
+    let window = h.ctx.content_rect();
+    let qr = h.get_by_role_and_label(Role::Figure, &expected).rect();
+    assert!(window.contains_rect(qr), "{qr:?} in {window:?}");
+    assert!(qr.height() >= window.height() * 0.4, "large: {qr:?}");
+    let close = h.get_by_label("Save as svg").rect();
+    assert!(
+        window.contains_rect(close),
+        "the buttons: {close:?} in {window:?}"
     );
 }
 

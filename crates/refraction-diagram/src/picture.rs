@@ -708,8 +708,12 @@ impl DiagramBuilder<'_> {
         ]
         .map(|(id, side, index, text)| {
             let radius = self.handle_radius(font * 0.75);
-            // Apart by their grab areas' width, so that a finger takes the one it is on.
-            let apart = (font * 0.8).max(radius * GRAB_SCALE);
+            // For a finger, apart by their grab areas' width, so that it takes the one it is on.
+            let apart = if self.overlay.touch {
+                (font * 0.8).max(radius * GRAB_SCALE)
+            } else {
+                font * 0.8
+            };
             let center = Vec2::new(scale.x + side * apart, scale.y_of(index));
             let fill = medium_colour(&self.palette, index);
             self.shapes.push(Figure::Disc {
