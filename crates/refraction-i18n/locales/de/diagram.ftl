@@ -30,8 +30,8 @@ diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T e
 diagram-critical-angle = Grenzwinkel θc = { $angle }°
 diagram-kernel-normal = −N: die Normale des Kernels
 diagram-outward-normal-bug =
-    Formel des Artikels mit N wie gegeben: Lösung der falschen Seite,
-    das falsche T des Fehlers mit äußerer Normale
+    Fehler der äußeren Normale:
+    T der Formel mit N wie gegeben
 diagram-index-scale = Index μ
 diagram-incoming-ray = einfallender Strahl
 diagram-normal-incidence = senkrechter Einfall: W, N und T liegen auf einer Linie

@@ -32,8 +32,8 @@ diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T e
 diagram-critical-angle = critical angle θc = { $angle }°
 diagram-kernel-normal = −N: the normal the kernel uses
 diagram-outward-normal-bug =
-    paper's formula with un-flipped N: the wrong-side root,
-    the wrong T of the outward-normal bug
+    outward-normal bug:
+    the paper's T with N as given
 diagram-index-scale = index μ
 diagram-incoming-ray = incoming ray
 diagram-normal-incidence = normal incidence: W, N and T lie on one line

@@ -30,8 +30,8 @@ diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T e
 diagram-critical-angle = ángulo límite θc = { $angle }°
 diagram-kernel-normal = −N: la normal que usa el kernel
 diagram-outward-normal-bug =
-    fórmula del artículo con N sin invertir: la raíz del lado equivocado,
-    la T errónea del fallo de la normal exterior
+    fallo de la normal exterior:
+    la T de la fórmula con N tal cual
 diagram-index-scale = índice μ
 diagram-incoming-ray = rayo incidente
 diagram-normal-incidence = incidencia normal: W, N y T están en una misma línea

@@ -30,8 +30,8 @@ diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0 : T
 diagram-critical-angle = angle limite θc = { $angle }°
 diagram-kernel-normal = −N : la normale qu’utilise le noyau
 diagram-outward-normal-bug =
-    formule de l’article avec N non retournée : la racine du mauvais côté,
-    le T erroné du bogue de la normale extérieure
+    bogue de la normale extérieure :
+    le T de la formule avec N tel quel
 diagram-index-scale = indice μ
 diagram-incoming-ray = rayon incident
 diagram-normal-incidence = incidence normale : W, N et T sont sur une même droite

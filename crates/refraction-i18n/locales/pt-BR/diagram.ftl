@@ -30,8 +30,8 @@ diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T e
 diagram-critical-angle = ângulo limite θc = { $angle }°
 diagram-kernel-normal = −N: a normal que o kernel usa
 diagram-outward-normal-bug =
-    fórmula do artigo com N sem inverter: a raiz do lado errado,
-    o T errado do defeito da normal externa
+    defeito da normal externa:
+    o T da fórmula com N como dado
 diagram-index-scale = índice μ
 diagram-incoming-ray = raio incidente
 diagram-normal-incidence = incidência normal: W, N e T estão na mesma linha

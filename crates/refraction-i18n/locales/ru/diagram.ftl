@@ -30,8 +30,8 @@ diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T �
 diagram-critical-angle = предельный угол θc = { $angle }°
 diagram-kernel-normal = −N: нормаль, которую берёт ядро
 diagram-outward-normal-bug =
-    формула статьи с неразвёрнутой N: корень не с той стороны,
-    неверный T из-за ошибки внешней нормали
+    ошибка внешней нормали:
+    T по формуле с N как есть
 diagram-index-scale = показатель μ
 diagram-incoming-ray = падающий луч
 diagram-normal-incidence = нормальное падение: W, N и T лежат на одной прямой
