@@ -38,13 +38,19 @@ pub(super) struct EffectsMenu {
 }
 
 impl EffectsMenu {
-    /// Turns on what a lesson is about: at Brewster's angle, the rays by their share of p light
-    /// (the reflected one vanishes), so that the preset shows Brewster's angle.
+    /// Starts the effects of a lesson preset afresh: what the lesson is about and nothing the
+    /// last one turned on. At Brewster's angle, the rays by their share of p light (the
+    /// reflected one vanishes), so that the preset shows Brewster's angle; every other preset
+    /// with no effect (the next preset kept Brewster's p-light shares).
     pub(super) fn start(&mut self, lesson: refraction_model::Lesson) {
-        if lesson == refraction_model::Lesson::Brewster {
-            self.intensities = true;
-            self.polarisation = Polarisation::P;
-        }
+        let brewster = lesson == refraction_model::Lesson::Brewster;
+        self.intensities = brewster;
+        self.polarisation = if brewster {
+            Polarisation::P
+        } else {
+            Polarisation::Unpolarised
+        };
+        self.waves = false;
     }
 
     /// The light the rays are drawn for, while *Intensities* is on.
@@ -98,8 +104,11 @@ impl EffectsMenu {
         }
     }
 
-    /// The switches and their options, one under the other.
+    /// The switches and their options, one under the other, each on one line: the menu is as
+    /// wide as its longest (a menu as narrow as its first switch broke "Construction de
+    /// Huygens" inside its words on a projector).
     fn switches(&mut self, ui: &mut Ui) {
+        ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
         ui.toggle_value(&mut self.intensities, t!("effects-intensities"))
             .on_hover_text(t!("effects-intensities-hover"));
         if self.intensities {
@@ -148,5 +157,16 @@ mod tests {
         frame(&mut effects);
         let phase = effects.waves().unwrap().phase;
         assert!(phase > 0.0 && phase < 1.0, "{phase}");
+    }
+
+    #[test]
+    fn a_preset_starts_with_its_own_effects_and_none_of_the_last_ones() {
+        use refraction_model::Lesson;
+        let mut effects = EffectsMenu::default();
+        effects.start(Lesson::Brewster);
+        assert_eq!(effects.intensities(), Some(Polarisation::P));
+        effects.waves = true;
+        effects.start(Lesson::AirToGlass);
+        assert_eq!((effects.intensities(), effects.waves()), (None, None));
     }
 }

@@ -112,13 +112,17 @@ fn check_the_phone(size: (f32, f32), least_share: f32) {
         );
     }
     // Reveal, then the next step, with a finger.
-    assert!(h.state().lesson().hides_answer());
+    assert!(
+        h.state().lesson().hides_answer(),
+        "{size:?}: hidden at first"
+    );
     h.get_by_label("Reveal the answer").click();
     h.run();
-    assert!(!h.state().lesson().hides_answer());
+    assert!(!h.state().lesson().hides_answer(), "{size:?}: revealed");
     h.get_by_label("Next step").click();
     h.run();
-    assert_eq!(h.state().lesson().current().map(|(i, _)| i), Some(2));
+    let shown = h.state().lesson().current().map(|(i, _)| i);
+    assert_eq!(shown, Some(2), "{size:?}: the next step");
 }
 
 #[test]
@@ -134,8 +138,9 @@ fn a_phone_sideways_keeps_the_buttons_beside_the_diagram() {
 #[test]
 fn an_upright_tablet_gets_the_students_view_too() {
     let h = opened("#lesson=total-internal-reflection&step=2", TABLET);
-    assert!(h.state().shows_student_view(&h.ctx));
-    assert!(canvas(&h).width() >= TABLET.0 * 0.99);
+    assert!(h.state().shows_student_view(&h.ctx), "an upright tablet");
+    let diagram = canvas(&h);
+    assert!(diagram.width() >= TABLET.0 * 0.99, "{diagram:?}");
 }
 
 #[test]
@@ -148,7 +153,8 @@ fn the_step_buttons_turn_w_and_n_and_change_the_indices() {
     assert!((after - before - 1.0).abs() < 1e-9, "{before} → {after}");
     h.get_by_label("μt: 0.01 less").click();
     h.run();
-    assert!((h.state().state().mu_t() - 1.49).abs() < 1e-9);
+    let mu_t = h.state().state().mu_t();
+    assert!((mu_t - 1.49).abs() < 1e-9, "μt 1.5 → {mu_t}");
     let n = h.state().state().n();
     h.get_by_label("Turn the normal 1° clockwise").click();
     h.run();
@@ -172,14 +178,17 @@ fn a_desk_opens_the_students_view_only_when_the_link_asks_and_never_on_the_proje
     let h = opened("#lesson=snell&step=2", desk);
     assert!(!h.state().shows_student_view(&h.ctx), "the teacher's view");
     let mut h = opened("#lesson=snell&step=2&view=student", desk);
-    assert!(h.state().shows_student_view(&h.ctx));
+    assert!(h.state().shows_student_view(&h.ctx), "asked for");
     // The whole explorer on request, and back.
     h.get_by_label("🖥 Full explorer").click();
     h.run();
-    assert!(!h.state().shows_student_view(&h.ctx));
+    assert!(!h.state().shows_student_view(&h.ctx), "the full explorer");
     h.get_by_label("📱 Student view").click();
     h.run();
-    assert!(h.state().shows_student_view(&h.ctx));
+    assert!(
+        h.state().shows_student_view(&h.ctx),
+        "back to the student's"
+    );
     h.state_mut().presentation_mut().on = true;
     h.run();
     h.run();
@@ -192,7 +201,12 @@ fn a_desk_opens_the_students_view_only_when_the_link_asks_and_never_on_the_proje
 #[test]
 fn a_scene_step_shows_its_scene_across_the_phone() {
     let h = opened("#lesson=total-internal-reflection&step=5", PHONE);
-    assert_eq!(h.state().view(), refraction_explorer::app::View::Scenes);
+    let view = h.state().view();
+    assert_eq!(
+        view,
+        refraction_explorer::app::View::Scenes,
+        "the step's scene"
+    );
     let diagram = canvas(&h);
     assert!(diagram.width() >= PHONE.0 * 0.99, "{diagram:?}");
     // No scene controls nor its files: the scene picker and export are the teacher's.
