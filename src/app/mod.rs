@@ -169,6 +169,9 @@ pub struct Explorer {
     titled: String,
     /// Whether the student's view is asked for or turned down.
     student: student::StudentView,
+    /// Whether the last frame showed the student's view (its diagram has no index scale and
+    /// handles for a finger: [`Explorer::overlay`]).
+    student_shown: bool,
 }
 
 impl Explorer {
@@ -196,6 +199,7 @@ impl Explorer {
             sharing: link::Sharing::default(),
             titled: crate::TITLE.to_owned(),
             student: student::StudentView::default(),
+            student_shown: false,
         }
     }
 
@@ -302,7 +306,8 @@ impl Explorer {
         self.state = state;
     }
 
-    /// What is drawn over the diagram now: palette, view, the student's T, the highlights.
+    /// What is drawn over the diagram now: palette, view, the student's T, the highlights; in
+    /// the student's view, no index scale and handles for a finger.
     #[must_use]
     pub fn overlay(&self) -> Overlay {
         Overlay {
@@ -313,10 +318,10 @@ impl Explorer {
             intensities: self.effects.intensities(),
             waves: self.effects.waves(),
             hide_answer: self.lesson.hides_answer(),
-            index_scale: !self.diagram_only(),
+            index_scale: !self.diagram_only() && !self.student_shown,
             simple: self.presentation.simple,
             paper: false,
-            touch: false,
+            touch: self.student_shown,
         }
     }
 
@@ -376,7 +381,8 @@ impl Explorer {
                 .send_viewport_cmd(egui::ViewportCommand::Title(title.clone()));
             self.titled = title;
         }
-        if self.student.shown(ui.ctx(), self.presentation.on) {
+        self.student_shown = self.student.shown(ui.ctx(), self.presentation.on);
+        if self.student_shown {
             self.show_student(ui);
         } else {
             self.show_teacher(ui);

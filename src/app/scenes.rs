@@ -63,6 +63,8 @@ pub struct ScenesView {
     answer_hidden: bool,
     /// A lesson step is shown: its strip stands above, and the hint line is left out.
     in_lesson: bool,
+    /// The handles are sized for a finger (the student's view).
+    touch: bool,
     /// In presentation, the scene's files, description and hint are shown (they start
     /// folded away, so that the scene owns the projector).
     more_shown: bool,
@@ -212,6 +214,7 @@ impl ScenesView {
             files: SceneFiles::default(),
             answer_hidden: false,
             in_lesson: false,
+            touch: false,
             more_shown: false,
             aspect: None,
             generation: 0,
@@ -359,9 +362,23 @@ impl ScenesView {
         self.show_canvas(ui, palette)
     }
 
-    /// The canvas alone, over what `ui` has left (the student's view, which shows no scene
-    /// controls): returns the single-interface problem of the hit point clicked, if one was.
-    pub(super) fn show_canvas(&mut self, ui: &mut Ui, palette: &Palette) -> Option<ExplorerState> {
+    /// The canvas alone, over what `ui` has left, its handles for a finger (the student's
+    /// view, which shows no scene controls): returns the single-interface problem of the hit
+    /// point clicked, if one was.
+    pub(super) fn show_for_touch(
+        &mut self,
+        ui: &mut Ui,
+        palette: &Palette,
+    ) -> Option<ExplorerState> {
+        self.touch = true;
+        let clicked = self.show_canvas(ui, palette);
+        self.touch = false;
+        clicked
+    }
+
+    /// The canvas alone, over what `ui` has left: returns the single-interface problem of the
+    /// hit point clicked, if one was.
+    fn show_canvas(&mut self, ui: &mut Ui, palette: &Palette) -> Option<ExplorerState> {
         if let Some(done) = self.retracer.poll() {
             let shown = core::mem::replace(&mut self.trace, done);
             self.retracer.recycle(shown);
@@ -474,11 +491,16 @@ impl ScenesView {
         let rect = response.rect;
         let to_screen = RectTransform::from_to(Rect::from_min_size(Pos2::ZERO, rect.size()), rect);
         let layout = self.drag_layout.unwrap_or_else(|| {
-            SceneLayout::for_scene(
+            let layout = SceneLayout::for_scene(
                 &self.scene,
                 &self.trace,
                 Vec2::new(rect.width(), rect.height()),
-            )
+            );
+            if self.touch {
+                layout.for_touch()
+            } else {
+                layout
+            }
         });
         let mut clicked_at = response
             .interact_pointer_pos()

@@ -9,7 +9,6 @@
 //! one.
 
 use egui::{Button, Context, Panel, RichText, Role, TextStyle, Ui, Vec2, WidgetInfo};
-use refraction_diagram::Overlay;
 use refraction_diagram::picture::TOUCH_TARGET;
 use refraction_i18n::t;
 
@@ -100,9 +99,11 @@ impl Explorer {
     pub(super) fn show_student(&mut self, ui: &mut Ui) {
         let screen = ui.ctx().content_rect();
         let landscape = screen.width() > screen.height();
-        // Sideways the buttons take the window's height beside the diagram, and the step's
-        // strip stands over the diagram alone.
-        if landscape {
+        // Sideways the step buttons take the window's height beside the diagram, and the
+        // step's strip stands over the diagram alone; a scene has none (its handles are its
+        // own), and keeps the width.
+        let column = landscape && self.view != View::Scenes;
+        if column {
             self.student_buttons(ui, true);
         }
         if self.lesson.current().is_some() {
@@ -114,7 +115,7 @@ impl Explorer {
                 self.deck_command(command);
             }
         }
-        if !landscape {
+        if !column {
             self.student_buttons(ui, false);
         }
         self.student_diagram(ui);
@@ -207,17 +208,13 @@ impl Explorer {
             .for_lesson(step_shown, self.lesson.hides_answer());
         if self.view == View::Scenes {
             let palette = self.presentation.palette();
-            if let Some(state) = self.scenes.show_canvas(ui, &palette) {
+            if let Some(state) = self.scenes.show_for_touch(ui, &palette) {
                 self.state = state;
                 self.view = View::Interface;
             }
             return;
         }
-        let mut overlay = Overlay {
-            index_scale: false,
-            touch: true,
-            ..self.overlay()
-        };
+        let mut overlay = self.overlay();
         let state = &mut self.state;
         egui::CentralPanel::no_frame().show(ui, |ui| {
             canvas::show(ui, state, &mut overlay, false);

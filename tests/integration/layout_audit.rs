@@ -1334,3 +1334,53 @@ fn audit_hidden_steps(
         }
     }
 }
+
+/// The student's view on a phone, upright (390 × 844) and sideways (844 × 390), in every
+/// language, over a deck's steps of each kind (normal incidence, past the critical angle,
+/// p light at Brewster's angle, the fibre's scene), hidden and revealed: the diagram's share,
+/// no text under 13 px, every control inside the window and no word broken inside, the
+/// labels off W, N and the handles, and every button a finger's size (44 px).
+#[test]
+fn the_students_view_keeps_the_layout_rules_on_a_phone() {
+    let mut measured = Vec::new();
+    let links = [
+        "#lesson=snell&step=2",
+        "#lesson=total-internal-reflection&step=3",
+        "#lesson=fresnel-brewster&step=3",
+        "#lesson=total-internal-reflection&step=5",
+    ];
+    for language in Locale::ALL {
+        refraction_i18n::set_locale(language);
+        for (size, held) in [((390.0, 844.0), "upright"), ((844.0, 390.0), "sideways")] {
+            for link in links {
+                let mut explorer = Explorer::new(ExplorerState::default());
+                explorer.open_link(link).unwrap();
+                let mut h = harness_sized(explorer, size);
+                run_three_more_frames(&mut h);
+                for revealed in [false, true] {
+                    let what = format!("{language} phone {held} {link} revealed {revealed}");
+                    assert!(h.state().shows_student_view(&h.ctx), "{what}");
+                    let scene = h.state().view() == refraction_explorer::app::View::Scenes;
+                    let mut m = measure(&h, &what, false, false, scene);
+                    if m.share < 0.4 {
+                        let share = m.share * 100.0;
+                        m.problems
+                            .push(format!("{what}: the diagram has {share:.0} %"));
+                    }
+                    for node in h.query_all_by_role(Role::Button) {
+                        let (r, name) = (node.rect(), node.accesskit_node().label());
+                        if r.height() < 43.5 || r.width() < 43.5 {
+                            let name = name.unwrap_or_default();
+                            m.problems.push(format!("{what}: “{name}” is {r:?}"));
+                        }
+                    }
+                    measured.push((what, m));
+                    h.key_press(egui::Key::R);
+                    run_three_more_frames(&mut h);
+                }
+            }
+        }
+    }
+    refraction_i18n::set_locale(Locale::En);
+    report("student's view", &measured);
+}

@@ -15,7 +15,7 @@ use super::layout::{SMALLEST_TEXT, Viewport, font_size};
 use super::numbers::number;
 use super::obstacle::Obstacle;
 use super::palette::Palette;
-use super::picture::{GRAB_SCALE, medium_colour};
+use super::picture::{GRAB_SCALE, TOUCH_TARGET, medium_colour};
 use super::placer::{Need, Placer};
 use super::shapes::{Align, ArrowRole, Dash, Figure, Label, Primitive, Stroke};
 use super::spectrum::{ray_colour, wavelength_colour};
@@ -96,9 +96,39 @@ pub struct SceneLayout {
     pub bounds: Bounds,
     /// The label font size in pixels; strokes, markers and handles scale with it.
     pub font: f32,
+    /// Handles sized for a finger ([`SceneLayout::for_touch`]).
+    pub touch: bool,
 }
 
 impl SceneLayout {
+    /// The same layout with handles for a finger (a phone's student view): each handle's grab
+    /// area at least [`TOUCH_TARGET`] across, the shapes' handles as far apart, and the world
+    /// fitted half a target inside the drawing area, so that a handle on the world's edge (the
+    /// fibre's source) keeps all its grab area on the canvas.
+    #[must_use]
+    pub fn for_touch(self) -> Self {
+        let inset = Vec2::splat((self.font * 0.5).max(TOUCH_TARGET * 0.5));
+        let inner = Rect {
+            min: self.drawing.min + inset,
+            max: (self.drawing.max - inset).max(self.drawing.min + inset + Vec2::ONE),
+        };
+        Self {
+            touch: true,
+            view: Viewport::fitted(self.bounds.min, self.bounds.max, &inner),
+            ..self
+        }
+    }
+
+    /// A handle's radius: `radius`, or for a finger at least what gives a grab area
+    /// [`TOUCH_TARGET`] across.
+    fn handle_radius(&self, radius: f32) -> f32 {
+        if self.touch {
+            radius.max(TOUCH_TARGET * 0.5 / GRAB_SCALE)
+        } else {
+            radius
+        }
+    }
+
     /// The layout that shows the world rectangle `bounds` on a canvas `size` pixels wide and
     /// high (sizes below 1 are treated as 1).
     #[must_use]
@@ -161,6 +191,7 @@ impl SceneLayout {
             view: Viewport::fitted(bounds.min, bounds.max, &inner),
             bounds,
             font,
+            touch: false,
         }
     }
 
@@ -193,12 +224,12 @@ impl SceneLayout {
         let origin = self.at(source.origin);
         let aim = origin
             + self.view.direction(source.direction).normalize_or(Vec2::X) * (self.font * 5.0);
-        let small = self.font * 0.5;
+        let small = self.handle_radius(self.font * 0.5);
         let mut handles = vec![
             SceneHandle {
                 id: SceneHandleId::Source,
                 center: origin,
-                radius: self.font * 0.6,
+                radius: self.handle_radius(self.font * 0.6),
             },
             SceneHandle {
                 id: SceneHandleId::Aim,
@@ -206,8 +237,9 @@ impl SceneLayout {
                 radius: small,
             },
         ];
-        // Far enough apart for the two lines of a medium label beside each.
-        let step = self.font * 2.4;
+        // Far enough apart for the two lines of a medium label beside each (and for a finger,
+        // for their grab areas).
+        let step = (self.font * 2.4).max(small * GRAB_SCALE * 2.1);
         // The handles by cell of a grid `step` wide: any handle nearer than `step` is in one of
         // the nine cells around.
         let cell = |p: Vec2| ((p.x / step).floor() as i64, (p.y / step).floor() as i64);
