@@ -317,7 +317,10 @@ self.addEventListener('fetch', (event) => {
 });
 ";
 
-/// The page, loading the module as `script` says.
+/// The page, loading the module as `script` says. The canvas takes every touch
+/// (`touch-action: none`): otherwise the browser claims a finger's drag as a scroll and a
+/// pinch as the page's zoom, and the explorer's own (W turned, the diagram panned or zoomed)
+/// never happen.
 #[must_use]
 pub fn html(script: &Script<'_>) -> String {
     format!(
@@ -325,7 +328,7 @@ pub fn html(script: &Script<'_>) -> String {
          content=\"width=device-width, initial-scale=1\">\n<title>{TITLE}</title>\n{installable}<style>\n\
          html, body {{ margin: 0; padding: 0; width: 100%; height: 100%; overflow: hidden; \
          background: #f8f8f8; }}\ncanvas {{ position: absolute; top: 0; left: 0; width: 100%; \
-         height: 100%; display: block; }}\n#{LOADING_ID} {{ position: absolute; top: 45%; \
+         height: 100%; display: block; touch-action: none; }}\n#{LOADING_ID} {{ position: absolute; top: 45%; \
          width: 100%; text-align: center; font: 20px sans-serif; color: #333; }}\n\
          #{LOADING_ID}.failed {{ color: #a00000; }}\n{overlay_style}</style>\n</head>\n<body>\n<canvas \
          id=\"{CANVAS_ID}\"></canvas>\n<p id=\"{LOADING_ID}\">…</p>\n{overlay}<script \

@@ -13,9 +13,9 @@ use refraction_diagram::{Diagram, Overlay};
 use refraction_model::{ExplorerState, HandleId};
 
 /// Degrees per arrow-key press (Shift: a tenth of it).
-const ANGLE_STEP: f64 = 1.0;
+pub(super) const ANGLE_STEP: f64 = 1.0;
 /// Index change per key press (Shift: a tenth of it).
-const INDEX_STEP: f64 = 0.01;
+pub(super) const INDEX_STEP: f64 = 0.01;
 
 /// The value a handle reports to screen readers: the diagram angle of W or N in degrees, or
 /// the index.
@@ -27,7 +27,7 @@ fn handle_value(state: &ExplorerState, handle: HandleId) -> f64 {
 }
 
 /// Changes the index of a μ handle by `delta`, rounding away binary noise.
-fn nudge_index(state: &mut ExplorerState, handle: HandleId, delta: f64) {
+pub(super) fn nudge_index(state: &mut ExplorerState, handle: HandleId, delta: f64) {
     let index = ((state.index(handle) + delta) * 1e6).round() / 1e6;
     // A nudge to an index the kernel refuses (0 or below, or too far from the other index) leaves the marker where it was,
     // the last good state, as a refused drag does.

@@ -44,5 +44,6 @@ mod slides_cli;
 mod snapshots;
 mod software_renderer;
 mod solve_cli;
+mod student_view;
 mod trace_cli;
 mod translations;

@@ -56,8 +56,11 @@ export async function serve(changed = null) {
   return { server, base: `http://127.0.0.1:${server.address().port}/` };
 }
 
-/** Debian's Chromium, headless, with a fresh profile; resolves to a browser context. */
-export async function launch(size = { width: 1280, height: 720 }, locale = 'en-US') {
+/**
+ * Debian's Chromium, headless, with a fresh profile; resolves to a browser context. `device`
+ * adds to the context's options (`{ hasTouch: true, isMobile: true }` for a phone).
+ */
+export async function launch(size = { width: 1280, height: 720 }, locale = 'en-US', device = {}) {
   const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'refraction-chromium-'));
   const context = await chromium.launchPersistentContext(profile, {
     executablePath: '/usr/bin/chromium',
@@ -67,6 +70,7 @@ export async function launch(size = { width: 1280, height: 720 }, locale = 'en-U
     deviceScaleFactor: 1,
     locale,
     acceptDownloads: true,
+    ...device,
   });
   context.profile = profile;
   return context;

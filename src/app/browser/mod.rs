@@ -28,7 +28,6 @@ use wasm_bindgen::JsCast as _;
 pub(super) use files::dialog;
 
 use super::{Explorer, Launch};
-use crate::TITLE;
 
 /// How often the settings and the last state are written to the browser's storage: a page
 /// can be closed at any moment, and the browser does not always say so.
@@ -48,6 +47,8 @@ struct Page {
     described: String,
     /// The page's title, last set.
     title: String,
+    /// Whether the student's view was shown, last said on the canvas.
+    student: Option<bool>,
     /// The strip's message, last said in the page's live region.
     announced: Option<String>,
     /// The last state's link, kept for the panic overlay.
@@ -108,31 +109,22 @@ impl Page {
         }
     }
 
-    /// Names the canvas with what the diagram says, titles the page with the deck's step
-    /// shown, and says the strip's message in the page's live region, each when it changed.
-    fn describe(&mut self) {
+    /// Names the canvas with what the diagram says, says on it which view is shown, titles
+    /// the page with the deck's step shown, and says the strip's message in the page's live
+    /// region, each when it changed.
+    fn describe(&mut self, ctx: &egui::Context) {
+        let student = self.explorer.shows_student_view(ctx);
+        if self.student != Some(student) {
+            page::show_view(&self.canvas, student);
+            self.student = Some(student);
+        }
         let hidden = self.explorer.lesson().hides_answer();
         let summary = refraction_diagram::picture::summary(self.explorer.state(), hidden);
         if summary != self.described {
             page::describe(&self.canvas, &summary);
             self.described = summary;
         }
-        let lesson = self.explorer.lesson();
-        let step = lesson
-            .current()
-            .zip(lesson.deck.as_ref())
-            .map(|((i, _), deck)| {
-                let number = (i + 1).to_string();
-                let at = t!(
-                    "deck-step-number",
-                    number = number,
-                    count = deck.steps.len().to_string()
-                );
-                // A deck file's title may be of any length: a tab shows a few words.
-                let title = link::echo(&deck.title, link::ECHO_CHARS);
-                format!("{TITLE} · {title} · {at}")
-            });
-        let title = step.unwrap_or_else(|| TITLE.to_owned());
+        let title = self.explorer.title();
         if title != self.title {
             page::set_title(&title);
             self.title = title;
@@ -159,7 +151,7 @@ impl eframe::App for Page {
         self.follow_presentation(ui.ctx());
         self.follow_clipboard(ui.ctx());
         files::deliver_written();
-        self.describe();
+        self.describe(ui.ctx());
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
@@ -199,6 +191,7 @@ fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement
         full_screen: false,
         described: String::new(),
         title: String::new(),
+        student: None,
         announced: None,
         link: crash::KeptLink::default(),
     };

@@ -107,7 +107,7 @@ impl Lesson {
 
     /// The keys pressed this frame that ask something of the deck (see the module's
     /// [precedence](self#keys)), taken out of the input so that nothing else acts on them.
-    fn keys(ui: &Ui) -> Vec<Command> {
+    pub(super) fn keys(ui: &Ui) -> Vec<Command> {
         if ui.ctx().text_edit_focused() {
             return Vec::new();
         }
@@ -199,6 +199,35 @@ fn light(polarisation: Polarisation) -> Light {
 }
 
 impl Explorer {
+    /// The window's title (in a browser, the page's): the program's name and, while a deck's
+    /// step is shown, the deck's title and where the step is (`… · Snell's law in ten
+    /// minutes · 2 / 5`). Never the step's own title or question, which the strip shows: a
+    /// title is read aloud and listed where a hidden answer has no business.
+    #[must_use]
+    pub fn title(&self) -> String {
+        let Some((index, deck)) = self
+            .lesson
+            .current()
+            .map(|(i, _)| i)
+            .zip(self.lesson.deck.as_ref())
+        else {
+            return crate::TITLE.to_owned();
+        };
+        let at = t!(
+            "deck-step-number",
+            number = (index + 1).to_string(),
+            count = deck.steps.len().to_string()
+        );
+        if deck.title.trim().is_empty() {
+            format!("{} · {at}", crate::TITLE)
+        } else {
+            // A deck file's title may be of any length: a tab shows a few words.
+            let title =
+                refraction_tools::link::echo(&deck.title, refraction_tools::link::ECHO_CHARS);
+            format!("{} · {title} · {at}", crate::TITLE)
+        }
+    }
+
     /// The lesson deck shown, where it is, and its tool.
     #[must_use]
     pub fn lesson(&self) -> &Lesson {

@@ -184,3 +184,19 @@ accuracy-column-random = max. Fehler zufällig
 accuracy-column-hard = max. Fehler schwierig
 accuracy-column-eps-kappa = schwierig ε·κ
 accuracy-column-tir = Abweichungen Totalreflexion
+
+## Die Schüleransicht: was ein Handy (oder ein Link mit view=student) zeigt, und die Knöpfe,
+## die W, N und die Brechzahlen schrittweise ändern
+
+student-incidence-less = Einfallswinkel: 1° weniger
+student-incidence-more = Einfallswinkel: 1° mehr
+student-normal-left = Die Normale um 1° gegen den Uhrzeigersinn drehen
+student-normal-right = Die Normale um 1° im Uhrzeigersinn drehen
+# $symbol: μi oder μt
+student-index-less = { $symbol }: 0,01 weniger
+student-index-more = { $symbol }: 0,01 mehr
+student-index = Brechzahl { $symbol }
+student-full = Ganzer Explorer
+student-full-hover = Der ganze Explorer mit seinen Werkzeugen und Leisten (für einen großen Bildschirm)
+student-view = Schüleransicht
+student-view-hover = Die Ansicht für ein Handy: die Frage, das Diagramm über den ganzen Bildschirm und Knöpfe für den Finger

@@ -185,3 +185,19 @@ accuracy-column-random = max err random
 accuracy-column-hard = max err hard
 accuracy-column-eps-kappa = hard ε·κ
 accuracy-column-tir = TIR mismatches
+
+## The student's view: what a phone (or a link with view=student) shows, and the buttons that
+## change W, N and the indices a step at a time
+
+student-incidence-less = Angle of incidence: 1° less
+student-incidence-more = Angle of incidence: 1° more
+student-normal-left = Turn the normal 1° counter-clockwise
+student-normal-right = Turn the normal 1° clockwise
+# $symbol: μi or μt
+student-index-less = { $symbol }: 0.01 less
+student-index-more = { $symbol }: 0.01 more
+student-index = Index { $symbol }
+student-full = Full explorer
+student-full-hover = The whole explorer, with its tools and panels (for a large screen)
+student-view = Student view
+student-view-hover = The view for a phone: the question, the diagram across the screen and buttons a finger can take

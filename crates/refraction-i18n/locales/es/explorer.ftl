@@ -184,3 +184,19 @@ accuracy-column-random = err. máx. aleatorio
 accuracy-column-hard = err. máx. difícil
 accuracy-column-eps-kappa = difícil ε·κ
 accuracy-column-tir = discrepancias en reflexión total
+
+## La vista del alumno: lo que muestra un móvil (o un enlace con view=student), y los botones
+## que cambian W, N y los índices paso a paso
+
+student-incidence-less = Ángulo de incidencia: 1° menos
+student-incidence-more = Ángulo de incidencia: 1° más
+student-normal-left = Girar la normal 1° en sentido antihorario
+student-normal-right = Girar la normal 1° en sentido horario
+# $symbol: μi o μt
+student-index-less = { $symbol }: 0,01 menos
+student-index-more = { $symbol }: 0,01 más
+student-index = Índice { $symbol }
+student-full = Explorador completo
+student-full-hover = Todo el explorador, con sus herramientas y paneles (para una pantalla grande)
+student-view = Vista del alumno
+student-view-hover = La vista para un móvil: la pregunta, el diagrama a todo el ancho y botones para el dedo

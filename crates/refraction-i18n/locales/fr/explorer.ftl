@@ -184,3 +184,19 @@ accuracy-column-random = err. max aléatoire
 accuracy-column-hard = err. max difficile
 accuracy-column-eps-kappa = difficile ε·κ
 accuracy-column-tir = écarts en réflexion totale
+
+## La vue élève : ce qu’affiche un téléphone (ou un lien avec view=student), et les boutons qui
+## changent W, N et les indices pas à pas
+
+student-incidence-less = Angle d’incidence : 1° de moins
+student-incidence-more = Angle d’incidence : 1° de plus
+student-normal-left = Tourner la normale de 1° dans le sens antihoraire
+student-normal-right = Tourner la normale de 1° dans le sens horaire
+# $symbol : μi ou μt
+student-index-less = { $symbol } : 0,01 de moins
+student-index-more = { $symbol } : 0,01 de plus
+student-index = Indice { $symbol }
+student-full = Explorateur complet
+student-full-hover = Tout l’explorateur, avec ses outils et ses panneaux (pour un grand écran)
+student-view = Vue élève
+student-view-hover = La vue pour un téléphone : la question, le diagramme sur toute la largeur et des boutons pour le doigt

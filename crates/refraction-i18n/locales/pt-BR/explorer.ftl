@@ -184,3 +184,19 @@ accuracy-column-random = erro máx. aleatório
 accuracy-column-hard = erro máx. difícil
 accuracy-column-eps-kappa = difícil ε·κ
 accuracy-column-tir = divergências de reflexão total
+
+## A visão do aluno: o que um celular (ou um link com view=student) mostra, e os botões que
+## mudam W, N e os índices passo a passo
+
+student-incidence-less = Ângulo de incidência: 1° a menos
+student-incidence-more = Ângulo de incidência: 1° a mais
+student-normal-left = Girar a normal 1° no sentido anti-horário
+student-normal-right = Girar a normal 1° no sentido horário
+# $symbol: μi ou μt
+student-index-less = { $symbol }: 0,01 a menos
+student-index-more = { $symbol }: 0,01 a mais
+student-index = Índice { $symbol }
+student-full = Explorador completo
+student-full-hover = O explorador inteiro, com suas ferramentas e painéis (para uma tela grande)
+student-view = Visão do aluno
+student-view-hover = A visão para um celular: a pergunta, o diagrama em toda a largura e botões para o dedo

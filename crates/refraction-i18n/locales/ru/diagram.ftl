@@ -22,12 +22,16 @@ diagram-banner-tir =
 diagram-banner-toward-origin = W направлен обратно к началу луча, поэтому a = −μ
 diagram-banner-along-ray = W — направление распространения, поэтому a = +μ
 diagram-banner-section = Раздел { $section }: { $words }
+# The banner on paper while the answer is hidden: the convention without the sign of a,
+# which a question may ask for
+diagram-banner-asked-toward-origin = Раздел 1: W направлен обратно к началу луча
+diagram-banner-asked-along-ray = Раздел 2: W — направление распространения
 diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T существует
 diagram-critical-angle = предельный угол θc = { $angle }°
 diagram-kernel-normal = −N: нормаль, которую берёт ядро
 diagram-outward-normal-bug =
-    формула статьи с неразвёрнутой N: корень не с той стороны,
-    неверный T из-за ошибки внешней нормали
+    ошибка внешней нормали:
+    T по формуле с N как есть
 diagram-index-scale = показатель μ
 diagram-incoming-ray = падающий луч
 diagram-normal-incidence = нормальное падение: W, N и T лежат на одной прямой

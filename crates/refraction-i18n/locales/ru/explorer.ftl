@@ -184,3 +184,19 @@ accuracy-column-random = макс. ош. случ.
 accuracy-column-hard = макс. ош. трудн.
 accuracy-column-eps-kappa = трудн. ε·κ
 accuracy-column-tir = расхождения по полному отражению
+
+## Вид ученика: что показывает телефон (или ссылка с view=student), и кнопки, которые меняют W,
+## N и показатели преломления по шагу
+
+student-incidence-less = Угол падения: на 1° меньше
+student-incidence-more = Угол падения: на 1° больше
+student-normal-left = Повернуть нормаль на 1° против часовой стрелки
+student-normal-right = Повернуть нормаль на 1° по часовой стрелке
+# $symbol: μi или μt
+student-index-less = { $symbol }: на 0,01 меньше
+student-index-more = { $symbol }: на 0,01 больше
+student-index = Показатель преломления { $symbol }
+student-full = Вся программа
+student-full-hover = Вся программа, с инструментами и панелями (для большого экрана)
+student-view = Вид ученика
+student-view-hover = Вид для телефона: вопрос, диаграмма во всю ширину и кнопки под палец
