@@ -456,6 +456,24 @@ impl ExplorerState {
         self.point(handle, direction);
     }
 
+    /// How far N leans from straight up in the diagram, in degrees: positive to the right
+    /// (clockwise), in (−180°, 180°].
+    #[must_use]
+    pub fn normal_tilt_degrees(&self) -> f64 {
+        let n = self.direction(HandleId::N);
+        n.x.atan2(n.y).to_degrees()
+    }
+
+    /// Turns N in the diagram to lean `degrees` from straight up, clockwise (what
+    /// [`ExplorerState::normal_tilt_degrees`] then gives, modulo 360°); a value that is not
+    /// finite is ignored.
+    pub fn set_normal_tilt_degrees(&mut self, degrees: f64) {
+        if degrees.is_finite() {
+            let (sin, cos) = degrees.to_radians().sin_cos();
+            self.point(HandleId::N, DVec2::new(sin, cos));
+        }
+    }
+
     /// The critical angle θc in radians (sin θc = `μ_t/μ_i`), when there is one (`μ_i` > `μ_t`).
     #[must_use]
     pub fn critical_angle(&self) -> Option<f64> {
