@@ -10,6 +10,7 @@
 //! `browser::start`.
 
 mod accuracy;
+mod announce;
 mod background;
 #[cfg(target_arch = "wasm32")]
 pub mod browser;
@@ -33,6 +34,7 @@ mod retrace;
 mod scene_files;
 mod scenes;
 mod status;
+mod steps;
 mod tools;
 mod typed;
 mod walkthrough;
@@ -384,6 +386,7 @@ impl Explorer {
                 });
             }
         }
+        announce::follow(ui, self);
         let settled = !ui.input(|i| i.pointer.any_down()) && !self.tools.walk.animating();
         if settled {
             let (state, scene) = (&self.state, self.scenes.scene());
@@ -485,7 +488,11 @@ impl Explorer {
         if self.diagram_only() {
             let mut overlay = self.overlay();
             egui::CentralPanel::no_frame().show(ui, |ui| {
-                canvas::show(ui, &mut self.state, &mut overlay, false);
+                let under = canvas::Under {
+                    steps: false,
+                    hint: false,
+                };
+                canvas::show(ui, &mut self.state, &mut overlay, under);
             });
             self.presentation.pan_zoom = overlay.pan_zoom;
             return;
@@ -528,9 +535,14 @@ impl Explorer {
         }
         // No margins (the diagram reaches the panels), but the panel's fill under the key hint.
         let frame = egui::Frame::NONE.fill(ui.visuals().panel_fill);
+        // The step buttons give way to a tool on a projector.
+        let under = canvas::Under {
+            steps: !presenting || self.tools.open.is_none(),
+            hint: !presenting,
+        };
         egui::CentralPanel::no_frame()
             .frame(frame)
-            .show(ui, |ui| canvas::show(ui, state, &mut overlay, !presenting));
+            .show(ui, |ui| canvas::show(ui, state, &mut overlay, under));
         self.presentation.pan_zoom = overlay.pan_zoom;
     }
 }

@@ -102,18 +102,8 @@ pub fn index_value(value: f64) -> String {
     }
 }
 
-/// The name of one of the four controls (θi for W), the same on the desktop and in the page.
-#[must_use]
-pub fn control_name(handle: HandleId) -> String {
-    match handle {
-        HandleId::W => t!("access-incidence"),
-        HandleId::N => t!("access-normal"),
-        HandleId::MuI => t!("access-index-i"),
-        HandleId::MuT => t!("access-index-t"),
-    }
-}
-
-/// The value of one of the four controls in words (see [`control_name`]).
+/// The value of one of the four controls in words (whose names are [`HandleId::label`]'s: θi
+/// for W, the direction of N, the two indices).
 #[must_use]
 pub fn control_value(state: &ExplorerState, handle: HandleId) -> String {
     match handle {
@@ -406,7 +396,7 @@ mod tests {
         state.rotate(HandleId::N, 45.0);
         assert_eq!(normal_value(&state), "25° left of straight up");
         assert_eq!(control_value(&state, HandleId::MuT), "1.5 (glass)");
-        assert_eq!(control_name(HandleId::W), "Angle of incidence θi (W)");
+        assert_eq!(HandleId::W.label(), "Angle of incidence θi (W)");
         state.set_normal_tilt_degrees(180.0);
         assert_eq!(normal_value(&state), "straight down");
     }

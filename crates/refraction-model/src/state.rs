@@ -159,7 +159,8 @@ impl HandleId {
     pub const ALL: [Self; 4] = [Self::W, Self::N, Self::MuI, Self::MuT];
 
     /// The accessible name (what a screen reader says and what tests look for), in the
-    /// current language.
+    /// current language: the control the handle is, the same on the desktop and in a browser
+    /// (W is the angle of incidence θi, N the direction of the normal, μi and μt the indices).
     #[must_use]
     pub fn label(self) -> String {
         match self {

@@ -1,9 +1,5 @@
 ## Barrierefreiheit: was ein Bildschirmleser über den Explorer sagt, die Schaltflächen neben dem Diagramm und die Regler der Seite im Browser
 
-access-incidence = Einfallswinkel θi (W)
-access-normal = Richtung der Normalen N
-access-index-i = Brechungsindex μi (Medium des Strahls)
-access-index-t = Brechungsindex μt (Medium, in das der Strahl eintritt)
 access-degrees = { $angle }°
 access-normal-up = senkrecht nach oben
 access-normal-down = senkrecht nach unten

@@ -3,12 +3,8 @@
 ## buttons beside the diagram, and the page's own controls in a browser.
 ## Placeables carry numbers already written the local way.
 
-## The four controls, the same on the desktop and in the browser
+## The values of the four controls (their names are the handles', in diagram.ftl)
 
-access-incidence = Angle of incidence θi (W)
-access-normal = Direction of the normal N
-access-index-i = Index μi of the ray's medium
-access-index-t = Index μt of the medium entered
 # A control's value in degrees: "40°", "41.8°"
 access-degrees = { $angle }°
 access-normal-up = straight up

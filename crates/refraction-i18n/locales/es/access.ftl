@@ -1,9 +1,5 @@
 ## Accesibilidad: lo que dice un lector de pantalla del explorador, los botones junto al diagrama y los mandos propios de la página en un navegador
 
-access-incidence = Ángulo de incidencia θi (W)
-access-normal = Dirección de la normal N
-access-index-i = Índice μi del medio del rayo
-access-index-t = Índice μt del medio en el que entra
 access-degrees = { $angle }°
 access-normal-up = hacia arriba
 access-normal-down = hacia abajo

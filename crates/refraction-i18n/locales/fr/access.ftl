@@ -1,9 +1,5 @@
 ## Accessibilité : ce qu’un lecteur d’écran dit de l’explorateur, les boutons à côté du schéma et les commandes de la page dans un navigateur
 
-access-incidence = Angle d’incidence θi (W)
-access-normal = Direction de la normale N
-access-index-i = Indice μi du milieu du rayon
-access-index-t = Indice μt du milieu où il entre
 access-degrees = { $angle }°
 access-normal-up = verticale vers le haut
 access-normal-down = verticale vers le bas

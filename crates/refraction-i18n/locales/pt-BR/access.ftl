@@ -1,9 +1,5 @@
 ## Acessibilidade: o que um leitor de tela diz do explorador, os botões ao lado do diagrama e os controles da própria página em um navegador
 
-access-incidence = Ângulo de incidência θi (W)
-access-normal = Direção da normal N
-access-index-i = Índice μi do meio do raio
-access-index-t = Índice μt do meio em que ele entra
 access-degrees = { $angle }°
 access-normal-up = para cima
 access-normal-down = para baixo
