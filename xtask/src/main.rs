@@ -7,9 +7,10 @@
 //!   says, and the icon's PNG sizes, rendered from `packaging/refraction-explorer.svg`.
 //!   `OUT_DIR` defaults to `target/dist-assets` in the repository, where the Debian package's
 //!   manifest (`[package.metadata.deb]` in the root `Cargo.toml`) takes them from.
-//! - `cargo xtask web [OUT_DIR]`: the explorer for a browser ([`web`]): `OUT_DIR` (default
-//!   `target/web`) gets `index.html` and the files it loads, and `refraction-explorer.html`,
-//!   one file that opens from `file://`.
+//! - `cargo xtask web [--profile NAME] [OUT_DIR]`: the explorer for a browser ([`web`]):
+//!   `OUT_DIR` (default `target/web`) gets `index.html` and the files it loads, and
+//!   `refraction-explorer.html`, one file that opens from `file://`; built with the Cargo
+//!   profile `NAME` (default `web`).
 
 mod web;
 
@@ -24,16 +25,21 @@ use clap_complete::Shell;
 pub(crate) type Failure = Box<dyn core::error::Error>;
 
 /// What `cargo xtask` without a known task prints.
-const USAGE: &str = "usage: cargo xtask dist-assets [OUT_DIR]\n       cargo xtask web [OUT_DIR]\n\n\
+const USAGE: &str = "usage: cargo xtask dist-assets [OUT_DIR]\n       cargo xtask web [--profile NAME] \
+    [OUT_DIR]\n\n\
     dist-assets  write the man pages (OUT_DIR/man/*.1) and the bash, zsh and fish completions\n\
     \x20            (OUT_DIR/completions/) generated from the command line's definitions, and\n\
     \x20            the icon's PNG sizes (OUT_DIR/icons/); OUT_DIR defaults to\n\
     \x20            target/dist-assets in the repository\n\
-    web          build the explorer for a browser (Debian's rustc-web, cargo-web, rust-web-src\n\
-    \x20            and lld-22, and the wasm-bindgen CLI of Cargo.lock's version) and write\n\
+    web          build the explorer for a browser (with the wasm32-unknown-unknown standard\n\
+    \x20            library: rustup target add wasm32-unknown-unknown; Debian's rustc-web,\n\
+    \x20            cargo-web, rust-web-src and lld-22 where it is missing; and the\n\
+    \x20            wasm-bindgen CLI of Cargo.lock's version) and write\n\
     \x20            OUT_DIR/index.html with the files it loads, and\n\
     \x20            OUT_DIR/refraction-explorer.html, one file that opens from file://;\n\
-    \x20            OUT_DIR defaults to target/web in the repository";
+    \x20            OUT_DIR defaults to target/web in the repository; the Cargo profile\n\
+    \x20            defaults to web (optimised across crates: what a school hosts); CI's\n\
+    \x20            browser tests use web-ci (quicker to build, debug assertions on)";
 
 /// The icon's sizes in pixels, as the freedesktop.org hicolor theme names its folders.
 const ICON_SIZES: [u32; 7] = [16, 24, 32, 48, 64, 128, 256];
@@ -51,8 +57,12 @@ fn main() -> ExitCode {
     let outcome = match args.as_slice() {
         ["dist-assets"] => dist_assets(&default_out_dir()),
         ["dist-assets", out] => dist_assets(Path::new(out)),
-        ["web"] => return web_task(&repository().join("target").join("web")),
-        ["web", out] => return web_task(Path::new(out)),
+        ["web", "--profile", profile, rest @ ..] if rest.len() <= 1 => {
+            return web_task(profile, rest.first().copied());
+        }
+        ["web", rest @ ..] if rest.len() <= 1 => {
+            return web_task(web::PROFILE, rest.first().copied());
+        }
         ["help" | "--help" | "-h"] => return say(USAGE, ExitCode::SUCCESS),
         _ => return say(USAGE, ExitCode::from(2)),
     };
@@ -65,9 +75,11 @@ fn main() -> ExitCode {
     }
 }
 
-/// Runs `cargo xtask web` into `out` and says what it wrote (or what is missing).
-fn web_task(out: &Path) -> ExitCode {
-    match web::web(repository(), out) {
+/// Runs `cargo xtask web` with the Cargo profile `profile` into `out` (default `target/web`)
+/// and says what it wrote (or what is missing).
+fn web_task(profile: &str, out: Option<&str>) -> ExitCode {
+    let out = out.map_or_else(|| repository().join("target").join("web"), PathBuf::from);
+    match web::web(repository(), profile, &out) {
         Ok(written) => {
             let lines: Vec<String> = written
                 .iter()
@@ -171,29 +183,8 @@ fn remove_earlier(out: &Path) -> Result<(), Failure> {
 /// # Errors
 /// The SVG cannot be read or parsed, or a PNG cannot be encoded or written.
 fn icon_pngs(dir: &Path) -> Result<usize, Failure> {
-    let source = repository()
-        .join("packaging")
-        .join("refraction-explorer.svg");
-    let svg =
-        std::fs::read(&source).map_err(|e| format!("cannot read {}: {e}", source.display()))?;
-    let tree = resvg::usvg::Tree::from_data(&svg, &resvg::usvg::Options::default())
-        .map_err(|e| format!("cannot parse {}: {e}", source.display()))?;
+    let tree = icon()?;
     for size in ICON_SIZES {
-        // resvg draws with the tiny-skia it was built with; the picture's pixels move to this
-        // project's tiny-skia, which writes PNG files.
-        let mut drawn = resvg::tiny_skia::Pixmap::new(size, size)
-            .ok_or_else(|| format!("cannot make a {size}x{size} picture"))?;
-        let scale = size as f32 / tree.size().width();
-        resvg::render(
-            &tree,
-            resvg::tiny_skia::Transform::from_scale(scale, scale),
-            &mut drawn.as_mut(),
-        );
-        let png = tiny_skia::IntSize::from_wh(size, size)
-            .and_then(|area| tiny_skia::Pixmap::from_vec(drawn.take(), area))
-            .ok_or_else(|| format!("cannot make a {size}x{size} picture"))?
-            .encode_png()
-            .map_err(|e| format!("cannot encode the {size}x{size} icon: {e}"))?;
         let folder = dir
             .join("hicolor")
             .join(format!("{size}x{size}"))
@@ -201,9 +192,48 @@ fn icon_pngs(dir: &Path) -> Result<usize, Failure> {
         std::fs::create_dir_all(&folder)
             .map_err(|e| format!("cannot make {}: {e}", folder.display()))?;
         let path = folder.join("refraction-explorer.png");
-        std::fs::write(&path, png).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        std::fs::write(&path, icon_png(&tree, size)?)
+            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     }
     Ok(ICON_SIZES.len())
+}
+
+/// The program's icon, `packaging/refraction-explorer.svg`, read.
+///
+/// # Errors
+/// The SVG cannot be read or parsed.
+pub(crate) fn icon() -> Result<resvg::usvg::Tree, Failure> {
+    let source = repository()
+        .join("packaging")
+        .join("refraction-explorer.svg");
+    let svg =
+        std::fs::read(&source).map_err(|e| format!("cannot read {}: {e}", source.display()))?;
+    Ok(
+        resvg::usvg::Tree::from_data(&svg, &resvg::usvg::Options::default())
+            .map_err(|e| format!("cannot parse {}: {e}", source.display()))?,
+    )
+}
+
+/// The icon drawn `size` pixels square, as PNG bytes.
+///
+/// # Errors
+/// The picture cannot be made or encoded.
+pub(crate) fn icon_png(tree: &resvg::usvg::Tree, size: u32) -> Result<Vec<u8>, Failure> {
+    // resvg draws with the tiny-skia it was built with; the picture's pixels move to this
+    // project's tiny-skia, which writes PNG files.
+    let mut drawn = resvg::tiny_skia::Pixmap::new(size, size)
+        .ok_or_else(|| format!("cannot make a {size}x{size} picture"))?;
+    let scale = size as f32 / tree.size().width();
+    resvg::render(
+        tree,
+        resvg::tiny_skia::Transform::from_scale(scale, scale),
+        &mut drawn.as_mut(),
+    );
+    Ok(tiny_skia::IntSize::from_wh(size, size)
+        .and_then(|area| tiny_skia::Pixmap::from_vec(drawn.take(), area))
+        .ok_or_else(|| format!("cannot make a {size}x{size} picture"))?
+        .encode_png()
+        .map_err(|e| format!("cannot encode the {size}x{size} icon: {e}"))?)
 }
 
 /// Writes `refraction-explorer.1` and a `refraction-explorer-COMMAND.1` for each command into

@@ -1,13 +1,20 @@
 //! `cargo xtask web [OUT_DIR]`: the explorer for a browser. Builds `crates/refraction-web` for
-//! `wasm32-unknown-unknown` with Debian's web toolchain (in `target/wasm`, so that the desktop
-//! build in `target/` is never invalidated), runs wasm-bindgen on it, and writes into `OUT_DIR`
-//! (default `target/web`): `index.html` with the `.js` and `.wasm` it loads, for any static web
-//! server, and `refraction-explorer.html`, one file with both inlined, which opens from
-//! `file://` with no network.
+//! `wasm32-unknown-unknown` (in `target/wasm`, so that the desktop build in `target/` is never
+//! invalidated), runs wasm-bindgen on it, and writes into `OUT_DIR` (default `target/web`):
+//! `index.html` with the `.js` and `.wasm` it loads, for any static web server, and
+//! `refraction-explorer.html`, one file with both inlined, which opens from `file://` with no
+//! network.
+//!
+//! The module is built as every eframe app is: with the toolchain's own WebAssembly standard
+//! library (`rustup target add wasm32-unknown-unknown`), a stable build linked by the
+//! toolchain's `rust-lld`. Where that library is missing, Debian 12's web toolchain is the
+//! fallback: it builds the standard library from source (`-Zbuild-std`, allowed on a stable
+//! compiler by `RUSTC_BOOTSTRAP`) and links with `wasm-ld-22`.
 //!
 //! It installs nothing: it checks for the toolchain first and names the command that installs
 //! what is missing.
 
+use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -15,15 +22,21 @@ use refraction_explorer::web_page::{self, Script};
 
 use crate::Failure;
 
+/// The target every browser runs.
+const TARGET: &str = "wasm32-unknown-unknown";
+
 /// The Debian packages that build the standard library for WebAssembly and link it.
 const PACKAGES: &str = "rustc-web cargo-web rust-web-src lld-22";
 
 /// Debian's compiler and cargo from `rustc-web` and `cargo-web` (rustup's stay first on PATH).
-const RUSTC: &str = "/usr/bin/rustc";
-const CARGO: &str = "/usr/bin/cargo";
+const DEBIAN_RUSTC: &str = "/usr/bin/rustc";
+const DEBIAN_CARGO: &str = "/usr/bin/cargo";
 
 /// The linker `lld-22` installs.
-const LINKER: &str = "wasm-ld-22";
+const DEBIAN_LINKER: &str = "wasm-ld-22";
+
+/// The Cargo profile of the build a school hosts (the root manifest's `[profile.web]`).
+pub(crate) const PROFILE: &str = "web";
 
 /// The crate built, and the name of what wasm-bindgen writes for it.
 const CRATE: &str = "refraction-web";
@@ -31,6 +44,34 @@ const MODULE: &str = "refraction_web";
 
 /// The single file's name.
 const SINGLE_FILE: &str = "refraction-explorer.html";
+
+/// What builds the module.
+#[derive(Clone, Debug, PartialEq, Eq)]
+enum Toolchain {
+    /// The `cargo` and `rustc` on `PATH` (rustup's, or a distribution's), whose sysroot has the
+    /// WebAssembly standard library: a stable build, linked by the toolchain's own `rust-lld`.
+    /// Holds what `rustc --version` says.
+    Installed(String),
+    /// Debian's `rustc-web` and `cargo-web`: the standard library built from its source.
+    Debian,
+}
+
+impl Toolchain {
+    /// What `xtask web` says before it builds.
+    fn describe(&self) -> String {
+        match self {
+            Self::Installed(version) => format!(
+                "building with {version} and its {TARGET} standard library (a stable build)"
+            ),
+            Self::Debian => format!(
+                "{TARGET}'s standard library is not installed for the rustc on PATH \
+                 (rustup target add {TARGET}); building with Debian's web toolchain \
+                 ({DEBIAN_RUSTC}, {DEBIAN_CARGO}, {DEBIAN_LINKER}), which builds the \
+                 standard library too"
+            ),
+        }
+    }
+}
 
 /// The version of `name` that `Cargo.lock` pins.
 fn locked_version(lock: &str, name: &str) -> Option<String> {
@@ -42,60 +83,101 @@ fn locked_version(lock: &str, name: &str) -> Option<String> {
 
 /// What `program --version` prints, if it runs.
 fn version_of(program: &str) -> Option<String> {
-    let run = Command::new(program).arg("--version").output().ok()?;
+    output_of(program, &["--version"])
+}
+
+/// What `program ARGS` prints (trimmed), if it runs and succeeds.
+fn output_of(program: &str, args: &[&str]) -> Option<String> {
+    let run = Command::new(program).args(args).output().ok()?;
     run.status
         .success()
         .then(|| String::from_utf8_lossy(&run.stdout).trim().to_owned())
 }
 
+/// The compiler cargo would run: `RUSTC` if set, else `rustc` on `PATH`.
+fn path_rustc() -> String {
+    std::env::var("RUSTC").unwrap_or_else(|_| "rustc".to_owned())
+}
+
+/// Whether `rustc`'s sysroot holds the WebAssembly standard library (what `rustup target add
+/// wasm32-unknown-unknown` installs) and the toolchain's `rust-lld` that links it.
+fn has_wasm_std(rustc: &str) -> bool {
+    let holds = |dir: Option<String>, name: &dyn Fn(&str) -> bool| {
+        dir.and_then(|dir| std::fs::read_dir(dir).ok())
+            .is_some_and(|entries| {
+                entries
+                    .flatten()
+                    .any(|e| name(&e.file_name().to_string_lossy()))
+            })
+    };
+    let wasm_lib = output_of(rustc, &["--print", "target-libdir", "--target", TARGET]);
+    let std_there = holds(wasm_lib, &|n| {
+        n.starts_with("libstd-") && Path::new(n).extension().is_some_and(|e| e == "rlib")
+    });
+    // rust-lld sits in the host's `bin` beside its `lib`.
+    let host_bin = output_of(rustc, &["--print", "target-libdir"])
+        .map(|lib| Path::new(&lib).with_file_name("bin").display().to_string());
+    std_there && holds(host_bin, &|n| n == "rust-lld" || n == "rust-lld.exe")
+}
+
 /// Whether the standard library's source that `rust-web-src` installs is there for
 /// `/usr/bin/rustc`.
 fn has_library_source() -> bool {
-    let sysroot = Command::new(RUSTC).args(["--print", "sysroot"]).output();
-    sysroot.is_ok_and(|run| {
-        let root = String::from_utf8_lossy(&run.stdout).trim().to_owned();
+    output_of(DEBIAN_RUSTC, &["--print", "sysroot"]).is_some_and(|root| {
         Path::new(&root)
             .join("lib/rustlib/src/rust/library/std/Cargo.toml")
             .is_file()
     })
 }
 
-/// Checks the toolchain; returns the wasm-bindgen version to use.
+/// The toolchain to build with: the installed one where it has the WebAssembly standard
+/// library, Debian's where that is complete, else what to install.
+fn toolchain() -> Result<Toolchain, String> {
+    let rustc = path_rustc();
+    if has_wasm_std(&rustc) {
+        let version = version_of(&rustc).unwrap_or(rustc);
+        return Ok(Toolchain::Installed(version));
+    }
+    let debian = version_of(DEBIAN_RUSTC).is_some()
+        && version_of(DEBIAN_CARGO).is_some()
+        && has_library_source()
+        && version_of(DEBIAN_LINKER).is_some();
+    if debian {
+        Ok(Toolchain::Debian)
+    } else {
+        Err(format!(
+            "the WebAssembly standard library: rustup target add {TARGET} (with rustup, the \
+             usual way), or on Debian 12 without it: sudo apt-get install {PACKAGES}"
+        ))
+    }
+}
+
+/// Checks the toolchain and wasm-bindgen; returns the toolchain to build with.
 ///
 /// # Errors
 /// What is missing, each with the command that installs it.
-fn check_toolchain(repository: &Path) -> Result<String, Failure> {
+fn check_toolchain(repository: &Path) -> Result<Toolchain, Failure> {
     let lock = std::fs::read_to_string(repository.join("Cargo.lock"))
         .map_err(|e| format!("cannot read Cargo.lock: {e}"))?;
     let bindgen = locked_version(&lock, "wasm-bindgen")
         .ok_or("Cargo.lock pins no wasm-bindgen: run cargo update -p refraction-web")?;
     let mut missing = Vec::new();
-    let debian = version_of(RUSTC).is_some()
-        && version_of(CARGO).is_some()
-        && has_library_source()
-        && version_of(LINKER).is_some();
-    if !debian {
+    let found = toolchain().map_err(|what| missing.push(what)).ok();
+    let bindgen_found = version_of("wasm-bindgen");
+    if bindgen_found.as_deref() != Some(&format!("wasm-bindgen {bindgen}")) {
+        let bindgen_found = bindgen_found.unwrap_or_else(|| "none".to_owned());
         missing.push(format!(
-            "Debian's web toolchain ({RUSTC}, {CARGO}, the standard library's source, \
-             {LINKER}): sudo apt-get install {PACKAGES}"
-        ));
-    }
-    let found = version_of("wasm-bindgen");
-    if found.as_deref() != Some(&format!("wasm-bindgen {bindgen}")) {
-        let found = found.unwrap_or_else(|| "none".to_owned());
-        missing.push(format!(
-            "wasm-bindgen {bindgen}, the version in Cargo.lock (found: {found}): \
+            "wasm-bindgen {bindgen}, the version in Cargo.lock (found: {bindgen_found}): \
              cargo install wasm-bindgen-cli --version {bindgen}"
         ));
     }
-    if missing.is_empty() {
-        Ok(bindgen)
-    } else {
-        Err(format!(
+    match found {
+        Some(toolchain) if missing.is_empty() => Ok(toolchain),
+        _ => Err(format!(
             "the web build needs what is missing here; install it and run again:\n  {}",
             missing.join("\n  ")
         )
-        .into())
+        .into()),
     }
 }
 
@@ -111,26 +193,46 @@ fn run(command: &mut Command, what: &str) -> Result<(), Failure> {
     }
 }
 
-/// Builds the module in `target/wasm` and runs wasm-bindgen on it; returns the folder
-/// wasm-bindgen wrote.
-fn build(repository: &Path) -> Result<PathBuf, Failure> {
-    let target = repository.join("target").join("wasm");
-    let mut cargo = Command::new(CARGO);
+/// The cargo command that builds the module with `toolchain` into `target`.
+fn cargo_build(toolchain: &Toolchain, repository: &Path, profile: &str, target: &Path) -> Command {
+    let mut cargo = match toolchain {
+        Toolchain::Installed(_) => Command::new("cargo"),
+        Toolchain::Debian => {
+            let mut cargo = Command::new(DEBIAN_CARGO);
+            cargo
+                .env("RUSTC", DEBIAN_RUSTC)
+                .env("RUSTC_BOOTSTRAP", "1")
+                .env("CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_LINKER", DEBIAN_LINKER);
+            // rustup's choice of toolchain and wrappers are not for Debian's compiler.
+            for name in [
+                "RUSTUP_TOOLCHAIN",
+                "RUSTC_WRAPPER",
+                "RUSTC_WORKSPACE_WRAPPER",
+            ] {
+                cargo.env_remove(name);
+            }
+            cargo
+        }
+    };
     cargo
         .current_dir(repository)
-        .args(["build", "--profile", "web", "-Zbuild-std=std,panic_abort"])
-        .args(["--target", "wasm32-unknown-unknown", "-p", CRATE])
+        .args([
+            "build",
+            "--profile",
+            profile,
+            "--target",
+            TARGET,
+            "-p",
+            CRATE,
+        ])
         .arg("--target-dir")
-        .arg(&target)
-        .env("RUSTC", RUSTC)
-        .env("RUSTC_BOOTSTRAP", "1")
-        .env("CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_LINKER", LINKER);
-    // What `cargo xtask` (rustup's cargo) set for itself, or flags meant for the desktop.
+        .arg(target);
+    if *toolchain == Toolchain::Debian {
+        cargo.arg("-Zbuild-std=std,panic_abort");
+    }
+    // What `cargo xtask` set for itself, or flags meant for the desktop.
     for name in [
         "CARGO",
-        "RUSTUP_TOOLCHAIN",
-        "RUSTC_WRAPPER",
-        "RUSTC_WORKSPACE_WRAPPER",
         "RUSTFLAGS",
         "CARGO_ENCODED_RUSTFLAGS",
         "CARGO_TARGET_DIR",
@@ -138,10 +240,18 @@ fn build(repository: &Path) -> Result<PathBuf, Failure> {
     ] {
         cargo.env_remove(name);
     }
+    cargo
+}
+
+/// Builds the module with `toolchain` and the Cargo profile `profile` in `target/wasm` and
+/// runs wasm-bindgen on it; returns the folder wasm-bindgen wrote.
+fn build(toolchain: &Toolchain, repository: &Path, profile: &str) -> Result<PathBuf, Failure> {
+    let target = repository.join("target").join("wasm");
+    let mut cargo = cargo_build(toolchain, repository, profile, &target);
     run(&mut cargo, "the WebAssembly build")?;
     let wasm = target
-        .join("wasm32-unknown-unknown")
-        .join("web")
+        .join(TARGET)
+        .join(profile)
         .join(format!("{MODULE}.wasm"));
     let bindgen = target.join("bindgen");
     run(
@@ -207,15 +317,22 @@ fn write_pages(bindgen: &Path, out: &Path) -> Result<Vec<PathBuf>, Failure> {
         .collect()
 }
 
-/// Runs `cargo xtask web`: checks the toolchain, builds, and writes the pages into `out`.
+/// Runs `cargo xtask web`: checks the toolchain, builds with the Cargo profile `profile`, and
+/// writes the pages into `out`.
 /// Returns the files written, each with its size in bytes.
 ///
 /// # Errors
 /// A missing tool (with the command that installs it), a failed build, or a file that cannot
 /// be written.
-pub(crate) fn web(repository: &Path, out: &Path) -> Result<Vec<(PathBuf, u64)>, Failure> {
-    check_toolchain(repository)?;
-    let bindgen = build(repository)?;
+pub(crate) fn web(
+    repository: &Path,
+    profile: &str,
+    out: &Path,
+) -> Result<Vec<(PathBuf, u64)>, Failure> {
+    let toolchain = check_toolchain(repository)?;
+    // Said before the build, which takes minutes; a failed write to stderr changes nothing.
+    writeln!(std::io::stderr(), "xtask: {}", toolchain.describe()).ok();
+    let bindgen = build(&toolchain, repository, profile)?;
     let written = write_pages(&bindgen, out)?;
     Ok(written
         .into_iter()
