@@ -48,13 +48,16 @@ export async function serve() {
   return { server, base: `http://127.0.0.1:${server.address().port}/` };
 }
 
-/** Debian's Chromium, headless, with a fresh profile; resolves to a browser context. */
-export async function launch(size = { width: 1280, height: 720 }, locale = 'en-US') {
+/**
+ * Debian's Chromium, headless, with a fresh profile (and `extra` flags); resolves to a browser
+ * context.
+ */
+export async function launch(size = { width: 1280, height: 720 }, locale = 'en-US', extra = []) {
   const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'refraction-chromium-'));
   const context = await chromium.launchPersistentContext(profile, {
     executablePath: '/usr/bin/chromium',
     headless: true,
-    args: FLAGS,
+    args: [...FLAGS, ...extra],
     viewport: size,
     deviceScaleFactor: 1,
     locale,

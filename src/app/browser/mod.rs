@@ -11,10 +11,12 @@
 //! - the file dialog is the browser's file picker and a download ([`files`]), and files dropped
 //!   on the page are read before the window sees them;
 //! - a copy the browser refuses is said in the window;
-//! - the canvas is named for screen readers with what the diagram says;
+//! - the canvas is named for screen readers with what the diagram says, and the page carries its
+//!   own controls, the window in words and the page's language for them ([`access`]);
 //! - the settings and the last state are kept in the browser's storage (eframe's);
 //! - each frame's time is a performance entry (`explorer-frame`) for the browser's profiler.
 
+mod access;
 mod files;
 mod page;
 
@@ -26,7 +28,6 @@ use wasm_bindgen::JsCast as _;
 pub(super) use files::dialog;
 
 use super::{Explorer, Launch};
-use crate::TITLE;
 
 /// How often the settings and the last state are written to the browser's storage: a page
 /// can be closed at any moment, and the browser does not always say so.
@@ -48,6 +49,8 @@ struct Page {
     title: String,
     /// The strip's message, last said in the page's live region.
     announced: Option<String>,
+    /// The page's own controls and words for screen readers and keyboards.
+    controls: Option<access::PageControls>,
 }
 
 impl Page {
@@ -100,8 +103,9 @@ impl Page {
         }
     }
 
-    /// Names the canvas with what the diagram says, titles the page with the deck's step
-    /// shown, and says the strip's message in the page's live region, each when it changed.
+    /// Names the canvas with what the diagram says, titles the page with what it shows (the
+    /// deck's step, or the view), and says the strip's message in the page's live region, each
+    /// when it changed.
     fn describe(&mut self) {
         let hidden = self.explorer.lesson().hides_answer();
         let summary = refraction_diagram::picture::summary(self.explorer.state(), hidden);
@@ -109,20 +113,7 @@ impl Page {
             page::describe(&self.canvas, &summary);
             self.described = summary;
         }
-        let lesson = self.explorer.lesson();
-        let step = lesson
-            .current()
-            .zip(lesson.deck.as_ref())
-            .map(|((i, _), deck)| {
-                let number = (i + 1).to_string();
-                let at = t!(
-                    "deck-step-number",
-                    number = number,
-                    count = deck.steps.len().to_string()
-                );
-                format!("{TITLE} · {} · {at}", deck.title)
-            });
-        let title = step.unwrap_or_else(|| TITLE.to_owned());
+        let title = access::title(&self.explorer);
         if title != self.title {
             page::set_title(&title);
             self.title = title;
@@ -144,11 +135,15 @@ impl eframe::App for Page {
             page::report_frame(seconds);
         }
         self.follow_address();
+        access::PageControls::take_set(&mut self.explorer);
         self.explorer.show(ui);
         self.follow_presentation(ui.ctx());
         self.follow_clipboard(ui.ctx());
         files::deliver_written();
         self.describe();
+        if let Some(controls) = &mut self.controls {
+            controls.follow(ui.ctx(), &self.explorer);
+        }
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
@@ -177,6 +172,7 @@ fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement
     {
         explorer.set_web_base(&address);
     }
+    let controls = access::PageControls::new(canvas.clone(), &cc.egui_ctx);
     let mut page = Page {
         explorer,
         canvas,
@@ -186,6 +182,7 @@ fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement
         described: String::new(),
         title: String::new(),
         announced: None,
+        controls,
     };
     page.follow_address();
     page

@@ -47,8 +47,8 @@ panel-hide-numbers = Zahlen ausblenden ({ $key })
 
 ## Unter dem Diagramm
 
-canvas-hint = W, N oder eine μ-Marke ziehen; eine davon (oder das Diagramm) anklicken, um die Pfeiltasten zu nutzen
-canvas-hint-ray = ←/→ dreht um 1° (Umschalt: 0,1°) · +/− μt · Tab: nächster Anfasser · ziehen zum Verschieben
+canvas-hint = W, N oder eine μ-Marke ziehen oder − und + darunter nutzen; Tab oder ein Klick wählt einen Anfasser für die Pfeiltasten
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Umschalt: 0,1°) · +/− μt · Tab: nächster Anfasser · ziehen zum Verschieben
 canvas-hint-index = ↑/↓ oder +/− ändern den Brechungsindex um 0,01 (Umschalt: 0,001) · Tab: nächster Anfasser
 
 ## Der Bereich Steuerung

@@ -47,8 +47,8 @@ panel-hide-numbers = Hide the numbers ({ $key })
 
 ## Under the diagram
 
-canvas-hint = Drag W, N or a μ marker; click one (or the diagram) to use the arrow keys
-canvas-hint-ray = ←/→ turn by 1° (Shift: 0.1°) · +/− μt · Tab: next handle · drag to move
+canvas-hint = Drag W, N or a μ marker, or use − and + below; Tab or a click selects one for the arrow keys
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Shift: 0.1°) · +/− μt · Tab: next handle · drag to move
 canvas-hint-index = ↑/↓ or +/− change the index by 0.01 (Shift: 0.001) · Tab: next handle
 
 ## The controls panel

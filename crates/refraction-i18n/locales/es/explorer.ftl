@@ -47,8 +47,8 @@ panel-hide-numbers = Ocultar los números ({ $key })
 
 ## Bajo el diagrama
 
-canvas-hint = Arrastra W, N o un marcador μ; haz clic en uno (o en el diagrama) para usar las flechas del teclado
-canvas-hint-ray = ←/→ gira 1° (Mayús: 0,1°) · +/− μt · Tab: siguiente tirador · arrastra para mover
+canvas-hint = Arrastra W, N o un marcador μ, o usa − y + debajo; Tab o un clic elige uno para las flechas del teclado
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Mayús: 0,1°) · +/− μt · Tab: siguiente tirador · arrastra para mover
 canvas-hint-index = ↑/↓ o +/− cambian el índice en 0,01 (Mayús: 0,001) · Tab: siguiente tirador
 
 ## El panel de controles

@@ -47,8 +47,8 @@ panel-hide-numbers = Masquer les valeurs ({ $key })
 
 ## Sous le schéma
 
-canvas-hint = Fais glisser W, N ou un repère μ ; clique sur l’un d’eux (ou sur le schéma) pour utiliser les flèches du clavier
-canvas-hint-ray = ←/→ tourne de 1° (Maj : 0,1°) · +/− μt · Tab : poignée suivante · glisser pour déplacer
+canvas-hint = Fais glisser W, N ou un repère μ, ou utilise − et + en dessous ; Tab ou un clic en choisit un pour les flèches du clavier
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Maj : 0,1°) · +/− μt · Tab : poignée suivante · glisser pour déplacer
 canvas-hint-index = ↑/↓ ou +/− changent l’indice de 0,01 (Maj : 0,001) · Tab : poignée suivante
 
 ## Le panneau des commandes

@@ -47,8 +47,8 @@ panel-hide-numbers = Ocultar os números ({ $key })
 
 ## Abaixo do diagrama
 
-canvas-hint = Arraste W, N ou um marcador μ; clique em um deles (ou no diagrama) para usar as setas do teclado
-canvas-hint-ray = ←/→ gira 1° (Shift: 0,1°) · +/− μt · Tab: próxima alça · arraste para mover
+canvas-hint = Arraste W, N ou um marcador μ, ou use − e + abaixo; Tab ou um clique escolhe um para as setas do teclado
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Shift: 0,1°) · +/− μt · Tab: próxima alça · arraste para mover
 canvas-hint-index = ↑/↓ ou +/− mudam o índice em 0,01 (Shift: 0,001) · Tab: próxima alça
 
 ## O painel de controles
