@@ -535,9 +535,12 @@ impl Explorer {
         }
         // No margins (the diagram reaches the panels), but the panel's fill under the key hint.
         let frame = egui::Frame::NONE.fill(ui.visuals().panel_fill);
-        // The step buttons give way to a tool on a projector.
+        // The step buttons give way to a tool or a side panel on a projector (the controls
+        // panel has its own way to each value).
+        let side = self.panels.presenting;
+        let crowded = self.tools.open.is_some() || side.controls || side.numbers;
         let under = canvas::Under {
-            steps: !presenting || self.tools.open.is_none(),
+            steps: !presenting || !crowded,
             hint: !presenting,
         };
         egui::CentralPanel::no_frame()

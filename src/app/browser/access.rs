@@ -337,7 +337,7 @@ fn write_value(control: &mut Control, explorer: &Explorer, active: Option<&Eleme
     control.input.set_max(&format!("{}", bounds.end()));
     control
         .input
-        .set_value(&format!("{:.6}", (value * 1e6).round() / 1e6));
+        .set_value(&((value * 1e6).round() / 1e6).to_string());
     control.input.set_attribute("aria-valuetext", &words).ok();
     control.shown.set_text_content(Some(&words));
     control.written = words;
