@@ -11,13 +11,13 @@
 use std::path::PathBuf;
 
 use clap::{CommandFactory as _, Parser, Subcommand, ValueEnum};
+use refraction_check::Renderer;
 use refraction_diagram::animation::Animation;
 use refraction_diagram::palette::Theme;
 use refraction_i18n::Locale;
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
 use refraction_scene::DEFAULT_SCENE;
-use refraction_tools::call_check::Renderer;
 use refraction_tools::solve::Precision;
 
 use crate::app::View;
@@ -229,8 +229,9 @@ pub enum Command {
         #[arg(long, value_name = "NAME", value_parser = parse_renderer)]
         renderer: Option<Renderer>,
         /// Read the log's first lines and print a --pattern for them (and the command that
-        /// uses it) instead of checking; exit status 3 when no line looks like a refraction.
-        #[arg(long, conflicts_with_all = ["pattern", "csv", "summary", "paths", "strict"])]
+        /// uses it, with the other options given) instead of checking; exit status 3 when no
+        /// line looks like a refraction.
+        #[arg(long, conflicts_with_all = ["pattern", "csv", "paths", "strict"])]
         suggest_pattern: bool,
     },
     /// Measure what accuracy costs in time: every kernel variant at f32 and f64, timed on

@@ -11,10 +11,10 @@ mod commands;
 use std::process::ExitCode;
 
 use clap::Parser as _;
+use refraction_check::Dialect;
 use refraction_diagram::palette::Theme;
 use refraction_explorer::app::View;
 use refraction_explorer::cli::{Cli, Command};
-use refraction_tools::call_check::Dialect;
 
 /// The command line, or the exit status after `--help`, `--version` or a usage error. A usage
 /// error is one line, as every other error is: clap's first line, without its usage block.
@@ -76,9 +76,8 @@ fn main() -> ExitCode {
             normal,
             renderer,
             suggest_pattern,
-        }) if !suggest_pattern => commands::lines::check(
-            file.as_deref(),
-            &refraction_tools::call_check::Options {
+        }) => {
+            let options = refraction_check::Options {
                 dialect: api.map_or(Dialect::Physics, Dialect::Api),
                 inside,
                 outside,
@@ -86,8 +85,8 @@ fn main() -> ExitCode {
                 convention,
                 normal,
                 renderer,
-            },
-            &commands::lines::Reading {
+            };
+            let reading = commands::lines::Reading {
                 pattern: pattern.as_deref(),
                 csv,
                 strict,
@@ -95,12 +94,13 @@ fn main() -> ExitCode {
                 summary: summary.as_deref(),
                 replace,
                 tests: tests.as_deref(),
-            },
-        ),
-        Some(Command::Check { file, api, .. }) => commands::lines::suggest_pattern(
-            file.as_deref(),
-            api.map_or(Dialect::Physics, Dialect::Api),
-        ),
+            };
+            if suggest_pattern {
+                commands::lines::suggest_pattern(file.as_deref(), &options, &reading)
+            } else {
+                commands::lines::check(file.as_deref(), &options, &reading)
+            }
+        }
         Some(Command::Bench { quick, json, plot }) => {
             commands::bench::run(quick, json, plot.as_deref())
         }

@@ -8,8 +8,8 @@ mod answer;
 #[path = "message.rs"]
 mod message;
 
+use refraction_check::{Dialect, Format, Options, Pattern, Session};
 use refraction_kernel::api::Api;
-use refraction_tools::call_check::{Dialect, Format, Options, Pattern, Session};
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {
     let Some((&pick, rest)) = data.split_first() else {

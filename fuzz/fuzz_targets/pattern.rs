@@ -7,8 +7,8 @@
 #[path = "message.rs"]
 mod message;
 
+use refraction_check::Pattern;
 use refraction_kernel::api::Api;
-use refraction_tools::call_check::Pattern;
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {
     let [high, low, rest @ ..] = data else {

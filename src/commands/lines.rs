@@ -5,10 +5,10 @@ use std::io::{self, BufRead, Read as _, Write as _};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use refraction_check::tests_file::{self, TestLanguage};
+use refraction_check::{Dialect, Format, Options, Pattern, Session, suggest};
+use refraction_check::{MAX_SUMMARY_BYTES, Verdict, looks_like_summary};
 use refraction_i18n::t;
-use refraction_tools::call_check::{Dialect, Format, Options, Pattern, Session, suggest};
-use refraction_tools::diagnosis::{Verdict, looks_like_summary};
-use refraction_tools::snippets::tests_file::{self, TestLanguage};
 use refraction_tools::{self as jsonl, LinesError, solve as solver};
 
 use super::{fail, output, output_error};
@@ -85,11 +85,13 @@ fn summary_target(path: &Path, input: &Input, replace: bool) -> Result<(), Start
             log: input.name.clone(),
         });
     }
-    let start =
-        refraction_files::first_bytes(path, 64).map_err(|source| StartError::Unreadable {
+    // One byte more than a summary may hold: a file that long is not one.
+    let start = refraction_files::first_bytes(path, MAX_SUMMARY_BYTES + 1).map_err(|source| {
+        StartError::Unreadable {
             path: path_buf(),
             source,
-        })?;
+        }
+    })?;
     match start {
         Some(bytes) if !replace && !bytes.is_empty() && !looks_like_summary(&bytes) => {
             Err(StartError::NotASummary(path_buf()))
@@ -241,7 +243,7 @@ pub(crate) fn check(file: Option<&Path>, options: &Options, reading: &Reading<'_
     };
     let summary = session.summary();
     if let Some(path) = reading.summary {
-        let json = format!("{}\n", serde_json::json!(summary));
+        let json = format!("{}\n", refraction_tools::json_line(&summary));
         if let Err(e) = refraction_files::write_atomically(path, json.as_bytes()) {
             return fail("check", &e);
         }
@@ -279,10 +281,90 @@ fn finished(tally: &str, status: ExitCode) -> ExitCode {
     }
 }
 
+/// `text` as one shell word: as it is when it holds only characters no shell treats
+/// specially, else in single quotes (a quote inside written `'\''`).
+fn shell_word(text: &str) -> String {
+    let plain = |c: char| c.is_ascii_alphanumeric() || "_-+./,:=@%".contains(c);
+    if !text.is_empty() && text.chars().all(plain) {
+        text.to_owned()
+    } else {
+        format!("'{}'", text.replace('\'', "'\\''"))
+    }
+}
+
+/// The command that reads the log with `suggestion`, with every option given beside
+/// `--suggest-pattern` carried into it (none is dropped in silence).
+fn suggested_command(
+    file: Option<&Path>,
+    options: &Options,
+    reading: &Reading<'_>,
+    suggestion: &suggest::Suggestion,
+) -> String {
+    let mut words = vec!["refraction-explorer".to_owned(), "check".to_owned()];
+    let mut add = |option: &str, value: Option<String>| {
+        words.push(option.to_owned());
+        words.extend(value);
+    };
+    if let Some(api) = options.dialect.api() {
+        add("--api", Some(api.name().to_owned()));
+    }
+    if let (Some(inside), Some(outside)) = (options.inside, options.outside) {
+        add("--inside", Some(inside.to_string()));
+        add("--outside", Some(outside.to_string()));
+    }
+    if let Some(precision) = options.precision {
+        add("--precision", Some(precision.name().to_owned()));
+    }
+    if let Some(renderer) = options.renderer {
+        add("--renderer", Some(renderer.name().to_owned()));
+    }
+    // Always quoted, as a pattern's words and braces read best.
+    let pattern = format!("'{}'", suggestion.pattern.replace('\'', "'\\''"));
+    add("--pattern", Some(pattern));
+    match options.convention {
+        Some(convention) => add("--convention", Some(convention_name(convention).to_owned())),
+        None if suggestion.toward_origin => add("--convention", Some("toward-origin".to_owned())),
+        None => {}
+    }
+    if let Some(normal) = options.normal {
+        add(
+            "--normal",
+            Some(shell_word(&normal.map(|c| c.to_string()).join(" "))),
+        );
+    }
+    let path = |p: &Path| Some(shell_word(&p.display().to_string()));
+    if let Some(summary) = reading.summary {
+        add("--summary", path(summary));
+    }
+    if reading.replace {
+        add("--replace", None);
+    }
+    if let Some(tests) = reading.tests {
+        add("--tests", path(tests));
+    }
+    if let Some(file) = file {
+        words.extend(path(file));
+    }
+    words.join(" ")
+}
+
+/// The name `--convention` takes for `convention`.
+fn convention_name(convention: refraction_kernel::Convention) -> &'static str {
+    match convention {
+        refraction_kernel::Convention::AlongRay => "along-ray",
+        refraction_kernel::Convention::TowardOrigin => "toward-origin",
+    }
+}
+
 /// Runs `check --suggest-pattern` on `file` or stdin: the command with the pattern guessed
-/// from the log's first lines on stdout, what else it needs on stderr; status 3 when no line
-/// looks like a refraction.
-pub(crate) fn suggest_pattern(file: Option<&Path>, dialect: Dialect) -> ExitCode {
+/// from the log's first lines (and every other option given) on stdout, what else it needs on
+/// stderr; status 3 when no line looks like a refraction.
+pub(crate) fn suggest_pattern(
+    file: Option<&Path>,
+    options: &Options,
+    reading: &Reading<'_>,
+) -> ExitCode {
+    let dialect = options.dialect;
     let input = match Input::open(file) {
         Ok(input) => input,
         Err(e) => return fail("check", &e),
@@ -300,27 +382,16 @@ pub(crate) fn suggest_pattern(file: Option<&Path>, dialect: Dialect) -> ExitCode
         }
     }
     let texts: Vec<&str> = lines.iter().map(String::as_str).collect();
-    let Some(suggestion) = suggest::suggest(dialect, &texts) else {
+    let Some(mut suggestion) = suggest::suggest(dialect, &texts) else {
         let message = t!("check-suggest-none", lines = texts.len());
         return finished(&format!("check: {message}"), ExitCode::from(NOTHING_JUDGED));
     };
-    let mut command = String::from("refraction-explorer check");
-    if let Some(api) = dialect.api() {
-        command.push_str(&format!(" --api {}", api.name()));
-    }
-    command.push_str(&format!(
-        " --pattern '{}'",
-        suggestion.pattern.replace('\'', "'\\''")
-    ));
-    if suggestion.toward_origin {
-        command.push_str(" --convention toward-origin");
-    }
-    if let Some(path) = file {
-        command.push_str(&format!(" {}", path.display()));
-    }
+    let command = suggested_command(file, options, reading, &suggestion);
     if let Err(e) = writeln!(io::stdout().lock(), "{command}") {
         return output_error("check", &e);
     }
+    // What the options given already say is not asked for again.
+    suggestion.no_normal &= options.normal.is_none();
     let hints: Vec<String> = suggest::hints(&suggestion, dialect)
         .into_iter()
         .map(|h| format!("check: {h}"))

@@ -30,7 +30,11 @@ fn rest(h: &mut Harness<'_, Explorer>, seconds: f32) {
 /// What the live status says now.
 fn status(h: &Harness<'_, Explorer>) -> String {
     let node = h.get_by_role(Role::Status);
-    assert_eq!(node.accesskit_node().data().live(), Some(Live::Polite));
+    assert_eq!(
+        node.accesskit_node().data().live(),
+        Some(Live::Polite),
+        "the status is a polite live region"
+    );
     node.value().unwrap_or_default()
 }
 

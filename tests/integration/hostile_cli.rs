@@ -478,11 +478,9 @@ fn summary_never_replaces_the_log_it_reads_nor_a_file_of_another_kind() {
         Some(0),
         "a summary replaces a summary: {again:?}"
     );
-    assert!(
-        fs::read_to_string(&notes)
-            .unwrap()
-            .starts_with(r#"{"diagnosis":"#)
-    );
+    assert!(refraction_check::looks_like_summary(
+        &fs::read(&notes).unwrap()
+    ));
     // One message for a folder, naming it once.
     let folder_refused = run(&["check", "--api", "glsl", "--summary", dir, log_arg], "");
     let said = stderr(&folder_refused);

@@ -14,6 +14,7 @@ mod accuracy_view;
 mod bench_variants;
 mod check_api_cli;
 mod check_cli;
+mod check_guards;
 mod clipboard;
 mod dev_profile;
 mod diagnosis_cli;

@@ -10,10 +10,10 @@ use std::io::Write as _;
 
 use glam::DVec3;
 use proptest::prelude::*;
+use refraction_check::{Format, Options, Pattern, Session};
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
 use refraction_model::ExplorerState;
-use refraction_tools::call_check::{Format, Options, Pattern, Session};
 use refraction_tools::{candidate_check, solve, state_file};
 use serde_json::Value;
 
@@ -350,7 +350,7 @@ proptest! {
     #[test]
     fn a_check_api_json_line_is_judged_or_refused(api in api(), line in any_line(), swap in any::<bool>()) {
         // The solve fields renamed to the API's own, so that mutations hit its reader.
-        let names = refraction_tools::call_check::fields::names(api);
+        let names = refraction_check::fields::names(api);
         let line = if swap {
             line.replace("\"w\"", &format!("\"{}\"", names.incident))
                 .replace("\"n\"", &format!("\"{}\"", names.normal))
@@ -374,7 +374,7 @@ proptest! {
         noise in any::<String>(),
         pattern_noise in "[ -~{}]{0,30}",
     ) {
-        let names = refraction_tools::call_check::fields::names(api);
+        let names = refraction_check::fields::names(api);
         let fields = [names.incident, names.normal, names.eta, names.result];
         let pattern = format!(
             "LOG{literal}{{{}}} | {{{}}} | {{{}}} | {{{}}}",

@@ -343,15 +343,15 @@ fn interface_sources() -> Vec<PathBuf> {
     // The sentences of "Check my T" that the window shows (and `check` prints in English).
     for file in [
         "crates/refraction-tools/src/candidate_check.rs",
-        "crates/refraction-tools/src/call_check/explain.rs",
-        "crates/refraction-tools/src/diagnosis/code.rs",
-        "crates/refraction-tools/src/call_check/call.rs",
-        "crates/refraction-tools/src/call_check/csv.rs",
-        "crates/refraction-tools/src/call_check/error.rs",
-        "crates/refraction-tools/src/call_check/mod.rs",
-        "crates/refraction-tools/src/call_check/pattern.rs",
-        "crates/refraction-tools/src/call_check/record.rs",
-        "crates/refraction-tools/src/call_check/result.rs",
+        "crates/refraction-check/src/call_check/explain.rs",
+        "crates/refraction-check/src/diagnosis/code.rs",
+        "crates/refraction-check/src/call_check/call.rs",
+        "crates/refraction-check/src/call_check/csv.rs",
+        "crates/refraction-check/src/call_check/error.rs",
+        "crates/refraction-check/src/call_check/mod.rs",
+        "crates/refraction-check/src/call_check/pattern.rs",
+        "crates/refraction-check/src/call_check/record.rs",
+        "crates/refraction-check/src/call_check/result.rs",
         "crates/refraction-tools/src/vector_text.rs",
     ] {
         files.push(root().join(file));

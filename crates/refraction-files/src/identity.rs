@@ -20,8 +20,20 @@ pub fn names_open_file(path: &Path, open: &File) -> bool {
     }
 }
 
-/// Whether `path` names the same file as `open`: never, where the platform cannot tell.
-#[cfg(not(unix))]
+/// Whether `path` names the same file as `open` (the same volume and file index, whatever the
+/// name, links included; `same-file` asks Windows). `false` when `path` names nothing or
+/// cannot be opened to be examined.
+#[cfg(windows)]
+#[must_use]
+pub fn names_open_file(path: &Path, open: &File) -> bool {
+    let theirs = same_file::Handle::from_path(path);
+    let ours = open.try_clone().and_then(same_file::Handle::from_file);
+    matches!((theirs, ours), (Ok(a), Ok(b)) if a == b)
+}
+
+/// Whether `path` names the same file as `open`: never, where the platform cannot tell (a
+/// browser's page has no files to name).
+#[cfg(not(any(unix, windows)))]
 #[must_use]
 pub fn names_open_file(_path: &Path, _open: &File) -> bool {
     false
@@ -40,8 +52,21 @@ pub fn standard_input() -> Option<File> {
         .map(File::from)
 }
 
+/// The process's standard input as a file (a duplicate of its handle), to compare with a
+/// path; `None` where it cannot be had.
+#[cfg(windows)]
+#[must_use]
+pub fn standard_input() -> Option<File> {
+    use std::os::windows::io::AsHandle as _;
+    io::stdin()
+        .as_handle()
+        .try_clone_to_owned()
+        .ok()
+        .map(File::from)
+}
+
 /// The process's standard input as a file: never, where the platform cannot tell.
-#[cfg(not(unix))]
+#[cfg(not(any(unix, windows)))]
 #[must_use]
 pub fn standard_input() -> Option<File> {
     None

@@ -1,9 +1,9 @@
 //! One T against the four candidates: which of them a student's refracted ray is, in the
 //! physics convention (W, N, μ: the `solve` fields), and the sign choice or convention mix-up
 //! that produces it, in words a student understands. This is the verdict of "Check my T" and of
-//! a `check` line; [`crate::call_check`] reads a whole call in its own dialect (an API's, or
-//! physics') and asks this module which candidate the physically meant T is, and
-//! [`crate::diagnosis`] names the one mistake behind a whole log.
+//! a `check` line; the log diagnosis (the crate `refraction-check`) reads a whole call in its own
+//! dialect (an API's, or physics') and asks this module which candidate the physically meant T
+//! is.
 
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -252,11 +252,15 @@ pub fn vector_from_json(value: &Value) -> Result<[f64; 3], VectorError> {
 /// The JSON answer of the `check` command for one verdict (also the first fields of a
 /// `check --api` answer).
 #[derive(Serialize)]
-pub(crate) struct Answer<'a> {
-    pub(crate) ok: bool,
-    pub(crate) matches: Option<&'static str>,
-    pub(crate) explanation: &'a str,
-    pub(crate) t: Option<[f64; 3]>,
+pub struct Answer<'a> {
+    /// Whether the T is the right one.
+    pub ok: bool,
+    /// The candidate it is (`chosen`, `wrong_side`, ...), or `None` when it is none of them.
+    pub matches: Option<&'static str>,
+    /// Why, in words.
+    pub explanation: &'a str,
+    /// The right T, `None` on total internal reflection.
+    pub t: Option<[f64; 3]>,
 }
 
 /// Reads one line of the `check` command: the `solve` fields plus `t_yours`.

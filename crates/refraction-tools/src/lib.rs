@@ -1,22 +1,15 @@
-//! The refraction explorer's tools, with no window: the JSON Lines of the `solve` and `check`
-//! commands, the explorer's state file (one `solve` line), and the code a case or a failing
-//! line is written as ([`snippets`]: a unit test in the student's language). What `check` judges
-//! is in three modules, from one T to a whole log:
+//! The refraction explorer's tools, with no window: the JSON Lines of the `solve` command and
+//! the loop every JSON Lines command shares ([`answer_lines`]: one answer per non-empty input
+//! line, in order, streaming, with bad lines answered rather than fatal); one T checked against
+//! the four candidates ([`candidate_check`], in the physics convention W, N, μ: the window's
+//! *Check my T* and each line of `check`); vectors as programs print them ([`vector_text`]); the
+//! explorer's state file (one `solve` line, [`state_file`]), its links ([`link`]) and the case as
+//! code to paste elsewhere ([`snippets`]).
 //!
-//! - [`candidate_check`]: one T against the four candidates, in the physics convention (W, N,
-//!   μ): which one it is and the mix-up that produces it (a `check` line, *Check my T*);
-//! - [`call_check`]: one call read in its own dialect, an API's (`check --api`) or physics'
-//!   (any renderer's own refraction), from JSON, log patterns or CSV, and judged on its own;
-//! - [`diagnosis`]: the whole log, the one mistake in the student's code that explains its
-//!   wrong lines, from the evidence [`call_check`] counts.
-//!
-//! The window's *Check my T* panel calls the same functions, so the window and the commands
-//! agree. [`answer_lines`] is the loop both commands share: one answer per non-empty input
-//! line, in order, streaming, with bad lines answered rather than fatal.
+//! The diagnosis of a renderer's whole log (`check`, `check --api`) is the crate
+//! `refraction-check`, built on this one.
 
-pub mod call_check;
 pub mod candidate_check;
-pub mod diagnosis;
 pub mod error;
 mod fields;
 pub mod link;
@@ -43,10 +36,15 @@ pub enum LinesError {
     Write(#[source] io::Error),
 }
 
-/// `answer` as one JSON line. Every answer type is a struct of numbers, strings, vectors and
-/// options with string keys, which `serde_json` always writes (NaN as `null`), so a failure
-/// is a bug in this crate and panics rather than dropping the line in silence.
-pub(crate) fn json_line(answer: &impl serde::Serialize) -> String {
+/// `answer` as one JSON line.
+///
+/// # Panics
+/// If `answer` does not serialise: every answer type of this crate and of the log diagnosis is
+/// a struct of numbers, strings, vectors and options with string keys, which `serde_json`
+/// always writes (NaN as `null`), so a failure is a bug and panics rather than dropping the
+/// line in silence.
+#[must_use]
+pub fn json_line(answer: &impl serde::Serialize) -> String {
     serde_json::to_string(answer).expect("an answer of plain fields serialises")
 }
 
@@ -235,6 +233,17 @@ impl Chunk {
         if threads <= 1 || self.items.len() <= share {
             return self.items.iter().map(one).collect();
         }
+        self.shared_out(share, &one)
+    }
+
+    /// `one` on each line, in parts of `share` lines, each part on a thread of its own that
+    /// speaks the calling thread's language.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn shared_out<W: Send>(
+        &self,
+        share: usize,
+        one: &(impl Fn(&Item) -> Outcome<W> + Sync),
+    ) -> Vec<Outcome<W>> {
         let locale = refraction_i18n::locale();
         std::thread::scope(|scope| {
             let parts: Vec<_> = self
@@ -253,6 +262,17 @@ impl Chunk {
                 .flat_map(|part| part.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
                 .collect()
         })
+    }
+
+    /// In a browser page, which has one thread and spawns none: `one` on each line, in order,
+    /// on this thread (the wasm32 build is linted with threads disallowed).
+    #[cfg(target_arch = "wasm32")]
+    fn shared_out<W: Send>(
+        &self,
+        _share: usize,
+        one: &(impl Fn(&Item) -> Outcome<W> + Sync),
+    ) -> Vec<Outcome<W>> {
+        self.items.iter().map(one).collect()
     }
 }
 

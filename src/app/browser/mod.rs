@@ -17,6 +17,7 @@
 //! - each frame's time is a performance entry (`explorer-frame`) for the browser's profiler.
 
 mod access;
+mod crash;
 mod files;
 mod page;
 
@@ -51,6 +52,8 @@ struct Page {
     announced: Option<String>,
     /// The page's own controls and words for screen readers and keyboards.
     controls: Option<access::PageControls>,
+    /// The last state's link, kept for the panic overlay.
+    link: crash::KeptLink,
 }
 
 impl Page {
@@ -61,6 +64,7 @@ impl Page {
         if fragment == self.fragment {
             return;
         }
+        crash::panic_if_asked(&fragment);
         if let Err(why) = self.explorer.open_link(&fragment) {
             let said = t!("web-link-not-opened", reason = why.to_string());
             self.explorer.sharing.notice = Some(said);
@@ -137,6 +141,7 @@ impl eframe::App for Page {
         self.follow_address();
         access::PageControls::take_set(&mut self.explorer);
         self.explorer.show(ui);
+        self.link.follow(&self.explorer);
         self.follow_presentation(ui.ctx());
         self.follow_clipboard(ui.ctx());
         files::deliver_written();
@@ -183,6 +188,7 @@ fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement
         title: String::new(),
         announced: None,
         controls,
+        link: crash::KeptLink::default(),
     };
     page.follow_address();
     page
@@ -219,6 +225,7 @@ pub fn start() {
         return;
     };
     let runner = eframe::WebRunner::new();
+    crash::install();
     wasm_bindgen_futures::spawn_local(async move {
         let page_canvas = canvas.clone();
         let started = runner

@@ -1,5 +1,5 @@
 //! Check my T in a student's API: that API's own argument fields and the optional truth, the
-//! verdict of [`refraction_tools::call_check`] (the mistakes with what each means, the
+//! verdict of [`refraction_check`] (the mistakes with what each means, the
 //! explanation in the API's language, what the API returns, the right T), and the case drawn in
 //! the API's convention: the right call's incident vector as the API means it (GLSL's I and the
 //! book's uv along the ray, pbrt's and Mitsuba's wi back toward the origin), μ as the API's eta
@@ -12,17 +12,17 @@ use glam::DVec3;
 
 use super::refusal::Refusal;
 use super::{Checked, Shown, field, headline, right_t};
+use refraction_check::Got;
+use refraction_check::Value;
+use refraction_check::fields::{self, Kind, names};
+use refraction_check::{ApiCase, Language};
+use refraction_check::{Call, CallVerdict, Options, Record, check_record};
 use refraction_diagram::overlay::{StudentRay, VectorNames};
 use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::{Api, Args};
 use refraction_model::ExplorerState;
 use refraction_model::INDEX_RANGE;
-use refraction_tools::call_check::call::Got;
-use refraction_tools::call_check::fields::{self, Kind, names};
-use refraction_tools::call_check::record::Value;
-use refraction_tools::call_check::{Call, CallVerdict, Options, Record, check_record};
-use refraction_tools::snippets::api::{self as snippets, ApiCase, Language};
 use refraction_tools::state_file;
 use refraction_tools::vector_text::{spoken, spoken_vector};
 use serde_json::Value as Json;
@@ -179,7 +179,7 @@ fn picture(
 impl Judged {
     fn new(call: Call, verdict: CallVerdict) -> Self {
         let m = verdict.right;
-        let right = snippets::right_args(&call, &verdict);
+        let right = refraction_check::right_args(&call, &verdict);
         let picture = picture(call.api, right, m.mu, call.truth.from_to);
         Self {
             call,
@@ -272,7 +272,7 @@ pub(super) fn copy_buttons(ui: &mut Ui, judged: &Judged) -> Option<String> {
         let mut copied = None;
         for &language in Language::of(judged.call.api) {
             if ui.button(language.label()).clicked() {
-                let text = snippets::test(language, &judged.case());
+                let text = refraction_check::call_test(language, &judged.case());
                 ui.ctx().copy_text(text.clone());
                 copied = Some(text);
             }

@@ -13,16 +13,16 @@ use super::refusal::Refusal;
 use super::{JSON_LINE_START, field};
 use crate::app::paint::{self, verdict_colour, window_palette};
 use crate::app::typed::error_label;
+use refraction_check::Summary;
+use refraction_check::{
+    Dialect, Format, Judgement, LineError, Options, Pattern, PatternError, Record, SAMPLED,
+    SKIPPED, Session, Tally, fields,
+};
+use refraction_check::{Failing, MAX_TESTS};
 use refraction_diagram::font::Typeface;
 use refraction_diagram::{Primitive, failure_map};
 use refraction_i18n::t;
 use refraction_model::log_map::LinePoint;
-use refraction_tools::call_check::{
-    Dialect, Format, Judgement, LineError, Options, Pattern, PatternError, Record, SAMPLED,
-    SKIPPED, Session, Tally, fields,
-};
-use refraction_tools::call_check::{Failing, MAX_TESTS};
-use refraction_tools::diagnosis::Summary;
 
 /// The most characters the box takes (a paste beyond it is cut there): about 500 log lines.
 pub(super) const MAX_PASTED_CHARS: usize = 65_536;
@@ -567,7 +567,7 @@ mod tests {
         assert_eq!(table.rows[0].line, 2);
         assert!(table.rows[0].verdict.is_ok());
         let e = table.rows[1].verdict.as_ref().unwrap_err();
-        let cells = refraction_tools::call_check::CsvError::Cells {
+        let cells = refraction_check::CsvError::Cells {
             count: 2,
             columns: 4,
         };

@@ -10,11 +10,11 @@ use egui::Ui;
 use super::refusal::Refusal;
 use crate::app::file_dialog::{self, FileDialog, Purpose, Target};
 use crate::app::status::{self, Look, Status};
+use refraction_check::AnyLanguage;
+use refraction_check::tests_file::{self, TestLanguage};
+use refraction_check::{Dialect, Options};
+use refraction_check::{Failing, MAX_TESTS};
 use refraction_i18n::t;
-use refraction_tools::call_check::{Dialect, Options};
-use refraction_tools::call_check::{Failing, MAX_TESTS};
-use refraction_tools::snippets::AnyLanguage;
-use refraction_tools::snippets::tests_file::{self, TestLanguage};
 
 /// The most lines judged in the window (a log file can be longer: `check` takes any length).
 pub(super) const MAX_JUDGED: usize = 100_000;

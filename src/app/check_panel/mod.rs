@@ -4,7 +4,7 @@
 //! etai_over_etat, refracted`, Mitsuba's `wi, n, eta, wo`, with the optional truth). The
 //! explorer opens that case, drawn in the convention in use (shown in the panel), says what is
 //! wrong and why, and draws the student's vector beside the right one. The verdicts are those of
-//! [`refraction_tools::candidate_check`] and [`refraction_tools::call_check`], so the window and
+//! [`refraction_tools::candidate_check`] and [`refraction_check`], so the window and
 //! `check` agree.
 
 mod api;
@@ -17,13 +17,13 @@ use glam::DVec3;
 
 use super::paint::verdict_colour;
 use super::typed::error_label;
+use refraction_check::{Case, Dialect, Record};
 use refraction_diagram::numbers::vector;
 use refraction_diagram::overlay::StudentRay;
 use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
 use refraction_model::ExplorerState;
-use refraction_tools::call_check::{Dialect, Record, physics};
 use refraction_tools::candidate_check::{self, Match, Verdict};
 use refraction_tools::solve::{Precision, Request};
 use refraction_tools::state_file;
@@ -199,7 +199,7 @@ impl Own {
 
     /// Fills the case fields and "Your T" from a line of any renderer's log (the zero vector
     /// where its code reported total internal reflection, as `check` reads it).
-    fn fill_case(&mut self, case: &physics::Case) {
+    fn fill_case(&mut self, case: &Case) {
         self.fill(&case.request);
         self.yours = case.yours.map_or_else(
             || "0, 0, 0".to_owned(),
@@ -433,15 +433,13 @@ impl CheckPanel {
     fn open_row(&mut self, record: &Record, dialect: Dialect, state: &mut ExplorerState) {
         match dialect {
             Dialect::Api(api) => self.api.fill_from(api, record),
-            Dialect::Physics => {
-                match physics::Case::from_record(record, &self.bulk.options(dialect)) {
-                    Ok(case) => self.own.fill_case(&case),
-                    Err(e) => {
-                        self.outcome = Some(Err(e.into()));
-                        return;
-                    }
+            Dialect::Physics => match Case::from_record(record, &self.bulk.options(dialect)) {
+                Ok(case) => self.own.fill_case(&case),
+                Err(e) => {
+                    self.outcome = Some(Err(e.into()));
+                    return;
                 }
-            }
+            },
         }
         self.check(state);
     }

@@ -2,11 +2,11 @@
 //! panel's own, worded when shown, in the window's language of the moment.
 
 use core::fmt;
+use refraction_check::tests_file::TargetError;
+use refraction_check::{LineError, PatternError};
 use refraction_i18n::t;
 use refraction_kernel::InputError;
-use refraction_tools::call_check::{LineError, PatternError};
 use refraction_tools::error::{CheckError, RequestError, VectorError};
-use refraction_tools::snippets::tests_file::TargetError;
 use refraction_tools::vector_text::spoken;
 
 /// Why the panel refused a case, a call, a log or a test file.

@@ -45,7 +45,7 @@ fn opens(line: &str) -> bool {
 /// `lines` with each value printed over several lines joined into one line (the first step
 /// of [`Gather`]), for a suggestion read from a log's first lines.
 #[must_use]
-pub fn joined<'a>(lines: impl IntoIterator<Item = &'a str>) -> Vec<String> {
+pub(crate) fn joined<'a>(lines: impl IntoIterator<Item = &'a str>) -> Vec<String> {
     let mut out = Vec::new();
     let mut open: Option<Logical> = None;
     for line in lines {
@@ -80,7 +80,7 @@ pub fn joined<'a>(lines: impl IntoIterator<Item = &'a str>) -> Vec<String> {
 
 /// What one more line gave: lines now known to be no part of a record, and a record.
 #[derive(Debug, Default, PartialEq, Eq)]
-pub struct Step {
+pub(crate) struct Step {
     /// Lines left out: not part of any record.
     pub skipped: usize,
     /// A record's text, to match and judge.
@@ -89,7 +89,7 @@ pub struct Step {
 
 /// The lines gathered so far.
 #[derive(Clone, Debug)]
-pub struct Gather {
+pub(crate) struct Gather {
     lines: usize,
     open: Option<Logical>,
     window: VecDeque<Logical>,
@@ -98,7 +98,7 @@ pub struct Gather {
 impl Gather {
     /// Gathers records of `lines` lines (a pattern's [`super::Pattern::lines`]).
     #[must_use]
-    pub fn new(lines: usize) -> Self {
+    pub(crate) fn new(lines: usize) -> Self {
         Self {
             lines: lines.max(1),
             open: None,
@@ -108,7 +108,7 @@ impl Gather {
 
     /// Takes `line`, which the pattern did not match on its own; `matches` says whether a
     /// gathered text is a record.
-    pub fn push(&mut self, line: &str, matches: impl Fn(&str) -> bool) -> Step {
+    pub(crate) fn push(&mut self, line: &str, matches: impl Fn(&str) -> bool) -> Step {
         let logical = match self.open.take() {
             Some(mut open) => {
                 open.text.push(' ');
@@ -176,7 +176,7 @@ impl Gather {
 
     /// Forgets what was gathered (a line matched on its own, or the input ended): how many
     /// lines that leaves out.
-    pub fn clear(&mut self) -> usize {
+    pub(crate) fn clear(&mut self) -> usize {
         let open = self.open.take().map_or(0, |l| l.physical);
         let window: usize = self.window.drain(..).map(|l| l.physical).sum();
         open + window

@@ -5,7 +5,7 @@ use serde_json::Value as Json;
 
 use super::error::LineError;
 use super::fields::{self, Dialect, Kind};
-use crate::vector_text::{digits_of, json_vector_digits, parse_number, parse_vector};
+use refraction_tools::vector_text::{digits_of, json_vector_digits, parse_number, parse_vector};
 
 /// One field's value.
 #[derive(Clone, Debug, PartialEq)]
@@ -123,7 +123,7 @@ pub(super) fn accepts(kind: Kind, text: &str) -> bool {
 ///
 /// # Errors
 /// The text is not a value of that kind; the message names the field.
-pub fn from_text(kind: Kind, name: &str, text: &str) -> Result<(Value, u32), LineError> {
+pub(crate) fn from_text(kind: Kind, name: &str, text: &str) -> Result<(Value, u32), LineError> {
     let text = text.trim();
     let wrap = |error| LineError::Text {
         field: name.to_owned(),
@@ -255,8 +255,16 @@ impl Record {
     pub fn from_json_line(dialect: impl Into<Dialect>, line: &str) -> Result<Self, LineError> {
         let dialect = dialect.into();
         let object: Object =
-            serde_json::from_str(line).map_err(|e| crate::error::JsonError::from(&e))?;
+            serde_json::from_str(line).map_err(|e| refraction_tools::error::JsonError::from(&e))?;
         let object = object.0.ok_or(LineError::NotAnObject { dialect })?;
+        Self::from_object(dialect, &object)
+    }
+
+    /// Reads `dialect`'s fields of a JSON object; other fields are ignored.
+    fn from_object(
+        dialect: Dialect,
+        object: &serde_json::Map<String, Json>,
+    ) -> Result<Self, LineError> {
         let mut record = Self::default();
         for (name, kind) in fields::all(dialect) {
             match object.get(name) {
@@ -266,6 +274,39 @@ impl Record {
             }
         }
         Ok(record)
+    }
+
+    /// A record of `dialect`'s fields from values held in memory (a library's arrays rather
+    /// than a log's text), read exactly as the same values in a JSON line would be: each
+    /// number trusted to the digits of its shortest form, [`Value::Null`] meaning "logged
+    /// nothing" where null means something (pbrt's `wt`, Mitsuba's `wo`, `t_yours`) and an
+    /// absent field elsewhere; a NaN or infinite number reads as JSON's `null`.
+    ///
+    /// # Errors
+    /// A name that is not one of the dialect's fields (its words name the field), or a value of
+    /// the wrong kind for its field (a number for a vector...).
+    pub fn from_values<'a>(
+        dialect: impl Into<Dialect>,
+        values: impl IntoIterator<Item = (&'a str, Value)>,
+    ) -> Result<Self, LineError> {
+        let dialect = dialect.into();
+        let number = |x: f64| serde_json::Number::from_f64(x).map_or(Json::Null, Json::Number);
+        let mut object = serde_json::Map::new();
+        for (name, value) in values {
+            let (field, _) =
+                fields::find(dialect, name).ok_or_else(|| LineError::UnknownField {
+                    field: name.to_owned(),
+                })?;
+            let json = match value {
+                Value::Number(x) => number(x),
+                Value::Vector(v) => Json::Array(v.map(number).to_vec()),
+                Value::Flag(flag) => Json::Bool(flag),
+                Value::Null => Json::Null,
+                Value::Label(text) => Json::String(text),
+            };
+            object.insert(field.to_owned(), json);
+        }
+        Self::from_object(dialect, &object)
     }
 
     /// Reads the texts a pattern or CSV line gave for `api`'s fields.

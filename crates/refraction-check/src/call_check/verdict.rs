@@ -13,17 +13,17 @@ use super::error::LineError;
 use super::explain;
 use super::readings::{Reading, Tolerance, readings, undo};
 use super::result::{Returns, Seen, returns, transmitted_by};
-use crate::candidate_check::{self, Match};
 use crate::diagnosis::Code;
 use crate::diagnosis::formula::{self, Situation};
 use crate::diagnosis::{self, Codes, Evidence, Missing, Readings, Side, Told};
-use crate::solve::{Precision, Request};
-use crate::vector_text::{angle, length};
 use refraction_model::log_map::{self, LinePoint};
+use refraction_tools::candidate_check::{self, Match};
+use refraction_tools::solve::{Precision, Request};
+use refraction_tools::vector_text::{angle, length};
 
 /// What a wrong result looks like.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Resemblance {
+pub(crate) enum Resemblance {
     /// The other root: the API's answer mirrored across the surface.
     OtherRoot,
     /// The API's answer mirrored across the normal.
@@ -59,8 +59,8 @@ pub enum Resemblance {
     },
 }
 
-/// The verdict on one API call, as [`verdict()`] gives it (the whole log's mistake is
-/// [`crate::diagnosis`]'s to name).
+/// The verdict on one API call, as [`check_record`](crate::check_record) gives it (the whole
+/// log's mistake is the diagnosis's to name).
 #[derive(Clone, Debug, PartialEq)]
 pub struct CallVerdict {
     /// Whether the call is right: no mistakes.
@@ -183,7 +183,7 @@ fn resemblance<S: Real>(call: &Call, r: &Returns, v: DVec3) -> Resemblance {
         .transmitted
         .or_else(|| r.nearby.iter().flatten().next().copied())
         .unwrap_or(DVec3::ZERO);
-    let n = crate::vector_text::unit(call.api.meaning(call.args).normal);
+    let n = refraction_tools::vector_text::unit(call.api.meaning(call.args).normal);
     let along = n * (2.0 * p.dot(n));
     let shapes = [
         (p - along, Resemblance::OtherRoot),
@@ -196,8 +196,8 @@ fn resemblance<S: Real>(call: &Call, r: &Returns, v: DVec3) -> Resemblance {
     }
     // μ·d + b·n with b negated: μ·d − b·n = 2μ·d − (μ·d + b·n), as written or normalised.
     let meaning = call.api.meaning(call.args);
-    let term = 2.0 * meaning.mu * crate::vector_text::unit(meaning.travel) - p;
-    if r.same(v, term) || r.same(v, crate::vector_text::unit(term)) {
+    let term = 2.0 * meaning.mu * refraction_tools::vector_text::unit(meaning.travel) - p;
+    if r.same(v, term) || r.same(v, refraction_tools::vector_text::unit(term)) {
         return Resemblance::NormalTerm;
     }
     let variants = [
@@ -348,7 +348,7 @@ fn verdict_in<S: Real>(call: &Call) -> Result<CallVerdict, LineError> {
 /// `entering` is logged for pbrt or Mitsuba whether the normal is the outward one, whether it
 /// is a sampled reflection, and, for a right call whose ratio nothing checks, what is missing.
 #[must_use]
-pub fn evidence(call: &Call, verdict: &CallVerdict) -> Evidence {
+pub(crate) fn evidence(call: &Call, verdict: &CallVerdict) -> Evidence {
     let either_side = matches!(call.api, Api::Pbrt | Api::Mitsuba);
     // pbrt's and Mitsuba's wi points back along the ray: the normal is on the incoming side
     // when it points the way wi does. GLSL's I and the book's uv point along the ray.
@@ -406,7 +406,7 @@ pub fn evidence(call: &Call, verdict: &CallVerdict) -> Evidence {
 /// the direction the student's code sent the ray in is from the right one (T, or the
 /// reflected ray past the critical angle; none is known when the call's ray is unknown).
 #[must_use]
-pub fn point(call: &Call, verdict: &CallVerdict) -> LinePoint {
+pub(crate) fn point(call: &Call, verdict: &CallVerdict) -> LinePoint {
     let evidence = evidence(call, verdict);
     let m = &verdict.right;
     let right = match verdict.t {
@@ -428,7 +428,7 @@ pub fn point(call: &Call, verdict: &CallVerdict) -> LinePoint {
 ///
 /// # Errors
 /// An argument too large for that precision.
-pub fn verdict(call: &Call) -> Result<CallVerdict, LineError> {
+pub(crate) fn verdict(call: &Call) -> Result<CallVerdict, LineError> {
     match call.precision {
         Precision::F32 => verdict_in::<f32>(call),
         Precision::F64 => verdict_in::<f64>(call),

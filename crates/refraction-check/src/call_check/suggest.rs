@@ -10,7 +10,7 @@ use refraction_i18n::t;
 use super::fields::{self, Dialect, Kind};
 use super::gather;
 use super::pattern::{MAX_PATTERN_LINES, Pattern};
-use crate::vector_text::{parse_number, parse_vector};
+use refraction_tools::vector_text::{parse_number, parse_vector};
 
 /// The most lines of a log read for a suggestion.
 pub const LINES_READ: usize = 200;

@@ -18,13 +18,13 @@ use serde::Serialize;
 use super::call::Options;
 use super::error::{LineError, Role};
 use super::record::{Record, Value};
-use crate::candidate_check::{self, MATCH_ANGLE, Match, Verdict};
 use crate::diagnosis::Code;
 use crate::diagnosis::formula::{self, Outcome, Situation};
 use crate::diagnosis::{self, Codes, Evidence, Readings, Side, Told};
-use crate::solve::{Precision, Request};
-use crate::vector_text::{angle, length, spoken};
 use refraction_model::log_map::{self, LinePoint};
+use refraction_tools::candidate_check::{self, MATCH_ANGLE, Match, Verdict};
+use refraction_tools::solve::{Precision, Request};
+use refraction_tools::vector_text::{angle, length, spoken};
 
 /// One line of any renderer's log, ready to judge.
 #[derive(Clone, Debug, PartialEq)]
@@ -356,7 +356,7 @@ fn explanation(
 ///
 /// # Errors
 /// The problem cannot be refracted (a zero vector, an index that is not positive).
-pub fn judge(case: &Case) -> Result<Judged, LineError> {
+pub(crate) fn judge(case: &Case) -> Result<Judged, LineError> {
     let nothing = [0.0; 3];
     let verdict = candidate_check::check(&case.request, case.yours.unwrap_or(nothing))?;
     let r = refract(&Incidence::<f64> {
@@ -438,7 +438,7 @@ struct Answer<'a> {
 
 /// The answer line for a judged case.
 #[must_use]
-pub fn answer_line(judged: &Judged) -> String {
+pub(crate) fn answer_line(judged: &Judged) -> String {
     let v = &judged.verdict;
     let answer = Answer {
         verdict: candidate_check::Answer {
@@ -457,13 +457,13 @@ pub fn answer_line(judged: &Judged) -> String {
     // serde_json fails only on a map with keys that are not strings or on a Serialize that
     // fails: the answer has neither.
     // untranslated: a message for a developer, never shown
-    crate::json_line(&answer)
+    refraction_tools::json_line(&answer)
 }
 
 /// The kind of a verdict as `check`'s tally counts it: `ok`, the candidate it matches, or why
 /// it matches none.
 #[must_use]
-pub fn tally_kind(judged: &Judged) -> &'static str {
+pub(crate) fn tally_kind(judged: &Judged) -> &'static str {
     let v = &judged.verdict;
     match (v.ok, v.matches) {
         (true, _) if judged.evidence.sample.is_some() => super::SAMPLED,
@@ -482,7 +482,7 @@ pub fn tally_kind(judged: &Judged) -> &'static str {
 mod tests {
     use super::*;
     use crate::call_check::fields::Dialect;
-    use crate::vector_text::unit;
+    use refraction_tools::vector_text::unit;
 
     fn case(text: &str) -> Case {
         let record = Record::from_json_line(Dialect::Physics, text).unwrap();

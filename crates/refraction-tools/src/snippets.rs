@@ -1,10 +1,7 @@
 //! The current case as text to paste elsewhere: a `solve` line, code calling a reference
-//! function (Rust, GLSL, C++ with glm) and a unit-test vector, each with the expected T; and a
-//! student's checked call as a unit test in their own language ([`api`]). The window copies
-//! them and writes a log's failing lines as a file of tests with them.
-
-pub mod api;
-pub mod tests_file;
+//! function (Rust, GLSL, C++ with glm) and a unit-test vector, each with the expected T. The
+//! window copies them; the numbers are written as [`literal`]s, which the log diagnosis's test
+//! files use too.
 
 use crate::error::{JsonError, RequestError};
 use crate::solve::Request;
@@ -12,11 +9,15 @@ use refraction_kernel::{Convention, refract};
 
 /// A number as a float literal that Rust, GLSL and C++ all read back exactly (`1.0`, `0.1`,
 /// `1e-7`; never `1`).
-fn literal(x: f64) -> String {
+#[must_use]
+pub fn literal(x: f64) -> String {
     format!("{x:?}")
 }
 
-fn vector(v: [f64; 3]) -> String {
+/// A vector as three [`literal`]s separated by commas (`0.6, -0.8, 0.0`).
+#[must_use]
+pub fn vector(v: impl Into<[f64; 3]>) -> String {
+    let v: [f64; 3] = v.into();
     v.map(literal).join(", ")
 }
 
@@ -126,136 +127,6 @@ pub fn test_vector(request: &Request) -> Result<String, RequestError> {
     value["a"] = serde_json::json!(weights.map(|w| w.0));
     value["b"] = serde_json::json!(weights.map(|w| w.1));
     Ok(value.to_string())
-}
-
-/// The language a test of any renderer's own refraction is written in.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum AnyLanguage {
-    /// C++ with `assert`, calling a `refract` the student points at their own.
-    Cpp,
-    /// Python (pytest), calling a `refract` imported from the student's module.
-    Python,
-}
-
-/// A failing line of any renderer's log: its number, the problem and what the code sent.
-#[derive(Clone, Copy, Debug)]
-pub struct AnyCase<'a> {
-    /// The log's line number, from 1.
-    pub line: usize,
-    /// The problem: W, N, the indices, the convention.
-    pub request: &'a Request,
-    /// What the student's code gave (`None`: it reported total internal reflection).
-    pub yours: Option<[f64; 3]>,
-}
-
-/// The tolerance of a test in `precision`.
-fn any_tolerance(precision: crate::solve::Precision) -> &'static str {
-    match precision {
-        crate::solve::Precision::F32 => "1e-5",
-        crate::solve::Precision::F64 => "1e-12",
-    }
-}
-
-/// One case's test body in `language`: the call with the log's arguments and the expected T
-/// (the kernel's) or total internal reflection, after a comment saying what the code gave.
-fn any_test(language: AnyLanguage, case: &AnyCase<'_>) -> Result<String, RequestError> {
-    let r = case.request;
-    let t = expected(r)?.t;
-    let gave = case.yours.map_or_else(
-        || "total internal reflection".to_owned(),
-        |y| format!("({})", vector(y)),
-    );
-    let tol = any_tolerance(r.precision);
-    let (w, n, mu_i, mu_t) = (vector(r.w), vector(r.n), literal(r.mu_i), literal(r.mu_t));
-    let line = case.line;
-    Ok(match (language, t) {
-        (AnyLanguage::Cpp, Some(t)) => format!(
-            "// Line {line}: the code gave {gave}.\nstatic void test_refract_line_{line}() {{\n    \
-             V t;\n    assert(refract(V{{{w}}}, V{{{n}}}, {mu_i}, {mu_t}, &t));\n    \
-             assert(near(t, V{{{}}}, {tol}));\n}}\n",
-            vector(t)
-        ),
-        (AnyLanguage::Cpp, None) => format!(
-            "// Line {line}: the code gave {gave}; the right answer is total internal reflection.\n\
-             static void test_refract_line_{line}() {{\n    V t;\n    \
-             assert(!refract(V{{{w}}}, V{{{n}}}, {mu_i}, {mu_t}, &t));\n}}\n"
-        ),
-        (AnyLanguage::Python, Some(t)) => format!(
-            "\n\n# Line {line}: the code gave {gave}.\ndef test_refract_line_{line}():\n    \
-             t = refract(({w}), ({n}), {mu_i}, {mu_t})\n    assert t is not None\n    \
-             assert close(t, ({}), {tol})\n",
-            vector(t)
-        ),
-        (AnyLanguage::Python, None) => format!(
-            "\n\n# Line {line}: the code gave {gave}; the right answer is total internal reflection.\n\
-             def test_refract_line_{line}():\n    assert refract(({w}), ({n}), {mu_i}, {mu_t}) is None\n"
-        ),
-    })
-}
-
-/// What a file of any renderer's tests starts with: how to point it at the renderer's own
-/// refraction, and the helpers the tests share.
-fn any_preamble(language: AnyLanguage, convention: Convention) -> String {
-    let w = match convention {
-        Convention::AlongRay => "W, the direction the ray travels in",
-        Convention::TowardOrigin => "W, pointing back toward the ray's origin",
-    };
-    match language {
-        AnyLanguage::Cpp => format!(
-            "// Each test calls your renderer's refraction with the logged {w}, N and the\n\
-             // indices: define `refract` to call it (true and the direction in t, or false on\n\
-             // total internal reflection).\n#include <cassert>\n#include <cmath>\n\n\
-             struct V {{ double x, y, z; }};\nbool refract(V w, V n, double mu_i, double mu_t, V* t);\n\n\
-             static bool near(V a, V b, double tolerance) {{\n    \
-             return std::fabs(a.x - b.x) <= tolerance && std::fabs(a.y - b.y) <= tolerance &&\n           \
-             std::fabs(a.z - b.z) <= tolerance;\n}}\n\n"
-        ),
-        AnyLanguage::Python => format!(
-            "# Each test calls your renderer's refraction with the logged {w}, N and the\n\
-             # indices: refract(w, n, mu_i, mu_t) gives the direction, or None on total internal\n\
-             # reflection.\nfrom renderer import refract  # change the module to your renderer's\n\n\n\
-             def close(a, b, tolerance):\n    return all(abs(x - y) <= tolerance for x, y in zip(a, b))\n"
-        ),
-    }
-}
-
-/// A C++ `main` that calls each of the test functions `names` and returns 0.
-fn cpp_main(names: impl Iterator<Item = String>) -> String {
-    let mut text = "int main() {\n".to_owned();
-    for name in names {
-        text.push_str(&format!("    {name}();\n"));
-    }
-    text.push_str("    return 0;\n}\n");
-    text
-}
-
-/// A file of tests in `language` of any renderer's own refraction, one per failing line, with
-/// a `main` that runs them in C++.
-///
-/// # Errors
-/// A line's problem cannot be refracted (it was judged, so it can).
-pub fn any_renderer_tests(
-    language: AnyLanguage,
-    cases: &[AnyCase<'_>],
-) -> Result<String, RequestError> {
-    let convention = cases
-        .first()
-        .map_or_else(Convention::default, |c| c.request.convention);
-    let mut text = any_preamble(language, convention);
-    for case in cases {
-        text.push_str(&any_test(language, case)?);
-        if language == AnyLanguage::Cpp {
-            text.push('\n');
-        }
-    }
-    if language == AnyLanguage::Cpp {
-        text.push_str(&cpp_main(
-            cases
-                .iter()
-                .map(|c| format!("test_refract_line_{}", c.line)),
-        ));
-    }
-    Ok(text)
 }
 
 #[cfg(test)]

@@ -428,3 +428,28 @@ fn the_place_names_the_kind_of_line() {
         s.diagnosis[0].place
     );
 }
+
+#[test]
+fn a_summary_is_known_by_its_keys_in_any_order() {
+    // Issue 45: it was known only by serde_json's sorted keys (`diagnosis` first).
+    let summary = tally(&[(line(&[&[Code::EtaInverted]], Side::Inside), 3)]).summary(None, None);
+    let written = refraction_tools::json_line(&summary);
+    assert!(written.starts_with(r#"{"lines":"#), "{written}");
+    assert!(looks_like_summary(written.as_bytes()));
+    let sorted = serde_json::to_value(&summary).unwrap().to_string();
+    assert!(sorted.starts_with(r#"{"diagnosis":"#), "{sorted}");
+    assert!(looks_like_summary(sorted.as_bytes()));
+    let reordered =
+        r#"{"ok": 0, "sampled": 0, "skipped": 0, "diagnosis": [], "judged": 0, "lines": 0}"#;
+    assert!(looks_like_summary(reordered.as_bytes()));
+    for other in [
+        r#"{"diagnosis": 1, "judged": 0, "lines": 0, "ok": 0, "sampled": 0, "skipped": 0}"#,
+        r#"{"lines": 0, "judged": 0, "ok": 0, "skipped": 0, "sampled": 0}"#,
+        r#"{"diagnosis": [], "judged": 0, "lines": 0, "ok": 0, "sampled": 0, "skipped": 0, "w": 1}"#,
+        r#"{"diagnosis": [], "judged": 0, "lines": 0, "ok": 0, "sampled": 0, "skipped": 0} trailing"#,
+        "[1, 2, 3]",
+        "#include <cmath>\n",
+    ] {
+        assert!(!looks_like_summary(other.as_bytes()), "{other}");
+    }
+}

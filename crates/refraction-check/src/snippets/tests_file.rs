@@ -153,10 +153,12 @@ pub fn replaces(path: &Path, language: TestLanguage) -> Result<bool, TargetError
         let path = path.to_path_buf();
         return Err(TargetError::IsAFolder { path });
     }
-    let Ok(text) = std::fs::read(path) else {
+    let ours = format!("{} {TESTS_MARK}", language.comment());
+    // Only the first bytes tell whether the file is ours (and a browser page has only the
+    // files it was given: refraction_files reads those too).
+    let Ok(Some(text)) = refraction_files::first_bytes(path, ours.len() as u64) else {
         return Ok(false);
     };
-    let ours = format!("{} {TESTS_MARK}", language.comment());
     if text.is_empty() || text.starts_with(ours.as_bytes()) {
         Ok(true)
     } else {

@@ -23,12 +23,12 @@
 //!
 //! Lines are counted, not kept: a million-line log costs a counter per kind of line.
 
-pub mod code;
+pub(crate) mod code;
 mod fixes;
-pub mod formula;
-pub mod hypotheses;
+pub(crate) mod formula;
+pub(crate) mod hypotheses;
 mod rank;
-pub mod renderer;
+pub(crate) mod renderer;
 
 use std::collections::BTreeMap;
 
@@ -37,12 +37,12 @@ use refraction_kernel::api::Api;
 use serde::Serialize;
 
 pub use code::Code;
-pub use hypotheses::{Codes, Readings, View};
-pub use refraction_model::log_map::Side;
+pub(crate) use hypotheses::{Codes, Readings, View};
+pub(crate) use refraction_model::log_map::Side;
 pub use renderer::Renderer;
 
 /// How wide a band of angles of incidence the sampling of reflection is judged in, degrees.
-pub const BIN_DEG: f64 = 5.0;
+pub(crate) const BIN_DEG: f64 = 5.0;
 
 /// Below this probability, reflections at every line of a band of angles are not sampling:
 /// the code never transmits there.
@@ -101,7 +101,7 @@ pub struct Evidence {
 
 /// The band of `incidence_deg` for [`Evidence::band`].
 #[must_use]
-pub fn band(incidence_deg: f64) -> u8 {
+pub(crate) fn band(incidence_deg: f64) -> u8 {
     // Within [0, 90]: 18 bands.
     #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
     let band = (incidence_deg.clamp(0.0, 89.999) / BIN_DEG) as u8;
@@ -221,10 +221,10 @@ pub struct Summary {
 }
 
 /// The code of a log whose judged lines are all right.
-pub const NONE: &str = "none";
+pub(crate) const NONE: &str = "none";
 
 /// The code of a log whose lines cannot be told right or wrong (see [`Missing`]).
-pub const UNCHECKED: &str = "unchecked";
+pub(crate) const UNCHECKED: &str = "unchecked";
 
 /// What the verdict says, for the exit status.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -289,11 +289,21 @@ impl Finding {
     }
 }
 
-/// Whether a file that starts with `bytes` is a summary `check --summary` wrote (its JSON's
-/// first key, in the order it is written, is `diagnosis`): one that may be replaced by the next.
+/// The most bytes of a file read to tell whether it is a summary: one holds a few findings of
+/// a few hundred bytes each, so a larger file is something else.
+pub const MAX_SUMMARY_BYTES: u64 = 1 << 16;
+
+/// Whether `bytes`, a whole file, is a summary `check --summary` wrote: one JSON object with
+/// exactly a [`Summary`]'s keys, in any order (another program may have written it back with its
+/// keys sorted or reordered), so that it may be replaced by the next.
 #[must_use]
 pub fn looks_like_summary(bytes: &[u8]) -> bool {
-    bytes.trim_ascii_start().starts_with(br#"{"diagnosis":"#)
+    const KEYS: [&str; 6] = ["diagnosis", "judged", "lines", "ok", "sampled", "skipped"];
+    serde_json::from_slice::<serde_json::Map<String, serde_json::Value>>(bytes).is_ok_and(|map| {
+        map.len() == KEYS.len()
+            && KEYS.iter().all(|key| map.contains_key(*key))
+            && map["diagnosis"].is_array()
+    })
 }
 
 impl Summary {

@@ -3,7 +3,7 @@
 //! from JSON, a `--pattern` log or CSV into a [`Record`], judged on its own (a [`Judgement`]:
 //! for an API's call, its [`verdict()`]), and counted toward the diagnosis of the whole log
 //! ([`crate::diagnosis`], which names the one mistake behind all the wrong lines). Which of the
-//! four candidates a T is comes from [`crate::candidate_check`].
+//! four candidates a T is comes from [`refraction_tools::candidate_check`].
 //!
 //! In an API's dialect, each line carries the API's own argument names and what came back (see
 //! [`fields`]), with optional truth (`from`, `to`, `travel`, `entering`); the answer says
@@ -19,36 +19,36 @@
 //! For the explorer: [`Record::from_texts`] reads the API's fields from text, [`Call::from_record`]
 //! makes the call, [`verdict()`] judges it; [`fields::names`] gives each API's field names.
 
-pub mod call;
-pub mod csv;
-pub mod error;
+pub(crate) mod call;
+pub(crate) mod csv;
+pub(crate) mod error;
 mod explain;
 pub mod fields;
-pub mod gather;
-pub mod paths;
-pub mod pattern;
-pub mod physics;
-pub mod readings;
-pub mod record;
-pub mod result;
+pub(crate) mod gather;
+pub(crate) mod paths;
+pub(crate) mod pattern;
+pub(crate) mod physics;
+pub(crate) mod readings;
+pub(crate) mod record;
+pub(crate) mod result;
 pub mod suggest;
-pub mod verdict;
+pub(crate) mod verdict;
 
 use std::collections::BTreeMap;
 
 use serde::Serialize;
 
-pub use crate::diagnosis::{Code, Renderer};
+pub(crate) use crate::diagnosis::Code;
 pub use call::{Call, Options};
 pub use error::{CsvError, LineError, PatternError};
 pub use fields::Dialect;
-pub use pattern::{MAX_PATTERN_BYTES, MAX_PATTERN_LINES, MAX_PLACEHOLDERS, Pattern};
+pub(crate) use pattern::Pattern;
 pub use record::Record;
-pub use verdict::{CallVerdict, verdict};
+pub(crate) use verdict::{CallVerdict, verdict};
 
-use crate::candidate_check::{self, Match};
 use crate::diagnosis::{Evidence, LogTally, Summary};
 use gather::Gather;
+use refraction_tools::candidate_check::{self, Match};
 
 /// The JSON answer for one call.
 #[derive(Serialize)]
@@ -65,7 +65,7 @@ struct Answer<'a> {
 
 /// The answer line for a judged call.
 #[must_use]
-pub fn answer_line(call: &Call, verdict: &CallVerdict) -> String {
+pub(crate) fn answer_line(call: &Call, verdict: &CallVerdict) -> String {
     let names = |codes: &[Code]| codes.iter().map(|c| c.name()).collect::<Vec<_>>();
     let answer = Answer {
         verdict: candidate_check::Answer {
@@ -79,7 +79,7 @@ pub fn answer_line(call: &Call, verdict: &CallVerdict) -> String {
         alternatives: verdict.alternatives.iter().map(|a| names(a)).collect(),
         path: call.path.as_deref(),
     };
-    crate::json_line(&answer)
+    refraction_tools::json_line(&answer)
 }
 
 /// Judges one record.
@@ -124,6 +124,20 @@ fn tied(alternatives: &[Vec<Code>]) -> String {
     names.join("|")
 }
 
+/// The tally's kind of a call's verdict: `ok`, a sampled reflection, or the line's
+/// explanations as one kind, ties joined (`unexplained` when none fits).
+fn verdict_kind(verdict: &CallVerdict) -> String {
+    if verdict.ok && verdict.sampled.is_some() {
+        SAMPLED.to_owned()
+    } else if verdict.ok {
+        "ok".to_owned()
+    } else if verdict.alternatives.is_empty() {
+        "unexplained".to_owned()
+    } else {
+        tied(&verdict.alternatives)
+    }
+}
+
 impl Tally {
     /// Counts one more `kind`.
     pub fn add(&mut self, kind: &str) {
@@ -138,15 +152,7 @@ impl Tally {
     /// Counts a verdict: `ok`, a sampled reflection, or the line's explanations as one kind,
     /// ties joined (`unexplained` when none fits).
     pub fn add_verdict(&mut self, verdict: &CallVerdict) {
-        if verdict.ok && verdict.sampled.is_some() {
-            self.add(SAMPLED);
-        } else if verdict.ok {
-            self.add("ok");
-        } else if verdict.alternatives.is_empty() {
-            self.add("unexplained");
-        } else {
-            self.add(&tied(&verdict.alternatives));
-        }
+        self.add(&verdict_kind(verdict));
     }
 
     /// Each kind counted and its count, in the summary's order.
@@ -252,12 +258,20 @@ impl Judgement {
         }
     }
 
-    /// Counts the line in `tally`: the mistakes of a call, `check`'s kinds of a refraction.
-    fn count(&self, tally: &mut Tally) {
+    /// The line's kind as the tally on stderr counts it: for a call `ok`, `reflected
+    /// (sampled)`, its explanations (ties joined by `|`) or `unexplained`; for any renderer's
+    /// refraction `ok`, the candidate it is (`wrong_side`...) or what else went wrong.
+    #[must_use]
+    pub fn kind(&self) -> String {
         match self {
-            Self::Api(judged) => tally.add_verdict(&judged.1),
-            Self::Physics(judged) => tally.add(physics::tally_kind(judged)),
+            Self::Api(judged) => verdict_kind(&judged.1),
+            Self::Physics(judged) => physics::tally_kind(judged).to_owned(),
         }
+    }
+
+    /// Counts the line in `tally`.
+    fn count(&self, tally: &mut Tally) {
+        tally.add(&self.kind());
     }
 }
 
@@ -558,7 +572,7 @@ impl Session {
     }
 
     /// Answers every non-empty line of `input` on `output` in order, the lines judged on
-    /// `threads` threads (see [`crate::answer_lines`]); returns whether every line was
+    /// `threads` threads (see [`refraction_tools::answer_lines`]); returns whether every line was
     /// answered. Call [`Session::finish`] after it.
     ///
     /// # Errors
@@ -568,10 +582,10 @@ impl Session {
         input: impl std::io::Read,
         output: impl std::io::Write,
         threads: usize,
-    ) -> Result<bool, crate::LinesError> {
+    ) -> Result<bool, refraction_tools::LinesError> {
         let (reader, books) = (&self.reader, &mut self.books);
         let mut refused = 0;
-        let answered = crate::answer_lines(
+        let answered = refraction_tools::answer_lines(
             input,
             output,
             threads,
@@ -622,16 +636,25 @@ impl Session {
     /// Why the line cannot be judged (counted as unreadable), as [`Session::record`] and
     /// [`judge_record`] say.
     pub fn judge_line(&mut self, line: &str) -> Result<Option<(Record, Judgement)>, LineError> {
-        let judged = self.record(line).and_then(|record| {
-            record
-                .map(|record| {
-                    judge_record(&record, &self.reader.options).map(|judged| (record, judged))
-                })
-                .transpose()
-        });
+        match self.record(line) {
+            Ok(Some(record)) => self.judge(&record).map(|judged| Some((record, judged))),
+            Ok(None) => Ok(None),
+            Err(e) => {
+                self.books.count_unreadable();
+                Err(e)
+            }
+        }
+    }
+
+    /// Judges a record read elsewhere (built in memory, [`Record::from_values`]) and counts
+    /// it as a line of the log, as [`Session::judge_line`] does.
+    ///
+    /// # Errors
+    /// Why the record cannot be judged (counted as unreadable), as [`judge_record`] says.
+    pub fn judge(&mut self, record: &Record) -> Result<Judgement, LineError> {
+        let judged = judge_record(record, &self.reader.options);
         match &judged {
-            Ok(Some((_, judgement))) => self.books.count(judgement),
-            Ok(None) => {}
+            Ok(judgement) => self.books.count(judgement),
             Err(_) => self.books.count_unreadable(),
         }
         judged

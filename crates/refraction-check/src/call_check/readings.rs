@@ -7,7 +7,7 @@ use refraction_kernel::api::{Api, Args, Meaning};
 
 use super::call::{Call, Digits};
 use crate::diagnosis::Code;
-use crate::vector_text::{angle, length, unit};
+use refraction_tools::vector_text::{angle, length, unit};
 
 /// The mistakes a call's arguments can have, in the order they are undone.
 const ARGUMENT_MISTAKES: [Code; 4] = [
@@ -32,7 +32,7 @@ fn rounding(digits: u32) -> f64 {
 /// How closely each logged number can be trusted: its own rounding, or a few ulps of the
 /// student's working precision.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Tolerance {
+pub(crate) struct Tolerance {
     /// Relative rounding of the incident vector as logged.
     pub incident: f64,
     /// Relative rounding of the normal.
@@ -51,7 +51,7 @@ impl Tolerance {
     /// The tolerance for numbers written with `digits` in a precision with machine epsilon
     /// `epsilon`.
     #[must_use]
-    pub fn new(digits: &Digits, epsilon: f64) -> Self {
+    pub(crate) fn new(digits: &Digits, epsilon: f64) -> Self {
         Self {
             incident: rounding(digits.incident),
             normal: rounding(digits.normal),
@@ -64,7 +64,7 @@ impl Tolerance {
 
     /// The coarsest rounding of the call's arguments, by which they may be moved.
     #[must_use]
-    pub fn arguments(&self) -> f64 {
+    pub(crate) fn arguments(&self) -> f64 {
         self.incident.max(self.normal).max(self.eta)
     }
 
@@ -76,28 +76,28 @@ impl Tolerance {
     /// Whether the incident vector and the normal are unit length, each within its own
     /// rounding.
     #[must_use]
-    pub fn unit_arguments(&self, args: &Args<f64>) -> bool {
+    pub(crate) fn unit_arguments(&self, args: &Args<f64>) -> bool {
         (length(args.incident) - 1.0).abs() <= self.relative(self.incident)
             && (length(args.normal) - 1.0).abs() <= self.relative(self.normal)
     }
 
     /// Whether a ratio derived from the logged eta is `mu` as given.
     #[must_use]
-    pub fn same_ratio(&self, a: f64, b: f64) -> bool {
+    pub(crate) fn same_ratio(&self, a: f64, b: f64) -> bool {
         (a / b - 1.0).abs() <= self.relative(self.eta)
     }
 
     /// Whether the direction of travel derived from the incident vector is the logged one (a
     /// tracer's own direction may be written with fewer digits, and unnormalised).
     #[must_use]
-    pub fn same_direction(&self, a: DVec3, b: DVec3) -> bool {
+    pub(crate) fn same_direction(&self, a: DVec3, b: DVec3) -> bool {
         angle(a, b) <= (8.0 * self.incident.max(self.travel)).max(1e-3)
     }
 }
 
 /// One reading of the arguments: the mistakes it assumes and the call without them.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Reading {
+pub(crate) struct Reading {
     /// The argument mistakes assumed: eta, incident, normal, unit, in that order.
     pub codes: Vec<Code>,
     /// The arguments with those mistakes undone: the right call.
@@ -108,7 +108,7 @@ pub struct Reading {
 
 /// The arguments with `codes` undone.
 #[must_use]
-pub fn undo(codes: &[Code], args: Args<f64>) -> Args<f64> {
+pub(crate) fn undo(codes: &[Code], args: Args<f64>) -> Args<f64> {
     let mut right = args;
     for code in codes {
         match code {
@@ -159,7 +159,7 @@ fn fit(call: &Call, codes: Vec<Code>, tolerance: &Tolerance) -> Option<Reading> 
 /// Whether the logged normal points into the object under `reading` (pbrt and Mitsuba, with
 /// `entering` logged): a ray entering travels against the outward normal.
 #[must_use]
-pub fn normal_points_inward(call: &Call, reading: &Reading) -> bool {
+pub(crate) fn normal_points_inward(call: &Call, reading: &Reading) -> bool {
     matches!(call.api, Api::Pbrt | Api::Mitsuba)
         && !call.truth.entering_from_normal
         && call.truth.entering.is_some_and(|entering| {
@@ -188,7 +188,7 @@ fn cost(call: &Call, reading: &Reading) -> i32 {
 /// Every reading with the fewest argument mistakes that fits, the likeliest first; empty when
 /// no combination of the four fits the truth.
 #[must_use]
-pub fn readings(call: &Call, tolerance: &Tolerance) -> Vec<Reading> {
+pub(crate) fn readings(call: &Call, tolerance: &Tolerance) -> Vec<Reading> {
     for size in 0..=ARGUMENT_MISTAKES.len() {
         let mut found: Vec<Reading> = (0..1_u32 << ARGUMENT_MISTAKES.len())
             .filter(|mask| mask.count_ones() as usize == size)
@@ -214,7 +214,7 @@ pub fn readings(call: &Call, tolerance: &Tolerance) -> Vec<Reading> {
 mod tests {
     use super::*;
     use crate::call_check::call::{Got, Truth};
-    use crate::solve::Precision;
+    use refraction_tools::solve::Precision;
 
     fn glsl(i: DVec3, n: DVec3, eta: f64, truth: Truth) -> Call {
         Call {

@@ -21,7 +21,7 @@ enum Column {
 
 /// A parsed CSV header.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Header {
+pub(crate) struct Header {
     dialect: Dialect,
     columns: Vec<Column>,
 }
@@ -30,7 +30,7 @@ pub struct Header {
 ///
 /// # Errors
 /// An unclosed quote.
-pub fn cells(line: &str) -> Result<Vec<String>, CsvError> {
+pub(crate) fn cells(line: &str) -> Result<Vec<String>, CsvError> {
     let mut out = vec![String::new()];
     let mut quoted = false;
     let mut chars = line.chars().peekable();
@@ -84,7 +84,7 @@ impl Header {
     ///
     /// # Errors
     /// A missing argument or result column, a vector with only some of its components.
-    pub fn parse(dialect: impl Into<Dialect>, line: &str) -> Result<Self, CsvError> {
+    pub(crate) fn parse(dialect: impl Into<Dialect>, line: &str) -> Result<Self, CsvError> {
         let dialect = dialect.into();
         let headings = cells(line)?;
         let columns: Vec<Column> = headings.iter().map(|c| column(dialect, c)).collect();
@@ -145,7 +145,7 @@ impl Header {
     ///
     /// # Errors
     /// A different number of cells than the header has columns, or a bad value.
-    pub fn record(&self, line: &str) -> Result<Record, LineError> {
+    pub(crate) fn record(&self, line: &str) -> Result<Record, LineError> {
         let cells = cells(line)?;
         if cells.len() != self.columns.len() {
             let (count, columns) = (cells.len(), self.columns.len());

@@ -9,8 +9,8 @@ use super::readings::{Reading, normal_points_inward};
 use super::result::{Returns, Seen};
 use super::verdict::Resemblance;
 use crate::diagnosis::Code;
-use crate::vector_text::{length, spoken, spoken_vector};
 use refraction_i18n::t;
+use refraction_tools::vector_text::{length, spoken, spoken_vector};
 
 /// Everything the explanation draws on.
 pub(super) struct Context<'a> {
@@ -366,7 +366,7 @@ fn unexplained(ctx: &Context<'_>) -> String {
     let (call, n) = (ctx.call, names(ctx.call.api));
     let m = call.api.meaning(call.args);
     if let Some(travel) = call.truth.travel {
-        let d = crate::vector_text::angle(m.travel, travel).to_degrees();
+        let d = refraction_tools::vector_text::angle(m.travel, travel).to_degrees();
         if (3.0..177.0).contains(&d) {
             return t!("check-unexplained-travel",
                 incident = n.incident,

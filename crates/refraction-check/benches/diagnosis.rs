@@ -4,18 +4,18 @@
 //! the ranked search at the end), and that part alone on lines judged beforehand, for calls of
 //! an API and for any renderer's own refraction; a
 //! line that almost matches the pattern against one that does; and the ranking of a
-//! million-line log's counts into findings. `cargo bench -p refraction-tools --bench diagnosis`.
+//! million-line log's counts into findings. `cargo bench -p refraction-check --bench diagnosis`.
 //!
 //! The figures are in docs/check.md ("Find the bug").
 
 use core::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use refraction_kernel::api::Api;
-use refraction_tools::call_check::{
+use refraction_check::LogTally;
+use refraction_check::{
     Dialect, Format, MAX_PLACEHOLDERS, Options, Pattern, Record, Session, judge_record,
 };
-use refraction_tools::diagnosis::LogTally;
+use refraction_kernel::api::Api;
 
 /// Lines the book's `dielectric::scatter` prints, right and with an outward normal from inside.
 const LINES: [&str; 2] = [

@@ -10,11 +10,11 @@ use serde_json::{Value as Json, json};
 use super::call::{Call, Got};
 use super::error::LineError;
 use super::readings::Tolerance;
-use crate::vector_text::{angle, length};
+use refraction_tools::vector_text::{angle, length};
 
 /// What the API returns for the logged arguments, and how sure that is.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Returns {
+pub(crate) struct Returns {
     /// The API's answer in its own shape, as JSON (`api_result`).
     pub json: Json,
     /// The transmitted direction, `None` where the API signals that nothing is transmitted.
@@ -117,7 +117,7 @@ fn moved(args: Args<f64>, step: f64) -> Vec<Args<f64>> {
 }
 
 /// What `api` transmits for `args` in precision `S` (`None` also when they overflow `S`).
-pub fn transmitted_by<S: Real>(api: Api, args: Args<f64>) -> Option<DVec3> {
+pub(crate) fn transmitted_by<S: Real>(api: Api, args: Args<f64>) -> Option<DVec3> {
     narrow::<S>(args)
         .ok()
         .and_then(|a| api.call(a).transmitted())
@@ -128,7 +128,7 @@ pub fn transmitted_by<S: Real>(api: Api, args: Args<f64>) -> Option<DVec3> {
 ///
 /// # Errors
 /// An argument too large for `S`.
-pub fn returns<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<Returns, LineError> {
+pub(crate) fn returns<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<Returns, LineError> {
     let returned = call.api.call(narrow::<S>(call.args)?);
     let transmitted = returned.transmitted().map(wide::<S>);
     let step = (2.0 * tolerance.arguments()).max(8.0 * tolerance.epsilon);
@@ -167,7 +167,7 @@ pub fn returns<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<Returns, L
 
 /// What came back, as far as judging it goes.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Seen {
+pub(crate) enum Seen {
     /// A finite non-zero vector that is not an answer to total internal reflection.
     Direction(DVec3),
     /// The API's (or a tracer's) answer that nothing is transmitted: `false`, null, the zero
@@ -180,7 +180,7 @@ pub enum Seen {
 impl Returns {
     /// Whether `v` is the API's transmitted direction (or one rounding allows).
     #[must_use]
-    pub fn is_transmitted(&self, v: DVec3) -> bool {
+    pub(crate) fn is_transmitted(&self, v: DVec3) -> bool {
         let close = |t: &DVec3| (v - *t).length() <= self.distance;
         self.transmitted.iter().any(close)
             || (self.borderline && self.nearby.iter().flatten().any(close))
@@ -188,19 +188,19 @@ impl Returns {
 
     /// Whether the API may say that nothing is transmitted here.
     #[must_use]
-    pub fn may_reflect(&self) -> bool {
+    pub(crate) fn may_reflect(&self) -> bool {
         self.transmitted.is_none() || self.borderline
     }
 
     /// Whether `v` is the same vector as `other` within the tolerance.
     #[must_use]
-    pub fn same(&self, v: DVec3, other: DVec3) -> bool {
+    pub(crate) fn same(&self, v: DVec3, other: DVec3) -> bool {
         (v - other).length() <= self.distance
     }
 
     /// How to judge what came back.
     #[must_use]
-    pub fn see(&self, got: Got) -> Seen {
+    pub(crate) fn see(&self, got: Got) -> Seen {
         match got {
             // untranslated: the answers' names; explain.rs puts them in the language's words
             Got::Nothing => Seen::Nothing("nothing (false or null)"),

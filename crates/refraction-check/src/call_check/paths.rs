@@ -13,9 +13,9 @@ use serde::Serialize;
 use super::call::Call;
 use super::error::LineError;
 use super::verdict::CallVerdict;
-use crate::candidate_check::MATCH_ANGLE;
 use crate::diagnosis::Code;
-use crate::vector_text::{angle, short, short_vector, unit};
+use refraction_tools::candidate_check::MATCH_ANGLE;
+use refraction_tools::vector_text::{angle, short, short_vector, unit};
 
 /// Hits kept per path for the sphere retrace; longer paths are retraced through their surfaces.
 const MAX_KEPT: usize = 4096;
@@ -185,7 +185,7 @@ impl Path {
             exit_ok,
             explanation: &explanation,
         };
-        (crate::json_line(&line), exit_ok)
+        (refraction_tools::json_line(&line), exit_ok)
     }
 
     fn explanation(&self, exit_ok: bool, off: f64, how: &str) -> String {
@@ -235,7 +235,7 @@ impl Path {
 
 /// The paths of one run.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct Paths {
+pub(crate) struct Paths {
     current: Option<Path>,
     /// Whether every path finished so far left in the right direction.
     pub all_exit_ok: bool,
@@ -244,7 +244,7 @@ pub struct Paths {
 impl Paths {
     /// No path read yet.
     #[must_use]
-    pub fn new() -> Self {
+    pub(crate) fn new() -> Self {
         Self {
             current: None,
             all_exit_ok: true,
@@ -255,7 +255,11 @@ impl Paths {
     ///
     /// # Errors
     /// The hit has no `path`.
-    pub fn hit(&mut self, call: &Call, verdict: &CallVerdict) -> Result<Option<String>, LineError> {
+    pub(crate) fn hit(
+        &mut self,
+        call: &Call,
+        verdict: &CallVerdict,
+    ) -> Result<Option<String>, LineError> {
         let id = call.path.clone().ok_or(LineError::NoPath)?;
         let (current, ended) = match self.current.take() {
             Some(path) if path.id == id => (path.with(call, verdict), None),
@@ -272,7 +276,7 @@ impl Paths {
     }
 
     /// The summary of the last path, at the end of the input.
-    pub fn finish(&mut self) -> Option<String> {
+    pub(crate) fn finish(&mut self) -> Option<String> {
         let path = self.current.take()?;
         Some(self.close(&path))
     }

@@ -9,10 +9,10 @@
 use refraction_kernel::api::{Api, Args};
 use serde_json::Value as Json;
 
-use super::literal;
+use super::{literal, vector};
 use crate::call_check::fields::names;
 use crate::call_check::{Call, CallVerdict, Code};
-use crate::solve::Precision;
+use refraction_tools::solve::Precision;
 
 /// The language a test is written in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -100,10 +100,6 @@ pub fn right_args(call: &Call, verdict: &CallVerdict) -> Args<f64> {
     call.api.arguments::<f64>(m.travel, facing, m.mu)
 }
 
-fn vector(v: impl Into<[f64; 3]>) -> String {
-    v.into().map(literal).join(", ")
-}
-
 /// Field `key` of the API's answer as a finite vector (`None`: absent, null or NaN).
 fn vector_at(json: &Json, key: Option<&str>) -> Option<[f64; 3]> {
     let value = key.map_or(Some(json), |k| json.get(k))?;
@@ -173,7 +169,7 @@ fn header(case: &ApiCase<'_>, comment: &str) -> String {
 
 /// A test's name: the one checked call's, or a logged line's in a file of many.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Name {
+pub(crate) enum Name {
     /// The call checked in the panel.
     Checked,
     /// The call on this line of a log (from 1).
@@ -386,7 +382,7 @@ fn one(language: Language, case: &ApiCase<'_>, name: Name) -> String {
 /// A file of tests in `language`, one per case and named by it, with what they include once
 /// before them and, for the book's C++, a `main` that runs them.
 #[must_use]
-pub fn file(language: Language, cases: &[(Name, ApiCase<'_>)]) -> String {
+pub(crate) fn file(language: Language, cases: &[(Name, ApiCase<'_>)]) -> String {
     let Some((_, first)) = cases.first() else {
         return String::new();
     };

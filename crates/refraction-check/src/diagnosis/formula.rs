@@ -17,44 +17,44 @@ use glam::DVec3;
 
 /// A set of changes to the formula, one bit each (see the module docs).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct Variant(u8);
+pub(crate) struct Variant(u8);
 
 impl Variant {
     /// The formula as it is.
-    pub const RIGHT: Self = Self(0);
+    pub(crate) const RIGHT: Self = Self(0);
     /// The ratio inverted in the part across N.
-    pub const ACROSS: Self = Self(1);
+    pub(crate) const ACROSS: Self = Self(1);
     /// The ratio inverted in k: in cosθt and the test for total internal reflection.
-    pub const ALONG: Self = Self(2);
+    pub(crate) const ALONG: Self = Self(2);
     /// The part across N negated (the incident vector the wrong way round).
-    pub const INCIDENT: Self = Self(4);
+    pub(crate) const INCIDENT: Self = Self(4);
     /// The part along N negated (the other root).
-    pub const ROOT: Self = Self(8);
+    pub(crate) const ROOT: Self = Self(8);
     /// The term along N subtracted instead of added.
-    pub const TERM: Self = Self(16);
+    pub(crate) const TERM: Self = Self(16);
     /// The whole result negated.
-    pub const REVERSED: Self = Self(32);
+    pub(crate) const REVERSED: Self = Self(32);
 
     /// Both changes (the same change twice cancels: it is an exclusive or).
     #[must_use]
-    pub fn with(self, other: Self) -> Self {
+    pub(crate) fn with(self, other: Self) -> Self {
         Self(self.0 ^ other.0)
     }
 
     /// Whether this variant has the change `part`.
     #[must_use]
-    pub fn has(self, part: Self) -> bool {
+    pub(crate) fn has(self, part: Self) -> bool {
         self.0 & part.0 == part.0
     }
 
     /// The variant's bit in a set of variants.
     #[must_use]
-    pub fn bit(self) -> u64 {
+    pub(crate) fn bit(self) -> u64 {
         1 << self.0
     }
 
     /// Every variant.
-    pub fn all() -> impl Iterator<Item = Self> {
+    pub(crate) fn all() -> impl Iterator<Item = Self> {
         (0..64).map(Self)
     }
 }
@@ -141,7 +141,7 @@ impl Plane {
 /// The variants that reproduce `outcome` for `situation`, within `tolerance` radians, as a
 /// set of [`Variant::bit`]s; 0 when the situation is degenerate.
 #[must_use]
-pub fn reproducing(situation: &Situation, outcome: Outcome, tolerance: f64) -> u64 {
+pub(crate) fn reproducing(situation: &Situation, outcome: Outcome, tolerance: f64) -> u64 {
     let Some(plane) = Plane::new(situation) else {
         return 0;
     };
@@ -171,7 +171,7 @@ pub fn reproducing(situation: &Situation, outcome: Outcome, tolerance: f64) -> u
 /// What `variant` of the formula sends the ray along in `situation` (nothing for a
 /// degenerate situation).
 #[must_use]
-pub fn outcome(situation: &Situation, variant: Variant) -> Outcome {
+pub(crate) fn outcome(situation: &Situation, variant: Variant) -> Outcome {
     Plane::new(situation)
         .and_then(|plane| {
             let (across, along) = plane.predict(variant)?;
@@ -184,7 +184,7 @@ pub fn outcome(situation: &Situation, variant: Variant) -> Outcome {
 
 /// The variants whose outcome is the right one's (for a line that is right).
 #[must_use]
-pub fn agreeing(situation: &Situation, tolerance: f64) -> u64 {
+pub(crate) fn agreeing(situation: &Situation, tolerance: f64) -> u64 {
     if Plane::new(situation).is_none() {
         return Variant::RIGHT.bit();
     }
@@ -205,7 +205,7 @@ fn same_direction(p: (f64, f64), v: (f64, f64, f64), tolerance: f64) -> bool {
 /// The Fresnel reflectance of unpolarised light at this situation (1 past the critical
 /// angle): the probability with which a renderer that samples reflection reflects.
 #[must_use]
-pub fn reflectance(situation: &Situation) -> f64 {
+pub(crate) fn reflectance(situation: &Situation) -> f64 {
     let Some(p) = Plane::new(situation) else {
         return 1.0;
     };

@@ -95,7 +95,7 @@ impl Readings {
 
 /// How an API takes its arguments, which decides what an argument mistake does to the formula.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Family {
+pub(crate) enum Family {
     /// The incident vector along the ray and a normal that must face it: GLSL, the book.
     Along,
     /// `wi` back along the ray and a ratio relative to the normal given (either side): pbrt,
@@ -111,7 +111,7 @@ pub enum Family {
 impl Family {
     /// The family of `api` (`None`: any renderer's own refraction).
     #[must_use]
-    pub fn of(api: Option<Api>) -> Self {
+    pub(crate) fn of(api: Option<Api>) -> Self {
         match api {
             Some(Api::Pbrt | Api::Mitsuba) => Self::Back,
             Some(Api::Glsl | Api::Rtiow) => Self::Along,
@@ -122,7 +122,7 @@ impl Family {
 
 /// One line of code a student gets wrong, as the search tries it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum Slip {
+pub(crate) enum Slip {
     /// The ratio upside down: μ → 1/μ in the whole formula.
     Ratio,
     /// The ratio upside down in the part across N only (the scale of d⊥).
@@ -147,7 +147,7 @@ pub enum Slip {
 
 impl Slip {
     /// Every slip.
-    pub const ALL: [Self; 9] = [
+    pub(crate) const ALL: [Self; 9] = [
         Self::Ratio,
         Self::RatioAcross,
         Self::RatioAlong,
@@ -174,7 +174,7 @@ impl Slip {
 
     /// What the slip changes in the formula, for an API of `family`.
     #[must_use]
-    pub fn variant(self, family: Family) -> Variant {
+    pub(crate) fn variant(self, family: Family) -> Variant {
         let ratio = Variant::ACROSS.with(Variant::ALONG);
         match (self, family) {
             (Self::Ratio, _) | (Self::Normal, Family::Back) => ratio,
@@ -192,7 +192,7 @@ impl Slip {
 
     /// The argument mistakes (of a call's readings) this slip may show as.
     #[must_use]
-    pub fn arguments(self, family: Family) -> Codes {
+    pub(crate) fn arguments(self, family: Family) -> Codes {
         match (self, family) {
             (Self::Ratio, Family::Along | Family::Own) => Codes::of(&[Code::EtaInverted]),
             (Self::Ratio, Family::Back) => Codes::of(&[Code::EtaInverted, Code::NormalNotFacing]),
@@ -206,13 +206,13 @@ impl Slip {
     /// incident vector): where the log has them, the line must show it there; the same change
     /// made inside the code is another slip (the root's sign, the sign across N).
     #[must_use]
-    pub fn argument_only(self, family: Family) -> bool {
+    pub(crate) fn argument_only(self, family: Family) -> bool {
         family != Family::Own && matches!(self, Self::Normal | Self::Incident)
     }
 
     /// The code a finding of this slip is reported as.
     #[must_use]
-    pub fn code(self, sides: Sides) -> Code {
+    pub(crate) fn code(self, sides: Sides) -> Code {
         match (self, sides) {
             (Self::Ratio | Self::RatioAcross | Self::RatioAlong, _) => Code::EtaInverted,
             // The term along N with its sign wrong on one side only: a normal that does not
@@ -231,7 +231,7 @@ impl Slip {
 
 /// The rays a mistake touches.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum Sides {
+pub(crate) enum Sides {
     /// Every ray.
     Both,
     /// Rays arriving from outside (entering the object).
@@ -252,7 +252,7 @@ impl Sides {
 
 /// One mistake: a slip, on the rays of some side.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct Mistake {
+pub(crate) struct Mistake {
     /// What is wrong.
     pub slip: Slip,
     /// Where.
@@ -261,14 +261,14 @@ pub struct Mistake {
 
 /// A hypothesis: one mistake, or two in different parts.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
-pub struct Hypothesis {
+pub(crate) struct Hypothesis {
     /// The mistakes, the one the finding is named by first.
     pub mistakes: Vec<Mistake>,
 }
 
 /// Every hypothesis: each mistake alone, then each pair of mistakes in different parts.
 #[must_use]
-pub fn all() -> &'static [Hypothesis] {
+pub(crate) fn all() -> &'static [Hypothesis] {
     static ALL: OnceLock<Vec<Hypothesis>> = OnceLock::new();
     ALL.get_or_init(|| {
         let singles: Vec<Mistake> = Slip::ALL
@@ -299,7 +299,7 @@ pub fn all() -> &'static [Hypothesis] {
 impl Hypothesis {
     /// The formula this hypothesis computes for a ray entering (or leaving) the object.
     #[must_use]
-    pub fn variant(&self, family: Family, entering: bool) -> Variant {
+    pub(crate) fn variant(&self, family: Family, entering: bool) -> Variant {
         self.mistakes
             .iter()
             .filter(|m| m.sides.touches(entering))
@@ -308,7 +308,7 @@ impl Hypothesis {
 
     /// The argument mistakes this hypothesis may show as.
     #[must_use]
-    pub fn arguments(&self, family: Family) -> Codes {
+    pub(crate) fn arguments(&self, family: Family) -> Codes {
         Codes(
             self.mistakes
                 .iter()
@@ -318,7 +318,7 @@ impl Hypothesis {
 
     /// Whether the hypothesis reproduces a line read as `views`, on `side` (`None`: either).
     #[must_use]
-    pub fn explains(&self, family: Family, views: &[View], side: Option<Side>) -> bool {
+    pub(crate) fn explains(&self, family: Family, views: &[View], side: Option<Side>) -> bool {
         self.reading(family, views, side, |view, variant| {
             view.variants & variant.bit() != 0
         })
@@ -327,7 +327,7 @@ impl Hypothesis {
     /// Whether the hypothesis allows the arguments of one of `views` (a sampled reflection
     /// shows nothing else: whatever the code would have transmitted, it reflected).
     #[must_use]
-    pub fn allows(&self, family: Family, views: &[View], side: Option<Side>) -> bool {
+    pub(crate) fn allows(&self, family: Family, views: &[View], side: Option<Side>) -> bool {
         self.reading(family, views, side, |_, _| true)
     }
 
@@ -363,7 +363,7 @@ impl Hypothesis {
     /// Whether a line that `views` explain shows this hypothesis in its arguments (the caller
     /// passed the mistake) rather than in what the code computed.
     #[must_use]
-    pub fn in_arguments(&self, family: Family, views: &[View]) -> bool {
+    pub(crate) fn in_arguments(&self, family: Family, views: &[View]) -> bool {
         let allowed = self.arguments(family);
         views
             .iter()
@@ -372,7 +372,7 @@ impl Hypothesis {
 
     /// The code the finding is named by, and the second mistake's of a pair.
     #[must_use]
-    pub fn codes(&self) -> Vec<Code> {
+    pub(crate) fn codes(&self) -> Vec<Code> {
         let mut codes: Vec<Code> = Vec::new();
         for m in &self.mistakes {
             let code = m.slip.code(m.sides);
@@ -400,14 +400,14 @@ impl Hypothesis {
 
     /// The mistake the finding is named by.
     #[must_use]
-    pub fn first(&self) -> Mistake {
+    pub(crate) fn first(&self) -> Mistake {
         self.mistakes[0]
     }
 
     /// How many conditions the hypothesis has: a mistake on one side counts one more than on
     /// both (a ternary more), a pair the sum.
     #[must_use]
-    pub fn conditions(&self) -> usize {
+    pub(crate) fn conditions(&self) -> usize {
         self.mistakes
             .iter()
             .map(|m| if m.sides == Sides::Both { 1 } else { 2 })
