@@ -231,8 +231,8 @@ mod tests {
             "turned right"
         );
         assert!(
-            (value(&state, HandleId::W) - 40.0).abs() < 1e-9,
-            "W stays: θi is 1° less"
+            (value(&state, HandleId::W) - 42.0).abs() < 1e-9,
+            "W stays: N leaned 1° away from the ray coming from the upper left"
         );
         assert!(nudge(&mut state, HandleId::MuT, -1.0));
         assert_eq!(state.mu_t(), 1.49);
