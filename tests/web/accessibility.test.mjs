@@ -7,7 +7,7 @@ import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
 import { after, before, test } from 'node:test';
 
-import { close, frames, launch, newPage, open, serve } from './browser.mjs';
+import { frames, inBrowser, open, serve } from './browser.mjs';
 
 const axeSource = createRequire(import.meta.url)('axe-core').source;
 
@@ -21,15 +21,8 @@ before(async () => {
 after(() => server.close());
 
 /** Runs `check` on a new page of a browser with its accessibility tree on, speaking `locale`. */
-async function inBrowser(check, locale = 'en-US') {
-  const context = await launch(undefined, locale, ['--force-renderer-accessibility']);
-  try {
-    const page = await newPage(context);
-    await check(page, context);
-    assert.deepEqual(page.errors, [], 'no console error');
-  } finally {
-    await close(context);
-  }
+function withTree(check, locale = 'en-US') {
+  return inBrowser(check, locale, ['--force-renderer-accessibility']);
 }
 
 /** The nodes a screen reader gets: { role, name, value, description } of each one not ignored. */
@@ -98,7 +91,7 @@ const SHORT_OF_CRITICAL = '{"w":[0.656059,-0.75471,0],"n":[0,1,0],"mu_i":1.5,"mu
 const BEYOND_CRITICAL = '{"w":[0.8,-0.6,0],"n":[0,1,0],"mu_i":1.5,"mu_t":1}';
 
 test('the tree holds a control for θi and one for each index, each with its value', async () => {
-  await inBrowser(async (page, context) => {
+  await withTree(async (page, context) => {
     await open(page, base);
     assert.equal(await page.getAttribute('html', 'lang'), 'en');
     const nodes = await tree(page, context);
@@ -121,7 +114,7 @@ test('the tree holds a control for θi and one for each index, each with its val
 });
 
 test('beyond the critical angle the words a screen reader reaches say total internal reflection', async () => {
-  await inBrowser(async (page, context) => {
+  await withTree(async (page, context) => {
     await open(page, `${base}#state=${encodeURIComponent(BEYOND_CRITICAL)}`);
     const words = reachable(await tree(page, context));
     assert.match(words, /total internal reflection/i);
@@ -130,7 +123,7 @@ test('beyond the critical angle the words a screen reader reaches say total inte
 });
 
 test('Tab reaches the angle control, and the arrow keys change it and what is said', async () => {
-  await inBrowser(async (page) => {
+  await withTree(async (page) => {
     await open(page, base);
     let presses = 0;
     while ((await focused(page)) !== 'control-incidence') {
@@ -163,7 +156,7 @@ test('Tab reaches the angle control, and the arrow keys change it and what is sa
 });
 
 test('total internal reflection is said once when it begins and once when it ends', async () => {
-  await inBrowser(async (page) => {
+  await withTree(async (page) => {
     await open(page, `${base}#state=${encodeURIComponent(SHORT_OF_CRITICAL)}`);
     await page.focus('#control-incidence');
     await frames(page, 3);
@@ -185,7 +178,7 @@ test('total internal reflection is said once when it begins and once when it end
 });
 
 test('an index typed in the page\'s control changes the diagram, and the diagram the control', async () => {
-  await inBrowser(async (page) => {
+  await withTree(async (page) => {
     await open(page, base);
     await page.fill('#control-index-t', '1.333');
     await page.press('#control-index-t', 'Enter');
@@ -198,7 +191,7 @@ test('an index typed in the page\'s control changes the diagram, and the diagram
 });
 
 test('a deck\'s step is titled, its question said and its hidden answer not, until revealed', async () => {
-  await inBrowser(async (page, context) => {
+  await withTree(async (page, context) => {
     await open(page, `${base}#lesson=snell&step=2`);
     const title = await page.title();
     assert.match(title, /Straight down the normal · 2 \/ 5$/, title);
@@ -219,7 +212,7 @@ test('a deck\'s step is titled, its question said and its hidden answer not, unt
 });
 
 test('the page speaks the language it shows', async () => {
-  await inBrowser(async (page, context) => {
+  await withTree(async (page, context) => {
     await open(page, base);
     assert.equal(await page.getAttribute('html', 'lang'), 'de');
     const nodes = await tree(page, context);
@@ -245,7 +238,7 @@ async function violations(page) {
 }
 
 test('axe-core finds no serious or critical WCAG 2.1 A or AA violation', async () => {
-  await inBrowser(async (page) => {
+  await withTree(async (page) => {
     await open(page, base);
     assert.deepEqual(await violations(page), [], 'at rest');
     await page.focus('#control-incidence');

@@ -2,6 +2,7 @@
 // through playwright-core, a static server for target/web on the loopback address, and ways
 // to read the explorer's page (its canvas's accessible name, its pixels).
 
+import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import http from 'node:http';
 import os from 'node:os';
@@ -78,6 +79,22 @@ export async function launch(size = { width: 1280, height: 720 }, locale = 'en-U
 export async function close(context) {
   await context.close();
   fs.rmSync(context.profile, { recursive: true, force: true });
+}
+
+/**
+ * Runs `check(page, context)` on a new page of a browser with a fresh profile (nothing kept
+ * from another test), speaking `locale`, started with the `extra` flags; fails on any console
+ * error.
+ */
+export async function inBrowser(check, locale = 'en-US', extra = []) {
+  const context = await launch(undefined, locale, extra);
+  try {
+    const page = await newPage(context);
+    await check(page, context);
+    assert.deepEqual(page.errors, [], 'no console error');
+  } finally {
+    await close(context);
+  }
 }
 
 /** A new page that keeps every console error and uncaught exception in `page.errors`. */

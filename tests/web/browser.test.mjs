@@ -7,7 +7,7 @@ import { after, before, test } from 'node:test';
 import { pathToFileURL } from 'node:url';
 
 import {
-  WEB, W_COLOUR, close, colours, drag, frames, launch, newPage, open, pixels, placesOf, ready,
+  WEB, W_COLOUR, colours, drag, frames, inBrowser, open, pixels, placesOf, ready,
   said, serve, wHandle,
 } from './browser.mjs';
 
@@ -19,21 +19,6 @@ before(async () => {
 });
 
 after(() => server.close());
-
-/**
- * Runs `check` on a new page of a browser with a fresh profile (nothing kept from another
- * test), speaking `locale`.
- */
-async function inBrowser(check, locale = 'en-US') {
-  const context = await launch(undefined, locale);
-  try {
-    const page = await newPage(context);
-    await check(page);
-    assert.deepEqual(page.errors, [], 'no console error');
-  } finally {
-    await close(context);
-  }
-}
 
 /** A state beyond the critical angle: glass to air at 53°, as `--state` reads it. */
 const BEYOND_CRITICAL = '{"w":[0.8,-0.6,0],"n":[0,1,0],"mu_i":1.5,"mu_t":1}';
