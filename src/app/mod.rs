@@ -10,6 +10,7 @@
 //! `browser::start`.
 
 mod accuracy;
+mod announce;
 mod background;
 #[cfg(target_arch = "wasm32")]
 pub mod browser;
@@ -33,7 +34,7 @@ mod retrace;
 mod scene_files;
 mod scenes;
 mod status;
-mod step_buttons;
+mod steps;
 mod student;
 mod tools;
 mod typed;
@@ -405,6 +406,7 @@ impl Explorer {
         } else {
             self.show_teacher(ui);
         }
+        announce::follow(ui, self);
         let settled = !ui.input(|i| i.pointer.any_down()) && !self.tools.walk.animating();
         if settled {
             let (state, scene) = (&self.state, self.scenes.scene());
@@ -544,7 +546,11 @@ impl Explorer {
         if self.diagram_only() {
             let mut overlay = self.overlay();
             egui::CentralPanel::no_frame().show(ui, |ui| {
-                canvas::show(ui, &mut self.state, &mut overlay, false);
+                let under = canvas::Under {
+                    steps: false,
+                    hint: false,
+                };
+                canvas::show(ui, &mut self.state, &mut overlay, under);
             });
             self.presentation.pan_zoom = overlay.pan_zoom;
             return;
@@ -589,9 +595,17 @@ impl Explorer {
         }
         // No margins (the diagram reaches the panels), but the panel's fill under the key hint.
         let frame = egui::Frame::NONE.fill(ui.visuals().panel_fill);
+        // The step buttons give way to a tool or a side panel on a projector (the controls
+        // panel has its own way to each value).
+        let side = self.panels.presenting;
+        let crowded = self.tools.open.is_some() || side.controls || side.numbers;
+        let under = canvas::Under {
+            steps: !presenting || !crowded,
+            hint: !presenting,
+        };
         egui::CentralPanel::no_frame()
             .frame(frame)
-            .show(ui, |ui| canvas::show(ui, state, &mut overlay, !presenting));
+            .show(ui, |ui| canvas::show(ui, state, &mut overlay, under));
         self.presentation.pan_zoom = overlay.pan_zoom;
     }
 }

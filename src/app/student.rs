@@ -3,7 +3,7 @@
 //! program: the same state, deck and diagram, fewer panels. The step's question in readable
 //! type, the diagram across the whole width with handles a finger can take (pinch to zoom,
 //! one finger to pan where nothing is grabbed), a *Reveal* button instead of the R key, the
-//! deck's step buttons and the [`step_buttons`](super::step_buttons); nothing of the
+//! deck's step buttons and the [step buttons](super::steps::for_student); nothing of the
 //! teacher's: no notes, no tools, no export. Portrait puts the buttons under the diagram,
 //! landscape beside it. The projector keeps the teacher's view: presentation never shows this
 //! one.
@@ -13,7 +13,7 @@ use refraction_diagram::picture::TOUCH_TARGET;
 use refraction_i18n::t;
 
 use super::deck::{Command, Lesson};
-use super::{Explorer, View, canvas, step_buttons};
+use super::{Explorer, View, canvas, steps};
 
 /// The widest screen the student's view opens on by itself, in points (CSS pixels in a
 /// browser): a phone or a tablet held upright. The desktop window is never narrower (900).
@@ -138,7 +138,7 @@ impl Explorer {
             finger_sized(ui);
             ui.add_space(4.0);
             if !scene {
-                step_buttons::ui(ui, state, column);
+                steps::for_student(ui, state, column);
             }
             let full = t!("student-full");
             if ui
@@ -217,7 +217,11 @@ impl Explorer {
         let mut overlay = self.overlay();
         let state = &mut self.state;
         egui::CentralPanel::no_frame().show(ui, |ui| {
-            canvas::show(ui, state, &mut overlay, false);
+            let under = canvas::Under {
+                steps: false,
+                hint: false,
+            };
+            canvas::show(ui, state, &mut overlay, under);
         });
         self.presentation.pan_zoom = overlay.pan_zoom;
     }

@@ -23,7 +23,7 @@ fn undo_and_redo_step_through_every_kind_of_change_and_a_drag_is_one_step() {
     seen.push(h.state().state().clone());
     click(&mut h, "Section 1: W points back toward the origin");
     seen.push(h.state().state().clone());
-    let from = center_of(&h, "W handle");
+    let from = center_of(&h, "Angle of incidence θi (W)");
     drag(&mut h, from, from + Vec2::new(-60.0, 40.0));
     seen.push(h.state().state().clone());
     click(&mut h, "Flip N");
@@ -150,7 +150,7 @@ fn what_an_undo_did_never_grows_the_top_bar() {
         }
         let top = |h: &Harness<'_, Explorer>| h.get_by_role(Role::Image).rect().min.y;
         let before = top(&h);
-        h.get_by_label("W handle").focus();
+        h.get_by_label("Angle of incidence θi (W)").focus();
         h.run();
         h.key_press(Key::ArrowLeft);
         h.run();

@@ -133,7 +133,7 @@ fn a_scene_steps_rays_stop_at_the_first_surface_until_revealed() {
 fn arrow_keys_turn_a_selected_handle_and_step_once_it_is_let_go() {
     let mut h = on_deck("snell");
     let before = h.state().state().clone();
-    h.get_by_label("W handle").focus();
+    h.get_by_label("Angle of incidence θi (W)").focus();
     h.run();
     press(&mut h, Key::ArrowRight);
     assert_eq!(step_shown(&h), 0, "the handle takes the arrow");
@@ -154,7 +154,7 @@ fn arrow_keys_turn_a_selected_handle_and_step_once_it_is_let_go() {
 fn dragging_during_a_step_changes_the_diagram_and_not_the_deck() {
     let mut h = on_deck("snell");
     let saved = h.state().lesson().deck.clone().unwrap();
-    let from = center_of(&h, "W handle");
+    let from = center_of(&h, "Angle of incidence θi (W)");
     drag(&mut h, from, from + Vec2::new(-60.0, 40.0));
     assert_ne!(*h.state().state(), saved.steps[0].state, "the drag moved W");
     assert_eq!(h.state().lesson().deck.as_ref(), Some(&saved));

@@ -132,7 +132,7 @@ fn a_lesson_link_opens_the_step_and_the_link_follows_what_the_class_sees() {
     );
     // Dragging W during the step: the class now sees a state, not the step as saved.
     let mut h = harness_for(explorer);
-    let w = h.get_by_label("W handle").rect().center();
+    let w = h.get_by_label("Angle of incidence θi (W)").rect().center();
     drag(&mut h, w, w + egui::vec2(40.0, -20.0));
     let seen = h.state().link_url().unwrap();
     assert!(

@@ -9,6 +9,7 @@
 mod cli;
 mod common;
 
+mod accessibility;
 mod accuracy_view;
 mod bench_variants;
 mod check_api_cli;

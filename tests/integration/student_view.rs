@@ -147,16 +147,16 @@ fn an_upright_tablet_gets_the_students_view_too() {
 fn the_step_buttons_turn_w_and_n_and_change_the_indices() {
     let mut h = opened("#lesson=snell&step=1", PHONE);
     let before = h.state().state().incidence_degrees();
-    h.get_by_label("Angle of incidence: 1° more").click();
+    h.get_by_label("Increase θi by 1°").click();
     h.run();
     let after = h.state().state().incidence_degrees();
     assert!((after - before - 1.0).abs() < 1e-9, "{before} → {after}");
-    h.get_by_label("μt: 0.01 less").click();
+    h.get_by_label("Decrease μt by 0.01").click();
     h.run();
     let mu_t = h.state().state().mu_t();
     assert!((mu_t - 1.49).abs() < 1e-9, "μt 1.5 → {mu_t}");
     let n = h.state().state().n();
-    h.get_by_label("Turn the normal 1° clockwise").click();
+    h.get_by_label("Turn N 1° to the right").click();
     h.run();
     let turned = h.state().state().n();
     let degrees = n.angle_between(turned).to_degrees();

@@ -11,10 +11,12 @@
 //! - the file dialog is the browser's file picker and a download ([`files`]), and files dropped
 //!   on the page are read before the window sees them;
 //! - a copy the browser refuses is said in the window;
-//! - the canvas is named for screen readers with what the diagram says;
+//! - the canvas is named for screen readers with what the diagram says, and the page carries its
+//!   own controls, the window in words and the page's language for them ([`access`]);
 //! - the settings and the last state are kept in the browser's storage (eframe's);
 //! - each frame's time is a performance entry (`explorer-frame`) for the browser's profiler.
 
+mod access;
 mod crash;
 mod files;
 mod page;
@@ -51,6 +53,8 @@ struct Page {
     student: Option<bool>,
     /// The strip's message, last said in the page's live region.
     announced: Option<String>,
+    /// The page's own controls and words for screen readers and keyboards.
+    controls: Option<access::PageControls>,
     /// The last state's link, kept for the panic overlay.
     link: crash::KeptLink,
 }
@@ -146,12 +150,16 @@ impl eframe::App for Page {
             page::report_frame(seconds);
         }
         self.follow_address();
+        access::PageControls::take_set(&mut self.explorer);
         self.explorer.show(ui);
         self.link.follow(&self.explorer);
         self.follow_presentation(ui.ctx());
         self.follow_clipboard(ui.ctx());
         files::deliver_written();
         self.describe(ui.ctx());
+        if let Some(controls) = &mut self.controls {
+            controls.follow(ui.ctx(), &self.explorer);
+        }
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
@@ -183,6 +191,7 @@ fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement
     {
         explorer.set_web_base(&address);
     }
+    let controls = access::PageControls::new(canvas.clone(), &cc.egui_ctx);
     let mut page = Page {
         explorer,
         canvas,
@@ -193,6 +202,7 @@ fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement
         title: String::new(),
         student: None,
         announced: None,
+        controls,
         link: crash::KeptLink::default(),
     };
     page.follow_address();

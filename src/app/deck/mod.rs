@@ -199,33 +199,42 @@ fn light(polarisation: Polarisation) -> Light {
 }
 
 impl Explorer {
-    /// The window's title (in a browser, the page's): the program's name and, while a deck's
-    /// step is shown, the deck's title and where the step is (`… · Snell's law in ten
-    /// minutes · 2 / 5`). Never the step's own title or question, which the strip shows: a
-    /// title is read aloud and listed where a hidden answer has no business.
+    /// The window's title (in a browser, the page's, which a screen reader says first): the
+    /// program's name, then the deck's title, the step's title and where the step is
+    /// (`… · Snell's law in ten minutes · From air into glass · 1 / 5`), or the view (and its
+    /// scene) other than the one interface. A title of a deck file is cut to a few words, as
+    /// a tab shows. Never the step's question, which the strip shows.
     #[must_use]
     pub fn title(&self) -> String {
-        let Some((index, deck)) = self
-            .lesson
-            .current()
-            .map(|(i, _)| i)
-            .zip(self.lesson.deck.as_ref())
-        else {
-            return crate::TITLE.to_owned();
+        let cut = |text: &str| {
+            refraction_tools::link::echo(text.trim(), refraction_tools::link::ECHO_CHARS)
         };
-        let at = t!(
-            "deck-step-number",
-            number = (index + 1).to_string(),
-            count = deck.steps.len().to_string()
-        );
-        if deck.title.trim().is_empty() {
-            format!("{} · {at}", crate::TITLE)
+        let shown = if let Some(((index, step), deck)) =
+            self.lesson.current().zip(self.lesson.deck.as_ref())
+        {
+            let at = t!(
+                "deck-step-number",
+                number = (index + 1).to_string(),
+                count = deck.steps.len().to_string()
+            );
+            [cut(&deck.title), cut(&step.title), at]
+                .into_iter()
+                .filter(|part| !part.is_empty())
+                .collect::<Vec<_>>()
+                // untranslated: the title's separator, the same in every language.
+                .join(" · ")
         } else {
-            // A deck file's title may be of any length: a tab shows a few words.
-            let title =
-                refraction_tools::link::echo(&deck.title, refraction_tools::link::ECHO_CHARS);
-            format!("{} · {title} · {at}", crate::TITLE)
-        }
+            match self.view {
+                View::Interface => return crate::TITLE.to_owned(),
+                View::Scenes => t!(
+                    "access-title-scene",
+                    view = View::Scenes.label(),
+                    scene = refraction_diagram::scene_words::title(self.scenes.scene())
+                ),
+                View::Accuracy => View::Accuracy.label(),
+            }
+        };
+        format!("{} · {shown}", crate::TITLE)
     }
 
     /// The lesson deck shown, where it is, and its tool.

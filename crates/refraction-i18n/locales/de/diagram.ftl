@@ -46,10 +46,10 @@ diagram-no-reflected-ray = { $label }: kein reflektierter Strahl
 
 ## Anfasser (was ein Bildschirmleser sagt)
 
-diagram-handle-w = W-Anfasser
-diagram-handle-n = N-Anfasser
-diagram-handle-mu-i = μi-Anfasser
-diagram-handle-mu-t = μt-Anfasser
+diagram-handle-w = Einfallswinkel θi (W)
+diagram-handle-n = Richtung der Normalen N
+diagram-handle-mu-i = Brechungsindex μi (Medium des Strahls)
+diagram-handle-mu-t = Brechungsindex μt (Medium, in das der Strahl eintritt)
 diagram-handle-source = Anfasser der Quelle
 diagram-handle-aim = Anfasser der Quellrichtung
 diagram-handle-shape = Anfasser von Form { $number } ({ $medium })

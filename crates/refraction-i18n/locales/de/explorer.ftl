@@ -47,8 +47,8 @@ panel-hide-numbers = Zahlen ausblenden ({ $key })
 
 ## Unter dem Diagramm
 
-canvas-hint = W, N oder eine μ-Marke ziehen; eine davon (oder das Diagramm) anklicken, um die Pfeiltasten zu nutzen
-canvas-hint-ray = ←/→ dreht um 1° (Umschalt: 0,1°) · +/− μt · Tab: nächster Anfasser · ziehen zum Verschieben
+canvas-hint = W, N oder eine μ-Marke ziehen oder − und + darunter nutzen; Tab oder ein Klick wählt einen Anfasser für die Pfeiltasten
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Umschalt: 0,1°) · +/− μt · Tab: nächster Anfasser · ziehen zum Verschieben
 canvas-hint-index = ↑/↓ oder +/− ändern den Brechungsindex um 0,01 (Umschalt: 0,001) · Tab: nächster Anfasser
 
 ## Der Bereich Steuerung
@@ -188,13 +188,7 @@ accuracy-column-tir = Abweichungen Totalreflexion
 ## Die Schüleransicht: was ein Handy (oder ein Link mit view=student) zeigt, und die Knöpfe,
 ## die W, N und die Brechzahlen schrittweise ändern
 
-student-incidence-less = Einfallswinkel: 1° weniger
-student-incidence-more = Einfallswinkel: 1° mehr
-student-normal-left = Die Normale um 1° gegen den Uhrzeigersinn drehen
-student-normal-right = Die Normale um 1° im Uhrzeigersinn drehen
 # $symbol: μi oder μt
-student-index-less = { $symbol }: 0,01 weniger
-student-index-more = { $symbol }: 0,01 mehr
 student-index = Brechzahl { $symbol }
 student-full = Ganzer Explorer
 student-full-hover = Der ganze Explorer mit seinen Werkzeugen und Leisten (für einen großen Bildschirm)

@@ -48,10 +48,10 @@ diagram-no-reflected-ray = { $label }: no reflected ray
 
 ## Handles (what a screen reader says)
 
-diagram-handle-w = W handle
-diagram-handle-n = N handle
-diagram-handle-mu-i = μi handle
-diagram-handle-mu-t = μt handle
+diagram-handle-w = Angle of incidence θi (W)
+diagram-handle-n = Direction of the normal N
+diagram-handle-mu-i = Index μi of the ray's medium
+diagram-handle-mu-t = Index μt of the medium entered
 diagram-handle-source = Source handle
 diagram-handle-aim = Source direction handle
 diagram-handle-shape = Shape { $number } handle ({ $medium })

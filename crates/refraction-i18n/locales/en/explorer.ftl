@@ -47,8 +47,8 @@ panel-hide-numbers = Hide the numbers ({ $key })
 
 ## Under the diagram
 
-canvas-hint = Drag W, N or a μ marker; click one (or the diagram) to use the arrow keys
-canvas-hint-ray = ←/→ turn by 1° (Shift: 0.1°) · +/− μt · Tab: next handle · drag to move
+canvas-hint = Drag W, N or a μ marker, or use − and + below; Tab or a click selects one for the arrow keys
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Shift: 0.1°) · +/− μt · Tab: next handle · drag to move
 canvas-hint-index = ↑/↓ or +/− change the index by 0.01 (Shift: 0.001) · Tab: next handle
 
 ## The controls panel
@@ -189,13 +189,7 @@ accuracy-column-tir = TIR mismatches
 ## The student's view: what a phone (or a link with view=student) shows, and the buttons that
 ## change W, N and the indices a step at a time
 
-student-incidence-less = Angle of incidence: 1° less
-student-incidence-more = Angle of incidence: 1° more
-student-normal-left = Turn the normal 1° counter-clockwise
-student-normal-right = Turn the normal 1° clockwise
 # $symbol: μi or μt
-student-index-less = { $symbol }: 0.01 less
-student-index-more = { $symbol }: 0.01 more
 student-index = Index { $symbol }
 student-full = Full explorer
 student-full-hover = The whole explorer, with its tools and panels (for a large screen)

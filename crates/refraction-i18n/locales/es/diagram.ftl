@@ -46,10 +46,10 @@ diagram-no-reflected-ray = { $label }: sin rayo reflejado
 
 ## Tiradores (lo que dice un lector de pantalla)
 
-diagram-handle-w = tirador de W
-diagram-handle-n = tirador de N
-diagram-handle-mu-i = tirador de μi
-diagram-handle-mu-t = tirador de μt
+diagram-handle-w = Ángulo de incidencia θi (W)
+diagram-handle-n = Dirección de la normal N
+diagram-handle-mu-i = Índice μi del medio del rayo
+diagram-handle-mu-t = Índice μt del medio en el que entra
 diagram-handle-source = tirador de la fuente
 diagram-handle-aim = tirador de la dirección de la fuente
 diagram-handle-shape = tirador de la forma { $number } ({ $medium })

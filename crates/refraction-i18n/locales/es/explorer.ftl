@@ -47,8 +47,8 @@ panel-hide-numbers = Ocultar los números ({ $key })
 
 ## Bajo el diagrama
 
-canvas-hint = Arrastra W, N o un marcador μ; haz clic en uno (o en el diagrama) para usar las flechas del teclado
-canvas-hint-ray = ←/→ gira 1° (Mayús: 0,1°) · +/− μt · Tab: siguiente tirador · arrastra para mover
+canvas-hint = Arrastra W, N o un marcador μ, o usa − y + debajo; Tab o un clic elige uno para las flechas del teclado
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Mayús: 0,1°) · +/− μt · Tab: siguiente tirador · arrastra para mover
 canvas-hint-index = ↑/↓ o +/− cambian el índice en 0,01 (Mayús: 0,001) · Tab: siguiente tirador
 
 ## El panel de controles
@@ -188,13 +188,7 @@ accuracy-column-tir = discrepancias en reflexión total
 ## La vista del alumno: lo que muestra un móvil (o un enlace con view=student), y los botones
 ## que cambian W, N y los índices paso a paso
 
-student-incidence-less = Ángulo de incidencia: 1° menos
-student-incidence-more = Ángulo de incidencia: 1° más
-student-normal-left = Girar la normal 1° en sentido antihorario
-student-normal-right = Girar la normal 1° en sentido horario
 # $symbol: μi o μt
-student-index-less = { $symbol }: 0,01 menos
-student-index-more = { $symbol }: 0,01 más
 student-index = Índice { $symbol }
 student-full = Explorador completo
 student-full-hover = Todo el explorador, con sus herramientas y paneles (para una pantalla grande)

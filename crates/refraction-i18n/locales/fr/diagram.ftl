@@ -46,10 +46,10 @@ diagram-no-reflected-ray = { $label } : pas de rayon réfléchi
 
 ## Poignées (ce que dit un lecteur d’écran)
 
-diagram-handle-w = poignée de W
-diagram-handle-n = poignée de N
-diagram-handle-mu-i = poignée de μi
-diagram-handle-mu-t = poignée de μt
+diagram-handle-w = Angle d’incidence θi (W)
+diagram-handle-n = Direction de la normale N
+diagram-handle-mu-i = Indice μi du milieu du rayon
+diagram-handle-mu-t = Indice μt du milieu où il entre
 diagram-handle-source = poignée de la source
 diagram-handle-aim = poignée de la direction de la source
 diagram-handle-shape = poignée de la forme { $number } ({ $medium })

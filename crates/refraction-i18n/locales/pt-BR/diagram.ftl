@@ -46,10 +46,10 @@ diagram-no-reflected-ray = { $label }: sem raio refletido
 
 ## Alças (o que um leitor de tela diz)
 
-diagram-handle-w = alça de W
-diagram-handle-n = alça de N
-diagram-handle-mu-i = alça de μi
-diagram-handle-mu-t = alça de μt
+diagram-handle-w = Ângulo de incidência θi (W)
+diagram-handle-n = Direção da normal N
+diagram-handle-mu-i = Índice μi do meio do raio
+diagram-handle-mu-t = Índice μt do meio em que ele entra
 diagram-handle-source = alça da fonte
 diagram-handle-aim = alça da direção da fonte
 diagram-handle-shape = alça da forma { $number } ({ $medium })

@@ -47,8 +47,8 @@ panel-hide-numbers = Ocultar os números ({ $key })
 
 ## Abaixo do diagrama
 
-canvas-hint = Arraste W, N ou um marcador μ; clique em um deles (ou no diagrama) para usar as setas do teclado
-canvas-hint-ray = ←/→ gira 1° (Shift: 0,1°) · +/− μt · Tab: próxima alça · arraste para mover
+canvas-hint = Arraste W, N ou um marcador μ, ou use − e + abaixo; Tab ou um clique escolhe um para as setas do teclado
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Shift: 0,1°) · +/− μt · Tab: próxima alça · arraste para mover
 canvas-hint-index = ↑/↓ ou +/− mudam o índice em 0,01 (Shift: 0,001) · Tab: próxima alça
 
 ## O painel de controles
@@ -188,13 +188,7 @@ accuracy-column-tir = divergências de reflexão total
 ## A visão do aluno: o que um celular (ou um link com view=student) mostra, e os botões que
 ## mudam W, N e os índices passo a passo
 
-student-incidence-less = Ângulo de incidência: 1° a menos
-student-incidence-more = Ângulo de incidência: 1° a mais
-student-normal-left = Girar a normal 1° no sentido anti-horário
-student-normal-right = Girar a normal 1° no sentido horário
 # $symbol: μi ou μt
-student-index-less = { $symbol }: 0,01 a menos
-student-index-more = { $symbol }: 0,01 a mais
 student-index = Índice { $symbol }
 student-full = Explorador completo
 student-full-hover = O explorador inteiro, com suas ferramentas e painéis (para uma tela grande)

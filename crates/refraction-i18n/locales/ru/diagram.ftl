@@ -46,10 +46,10 @@ diagram-no-reflected-ray = { $label }: нет отражённого луча
 
 ## Маркеры (что говорит программа чтения с экрана)
 
-diagram-handle-w = маркер W
-diagram-handle-n = маркер N
-diagram-handle-mu-i = маркер μi
-diagram-handle-mu-t = маркер μt
+diagram-handle-w = Угол падения θi (W)
+diagram-handle-n = Направление нормали N
+diagram-handle-mu-i = Показатель преломления μi среды луча
+diagram-handle-mu-t = Показатель преломления μt среды, в которую входит луч
 diagram-handle-source = маркер источника
 diagram-handle-aim = маркер направления источника
 diagram-handle-shape = маркер фигуры { $number } ({ $medium })
