@@ -74,7 +74,7 @@ fn check_the_phone(size: (f32, f32), least_share: f32) {
     );
     assert!(diagram.height() >= 200.0, "{size:?}: {diagram:?}");
     // W and N on screen, each handle a finger's target.
-    for handle in ["W handle", "N handle"] {
+    for handle in ["Angle of incidence θi (W)", "Direction of the normal N"] {
         let r = h.get_by_label(handle).rect();
         assert!(
             diagram.contains_rect(r),
@@ -167,7 +167,7 @@ fn the_step_buttons_turn_w_and_n_and_change_the_indices() {
 fn a_finger_on_w_s_handle_turns_w() {
     let mut h = opened("#lesson=snell&step=1", PHONE);
     let before = h.state().state().w();
-    let w = h.get_by_label("W handle").rect().center();
+    let w = h.get_by_label("Angle of incidence θi (W)").rect().center();
     drag(&mut h, w, w + egui::vec2(-60.0, 30.0));
     assert_ne!(h.state().state().w(), before, "W turned");
 }

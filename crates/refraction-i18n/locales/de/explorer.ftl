@@ -191,6 +191,6 @@ accuracy-column-tir = Abweichungen Totalreflexion
 # $symbol: μi oder μt
 student-index = Brechzahl { $symbol }
 student-full = Ganzer Explorer
-student-full-hover = Der ganze Explorer mit seinen Werkzeugen und Leisten (für einen großen Bildschirm)
+student-full-hover = Der ganze Explorer mit seinen Werkzeugen und Leisten (für ein großes Display)
 student-view = Schüleransicht
-student-view-hover = Die Ansicht für ein Handy: die Frage, das Diagramm über den ganzen Bildschirm und Knöpfe für den Finger
+student-view-hover = Die Ansicht für ein Handy: die Frage, das Diagramm über die ganze Breite und Knöpfe für den Finger

@@ -30,7 +30,7 @@ diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0 : T
 diagram-critical-angle = angle limite θc = { $angle }°
 diagram-kernel-normal = −N : la normale qu’utilise le noyau
 diagram-outward-normal-bug =
-    bogue de la normale extérieure :
+    bogue de la normale extérieure :
     le T de la formule avec N tel quel
 diagram-index-scale = indice μ
 diagram-incoming-ray = rayon incident

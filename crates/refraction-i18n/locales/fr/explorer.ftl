@@ -193,4 +193,4 @@ student-index = Indice { $symbol }
 student-full = Explorateur complet
 student-full-hover = Tout l’explorateur, avec ses outils et ses panneaux (pour un grand écran)
 student-view = Vue élève
-student-view-hover = La vue pour un téléphone : la question, le diagramme sur toute la largeur et des boutons pour le doigt
+student-view-hover = La vue pour un téléphone : la question, le schéma sur toute la largeur et des boutons pour le doigt

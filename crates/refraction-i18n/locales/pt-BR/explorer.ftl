@@ -191,6 +191,6 @@ accuracy-column-tir = divergências de reflexão total
 # $symbol: μi ou μt
 student-index = Índice { $symbol }
 student-full = Explorador completo
-student-full-hover = O explorador inteiro, com suas ferramentas e painéis (para uma tela grande)
+student-full-hover = O explorador inteiro, com suas ferramentas e painéis (para um monitor grande)
 student-view = Visão do aluno
 student-view-hover = A visão para um celular: a pergunta, o diagrama em toda a largura e botões para o dedo
