@@ -7,7 +7,7 @@ use std::process::ExitCode;
 
 use glam::Vec2;
 use refraction_deck::{Deck, builtin};
-use refraction_explorer::app::handout::{HandoutError, picture, write};
+use refraction_explorer::app::handout::{Drawn, HandoutError, picture, write};
 use refraction_render::format::ImageFormat;
 use refraction_render::handout::Sheet;
 use refraction_render::{RenderError, check_size, svg};
@@ -131,7 +131,7 @@ fn pictures(
         .steps
         .iter()
         .map(|step| {
-            let primitives = picture(deck, step, size, false)?;
+            let primitives = picture(deck, step, size, Drawn::default())?;
             svg::document(width, height, svg::Labels::default(), |_, _| primitives)
                 .map_err(LessonFailure::from)
         })

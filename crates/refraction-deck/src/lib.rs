@@ -7,6 +7,8 @@
 //! - [`Deck::load`]: a built-in deck by name ([`builtin`]) or a deck file, read with the scene
 //!   format's `FILE:LINE:COLUMN` errors; [`Deck::to_toml`] writes it back exactly.
 //! - [`builtin::catalogue`]: the decks built in, in the current language.
+//! - [`describe::page`]: the step shown and its view in words, for a screen reader, its answer
+//!   kept out until it is revealed.
 //!
 //! It sits above the model and the scenes and below the window and the commands, so that the
 //! window steps through a deck and `render --lesson` draws its handout from the same steps.
@@ -22,6 +24,7 @@
 
 pub mod answer;
 pub mod builtin;
+pub mod describe;
 mod file;
 mod step;
 

@@ -37,8 +37,10 @@ pub const PAGE: Vec2 = Vec2::new(595.0, 842.0);
 /// The page's margin, in points.
 const MARGIN: f32 = 40.0;
 
-/// The smallest words of a diagram on paper, in points: 9 and more, to read in a hand.
-pub const SMALLEST_LABEL_PT: f32 = 9.5;
+/// The smallest words of a diagram on paper, in points: a 10-point box, so that the type is
+/// 9.5 points and more where a label's `textLength` fits a viewer's glyphs to it (measured
+/// 9.1 points at a 9.5-point box).
+pub const SMALLEST_LABEL_PT: f32 = 10.0;
 
 /// Points on paper per pixel of the diagram's canvas.
 const PT_PER_PX: f32 = SMALLEST_LABEL_PT / SMALLEST_TEXT;

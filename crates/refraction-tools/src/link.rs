@@ -8,17 +8,21 @@
 //!
 //! let url = link::url("https://school.example/explorer/", &Link::Lesson { name: "snell".into(), step: 2 });
 //! assert_eq!(url, "https://school.example/explorer/#lesson=snell&step=2");
-//! let shared = link::url("https://school.example/explorer/", &Link::State(Box::default()));
+//! let state = ExplorerState::default();
+//! let shared = link::url("https://school.example/explorer/", &Link::State(Box::new(state.clone())));
 //! let fragment = &shared[shared.find('#').unwrap()..];
-//! assert_eq!(link::parse(fragment), Ok(Some(Link::State(Box::default()))));
+//! let Ok(Some(Link::State(opened))) = link::parse(fragment) else { panic!("{shared}") };
+//! // The link keeps W and N to a millionth: the same diagram, to far below what it shows.
+//! assert!((opened.incidence_degrees() - state.incidence_degrees()).abs() < 1e-4);
 //! ```
 //!
 //! A fragment is a list of `name=value` parts joined by `&`, each value percent-encoded. This
-//! version reads `state`, `lesson`, `step` and `v` (the link format, [`FORMAT`]); a later
-//! format, or a part (or a field of the state) this version does not know, is refused as a
-//! link from a newer version, never half read; a part given twice is refused as damaged. What
-//! a refusal quotes of the link is cut to [`ECHO_CHARS`] characters, its control characters
-//! escaped ([`echo`]).
+//! version reads `state`, `lesson`, `step`, `view=student` (the student's view, whatever the
+//! screen: see [`student_url`]) and `v` (the link format, [`FORMAT`]); a later format, or a
+//! part (or a field of the state) this version does not know, is refused as a link from a
+//! newer version, never half read; a part given twice is refused as damaged. What a refusal
+//! quotes of the link is cut to [`ECHO_CHARS`] characters, its control characters escaped
+//! ([`echo`]).
 //!
 //! The web build's address a link starts with is checked in one place, [`web_base`], for the
 //! command line, the window and the page alike.
@@ -289,11 +293,47 @@ pub fn web_base(text: &str) -> Result<String, WebBaseError> {
     }
 }
 
+/// How many decimals a link keeps of W's and N's components: a millionth turns a direction by
+/// under 0.0001°, a thousandth of the 0.1° the diagram shows.
+const DIRECTION_DECIMALS: i32 = 6;
+
+/// How many significant digits a link keeps of an index: air's 1.000293 whole.
+const INDEX_DIGITS: i32 = 7;
+
+/// `x` rounded to `decimals` decimals (`-0` written as `0`).
+fn rounded(x: f64, decimals: i32) -> f64 {
+    let scale = 10_f64.powi(decimals);
+    (x * scale).round() / scale + 0.0
+}
+
+/// The state's JSON as a link carries it: the fields `--state` reads, W's and N's components
+/// to [`DIRECTION_DECIMALS`] and the indices to [`INDEX_DIGITS`] significant digits (the
+/// numbers as the diagram can show them: a short link is a QR code a phone reads from the
+/// back of the room), the convention only when it is not the default. *Copy share string*
+/// keeps every bit.
+fn state_json(state: &ExplorerState) -> String {
+    let vector = |v: glam::DVec3| v.to_array().map(|c| rounded(c, DIRECTION_DECIMALS));
+    let index = |mu: f64| {
+        let decimals = INDEX_DIGITS - 1 - mu.abs().log10().floor() as i32;
+        rounded(mu, decimals.max(0))
+    };
+    let mut json = serde_json::json!({
+        "w": vector(state.w()),
+        "n": vector(state.n()),
+        "mu_i": index(state.mu_i()),
+        "mu_t": index(state.mu_t()),
+    });
+    if state.convention() != refraction_kernel::Convention::default() {
+        json["convention"] = serde_json::Value::from(state.convention().name());
+    }
+    json.to_string()
+}
+
 /// The fragment of `link`, without the `#`.
 #[must_use]
 pub fn fragment(link: &Link) -> String {
     match link {
-        Link::State(state) => format!("state={}", encode(&state_file::to_json(state))),
+        Link::State(state) => format!("state={}", encode(&state_json(state))),
         Link::Lesson { name, step } => format!("lesson={}&step={step}", encode(name)),
     }
 }
@@ -303,6 +343,25 @@ pub fn fragment(link: &Link) -> String {
 pub fn url(base: &str, link: &Link) -> String {
     let base = base.split('#').next().unwrap_or_default().trim();
     format!("{base}#{}", fragment(link))
+}
+
+/// The part that asks for the student's view: the question, the diagram across the screen,
+/// handles a finger can take, and nothing of the teacher's.
+pub const STUDENT_VIEW: &str = "view=student";
+
+/// [`url`] for the class's own devices (what a QR code opens): the link that also asks for
+/// the student's view ([`STUDENT_VIEW`]).
+#[must_use]
+pub fn student_url(base: &str, link: &Link) -> String {
+    format!("{}&{STUDENT_VIEW}", url(base, link))
+}
+
+/// Whether the fragment `fragment` (with or without its `#`) asks for the student's view.
+/// A fragment that cannot be read asks for nothing ([`parse`] says why).
+#[must_use]
+pub fn asks_student_view(fragment: &str) -> bool {
+    let fragment = fragment.strip_prefix('#').unwrap_or(fragment);
+    fragment.split('&').any(|part| part == STUDENT_VIEW)
 }
 
 /// The parts of a fragment, each name with its decoded value, in order.
@@ -389,9 +448,13 @@ pub fn parse(fragment: &str) -> Result<Option<Link>, LinkError> {
     }
     if let Some((name, _)) = parts
         .iter()
-        .find(|(n, _)| !["state", "lesson", "step", "v"].contains(n))
+        .find(|(n, _)| !["state", "lesson", "step", "view", "v"].contains(n))
     {
         return Err(LinkError::Newer(echo(name, ECHO_CHARS)));
+    }
+    // Only the student's view is a view a link names; another is a newer version's.
+    if let Some(view) = value("view").filter(|v| *v != "student") {
+        return Err(LinkError::Newer(format!("view={view}")));
     }
     match (value("state"), value("lesson")) {
         (Some(_), Some(_)) => Err(LinkError::Malformed(t!("link-state-and-lesson"))),
@@ -420,7 +483,7 @@ mod tests {
     }
 
     #[test]
-    fn a_state_goes_through_its_link_bit_for_bit() {
+    fn a_state_goes_through_its_link_as_the_diagram_shows_it() {
         let state = beyond_critical();
         let url = url(
             "https://school.example/explorer/index.html#old",
@@ -438,6 +501,26 @@ mod tests {
         assert_eq!(
             parse(fragment),
             Ok(Some(Link::State(Box::new(state.clone()))))
+        );
+        // A ray at 40° into air's 1.000293, Section 1: its numbers to a millionth (the 231
+        // characters of every bit made a dense QR code), its indices whole.
+        let a = 40_f64.to_radians();
+        let w = glam::DVec3::new(-a.sin(), a.cos(), 0.0);
+        let forty = ExplorerState::new(w, glam::DVec3::Y, 1.000_293, 1.5, Convention::TowardOrigin)
+            .unwrap();
+        let link = super::fragment(&Link::State(Box::new(forty.clone())));
+        let json = decode(&link["state=".len()..]).unwrap();
+        assert_eq!(
+            json,
+            r#"{"convention":"toward_origin","mu_i":1.000293,"mu_t":1.5,"n":[0.0,1.0,0.0],"w":[-0.642788,0.766044,0.0]}"#
+        );
+        let Ok(Some(Link::State(opened))) = parse(&link) else {
+            panic!("{link}")
+        };
+        assert!((opened.incidence_degrees() - 40.0).abs() < 1e-4);
+        assert_eq!(
+            (opened.mu_i(), opened.convention()),
+            (1.000_293, Convention::TowardOrigin)
         );
         // The plain form, as `--state` reads it, fully encoded or not encoded at all.
         let json = state_file::to_json(&state);
@@ -526,6 +609,29 @@ mod tests {
         for error in [LinkError::CutShort, LinkError::Newer("v=2".to_owned())] {
             assert!(!error.message().is_empty());
         }
+    }
+
+    #[test]
+    fn a_link_for_the_class_asks_for_the_student_s_view() {
+        let link = Link::Lesson {
+            name: "snell".to_owned(),
+            step: 2,
+        };
+        let url = student_url("https://school.example/explorer/", &link);
+        assert_eq!(
+            url,
+            "https://school.example/explorer/#lesson=snell&step=2&view=student"
+        );
+        let fragment = &url[url.find('#').unwrap()..];
+        assert_eq!(parse(fragment), Ok(Some(link.clone())));
+        assert!(asks_student_view(fragment));
+        assert!(!asks_student_view("#lesson=snell&step=2"));
+        let state = student_url("x", &Link::State(Box::new(beyond_critical())));
+        assert!(asks_student_view(&state[state.find('#').unwrap()..]));
+        assert_eq!(
+            parse("lesson=snell&view=teacher"),
+            Err(LinkError::Newer("view=teacher".to_owned()))
+        );
     }
 
     #[test]

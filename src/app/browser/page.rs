@@ -239,3 +239,11 @@ pub(super) fn describe(canvas: &web_sys::HtmlCanvasElement, summary: &str) {
     canvas.set_attribute("role", "img").ok();
     canvas.set_attribute("aria-label", summary).ok();
 }
+
+/// Says on the canvas which view the window shows (`data-view`: `student` or `teacher`), for
+/// the page's style and its tests: a canvas's pictures are not the page's elements.
+pub(super) fn show_view(canvas: &web_sys::HtmlCanvasElement, student: bool) {
+    // untranslated: an attribute's value, read by the page and its tests, never shown.
+    let view = if student { "student" } else { "teacher" };
+    canvas.set_attribute("data-view", view).ok();
+}

@@ -19,6 +19,8 @@ link-qr-save = Als { $format } speichern
 # $bytes: die Länge des Links
 link-qr-too-long = Der Link ist zu lang für einen QR-Code ({ $bytes } Bytes): ihn stattdessen kopieren.
 link-qr-close = Q oder Esc schließt
+# The QR code dialog: its button that takes the web address typed
+link-qr-show = QR-Code zeigen
 link-notice-close = Schließen (Esc)
 
 ## Ein Link, der sich nicht öffnen lässt ($reason: warum, wie unten)

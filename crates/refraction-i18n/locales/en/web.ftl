@@ -19,6 +19,8 @@ link-qr-save = Save as { $format }
 # $bytes: the link's length
 link-qr-too-long = The link is too long for a QR code ({ $bytes } bytes): copy it instead.
 link-qr-close = Q or Esc closes
+# The QR code dialog: its button that takes the web address typed
+link-qr-show = Show the QR code
 link-notice-close = Close (Esc)
 
 ## A link that cannot be opened ($reason: why, as below)

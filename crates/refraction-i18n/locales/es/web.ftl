@@ -19,6 +19,8 @@ link-qr-save = Guardar como { $format }
 # $bytes: la longitud del enlace
 link-qr-too-long = El enlace es demasiado largo para un código QR ({ $bytes } bytes): cópialo en su lugar.
 link-qr-close = Q o Esc cierra
+# The QR code dialog: its button that takes the web address typed
+link-qr-show = Mostrar el código QR
 link-notice-close = Cerrar (Esc)
 
 ## Un enlace que no se puede abrir ($reason: por qué, como abajo)

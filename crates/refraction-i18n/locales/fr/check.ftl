@@ -360,10 +360,10 @@ check-part-across-sign = la partie de T transverse à N a le mauvais signe (l’
 check-tally-sampled = réfléchies (tirées)
 
 # check: a log whose read lines are right but some lines could not be read (issue 40)
-check-diagnosis-unreadable = { $lines } lignes du journal n’ont pas pu être lues (chacune reçoit son erreur), et aucune ligne lue n’est fausse : ce n’est pas une réussite ; corrige ces lignes ou la façon de les lire.
+check-diagnosis-unreadable = { $lines } lignes du journal n’ont pas pu être lues (chacune reçoit son erreur), et aucune ligne lue n’est fausse : ce n’est pas une réussite ; corrige ces lignes ou la façon de les lire.
 
 # check --suggest-pattern on JSON Lines (issue 40)
-check-suggest-json-lines = le journal est en JSON Lines, dont les clés nomment les champs : il n’a pas besoin de motif
+check-suggest-json-lines = le journal est en JSON Lines, dont les clés nomment les champs : il n’a pas besoin de motif
 
 # check: calls whose printed digits cannot tell them right or wrong (issue 43, item 1)
 check-undecided = Impossible à dire avec les chiffres imprimés : tel qu’il est imprimé, l’appel ressemble à { $shown }, mais des nombres dans les limites de leur arrondi en font un appel juste (un signe dont dépend le verdict, de N·I, de k ou d’une racine, est plus proche de zéro que ne le montrent les chiffres). Imprime plus de chiffres pour en juger.

@@ -19,6 +19,8 @@ link-qr-save = Enregistrer en { $format }
 # $bytes : la longueur du lien
 link-qr-too-long = Le lien est trop long pour un code QR ({ $bytes } octets) : copie-le plutôt.
 link-qr-close = Q ou Échap ferme
+# The QR code dialog: its button that takes the web address typed
+link-qr-show = Afficher le code QR
 link-notice-close = Fermer (Échap)
 
 ## Un lien qui ne s’ouvre pas ($reason : pourquoi, comme ci-dessous)

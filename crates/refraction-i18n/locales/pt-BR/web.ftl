@@ -19,6 +19,8 @@ link-qr-save = Salvar como { $format }
 # $bytes: o comprimento do link
 link-qr-too-long = O link é longo demais para um código QR ({ $bytes } bytes): copie-o em vez disso.
 link-qr-close = Q ou Esc fecha
+# The QR code dialog: its button that takes the web address typed
+link-qr-show = Mostrar o código QR
 link-notice-close = Fechar (Esc)
 
 ## Um link que não abre ($reason: por quê, como abaixo)

@@ -19,6 +19,8 @@ link-qr-save = Сохранить как { $format }
 # $bytes: длина ссылки
 link-qr-too-long = Ссылка слишком длинна для QR-кода ({ $bytes } байт): скопируйте её вместо этого.
 link-qr-close = Q или Esc закрывает
+# The QR code dialog: its button that takes the web address typed
+link-qr-show = Показать QR-код
 link-notice-close = Закрыть (Esc)
 
 ## Ссылка, которая не открывается ($reason: почему, как ниже)
