@@ -385,6 +385,10 @@ fn suggested_command(
     if let (Some(inside), Some(outside)) = (options.inside, options.outside) {
         add("--inside", Some(inside.to_string()));
         add("--outside", Some(outside.to_string()));
+    } else if let Some(inside) = &suggestion.inside {
+        // The lines print `entering` and a ratio: the indices it gives save a round trip.
+        add("--inside", Some(inside.clone()));
+        add("--outside", Some("1".to_owned()));
     }
     if let Some(precision) = options.precision {
         add("--precision", Some(precision.name().to_owned()));
@@ -478,6 +482,10 @@ pub(crate) fn suggest_pattern(
         let message = t!("check-suggest-none", lines = texts.len());
         return finished(&format!("check: {message}"), ExitCode::from(NOTHING_JUDGED));
     };
+    // Indices given are not guessed.
+    if options.inside.is_some() || options.outside.is_some() {
+        suggestion.inside = None;
+    }
     let command = suggested_command(file, options, reading, &suggestion, true);
     if let Err(e) = writeln!(io::stdout().lock(), "{command}") {
         return output_error("check", &e);

@@ -264,3 +264,74 @@ fn suggest_pattern_reads_json_lines_and_pbrt_s_eta_as_they_are() {
     let out = String::from_utf8_lossy(&output.stdout);
     assert!(out.contains("eta={_}"), "{out}");
 }
+
+/// The words of a command line `--suggest-pattern` printed, its pattern's quotes undone.
+fn words(command: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut rest = command.trim();
+    while !rest.is_empty() {
+        let (word, after) = if let Some(quoted) = rest.strip_prefix('\'') {
+            let end = quoted.find('\'').unwrap();
+            (quoted[..end].to_owned(), &quoted[end + 1..])
+        } else {
+            let end = rest.find(' ').unwrap_or(rest.len());
+            (rest[..end].to_owned(), &rest[end..])
+        };
+        out.push(word);
+        rest = after.trim_start();
+    }
+    out
+}
+
+#[test]
+fn a_suggested_command_passes_the_indices_when_the_lines_print_entering() {
+    // Issue 43, item 6: the command left out --inside and --outside although `entering` was
+    // printed, so its first run said only "pass --inside and --outside".
+    let glsl = "refract I=(0.6, -0.8, 0) N=(0, 1, 0) eta=0.666667 entering=true \
+                -> (0.4, -0.916515, 0)\n";
+    let output = cli::run(&["check", "--api", "glsl", "--suggest-pattern"], glsl);
+    let (out, said) = (
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr),
+    );
+    assert_eq!(output.status.code(), Some(0), "{said}");
+    assert!(out.contains("--inside 1.5 --outside 1 "), "{out}");
+    assert!(said.contains("read from the ratio"), "{said}");
+    // The command as printed judges the log at once: right, not "unchecked" (exit 4).
+    // Without its file: the log is given again as the test's own.
+    let command = words(&out);
+    let args: Vec<&str> = command[1..command.len() - 1]
+        .iter()
+        .map(String::as_str)
+        .collect();
+    let output = cli::run(&args, glsl);
+    let said = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(0), "{args:?}: {said}");
+    // Lines that print no ratio get glass in air, and say it is assumed.
+    let output = cli::run(&["check", "--suggest-pattern"], SMALLPT);
+    let (out, said) = (
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr),
+    );
+    assert!(out.contains("--inside 1.5 --outside 1 "), "{out}");
+    assert!(said.contains("assumed"), "{said}");
+}
+
+#[test]
+fn a_log_whose_lines_lack_indices_says_so_not_check_the_pattern() {
+    // Issue 43, item 6: every line read by a right pattern but none judged (no indices) was
+    // "No line was judged: check the pattern", exit 3.
+    let output = cli::run(
+        &[
+            "check",
+            "--pattern",
+            "REFR d={w} nl={n} into={entering} tdir={t_yours}",
+        ],
+        SMALLPT,
+    );
+    let said = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{said}");
+    assert!(!said.contains("check the pattern"), "{said}");
+    assert!(said.contains("the pattern is not at fault"), "{said}");
+    assert!(said.contains("--inside and --outside"), "{said}");
+}

@@ -440,7 +440,7 @@ impl Books {
                 Ok(ended.map_or_else(|| text.clone(), |summary| format!("{summary}\n{text}")))
             }
             Err(e) => {
-                self.count_unreadable();
+                self.count_unreadable(&e);
                 Err(e)
             }
         }
@@ -467,10 +467,10 @@ impl Books {
         }
     }
 
-    /// Counts a line that could not be read as a call.
-    fn count_unreadable(&mut self) {
+    /// Counts a line that could not be read as a call, for `error`.
+    fn count_unreadable(&mut self, error: &LineError) {
         self.tally.add("unreadable");
-        self.log.unreadable();
+        self.log.unreadable_for(|| error.to_string());
         self.all_ok = false;
     }
 
@@ -656,7 +656,7 @@ impl Session {
             Ok(Some(record)) => self.judge(&record).map(|judged| Some((record, judged))),
             Ok(None) => Ok(None),
             Err(e) => {
-                self.books.count_unreadable();
+                self.books.count_unreadable(&e);
                 Err(e)
             }
         }
@@ -671,7 +671,7 @@ impl Session {
         let judged = judge_record(record, &self.reader.options);
         match &judged {
             Ok(judgement) => self.books.count(judgement),
-            Err(_) => self.books.count_unreadable(),
+            Err(e) => self.books.count_unreadable(e),
         }
         judged
     }

@@ -41,6 +41,11 @@ fn loose_rounding(digits: u32, decimal: bool) -> f64 {
     }
 }
 
+/// The most significant digits of a call's numbers at which its short numbers (`0.6`) may be
+/// a fixed format's rounding (`%.1f`, Unity's "F2" at most 3 carried digits) rather than
+/// the values they say.
+const FIXED_FORMAT_DIGITS: u32 = 3;
+
 /// How closely each logged number can be trusted: its own rounding, or a few ulps of the
 /// student's working precision.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -84,12 +89,21 @@ impl Tolerance {
     #[must_use]
     pub(crate) fn loose(digits: &Digits, epsilon: f64) -> Self {
         let d = &digits.decimal;
+        // A short number beside longer vectors was printed by a shortest-text format (`%g`):
+        // it is the value it says. Beside vectors as short, it may be a fixed format's
+        // rounding.
+        let finest = [digits.incident, digits.normal, digits.result]
+            .into_iter()
+            .filter(|&n| n < 17)
+            .max()
+            .unwrap_or(0);
+        let fixed = |n: u32, decimal: bool| decimal && (n > 2 || finest <= FIXED_FORMAT_DIGITS);
         Self {
-            incident: loose_rounding(digits.incident, d.incident),
-            normal: loose_rounding(digits.normal, d.normal),
-            eta: loose_rounding(digits.eta, d.eta),
-            result: loose_rounding(digits.result, d.result),
-            travel: loose_rounding(digits.travel, d.travel),
+            incident: loose_rounding(digits.incident, fixed(digits.incident, d.incident)),
+            normal: loose_rounding(digits.normal, fixed(digits.normal, d.normal)),
+            eta: loose_rounding(digits.eta, fixed(digits.eta, d.eta)),
+            result: loose_rounding(digits.result, fixed(digits.result, d.result)),
+            travel: loose_rounding(digits.travel, d.travel && digits.travel > 2),
             epsilon,
             loose: true,
         }

@@ -196,10 +196,7 @@ pub(crate) fn returns<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<Ret
         formula: returned.formula().map(wide::<S>),
         nearby,
         borderline,
-        // A second look allows every argument's rounding at once, not one at a time.
-        distance: if tolerance.loose { 4.0 } else { 2.0 } * spread
-            + 4.0 * tolerance.result * size
-            + 16.0 * tolerance.epsilon,
+        distance: 2.0 * spread + 4.0 * tolerance.result * size + 16.0 * tolerance.epsilon,
         reflection: d - n * (2.0 * d.dot(n) / n.length_squared()),
         etap: match &returned {
             Returned::Pbrt(Some(r)) => Some(r.etap.to_f64()),

@@ -328,7 +328,18 @@ pub struct Suggestion {
     pub no_normal: bool,
     /// Nothing printed says which side the ray arrives from.
     pub no_side: bool,
+    /// The object's index as `--inside` takes it (with `--outside 1`) where the lines print
+    /// `entering`: read from the ratio they print (see [`inside_index`]), else glass's
+    /// ([`GLASS`], `inside_assumed`); `None` when they print no side, or the ratios of more
+    /// than one material.
+    pub inside: Option<String>,
+    /// Whether `inside` is glass's, assumed because the lines print no ratio of one material.
+    pub inside_assumed: bool,
 }
+
+/// The index `--suggest-pattern` assumes for an object whose lines print no ratio: glass's,
+/// the one the book, smallpt and pbrt's scenes use.
+pub const GLASS: &str = "1.5";
 
 /// The pattern for one record's lines, if they print the fields a check needs.
 fn pattern_for(dialect: Dialect, lines: &[&str]) -> Option<Suggestion> {
@@ -399,6 +410,8 @@ fn pattern_for(dialect: Dialect, lines: &[&str]) -> Option<Suggestion> {
         toward_origin,
         no_normal: !taken.contains(&normal_field(dialect)),
         no_side: !taken.contains(&"entering"),
+        inside: None,
+        inside_assumed: false,
     })
 }
 
@@ -432,6 +445,57 @@ fn reads(dialect: Dialect, suggestion: &Suggestion, lines: &[&str]) -> bool {
         .is_ok_and(|p| p.capture(&lines.join("\n")).is_some())
 }
 
+/// The object's index read from the ratio `pattern` reads in `lines`: a ratio r printed for
+/// a ray entering or leaving is the object's index over its surroundings' or the inverse,
+/// whichever way round the code (right or not) puts it, so the object's index is the larger
+/// of r and 1/r for an object denser than what is outside it (glass or water in air, taken
+/// as 1). Written to the digits the ratio was printed with.
+#[must_use]
+pub fn inside_index(dialect: Dialect, pattern: &Pattern, lines: &[&str]) -> Index {
+    let field = dialect.api().map_or("ratio", |api| fields::names(api).eta);
+    let span = pattern.lines();
+    let mut best: Option<(f64, u32)> = None;
+    for record in lines.windows(span) {
+        let text = record.join("\n");
+        let Some(found) = pattern.capture(&text) else {
+            continue;
+        };
+        let Some(number) = found
+            .iter()
+            .find(|(name, _)| *name == field)
+            .and_then(|(_, text)| parse_number(text).ok())
+            .filter(|n| n.value.is_finite() && n.value > 0.0)
+        else {
+            continue;
+        };
+        let index = number.value.max(1.0 / number.value);
+        match best {
+            Some((seen, _)) if (index / seen - 1.0).abs() > 0.01 => return Index::Several,
+            Some((_, digits)) if digits >= number.digits => {}
+            _ => best = Some((index, number.digits)),
+        }
+    }
+    let Some((index, digits)) = best.filter(|(index, _)| *index > 1.0 + 1e-6) else {
+        return Index::Unprinted;
+    };
+    let digits = usize::try_from(digits.clamp(1, 9)).unwrap_or(9);
+    // `{:.*e}` rounds to that many significant digits; read back, it prints plainly.
+    format!("{index:.*e}", digits - 1)
+        .parse::<f64>()
+        .map_or(Index::Unprinted, |rounded| Index::Read(rounded.to_string()))
+}
+
+/// What a log's printed ratios say of the object's index ([`inside_index`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Index {
+    /// The index, as `--inside` takes it.
+    Read(String),
+    /// No line prints a ratio (other than 1).
+    Unprinted,
+    /// Lines print the ratios of more than one material.
+    Several,
+}
+
 /// The pattern for the first record found in `lines` (a log's first lines): a record on one
 /// line, else over up to [`MAX_PATTERN_LINES`] consecutive lines (values printed over several
 /// lines, as Node prints a typed array, are joined first).
@@ -449,7 +513,18 @@ pub fn suggest(dialect: Dialect, lines: &[&str]) -> Option<Suggestion> {
         }
         for count in 1..=MAX_PATTERN_LINES.min(logical.len() - first) {
             let record = &logical[first..first + count];
-            if let Some(s) = pattern_for(dialect, record).filter(|s| reads(dialect, s, record)) {
+            if let Some(mut s) = pattern_for(dialect, record).filter(|s| reads(dialect, s, record))
+            {
+                if !s.no_side {
+                    let read = Pattern::parse(dialect, &s.pattern)
+                        .map_or(Index::Unprinted, |p| inside_index(dialect, &p, &logical));
+                    s.inside_assumed = read == Index::Unprinted;
+                    s.inside = match read {
+                        Index::Read(index) => Some(index),
+                        Index::Unprinted => Some(GLASS.to_owned()),
+                        Index::Several => None,
+                    };
+                }
                 return Some(s);
             }
         }
@@ -469,6 +544,16 @@ pub fn hints(suggestion: &Suggestion, dialect: Dialect) -> Vec<String> {
     }
     if suggestion.no_side {
         out.push(t!("check-suggest-no-side"));
+    }
+    match &suggestion.inside {
+        Some(inside) if suggestion.inside_assumed => {
+            out.push(t!(
+                "check-suggest-indices-assumed",
+                inside = inside.as_str()
+            ));
+        }
+        Some(inside) => out.push(t!("check-suggest-indices-read", inside = inside.as_str())),
+        None => {}
     }
     out
 }
@@ -528,6 +613,39 @@ mod tests {
         assert_eq!(pattern(Dialect::Physics, log), "wi={w} é wo={t_yours}");
         let long = format!("{} t=1 2 3", "[".repeat(100_000));
         assert_eq!(pattern(Dialect::Physics, &long), "");
+    }
+
+    #[test]
+    fn the_object_s_index_is_read_from_the_printed_ratio_where_entering_is_printed() {
+        let glsl = Dialect::Api(Api::Glsl);
+        let log = "I (0.6, -0.8, 0) N (0, 1, 0) eta 0.666667 entering true -> (0.4, -0.9, 0)\n\
+                   I (0.6, 0.8, 0) N (0, -1, 0) eta 1.5 entering false -> (0.9, 0.4, 0)";
+        let lines: Vec<&str> = log.lines().collect();
+        let s = suggest(glsl, &lines).unwrap();
+        assert_eq!(
+            (s.inside.as_deref(), s.inside_assumed),
+            (Some("1.5"), false)
+        );
+        // An inverted ratio (the student's bug) gives the same index: it is not trusted.
+        let inverted = log
+            .replace("0.666667", "1.5 ")
+            .replace("eta 1.5 entering false", "eta 0.666667 entering false");
+        let lines: Vec<&str> = inverted.lines().collect();
+        assert_eq!(
+            suggest(glsl, &lines).unwrap().inside.as_deref(),
+            Some("1.5")
+        );
+        // Two materials: no one index; no ratio printed: glass assumed; no side: none needed.
+        let two = format!(
+            "{log}\nI (0.6, -0.8, 0) N (0, 1, 0) eta 0.75 entering true -> (0.45, -0.89, 0)"
+        );
+        let lines: Vec<&str> = two.lines().collect();
+        assert_eq!(suggest(glsl, &lines).unwrap().inside, None);
+        let smallpt = "REFR d=(0.6 -0.8 0) nl=(0 1 0) into=1 tdir=(0.4 -0.9 0)";
+        let s = suggest(Dialect::Physics, &[smallpt]).unwrap();
+        assert_eq!((s.inside.as_deref(), s.inside_assumed), (Some(GLASS), true));
+        let sideless = "I (0.6, -0.8, 0) N (0, 1, 0) eta 0.666667 -> (0.4, -0.9, 0)";
+        assert_eq!(suggest(glsl, &[sideless]).unwrap().inside, None);
     }
 
     #[test]

@@ -179,6 +179,8 @@ pub struct LogTally {
     normal_outward: [usize; 2],
     /// Lines that told `entering`, and `travel`.
     told: [usize; 2],
+    /// Why the first line that could not be read as a call could not.
+    first_unreadable: Option<String>,
 }
 
 /// One finding of the diagnosis: a mistake (or none), the lines it explains and the fix.
@@ -193,7 +195,8 @@ pub struct Finding {
     #[serde(rename = "where")]
     pub place: String,
     /// The fix, in the renderer's own words and code (empty for `none`); for `unchecked`,
-    /// what to log or pass.
+    /// what to log or pass; for `unreadable` where no line was judged, why the first line
+    /// could not be.
     pub fix: String,
     /// The other mistake of a pair, when one mistake alone does not explain the lines.
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -256,8 +259,15 @@ impl Finding {
     /// The finding in a sentence: the verdict's (`first`) or a later one's.
     #[must_use]
     pub fn sentence(&self, first: bool) -> String {
-        if self.code == UNREADABLE {
+        if self.code == UNREADABLE && self.fix.is_empty() {
             return t!("check-diagnosis-unreadable", lines = self.lines);
+        }
+        if self.code == UNREADABLE {
+            return t!(
+                "check-diagnosis-none-judged",
+                lines = self.lines,
+                error = &self.fix
+            );
         }
         if self.code == TOO_FEW_DIGITS {
             return t!(
@@ -393,6 +403,15 @@ impl LogTally {
         self.unreadable += 1;
     }
 
+    /// Counts a line that could not be read as a call for the reason `why` gives (kept for
+    /// the first such line: a log none of whose lines is judged says why).
+    pub fn unreadable_for(&mut self, why: impl FnOnce() -> String) {
+        self.unreadable();
+        if self.first_unreadable.is_none() {
+            self.first_unreadable = Some(why());
+        }
+    }
+
     /// Whether a kind's lines are wrong: judged so, or reflections where the log shows no
     /// sampling.
     fn failing(&self, kind: &Kind) -> bool {
@@ -429,11 +448,18 @@ impl LogTally {
 
     /// `findings` with the lines that could not be read as the verdict where nothing else is
     /// wrong: a log with unread lines is not passed, and its summary says so as its status does.
+    /// A log none of whose lines is judged, although some were read by the pattern, says why
+    /// the first could not be judged (issue 43: not "check the pattern" when it is right).
     fn with_unreadable(&self, mut findings: Vec<Finding>) -> Vec<Finding> {
         let clean = findings
             .first()
-            .is_some_and(|f| [NONE, UNCHECKED, TOO_FEW_DIGITS].contains(&f.code));
+            .is_none_or(|f| [NONE, UNCHECKED, TOO_FEW_DIGITS].contains(&f.code));
         if self.unreadable > 0 && clean {
+            let why = if findings.is_empty() {
+                self.first_unreadable.clone().unwrap_or_default()
+            } else {
+                String::new()
+            };
             findings.retain(|f| f.code != NONE);
             findings.insert(
                 0,
@@ -441,7 +467,7 @@ impl LogTally {
                     code: UNREADABLE,
                     lines: self.unreadable,
                     place: String::new(),
-                    fix: String::new(),
+                    fix: why,
                     with: Vec::new(),
                     alike: Vec::new(),
                     tell_apart: Vec::new(),

@@ -369,3 +369,8 @@ check-suggest-json-lines = das Log besteht aus JSON Lines, deren Schlüssel die 
 check-undecided = An den gedruckten Ziffern nicht zu entscheiden: so gedruckt sieht der Aufruf aus wie { $shown }, aber Zahlen innerhalb ihrer Rundung machen ihn zu einem richtigen Aufruf (ein Vorzeichen, an dem das Urteil hängt, von N·I, von k oder einer Lösung, liegt näher an null, als die Ziffern zeigen). Drucke mehr Ziffern, um ihn zu beurteilen.
 check-diagnosis-too-few-digits = An den gedruckten Ziffern nicht als richtig oder falsch zu erkennen, { $place }: jede ist so gedruckt falsch, aber richtig für Zahlen innerhalb ihrer Rundung, weil ein Vorzeichen, an dem das Urteil hängt (von N·I, von k = 1 − η²·(1 − (N·I)²) oder einer Lösung), näher an null liegt, als die Genauigkeit des Logs zeigt. Die Genauigkeit des Logs ist zu gering: { $fix }.
 check-too-few-digits-fix = drucke jede Zahl mit mindestens 6 signifikanten Ziffern (printf in C oder einem Shader: %.6g; C#: ToString("G9"), Unitys Vector3: ToString("F6"); C++-Streams: std::setprecision(9); Rust: {"{"}:?{"}"}; Python: repr)
+
+# check --suggest-pattern and a log none of whose lines is judged (issue 43, item 6)
+check-suggest-indices-read = --inside { $inside } --outside 1 sind aus dem ausgegebenen Verhältnis gelesen, für ein Objekt, das dichter ist als seine Umgebung (Glas oder Wasser in Luft): gib die Indizes deiner Szene an, wenn sie abweichen
+check-diagnosis-none-judged = Keine der { $lines } Zeilen, die das Muster gelesen hat, ließ sich beurteilen; am Muster liegt es also nicht. Die erste sagt: { $error }.
+check-suggest-indices-assumed = --inside { $inside } --outside 1 sind Glas in Luft, angenommen, weil die Zeilen kein Verhältnis ausgeben: gib die Indizes deiner Szene an, wenn sie abweichen

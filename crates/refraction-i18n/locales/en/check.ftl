@@ -369,3 +369,8 @@ check-suggest-json-lines = the log is JSON Lines, whose keys name the fields: it
 check-undecided = Cannot tell from the printed digits: as printed the call looks like { $shown }, but numbers within their rounding make it a right call (a sign the verdict rests on, of N·I, of k or of a root, is closer to zero than the digits show). Print more digits to judge it.
 check-diagnosis-too-few-digits = Cannot be told right or wrong from the printed digits, { $place }: each is wrong as printed but right for numbers within their rounding, because a sign the verdict rests on (of N·I, of k = 1 − η²·(1 − (N·I)²), or of a root) is closer to zero than the log's precision shows. The log's precision is too low: { $fix }.
 check-too-few-digits-fix = print every number with at least 6 significant digits (printf in C or a shader: %.6g; C#: ToString("G9"), Unity's Vector3: ToString("F6"); C++ streams: std::setprecision(9); Rust: {"{"}:?{"}"}; Python: repr)
+
+# check --suggest-pattern and a log none of whose lines is judged (issue 43, item 6)
+check-suggest-indices-read = --inside { $inside } --outside 1 are read from the ratio the lines print, for an object denser than what is outside it (glass or water in air): give your scene's indices if they differ
+check-diagnosis-none-judged = None of the { $lines } lines the pattern read could be judged, so the pattern is not at fault; the first says: { $error }.
+check-suggest-indices-assumed = --inside { $inside } --outside 1 are glass in air, assumed as the lines print no ratio: give your scene's indices if they differ

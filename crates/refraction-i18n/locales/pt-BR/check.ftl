@@ -369,3 +369,8 @@ check-suggest-json-lines = o log é JSON Lines, cujas chaves nomeiam os campos: 
 check-undecided = Não dá para dizer pelos dígitos impressos: como foi impressa, a chamada parece { $shown }, mas números dentro do seu arredondamento a tornam uma chamada certa (um sinal de que o veredito depende, de N·I, de k ou de uma raiz, está mais perto de zero do que os dígitos mostram). Imprima mais dígitos para julgá-la.
 check-diagnosis-too-few-digits = Não dá para dizer se estão certas ou erradas pelos dígitos impressos, { $place }: cada uma está errada como foi impressa, mas certa para números dentro do seu arredondamento, porque um sinal de que o veredito depende (de N·I, de k = 1 − η²·(1 − (N·I)²) ou de uma raiz) está mais perto de zero do que a precisão do log mostra. A precisão do log é baixa demais: { $fix }.
 check-too-few-digits-fix = imprima cada número com pelo menos 6 dígitos significativos (printf em C ou num shader: %.6g; C#: ToString("G9"), o Vector3 do Unity: ToString("F6"); streams de C++: std::setprecision(9); Rust: {"{"}:?{"}"}; Python: repr)
+
+# check --suggest-pattern and a log none of whose lines is judged (issue 43, item 6)
+check-suggest-indices-read = --inside { $inside } --outside 1 foram lidos da razão que as linhas imprimem, para um objeto mais denso do que o que o cerca (vidro ou água no ar): informe os índices da sua cena se forem outros
+check-diagnosis-none-judged = Nenhuma das { $lines } linhas que o padrão leu pôde ser julgada, então o padrão não é o problema; a primeira diz: { $error }.
+check-suggest-indices-assumed = --inside { $inside } --outside 1 são vidro no ar, supostos porque as linhas não imprimem nenhuma razão: informe os índices da sua cena se forem outros
