@@ -380,11 +380,43 @@ fn got(record: &Record, api: Api) -> Result<Got, LineError> {
     }
 }
 
-fn precision(record: &Record, options: &Options) -> Result<Precision, LineError> {
+/// Whether `record`'s vectors `names` were printed as single-precision floats print
+/// themselves: every component the shortest text that reads back as its `f32` (Rust's `{}`
+/// and `{:?}` of an `f32`, `core::fmt::float`'s `float_to_decimal_display` through
+/// `flt2dec::strategy::grisu::format_shortest`; C#'s `float.ToString()`), one of them with
+/// more than 7 significant digits, which a fixed format (`%g`, `%.6f`) would not print.
+fn printed_as_f32(record: &Record, names: &[&str]) -> bool {
+    let components: Vec<f64> = names
+        .iter()
+        .filter_map(|name| match record.get(name) {
+            Some(Value::Vector(v)) => Some(*v),
+            _ => None,
+        })
+        .flatten()
+        .collect();
+    #[expect(clippy::cast_possible_truncation)]
+    let shortest_f32 = |x: f64| {
+        let single = x as f32;
+        single.is_finite() && single.to_string().parse::<f64>().is_ok_and(|y| y == x)
+    };
+    let long = |x: f64| format!("{x:.6e}").parse::<f64>().is_ok_and(|y| y != x);
+    !components.is_empty()
+        && components.iter().all(|&x| shortest_f32(x))
+        && components.iter().any(|&x| long(x))
+}
+
+/// The student's precision: the line's `precision`, `--precision`, single where the vectors
+/// were printed as `f32`s print themselves (issue 43: f32 code read as f64 was "not unit
+/// length" on half its lines), else the dialect's usual one.
+fn precision(record: &Record, options: &Options, vectors: &[&str]) -> Result<Precision, LineError> {
     match label(record, "precision").as_deref() {
-        None => Ok(options
-            .precision
-            .unwrap_or_else(|| fields::usual_precision(options.dialect))),
+        None => Ok(options.precision.unwrap_or_else(|| {
+            if printed_as_f32(record, vectors) {
+                Precision::F32
+            } else {
+                fields::usual_precision(options.dialect)
+            }
+        })),
         Some("f32" | "float") => Ok(Precision::F32),
         Some("f64" | "double") => Ok(Precision::F64),
         Some(other) => Err(LineError::UnknownPrecision {
@@ -422,7 +454,7 @@ impl Call {
             args,
             got: got(record, api)?,
             truth: truth(record, options)?,
-            precision: precision(record, options)?,
+            precision: precision(record, options, &[n.incident, n.normal, n.result])?,
             digits: Digits::of(record, n.incident, n.normal, n.eta, n.result),
             path: label(record, "path"),
             point: vector(record, "point")?,

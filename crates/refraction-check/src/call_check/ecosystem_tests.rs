@@ -187,3 +187,78 @@ fn no_printed_precision_calls_a_right_line_wrong() {
         }
     }
 }
+
+/// A log of `count` hits of a Rust port of the book's `refract` on `f32` (glam's `Vec3`),
+/// each line printed with `println!("{} {} {}", ...)` per vector: Rust prints an `f32` as the
+/// shortest text that reads back as it (`core::fmt::float`, `float_to_decimal_display`), eight
+/// or nine digits where a double shows sixteen. Only calls of `refract` are logged.
+fn rust_f32_log(count: usize) -> String {
+    let mut rng = Rng(1718);
+    let mut log = String::new();
+    let v = |v: Vec3| format!("{} {} {}", v.x, v.y, v.z);
+    while log.lines().count() < count {
+        let hit = Hit::random(&mut rng);
+        // The book normalises in the renderer's own precision: its lengths are off by an ulp.
+        let (uv, n) = (hit.incident.normalize(), hit.normal.normalize());
+        let args = Args {
+            incident: uv,
+            normal: n,
+            eta: hit.eta,
+        };
+        let Returned::Rtiow(answer) = Api::Rtiow.call(args) else {
+            unreachable!("the book's refract")
+        };
+        // dielectric::scatter reflects where it cannot refract, and logs only refract's calls.
+        if answer.cannot_refract {
+            continue;
+        }
+        log.push_str(&format!(
+            "uv={} n={} ratio={} front_face={} refracted={}\n",
+            v(uv),
+            v(n),
+            hit.eta,
+            hit.entering,
+            v(answer.refracted),
+        ));
+    }
+    log
+}
+
+#[test]
+fn f32_code_printed_in_full_is_judged_in_f32() {
+    let options = Options {
+        inside: Some(1.5),
+        outside: Some(1.0),
+        ..Options::new(Api::Rtiow)
+    };
+    let pattern = Pattern::parse(
+        Api::Rtiow,
+        "uv={uv} n={n} ratio={etai_over_etat} front_face={entering} refracted={refracted}",
+    )
+    .unwrap();
+    let log = rust_f32_log(1718);
+    // Its vectors' lengths are off by more than their printed digits allow a double.
+    let lengths_off = log
+        .lines()
+        .filter(|line| {
+            let uv: Vec<f64> = line[3..line.find(" n=").unwrap()]
+                .split(' ')
+                .map(|x| x.parse().unwrap())
+                .collect();
+            (DVec3::new(uv[0], uv[1], uv[2]).length() - 1.0).abs() > 2e-8
+        })
+        .count();
+    assert!(lengths_off > 300, "only {lengths_off} lines exercise f32");
+    let mut session = Session::new(options, Format::Pattern(pattern), false, false);
+    let mut out = Vec::new();
+    session.run(log.as_bytes(), &mut out, 1).unwrap();
+    let out = String::from_utf8(out).unwrap();
+    let wrong: Vec<&str> = out.lines().filter(|l| l.contains("\"ok\":false")).collect();
+    assert!(
+        wrong.is_empty(),
+        "{} lines wrong: {:?}",
+        wrong.len(),
+        wrong.first()
+    );
+    assert_eq!(session.summary().diagnosis[0].code, "none");
+}
