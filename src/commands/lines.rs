@@ -479,7 +479,11 @@ pub(crate) fn suggest_pattern(
         return finished(&format!("check: {said}"), ExitCode::SUCCESS);
     }
     let Some(mut suggestion) = suggest::suggest(dialect, &texts) else {
-        let message = t!("check-suggest-none", lines = texts.len());
+        let message = if suggest::column_printed(&texts) {
+            t!("check-suggest-column-vectors", lines = texts.len())
+        } else {
+            t!("check-suggest-none", lines = texts.len())
+        };
         return finished(&format!("check: {message}"), ExitCode::from(NOTHING_JUDGED));
     };
     // Indices given are not guessed.

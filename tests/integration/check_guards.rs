@@ -335,3 +335,15 @@ fn a_log_whose_lines_lack_indices_says_so_not_check_the_pattern() {
     assert!(said.contains("the pattern is not at fault"), "{said}");
     assert!(said.contains("--inside and --outside"), "{said}");
 }
+
+#[test]
+fn suggest_pattern_refuses_column_printed_vectors_with_what_to_print() {
+    // Issue 43, item 2: Eigen's `cout << v` prints a Vector3d one coefficient a row.
+    let eigen = "d =\n0.642788\n-0.766044\n       0\nn =\n0\n1\n0\ninto 1\n\
+                 t =\n0.428525\n-0.90353\n      0\n";
+    let output = cli::run(&["check", "--suggest-pattern"], eigen);
+    let said = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(3), "{said}");
+    assert!(said.contains("one number a line"), "{said}");
+    assert!(said.contains("v.transpose()"), "{said}");
+}

@@ -262,3 +262,53 @@ fn f32_code_printed_in_full_is_judged_in_f32() {
     );
     assert_eq!(session.summary().diagnosis[0].code, "none");
 }
+
+/// A `Vector3d` as Eigen's `std::cout << v` prints it: one coefficient a row, each right-
+/// aligned to the widest at the stream's precision, 6 significant digits (Eigen, Eigen/src/
+/// Core/IO.h, `print_matrix` with the default `IOFormat`).
+fn eigen_column(v: DVec3) -> String {
+    let texts = v.to_array().map(|x| {
+        let text = format!("{x:.6}");
+        let text = text.trim_end_matches('0').trim_end_matches('.');
+        if text == "-0" {
+            "0".to_owned()
+        } else {
+            text.to_owned()
+        }
+    });
+    let width = texts.iter().map(String::len).max().unwrap_or(0);
+    texts.map(|t| format!("{t:>width$}")).join("\n")
+}
+
+#[test]
+fn eigen_column_vectors_are_refused_with_what_to_print() {
+    let (d, n, t) = (
+        DVec3::new(0.642_788, -0.766_044, 0.0),
+        DVec3::Y,
+        DVec3::new(0.428_525, -0.903_53, 0.0),
+    );
+    let log = format!(
+        "d =\n{}\nn =\n{}\ninto 1\nt =\n{}\n",
+        eigen_column(d),
+        eigen_column(n),
+        eigen_column(t)
+    );
+    let lines: Vec<&str> = log.lines().collect();
+    assert_eq!(
+        super::suggest::suggest(super::Dialect::Physics, &lines),
+        None
+    );
+    assert!(super::suggest::column_printed(&lines));
+    // A vector a pattern reads over its column's lines is refused, never joined wrong.
+    let column = eigen_column(d);
+    let read = super::record::from_text(super::fields::Kind::Vector, "w", &column);
+    let error = read.expect_err("a column vector was read");
+    assert!(
+        matches!(error, super::LineError::ColumnVector { .. }),
+        "{error:?}"
+    );
+    assert!(error.to_string().contains("v.transpose()"), "{error}");
+    // The same numbers on one line are read.
+    let row = column.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(super::record::from_text(super::fields::Kind::Vector, "w", &row).is_ok());
+}

@@ -168,6 +168,13 @@ pub enum LineError {
         #[source]
         error: VectorError,
     },
+    /// A vector whose numbers were printed one a line (Eigen's `cout << v`, a column of a
+    /// matrix): refused, as the lines cannot tell which numbers belong together.
+    #[error("{}", t!("check-field-column-vector", field = field))]
+    ColumnVector {
+        /// The field.
+        field: String,
+    },
     /// A flag's text that is not true/false or 1/0.
     #[error("{}", t!("check-field-not-flag-got", field = field, text = text))]
     NotFlagText {

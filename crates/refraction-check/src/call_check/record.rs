@@ -132,6 +132,14 @@ impl Written {
     }
 }
 
+/// Whether a vector's text holds a line break between its numbers: printed one number a line
+/// (Eigen's `cout << v`, numpy's wrapped rows), whose lines a pattern cannot join for sure.
+fn column_printed(text: &str) -> bool {
+    let numbers_before = |line: &str| line.chars().any(|c| c.is_ascii_digit());
+    let lines: Vec<&str> = text.lines().filter(|l| numbers_before(l)).collect();
+    lines.len() > 1
+}
+
 fn flag_text(text: &str) -> Option<bool> {
     match text.trim().to_ascii_lowercase().as_str() {
         "true" | "1" | "yes" => Some(true),
@@ -171,6 +179,9 @@ pub(crate) fn from_text(kind: Kind, name: &str, text: &str) -> Result<(Value, Wr
     };
     match kind {
         Kind::VectorOrNull if is_null_text(text) => Ok((Value::Null, Written::default())),
+        Kind::Vector | Kind::VectorOrNull if column_printed(text) => Err(LineError::ColumnVector {
+            field: name.to_owned(),
+        }),
         Kind::Vector | Kind::VectorOrNull => parse_vector(text)
             .map(|v| (Value::Vector(v.value), Written::of_text(v.digits, text)))
             .map_err(wrap),

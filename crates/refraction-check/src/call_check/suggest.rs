@@ -532,6 +532,24 @@ pub fn suggest(dialect: Dialect, lines: &[&str]) -> Option<Suggestion> {
     None
 }
 
+/// Whether `lines` print vectors one number a line (Eigen's `cout << v` of a `Vector3d`, a
+/// column): three or more lines in a row that hold a single number and nothing else.
+#[must_use]
+pub fn column_printed(lines: &[&str]) -> bool {
+    let lone = |line: &&str| {
+        let t = line.trim().trim_end_matches([',', ';']);
+        !t.is_empty() && parse_number(t).is_ok()
+    };
+    let mut run = 0;
+    for line in lines {
+        run = if lone(line) { run + 1 } else { 0 };
+        if run >= 3 {
+            return true;
+        }
+    }
+    false
+}
+
 /// What to tell the user besides the pattern: the options the log needs, in sentences.
 #[must_use]
 pub fn hints(suggestion: &Suggestion, dialect: Dialect) -> Vec<String> {

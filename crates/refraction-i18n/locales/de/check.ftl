@@ -374,3 +374,7 @@ check-too-few-digits-fix = drucke jede Zahl mit mindestens 6 signifikanten Ziffe
 check-suggest-indices-read = --inside { $inside } --outside 1 sind aus dem ausgegebenen Verhältnis gelesen, für ein Objekt, das dichter ist als seine Umgebung (Glas oder Wasser in Luft): gib die Indizes deiner Szene an, wenn sie abweichen
 check-diagnosis-none-judged = Keine der { $lines } Zeilen, die das Muster gelesen hat, ließ sich beurteilen; am Muster liegt es also nicht. Die erste sagt: { $error }.
 check-suggest-indices-assumed = --inside { $inside } --outside 1 sind Glas in Luft, angenommen, weil die Zeilen kein Verhältnis ausgeben: gib die Indizes deiner Szene an, wenn sie abweichen
+
+# check: vectors printed one number a line (issue 43, item 2)
+check-field-column-vector = `{ $field }` ist eine Zahl pro Zeile ausgegeben (wie Eigens cout << v einen Vektor ausgibt): die Zeilen lassen sich nicht sicher zusammenfügen; gib jeden Vektor in einer Zeile aus (Eigen: v.transpose(); nalgebra: v.transpose() oder {"{"}:?{"}"}; numpy: np.array2string(v, max_line_width=1000) oder v.tolist())
+check-suggest-column-vectors = die ersten { $lines } Zeilen geben Vektoren mit einer Zahl pro Zeile aus (wie Eigens cout << v), was kein Muster sicher zusammenfügen kann: gib jeden Vektor in einer Zeile aus (Eigen: v.transpose(); nalgebra: v.transpose() oder {"{"}:?{"}"}; numpy: v.tolist()), jeden nach seinem Namen, dann frag erneut

@@ -374,3 +374,7 @@ check-too-few-digits-fix = print every number with at least 6 significant digits
 check-suggest-indices-read = --inside { $inside } --outside 1 are read from the ratio the lines print, for an object denser than what is outside it (glass or water in air): give your scene's indices if they differ
 check-diagnosis-none-judged = None of the { $lines } lines the pattern read could be judged, so the pattern is not at fault; the first says: { $error }.
 check-suggest-indices-assumed = --inside { $inside } --outside 1 are glass in air, assumed as the lines print no ratio: give your scene's indices if they differ
+
+# check: vectors printed one number a line (issue 43, item 2)
+check-field-column-vector = `{ $field }` is printed one number a line (as Eigen's cout << v prints a vector): its lines cannot be joined for sure; print each vector on one line (Eigen: v.transpose(); nalgebra: v.transpose() or {"{"}:?{"}"}; numpy: np.array2string(v, max_line_width=1000) or v.tolist())
+check-suggest-column-vectors = the first { $lines } lines print vectors one number a line (as Eigen's cout << v does), which no pattern can join for sure: print each vector on one line (Eigen: v.transpose(); nalgebra: v.transpose() or {"{"}:?{"}"}; numpy: v.tolist()), each after its name, then ask again

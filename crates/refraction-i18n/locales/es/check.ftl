@@ -374,3 +374,7 @@ check-too-few-digits-fix = imprime cada número con al menos 6 cifras significat
 check-suggest-indices-read = --inside { $inside } --outside 1 se leen de la razón que imprimen las líneas, para un objeto más denso que lo que lo rodea (vidrio o agua en aire): da los índices de tu escena si son otros
 check-diagnosis-none-judged = Ninguna de las { $lines } líneas que leyó el patrón pudo juzgarse, así que el patrón no tiene la culpa; la primera dice: { $error }.
 check-suggest-indices-assumed = --inside { $inside } --outside 1 son vidrio en aire, supuestos porque las líneas no imprimen ninguna razón: da los índices de tu escena si son otros
+
+# check: vectors printed one number a line (issue 43, item 2)
+check-field-column-vector = `{ $field }` se imprime con un número por línea (como imprime un vector el cout << v de Eigen): sus líneas no se pueden unir con seguridad; imprime cada vector en una línea (Eigen: v.transpose(); nalgebra: v.transpose() o {"{"}:?{"}"}; numpy: np.array2string(v, max_line_width=1000) o v.tolist())
+check-suggest-column-vectors = las primeras { $lines } líneas imprimen vectores con un número por línea (como el cout << v de Eigen), que ningún patrón puede unir con seguridad: imprime cada vector en una línea (Eigen: v.transpose(); nalgebra: v.transpose() o {"{"}:?{"}"}; numpy: v.tolist()), cada uno tras su nombre, y vuelve a pedirlo

@@ -374,3 +374,7 @@ check-too-few-digits-fix = imprime chaque nombre avec au moins 6 chiffres signif
 check-suggest-indices-read = --inside { $inside } --outside 1 sont lus dans le rapport que les lignes impriment, pour un objet plus dense que ce qui l’entoure (verre ou eau dans l’air) : donne les indices de ta scène s’ils diffèrent
 check-diagnosis-none-judged = Aucune des { $lines } lignes lues par le motif n’a pu être jugée ; le motif n’est donc pas en cause. La première dit : { $error }.
 check-suggest-indices-assumed = --inside { $inside } --outside 1 sont du verre dans l’air, supposés car les lignes n’impriment aucun rapport : donne les indices de ta scène s’ils diffèrent
+
+# check: vectors printed one number a line (issue 43, item 2)
+check-field-column-vector = `{ $field }` est imprimé un nombre par ligne (comme le cout << v d’Eigen imprime un vecteur) : ses lignes ne peuvent pas être jointes à coup sûr ; imprime chaque vecteur sur une ligne (Eigen : v.transpose() ; nalgebra : v.transpose() ou {"{"}:?{"}"} ; numpy : np.array2string(v, max_line_width=1000) ou v.tolist())
+check-suggest-column-vectors = les { $lines } premières lignes impriment des vecteurs un nombre par ligne (comme le cout << v d’Eigen), qu’aucun motif ne peut joindre à coup sûr : imprime chaque vecteur sur une ligne (Eigen : v.transpose() ; nalgebra : v.transpose() ou {"{"}:?{"}"} ; numpy : v.tolist()), chacun après son nom, puis redemande

@@ -374,3 +374,7 @@ check-too-few-digits-fix = imprima cada número com pelo menos 6 dígitos signif
 check-suggest-indices-read = --inside { $inside } --outside 1 foram lidos da razão que as linhas imprimem, para um objeto mais denso do que o que o cerca (vidro ou água no ar): informe os índices da sua cena se forem outros
 check-diagnosis-none-judged = Nenhuma das { $lines } linhas que o padrão leu pôde ser julgada, então o padrão não é o problema; a primeira diz: { $error }.
 check-suggest-indices-assumed = --inside { $inside } --outside 1 são vidro no ar, supostos porque as linhas não imprimem nenhuma razão: informe os índices da sua cena se forem outros
+
+# check: vectors printed one number a line (issue 43, item 2)
+check-field-column-vector = `{ $field }` é impresso com um número por linha (como o cout << v do Eigen imprime um vetor): suas linhas não podem ser juntadas com segurança; imprima cada vetor em uma linha (Eigen: v.transpose(); nalgebra: v.transpose() ou {"{"}:?{"}"}; numpy: np.array2string(v, max_line_width=1000) ou v.tolist())
+check-suggest-column-vectors = as primeiras { $lines } linhas imprimem vetores com um número por linha (como o cout << v do Eigen), que nenhum padrão consegue juntar com segurança: imprima cada vetor em uma linha (Eigen: v.transpose(); nalgebra: v.transpose() ou {"{"}:?{"}"}; numpy: v.tolist()), cada um depois do seu nome, e peça de novo

@@ -382,3 +382,7 @@ check-too-few-digits-fix = печатайте каждое число хотя �
 check-suggest-indices-read = --inside { $inside } --outside 1 прочитаны из отношения, которое печатают строки, для объекта плотнее того, что его окружает (стекло или вода в воздухе): укажите индексы вашей сцены, если они другие
 check-diagnosis-none-judged = Ни одну из { $lines } строк, прочитанных шаблоном, не удалось оценить, так что дело не в шаблоне; первая сообщает: { $error }.
 check-suggest-indices-assumed = --inside { $inside } --outside 1 — это стекло в воздухе, принятое, потому что строки не печатают отношения: укажите индексы вашей сцены, если они другие
+
+# check: vectors printed one number a line (issue 43, item 2)
+check-field-column-vector = `{ $field }` напечатан по одному числу в строке (как cout << v в Eigen печатает вектор): его строки нельзя надёжно соединить; печатайте каждый вектор в одной строке (Eigen: v.transpose(); nalgebra: v.transpose() или {"{"}:?{"}"}; numpy: np.array2string(v, max_line_width=1000) или v.tolist())
+check-suggest-column-vectors = первые { $lines } строк печатают векторы по одному числу в строке (как cout << v в Eigen), что ни один шаблон не может надёжно соединить: печатайте каждый вектор в одной строке (Eigen: v.transpose(); nalgebra: v.transpose() или {"{"}:?{"}"}; numpy: v.tolist()), каждый после своего имени, и спросите снова
