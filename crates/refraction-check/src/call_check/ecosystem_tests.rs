@@ -312,3 +312,48 @@ fn eigen_column_vectors_are_refused_with_what_to_print() {
     let row = column.split_whitespace().collect::<Vec<_>>().join(" ");
     assert!(super::record::from_text(super::fields::Kind::Vector, "w", &row).is_ok());
 }
+
+const SMALLPT_PATTERN: &str = "REFR d=({w}) nl=({n}) into={entering} tdir=({t_yours})";
+
+#[test]
+fn any_renderer_s_two_decimal_log_calls_no_right_line_wrong() {
+    // smallpt's own refraction printed with printf("%.2f"): read by `check` without --api.
+    let mut rng = Rng(2);
+    let v = |v: Vec3| format!("{:.2} {:.2} {:.2}", v.x, v.y, v.z);
+    let mut log = String::new();
+    for _ in 0..1000 {
+        let hit = Hit::random(&mut rng);
+        let t = hit.refracted(hit.eta);
+        if t == Vec3::ZERO {
+            continue; // smallpt reflects there and prints no refraction
+        }
+        let into = u8::from(hit.entering);
+        let (d, n) = (v(hit.incident), v(hit.normal));
+        log.push_str(&format!(
+            "REFR d=({d}) nl=({n}) into={into} tdir=({})\n",
+            v(t)
+        ));
+    }
+    let options = Options {
+        inside: Some(1.5),
+        outside: Some(1.0),
+        ..Options::new(super::Dialect::Physics)
+    };
+    let pattern = Pattern::parse(super::Dialect::Physics, SMALLPT_PATTERN).unwrap();
+    let mut session = Session::new(options, Format::Pattern(pattern), false, false);
+    let mut out = Vec::new();
+    session.run(log.as_bytes(), &mut out, 1).unwrap();
+    let answers: Vec<Value> = String::from_utf8(out)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    let wrong: Vec<&Value> = answers.iter().filter(|a| named(a)).collect();
+    assert!(
+        wrong.is_empty(),
+        "{} right lines called wrong: {:?}",
+        wrong.len(),
+        wrong.first()
+    );
+    assert_ne!(session.summary().verdict(), crate::Verdict::Mistake);
+}

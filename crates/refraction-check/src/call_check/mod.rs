@@ -224,7 +224,10 @@ impl Judgement {
     pub fn fails(&self) -> bool {
         match self {
             Self::Api(judged) => !judged.1.ok && !judged.1.undecided,
-            Self::Physics(judged) => !judged.verdict.ok,
+            Self::Physics(judged) => {
+                !judged.verdict.ok
+                    && judged.evidence.unchecked != Some(crate::diagnosis::Missing::Digits)
+            }
         }
     }
 

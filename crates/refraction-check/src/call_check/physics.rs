@@ -20,7 +20,7 @@ use super::error::{LineError, Role};
 use super::record::{Record, Value};
 use crate::diagnosis::Code;
 use crate::diagnosis::formula::{self, Outcome, Situation};
-use crate::diagnosis::{self, Codes, Evidence, Readings, Side, Told};
+use crate::diagnosis::{self, Codes, Evidence, Missing, Readings, Side, Told};
 use refraction_model::log_map::{self, LinePoint};
 use refraction_tools::candidate_check::{self, MATCH_ANGLE, Match, Verdict};
 use refraction_tools::solve::{Precision, Request};
@@ -38,6 +38,9 @@ pub struct Case {
     pub ratio: Option<f64>,
     /// Whether the ray enters the object, if logged.
     pub entering: Option<bool>,
+    /// The coarsest relative rounding of the printed `w`, `n` and `t_yours` (half a unit in
+    /// their last digit; 0 where they say exact values).
+    pub rounding: f64,
 }
 
 fn vector(record: &Record, name: &str) -> Option<[f64; 3]> {
@@ -141,8 +144,25 @@ impl Case {
             yours,
             ratio: number(record, "ratio"),
             entering,
+            rounding: rounding(record),
         })
     }
+}
+
+/// The coarsest relative rounding of `record`'s printed `w`, `n` and `t_yours`: a short
+/// number (`0.6`) beside longer vectors is the value it says (see
+/// [`Tolerance::loose`](super::readings::Tolerance::loose)).
+fn rounding(record: &Record) -> f64 {
+    let written = ["w", "n", "t_yours"].map(|name| record.written(name));
+    let finest = written.iter().map(|w| w.digits).filter(|&d| d < 17).max();
+    let fixed = finest.unwrap_or(0) <= super::readings::FIXED_FORMAT_DIGITS;
+    written
+        .iter()
+        .map(|w| {
+            let decimal = w.decimal && (w.digits > 2 || fixed);
+            super::readings::loose_rounding(w.digits, decimal)
+        })
+        .fold(0.0, f64::max)
 }
 
 /// The refraction for ratio `mu` of a ray travelling along unit `d` onto the unit normal `n`
@@ -379,13 +399,15 @@ pub(crate) fn judge(case: &Case) -> Result<Judged, LineError> {
         })
     });
     let ok = (verdict.ok || sampled.is_some()) && !wrong_ratio;
-    let alternatives = if ok {
+    let undecided = !ok && !wrong_ratio && digits_allow(case, logged);
+    let alternatives = if ok || undecided {
         Vec::new()
     } else {
         alternatives(case, &r, &verdict)
     };
     let evidence = Evidence {
-        ok,
+        // Not a wrong line: counted with the lines its log cannot check.
+        ok: ok || undecided,
         alternatives: if ok && sampled.is_some() {
             vec![vec![Code::FalseTir]]
         } else {
@@ -400,13 +422,17 @@ pub(crate) fn judge(case: &Case) -> Result<Judged, LineError> {
         band: diagnosis::band(log_map::incidence_deg(r.travel, r.facing_normal)),
         transmitted: matches!(logged, Outcome::Direction(_)) && !(r.is_tir() && verdict.ok),
         sample: sampled.map(f64::ln),
-        unchecked: None,
+        unchecked: undecided.then_some(Missing::Digits),
         told: Told {
             entering: case.entering.is_some(),
             travel: true,
         },
     };
-    let explanation = explanation(&verdict, ok, alternatives.first(), sampled);
+    let explanation = if undecided {
+        super::explain::undecided("")
+    } else {
+        explanation(&verdict, ok, alternatives.first(), sampled)
+    };
     let point = map_point(case, &r, &evidence);
     let readings = readings(case, &r, ok && sampled.is_none(), logged);
     Ok(Judged {
@@ -425,6 +451,56 @@ pub(crate) fn judge(case: &Case) -> Result<Judged, LineError> {
         readings,
         point,
     })
+}
+
+/// Whether the printed digits allow `case`'s line to be right: some `w` and `n` within their
+/// rounding (each component moved both ways, and `w` along the normal, which moves cosθi and
+/// k the most) refract to what was logged, within the spread that rounding makes and the
+/// result's own rounding. Lines printed with their exact values (rounding 0) are not looked
+/// at again.
+fn digits_allow(case: &Case, logged: Outcome) -> bool {
+    let step = 2.0 * case.rounding;
+    if step == 0.0 {
+        return false;
+    }
+    let (w, n) = (
+        DVec3::from_array(case.request.w),
+        DVec3::from_array(case.request.n),
+    );
+    let nudged = |v: DVec3, axis: DVec3| v + axis * (step * v.length());
+    let mut moved = vec![(w, n)];
+    for axis in [DVec3::X, DVec3::Y, DVec3::Z, n.normalize_or_zero()] {
+        for sign in [1.0, -1.0] {
+            moved.push((nudged(w, sign * axis), n));
+            moved.push((w, nudged(n, sign * axis)));
+        }
+    }
+    let results: Vec<Option<DVec3>> = moved
+        .iter()
+        .map(|&(w, n)| {
+            let r = refract(&Incidence::<f64> {
+                w,
+                n,
+                mu_i: case.request.mu_i,
+                mu_t: case.request.mu_t,
+                convention: case.request.convention,
+            })
+            .ok()?;
+            r.transmission.map(|t| t.t)
+        })
+        .collect();
+    let directions: Vec<DVec3> = results.iter().flatten().copied().collect();
+    match logged {
+        Outcome::Nothing => results.iter().any(Option::is_none),
+        Outcome::Direction(v) => {
+            let spread = directions
+                .iter()
+                .flat_map(|a| directions.iter().map(move |b| (*a - *b).length()))
+                .fold(0.0, f64::max);
+            let allowed = spread + 4.0 * case.rounding * v.length().max(1.0);
+            directions.iter().any(|t| (v - *t).length() <= allowed)
+        }
+    }
 }
 
 /// The JSON answer for one line: `check`'s fields and the mistakes.
@@ -466,6 +542,7 @@ pub(crate) fn answer_line(judged: &Judged) -> String {
 pub(crate) fn tally_kind(judged: &Judged) -> &'static str {
     let v = &judged.verdict;
     match (v.ok, v.matches) {
+        (false, _) if judged.evidence.unchecked == Some(Missing::Digits) => super::UNDECIDED,
         (true, _) if judged.evidence.sample.is_some() => super::SAMPLED,
         (true, _) => "ok",
         // The right direction from the wrong logged ratio, or of the wrong length.

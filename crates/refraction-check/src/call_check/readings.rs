@@ -33,7 +33,7 @@ fn rounding(digits: u32) -> f64 {
 /// format may have printed it (`decimal`: it shows a point or an exponent): half a unit in
 /// the last digit, however few digits (`0.6` printed by `%.1f` is anything from 0.55 to 0.65).
 /// Numbers without a point (`0`, `1`) say what they are.
-fn loose_rounding(digits: u32, decimal: bool) -> f64 {
+pub(crate) fn loose_rounding(digits: u32, decimal: bool) -> f64 {
     if !decimal || digits == 0 || digits >= 17 {
         rounding(digits)
     } else {
@@ -44,7 +44,7 @@ fn loose_rounding(digits: u32, decimal: bool) -> f64 {
 /// The most significant digits of a call's numbers at which its short numbers (`0.6`) may be
 /// a fixed format's rounding (`%.1f`, Unity's "F2" at most 3 carried digits) rather than
 /// the values they say.
-const FIXED_FORMAT_DIGITS: u32 = 3;
+pub(crate) const FIXED_FORMAT_DIGITS: u32 = 3;
 
 /// How closely each logged number can be trusted: its own rounding, or a few ulps of the
 /// student's working precision.

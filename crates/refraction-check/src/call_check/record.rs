@@ -123,11 +123,12 @@ impl Written {
         }
     }
 
-    /// Digits of numbers held as values: `decimal` when one has a fractional part.
-    fn of_values(digits: u32, values: &[f64]) -> Self {
+    /// Digits of numbers held as values (JSON's, or a caller's): never a fixed format's
+    /// rounding, as JSON writers print the shortest text that reads back as the number.
+    fn of_values(digits: u32) -> Self {
         Self {
             digits,
-            decimal: values.iter().any(|x| x.is_finite() && x.fract() != 0.0),
+            decimal: false,
         }
     }
 }
@@ -202,7 +203,7 @@ fn json_number(value: &Json, name: &str) -> Result<(f64, Written), LineError> {
     match value {
         Json::Number(n) => {
             let x = n.as_f64().unwrap_or(f64::NAN);
-            Ok((x, Written::of_values(digits_of(x), &[x])))
+            Ok((x, Written::of_values(digits_of(x))))
         }
         Json::Null => Ok((f64::NAN, Written::default())),
         Json::String(text) => parse_number(text)
@@ -225,7 +226,7 @@ fn json_vector(value: &Json, name: &str) -> Result<(Value, Written), LineError> 
             for (i, (slot, item)) in out.iter_mut().zip(items).enumerate() {
                 *slot = json_number(item, &format!("{name}[{i}]"))?.0;
             }
-            let written = Written::of_values(json_vector_digits(out), &out);
+            let written = Written::of_values(json_vector_digits(out));
             Ok((Value::Vector(out), written))
         }
         Json::Array(items) => Err(LineError::NotThree {
@@ -422,7 +423,11 @@ mod tests {
             ],
         )
         .unwrap();
-        assert_eq!(json, text);
+        // The same values and digits; only text may be a fixed format's rounding.
+        for name in ["uv", "n", "etai_over_etat", "refracted", "entering", "path"] {
+            assert_eq!(json.get(name), text.get(name), "{name}");
+            assert_eq!(json.digits(name), text.digits(name), "{name}");
+        }
         assert_eq!(json.digits("refracted"), 7, "0.916515: six places");
         assert_eq!(json.digits("n"), 1, "0 1 0: no places");
         assert_eq!(json.get("entering"), Some(&Value::Flag(true)));
