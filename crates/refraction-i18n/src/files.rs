@@ -8,8 +8,10 @@ use crate::Locale;
 /// exporting (`files`), and a whole log judged in the window: opening it, its diagnosis, its
 /// failure map and its failing lines saved as tests (`logs`), and lesson decks: the tool that
 /// builds one, stepping through it, its notes and handout, the built-in decks (`decks`), and the
-/// explorer in a browser: links to it, the QR code, what a page does otherwise (`web`).
-pub const FILES: [&str; 7] = [
+/// explorer in a browser: links to it, the QR code, what a page does otherwise (`web`), and the
+/// Python package `refraction_check`: its arguments refused, its table of what was found
+/// (`python`).
+pub const FILES: [&str; 8] = [
     "explorer.ftl",
     "diagram.ftl",
     "check.ftl",
@@ -17,6 +19,7 @@ pub const FILES: [&str; 7] = [
     "logs.ftl",
     "decks.ftl",
     "web.ftl",
+    "python.ftl",
 ];
 
 /// One language's files, in the order of [`FILES`].
@@ -30,19 +33,20 @@ macro_rules! folder {
             include_str!(concat!("../locales/", $code, "/logs.ftl")),
             include_str!(concat!("../locales/", $code, "/decks.ftl")),
             include_str!(concat!("../locales/", $code, "/web.ftl")),
+            include_str!(concat!("../locales/", $code, "/python.ftl")),
         ]
     };
 }
 
-const EN: [&str; 7] = folder!("en");
-const DE: [&str; 7] = folder!("de");
-const ES: [&str; 7] = folder!("es");
-const FR: [&str; 7] = folder!("fr");
-const PT_BR: [&str; 7] = folder!("pt-BR");
-const RU: [&str; 7] = folder!("ru");
+const EN: [&str; 8] = folder!("en");
+const DE: [&str; 8] = folder!("de");
+const ES: [&str; 8] = folder!("es");
+const FR: [&str; 8] = folder!("fr");
+const PT_BR: [&str; 8] = folder!("pt-BR");
+const RU: [&str; 8] = folder!("ru");
 
 /// The text of `locale`'s files, in the order of [`FILES`].
-pub(crate) fn sources(locale: Locale) -> &'static [&'static str; 7] {
+pub(crate) fn sources(locale: Locale) -> &'static [&'static str; 8] {
     match locale {
         Locale::En => &EN,
         Locale::De => &DE,
