@@ -124,13 +124,11 @@ pub enum ArgumentError {
 
 /// A shape as Python writes it: `(4, 2)`, `(3,)`, `()`.
 fn shape_text(shape: &[usize]) -> String {
-    match shape {
-        [one] => format!("({one},)"),
-        _ => {
-            let sizes: Vec<String> = shape.iter().map(ToString::to_string).collect();
-            format!("({})", sizes.join(", "))
-        }
+    if let [one] = shape {
+        return format!("({one},)");
     }
+    let sizes: Vec<String> = shape.iter().map(ToString::to_string).collect();
+    format!("({})", sizes.join(", "))
 }
 
 fn unknown_argument(argument: &str, dialect: Dialect) -> String {

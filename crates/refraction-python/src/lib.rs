@@ -1,5 +1,5 @@
 //! The log diagnosis as a Python package, `refraction_check`: a renderer's refraction calls
-//! held in arrays (NumPy, Dr.Jit, torch on the CPU, lists) judged one by one and diagnosed as
+//! held in arrays (`NumPy`, `Dr.Jit`, torch on the CPU, lists) judged one by one and diagnosed as
 //! a whole by `refraction-check`, the code `check` runs on the same calls logged as JSON Lines.
 //!
 //! ```python
@@ -21,7 +21,7 @@
 //!   [`refraction_check::check_records`];
 //! - [`report`]: what was found, as Python shows it: a short text and a notebook's table;
 //! - `module` (with the `extension-module` feature, which only maturin turns on): the Python
-//!   module itself, PyO3 and numpy.
+//!   module itself, `PyO3` and numpy.
 //!
 //! Every argument that cannot be used is an [`ArgumentError`] naming it (Python's
 //! `ValueError`).

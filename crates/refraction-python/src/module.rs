@@ -1,7 +1,7 @@
 //! The Python module `refraction_check._native` (PyO3): `check()` and the `Checked` it
 //! returns. Everything past reading Python's objects is the crate's own code, tested in Rust.
 
-use numpy::{PyArray1, PyReadonlyArrayDyn, PyUntypedArrayMethods};
+use numpy::{PyArray1, PyReadonlyArrayDyn, PyUntypedArrayMethods as _};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
@@ -29,7 +29,7 @@ fn repr(value: &Bound<'_, PyAny>) -> String {
 }
 
 /// Why `argument` does not read as numbers: numpy's own words, or the kind of values found.
-fn not_numbers(argument: &str, reason: impl ToString) -> ArgumentError {
+fn not_numbers(argument: &str, reason: &impl ToString) -> ArgumentError {
     ArgumentError::NotNumbers {
         argument: argument.to_owned(),
         reason: reason.to_string(),
@@ -79,7 +79,7 @@ fn vectors_without_none<'py>(value: &Bound<'py, PyAny>) -> PyResult<Option<Bound
     PyList::new(value.py(), rows).map(Some)
 }
 
-/// An argument's numbers as `f64` through numpy's `asarray` (NumPy, Dr.Jit and CPU torch
+/// An argument's numbers as `f64` through numpy's `asarray` (`NumPy`, `Dr.Jit` and CPU torch
 /// arrays, lists, numbers), with whether they were `float32` or narrower.
 fn numbers(
     py: Python<'_>,
@@ -96,17 +96,17 @@ fn numbers(
         };
         let raw = match numpy.call_method1("asarray", (&given,)) {
             Ok(raw) => raw,
-            Err(e) => return Ok(Err(not_numbers(argument, e))),
+            Err(e) => return Ok(Err(not_numbers(argument, &e))),
         };
         let dtype = raw.getattr("dtype")?;
         let code: String = dtype.getattr("kind")?.extract()?;
         if !matches!(code.as_str(), "b" | "i" | "u" | "f" | "O") {
-            return Ok(Err(not_numbers(argument, dtype.str()?)));
+            return Ok(Err(not_numbers(argument, &dtype.str()?)));
         }
         let narrow = code == "f" && dtype.getattr("itemsize")?.extract::<usize>()? <= 4;
         let wide = match raw.call_method1("astype", (numpy.getattr("float64")?,)) {
             Ok(wide) => wide,
-            Err(e) => return Ok(Err(not_numbers(argument, e))),
+            Err(e) => return Ok(Err(not_numbers(argument, &e))),
         };
         let wide: PyReadonlyArrayDyn<'_, f64> = wide.extract()?;
         let array = Array {
@@ -116,7 +116,7 @@ fn numbers(
         };
         Ok(Ok((array, narrow)))
     };
-    read().unwrap_or_else(|e| Err(not_numbers(argument, e)))
+    read().unwrap_or_else(|e| Err(not_numbers(argument, &e)))
 }
 
 /// A word field's column (`path`, a call's own `precision` or `convention`): one word for every
@@ -132,10 +132,10 @@ fn words(
     if let Ok((array, _)) = numbers(py, argument, Kind::Label, value) {
         return arrays::column(Kind::Label, argument, &array);
     }
-    let items = value.try_iter().map_err(|e| not_numbers(argument, e))?;
+    let items = value.try_iter().map_err(|e| not_numbers(argument, &e))?;
     let rows = items
         .map(|item| {
-            let item = item.map_err(|e| not_numbers(argument, e))?;
+            let item = item.map_err(|e| not_numbers(argument, &e))?;
             Ok((!item.is_none()).then(|| item.to_string()))
         })
         .collect::<Result<_, ArgumentError>>()?;
@@ -146,10 +146,10 @@ fn words(
 fn calls(
     py: Python<'_>,
     dialect: Dialect,
-    fields: Option<&Bound<'_, PyDict>>,
+    fields: &Bound<'_, PyDict>,
 ) -> Result<(Calls, bool), ArgumentError> {
     let (mut calls, mut narrow) = (Calls::new(dialect), false);
-    for (key, value) in fields.into_iter().flat_map(|f| f.iter()) {
+    for (key, value) in fields {
         let argument = key.to_string();
         let (field, kind) = calls::field(dialect, &argument)?;
         let column = if value.is_none() {
@@ -173,10 +173,11 @@ fn index(
 ) -> Result<Option<f64>, ArgumentError> {
     value
         .map(|v| {
-            v.extract::<f64>().map_err(|_| ArgumentError::Index {
-                argument,
-                value: repr(v),
-            })
+            v.extract::<f64>()
+                .map_err(|_not_a_number| ArgumentError::Index {
+                    argument,
+                    value: repr(v),
+                })
         })
         .transpose()
 }
@@ -190,7 +191,7 @@ fn word(
         .map(|v| {
             v.cast::<PyString>()
                 .map(ToString::to_string)
-                .map_err(|_| refused(repr(v)))
+                .map_err(|_not_a_word| refused(repr(v)))
         })
         .transpose()
 }
@@ -205,7 +206,8 @@ fn normal(
         return Ok(Some(Normal::Text(text.to_string())));
     }
     let refused = || ArgumentError::Normal { value: repr(value) };
-    let (array, _) = numbers(py, "normal", Kind::Vector, value).map_err(|_| refused())?;
+    let (array, _) =
+        numbers(py, "normal", Kind::Vector, value).map_err(|_not_numbers| refused())?;
     match array.values.as_slice() {
         &[x, y, z] if array.shape == [3] => Ok(Some(Normal::Vector([x, y, z]))),
         _ => Err(refused()),
@@ -216,7 +218,7 @@ fn normal(
 /// `convention`): the option's word, after adding the field's column to `fields`.
 fn option_or_field<'py>(
     name: &str,
-    value: Option<Bound<'py, PyAny>>,
+    value: Option<&Bound<'py, PyAny>>,
     fields: &Bound<'py, PyDict>,
 ) -> PyResult<Option<String>> {
     match value {
@@ -235,7 +237,7 @@ fn option_or_field<'py>(
 /// `result` for GLSL; `w`, `n`, `mu_i`, `mu_t`, `t_yours`, `ratio` without `api`...), and so
 /// are the truth fields `from_`, `to`, `travel`, `entering`, `path`: vectors of shape `(N, 3)`
 /// or `(3,)` (one for every call), numbers and flags of shape `(N,)` or one, anything numpy's
-/// `asarray` takes (NumPy, Dr.Jit, torch on the CPU, lists). A row of NaN or a `None` logged
+/// `asarray` takes (`NumPy`, `Dr.Jit`, torch on the CPU, lists). A row of NaN or a `None` logged
 /// nothing, as `null` does on a JSON line. `check`'s options are keywords too: `inside`,
 /// `outside`, `normal`, `convention`, `precision` (f32 when the arrays are float32), `renderer`.
 ///
@@ -249,28 +251,29 @@ fn option_or_field<'py>(
 )]
 fn check<'py>(
     py: Python<'py>,
-    api: Option<Bound<'py, PyAny>>,
-    inside: Option<Bound<'py, PyAny>>,
-    outside: Option<Bound<'py, PyAny>>,
-    normal: Option<Bound<'py, PyAny>>,
-    convention: Option<Bound<'py, PyAny>>,
-    precision: Option<Bound<'py, PyAny>>,
-    renderer: Option<Bound<'py, PyAny>>,
-    fields: Option<Bound<'py, PyDict>>,
+    api: Option<&Bound<'py, PyAny>>,
+    inside: Option<&Bound<'py, PyAny>>,
+    outside: Option<&Bound<'py, PyAny>>,
+    normal: Option<&Bound<'py, PyAny>>,
+    convention: Option<&Bound<'py, PyAny>>,
+    precision: Option<&Bound<'py, PyAny>>,
+    renderer: Option<&Bound<'py, PyAny>>,
+    fields: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Checked> {
-    let api = word(api.as_ref(), |name| ArgumentError::UnknownApi { name })?;
+    let api = word(api, |name| ArgumentError::UnknownApi { name })?;
     let dialect = options::dialect(api.as_deref())?;
-    let fields = fields.unwrap_or_else(|| PyDict::new(py));
+    // A copy: the caller's own dict (`check(**mine)`) is never changed.
+    let fields = fields.map_or_else(|| Ok(PyDict::new(py)), |f| f.copy())?;
     let convention = option_or_field("convention", convention, &fields)?;
     let precision = option_or_field("precision", precision, &fields)?;
-    let (calls, narrow) = calls(py, dialect, Some(&fields))?;
+    let (calls, narrow) = calls(py, dialect, &fields)?;
     let given = Given {
-        inside: index("inside", inside.as_ref())?,
-        outside: index("outside", outside.as_ref())?,
-        normal: self::normal(py, normal.as_ref())?,
+        inside: index("inside", inside)?,
+        outside: index("outside", outside)?,
+        normal: self::normal(py, normal)?,
         convention,
         precision,
-        renderer: word(renderer.as_ref(), |value| ArgumentError::UnknownWord {
+        renderer: word(renderer, |value| ArgumentError::UnknownWord {
             argument: "renderer",
             value,
             expected: options::RENDERERS,
@@ -389,7 +392,7 @@ mod _native {
 
     #[pymodule_init]
     fn init(module: &pyo3::Bound<'_, pyo3::types::PyModule>) -> pyo3::PyResult<()> {
-        use pyo3::types::PyModuleMethods;
+        use pyo3::types::PyModuleMethods as _;
         module.add("__version__", env!("CARGO_PKG_VERSION"))
     }
 }

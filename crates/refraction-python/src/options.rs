@@ -89,7 +89,11 @@ fn normal(given: &Normal) -> Result<[f64; 3], ArgumentError> {
             };
             match ["x", "y", "z"].iter().position(|a| *a == axis) {
                 Some(i) => core::array::from_fn(|j| if i == j { sign } else { 0.0 }),
-                None => parse_vector(text).map_err(|_| refused(text.clone()))?.value,
+                None => {
+                    parse_vector(text)
+                        .map_err(|_not_a_vector| refused(text.clone()))?
+                        .value
+                }
             }
         }
     };

@@ -184,24 +184,30 @@ impl Report {
                     .map(|(row, code, why)| vec![row.to_string(), code, why]),
             );
         }
-        html + "</div>"
+        html.push_str("</div>");
+        html
     }
 }
 
 /// An HTML table of `rows` under `headings`, every cell escaped.
 fn table(headings: &[String], rows: impl Iterator<Item = Vec<String>>) -> String {
-    let cells = |tag: &str, cells: &[String]| {
-        let cells: String = cells
-            .iter()
-            .map(|c| format!("<{tag} style=\"text-align:left\">{}</{tag}>", escape(c)))
-            .collect();
-        format!("<tr>{cells}</tr>")
+    let row = |tag: &str, cells: &[String]| {
+        let mut row = String::from("<tr>");
+        for cell in cells {
+            row.push_str(&format!(
+                "<{tag} style=\"text-align:left\">{}</{tag}>",
+                escape(cell)
+            ));
+        }
+        row.push_str("</tr>");
+        row
     };
-    let body: String = rows.map(|row| cells("td", &row)).collect();
-    format!(
-        "<table><thead>{}</thead><tbody>{body}</tbody></table>",
-        cells("th", headings)
-    )
+    let mut table = format!("<table><thead>{}</thead><tbody>", row("th", headings));
+    for cells in rows {
+        table.push_str(&row("td", &cells));
+    }
+    table.push_str("</tbody></table>");
+    table
 }
 
 /// `text` as HTML text: `&`, `<`, `>` and quotes written as entities.
