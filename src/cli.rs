@@ -174,10 +174,10 @@ pub enum Command {
         #[arg(long, value_name = "NAME", value_parser = parse_api)]
         api: Option<Api>,
         /// The index inside the object: with --outside, "entering" gives "from" and "to".
-        #[arg(long, value_name = "X", requires = "outside", value_parser = parse_index)]
+        #[arg(long, value_name = "X", requires = "outside", allow_hyphen_values = true, value_parser = parse_index)]
         inside: Option<f64>,
         /// The index outside the object.
-        #[arg(long, value_name = "Y", requires = "inside", value_parser = parse_index)]
+        #[arg(long, value_name = "Y", requires = "inside", allow_hyphen_values = true, value_parser = parse_index)]
         outside: Option<f64>,
         /// The precision your code computes in, unless a line says (default: f32 for glsl,
         /// pbrt and mitsuba, f64 for rtiow and without --api).
@@ -221,7 +221,7 @@ pub enum Command {
         /// Without --api: the normal of lines that print none, as +z, -z, +x... or "x y z" (a
         /// local frame's +z in Mitsuba and Tungsten), taken as the outward normal: with
         /// --inside and --outside, each ray's side follows from it.
-        #[arg(long, value_name = "+z|X Y Z", conflicts_with = "api", value_parser = parse_normal)]
+        #[arg(long, value_name = "+z|X Y Z", conflicts_with = "api", allow_hyphen_values = true, value_parser = parse_normal)]
         normal: Option<[f64; 3]>,
         /// Whose code the log comes from, so that the fix names the line to change in it:
         /// mitsuba, tungsten, cycles, threejs, pbrt, smallpt, rtiow, glsl (with --api, the
@@ -394,12 +394,24 @@ pub fn parse_normal(text: &str) -> Result<[f64; 3], ArgError> {
     let v = refraction_tools::vector_text::parse_vector(text)
         .map_err(ArgError::Normal)?
         .value;
-    if v.iter().all(|c| c.is_finite()) && v != [0.0; 3] {
-        Ok(v)
-    } else {
-        Err(ArgError::ZeroNormal(text.to_owned()))
+    if !v.iter().all(|c| c.is_finite()) || v == [0.0; 3] {
+        return Err(ArgError::ZeroNormal(text.to_owned()));
     }
+    // Scaled by the largest component first, so that the length neither underflows nor
+    // overflows on the way.
+    let largest = v.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
+    let length = largest * glam::DVec3::from_array(v.map(|c| c / largest)).length();
+    // Shorter, its dot product with a ray's direction underflows (every ray read as
+    // entering): issue 40. Taken at unit length, so that every line's dot product is exact.
+    if length < MIN_NORMAL_LENGTH {
+        return Err(ArgError::ShortNormal(text.to_owned()));
+    }
+    Ok(v.map(|c| c / length))
 }
+
+/// The shortest `--normal` taken: √(the smallest normal f64), below which products with it
+/// lose their digits.
+const MIN_NORMAL_LENGTH: f64 = 1.5e-154;
 
 /// Reads `--renderer NAME`.
 ///
@@ -466,6 +478,12 @@ pub enum ArgError {
     /// A `--normal` of zero length or with a component that is not finite.
     #[error("--normal must be a finite vector other than zero, not {0}")]
     ZeroNormal(String),
+    /// A `--normal` too short for its products with a direction to keep their digits.
+    #[error(
+        "--normal {0} is too short to tell a side by (its length is under 1.5e-154): give \
+         the normal at about unit length"
+    )]
+    ShortNormal(String),
     /// An unknown `--renderer`.
     #[error("unknown renderer \"{0}\": expected one of {known}", known = names(Renderer::ALL.iter().map(|r| r.name())))]
     Renderer(String),

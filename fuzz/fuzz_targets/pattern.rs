@@ -1,7 +1,9 @@
 //! A `--pattern` of up to thousands of placeholders and a line to match: the first two bytes
 //! give how many times the pattern's middle repeats (up to 65,535), the rest up to the first
-//! newline is that middle, and what follows is the line. Parsing answers with a pattern or a
-//! message, and matching a line ends (the fuzzer's timeout catches a super-linear match).
+//! newline is that middle, and what follows is the line, each tab of it widened to a run of
+//! 100,000 spaces (issue 40: a long run of spaces made matching quadratic). Parsing answers
+//! with a pattern or a message, and matching a line ends (the fuzzer's timeout catches a
+//! super-linear match).
 #![no_main]
 
 #[path = "message.rs"]
@@ -22,6 +24,7 @@ libfuzzer_sys::fuzz_target!(|data: &[u8]| {
     ) else {
         return;
     };
+    let line = line.replacen('\t', &" ".repeat(100_000), 10);
     // Placeholders in the thousands: a middle of `{_} | ` repeated 2,000 times and more.
     let text = format!(
         "uv={{uv}} {} n={{n}} r={{refracted}}",
@@ -29,7 +32,7 @@ libfuzzer_sys::fuzz_target!(|data: &[u8]| {
     );
     match Pattern::parse(Api::Rtiow, &text) {
         Ok(pattern) => {
-            if let Some(captured) = pattern.capture(line) {
+            if let Some(captured) = pattern.capture(&line) {
                 assert!(captured.iter().all(|(_, t)| line.contains(t)));
             }
         }

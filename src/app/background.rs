@@ -28,6 +28,11 @@ pub(super) fn spawn<T: Send + 'static>(work: impl FnOnce() -> T + Send + 'static
 impl<T> Job<T> {
     /// Whether the work has ended.
     #[must_use]
+    #[cfg_attr(
+        target_arch = "wasm32",
+        // untranslated: a lint's reason, for developers.
+        expect(clippy::unused_self, reason = "a desktop's job asks its thread")
+    )]
     pub(super) fn is_finished(&self) -> bool {
         #[cfg(not(target_arch = "wasm32"))]
         return self.handle.is_finished();
@@ -39,6 +44,13 @@ impl<T> Job<T> {
     ///
     /// # Errors
     /// The work panicked: the panic's payload.
+    #[cfg_attr(
+        target_arch = "wasm32",
+        expect(
+            clippy::unnecessary_wraps,
+            reason = "a desktop's thread may have panicked"
+        )
+    )]
     pub(super) fn join(self) -> std::thread::Result<T> {
         #[cfg(not(target_arch = "wasm32"))]
         return self.handle.join();

@@ -81,6 +81,7 @@ fn summary_target(path: &Path, input: &Input, replace: bool) -> Result<(), Start
         .is_some_and(|f| refraction_files::names_open_file(path, f))
     {
         return Err(StartError::IsTheLog {
+            option: "--summary",
             path: path_buf(),
             log: input.name.clone(),
         });
@@ -100,8 +101,51 @@ fn summary_target(path: &Path, input: &Input, replace: bool) -> Result<(), Start
     }
 }
 
-/// Why `check` cannot start: its log cannot be opened, or its `--summary` file may not be
-/// written. Each message names the file, in the command line's English.
+/// Whether `a` and `b` name the same place: the same path, the same file name in the same
+/// folder (however the folder is named), or the same existing regular file under two names.
+fn same_place(a: &Path, b: &Path) -> bool {
+    let place = |p: &Path| {
+        let folder = p
+            .parent()
+            .filter(|f| !f.as_os_str().is_empty())
+            .unwrap_or_else(|| Path::new("."));
+        folder
+            .canonicalize()
+            .ok()
+            .zip(p.file_name().map(ToOwned::to_owned))
+    };
+    // A regular file only: a FIFO would wait for a writer when opened.
+    let is_file = std::fs::metadata(a).is_ok_and(|m| m.is_file());
+    a == b
+        || place(a).is_some_and(|p| Some(p) == place(b))
+        || (is_file && File::open(a).is_ok_and(|f| refraction_files::names_open_file(b, &f)))
+}
+
+/// Refuses `--tests` naming the log being read or the `--summary` file: one of them would be
+/// lost (issue 40).
+fn outputs_apart(input: &Input, reading: &Reading<'_>) -> Result<(), StartError> {
+    let Some(tests) = reading.tests else {
+        return Ok(());
+    };
+    if let Some(summary) = reading.summary.filter(|s| same_place(s, tests)) {
+        return Err(StartError::Twice(summary.to_path_buf()));
+    }
+    if input
+        .file
+        .as_ref()
+        .is_some_and(|f| refraction_files::names_open_file(tests, f))
+    {
+        return Err(StartError::IsTheLog {
+            option: "--tests",
+            path: tests.to_path_buf(),
+            log: input.name.clone(),
+        });
+    }
+    Ok(())
+}
+
+/// Why `check` cannot start: its log cannot be opened, or its `--summary` or `--tests` file may
+/// not be written. Each message names the file, in the command line's English.
 #[derive(Debug, thiserror::Error)]
 enum StartError {
     /// The log cannot be opened.
@@ -115,9 +159,11 @@ enum StartError {
     /// The summary's path cannot be written (its own message names it).
     #[error(transparent)]
     Unwritable(io::Error),
-    /// The summary's path is the log being read.
-    #[error("cannot write {}: it is the log being read ({log}); give --summary another file", path.display())]
+    /// The summary's (or the tests') path is the log being read.
+    #[error("cannot write {}: it is the log being read ({log}); give {option} another file", path.display())]
     IsTheLog {
+        /// The option that names it: `--summary` or `--tests`.
+        option: &'static str,
         /// The summary's path.
         path: PathBuf,
         /// The log's name as messages give it.
@@ -138,6 +184,13 @@ enum StartError {
         .0.display()
     )]
     NotASummary(PathBuf),
+    /// `--summary` and `--tests` name the same file.
+    #[error(
+        "--summary and --tests both name {}: one would write over the other; give each its \
+         own file",
+        .0.display()
+    )]
+    Twice(PathBuf),
 }
 
 /// How `check` reads its lines and what it writes besides the answers.
@@ -194,6 +247,20 @@ fn write_tests(session: &Session, language: TestLanguage, path: &Path) -> Result
     ))
 }
 
+/// Refuses `--inside` and `--outside` that no line could be judged with, before a line is
+/// read (issue 40: `--inside 1e308` failed every line instead).
+fn usable_indices(options: &Options) -> Result<(), ExitCode> {
+    options.usable_indices().map_err(|e| {
+        let (inside, outside) = options.sides().unwrap_or_default();
+        let precision = options.precision_or_usual().name();
+        let said = format!(
+            "--inside {inside:?} --outside {outside:?}: {e}; in {precision} no line could be judged \
+             with them: give the indices of the two media"
+        );
+        fail("check", &said)
+    })
+}
+
 /// Runs `check` (with `--api`, in that API's terms) on `file` or stdin: an answer per line on
 /// stdout, the tally and the diagnosis of the whole log on stderr, and with `--summary` the
 /// diagnosis as JSON in that file.
@@ -206,10 +273,16 @@ pub(crate) fn check(file: Option<&Path>, options: &Options, reading: &Reading<'_
         (None, true) => Format::Csv,
         (None, false) => Format::JsonLines,
     };
+    if let Err(status) = usable_indices(options) {
+        return status;
+    }
     let input = match Input::open(file) {
         Ok(input) => input,
         Err(e) => return fail("check", &e),
     };
+    if let Err(e) = outputs_apart(&input, reading) {
+        return fail("check", &e);
+    }
     if let Some(path) = reading.summary
         && let Err(e) = summary_target(path, &input, reading.replace)
     {
@@ -263,7 +336,7 @@ pub(crate) fn check(file: Option<&Path>, options: &Options, reading: &Reading<'_
     let status = match summary.verdict() {
         Verdict::NothingJudged => ExitCode::from(NOTHING_JUDGED),
         _ if !answered || !session.all_ok() => ExitCode::from(1),
-        Verdict::Mistake => ExitCode::from(1),
+        Verdict::Mistake | Verdict::Unreadable => ExitCode::from(1),
         Verdict::Unchecked => ExitCode::from(UNCHECKED),
         Verdict::None => ExitCode::SUCCESS,
     };
@@ -299,6 +372,7 @@ fn suggested_command(
     options: &Options,
     reading: &Reading<'_>,
     suggestion: &suggest::Suggestion,
+    with_pattern: bool,
 ) -> String {
     let mut words = vec!["refraction-explorer".to_owned(), "check".to_owned()];
     let mut add = |option: &str, value: Option<String>| {
@@ -318,9 +392,11 @@ fn suggested_command(
     if let Some(renderer) = options.renderer {
         add("--renderer", Some(renderer.name().to_owned()));
     }
-    // Always quoted, as a pattern's words and braces read best.
-    let pattern = format!("'{}'", suggestion.pattern.replace('\'', "'\\''"));
-    add("--pattern", Some(pattern));
+    if with_pattern {
+        // Always quoted, as a pattern's words and braces read best.
+        let pattern = format!("'{}'", suggestion.pattern.replace('\'', "'\\''"));
+        add("--pattern", Some(pattern));
+    }
     match options.convention {
         Some(convention) => add("--convention", Some(convention_name(convention).to_owned())),
         None if suggestion.toward_origin => add("--convention", Some("toward-origin".to_owned())),
@@ -382,11 +458,27 @@ pub(crate) fn suggest_pattern(
         }
     }
     let texts: Vec<&str> = lines.iter().map(String::as_str).collect();
+    let json_lines = texts
+        .iter()
+        .find(|l| !l.trim().is_empty())
+        .is_some_and(|l| {
+            serde_json::from_str::<serde_json::Map<String, serde_json::Value>>(l).is_ok()
+        });
+    if json_lines {
+        // JSON Lines name their fields: the command without a pattern reads them.
+        let plain = suggest::Suggestion::default();
+        let command = suggested_command(file, options, reading, &plain, false);
+        if let Err(e) = writeln!(io::stdout().lock(), "{command}") {
+            return output_error("check", &e);
+        }
+        let said = t!("check-suggest-json-lines");
+        return finished(&format!("check: {said}"), ExitCode::SUCCESS);
+    }
     let Some(mut suggestion) = suggest::suggest(dialect, &texts) else {
         let message = t!("check-suggest-none", lines = texts.len());
         return finished(&format!("check: {message}"), ExitCode::from(NOTHING_JUDGED));
     };
-    let command = suggested_command(file, options, reading, &suggestion);
+    let command = suggested_command(file, options, reading, &suggestion, true);
     if let Err(e) = writeln!(io::stdout().lock(), "{command}") {
         return output_error("check", &e);
     }

@@ -30,10 +30,15 @@ const TYPES = {
   '.html': 'text/html; charset=utf-8',
   '.js': 'text/javascript',
   '.wasm': 'application/wasm',
+  '.webmanifest': 'application/manifest+json',
+  '.png': 'image/png',
 };
 
-/** Serves WEB on 127.0.0.1 at a free port; resolves to the server and its address. */
-export async function serve() {
+/**
+ * Serves WEB on 127.0.0.1 at a free port; resolves to the server and its address.
+ * `changed(name, text)`, if given, may give another text for a file (an update of the folder).
+ */
+export async function serve(changed = null) {
   const server = http.createServer((request, response) => {
     const name = decodeURIComponent(new URL(request.url, 'http://x').pathname);
     const file = path.join(WEB, name === '/' ? 'index.html' : name);
@@ -42,7 +47,9 @@ export async function serve() {
       return;
     }
     response.writeHead(200, { 'content-type': TYPES[path.extname(file)] || 'application/octet-stream' });
-    fs.createReadStream(file).pipe(response);
+    const text = changed?.(path.basename(file), () => fs.readFileSync(file, 'utf8'));
+    if (text != null) response.end(text);
+    else fs.createReadStream(file).pipe(response);
   });
   await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
   return { server, base: `http://127.0.0.1:${server.address().port}/` };

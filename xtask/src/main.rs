@@ -10,7 +10,7 @@
 //! - `cargo xtask web [--profile NAME] [OUT_DIR]`: the explorer for a browser ([`web`]):
 //!   `OUT_DIR` (default `target/web`) gets `index.html` and the files it loads, and
 //!   `refraction-explorer.html`, one file that opens from `file://`; built with the Cargo
-//!   profile `NAME` (default `web`).
+//!   profile `NAME` (default `web`); `--lint` lints the crates with clippy as they are built.
 
 mod web;
 
@@ -26,7 +26,7 @@ pub(crate) type Failure = Box<dyn core::error::Error>;
 
 /// What `cargo xtask` without a known task prints.
 const USAGE: &str = "usage: cargo xtask dist-assets [OUT_DIR]\n       cargo xtask web [--profile NAME] \
-    [OUT_DIR]\n\n\
+    [--lint] [OUT_DIR]\n\n\
     dist-assets  write the man pages (OUT_DIR/man/*.1) and the bash, zsh and fish completions\n\
     \x20            (OUT_DIR/completions/) generated from the command line's definitions, and\n\
     \x20            the icon's PNG sizes (OUT_DIR/icons/); OUT_DIR defaults to\n\
@@ -39,7 +39,9 @@ const USAGE: &str = "usage: cargo xtask dist-assets [OUT_DIR]\n       cargo xtas
     \x20            OUT_DIR/refraction-explorer.html, one file that opens from file://;\n\
     \x20            OUT_DIR defaults to target/web in the repository; the Cargo profile\n\
     \x20            defaults to web (optimised across crates: what a school hosts); CI's\n\
-    \x20            browser tests use web-ci (quicker to build, debug assertions on)";
+    \x20            browser tests use web-ci (quicker to build, debug assertions on);\n\
+    \x20            --lint runs clippy on the workspace's crates as they are built, with\n\
+    \x20            .ci/clippy-wasm/clippy.toml and warnings as errors";
 
 /// The icon's sizes in pixels, as the freedesktop.org hicolor theme names its folders.
 const ICON_SIZES: [u32; 7] = [16, 24, 32, 48, 64, 128, 256];
@@ -57,11 +59,9 @@ fn main() -> ExitCode {
     let outcome = match args.as_slice() {
         ["dist-assets"] => dist_assets(&default_out_dir()),
         ["dist-assets", out] => dist_assets(Path::new(out)),
-        ["web", "--profile", profile, rest @ ..] if rest.len() <= 1 => {
-            return web_task(profile, rest.first().copied());
-        }
-        ["web", rest @ ..] if rest.len() <= 1 => {
-            return web_task(web::PROFILE, rest.first().copied());
+        ["web", rest @ ..] => {
+            return web::Options::parse(rest)
+                .map_or_else(|| say(USAGE, ExitCode::from(2)), |o| web_task(&o));
         }
         ["help" | "--help" | "-h"] => return say(USAGE, ExitCode::SUCCESS),
         _ => return say(USAGE, ExitCode::from(2)),
@@ -75,11 +75,9 @@ fn main() -> ExitCode {
     }
 }
 
-/// Runs `cargo xtask web` with the Cargo profile `profile` into `out` (default `target/web`)
-/// and says what it wrote (or what is missing).
-fn web_task(profile: &str, out: Option<&str>) -> ExitCode {
-    let out = out.map_or_else(|| repository().join("target").join("web"), PathBuf::from);
-    match web::web(repository(), profile, &out) {
+/// Runs `cargo xtask web` as `options` say and says what it wrote (or what is missing).
+fn web_task(options: &web::Options) -> ExitCode {
+    match web::web(repository(), options) {
         Ok(written) => {
             let lines: Vec<String> = written
                 .iter()

@@ -14,6 +14,7 @@
 //! It installs nothing: it checks for the toolchain first and names the command that installs
 //! what is missing.
 
+use core::hash::{Hash as _, Hasher as _};
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -44,6 +45,42 @@ const MODULE: &str = "refraction_web";
 
 /// The single file's name.
 const SINGLE_FILE: &str = "refraction-explorer.html";
+
+/// What `cargo xtask web` is asked for.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Options {
+    /// The Cargo profile built with.
+    profile: String,
+    /// Whether the workspace's crates are linted as they are built.
+    lint: bool,
+    /// Where the pages go.
+    out: Option<PathBuf>,
+}
+
+impl Options {
+    /// The options `args` (after `web`) give: `[--profile NAME] [--lint] [OUT_DIR]`, in any
+    /// order; `None` for anything else.
+    pub(crate) fn parse(args: &[&str]) -> Option<Self> {
+        let mut options = Self {
+            profile: PROFILE.to_owned(),
+            lint: false,
+            out: None,
+        };
+        let mut args = args.iter();
+        while let Some(&arg) = args.next() {
+            match arg {
+                "--profile" => (*args.next()?).clone_into(&mut options.profile),
+                "--lint" => options.lint = true,
+                _ if arg.starts_with('-') || options.out.is_some() => return None,
+                _ => options.out = Some(PathBuf::from(arg)),
+            }
+        }
+        Some(options)
+    }
+}
+
+/// Where clippy's configuration for the WebAssembly build is, in the repository.
+const CLIPPY_WASM: &str = ".ci/clippy-wasm";
 
 /// What builds the module.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -194,7 +231,12 @@ fn run(command: &mut Command, what: &str) -> Result<(), Failure> {
 }
 
 /// The cargo command that builds the module with `toolchain` into `target`.
-fn cargo_build(toolchain: &Toolchain, repository: &Path, profile: &str, target: &Path) -> Command {
+fn cargo_build(
+    toolchain: &Toolchain,
+    repository: &Path,
+    options: &Options,
+    target: &Path,
+) -> Command {
     let mut cargo = match toolchain {
         Toolchain::Installed(_) => Command::new("cargo"),
         Toolchain::Debian => {
@@ -219,7 +261,7 @@ fn cargo_build(toolchain: &Toolchain, repository: &Path, profile: &str, target: 
         .args([
             "build",
             "--profile",
-            profile,
+            &options.profile,
             "--target",
             TARGET,
             "-p",
@@ -240,18 +282,27 @@ fn cargo_build(toolchain: &Toolchain, repository: &Path, profile: &str, target: 
     ] {
         cargo.env_remove(name);
     }
+    if options.lint {
+        // As `cargo clippy` lints, while building: clippy-driver compiles the workspace's
+        // crates (not the dependencies), and with -D warnings (capped for the dependencies, as
+        // every lint of theirs) a lint stops the build.
+        cargo
+            .env("RUSTC_WORKSPACE_WRAPPER", "clippy-driver")
+            .env("CLIPPY_CONF_DIR", repository.join(CLIPPY_WASM))
+            .env("CARGO_ENCODED_RUSTFLAGS", "-Dwarnings");
+    }
     cargo
 }
 
-/// Builds the module with `toolchain` and the Cargo profile `profile` in `target/wasm` and
-/// runs wasm-bindgen on it; returns the folder wasm-bindgen wrote.
-fn build(toolchain: &Toolchain, repository: &Path, profile: &str) -> Result<PathBuf, Failure> {
+/// Builds the module with `toolchain` as `options` say in `target/wasm` and runs wasm-bindgen
+/// on it; returns the folder wasm-bindgen wrote.
+fn build(toolchain: &Toolchain, repository: &Path, options: &Options) -> Result<PathBuf, Failure> {
     let target = repository.join("target").join("wasm");
-    let mut cargo = cargo_build(toolchain, repository, profile, &target);
+    let mut cargo = cargo_build(toolchain, repository, options, &target);
     run(&mut cargo, "the WebAssembly build")?;
     let wasm = target
         .join(TARGET)
-        .join(profile)
+        .join(&options.profile)
         .join(format!("{MODULE}.wasm"));
     let bindgen = target.join("bindgen");
     run(
@@ -284,8 +335,20 @@ fn base64(bytes: &[u8]) -> String {
     out
 }
 
+/// The build's name: a hash of what the page loads, so that any change to it names a new
+/// service worker cache. (`DefaultHasher` may hash differently under another Rust version,
+/// which only renames the cache once more.)
+fn build_name(parts: &[&[u8]]) -> String {
+    let mut hasher = std::hash::DefaultHasher::new();
+    for part in parts {
+        part.hash(&mut hasher);
+    }
+    format!("{:016x}", hasher.finish())
+}
+
 /// Writes the folder's page and files and the single file into `out`, from what wasm-bindgen
-/// wrote in `bindgen`; returns the files written.
+/// wrote in `bindgen`; returns the files written. The folder also gets the web app manifest,
+/// its icons and the service worker that keeps the build for use with no network.
 fn write_pages(bindgen: &Path, out: &Path) -> Result<Vec<PathBuf>, Failure> {
     let read = |name: &str| {
         let path = bindgen.join(name);
@@ -299,13 +362,27 @@ fn write_pages(bindgen: &Path, out: &Path) -> Result<Vec<PathBuf>, Failure> {
         js: &js_text,
         wasm_base64: &base64(&wasm),
     });
+    let tree = crate::icon()?;
+    let icons = web_page::ICONS
+        .iter()
+        .map(|&(name, size)| Ok((name, crate::icon_png(&tree, size)?)))
+        .collect::<Result<Vec<_>, Failure>>()?;
+    let manifest = web_page::manifest();
+    let mut offline = vec!["index.html", js_name.as_str(), wasm_name.as_str()];
+    offline.push(web_page::MANIFEST);
+    offline.extend(icons.iter().map(|(name, _)| *name));
+    let build = build_name(&[&js, &wasm, index.as_bytes(), manifest.as_bytes()]);
+    let worker = web_page::service_worker(&build, &offline);
     std::fs::create_dir_all(out).map_err(|e| format!("cannot make {}: {e}", out.display()))?;
-    let files = [
+    let mut files = vec![
         (js_name.as_str(), js.as_slice()),
         (wasm_name.as_str(), wasm.as_slice()),
         ("index.html", index.as_bytes()),
         (SINGLE_FILE, single.as_bytes()),
+        (web_page::MANIFEST, manifest.as_bytes()),
+        (web_page::SERVICE_WORKER, worker.as_bytes()),
     ];
+    files.extend(icons.iter().map(|(name, png)| (*name, png.as_slice())));
     files
         .iter()
         .map(|(name, bytes)| {
@@ -317,23 +394,27 @@ fn write_pages(bindgen: &Path, out: &Path) -> Result<Vec<PathBuf>, Failure> {
         .collect()
 }
 
-/// Runs `cargo xtask web`: checks the toolchain, builds with the Cargo profile `profile`, and
-/// writes the pages into `out`.
+/// Runs `cargo xtask web`: checks the toolchain, builds as `options` say, and writes the pages
+/// into their folder (default `target/web`).
 /// Returns the files written, each with its size in bytes.
 ///
 /// # Errors
 /// A missing tool (with the command that installs it), a failed build, or a file that cannot
 /// be written.
-pub(crate) fn web(
-    repository: &Path,
-    profile: &str,
-    out: &Path,
-) -> Result<Vec<(PathBuf, u64)>, Failure> {
+pub(crate) fn web(repository: &Path, options: &Options) -> Result<Vec<(PathBuf, u64)>, Failure> {
     let toolchain = check_toolchain(repository)?;
+    if options.lint && toolchain == Toolchain::Debian {
+        return Err(format!(
+            "--lint needs clippy for the rustc on PATH, with its {TARGET} standard library: \
+             rustup component add clippy; rustup target add {TARGET}"
+        )
+        .into());
+    }
     // Said before the build, which takes minutes; a failed write to stderr changes nothing.
     writeln!(std::io::stderr(), "xtask: {}", toolchain.describe()).ok();
-    let bindgen = build(&toolchain, repository, profile)?;
-    let written = write_pages(&bindgen, out)?;
+    let bindgen = build(&toolchain, repository, options)?;
+    let default_out = repository.join("target").join("web");
+    let written = write_pages(&bindgen, options.out.as_ref().unwrap_or(&default_out))?;
     Ok(written
         .into_iter()
         .map(|path| {
@@ -359,6 +440,24 @@ mod tests {
         ] {
             assert_eq!(base64(bytes), text);
         }
+    }
+
+    #[test]
+    fn options_are_read_in_any_order() {
+        let read = |args: &[&str]| Options::parse(args);
+        assert_eq!(read(&[]).unwrap().profile, "web");
+        let ci = read(&["--lint", "out", "--profile", "web-ci"]).unwrap();
+        assert_eq!(
+            ci,
+            Options {
+                profile: "web-ci".to_owned(),
+                lint: true,
+                out: Some(PathBuf::from("out")),
+            }
+        );
+        assert_eq!(read(&["--profile"]), None, "a profile needs its name");
+        assert_eq!(read(&["a", "b"]), None, "one folder");
+        assert_eq!(read(&["--release"]), None, "unknown option");
     }
 
     #[test]

@@ -84,6 +84,7 @@ impl Config {
 /// The processor's model name, its thread count and its vector extensions.
 #[must_use]
 pub fn cpu_description() -> String {
+    #[cfg(not(target_arch = "wasm32"))]
     let model = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|info| {
@@ -93,6 +94,9 @@ pub fn cpu_description() -> String {
                 .map(|m| m.trim().to_owned())
         })
         .unwrap_or_else(|| std::env::consts::ARCH.to_owned());
+    // A browser page has no file system: the architecture (wasm32) names it.
+    #[cfg(target_arch = "wasm32")]
+    let model = std::env::consts::ARCH.to_owned();
     let threads = std::thread::available_parallelism().map_or(1, core::num::NonZero::get);
     #[cfg(target_arch = "x86_64")]
     let features: Vec<&str> = [

@@ -144,6 +144,17 @@ fn near_misses(c: &mut Criterion) {
     group.bench_function("largest_pattern_59_kb_near_miss", |b| {
         b.iter(|| black_box(large.capture(black_box(&long))));
     });
+    // A run of 80,000 spaces between two fields (issue 40: 64 s when each place of the run
+    // scanned it again), matching and almost matching: linear in the line, as the near miss.
+    let gap = " ".repeat(80_000);
+    let spaced = matching.replacen(" n=", &format!("{gap}n="), 1);
+    let spaced_near = near.replacen(" n=", &format!("{gap}n="), 1);
+    group.bench_function("spaces_80000_matching", |b| {
+        b.iter(|| black_box(pattern.capture(black_box(&spaced))));
+    });
+    group.bench_function("spaces_80000_near_miss", |b| {
+        b.iter(|| black_box(pattern.capture(black_box(&spaced_near))));
+    });
     group.finish();
 }
 
@@ -177,5 +188,45 @@ fn ranking(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, lines, near_misses, ranking);
+/// The ranked search on a log of many kinds of line (issue 45: its cost grew with the square
+/// of the kinds): the book's calls at 180 angles from both sides, each logged with one of
+/// several wrong results, so that the kinds are many and each explained alone.
+fn ranking_many_kinds(c: &mut Criterion) {
+    let options = Options {
+        inside: Some(1.5),
+        outside: Some(1.0),
+        ..Options::new(Api::Rtiow)
+    };
+    let mut evidence = Vec::new();
+    for step in 0..180_u32 {
+        let angle = f64::from(step) * 0.5_f64.to_radians();
+        let (s, c) = angle.sin_cos();
+        for (entering, wrong) in [(true, 0.0), (true, 0.3), (false, 0.7), (false, -0.2)] {
+            let (uv, ratio) = if entering {
+                ([s, -c, 0.0], 1.0 / 1.5)
+            } else {
+                ([s, -c, 0.0], 1.5)
+            };
+            let refracted = [s * 0.5 + wrong, -c, wrong];
+            let line = format!(
+                r#"{{"uv":{uv:?},"n":[0,1,0],"etai_over_etat":{ratio},"refracted":{refracted:?},"entering":{entering}}}"#
+            );
+            let record = Record::from_json_line(Api::Rtiow, &line).expect("the fields read");
+            if let Ok(judged) = judge_record(&record, &options) {
+                evidence.push(judged.evidence());
+            }
+        }
+    }
+    c.bench_function("rank_720_lines_of_many_kinds", |b| {
+        b.iter(|| {
+            let mut tally = LogTally::default();
+            for e in &evidence {
+                tally.add(black_box(e.clone()));
+            }
+            black_box(tally.summary(Some(Api::Rtiow), None))
+        });
+    });
+}
+
+criterion_group!(benches, lines, near_misses, ranking, ranking_many_kinds);
 criterion_main!(benches);

@@ -4,24 +4,38 @@
 //! as downloads ([`take_written`]). On `wasm32` every reader and writer of this crate goes
 //! through here, so the rest of the program opens and saves as it does on a desktop.
 //!
-//! The page has one thread: the files live in thread-local storage.
+//! The page has one thread: the files live in thread-local storage. What it keeps to be read
+//! is bounded ([`KEPT_BYTES`]): past that, the files given or written longest ago are
+//! forgotten, so that a long lesson's exports do not fill the tab's memory.
 
 use core::cell::RefCell;
-use std::collections::HashMap;
 use std::io;
 use std::path::{Path, PathBuf};
 
+/// The most the page keeps of the files given to it and written, in bytes (four times the
+/// largest file a reader of the window takes, a 16 MiB log); the newest file is always kept.
+pub const KEPT_BYTES: usize = 64 << 20;
+
 thread_local! {
-    /// The files the user gave the page, by the name they were given under.
-    static OPENED: RefCell<HashMap<PathBuf, Vec<u8>>> = RefCell::new(HashMap::new());
+    /// The files the user gave the page (and those it wrote), by the name they were given
+    /// under, the oldest first.
+    static OPENED: RefCell<Vec<(PathBuf, Vec<u8>)>> = const { RefCell::new(Vec::new()) };
     /// The files written since the page last took them, in order.
     static WRITTEN: RefCell<Vec<(PathBuf, Vec<u8>)>> = const { RefCell::new(Vec::new()) };
 }
 
 /// Makes `bytes` readable as the file `path` (a file the user chose or dropped), replacing
-/// a file given under the same name before.
+/// a file given under the same name before; the oldest files are forgotten while all kept
+/// exceed [`KEPT_BYTES`].
 pub fn provide(path: &Path, bytes: Vec<u8>) {
-    OPENED.with_borrow_mut(|opened| opened.insert(path.to_path_buf(), bytes));
+    OPENED.with_borrow_mut(|opened| {
+        opened.retain(|(kept, _)| kept != path);
+        opened.push((path.to_path_buf(), bytes));
+        let mut total: usize = opened.iter().map(|(_, bytes)| bytes.len()).sum();
+        while total > KEPT_BYTES && opened.len() > 1 {
+            total -= opened.remove(0).1.len();
+        }
+    });
 }
 
 /// The files written since the last call, in the order they were written: each a name and
@@ -37,7 +51,10 @@ pub fn take_written() -> Vec<(PathBuf, Vec<u8>)> {
 /// No file was given under that name ([`io::ErrorKind::NotFound`]).
 pub(crate) fn read(path: &Path) -> io::Result<Vec<u8>> {
     OPENED
-        .with_borrow(|opened| opened.get(path).cloned())
+        .with_borrow(|opened| {
+            let found = opened.iter().find(|(kept, _)| kept == path);
+            found.map(|(_, bytes)| bytes.clone())
+        })
         .ok_or_else(|| {
             io::Error::new(
                 io::ErrorKind::NotFound,
@@ -52,7 +69,7 @@ pub(crate) fn read(path: &Path) -> io::Result<Vec<u8>> {
 
 /// Whether a file was given as `path`.
 pub(crate) fn exists(path: &Path) -> bool {
-    OPENED.with_borrow(|opened| opened.contains_key(path))
+    OPENED.with_borrow(|opened| opened.iter().any(|(kept, _)| kept == path))
 }
 
 /// Refuses a path that names no file (a download needs a name).
@@ -126,5 +143,25 @@ mod tests {
         assert!(write_atomically(Path::new("/"), b"x").is_err());
         assert!(write_all_atomically(&[(Path::new("c.svg"), b""), (Path::new(""), b"")]).is_err());
         assert!(take_written().is_empty(), "all or nothing");
+    }
+
+    #[test]
+    fn what_is_kept_is_bounded_the_oldest_forgotten_first() {
+        let quarter = vec![0u8; KEPT_BYTES / 4];
+        for name in ["1.gif", "2.gif", "3.gif", "4.gif"] {
+            provide(Path::new(name), quarter.clone());
+        }
+        assert!(exists(Path::new("1.gif")), "four quarters fit");
+        provide(Path::new("2.gif"), quarter.clone());
+        assert!(
+            exists(Path::new("1.gif")),
+            "a file given again replaces itself"
+        );
+        provide(Path::new("5.gif"), quarter.clone());
+        assert!(!exists(Path::new("1.gif")), "the oldest is forgotten");
+        assert!(exists(Path::new("3.gif")) && exists(Path::new("2.gif")));
+        provide(Path::new("big.log"), vec![0u8; KEPT_BYTES + 1]);
+        assert!(exists(Path::new("big.log")), "the newest is always kept");
+        assert!(!exists(Path::new("5.gif")), "alone");
     }
 }

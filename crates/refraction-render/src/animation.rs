@@ -130,6 +130,12 @@ fn frames_of<T: Send>(
     if threads <= 1 {
         return batch.map(draw).collect();
     }
+    on_threads(batch, draw)
+}
+
+/// `draw` of each index of `batch`, in order, each on a thread of its own.
+#[cfg(not(target_arch = "wasm32"))]
+fn on_threads<T: Send>(batch: core::ops::Range<usize>, draw: impl Fn(usize) -> T + Sync) -> Vec<T> {
     let draw = &draw;
     std::thread::scope(|scope| {
         let workers: Vec<_> = batch
@@ -140,6 +146,13 @@ fn frames_of<T: Send>(
             .map(|w| w.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
             .collect()
     })
+}
+
+/// In a browser page, which has one thread and spawns none: `draw` of each index of `batch`,
+/// in order, on this thread (the wasm32 build is linted with threads disallowed).
+#[cfg(target_arch = "wasm32")]
+fn on_threads<T: Send>(batch: core::ops::Range<usize>, draw: impl Fn(usize) -> T + Sync) -> Vec<T> {
+    batch.map(draw).collect()
 }
 
 /// The animation of `spec` from `start`, drawn with `overlay`, as GIF bytes: frames are drawn

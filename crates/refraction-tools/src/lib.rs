@@ -233,6 +233,17 @@ impl Chunk {
         if threads <= 1 || self.items.len() <= share {
             return self.items.iter().map(one).collect();
         }
+        self.shared_out(share, &one)
+    }
+
+    /// `one` on each line, in parts of `share` lines, each part on a thread of its own that
+    /// speaks the calling thread's language.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn shared_out<W: Send>(
+        &self,
+        share: usize,
+        one: &(impl Fn(&Item) -> Outcome<W> + Sync),
+    ) -> Vec<Outcome<W>> {
         let locale = refraction_i18n::locale();
         std::thread::scope(|scope| {
             let parts: Vec<_> = self
@@ -251,6 +262,17 @@ impl Chunk {
                 .flat_map(|part| part.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
                 .collect()
         })
+    }
+
+    /// In a browser page, which has one thread and spawns none: `one` on each line, in order,
+    /// on this thread (the wasm32 build is linted with threads disallowed).
+    #[cfg(target_arch = "wasm32")]
+    fn shared_out<W: Send>(
+        &self,
+        _share: usize,
+        one: &(impl Fn(&Item) -> Outcome<W> + Sync),
+    ) -> Vec<Outcome<W>> {
+        self.items.iter().map(one).collect()
     }
 }
 

@@ -2,6 +2,10 @@
 //! download, and files dropped on the page are read before the window sees them. What is read
 //! and written goes through `refraction_files` as on a desktop, which keeps it in memory
 //! (`refraction_files::browser`): this module only moves bytes between it and the browser.
+//!
+//! A file the browser cannot read, or one larger than any reader of the window takes
+//! ([`MAX_FILE_BYTES`]), is said (in the dialog, or in the window's strip for a dropped file)
+//! and not read; a download's address is released once the browser has taken it.
 
 use core::cell::RefCell;
 use std::path::{Path, PathBuf};
@@ -15,16 +19,50 @@ use wasm_bindgen_futures::{JsFuture, spawn_local};
 
 use crate::app::file_dialog::{Choice, Purpose};
 
+/// The largest file the page reads: the largest any reader of the window takes (a log, 16
+/// MiB); a bigger one would be refused after it was read whole into the page's memory.
+const MAX_FILE_BYTES: u64 = 16 * 1024 * 1024;
+
+/// How long a download's address is kept: the browser has taken the bytes by then (revoked at
+/// once, some browsers lose the download).
+const DOWNLOAD_ADDRESS_MS: i32 = 60_000;
+
 thread_local! {
     /// The file the picker gave, once read, until the dialog takes it.
     static PICKED: RefCell<Option<PathBuf>> = const { RefCell::new(None) };
+    /// Why the file last chosen in the picker was not read, in words, until a new choice.
+    static PICK_PROBLEM: RefCell<Option<String>> = const { RefCell::new(None) };
     /// Files dropped on the page and read, to hand back to the window on the next frame.
     static DROPPED: RefCell<Vec<egui::DroppedFileHandle>> = const { RefCell::new(Vec::new()) };
 }
 
-/// The bytes of a browser `File`.
-async fn bytes_of(file: &web_sys::File) -> Result<Vec<u8>, JsValue> {
-    let buffer = JsFuture::from(file.array_buffer()).await?;
+/// Why the file `name` of `size_bytes` is not read, if it is too large.
+fn too_large(name: &str, size_bytes: f64) -> Option<String> {
+    let megabytes = |bytes: f64| format!("{:.1}", bytes / 1_048_576.0);
+    (size_bytes > MAX_FILE_BYTES as f64).then(|| {
+        t!(
+            "web-file-too-large",
+            name = name,
+            size = megabytes(size_bytes),
+            limit = (MAX_FILE_BYTES >> 20).to_string()
+        )
+    })
+}
+
+/// The browser's words for a failed read.
+fn read_failed(name: &str, reason: &str) -> String {
+    t!("web-read-failed", name = name, reason = reason)
+}
+
+/// The bytes of a browser `File`, or why they cannot be had, in words.
+async fn bytes_of(file: &web_sys::File) -> Result<Vec<u8>, String> {
+    if let Some(refusal) = too_large(&file.name(), file.size()) {
+        return Err(refusal);
+    }
+    let buffer = JsFuture::from(file.array_buffer()).await.map_err(|e| {
+        let reason = e.as_string().unwrap_or_else(|| format!("{e:?}"));
+        read_failed(&file.name(), &reason)
+    })?;
     Ok(Uint8Array::new(&buffer).to_vec())
 }
 
@@ -45,15 +83,19 @@ fn pick(extensions: &[&str], ctx: &egui::Context) -> Result<(), JsValue> {
             return;
         };
         spawn_local(async move {
-            if let Ok(bytes) = bytes_of(&file).await {
-                let path = PathBuf::from(file.name());
-                refraction_files::browser::provide(&path, bytes);
-                PICKED.with_borrow_mut(|picked| *picked = Some(path));
+            match bytes_of(&file).await {
+                Ok(bytes) => {
+                    let path = PathBuf::from(file.name());
+                    refraction_files::browser::provide(&path, bytes);
+                    PICKED.with_borrow_mut(|picked| *picked = Some(path));
+                }
+                Err(problem) => PICK_PROBLEM.with_borrow_mut(|said| *said = Some(problem)),
             }
             ctx.request_repaint();
         });
     });
     input.set_onchange(Some(changed.unchecked_ref()));
+    PICK_PROBLEM.with_borrow_mut(Option::take);
     input.click();
     Ok(())
 }
@@ -100,7 +142,8 @@ pub(in crate::app) fn dialog(
                 });
             }
         }
-        if let Some(problem) = problem {
+        let picked = PICK_PROBLEM.with_borrow(Clone::clone);
+        for problem in problem.into_iter().chain(picked.as_ref()) {
             ui.label(RichText::new(format!("⚠ {problem}")).strong());
         }
         (chosen, cancelled)
@@ -111,6 +154,7 @@ pub(in crate::app) fn dialog(
         return Choice::Chosen(name.to_path_buf());
     }
     if cancelled || modal.should_close() {
+        PICK_PROBLEM.with_borrow_mut(Option::take);
         return Choice::Cancelled;
     }
     Choice::Pending
@@ -144,14 +188,15 @@ fn download(path: &Path, bytes: &[u8]) -> Result<(), JsValue> {
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
     anchor.set_download(&name.unwrap_or_default());
     anchor.click();
-    // The browser has taken the bytes once the click is handled; the address can go then.
+    // The browser has taken the bytes once the click is handled; the address (and the bytes
+    // the blob holds) can go then.
     let revoke = Closure::once_into_js(move || {
         web_sys::Url::revoke_object_url(&url).ok();
     });
     if let Some(window) = web_sys::window() {
         window.set_timeout_with_callback_and_timeout_and_arguments_0(
             revoke.unchecked_ref(),
-            60_000,
+            DOWNLOAD_ADDRESS_MS,
         )?;
     }
     Ok(())
@@ -168,11 +213,18 @@ pub(super) fn deliver_written() {
 
 /// Takes the files dropped on the page out of this frame's input, reads each (the browser
 /// reads files only asynchronously) and gives it back to the window in a later frame, once
-/// its bytes can be read under its name; the files read since the last frame go in now.
+/// its bytes can be read under its name; the files read since the last frame go in now. A file
+/// too large or that cannot be read is said in the window's strip instead.
 pub(super) fn take_dropped(ctx: &egui::Context, raw: &mut egui::RawInput) {
     let arriving = core::mem::take(&mut raw.dropped_files);
     raw.dropped_files = DROPPED.with_borrow_mut(core::mem::take);
     for file in arriving {
+        let name = file.path().display().to_string();
+        let size = file.web_file().map_or(0.0, |f| f.size());
+        if let Some(refusal) = too_large(&name, size) {
+            super::page::refused(refusal);
+            continue;
+        }
         let ctx = ctx.clone();
         spawn_local(async move {
             match file.bytes_async().await {
@@ -180,7 +232,7 @@ pub(super) fn take_dropped(ctx: &egui::Context, raw: &mut egui::RawInput) {
                     refraction_files::browser::provide(file.path(), bytes);
                     DROPPED.with_borrow_mut(|dropped| dropped.push(file));
                 }
-                Err(e) => web_sys::console::error_1(&JsValue::from_str(&e)),
+                Err(reason) => super::page::refused(read_failed(&name, &reason)),
             }
             ctx.request_repaint();
         });

@@ -15,6 +15,7 @@
 //! - the settings and the last state are kept in the browser's storage (eframe's);
 //! - each frame's time is a performance entry (`explorer-frame`) for the browser's profiler.
 
+mod crash;
 mod files;
 mod page;
 
@@ -48,6 +49,8 @@ struct Page {
     title: String,
     /// The strip's message, last said in the page's live region.
     announced: Option<String>,
+    /// The last state's link, kept for the panic overlay.
+    link: crash::KeptLink,
 }
 
 impl Page {
@@ -58,6 +61,7 @@ impl Page {
         if fragment == self.fragment {
             return;
         }
+        crash::panic_if_asked(&fragment);
         if let Err(why) = self.explorer.open_link(&fragment) {
             let said = t!("web-link-not-opened", reason = why.to_string());
             self.explorer.sharing.notice = Some(said);
@@ -145,6 +149,7 @@ impl eframe::App for Page {
         }
         self.follow_address();
         self.explorer.show(ui);
+        self.link.follow(&self.explorer);
         self.follow_presentation(ui.ctx());
         self.follow_clipboard(ui.ctx());
         files::deliver_written();
@@ -186,6 +191,7 @@ fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement
         described: String::new(),
         title: String::new(),
         announced: None,
+        link: crash::KeptLink::default(),
     };
     page.follow_address();
     page
@@ -222,6 +228,7 @@ pub fn start() {
         return;
     };
     let runner = eframe::WebRunner::new();
+    crash::install();
     wasm_bindgen_futures::spawn_local(async move {
         let page_canvas = canvas.clone();
         let started = runner

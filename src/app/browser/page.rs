@@ -43,7 +43,7 @@ pub(super) fn language() -> Option<Locale> {
 }
 
 /// Keeps `message` for the window to show (see [`take_refusals`]).
-fn refused(message: String) {
+pub(super) fn refused(message: String) {
     REFUSED.with_borrow_mut(|all| all.push(message));
 }
 
@@ -61,7 +61,7 @@ fn call_and_watch(
     message: fn(String) -> String,
 ) {
     let called = Reflect::get(target, &JsValue::from_str(name))
-        .and_then(|method| method.dyn_into::<Function>().map_err(JsValue::from))
+        .and_then(|method| method.dyn_into::<Function>())
         .and_then(|method| method.call0(target));
     let reason = |e: &JsValue| {
         e.as_string()
@@ -121,11 +121,9 @@ pub(super) fn copy(text: &str, ctx: &egui::Context) {
     let Some(window) = window() else {
         return;
     };
-    let clipboard = Reflect::get(&window.navigator(), &JsValue::from_str("clipboard"));
-    let Ok(clipboard) = clipboard.and_then(|c| {
-        c.dyn_into::<web_sys::Clipboard>()
-            .map_err(|_| JsValue::UNDEFINED)
-    }) else {
+    // No clipboard object (an insecure page has none) or something else under its name.
+    let clipboard = Reflect::get(&window.navigator(), &JsValue::from_str("clipboard")).ok();
+    let Some(clipboard) = clipboard.and_then(|c| c.dyn_into::<web_sys::Clipboard>().ok()) else {
         refused(t!("web-copy-refused", reason = t!("web-not-secure")));
         return;
     };
@@ -195,7 +193,7 @@ pub(super) fn report_frame(seconds: f32) {
     set("start", performance.now() - duration);
     set("duration", duration);
     let measure = Reflect::get(&performance, &JsValue::from_str("measure"))
-        .and_then(|m| m.dyn_into::<Function>().map_err(JsValue::from));
+        .and_then(|m| m.dyn_into::<Function>());
     if let Ok(measure) = measure {
         measure
             .call2(&performance, &JsValue::from_str(FRAME_MEASURE), &options)

@@ -60,6 +60,57 @@ impl Options {
     pub fn sides(&self) -> Option<(f64, f64)> {
         self.inside.zip(self.outside)
     }
+
+    /// The precision lines are judged in unless they say: `--precision`, else the dialect's
+    /// usual one.
+    #[must_use]
+    pub fn precision_or_usual(&self) -> Precision {
+        self.precision
+            .unwrap_or_else(|| fields::usual_precision(self.dialect))
+    }
+
+    /// Whether the kernel refracts with `--inside` and `--outside` in
+    /// [`Options::precision_or_usual`], both ways: otherwise every line would fail.
+    ///
+    /// # Errors
+    /// The kernel's reason (an index that is not finite in that precision, or a ratio beyond
+    /// what it refracts).
+    pub fn usable_indices(&self) -> Result<(), refraction_kernel::InputError> {
+        let Some((inside, outside)) = self.sides() else {
+            return Ok(());
+        };
+        for (mu_i, mu_t) in [(inside, outside), (outside, inside)] {
+            match self.precision_or_usual() {
+                Precision::F64 => probe(mu_i, mu_t)?,
+                // The indices as the code holds them: f32's range is narrower.
+                #[expect(
+                    clippy::cast_possible_truncation,
+                    reason = "f32 is the student's precision"
+                )]
+                Precision::F32 => probe(mu_i as f32, mu_t as f32)?,
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Refracts a ray at normal incidence with indices `mu_i` and `mu_t`, to learn whether the
+/// kernel takes them.
+fn probe<S: refraction_kernel::Real>(
+    mu_i: S,
+    mu_t: S,
+) -> Result<(), refraction_kernel::InputError> {
+    use refraction_kernel::Vector3 as _;
+    let down = S::Vec3::new(S::ZERO, -S::ONE, S::ZERO);
+    let up = S::Vec3::new(S::ZERO, S::ONE, S::ZERO);
+    let incidence = refraction_kernel::Incidence {
+        w: down,
+        n: up,
+        mu_i,
+        mu_t,
+        convention: Convention::AlongRay,
+    };
+    refraction_kernel::refract(&incidence).map(|_| ())
 }
 
 /// What the line says about the ray beyond the call's own arguments.

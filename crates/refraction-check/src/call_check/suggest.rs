@@ -83,8 +83,10 @@ const NAMES: [(&str, &[&str]); 7] = [
     ),
     (
         "ratio",
+        // Not `eta`: GLSL's is μ, but pbrt's and Mitsuba's are the index inside over the one
+        // outside, so without `--api` a printed `eta` is read as `{_}` (issue 40: read as μ,
+        // pbrt's right lines were called wrong).
         &[
-            "eta",
             "nnt",
             "ri",
             "ratio",
@@ -316,7 +318,7 @@ fn literal(text: &str) -> String {
 }
 
 /// A suggested `--pattern` and what else the command needs.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Suggestion {
     /// The pattern, with `\n` between the lines of a record.
     pub pattern: String,

@@ -226,6 +226,10 @@ pub(crate) const NONE: &str = "none";
 /// The code of a log whose lines cannot be told right or wrong (see [`Missing`]).
 pub(crate) const UNCHECKED: &str = "unchecked";
 
+/// The code of a log whose judged lines are all right but some of whose lines could not be read
+/// (issue 40: the summary said `none` while the status said a failure).
+pub(crate) const UNREADABLE: &str = "unreadable";
+
 /// What the verdict says, for the exit status.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Verdict {
@@ -235,6 +239,8 @@ pub enum Verdict {
     None,
     /// No line is wrong, but the log cannot tell right from wrong.
     Unchecked,
+    /// No judged line is wrong, but some lines could not be read.
+    Unreadable,
     /// A mistake.
     Mistake,
 }
@@ -243,6 +249,9 @@ impl Finding {
     /// The finding in a sentence: the verdict's (`first`) or a later one's.
     #[must_use]
     pub fn sentence(&self, first: bool) -> String {
+        if self.code == UNREADABLE {
+            return t!("check-diagnosis-unreadable", lines = self.lines);
+        }
         if self.code == UNCHECKED {
             return t!(
                 "check-diagnosis-unchecked",
@@ -327,6 +336,7 @@ impl Summary {
             None => Verdict::NothingJudged,
             Some(NONE) => Verdict::None,
             Some(UNCHECKED) => Verdict::Unchecked,
+            Some(UNREADABLE) => Verdict::Unreadable,
             Some(_) => Verdict::Mistake,
         }
     }
@@ -409,8 +419,32 @@ impl LogTally {
             ok,
             skipped: self.skipped + self.unreadable,
             sampled,
-            diagnosis: rank::findings(self, api, renderer),
+            diagnosis: self.with_unreadable(rank::findings(self, api, renderer)),
         }
+    }
+
+    /// `findings` with the lines that could not be read as the verdict where nothing else is
+    /// wrong: a log with unread lines is not passed, and its summary says so as its status does.
+    fn with_unreadable(&self, mut findings: Vec<Finding>) -> Vec<Finding> {
+        let clean = findings
+            .first()
+            .is_some_and(|f| f.code == NONE || f.code == UNCHECKED);
+        if self.unreadable > 0 && clean {
+            findings.retain(|f| f.code != NONE);
+            findings.insert(
+                0,
+                Finding {
+                    code: UNREADABLE,
+                    lines: self.unreadable,
+                    place: String::new(),
+                    fix: String::new(),
+                    with: Vec::new(),
+                    alike: Vec::new(),
+                    tell_apart: Vec::new(),
+                },
+            );
+        }
+        findings
     }
 }
 

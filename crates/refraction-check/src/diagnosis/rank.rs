@@ -67,6 +67,11 @@ struct Lines<'t> {
     api: Option<Api>,
 }
 
+/// The most findings ranked: each ranks every hypothesis on the kinds of line left, so a log
+/// of K kinds each explained by a finding of its own would cost K rankings of K kinds (issue
+/// 45). The failing lines left after them are one finding of lines no single cause explains.
+pub(super) const MAX_FINDINGS: usize = 8;
+
 /// The findings, the verdict first; none when no line was judged.
 pub(super) fn findings(
     tally: &LogTally,
@@ -89,6 +94,10 @@ pub(super) fn findings(
     let contradicted = lines.contradictions();
     let mut findings = Vec::new();
     while !left.is_empty() {
+        if findings.len() == MAX_FINDINGS {
+            findings.push(lines.unexplained(&left));
+            break;
+        }
         let ranked = lines.ranked(&left, &contradicted);
         let Some(best) = ranked.first().filter(|b| !b.kinds.is_empty()) else {
             findings.push(lines.unexplained(&left));
@@ -167,10 +176,12 @@ impl Lines<'_> {
                 (!kinds.is_empty()).then(|| self.scored(Candidate::Formula(h), kinds, contradicted))
             })
             .collect();
+        // Each set once, in the order first met (a set is looked up, not searched for).
+        let mut seen = std::collections::HashSet::new();
         let mut sets: Vec<&Vec<Code>> = Vec::new();
         for &i in left {
             for set in &self.kinds[i].0.alternatives {
-                if !set.is_empty() && !sets.contains(&set) {
+                if !set.is_empty() && seen.insert(set) {
                     sets.push(set);
                 }
             }

@@ -453,3 +453,32 @@ fn a_summary_is_known_by_its_keys_in_any_order() {
         assert!(!looks_like_summary(other.as_bytes()), "{other}");
     }
 }
+
+#[test]
+fn a_log_of_many_kinds_each_explained_alone_gets_a_bounded_number_of_findings() {
+    // Issue 45: the ranked search took one ranking per finding, each over every kind left.
+    let all = [
+        Code::EtaInverted,
+        Code::IncidentReversed,
+        Code::NormalNotFacing,
+        Code::NotUnitInput,
+        Code::MissedTir,
+        Code::FalseTir,
+        Code::NotTheApiResult,
+    ];
+    let mut lines = Vec::new();
+    for (i, &a) in all.iter().enumerate() {
+        for &b in &all[i + 1..] {
+            lines.push((line(&[&[a, b]], Side::Inside), 1 + i));
+        }
+    }
+    let summary = tally(&lines).summary(None, None);
+    assert!(
+        summary.diagnosis.len() <= rank::MAX_FINDINGS + 1,
+        "{:?}",
+        codes(&summary)
+    );
+    let explained: usize = summary.diagnosis.iter().map(|f| f.lines).sum();
+    let failing: usize = lines.iter().map(|(_, n)| n).sum();
+    assert_eq!(explained, failing, "every failing line is in one finding");
+}

@@ -135,33 +135,57 @@ pub enum TargetError {
         /// The file.
         path: PathBuf,
     },
+    /// Something is there that cannot be read, so that it cannot be told from the student's
+    /// own code (a teammate's file of mode 0600, one's own at 0200).
+    #[error("{}", t!("logs-tests-unreadable", path = path.display().to_string(), reason = reason.as_str()))]
+    Unreadable {
+        /// The file.
+        path: PathBuf,
+        /// Why, as the system says it.
+        reason: String,
+    },
+    /// Something is there that is not a regular file: a FIFO, a device, a link to one.
+    #[error("{}", t!("logs-tests-not-a-file", path = path.display().to_string()))]
+    NotAFile {
+        /// The path.
+        path: PathBuf,
+    },
 }
 
 /// Whether tests in `language` may be written at `path`, and whether they replace a file: its
 /// name must end in the language's extension, and a file already there must be a test file
-/// this tool wrote (or empty), never the student's own code. `Ok(true)` when one is there.
+/// this tool wrote (or empty), never the student's own code. Only the first bytes of a regular
+/// file are read to tell (a pipe is never opened, a device never read). `Ok(true)` when one is
+/// there.
 ///
 /// # Errors
-/// The name has another extension, the path is a folder, or the file there is not ours.
+/// The name has another extension, the path is a folder or something other than a regular
+/// file, what is there cannot be read, or the file there is not ours.
 pub fn replaces(path: &Path, language: TestLanguage) -> Result<bool, TargetError> {
     let extension = language.extension();
+    let path_buf = || path.to_path_buf();
     if path.extension().and_then(|e| e.to_str()) != Some(extension) {
-        let path = path.to_path_buf();
+        let path = path_buf();
         return Err(TargetError::Extension { path, extension });
     }
     if path.is_dir() {
-        let path = path.to_path_buf();
-        return Err(TargetError::IsAFolder { path });
+        return Err(TargetError::IsAFolder { path: path_buf() });
     }
-    let Ok(text) = std::fs::read(path) else {
-        return Ok(false);
-    };
     let ours = format!("{} {TESTS_MARK}", language.comment());
-    if text.is_empty() || text.starts_with(ours.as_bytes()) {
-        Ok(true)
-    } else {
-        let path = path.to_path_buf();
-        Err(TargetError::NotOurs { path })
+    let limit = u64::try_from(ours.len()).unwrap_or(u64::MAX);
+    match refraction_files::first_bytes(path, limit) {
+        Err(e) => Err(TargetError::Unreadable {
+            path: path_buf(),
+            reason: e.to_string(),
+        }),
+        Ok(Some(start)) if start.is_empty() || start == ours.as_bytes() => Ok(true),
+        Ok(Some(_)) => Err(TargetError::NotOurs { path: path_buf() }),
+        // Nothing there, or something that is not a regular file (which a browser's page
+        // never has: its files are the page's own).
+        Ok(None) if std::fs::metadata(path).is_ok() => {
+            Err(TargetError::NotAFile { path: path_buf() })
+        }
+        Ok(None) => Ok(false),
     }
 }
 
@@ -200,6 +224,51 @@ mod tests {
         assert!(
             replaces(&ours, python).is_err(),
             "a .cpp is not a Python file"
+        );
+        std::fs::remove_dir_all(&folder).unwrap();
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn what_cannot_be_read_or_is_not_a_file_is_refused_without_reading_it() {
+        // Issue 40: an unreadable file counted as "nothing there" and was replaced; a FIFO,
+        // a link to /dev/zero or a huge file was read whole before deciding.
+        let folder = std::env::temp_dir().join(format!("tests-guard-{}", std::process::id()));
+        std::fs::create_dir_all(&folder).unwrap();
+        let cpp = TestLanguage::Any(AnyLanguage::Cpp);
+        let fifo = folder.join("fifo.cpp");
+        let made = std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap();
+        assert!(made.success());
+        assert_eq!(
+            replaces(&fifo, cpp),
+            Err(TargetError::NotAFile { path: fifo })
+        );
+        let zero = folder.join("zero.cpp");
+        std::os::unix::fs::symlink("/dev/zero", &zero).unwrap();
+        assert_eq!(
+            replaces(&zero, cpp),
+            Err(TargetError::NotAFile { path: zero })
+        );
+        // A path through a regular file cannot be examined: refused, not taken as empty.
+        let file = folder.join("plain.cpp");
+        std::fs::write(&file, "int x;\n").unwrap();
+        let under = file.join("tests.cpp");
+        let e = replaces(&under, cpp).unwrap_err();
+        assert!(
+            matches!(&e, TargetError::Unreadable { path, .. } if *path == under),
+            "{e:?}"
+        );
+        assert!(e.to_string().contains("cannot be read"), "{e}");
+        // A large file of someone else's is refused from its first bytes.
+        let large = folder.join("large.cpp");
+        let file = std::fs::File::create(&large).unwrap();
+        file.set_len(1 << 30).unwrap();
+        assert_eq!(
+            replaces(&large, cpp),
+            Err(TargetError::NotOurs { path: large })
         );
         std::fs::remove_dir_all(&folder).unwrap();
     }

@@ -358,3 +358,9 @@ check-unchecked-pass-indices = Übergib --inside und --outside (die Indizes inne
 check-mistake-across-sign = der Teil des Ergebnisses quer zur Normale hat das falsche Vorzeichen; der Teil längs der Normale ist richtig (das Spiegelbild des Ergebnisses an der Normale)
 check-part-across-sign = der Teil von T quer zu N hat das falsche Vorzeichen (T an der Normale gespiegelt, falsch gebrochen), der Teil längs N ist richtig: das Minus vor Verhältnis mal einfallendem Vektor fehlt
 check-tally-sampled = reflektiert (gezogen)
+
+# check: a log whose read lines are right but some lines could not be read (issue 40)
+check-diagnosis-unreadable = { $lines } Zeilen des Logs ließen sich nicht lesen (jede wird mit ihrem Fehler beantwortet), und keine gelesene Zeile ist falsch: kein Bestehen; diese Zeilen oder die Art, sie zu lesen, berichtigen.
+
+# check --suggest-pattern on JSON Lines (issue 40)
+check-suggest-json-lines = das Log besteht aus JSON Lines, deren Schlüssel die Felder benennen: es braucht kein Muster

@@ -49,3 +49,7 @@ diagram-failure-panel = { $side ->
 diagram-failure-caption = Wie weit die Richtung, in die jede geprüfte Zeile den Strahl schickt, von der richtigen abweicht, gegen den Einfallswinkel θi:
 diagram-failure-empty = Keine Zeile wurde geprüft.
 diagram-failure-about = Fehlerkarte. { $panels }
+
+# check --tests and Save failing lines as tests: what is at the path cannot be read, or is not a file (issue 40)
+logs-tests-unreadable = { $path } lässt sich nicht lesen ({ $reason }), also nicht vom eigenen Code unterscheiden: die Datei bleibt, wie sie ist; einen anderen Namen wählen
+logs-tests-not-a-file = { $path } ist keine gewöhnliche Datei (eine Pipe, ein Gerät oder ein Link darauf): Tests werden nur in eine eigene Datei geschrieben; einen anderen Namen wählen

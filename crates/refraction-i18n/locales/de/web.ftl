@@ -58,3 +58,16 @@ web-full-screen-refused = Der Browser hat den Vollbildmodus nicht gewechselt ({ 
 web-copy-refused = Der Browser hat das Kopieren nicht erlaubt ({ $reason }): den Text markieren und Strg+C drücken.
 web-not-secure = eine Seite aus einer Datei oder über http darf die Zwischenablage nicht immer nutzen
 web-one-thread = Im Browser läuft dies im einzigen Thread der Seite: Die Seite reagiert erst wieder, wenn es fertig ist.
+
+## The installable page, a panic over the page, the page's file reads, inside another page (issue 44)
+
+web-manifest-description = Den Strahl, die Normale und die Brechzahlen ziehen und zusehen, wie der gebrochene Strahl, seine vier Vorzeichenkandidaten und die Totalreflexion folgen.
+web-crash-title = Der Explorer ist stehen geblieben: ein Fehler in seinem Programm. Was es meldete:
+web-crash-reload = Seite neu laden
+web-crash-reopen = Mit dem letzten Zustand neu laden, damit nichts verloren geht (oder diesen Link kopieren, um ihn aufzuheben):
+# $name: the file's name; $reason: the browser's own words
+web-read-failed = Der Browser konnte { $name } nicht lesen ({ $reason }).
+# $name: the file's name; $size and $limit: sizes in MB
+web-file-too-large = { $name } ist { $size } MB groß: Die Seite öffnet Dateien bis { $limit } MB.
+web-open-in-tab = ↗ In neuem Tab öffnen
+web-open-in-tab-hover = Diese Seite steckt in einer anderen Seite: den Explorer in einem eigenen Tab öffnen, für Vollbild und Kopieren

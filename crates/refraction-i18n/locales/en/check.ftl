@@ -358,3 +358,9 @@ check-unchecked-pass-indices = Pass --inside and --outside (the indices inside a
 check-mistake-across-sign = the part of the result across the normal has the wrong sign; the part along it is right (the result mirrored across the normal)
 check-part-across-sign = the part of T across N has the wrong sign (T mirrored across the normal, bent the wrong way), and the part along N is right: the minus before the ratio times the incident vector is lost
 check-tally-sampled = reflected (sampled)
+
+# check: a log whose read lines are right but some lines could not be read (issue 40)
+check-diagnosis-unreadable = { $lines } of the log's lines could not be read (each is answered with its error), and no line that was read is wrong: not a pass; correct those lines or the way they are read.
+
+# check --suggest-pattern on JSON Lines (issue 40)
+check-suggest-json-lines = the log is JSON Lines, whose keys name the fields: it needs no pattern

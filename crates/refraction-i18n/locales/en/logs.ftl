@@ -49,3 +49,7 @@ diagram-failure-panel = { $side ->
 diagram-failure-caption = How far the direction each judged line sent the ray in is off from the right one, against the angle of incidence θi:
 diagram-failure-empty = No line was judged.
 diagram-failure-about = Failure map. { $panels }
+
+# check --tests and Save failing lines as tests: what is at the path cannot be read, or is not a file (issue 40)
+logs-tests-unreadable = { $path } cannot be read ({ $reason }), so it cannot be told from your own code: it is left as it is; choose another name
+logs-tests-not-a-file = { $path } is not a regular file (a pipe, a device or a link to one): tests are written only to a file of their own; choose another name

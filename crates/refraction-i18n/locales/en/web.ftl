@@ -58,3 +58,16 @@ web-full-screen-refused = The browser did not enter or leave full screen ({ $rea
 web-copy-refused = The browser did not allow copying ({ $reason }): select the text and press Ctrl+C.
 web-not-secure = a page opened from a file or over http may not use the clipboard
 web-one-thread = In a browser this runs on the page's only thread: the page does not respond until it is done.
+
+## The installable page, a panic over the page, the page's file reads, inside another page (issue 44)
+
+web-manifest-description = Drag the ray, the normal and the indices of refraction, and watch the refracted ray, its four sign candidates and total internal reflection respond.
+web-crash-title = The explorer stopped: an error in its program. What it said:
+web-crash-reload = Reload the page
+web-crash-reopen = Reload with the last state, so that nothing is lost (or copy this link to keep it):
+# $name: the file's name; $reason: the browser's own words
+web-read-failed = The browser could not read { $name } ({ $reason }).
+# $name: the file's name; $size and $limit: sizes in MB
+web-file-too-large = { $name } is { $size } MB: the page opens files of at most { $limit } MB.
+web-open-in-tab = ↗ Open in a new tab
+web-open-in-tab-hover = This page is inside another page: open the explorer in a tab of its own for full screen and copying

@@ -358,3 +358,9 @@ check-unchecked-pass-indices = Pasa --inside y --outside (los índices dentro y 
 check-mistake-across-sign = la parte del resultado transversal a la normal tiene el signo equivocado; la parte a lo largo de ella es correcta (la imagen especular del resultado respecto a la normal)
 check-part-across-sign = la parte de T transversal a N tiene el signo equivocado (la imagen especular de T respecto a la normal, desvío equivocado), y la parte a lo largo de N es correcta: falta el menos delante de la razón por el vector incidente
 check-tally-sampled = reflejadas (muestreadas)
+
+# check: a log whose read lines are right but some lines could not be read (issue 40)
+check-diagnosis-unreadable = { $lines } líneas del registro no se pudieron leer (cada una se responde con su error) y ninguna línea leída está mal: no es un aprobado; corrige esas líneas o la forma de leerlas.
+
+# check --suggest-pattern on JSON Lines (issue 40)
+check-suggest-json-lines = el registro es JSON Lines, cuyas claves nombran los campos: no necesita patrón

@@ -50,3 +50,7 @@ diagram-failure-panel = { $side ->
 diagram-failure-caption = Cuánto se desvía de la correcta la dirección en que cada línea juzgada envía el rayo, frente al ángulo de incidencia θi:
 diagram-failure-empty = No se juzgó ninguna línea.
 diagram-failure-about = Mapa de fallos. { $panels }
+
+# check --tests and Save failing lines as tests: what is at the path cannot be read, or is not a file (issue 40)
+logs-tests-unreadable = { $path } no se puede leer ({ $reason }), así que no se distingue de tu propio código: se deja como está; elige otro nombre
+logs-tests-not-a-file = { $path } no es un archivo normal (una tubería, un dispositivo o un enlace a uno): las pruebas solo se escriben en un archivo propio; elige otro nombre

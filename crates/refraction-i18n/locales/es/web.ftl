@@ -58,3 +58,16 @@ web-full-screen-refused = El navegador no entró ni salió de la pantalla comple
 web-copy-refused = El navegador no permitió copiar ({ $reason }): selecciona el texto y pulsa Ctrl+C.
 web-not-secure = una página abierta desde un archivo o por http puede no tener acceso al portapapeles
 web-one-thread = En un navegador esto se ejecuta en el único hilo de la página: la página no responde hasta que termina.
+
+## The installable page, a panic over the page, the page's file reads, inside another page (issue 44)
+
+web-manifest-description = Arrastra el rayo, la normal y los índices de refracción, y mira cómo responden el rayo refractado, sus cuatro candidatos de signo y la reflexión total.
+web-crash-title = El explorador se detuvo: un error en su programa. Lo que dijo:
+web-crash-reload = Recargar la página
+web-crash-reopen = Recargar con el último estado, para no perder nada (o copia este enlace para guardarlo):
+# $name: the file's name; $reason: the browser's own words
+web-read-failed = El navegador no pudo leer { $name } ({ $reason }).
+# $name: the file's name; $size and $limit: sizes in MB
+web-file-too-large = { $name } ocupa { $size } MB: la página abre archivos de { $limit } MB como máximo.
+web-open-in-tab = ↗ Abrir en una pestaña nueva
+web-open-in-tab-hover = Esta página está dentro de otra: abre el explorador en una pestaña propia para la pantalla completa y para copiar

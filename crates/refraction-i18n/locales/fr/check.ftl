@@ -358,3 +358,9 @@ check-unchecked-pass-indices = Passe --inside et --outside (les indices à l’i
 check-mistake-across-sign = la partie du résultat transverse à la normale a le mauvais signe ; la partie le long de la normale est juste (l’image miroir du résultat par rapport à la normale)
 check-part-across-sign = la partie de T transverse à N a le mauvais signe (l’image miroir de T par rapport à la normale, mauvaise déviation), et la partie le long de N est juste : le moins devant le rapport fois le vecteur incident est perdu
 check-tally-sampled = réfléchies (tirées)
+
+# check: a log whose read lines are right but some lines could not be read (issue 40)
+check-diagnosis-unreadable = { $lines } lignes du journal n’ont pas pu être lues (chacune reçoit son erreur), et aucune ligne lue n’est fausse : ce n’est pas une réussite ; corrige ces lignes ou la façon de les lire.
+
+# check --suggest-pattern on JSON Lines (issue 40)
+check-suggest-json-lines = le journal est en JSON Lines, dont les clés nomment les champs : il n’a pas besoin de motif

@@ -58,3 +58,16 @@ web-full-screen-refused = Le navigateur n’est pas entré en plein écran ou n�
 web-copy-refused = Le navigateur n’a pas permis de copier ({ $reason }) : sélectionne le texte et appuie sur Ctrl+C.
 web-not-secure = une page ouverte depuis un fichier ou par http n’a pas toujours accès au presse-papiers
 web-one-thread = Dans un navigateur, ceci tourne sur le seul fil d’exécution de la page : la page ne répond plus jusqu’à la fin.
+
+## The installable page, a panic over the page, the page's file reads, inside another page (issue 44)
+
+web-manifest-description = Fais glisser le rayon, la normale et les indices de réfraction, et regarde le rayon réfracté, ses quatre candidats de signe et la réflexion totale suivre.
+web-crash-title = L’explorateur s’est arrêté : une erreur dans son programme. Ce qu’il a dit :
+web-crash-reload = Recharger la page
+web-crash-reopen = Recharger avec le dernier état, pour ne rien perdre (ou copie ce lien pour le garder) :
+# $name: the file's name; $reason: the browser's own words
+web-read-failed = Le navigateur n’a pas pu lire { $name } ({ $reason }).
+# $name: the file's name; $size and $limit: sizes in MB
+web-file-too-large = { $name } pèse { $size } Mo : la page ouvre des fichiers de { $limit } Mo au plus.
+web-open-in-tab = ↗ Ouvrir dans un nouvel onglet
+web-open-in-tab-hover = Cette page est dans une autre page : ouvre l’explorateur dans un onglet à lui pour le plein écran et la copie

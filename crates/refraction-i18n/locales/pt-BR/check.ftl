@@ -358,3 +358,9 @@ check-unchecked-pass-indices = Passe --inside e --outside (os índices dentro e 
 check-mistake-across-sign = a parte do resultado transversal à normal tem o sinal errado; a parte ao longo dela está certa (a imagem espelhada do resultado em relação à normal)
 check-part-across-sign = a parte de T transversal a N tem o sinal errado (a imagem espelhada de T em relação à normal, desvio errado), e a parte ao longo de N está certa: falta o menos antes da razão vezes o vetor incidente
 check-tally-sampled = refletidas (amostradas)
+
+# check: a log whose read lines are right but some lines could not be read (issue 40)
+check-diagnosis-unreadable = { $lines } linhas do log não puderam ser lidas (cada uma é respondida com seu erro), e nenhuma linha lida está errada: não é uma aprovação; corrija essas linhas ou a forma de lê-las.
+
+# check --suggest-pattern on JSON Lines (issue 40)
+check-suggest-json-lines = o log é JSON Lines, cujas chaves nomeiam os campos: ele não precisa de padrão

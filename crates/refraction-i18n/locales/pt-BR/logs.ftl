@@ -50,3 +50,7 @@ diagram-failure-panel = { $side ->
 diagram-failure-caption = Quanto a direção em que cada linha julgada envia o raio se afasta da correta, em função do ângulo de incidência θi:
 diagram-failure-empty = Nenhuma linha foi julgada.
 diagram-failure-about = Mapa de falhas. { $panels }
+
+# check --tests and Save failing lines as tests: what is at the path cannot be read, or is not a file (issue 40)
+logs-tests-unreadable = { $path } não pode ser lido ({ $reason }), então não dá para distingui-lo do seu próprio código: ele fica como está; escolha outro nome
+logs-tests-not-a-file = { $path } não é um arquivo comum (um pipe, um dispositivo ou um link para um deles): os testes só são escritos em um arquivo próprio; escolha outro nome

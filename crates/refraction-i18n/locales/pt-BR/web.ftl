@@ -58,3 +58,16 @@ web-full-screen-refused = O navegador não entrou nem saiu da tela cheia ({ $rea
 web-copy-refused = O navegador não permitiu copiar ({ $reason }): selecione o texto e pressione Ctrl+C.
 web-not-secure = uma página aberta de um arquivo ou por http pode não ter acesso à área de transferência
 web-one-thread = No navegador isto roda na única thread da página: a página não responde até terminar.
+
+## The installable page, a panic over the page, the page's file reads, inside another page (issue 44)
+
+web-manifest-description = Arraste o raio, a normal e os índices de refração e veja o raio refratado, seus quatro candidatos de sinal e a reflexão total responderem.
+web-crash-title = O explorador parou: um erro no seu programa. O que ele disse:
+web-crash-reload = Recarregar a página
+web-crash-reopen = Recarregar com o último estado, para nada se perder (ou copie este link para guardá-lo):
+# $name: the file's name; $reason: the browser's own words
+web-read-failed = O navegador não conseguiu ler { $name } ({ $reason }).
+# $name: the file's name; $size and $limit: sizes in MB
+web-file-too-large = { $name } tem { $size } MB: a página abre arquivos de no máximo { $limit } MB.
+web-open-in-tab = ↗ Abrir em uma nova aba
+web-open-in-tab-hover = Esta página está dentro de outra: abra o explorador em uma aba própria para apresentar em todo o monitor e para copiar

@@ -366,3 +366,9 @@ check-unchecked-pass-indices = Передайте --inside и --outside (инд�
 check-mistake-across-sign = часть результата поперёк нормали имеет не тот знак; часть вдоль неё верна (зеркальный образ результата относительно нормали)
 check-part-across-sign = часть T поперёк N имеет не тот знак (зеркальный образ T относительно нормали, преломляется не туда), а часть вдоль N верна: потерян минус перед отношением, умноженным на падающий вектор
 check-tally-sampled = отражено (выбрано случайно)
+
+# check: a log whose read lines are right but some lines could not be read (issue 40)
+check-diagnosis-unreadable = { $lines } строк журнала не удалось прочитать (на каждую дан ответ с её ошибкой), а среди прочитанных ошибок нет: это не успех; исправьте эти строки или способ их чтения.
+
+# check --suggest-pattern on JSON Lines (issue 40)
+check-suggest-json-lines = журнал в формате JSON Lines, ключи которого называют поля: шаблон не нужен

@@ -53,3 +53,7 @@ diagram-failure-panel = { $side ->
 diagram-failure-caption = Насколько направление, в котором каждая проверенная строка посылает луч, отклоняется от правильного, в зависимости от угла падения θi:
 diagram-failure-empty = Ни одна строка не проверена.
 diagram-failure-about = Карта ошибок. { $panels }
+
+# check --tests and Save failing lines as tests: what is at the path cannot be read, or is not a file (issue 40)
+logs-tests-unreadable = { $path } не читается ({ $reason }), поэтому его не отличить от вашего собственного кода: он остаётся как есть; выберите другое имя
+logs-tests-not-a-file = { $path } — не обычный файл (канал, устройство или ссылка на них): тесты пишутся только в собственный файл; выберите другое имя

@@ -58,3 +58,16 @@ web-full-screen-refused = Браузер не перешёл в полноэкр
 web-copy-refused = Браузер не разрешил копирование ({ $reason }): выделите текст и нажмите Ctrl+C.
 web-not-secure = странице, открытой из файла или по http, буфер обмена может быть недоступен
 web-one-thread = В браузере это выполняется в единственном потоке страницы: страница не отвечает, пока работа не закончится.
+
+## The installable page, a panic over the page, the page's file reads, inside another page (issue 44)
+
+web-manifest-description = Двигайте луч, нормаль и показатели преломления и смотрите, как меняются преломлённый луч, четыре кандидата по знакам и полное внутреннее отражение.
+web-crash-title = Программа остановилась из-за ошибки в ней. Вот что она сообщила:
+web-crash-reload = Перезагрузить страницу
+web-crash-reopen = Перезагрузить с последним состоянием, чтобы ничего не потерять (или скопируйте эту ссылку, чтобы сохранить его):
+# $name: the file's name; $reason: the browser's own words
+web-read-failed = Браузер не смог прочитать { $name } ({ $reason }).
+# $name: the file's name; $size and $limit: sizes in MB
+web-file-too-large = { $name } занимает { $size } МБ: страница открывает файлы не больше { $limit } МБ.
+web-open-in-tab = ↗ Открыть в новой вкладке
+web-open-in-tab-hover = Эта страница встроена в другую: откройте программу в отдельной вкладке для полного экрана и копирования
