@@ -119,9 +119,9 @@ pub fn vectors(argument: &str, array: &Array) -> Result<Column, ArgumentError> {
     let v = &array.values;
     match (array.shape.as_slice(), array.components_first) {
         ([3], _) => Ok(Column::Every(vector([v[0], v[1], v[2]]))),
-        (&[3, calls], true) => Ok(Column::Rows(
-            (0..calls)
-                .map(|i| vector([v[i], v[calls + i], v[2 * calls + i]]))
+        (&[3, lanes], true) => Ok(Column::Rows(
+            (0..lanes)
+                .map(|i| vector([v[i], v[lanes + i], v[2 * lanes + i]]))
                 .collect(),
         )),
         (&[_, 3], false) => Ok(Column::Rows(
