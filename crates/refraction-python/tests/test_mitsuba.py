@@ -54,19 +54,22 @@ def test_the_smooth_dielectric_bsdf_sampled_is_right():
     assert r.tally.get("reflected (sampled)", 0) == r.summary["sampled"]
 
 
-#: Each student's bug, the code that names it, and words its fix must say.
+BOTH, INSIDE = ("outside", "inside"), ("inside",)
+
+#: Each student's bug, the code that names it, words its fix must say, and the sides of the
+#: surface whose rays it makes wrong (a bug in the ratio's choice is only seen from inside).
 BUGS = [
-    (calls.ratio_inverted, "eta_inverted", ["upside down", "fresnel"]),
-    (calls.eta_it_for_eta_ti, "eta_inverted", ["across N", "refract"]),
-    (calls.other_root, "other_root", ["other root", "fresnel"]),
-    (calls.across_sign_lost, "across_sign", ["across N", "refract"]),
-    (calls.side_lost, "no_flip_inside", ["inside", "invert the ratio"]),
-    (calls.no_reflection_test, "missed_tir", ["critical angle", "fresnel"]),
+    (calls.ratio_inverted, "eta_inverted", ["upside down", "fresnel"], BOTH),
+    (calls.eta_it_for_eta_ti, "eta_inverted", ["across N", "refract"], BOTH),
+    (calls.other_root, "other_root", ["other root", "fresnel"], BOTH),
+    (calls.across_sign_lost, "across_sign", ["across N", "refract"], BOTH),
+    (calls.side_lost, "no_flip_inside", ["inside", "invert the ratio"], INSIDE),
+    (calls.no_reflection_test, "missed_tir", ["critical angle", "fresnel"], INSIDE),
 ]
 
 
-@pytest.mark.parametrize("student, code, fix", BUGS, ids=[b[0].__name__ for b in BUGS])
-def test_each_bug_in_the_calling_code_is_named_with_its_fix(student, code, fix):
+@pytest.mark.parametrize("student, code, fix, sides", BUGS, ids=[b[0].__name__ for b in BUGS])
+def test_each_bug_in_the_calling_code_is_named_with_its_fix(student, code, fix, sides):
     wi, wo = calls.calls(student)
     r = check(wi, wo)
     verdict = r.summary["diagnosis"][0]
@@ -77,6 +80,10 @@ def test_each_bug_in_the_calling_code_is_named_with_its_fix(student, code, fix):
     assert not r.ok.all()
     assert verdict["lines"] == (~r.ok).sum(), "the one bug explains every wrong call"
     assert len(r.summary["diagnosis"]) == 1, r
+    inside = np.array([mi.Frame3f.cos_theta(w) < 0 for w in wi])
+    for side, rays in (("outside", ~inside), ("inside", inside)):
+        wrong = (~r.ok[rays]).sum()
+        assert (wrong > 0) == (side in sides), f"{wrong} wrong calls from {side}"
 
 
 def test_a_bug_confined_to_rays_from_inside_says_so():
