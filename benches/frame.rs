@@ -115,7 +115,7 @@ fn w_handle(ctx: &Context, explorer: &mut Explorer, size: Vec2) -> Option<Pos2> 
     let (_, node) = update
         .nodes
         .iter()
-        .find(|(_, node)| node.label() == Some("W handle"))?;
+        .find(|(_, node)| node.label() == Some("Angle of incidence θi (W)"))?;
     let bounds = node.bounds()?;
     Some(Pos2::new(
         f64::midpoint(bounds.x0, bounds.x1) as f32,

@@ -64,25 +64,8 @@ pub struct Cli {
     /// The address where the class opens the web build (`cargo xtask web`'s folder, hosted):
     /// *Copy link* and the QR code give links there (default: the one set in the explorer
     /// last time).
-    #[arg(long, value_name = "URL", value_parser = web_base)]
+    #[arg(long, value_name = "URL")]
     pub web_base: Option<String>,
-}
-
-/// The web build's address that `--web-base` gives: an http, https or file URL, without
-/// spaces; a fragment it ends in is dropped (links put their own).
-///
-/// # Errors
-/// Another scheme, or white space; the message says what is expected.
-pub fn web_base(url: &str) -> Result<String, ArgError> {
-    let url = url.trim();
-    let schemes = ["http://", "https://", "file://"];
-    let known = schemes
-        .iter()
-        .any(|s| url.len() > s.len() && url[..s.len()].eq_ignore_ascii_case(s));
-    if !known || url.contains(char::is_whitespace) {
-        return Err(ArgError::WebBase(url.to_owned()));
-    }
-    Ok(url.split('#').next().unwrap_or(url).to_owned())
 }
 
 /// The language `--lang` names.
@@ -306,7 +289,7 @@ pub struct RenderArgs {
     pub svg_text: bool,
     /// With --lesson and a .pdf handout: the address where the class opens the web build;
     /// each page then carries its step's link and QR code.
-    #[arg(long, value_name = "URL", value_parser = web_base, requires = "lesson")]
+    #[arg(long, value_name = "URL", requires = "lesson")]
     pub web_base: Option<String>,
     /// Width in pixels (64 to 8192).
     #[arg(long, default_value_t = refraction_render::DEFAULT_SIZE.0)]
@@ -452,12 +435,6 @@ pub fn parse_index(text: &str) -> Result<f64, ArgError> {
 /// own messages around it are; each names the value given and what is expected.
 #[derive(Debug, thiserror::Error)]
 pub enum ArgError {
-    /// `--web-base` that is not an http, https or file URL, or holds white space.
-    #[error(
-        "`{0}` is not the address of a web page: give the address where the web build's \
-         folder is hosted, such as https://school.example/explorer/"
-    )]
-    WebBase(String),
     /// `--lang` with no translation.
     #[error("no translation for `{0}`: choose one of {known}", known = names(Locale::ALL.iter().map(|l| l.code())))]
     Language(String),

@@ -24,6 +24,26 @@ pub const CANVAS_ID: &str = "explorer";
 /// window runs.
 pub const LOADING_ID: &str = "loading";
 
+/// The id of the container of the page's own controls for screen readers and keyboards (before
+/// the canvas in the tab order), which the module fills: out of sight until one of them has the
+/// keyboard, then a bar over the foot of the page.
+pub const CONTROLS_ID: &str = "explorer-controls";
+
+/// The CSS of [`CONTROLS_ID`]: hidden as screen readers still read it (not `display: none`)
+/// until a control inside has the focus, then a bar with 44-pixel controls and a focus ring
+/// that shows.
+const CONTROLS_CSS: &str = "#explorer-controls { position: fixed; left: 0; right: 0; bottom: 0; \
+     z-index: 2; display: flex; flex-wrap: wrap; align-items: center; gap: 4px 16px; padding: \
+     8px 12px; background: #ffffff; color: #1a1a1a; border-top: 2px solid #1a1a1a; font: 16px \
+     sans-serif; }\n#explorer-controls:not(:focus-within) { width: 1px; height: 1px; padding: \
+     0; overflow: hidden; clip-path: inset(50%); white-space: nowrap; }\n#explorer-controls p \
+     { margin: 0; flex-basis: 100%; }\n#explorer-controls div { display: flex; align-items: \
+     center; gap: 8px; }\n#explorer-controls [hidden] { display: none; }\n#explorer-controls \
+     input, #explorer-controls button { min-height: 44px; min-width: 44px; font: inherit; }\n\
+     #explorer-controls input[type=number] { width: 7em; }\n\
+     #explorer-controls :focus { outline: 3px solid #0b57d0; outline-offset: 2px; }\n#diagram-words { position: absolute; width: 1px; height: 1px; overflow: hidden; \
+     clip-path: inset(50%); white-space: nowrap; }\n";
+
 // The installable, offline page and the panic overlay (issue 44): the ids and file names the
 // module, xtask and the tests share.
 
@@ -135,8 +155,9 @@ fn bootstrap(script: &Script<'_>) -> String {
     };
     format!(
         "{import}\nconst words = {words};\nconst languages = navigator.languages || \
-         [navigator.language || 'en'];\nconst said = words[languages.map((l) => \
-         l.split('-')[0]).find((l) => l in words) || 'en'];\n{{\n{overlay}}}\nconst line = \
+         [navigator.language || 'en'];\nconst language = languages.map((l) => \
+         l.split('-')[0]).find((l) => l in words) || 'en';\nconst said = words[language];\n\
+         document.documentElement.lang = language;\n{{\n{overlay}}}\nconst line = \
          document.getElementById({loading});\nline.textContent = said.loading;\ntry {{\n  \
          {init}\n}} catch (e) {{\n  line.textContent = said.failed.replace('{{reason}}', \
          String(e));\n  line.className = 'failed';\n  throw e;\n}}\n{register}",
@@ -317,18 +338,22 @@ self.addEventListener('fetch', (event) => {
 });
 ";
 
-/// The page, loading the module as `script` says.
+/// The page, loading the module as `script` says. The canvas takes every touch
+/// (`touch-action: none`): otherwise the browser claims a finger's drag as a scroll and a
+/// pinch as the page's zoom, and the explorer's own (W turned, the diagram panned or zoomed)
+/// never happen.
 #[must_use]
 pub fn html(script: &Script<'_>) -> String {
     format!(
-        "<!DOCTYPE html>\n<html>\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" \
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" \
          content=\"width=device-width, initial-scale=1\">\n<title>{TITLE}</title>\n{installable}<style>\n\
          html, body {{ margin: 0; padding: 0; width: 100%; height: 100%; overflow: hidden; \
          background: #f8f8f8; }}\ncanvas {{ position: absolute; top: 0; left: 0; width: 100%; \
-         height: 100%; display: block; }}\n#{LOADING_ID} {{ position: absolute; top: 45%; \
+         height: 100%; display: block; touch-action: none; }}\n#{LOADING_ID} {{ position: absolute; top: 45%; \
          width: 100%; text-align: center; font: 20px sans-serif; color: #333; }}\n\
-         #{LOADING_ID}.failed {{ color: #a00000; }}\n{overlay_style}</style>\n</head>\n<body>\n<canvas \
-         id=\"{CANVAS_ID}\"></canvas>\n<p id=\"{LOADING_ID}\">…</p>\n{overlay}<script \
+         #{LOADING_ID}.failed {{ color: #a00000; }}\n{overlay_style}{CONTROLS_CSS}</style>\n</head>\n\
+         <body>\n<section id=\"{CONTROLS_ID}\"></section>\n<canvas id=\"{CANVAS_ID}\"></canvas>\n<p \
+         id=\"{LOADING_ID}\">…</p>\n{overlay}<script \
          type=\"module\">\n{}</script>\n</body>\n</html>\n",
         bootstrap(script).replace("</script", "<\\/script"),
         installable = installable_head(script),
@@ -348,6 +373,12 @@ mod tests {
         });
         assert!(beside.contains("import init from \"./refraction_web.js\";"));
         assert!(beside.contains("<canvas id=\"explorer\">"));
+        assert!(beside.contains("<html lang=\"en\">"));
+        let controls = beside.find("<section id=\"explorer-controls\">");
+        assert!(
+            controls < beside.find("<canvas"),
+            "the controls come first when tabbing"
+        );
         assert!(
             beside.contains("\"de\": { loading:"),
             "every language's words"

@@ -1,63 +1,42 @@
 //! The interactive diagram: painted from [`Diagram`], with one focusable, draggable widget per
-//! handle (named for screen readers and tests) and keyboard nudges.
+//! handle and keyboard nudges, and the step buttons under it ([`steps`]).
+//!
+//! Each handle is a slider for screen readers and tests: W is the angle of incidence θi, N the
+//! direction of the normal, μi and μt the indices ([`HandleId::label`]), each with its
+//! value in words, its step and bounds, and the increment, decrement and set-value actions a
+//! screen reader's slider gestures send. The arrow keys move the selected handle's value the
+//! same way (→ and ↑ up, ← and ↓ down), as the step buttons do.
 
+use egui::accesskit::{Action, ActionData};
 use egui::emath::RectTransform;
 use egui::{
-    CursorIcon, EventFilter, Key, Pos2, Rect, Role, Sense, Stroke, Ui, Vec2 as EguiVec2, WidgetInfo,
+    CursorIcon, EventFilter, Id, Key, Pos2, Rect, Role, Sense, Stroke, Ui, Vec2 as EguiVec2,
+    WidgetInfo,
 };
 use glam::Vec2;
 use refraction_i18n::t;
 
 use super::paint::{color, hover_left_out, paint};
+use super::steps::{self, Reach};
 use refraction_diagram::{Diagram, Overlay};
+use refraction_model::describe::{self, Answer};
 use refraction_model::{ExplorerState, HandleId};
 
-/// Degrees per arrow-key press (Shift: a tenth of it).
-const ANGLE_STEP: f64 = 1.0;
-/// Index change per key press (Shift: a tenth of it).
-const INDEX_STEP: f64 = 0.01;
-
-/// The value a handle reports to screen readers: the diagram angle of W or N in degrees, or
-/// the index.
-fn handle_value(state: &ExplorerState, handle: HandleId) -> f64 {
-    match handle {
-        HandleId::W | HandleId::N => state.direction(handle).to_angle().to_degrees(),
-        HandleId::MuI | HandleId::MuT => state.index(handle),
-    }
-}
-
-/// Changes the index of a μ handle by `delta`, rounding away binary noise.
-fn nudge_index(state: &mut ExplorerState, handle: HandleId, delta: f64) {
-    let index = ((state.index(handle) + delta) * 1e6).round() / 1e6;
-    // A nudge to an index the kernel refuses (0 or below, or too far from the other index) leaves the marker where it was,
-    // the last good state, as a refused drag does.
-    state.set_index(handle, index).ok();
-}
-
-/// Applies the keys pressed while `handle` has focus: arrows turn W or N (counter-clockwise
-/// for ← and ↑) or move a μ marker (↑ and → raise it); + and − change the selected index
-/// (μt while W or N is selected).
+/// Applies the keys pressed while `handle` has focus: the arrows move its value a step (→ and
+/// ↑ up, ← and ↓ down: θi, N to the right, the index; Shift: a tenth of a step); + and −
+/// change the selected index (μt while W or N is selected).
 fn keyboard(ui: &Ui, state: &mut ExplorerState, handle: HandleId) {
-    let (turn, raise, plus, shift) = ui.input(|i| {
+    let (arrows, plus, shift) = ui.input(|i| {
         let pressed = |key| i32::from(i.key_pressed(key));
-        let turn = pressed(Key::ArrowLeft) + pressed(Key::ArrowUp)
-            - pressed(Key::ArrowRight)
-            - pressed(Key::ArrowDown);
-        let raise = pressed(Key::ArrowUp) + pressed(Key::ArrowRight)
+        let arrows = pressed(Key::ArrowUp) + pressed(Key::ArrowRight)
             - pressed(Key::ArrowDown)
             - pressed(Key::ArrowLeft);
         let plus = pressed(Key::Plus) + pressed(Key::Equals) - pressed(Key::Minus);
-        (turn, raise, plus, i.modifiers.shift)
+        (arrows, plus, i.modifiers.shift)
     });
     let scale = if shift { 0.1 } else { 1.0 };
-    match handle {
-        HandleId::W | HandleId::N if turn != 0 => {
-            state.rotate(handle, f64::from(turn) * ANGLE_STEP * scale);
-        }
-        HandleId::MuI | HandleId::MuT if raise != 0 => {
-            nudge_index(state, handle, f64::from(raise) * INDEX_STEP * scale);
-        }
-        _ => {}
+    if arrows != 0 {
+        steps::nudge(state, handle, f64::from(arrows) * scale);
     }
     if plus != 0 {
         let target = if handle == HandleId::MuI {
@@ -65,8 +44,48 @@ fn keyboard(ui: &Ui, state: &mut ExplorerState, handle: HandleId) {
         } else {
             HandleId::MuT
         };
-        nudge_index(state, target, f64::from(plus) * INDEX_STEP * scale);
+        steps::nudge(state, target, f64::from(plus) * scale);
     }
+}
+
+/// What a screen reader asked of the handle `id` this frame: its slider's increment and
+/// decrement (a step each) and set-value actions.
+fn screen_reader(ui: &Ui, id: Id, state: &mut ExplorerState, handle: HandleId) {
+    let (steps_up, target) = ui.input(|i| {
+        let count = |action| i.accesskit_action_requests(id, action).count() as f64;
+        let target = i
+            .accesskit_action_requests(id, Action::SetValue)
+            .filter_map(|request| match request.data {
+                Some(ActionData::NumericValue(value)) => Some(value),
+                _ => None,
+            })
+            .last();
+        (count(Action::Increment) - count(Action::Decrement), target)
+    });
+    if let Some(target) = target {
+        steps::set(state, handle, target);
+    }
+    if steps_up != 0.0 {
+        steps::nudge(state, handle, steps_up);
+    }
+}
+
+/// Names the handle `id` for screen readers and tests as the slider of its control: its
+/// name, its value (the number, and in words with its unit), its bounds and step, the actions
+/// it takes.
+fn slider_node(ui: &Ui, grab: &egui::Response, state: &ExplorerState, handle: HandleId) {
+    let value = steps::value(state, handle);
+    grab.widget_info(|| WidgetInfo::slider(true, value, handle.label()));
+    let bounds = steps::bounds(state, handle);
+    ui.ctx().accesskit_node_builder(grab.id, |node| {
+        node.set_value(describe::control_value(state, handle));
+        node.set_min_numeric_value(*bounds.start());
+        node.set_max_numeric_value(*bounds.end());
+        node.set_numeric_value_step(steps::step(handle));
+        node.add_action(Action::SetValue);
+        node.add_action(Action::Increment);
+        node.add_action(Action::Decrement);
+    });
 }
 
 /// Pans by dragging the background and zooms by scrolling (or pinching) over it, about the
@@ -132,8 +151,8 @@ fn interact(
         );
         let id = response.id.with(handle.id);
         let grab = ui.interact(rect, id, Sense::click_and_drag());
-        let value = handle_value(state, handle.id);
-        grab.widget_info(|| WidgetInfo::slider(true, value, handle.id.label()));
+        screen_reader(ui, id, state, handle.id);
+        slider_node(ui, &grab, state, handle.id);
         if grab.clicked() || grab.drag_started() {
             grab.request_focus();
         }
@@ -166,21 +185,77 @@ fn interact(
     focused
 }
 
-/// Shows the diagram of `state` with `overlay` filling the available space (less a line for
-/// the keys), editing `state` by drag and keyboard and the overlay's view by pan and zoom.
+/// Tab with nothing selected selects W: the diagram is the keyboard's first stop, one Tab
+/// away rather than after every control of the bar and the panels (Tab goes on from W to N,
+/// μi, μt and the step buttons, then round the window). egui gives such a Tab to the window's
+/// first control before the canvas is shown, so whether nothing was selected is remembered
+/// from the end of the last frame. Not while a dialog is open over the diagram or a field has
+/// the keyboard.
+fn tab_to_w(ui: &Ui, w_id: Id) {
+    let memory = w_id.with("tab-to-w");
+    let was_free = ui.data(|d| d.get_temp::<bool>(memory)).unwrap_or(false);
+    let tab = ui.input(|i| i.key_pressed(Key::Tab) && i.modifiers.is_none());
+    let open = ui.memory(|m| m.allows_interaction(ui.layer_id()));
+    if tab && was_free && open && !ui.ctx().text_edit_focused() {
+        ui.memory_mut(|m| m.request_focus(w_id));
+    }
+}
+
+/// Remembers for [`tab_to_w`] whether the frame ends with nothing selected.
+fn remember_focus(ui: &Ui, w_id: Id) {
+    let free = ui.memory(|m| m.focused().is_none());
+    ui.data_mut(|d| d.insert_temp(w_id.with("tab-to-w"), free));
+}
+
+/// The rows under the diagram: the step buttons and, at the desk, the line of keys (cut with
+/// "…" where the window is narrow, the whole on hover). Returns whether a step button changed
+/// `state`.
+fn rows_under(
+    ui: &mut Ui,
+    state: &mut ExplorerState,
+    focused: Option<HandleId>,
+    under: Under,
+) -> bool {
+    let changed = under.steps && steps::row(ui, state, Reach::of(ui));
+    if under.hint {
+        let hint = hint(focused);
+        ui.add(egui::Label::new(egui::RichText::new(&hint).weak()).truncate())
+            .on_hover_text(hint);
+    }
+    changed
+}
+
+/// What is shown under the diagram.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Under {
+    /// The step buttons ([`steps::row`]).
+    pub steps: bool,
+    /// The line of keys (at the desk; a projector leaves the room to the diagram).
+    pub hint: bool,
+}
+
+/// The height the rows under the diagram took last frame (the step buttons wrap where the
+/// panel is narrow), or one row of buttons and the line of keys before the first.
+fn height_under(ui: &Ui, id: Id, under: Under) -> f32 {
+    let spacing = ui.spacing();
+    let row = Reach::of(ui).side().max(spacing.interact_size.y) + spacing.item_spacing.y;
+    let text = ui.text_style_height(&egui::TextStyle::Body);
+    let line = text.max(spacing.interact_size.y) + spacing.item_spacing.y;
+    let estimate = spacing.item_spacing.y
+        + if under.steps { row } else { 0.0 }
+        + if under.hint { line } else { 0.0 };
+    ui.data(|d| d.get_temp(id)).unwrap_or(estimate)
+}
+
+/// Shows the diagram of `state` with `overlay` filling the available space (less the rows
+/// `under` it: the step buttons, a line for the keys), editing `state` by drag, keyboard,
+/// screen reader and step buttons, and the overlay's view by pan and zoom.
 ///
 /// A press and release within egui's click distance is a click, not a drag: it changes
 /// nothing and selects the handle (or, on the background, the W handle) for the arrow keys.
-pub(super) fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay, with_hint: bool) {
-    // The hint's row (a label's row is as tall as a widget's) and the spacing above it; none
-    // on a projector, where the diagram has the room.
-    let text = ui.text_style_height(&egui::TextStyle::Body);
-    let line = if with_hint {
-        text.max(ui.spacing().interact_size.y) + 2.0 * ui.spacing().item_spacing.y
-    } else {
-        0.0
-    };
-    let size = ui.available_size() - EguiVec2::new(0.0, line);
+pub(super) fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay, under: Under) {
+    let rows = ui.scope_id().with("rows-under-diagram");
+    let size = ui.available_size() - EguiVec2::new(0.0, height_under(ui, rows, under));
     let (response, painter) =
         ui.allocate_painter(size.max(EguiVec2::splat(1.0)), Sense::click_and_drag());
     pan_and_zoom(ui, &response, overlay);
@@ -190,6 +265,7 @@ pub(super) fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay
     let before = Diagram::with_overlay(state, canvas_size, overlay);
     let unchanged = state.clone();
     let w_id = response.id.with(HandleId::W);
+    tab_to_w(ui, w_id);
     // A click on the background selects W. It is asked for after the handles are interacted
     // with: a handle that sees a click elsewhere gives its focus up, W's too.
     let select_w = response.clicked()
@@ -218,17 +294,24 @@ pub(super) fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay
         after.layout.font * 2.0,
     );
     response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &after.summary));
+    // The diagram in words, as the describer says it, after the banner's name.
+    let answer = Answer::hidden_if(overlay.hide_answer);
+    ui.ctx().accesskit_node_builder(response.id, |node| {
+        node.set_description(describe::interface(state, answer).join(" "));
+    });
     if let Some(handle) = after.handles.iter().find(|h| Some(h.id) == focused) {
         let center = to_screen.transform_pos(Pos2::new(handle.center.x, handle.center.y));
         let ring = Stroke::new(2.0, color(overlay.palette.ink));
         painter.circle_stroke(center, handle.radius * 1.7, ring);
     }
-    if with_hint {
-        // One line, cut with "…" where the window is narrow (the whole on hover).
-        let hint = hint(focused);
-        ui.add(egui::Label::new(egui::RichText::new(&hint).weak()).truncate())
-            .on_hover_text(hint);
+    let top = ui.cursor().top();
+    if rows_under(ui, state, focused, under) {
+        // The diagram above was drawn before the step: draw it again.
+        ui.ctx().request_repaint();
     }
+    let height = ui.cursor().top() - top;
+    ui.data_mut(|d| d.insert_temp(rows, height));
+    remember_focus(ui, w_id);
 }
 
 #[cfg(test)]

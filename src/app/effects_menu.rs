@@ -14,6 +14,9 @@ use refraction_i18n::t;
 use refraction_diagram::intensities::Polarisation;
 use refraction_diagram::wavefronts::WaveOptions;
 
+/// The *Effects* menu's icon in presentation's bar.
+const EFFECTS_ICON: &str = "✨";
+
 /// How long the fronts take to move by one spacing, in seconds: slow enough to follow one.
 pub(super) const WAVE_PERIOD_SECONDS: f64 = 2.0;
 
@@ -35,13 +38,19 @@ pub(super) struct EffectsMenu {
 }
 
 impl EffectsMenu {
-    /// Turns on what a lesson is about: at Brewster's angle, the rays by their share of p light
-    /// (the reflected one vanishes), so that the preset shows Brewster's angle.
+    /// Starts the effects of a lesson preset afresh: what the lesson is about and nothing the
+    /// last one turned on. At Brewster's angle, the rays by their share of p light (the
+    /// reflected one vanishes), so that the preset shows Brewster's angle; every other preset
+    /// with no effect (the next preset kept Brewster's p-light shares).
     pub(super) fn start(&mut self, lesson: refraction_model::Lesson) {
-        if lesson == refraction_model::Lesson::Brewster {
-            self.intensities = true;
-            self.polarisation = Polarisation::P;
-        }
+        let brewster = lesson == refraction_model::Lesson::Brewster;
+        self.intensities = brewster;
+        self.polarisation = if brewster {
+            Polarisation::P
+        } else {
+            Polarisation::Unpolarised
+        };
+        self.waves = false;
     }
 
     /// The light the rays are drawn for, while *Intensities* is on.
@@ -74,18 +83,32 @@ impl EffectsMenu {
     /// The *Effects* menu for the top bar (one button, so that the bar keeps its rows on a
     /// projector): the two switches, and each switch's options while it is on. The button
     /// shows selected while an effect is on; the menu stays open until a click outside it.
-    pub(super) fn menu(&mut self, ui: &mut Ui) {
+    ///
+    /// In presentation (`compact`), where the bar keeps one row in every language, the button
+    /// shows its icon; its name stays its accessible name and leads its hover.
+    pub(super) fn menu(&mut self, ui: &mut Ui, compact: bool) {
         let on = self.intensities || self.waves;
-        let button = Button::new(t!("effects-menu")).selected(on);
+        let name = t!("effects-menu");
+        let shown = if compact { EFFECTS_ICON } else { name.as_str() };
+        let button = Button::new(shown).selected(on);
         let config = MenuConfig::new().close_behavior(PopupCloseBehavior::CloseOnClickOutside);
         let (response, _) = MenuButton::from_button(button)
             .config(config)
             .ui(ui, |ui| self.switches(ui));
-        response.on_hover_text(t!("effects-menu-hover"));
+        response.widget_info(|| egui::WidgetInfo::selected(egui::Role::Button, true, on, &name));
+        let hover = t!("effects-menu-hover");
+        if compact {
+            response.on_hover_text(format!("{name}: {hover}"));
+        } else {
+            response.on_hover_text(hover);
+        }
     }
 
-    /// The switches and their options, one under the other.
+    /// The switches and their options, one under the other, each on one line: the menu is as
+    /// wide as its longest (a menu as narrow as its first switch broke "Construction de
+    /// Huygens" inside its words on a projector).
     fn switches(&mut self, ui: &mut Ui) {
+        ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
         ui.toggle_value(&mut self.intensities, t!("effects-intensities"))
             .on_hover_text(t!("effects-intensities-hover"));
         if self.intensities {
@@ -134,5 +157,16 @@ mod tests {
         frame(&mut effects);
         let phase = effects.waves().unwrap().phase;
         assert!(phase > 0.0 && phase < 1.0, "{phase}");
+    }
+
+    #[test]
+    fn a_preset_starts_with_its_own_effects_and_none_of_the_last_ones() {
+        use refraction_model::Lesson;
+        let mut effects = EffectsMenu::default();
+        effects.start(Lesson::Brewster);
+        assert_eq!(effects.intensities(), Some(Polarisation::P));
+        effects.waves = true;
+        effects.start(Lesson::AirToGlass);
+        assert_eq!((effects.intensities(), effects.waves()), (None, None));
     }
 }

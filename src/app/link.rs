@@ -74,9 +74,14 @@ impl LinkRow {
             Some(url) => {
                 ui.add(egui::Label::new(RichText::new(url).monospace().weak()).selectable(true));
             }
-            None => {
-                ui.label(RichText::new(t!("link-no-web-base")).weak());
-            }
+            None => match link::web_base(&self.base) {
+                Err(refusal) if !self.base.trim().is_empty() => {
+                    ui.label(RichText::new(refusal.message()).color(ui.visuals().warn_fg_color));
+                }
+                _ => {
+                    ui.label(RichText::new(t!("link-no-web-base")).weak());
+                }
+            },
         }
         status::show(ui, self.said.as_ref(), Look::Plain);
     }
@@ -92,16 +97,99 @@ pub(super) struct Sharing {
     pub notice: Option<String>,
     /// What the QR code's *Save* buttons said.
     saved: Option<Status>,
+    /// The web address being typed in the QR code's dialog, kept apart from the one set until
+    /// Enter or *Show the QR code*: set at each key, the first letter made a link and the
+    /// dialog swapped its field for that letter's QR code, losing the rest of the typing.
+    draft: String,
+    /// The dialog has just opened: its address field takes the keyboard.
+    focus_draft: bool,
 }
 
-/// The web build's address `base` as a link's start, or `None` when it is empty.
-fn base_of(base: &str) -> Option<&str> {
-    Some(base.trim()).filter(|b| !b.is_empty())
+/// The QR code dialog's address field (focused when the dialog opens, `focus`, so that the
+/// teacher types at once) and its button: the address typed into `draft`, returned once
+/// Enter or the button gives it.
+fn address_field(ui: &mut Ui, draft: &mut String, focus: &mut bool) -> Option<String> {
+    ui.horizontal_wrapped(|ui| {
+        let name = ui.label(t!("link-web-base"));
+        let field = ui
+            .add(
+                TextEdit::singleline(draft)
+                    .hint_text("https://…")
+                    .desired_width(300.0),
+            )
+            .labelled_by(name.id)
+            .on_hover_text(t!("link-web-base-hover"));
+        if core::mem::take(focus) {
+            field.request_focus();
+        }
+        let entered = field.lost_focus() && ui.input(|i| i.key_pressed(Key::Enter));
+        let shown = ui
+            .add_enabled(
+                base_of(draft).is_some(),
+                egui::Button::new(t!("link-qr-show")),
+            )
+            .clicked();
+        ((entered || shown) && base_of(draft).is_some()).then(|| core::mem::take(draft))
+    })
+    .inner
 }
+
+/// The least width of the QR code's dialog, in points: the address field and its button.
+const QR_DIALOG_WIDTH: f32 = 360.0;
+
+/// The QR code's side in its dialog, in points: half the window's shorter side at the desk,
+/// three quarters on a projector, and never so large that the dialog (the code in its quiet
+/// zone, the link `url` under it, the buttons and the margins) runs out of the window: it ran
+/// off the top of a 1280×720 projector.
+fn qr_side(ui: &Ui, url: &str, presenting: bool) -> f32 {
+    let screen = ui.ctx().content_rect();
+    let share = if presenting { 0.72 } else { 0.5 };
+    let wanted = screen.width().min(screen.height()) * share;
+    let font = egui::TextStyle::Monospace.resolve(ui.style());
+    let wrap = wanted.max(QR_DIALOG_WIDTH);
+    let link = ui
+        .painter()
+        .layout(url.to_owned(), font, egui::Color32::PLACEHOLDER, wrap)
+        .size()
+        .y;
+    let spacing = ui.spacing();
+    // The rows under the link (a file's warning, the buttons, what they said), the spaces
+    // between the rows and the dialog's frame.
+    let rows = 3.0 * spacing.interact_size.y + 5.0 * spacing.item_spacing.y;
+    let frame = 2.0 * (spacing.window_margin.topf() + spacing.window_margin.bottomf()) + 8.0;
+    wanted.min(screen.height() - link - rows - frame).max(120.0)
+}
+
+/// The web build's address `base` as a link's start ([`link::web_base`]), or `None` when it
+/// is empty or cannot start a link (the row says why).
+fn base_of(base: &str) -> Option<String> {
+    link::web_base(base).ok()
+}
+
+/// The most characters of a strip's message shown: a refusal quotes a link, which can be
+/// megabytes long.
+const NOTICE_CHARS: usize = 400;
 
 /// Why a link has no QR code, in words.
 fn too_long(error: &refraction_diagram::qr::TooLong) -> String {
     t!("link-qr-too-long", bytes = error.0.to_string())
+}
+
+/// What the strip says when what the last run kept cannot be used: the state that could not
+/// be read (the reader's reason), the web address refused; `None` when both were fine.
+pub(super) fn storage_notice(
+    unreadable_state: Option<&str>,
+    refused_base: Option<link::WebBaseError>,
+) -> Option<String> {
+    let state = unreadable_state.map(|reason| {
+        t!(
+            "storage-state-unreadable",
+            reason = link::echo(reason, link::ECHO_CHARS * 3)
+        )
+    });
+    let base = refused_base.map(|e| t!("storage-web-base-unusable", reason = e.reason()));
+    let said: Vec<String> = state.into_iter().chain(base).collect();
+    (!said.is_empty()).then(|| said.join(" "))
 }
 
 /// Writes the QR code of `url` as a picture of `format` under the next free
@@ -137,7 +225,11 @@ pub enum LinkRefusal {
     /// No built-in lesson has this name.
     #[error(
         "{}",
-        t!("link-no-lesson", name = name.as_str(), names = builtin::names().join(", "))
+        t!(
+            "link-no-lesson",
+            name = link::echo(name, link::ECHO_CHARS),
+            names = builtin::names().join(", ")
+        )
     )]
     NoLesson {
         /// The name in the link.
@@ -148,7 +240,7 @@ pub enum LinkRefusal {
         "{}",
         t!(
             "link-no-step",
-            name = name.as_str(),
+            name = link::echo(name, link::ECHO_CHARS),
             step = step.to_string(),
             count = count.to_string()
         )
@@ -179,7 +271,14 @@ impl Explorer {
     /// The link of what the class sees at the web build's address, if one is set.
     #[must_use]
     pub fn link_url(&self) -> Option<String> {
-        base_of(&self.tools.files.share.base).map(|base| link::url(base, &self.link()))
+        base_of(&self.tools.files.share.base).map(|base| link::url(&base, &self.link()))
+    }
+
+    /// The link of what the class sees for the students' own devices (the QR code's): the
+    /// link that also asks for the student's view, at the web build's address, if one is set.
+    #[must_use]
+    pub fn student_link_url(&self) -> Option<String> {
+        base_of(&self.tools.files.share.base).map(|base| link::student_url(&base, &self.link()))
     }
 
     /// The web build's address (empty: none).
@@ -200,7 +299,11 @@ impl Explorer {
     /// A fragment cut short, damaged or from a newer version, an unknown deck or a step past
     /// its end (worded, when shown, in the current language); nothing is changed.
     pub fn open_link(&mut self, fragment: &str) -> Result<(), LinkRefusal> {
-        match link::parse(fragment)? {
+        let parsed = link::parse(fragment)?;
+        if parsed.is_some() {
+            self.student.asked = link::asks_student_view(fragment);
+        }
+        match parsed {
             None => {}
             Some(Link::State(state)) => {
                 self.state = *state;
@@ -227,6 +330,7 @@ impl Explorer {
         // Only the tool shows it (a deck's step is matched against the built-in decks).
         let shown = self.tools.open == Some(super::tools::Tool::Files);
         self.tools.files.share.url = shown.then(|| self.link_url()).flatten();
+        let was_open = self.sharing.qr_open;
         if core::mem::take(&mut self.tools.files.share.qr_asked) {
             self.sharing.qr_open = true;
         }
@@ -234,11 +338,17 @@ impl Explorer {
         if !typing && ui.input_mut(|i| i.consume_key(egui::Modifiers::NONE, Key::Q)) {
             self.sharing.qr_open = !self.sharing.qr_open;
         }
+        self.sharing.focus_draft |= self.sharing.qr_open && !was_open;
         if let Some(notice) = self.sharing.notice.clone() {
+            // Esc closes the strip, unless a dialog over the window takes it first.
+            let escape = !self.sharing.qr_open
+                && !typing
+                && ui.input_mut(|i| i.consume_key(egui::Modifiers::NONE, Key::Escape));
+            let shown = link::echo(&notice, NOTICE_CHARS);
             Panel::top("link-notice").show(ui, |ui| {
                 ui.horizontal_wrapped(|ui| {
-                    ui.label(RichText::new(format!("⚠ {notice}")).strong());
-                    if ui.button(t!("link-notice-close")).clicked() {
+                    ui.label(RichText::new(format!("⚠ {shown}")).strong());
+                    if ui.button(t!("link-notice-close")).clicked() || escape {
                         self.sharing.notice = None;
                     }
                 });
@@ -250,18 +360,21 @@ impl Explorer {
     }
 
     /// The QR code of what the class sees, large and centred over the window, with the link
-    /// under it; without an address, the field to type one.
+    /// under it; without an address, the field to type one. The code opens the student's
+    /// view: it is for the students' phones.
     fn qr_modal(&mut self, ui: &Ui) {
-        let screen = ui.ctx().content_rect();
-        let share = if self.presentation.on { 0.72 } else { 0.5 };
-        let side = (screen.width().min(screen.height()) * share).max(160.0);
-        let url = self.link_url();
+        let url = self.student_link_url();
+        let side = qr_side(ui, url.as_deref().unwrap_or_default(), self.presentation.on);
         let modal = Modal::new(Id::unique("qr-code")).show(ui.ctx(), |ui| {
-            ui.set_max_width(side.max(360.0));
+            ui.set_max_width(side.max(QR_DIALOG_WIDTH));
             let Some(url) = url else {
                 ui.heading(t!("link-qr"));
                 ui.label(t!("link-no-web-base"));
-                self.tools.files.share.ui(ui);
+                let sharing = &mut self.sharing;
+                if let Some(base) = address_field(ui, &mut sharing.draft, &mut sharing.focus_draft)
+                {
+                    self.set_web_base(&base);
+                }
                 return;
             };
             match Code::new(&url) {

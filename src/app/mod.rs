@@ -10,6 +10,7 @@
 //! `browser::start`.
 
 mod accuracy;
+mod announce;
 mod background;
 #[cfg(target_arch = "wasm32")]
 pub mod browser;
@@ -33,6 +34,8 @@ mod retrace;
 mod scene_files;
 mod scenes;
 mod status;
+mod steps;
+mod student;
 mod tools;
 mod typed;
 mod walkthrough;
@@ -163,6 +166,13 @@ pub struct Explorer {
     system_language: Option<Locale>,
     /// The QR code shown, and what a link that could not be opened said.
     sharing: link::Sharing,
+    /// The window's title last given to the window ([`Explorer::title`]).
+    titled: String,
+    /// Whether the student's view is asked for or turned down.
+    student: student::StudentView,
+    /// Whether the last frame showed the student's view (its diagram has no index scale and
+    /// handles for a finger: [`Explorer::overlay`]).
+    student_shown: bool,
 }
 
 impl Explorer {
@@ -188,6 +198,9 @@ impl Explorer {
             command_line_language: None,
             system_language: Some(refraction_i18n::locale()),
             sharing: link::Sharing::default(),
+            titled: crate::TITLE.to_owned(),
+            student: student::StudentView::default(),
+            student_shown: false,
         }
     }
 
@@ -195,21 +208,38 @@ impl Explorer {
     /// reads a value eframe kept, by key).
     #[must_use]
     pub fn launched(launch: Launch, saved: impl Fn(&str) -> Option<String>) -> Self {
-        let restored = || {
-            let json = saved(STORAGE_KEY)?;
-            state_file::parse(&json).ok()
-        };
         let from_state_file = launch.state.is_some();
-        let mut explorer = Self::new(launch.state.or_else(restored).unwrap_or_default());
+        // The state kept from last time, unless a state file was given: one that cannot be
+        // read is said (in the window's language, once it is set) rather than dropped.
+        let (restored, unreadable) = match saved(STORAGE_KEY).filter(|_| !from_state_file) {
+            None => (None, None),
+            Some(json) => match state_file::parse(&json) {
+                Ok(state) => (Some(state), None),
+                Err(e) => (None, Some(e.to_string())),
+            },
+        };
+        let mut explorer = Self::new(launch.state.or(restored).unwrap_or_default());
         if let Some(look) = saved(LOOK_KEY) {
             explorer.presentation.restore_look(&look);
         }
         if let Some(view) = saved(VIEW_KEY) {
             explorer.restore_view(&view);
         }
-        if let Some(base) = launch.web_base.or_else(|| saved(link::WEB_BASE_KEY)) {
-            explorer.set_web_base(&base);
-        }
+        // The command line's address is checked already; the one kept may not be (it was
+        // typed, or kept by an older version): it is used only if it can start a link.
+        let stored_base = launch.web_base.is_none().then(|| saved(link::WEB_BASE_KEY));
+        let refused_base = match (launch.web_base, stored_base.flatten()) {
+            (Some(base), _) => {
+                explorer.set_web_base(&base);
+                None
+            }
+            (None, Some(base)) if !base.trim().is_empty() => {
+                refraction_tools::link::web_base(&base)
+                    .map(|base| explorer.set_web_base(&base))
+                    .err()
+            }
+            (None, _) => None,
+        };
         if from_state_file {
             explorer.view = View::Interface;
         }
@@ -223,6 +253,7 @@ impl Explorer {
         explorer.command_line_language = launch.language;
         explorer.system_language = launch.system_language;
         refraction_i18n::set_locale(explorer.language());
+        explorer.sharing.notice = link::storage_notice(unreadable.as_deref(), refused_base);
         if let Some(name) = launch.lesson {
             explorer.open_lesson(&name);
         }
@@ -294,7 +325,8 @@ impl Explorer {
         self.state = state;
     }
 
-    /// What is drawn over the diagram now: palette, view, the student's T, the highlights.
+    /// What is drawn over the diagram now: palette, view, the student's T, the highlights; in
+    /// the student's view, no index scale and handles for a finger.
     #[must_use]
     pub fn overlay(&self) -> Overlay {
         Overlay {
@@ -305,8 +337,10 @@ impl Explorer {
             intensities: self.effects.intensities(),
             waves: self.effects.waves(),
             hide_answer: self.lesson.hides_answer(),
-            index_scale: !self.diagram_only(),
+            index_scale: !self.diagram_only() && !self.student_shown,
             simple: self.presentation.simple,
+            paper: false,
+            touch: self.student_shown,
         }
     }
 
@@ -360,6 +394,38 @@ impl Explorer {
             self.view = View::Interface;
         }
         self.sharing(ui);
+        let title = self.title();
+        if title != self.titled {
+            ui.ctx()
+                .send_viewport_cmd(egui::ViewportCommand::Title(title.clone()));
+            self.titled = title;
+        }
+        self.student_shown = self.student.shown(ui.ctx(), self.presentation.on);
+        if self.student_shown {
+            self.show_student(ui);
+        } else {
+            self.show_teacher(ui);
+        }
+        announce::follow(ui, self);
+        let settled = !ui.input(|i| i.pointer.any_down()) && !self.tools.walk.animating();
+        if settled {
+            let (state, scene) = (&self.state, self.scenes.scene());
+            self.history.record_unless(
+                |present| present.same_as(state, scene),
+                |present| Snapshot::after(present, state, scene),
+            );
+        }
+    }
+
+    /// Whether the window shows the student's view now (a small screen, or a link that
+    /// asked for it; never in presentation).
+    #[must_use]
+    pub fn shows_student_view(&self, ctx: &egui::Context) -> bool {
+        self.student.shown(ctx, self.presentation.on)
+    }
+
+    /// The teacher's window: the bar, the deck's strip and tool, then the view.
+    fn show_teacher(&mut self, ui: &mut Ui) {
         Panel::top("views").show(ui, |ui| self.bar(ui));
         if !self.diagram_only() {
             self.deck_frame(ui);
@@ -384,14 +450,6 @@ impl Explorer {
                 });
             }
         }
-        let settled = !ui.input(|i| i.pointer.any_down()) && !self.tools.walk.animating();
-        if settled {
-            let (state, scene) = (&self.state, self.scenes.scene());
-            self.history.record_unless(
-                |present| present.same_as(state, scene),
-                |present| Snapshot::after(present, state, scene),
-            );
-        }
     }
 
     /// The bar at the top: views, undo and redo (and what the last one did), presentation,
@@ -414,10 +472,13 @@ impl Explorer {
                 .bar(ui, self.presentation.on, self.lesson.deck.is_some());
             if self.view == View::Interface {
                 ui.separator();
-                self.effects.menu(ui);
+                self.effects.menu(ui, self.presentation.on);
                 if self.presentation.on {
                     self.panels.bar_switches(ui);
                 }
+            }
+            if !self.presentation.on {
+                self.student.switch(ui);
             }
             // What the last undo did, in what is left of the bar's last row, cut with "…"
             // (the whole on hover): it never grows the bar by a row.
@@ -485,7 +546,11 @@ impl Explorer {
         if self.diagram_only() {
             let mut overlay = self.overlay();
             egui::CentralPanel::no_frame().show(ui, |ui| {
-                canvas::show(ui, &mut self.state, &mut overlay, false);
+                let under = canvas::Under {
+                    steps: false,
+                    hint: false,
+                };
+                canvas::show(ui, &mut self.state, &mut overlay, under);
             });
             self.presentation.pan_zoom = overlay.pan_zoom;
             return;
@@ -500,7 +565,9 @@ impl Explorer {
         // First, so that the tool has the window's full height beside (or width under) the
         // panels.
         let palette = self.presentation.palette();
-        self.tools.panel(ui, &mut self.state, presenting, &palette);
+        let hidden = self.lesson.hides_answer();
+        self.tools
+            .panel(ui, &mut self.state, (presenting, hidden), &palette);
         match self.tools.files.take_opened() {
             Some(files_panel::Opened::Scene(scene)) => self.open_scene(*scene),
             Some(files_panel::Opened::Deck(deck)) => self.open_deck(*deck),
@@ -528,9 +595,17 @@ impl Explorer {
         }
         // No margins (the diagram reaches the panels), but the panel's fill under the key hint.
         let frame = egui::Frame::NONE.fill(ui.visuals().panel_fill);
+        // The step buttons give way to a tool or a side panel on a projector (the controls
+        // panel has its own way to each value).
+        let side = self.panels.presenting;
+        let crowded = self.tools.open.is_some() || side.controls || side.numbers;
+        let under = canvas::Under {
+            steps: !presenting || !crowded,
+            hint: !presenting,
+        };
         egui::CentralPanel::no_frame()
             .frame(frame)
-            .show(ui, |ui| canvas::show(ui, state, &mut overlay, !presenting));
+            .show(ui, |ui| canvas::show(ui, state, &mut overlay, under));
         self.presentation.pan_zoom = overlay.pan_zoom;
     }
 }

@@ -216,9 +216,12 @@ impl Presentation {
             .on_hover_text(t!("presentation-simple-hover"));
     }
 
-    /// In presentation, the theme and the look's switches in one menu of the bar.
+    /// In presentation, the theme and the look's switches in one menu of the bar, shown as its
+    /// icon (the bar keeps one row in every language); its name is its accessible name and
+    /// its hover.
     fn look_menu(&mut self, ui: &mut Ui) {
-        ui.menu_button(format!("{} ⏷", t!("presentation-look")), |ui| {
+        let name = t!("presentation-look");
+        let response = ui.menu_button("🎨 ⏷", |ui| {
             ui.label(t!("presentation-theme"));
             for theme in Theme::ALL {
                 ui.radio_value(&mut self.theme, theme, theme.label());
@@ -227,6 +230,9 @@ impl Presentation {
             self.look_switches(ui);
             ui.checkbox(&mut self.diagram_only, t!("presentation-diagram-only"));
         });
+        let button = response.response;
+        button.widget_info(|| WidgetInfo::labeled(Role::Button, true, &name));
+        button.on_hover_text(name);
     }
 
     /// Presentation's diagram-only key (D, unless a text field has the keyboard): toggles the

@@ -63,6 +63,8 @@ pub struct ScenesView {
     answer_hidden: bool,
     /// A lesson step is shown: its strip stands above, and the hint line is left out.
     in_lesson: bool,
+    /// The handles are sized for a finger (the student's view).
+    touch: bool,
     /// In presentation, the scene's files, description and hint are shown (they start
     /// folded away, so that the scene owns the projector).
     more_shown: bool,
@@ -212,6 +214,7 @@ impl ScenesView {
             files: SceneFiles::default(),
             answer_hidden: false,
             in_lesson: false,
+            touch: false,
             more_shown: false,
             aspect: None,
             generation: 0,
@@ -352,15 +355,35 @@ impl ScenesView {
         palette: &Palette,
         presenting: bool,
     ) -> Option<ExplorerState> {
+        Panel::top("scene-controls").show(ui, |ui| {
+            self.controls(ui, presenting);
+            self.trace_status(ui);
+        });
+        self.show_canvas(ui, palette)
+    }
+
+    /// The canvas alone, over what `ui` has left, its handles for a finger (the student's
+    /// view, which shows no scene controls): returns the single-interface problem of the hit
+    /// point clicked, if one was.
+    pub(super) fn show_for_touch(
+        &mut self,
+        ui: &mut Ui,
+        palette: &Palette,
+    ) -> Option<ExplorerState> {
+        self.touch = true;
+        let clicked = self.show_canvas(ui, palette);
+        self.touch = false;
+        clicked
+    }
+
+    /// The canvas alone, over what `ui` has left: returns the single-interface problem of the
+    /// hit point clicked, if one was.
+    fn show_canvas(&mut self, ui: &mut Ui, palette: &Palette) -> Option<ExplorerState> {
         if let Some(done) = self.retracer.poll() {
             let shown = core::mem::replace(&mut self.trace, done);
             self.retracer.recycle(shown);
             self.generation += 1;
         }
-        Panel::top("scene-controls").show(ui, |ui| {
-            self.controls(ui, presenting);
-            self.trace_status(ui);
-        });
         CentralPanel::no_frame()
             .show(ui, |ui| self.canvas(ui, palette))
             .inner
@@ -417,8 +440,12 @@ impl ScenesView {
                 self.open(scene);
             }
             // One line each, whatever the language: a cut line shows its whole text on hover,
-            // and the scene keeps the window's height.
-            ui.add(egui::Label::new(scene_words::description(&self.scene)).truncate());
+            // and the scene keeps the window's height. A scene's description says what its
+            // light does (the fibre's total internal reflection, the slab's parallel exit): the
+            // answer of a question asked about it, left out until it is revealed.
+            if !self.answer_hidden {
+                ui.add(egui::Label::new(scene_words::description(&self.scene)).truncate());
+            }
             if !self.in_lesson {
                 ui.add(egui::Label::new(RichText::new(t!("scenes-hint")).weak()).truncate());
             }
@@ -464,11 +491,16 @@ impl ScenesView {
         let rect = response.rect;
         let to_screen = RectTransform::from_to(Rect::from_min_size(Pos2::ZERO, rect.size()), rect);
         let layout = self.drag_layout.unwrap_or_else(|| {
-            SceneLayout::for_scene(
+            let layout = SceneLayout::for_scene(
                 &self.scene,
                 &self.trace,
                 Vec2::new(rect.width(), rect.height()),
-            )
+            );
+            if self.touch {
+                layout.for_touch()
+            } else {
+                layout
+            }
         });
         let mut clicked_at = response
             .interact_pointer_pos()
@@ -494,7 +526,11 @@ impl ScenesView {
         let scene = &self.scene;
         let kept = self.kept.get_or_insert_with(|| Kept {
             key,
-            picture: ScenePicture::with_palette(scene, shown, &layout, palette),
+            picture: if hidden.is_some() {
+                ScenePicture::asking(scene, shown, &layout, palette)
+            } else {
+                ScenePicture::with_palette(scene, shown, &layout, palette)
+            },
             shapes: None,
         });
         kept.paint(&painter, &to_screen, dragging);

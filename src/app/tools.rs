@@ -2,7 +2,7 @@
 //! save / open / share, the Fresnel plot and the lesson deck (shown by the window itself, in
 //! every view: see [`super::deck`]). Their switches sit in the top bar.
 
-use egui::{Panel, Role, ScrollArea, Ui, WidgetInfo};
+use egui::{Panel, RichText, Role, ScrollArea, Ui, WidgetInfo};
 use refraction_i18n::t;
 
 use super::check_panel::CheckPanel;
@@ -53,6 +53,11 @@ impl Tool {
             Self::Fresnel => format!("📈 {}", t!("tool-fresnel")),
             Self::Deck => format!("📚 {}", t!("tool-deck")),
         }
+    }
+
+    /// Whether the tool shows what a step's question asks (T, θt, the share reflected).
+    fn shows_the_answer(self) -> bool {
+        matches!(self, Self::Check | Self::WalkThrough | Self::Fresnel)
     }
 
     /// The window's width the tool takes in presentation.
@@ -134,11 +139,14 @@ impl Tools {
     }
 
     /// The open tool in its panel ([`frame`]); the lesson deck's is the window's to show.
+    /// While a step's answer is hidden (`hidden`), a tool that would show it (the plot's
+    /// values at θi, the walk-through's numbers, a student's T against the right one) says so
+    /// in its place until the reveal.
     pub(super) fn panel(
         &mut self,
         ui: &mut Ui,
         state: &mut ExplorerState,
-        presenting: bool,
+        (presenting, hidden): (bool, bool),
         palette: &Palette,
     ) {
         self.shown = self.open;
@@ -146,6 +154,11 @@ impl Tools {
             return;
         };
         frame(ui, tool, presenting).show(ui, |ui| {
+            if hidden && tool.shows_the_answer() {
+                ui.label(RichText::new(tool.label()).strong());
+                ui.label(t!("deck-answer-hidden"));
+                return;
+            }
             ScrollArea::vertical().show(ui, |ui| match tool {
                 Tool::Check => self.check.show(ui, state),
                 Tool::WalkThrough => self.walk.show(ui, state),

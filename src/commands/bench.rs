@@ -13,10 +13,18 @@ use super::{fail, output, output_error};
 const PLOT_SIZE: (u32, u32) = (1600, 1000);
 
 /// Runs the measurement, with a progress line on stderr when it is a terminal; prints the
-/// table (or JSON), then draws the plot into `plot` if given. The plot's path is checked
-/// before the measurement, so a bad one is found at once and a failed plot keeps the table.
+/// table (or JSON), then draws the plot into `plot` if given. The plot's path (never a file
+/// of another kind) is checked before the measurement, so a bad one is found at once and a failed plot keeps the table.
 pub(crate) fn run(quick: bool, json: bool, plot: Option<&Path>) -> ExitCode {
-    let checked = plot.map(|p| Destination::check(p, "--plot", false, &STILL));
+    let checked = plot.map(|p| {
+        Destination::check(p, "--plot", false, &STILL)?;
+        let kind = super::inputs::kind_of(super::render::format_of(p, "--plot", &STILL)?);
+        Ok::<_, super::render::RenderFailure>(super::inputs::refuse_other_kinds(
+            [p],
+            "--plot",
+            kind,
+        )?)
+    });
     if let Some(Err(message)) = checked {
         return fail("bench", &message);
     }

@@ -7,12 +7,13 @@ use std::process::ExitCode;
 
 use glam::Vec2;
 use refraction_deck::{Deck, builtin};
-use refraction_explorer::app::handout::{HandoutError, picture, write};
+use refraction_explorer::app::handout::{Drawn, HandoutError, picture, write};
 use refraction_render::format::ImageFormat;
 use refraction_render::handout::Sheet;
 use refraction_render::{RenderError, check_size, svg};
 use refraction_scene::LoadError;
 
+use super::inputs::{Input, OtherKind, OutputIsInput, refuse_inputs, refuse_other_kinds};
 use super::output::printable;
 use super::{fail, output_error};
 
@@ -72,6 +73,15 @@ enum LessonFailure {
     /// A file cannot be written (its own message names it).
     #[error(transparent)]
     Unwritable(io::Error),
+    /// `--out` names the deck or one of its scene files.
+    #[error(transparent)]
+    OutputIsInput(#[from] OutputIsInput),
+    /// `--out` (or a picture in its folder) holds a file of another kind.
+    #[error(transparent)]
+    OtherKind(#[from] OtherKind),
+    /// `--web-base` cannot start a link.
+    #[error(transparent)]
+    WebBase(#[from] super::WebBaseRefused),
 }
 
 /// What `--out` asks for: a folder when it ends in `/` or is one, a handout when it ends in
@@ -98,15 +108,30 @@ fn step_file(number: usize) -> String {
 
 /// Writes each step of `deck` as `step-01.svg`, `step-02.svg`, … in `folder` (made if it is
 /// missing), at `size` pixels: every picture is drawn before any is written, then all are
-/// written or none. Pictures of later steps that a longer deck left there (ours: our SVG's
+/// written or none, and none if one would replace a file the deck reads (`inputs`). Pictures
+/// of later steps that a longer deck left there (ours: our SVG's
 /// first line) are removed, so that the folder holds this deck's steps only.
-fn pictures(deck: &Deck, folder: &Path, (width, height): (u32, u32)) -> Result<(), LessonFailure> {
+fn pictures(
+    deck: &Deck,
+    folder: &Path,
+    (width, height): (u32, u32),
+    inputs: &[Input],
+) -> Result<(), LessonFailure> {
+    let paths: Vec<PathBuf> = (1..=deck.steps.len())
+        .map(|i| folder.join(step_file(i)))
+        .collect();
+    refuse_inputs(paths.iter().map(PathBuf::as_path), "--out", inputs)?;
+    refuse_other_kinds(
+        paths.iter().map(PathBuf::as_path),
+        "--out",
+        "an SVG picture",
+    )?;
     let size = Vec2::new(width as f32, height as f32);
     let texts = deck
         .steps
         .iter()
         .map(|step| {
-            let primitives = picture(deck, step, size, false)?;
+            let primitives = picture(deck, step, size, Drawn::default())?;
             svg::document(width, height, svg::Labels::default(), |_, _| primitives)
                 .map_err(LessonFailure::from)
         })
@@ -115,9 +140,6 @@ fn pictures(deck: &Deck, folder: &Path, (width, height): (u32, u32)) -> Result<(
         folder: folder.to_path_buf(),
         source,
     })?;
-    let paths: Vec<PathBuf> = (1..=texts.len())
-        .map(|i| folder.join(step_file(i)))
-        .collect();
     let files: Vec<(&Path, &[u8])> = paths
         .iter()
         .zip(&texts)
@@ -143,9 +165,23 @@ fn remove_stale_steps(folder: &Path, count: usize) {
     }
 }
 
+/// The files `deck`, opened as `lesson`, was read from: its own (unless it is a built-in
+/// deck) and its steps' scene files.
+fn inputs_of(lesson: &str, deck: &Deck) -> Vec<Input> {
+    let own = (!builtin::names().contains(&lesson)).then(|| Input {
+        path: PathBuf::from(lesson),
+        what: "the deck",
+    });
+    let scenes = deck.scene_files().into_iter().map(|path| Input {
+        path,
+        what: "a scene of the deck",
+    });
+    own.into_iter().chain(scenes).collect()
+}
+
 /// Runs `render --lesson NAME|FILE --out OUT`: the deck's handout (`OUT` ending in `.pdf`) or
 /// its steps as SVG pictures of `size` (`OUT` a folder). The output is checked before the deck
-/// is drawn: the teacher's handout or the class's sheet (`sheet`); with `web_base`, each page
+/// is drawn, and never replaces the deck or a scene file it reads: the teacher's handout or the class's sheet (`sheet`); with `web_base`, each page
 /// of a handout carries its step's link and QR code.
 pub(crate) fn render(
     lesson: &str,
@@ -154,13 +190,22 @@ pub(crate) fn render(
     (sheet, web_base): (Sheet, Option<&str>),
 ) -> ExitCode {
     let checked = check_size(size.0, size.1).map_err(LessonFailure::from);
-    let drawn = checked.and_then(|()| out_of(out)).and_then(|to| {
-        let deck = Deck::load(lesson)?;
-        match to {
-            Out::Handout(path) => Ok(write(&deck, sheet, web_base, &path)?),
-            Out::Folder(folder) => pictures(&deck, &folder, size),
-        }
-    });
+    let base = checked.and_then(|()| Ok(super::web_base(web_base)?));
+    let drawn = base
+        .and_then(|base| Ok((base, out_of(out)?)))
+        .and_then(|(base, to)| {
+            let web_base = base.as_deref();
+            let deck = Deck::load(lesson)?;
+            let inputs = inputs_of(lesson, &deck);
+            match to {
+                Out::Handout(path) => {
+                    refuse_inputs([path.as_path()], "--out", &inputs)?;
+                    refuse_other_kinds([path.as_path()], "--out", "a PDF")?;
+                    Ok(write(&deck, sheet, web_base, &path)?)
+                }
+                Out::Folder(folder) => pictures(&deck, &folder, size, &inputs),
+            }
+        });
     match drawn {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => fail("render", &message),

@@ -4,6 +4,7 @@
 //! written: every write goes through [`output`] and a failed one sets the exit status.
 
 pub(crate) mod bench;
+pub(crate) mod inputs;
 pub(crate) mod lessons;
 pub(crate) mod lines;
 pub(crate) mod output;
@@ -39,4 +40,35 @@ pub(crate) fn output_error(command: &str, error: &std::io::Error) -> ExitCode {
     } else {
         fail(command, &format!("cannot write the output: {error}"))
     }
+}
+
+/// `--web-base` that cannot start a link ([`refraction_tools::link::web_base`], the one check
+/// the window and the page use too), quoting the address (cut, its control characters
+/// escaped) before the reason, so that the reason is never cut from the message.
+#[derive(Debug, thiserror::Error)]
+#[error(
+    "--web-base `{shown}` cannot start a link: {reason}; give the address where the web build's \
+     folder is hosted, such as https://school.example/explorer/"
+)]
+pub(crate) struct WebBaseRefused {
+    /// The address as given, quoted.
+    shown: String,
+    /// Why it is refused.
+    reason: refraction_tools::link::WebBaseError,
+}
+
+/// The web build's address `--web-base` gives, checked and written as links start with it.
+///
+/// # Errors
+/// The address cannot start a link.
+pub(crate) fn web_base(given: Option<&str>) -> Result<Option<String>, WebBaseRefused> {
+    use refraction_tools::link;
+    given
+        .map(|url| {
+            link::web_base(url).map_err(|reason| WebBaseRefused {
+                shown: link::echo(url, link::ECHO_CHARS),
+                reason,
+            })
+        })
+        .transpose()
 }

@@ -16,6 +16,7 @@ use refraction_render::{self as render, Picture, format::ImageFormat};
 use refraction_scene::Scene;
 use refraction_tools::state_file;
 
+use super::inputs::{Input, OtherKind, OutputIsInput, kind_of, refuse_inputs, refuse_other_kinds};
 use super::output::ProgressLine;
 use super::{fail, output, output_error};
 
@@ -104,6 +105,12 @@ pub(crate) enum RenderFailure {
     /// The progress line could not be written.
     #[error("cannot write the progress to stderr: {0}")]
     Progress(std::io::Error),
+    /// `--out` names the state file or the scene file read.
+    #[error(transparent)]
+    OutputIsInput(#[from] OutputIsInput),
+    /// `--out` (or `--plot`) names a file of another kind.
+    #[error(transparent)]
+    OtherKind(#[from] OtherKind),
 }
 
 /// Where an image goes: a file, written by [`refraction_files::write_atomically`], or stdout (`-`).
@@ -288,9 +295,28 @@ fn animation(args: &RenderArgs, animation: Animation) -> Result<Vec<u8>, RenderF
     }
 }
 
+/// The files `render` reads for `args`: the state file, or a scene's file (not a built-in
+/// scene).
+fn inputs_of(args: &RenderArgs) -> Vec<Input> {
+    let state = args.state.iter().map(|path| Input {
+        path: path.clone(),
+        what: "the state file",
+    });
+    let scene = args
+        .scene
+        .iter()
+        .filter(|name| Scene::embedded(name).is_err())
+        .map(|name| Input {
+            path: name.into(),
+            what: "the scene file",
+        });
+    state.chain(scene).collect()
+}
+
 /// Draws what `args` ask for into `--out` (`-`: stdout): a picture of the single interface or
-/// of a traced scene as PNG or SVG, or with `--animate` an animated GIF. The output path, the
-/// size and the animation's frames and rate are checked before anything is traced or drawn.
+/// of a traced scene as PNG or SVG, or with `--animate` an animated GIF. The output path (never
+/// a file read), the size and the animation's frames and rate are checked before anything is
+/// traced or drawn.
 pub(crate) fn run(args: &RenderArgs) -> ExitCode {
     if let Some(lesson) = &args.lesson {
         let sheet = if args.students {
@@ -307,6 +333,14 @@ pub(crate) fn run(args: &RenderArgs) -> ExitCode {
         None => &STILL,
     };
     let drawn = Destination::check(&args.out, "--out", true, formats).and_then(|to| {
+        // Standard output too may be a file read (`--out - >> state.svg`).
+        let path = match to {
+            Destination::File(path) => path,
+            Destination::Stdout => Path::new("/dev/stdout"),
+        };
+        refuse_inputs([path], "--out", &inputs_of(args))?;
+        let format = format_of(&args.out, "--out", formats)?;
+        refuse_other_kinds([path], "--out", kind_of(format))?;
         let bytes = match args.animate {
             Some(a) => animation(args, a),
             None => format_of(&args.out, "--out", formats).and_then(|f| picture(args, f)),

@@ -30,13 +30,17 @@ pub(crate) struct Window {
 }
 
 /// Opens the explorer window as `window` asks; a state file or a lesson deck that cannot be
-/// read is refused before any window opens.
+/// read, or a web address that cannot start a link, is refused before any window opens.
 pub(crate) fn open(window: &Window) -> ExitCode {
     if let Some(Err(e)) = window.lesson.as_deref().map(refraction_deck::Deck::load) {
         return fail("", &e);
     }
     let state = match window.state.as_deref().map(state_file::open).transpose() {
         Ok(state) => state,
+        Err(e) => return fail("", &e),
+    };
+    let web_base = match super::web_base(window.web_base.as_deref()) {
+        Ok(base) => base,
         Err(e) => return fail("", &e),
     };
     let launch = Launch {
@@ -47,7 +51,7 @@ pub(crate) fn open(window: &Window) -> ExitCode {
         theme: window.theme,
         language: window.language,
         system_language: sys_locale::get_locale().and_then(|tag| Locale::from_tag(&tag)),
-        web_base: window.web_base.clone(),
+        web_base,
     };
     match app::run(launch) {
         Ok(()) => ExitCode::SUCCESS,

@@ -23,7 +23,7 @@ fn undo_and_redo_step_through_every_kind_of_change_and_a_drag_is_one_step() {
     seen.push(h.state().state().clone());
     click(&mut h, "Section 1: W points back toward the origin");
     seen.push(h.state().state().clone());
-    let from = center_of(&h, "W handle");
+    let from = center_of(&h, "Angle of incidence θi (W)");
     drag(&mut h, from, from + Vec2::new(-60.0, 40.0));
     seen.push(h.state().state().clone());
     click(&mut h, "Flip N");
@@ -60,13 +60,13 @@ fn presentation_mode_zooms_the_ui_and_the_themes_change_panels_and_diagram() {
     // 1280 pixels zoomed are 800 points: the controls give way to the diagram.
     assert!(h.query_by_label("Flip N").is_none());
     // On a projector the bar keeps one row: the theme and the look's switches are in one menu.
-    click(&mut h, "Look ⏷");
+    click(&mut h, "Look");
     click(&mut h, &Theme::HighContrastDark.label());
     assert!(h.ctx.global_style().visuals.dark_mode);
     let palette = h.state().overlay().palette;
     assert_eq!(palette.background, glam_colour(0x000000));
     if h.query_by_label("Colour-blind safe").is_none() {
-        click(&mut h, "Look ⏷");
+        click(&mut h, "Look");
     }
     click(&mut h, "Colour-blind safe");
     // Every palette now labels the incoming ray; the switch gives the colour-blind-safe one.
@@ -150,7 +150,7 @@ fn what_an_undo_did_never_grows_the_top_bar() {
         }
         let top = |h: &Harness<'_, Explorer>| h.get_by_role(Role::Image).rect().min.y;
         let before = top(&h);
-        h.get_by_label("W handle").focus();
+        h.get_by_label("Angle of incidence θi (W)").focus();
         h.run();
         h.key_press(Key::ArrowLeft);
         h.run();

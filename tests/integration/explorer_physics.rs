@@ -87,7 +87,7 @@ fn the_fresnel_tool_names_its_landmarks_and_its_cursor_follows_the_drag() {
     );
     let before = format!("At θi = {:.1}°", h.state().state().incidence_degrees());
     assert!(h.query_by_label_contains(&before).is_some(), "{before}");
-    let from = center_of(&h, "W handle");
+    let from = center_of(&h, "Angle of incidence θi (W)");
     drag(&mut h, from, from + Vec2::new(-70.0, 30.0));
     let degrees = h.state().state().incidence_degrees();
     let after = format!("At θi = {degrees:.1}°");

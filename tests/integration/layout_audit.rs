@@ -1144,3 +1144,243 @@ fn a_lesson_step_with_a_question_keeps_the_layout_rules_in_presentation() {
     refraction_i18n::set_locale(Locale::En);
     report("lesson steps", &measured);
 }
+
+/// The layouts a hidden step is audited in: the desk and the projector at 1280×720, and a
+/// phone's student view.
+const HIDDEN_STEP_LAYOUTS: [(&str, (f32, f32), bool); 3] = [
+    ("desk", (1280.0, 720.0), false),
+    ("presentation", (1280.0, 720.0), true),
+    ("phone", (390.0, 844.0), false),
+];
+
+/// The light a step's *Intensities* draws for.
+fn polarisation_of(light: refraction_deck::Light) -> refraction_diagram::intensities::Polarisation {
+    use refraction_diagram::intensities::Polarisation;
+    match light {
+        refraction_deck::Light::Unpolarised => Polarisation::Unpolarised,
+        refraction_deck::Light::S => Polarisation::S,
+        refraction_deck::Light::P => Polarisation::P,
+    }
+}
+
+/// The words that give a hidden step's answer away. On the one interface: every line of the
+/// revealed diagram's labels that gives θt, the critical angle, a candidate's (a, b), a·W,
+/// a share of the light or the discriminant k, and under total internal reflection its words
+/// (the banner's first line, "reflected ray (all the light)"). In a scene: the whole trace's
+/// counts of kernel calls, reflections and total internal reflections, Fresnel evaluations,
+/// the words "total internal reflection" where the light meets one, and the scene's
+/// description (the fibre's "repeated total internal reflection", the slab's parallel exit).
+fn answer_words(deck: &refraction_deck::Deck, step: &refraction_deck::Step) -> Vec<String> {
+    use refraction_deck::{Effect, StepView};
+    let mut words = Vec::new();
+    if step.view == StepView::Scenes {
+        let scene = deck.scene(step).unwrap();
+        let trace = scene.trace();
+        let c = &trace.counts;
+        words.extend([
+            t!("diagram-count-kernel-calls", count = c.kernel_calls),
+            t!("diagram-count-tir", count = c.total_internal_reflections),
+            t!("diagram-count-reflections", count = c.reflections_spawned),
+            t!("diagram-count-fresnel", count = c.fresnel_evaluations),
+            refraction_diagram::scene_words::description(&scene),
+        ]);
+        if c.total_internal_reflections > 0 {
+            words.push(t!("diagram-hit-tir"));
+        }
+        return words;
+    }
+    let overlay = refraction_diagram::Overlay {
+        intensities: step
+            .has(Effect::Intensities)
+            .then(|| polarisation_of(step.light)),
+        ..refraction_diagram::Overlay::default()
+    };
+    let revealed = Diagram::with_overlay(&step.state, GVec2::new(1280.0, 720.0), &overlay);
+    let telling = ["θt", "θc", "(a, b)", "a = ", "%", "k = "];
+    for shape in &revealed.shapes {
+        if let Figure::Text(label) = shape {
+            words.extend(
+                label
+                    .text
+                    .lines()
+                    .filter(|line| telling.iter().any(|t| line.contains(t)))
+                    .map(str::to_owned),
+            );
+        }
+    }
+    if step.state.refraction().is_tir() {
+        words.push(t!("diagram-reflected-all"));
+        words.extend(revealed.summary.lines().next().map(str::to_owned));
+    }
+    words.sort();
+    words.dedup();
+    words
+}
+
+/// Every text the window drew in its last frame, and every name and value its accessibility
+/// tree gives (what a screen reader says), and the window's title.
+fn every_text(h: &Harness<'_, Explorer>) -> Vec<String> {
+    fn visit(shape: &Shape, texts: &mut Vec<String>) {
+        match shape {
+            Shape::Vec(shapes) => shapes.iter().for_each(|s| visit(s, texts)),
+            Shape::Text(text) => texts.push(text.galley.job.text.clone()),
+            _ => {}
+        }
+    }
+    let mut texts = vec![h.state().title()];
+    for clipped in &h.output().shapes {
+        visit(&clipped.shape, &mut texts);
+    }
+    for node in h.query_all_by(|_| true) {
+        let node = node.accesskit_node();
+        texts.extend(node.label());
+        texts.extend(node.value());
+    }
+    texts
+}
+
+/// The answer words (`words`) that `texts` give, where `what` was seen; the deck's title is
+/// its topic, named before any question, and left out.
+fn told(texts: &[String], words: &[String], deck_title: &str) -> Vec<String> {
+    let mut found = Vec::new();
+    for text in texts {
+        let text = text.replace(deck_title, "");
+        for word in words.iter().filter(|w| text.contains(w.as_str())) {
+            found.push(format!("“{word}” in “{}”", text.replace('\n', " ")));
+        }
+    }
+    found.sort();
+    found.dedup();
+    found
+}
+
+/// The words of a step's page on the student sheet: its diagram's labels as the sheet draws
+/// it (hidden, on paper), with the title and question the window shows too.
+fn sheet_texts(deck: &refraction_deck::Deck, step: &refraction_deck::Step) -> Vec<String> {
+    use refraction_explorer::app::handout::{Drawn, picture};
+    let drawn = Drawn {
+        hidden: true,
+        paper: true,
+    };
+    let primitives = picture(deck, step, GVec2::new(700.0, 525.0), drawn).unwrap();
+    primitives
+        .into_iter()
+        .filter_map(|p| match p {
+            Primitive::Text(label) => Some(label.text),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Issue 41: until the reveal nothing on any surface states the answer, in words as in lines:
+/// every step that asks of every built-in deck, in every language, at the desk, on the
+/// projector and on a phone (the strips, the readouts, the tools, the diagram's labels and
+/// banner, the screen reader's names, the window's title) and on the student sheet. Revealed,
+/// the same audit finds the words on screen: it sees what it looks for.
+#[test]
+fn no_surface_states_a_hidden_answer_before_the_reveal() {
+    let mut problems = Vec::new();
+    for language in Locale::ALL {
+        refraction_i18n::set_locale(language);
+        for name in refraction_deck::builtin::names() {
+            let deck = refraction_deck::Deck::load(name).unwrap();
+            audit_hidden_steps((name, &deck), language, &mut problems);
+        }
+    }
+    refraction_i18n::set_locale(Locale::En);
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+/// [`no_surface_states_a_hidden_answer_before_the_reveal`] for one deck in one language.
+fn audit_hidden_steps(
+    (name, deck): (&str, &refraction_deck::Deck),
+    language: Locale,
+    problems: &mut Vec<String>,
+) {
+    for (index, step) in deck.steps.iter().enumerate() {
+        if !step.hides_answer() {
+            continue;
+        }
+        let words = answer_words(deck, step);
+        let what = |layout: &str| format!("{language} {} step {} {layout}", deck.title, index + 1);
+        if words.is_empty() {
+            problems.push(format!("{}: no answer words to look for", what("")));
+            continue;
+        }
+        for found in told(&sheet_texts(deck, step), &words, &deck.title) {
+            problems.push(format!("{}: {found}", what("student sheet")));
+        }
+        for (layout, size, present) in HIDDEN_STEP_LAYOUTS {
+            let mut explorer = Explorer::new(ExplorerState::default());
+            let link = format!("#lesson={name}&step={}", index + 1);
+            explorer.open_link(&link).unwrap();
+            explorer.presentation_mut().on = present;
+            let mut h = harness_sized(explorer, size);
+            run_three_more_frames(&mut h);
+            assert!(h.state().lesson().hides_answer(), "{}", what(layout));
+            for found in told(&every_text(&h), &words, &deck.title) {
+                problems.push(format!("{}: {found}", what(layout)));
+            }
+            if layout == "desk" {
+                h.key_press(egui::Key::R);
+                run_three_more_frames(&mut h);
+                if told(&every_text(&h), &words, &deck.title).is_empty() {
+                    problems.push(format!(
+                        "{}: revealed, no answer word is seen",
+                        what(layout)
+                    ));
+                }
+            }
+        }
+    }
+}
+
+/// The student's view on a phone, upright (390 × 844) and sideways (844 × 390), in every
+/// language, over a deck's steps of each kind (normal incidence, past the critical angle,
+/// p light at Brewster's angle, the fibre's scene), hidden and revealed: the diagram's share,
+/// no text under 13 px, every control inside the window and no word broken inside, the
+/// labels off W, N and the handles, and every button a finger's size (44 px).
+#[test]
+fn the_students_view_keeps_the_layout_rules_on_a_phone() {
+    let mut measured = Vec::new();
+    let links = [
+        "#lesson=snell&step=2",
+        "#lesson=total-internal-reflection&step=3",
+        "#lesson=fresnel-brewster&step=3",
+        "#lesson=total-internal-reflection&step=5",
+    ];
+    for language in Locale::ALL {
+        refraction_i18n::set_locale(language);
+        for (size, held) in [((390.0, 844.0), "upright"), ((844.0, 390.0), "sideways")] {
+            for link in links {
+                let mut explorer = Explorer::new(ExplorerState::default());
+                explorer.open_link(link).unwrap();
+                let mut h = harness_sized(explorer, size);
+                run_three_more_frames(&mut h);
+                for revealed in [false, true] {
+                    let what = format!("{language} phone {held} {link} revealed {revealed}");
+                    assert!(h.state().shows_student_view(&h.ctx), "{what}");
+                    let scene = h.state().view() == refraction_explorer::app::View::Scenes;
+                    let mut m = measure(&h, &what, false, false, scene);
+                    if m.share < 0.4 {
+                        let share = m.share * 100.0;
+                        m.problems
+                            .push(format!("{what}: the diagram has {share:.0} %"));
+                    }
+                    for node in h.query_all_by_role(Role::Button) {
+                        let (r, name) = (node.rect(), node.accesskit_node().label());
+                        if r.height() < 43.5 || r.width() < 43.5 {
+                            let name = name.unwrap_or_default();
+                            m.problems.push(format!("{what}: “{name}” is {r:?}"));
+                        }
+                    }
+                    measured.push((what, m));
+                    h.key_press(egui::Key::R);
+                    run_three_more_frames(&mut h);
+                }
+            }
+        }
+    }
+    refraction_i18n::set_locale(Locale::En);
+    report("student's view", &measured);
+}

@@ -24,12 +24,16 @@ fn copy_link_gives_the_state_at_the_web_address_and_the_qr_code_shows_it() {
     assert!(h.query_by_label(&expected).is_some(), "the link is shown");
     click(&mut h, "🔗 Copy link");
     assert!(h.query_by_label("Link copied.").is_some());
-    // The link reads back as the state shown.
+    // The link reads back as the state shown, to far below what the diagram shows.
     let fragment = &expected[expected.find('#').unwrap()..];
     let mut other = Explorer::new(Default::default());
     other.open_link(fragment).unwrap();
-    assert_eq!(other.state(), h.state().state());
-    // The QR code: its picture is named with the link, and Q closes it.
+    let (opened, shown) = (other.state(), h.state().state());
+    assert!((opened.incidence_degrees() - shown.incidence_degrees()).abs() < 1e-4);
+    assert_eq!((opened.mu_i(), opened.mu_t()), (shown.mu_i(), shown.mu_t()));
+    // The QR code: its picture is named with the link for the students' phones (the student's
+    // view), and Q closes it.
+    let expected = format!("{expected}&view=student");
     click(&mut h, "QR code");
     let qr = h.get_by_role_and_label(Role::Figure, &expected);
     assert!(qr.rect().width() >= 300.0, "large: {:?}", qr.rect());
@@ -41,6 +45,75 @@ fn copy_link_gives_the_state_at_the_web_address_and_the_qr_code_shows_it() {
     assert!(
         h.query_by_role_and_label(Role::Figure, &expected).is_some(),
         "Q opens it too"
+    );
+}
+
+/// Q with no web address set, the documented first use in front of a class: the dialog's
+/// field has the keyboard at once and takes the whole address typed key by key (it took one
+/// letter, then showed that letter's QR code); Enter shows the QR code of the whole link.
+#[test]
+fn the_qr_dialog_takes_a_whole_address_typed_key_by_key() {
+    let mut h = harness(leaving_glass());
+    h.key_press(Key::Q);
+    h.run();
+    assert!(h.query_by_label_contains("No web address is set").is_some());
+    h.run();
+    for key in BASE.chars() {
+        h.event(egui::Event::Text(key.to_string()));
+        h.run();
+    }
+    let field = h.get_by_role_and_label(Role::TextInput, "Web address");
+    assert_eq!(
+        field.value().as_deref(),
+        Some(BASE),
+        "every key typed is kept"
+    );
+    assert_eq!(h.state().web_base(), "", "nothing is set before Enter");
+    h.key_press(Key::Enter);
+    h.run();
+    h.run();
+    let expected = link::student_url(BASE, &Link::State(Box::new(leaving_glass())));
+    assert_eq!(h.state().web_base(), BASE);
+    let qr = h.get_by_role_and_label(Role::Figure, &expected);
+    assert!(qr.rect().width() >= 300.0, "large: {:?}", qr.rect());
+    // The code is drawn from the link it is named with (one `url` in the dialog), and the
+    // link is written under it.
+    assert_eq!(
+        h.query_all_by_label(&expected).count(),
+        2,
+        "the code and the link"
+    );
+}
+
+/// On a 1280×720 projector (presentation) the QR code of a state's link stays inside the
+/// window with its quiet zone, the link and the buttons under it (it ran off the top), and
+/// the link's numbers are as short as the diagram shows them.
+#[test]
+fn the_qr_code_stays_inside_a_projectors_window() {
+    let launch = Launch {
+        state: Some(leaving_glass()),
+        web_base: Some(BASE.to_owned()),
+        present: true,
+        ..Launch::default()
+    };
+    let mut h = common::harness_sized(Explorer::launched(launch, |_| None), (1280.0, 720.0));
+    h.key_press(Key::Q);
+    h.run();
+    h.run();
+    let expected = link::student_url(BASE, &Link::State(Box::new(leaving_glass())));
+    assert!(
+        expected.len() < 150,
+        "{} characters: {expected}",
+        expected.len()
+    );
+    let window = h.ctx.content_rect();
+    let qr = h.get_by_role_and_label(Role::Figure, &expected).rect();
+    assert!(window.contains_rect(qr), "{qr:?} in {window:?}");
+    assert!(qr.height() >= window.height() * 0.4, "large: {qr:?}");
+    let close = h.get_by_label("Save as svg").rect();
+    assert!(
+        window.contains_rect(close),
+        "the buttons: {close:?} in {window:?}"
     );
 }
 
@@ -59,7 +132,7 @@ fn a_lesson_link_opens_the_step_and_the_link_follows_what_the_class_sees() {
     );
     // Dragging W during the step: the class now sees a state, not the step as saved.
     let mut h = harness_for(explorer);
-    let w = h.get_by_label("W handle").rect().center();
+    let w = h.get_by_label("Angle of incidence θi (W)").rect().center();
     drag(&mut h, w, w + egui::vec2(40.0, -20.0));
     let seen = h.state().link_url().unwrap();
     assert!(
@@ -123,6 +196,9 @@ fn the_handout_carries_each_steps_link_and_qr_code() {
         "ftp://x",
     ]);
     assert!(!refused.status.success());
-    assert!(String::from_utf8_lossy(&refused.stderr).contains("not the address of a web page"));
+    assert!(
+        String::from_utf8_lossy(&refused.stderr)
+            .contains("cannot start a link: it starts with `ftp`")
+    );
     std::fs::remove_dir_all(&folder).unwrap();
 }

@@ -9,6 +9,7 @@
 mod cli;
 mod common;
 
+mod accessibility;
 mod accuracy_view;
 mod bench_variants;
 mod check_api_cli;
@@ -44,5 +45,6 @@ mod slides_cli;
 mod snapshots;
 mod software_renderer;
 mod solve_cli;
+mod student_view;
 mod trace_cli;
 mod translations;

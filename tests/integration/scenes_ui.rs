@@ -150,7 +150,7 @@ fn clicking_the_droplets_exit_opens_it_with_the_flipped_normal() {
     let refraction = state.refraction();
     assert!(refraction.normal_flipped);
     assert!(state.mu_i() > 1.3 && state.mu_t() < 1.01, "water into air");
-    assert!(h.query_by_label("W handle").is_some());
+    assert!(h.query_by_label("Angle of incidence θi (W)").is_some());
 }
 
 #[test]

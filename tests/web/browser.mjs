@@ -2,6 +2,7 @@
 // through playwright-core, a static server for target/web on the loopback address, and ways
 // to read the explorer's page (its canvas's accessible name, its pixels).
 
+import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import http from 'node:http';
 import os from 'node:os';
@@ -55,17 +56,22 @@ export async function serve(changed = null) {
   return { server, base: `http://127.0.0.1:${server.address().port}/` };
 }
 
-/** Debian's Chromium, headless, with a fresh profile; resolves to a browser context. */
-export async function launch(size = { width: 1280, height: 720 }, locale = 'en-US') {
+/**
+ * Debian's Chromium, headless, with a fresh profile; resolves to a browser context. `device`
+ * adds to the context's options (`{ hasTouch: true, isMobile: true }` for a phone), `extra`
+ * to Chromium's flags.
+ */
+export async function launch(size = { width: 1280, height: 720 }, locale = 'en-US', device = {}, extra = []) {
   const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'refraction-chromium-'));
   const context = await chromium.launchPersistentContext(profile, {
     executablePath: '/usr/bin/chromium',
     headless: true,
-    args: FLAGS,
+    args: [...FLAGS, ...extra],
     viewport: size,
     deviceScaleFactor: 1,
     locale,
     acceptDownloads: true,
+    ...device,
   });
   context.profile = profile;
   return context;
@@ -75,6 +81,22 @@ export async function launch(size = { width: 1280, height: 720 }, locale = 'en-U
 export async function close(context) {
   await context.close();
   fs.rmSync(context.profile, { recursive: true, force: true });
+}
+
+/**
+ * Runs `check(page, context)` on a new page of a browser with a fresh profile (nothing kept
+ * from another test), speaking `locale`, started with the `extra` flags; fails on any console
+ * error.
+ */
+export async function inBrowser(check, locale = 'en-US', extra = []) {
+  const context = await launch(undefined, locale, {}, extra);
+  try {
+    const page = await newPage(context);
+    await check(page, context);
+    assert.deepEqual(page.errors, [], 'no console error');
+  } finally {
+    await close(context);
+  }
 }
 
 /** A new page that keeps every console error and uncaught exception in `page.errors`. */
@@ -232,4 +254,9 @@ export async function drag(page, from, dx, dy, steps = 20) {
   }
   await page.mouse.up();
   await frames(page, 3);
+}
+
+/** What the page's live region says (the window's strip, for screen readers). */
+export async function status(page) {
+  return page.evaluate(() => document.getElementById('status')?.textContent ?? '');
 }

@@ -7,8 +7,8 @@ import { after, before, test } from 'node:test';
 import { pathToFileURL } from 'node:url';
 
 import {
-  WEB, W_COLOUR, close, colours, drag, frames, launch, newPage, open, pixels, placesOf, ready,
-  said, serve, wHandle,
+  WEB, W_COLOUR, colours, drag, frames, inBrowser, open, pixels, placesOf, ready, said, serve,
+  status, wHandle,
 } from './browser.mjs';
 
 let server;
@@ -20,21 +20,6 @@ before(async () => {
 
 after(() => server.close());
 
-/**
- * Runs `check` on a new page of a browser with a fresh profile (nothing kept from another
- * test), speaking `locale`.
- */
-async function inBrowser(check, locale = 'en-US') {
-  const context = await launch(undefined, locale);
-  try {
-    const page = await newPage(context);
-    await check(page);
-    assert.deepEqual(page.errors, [], 'no console error');
-  } finally {
-    await close(context);
-  }
-}
-
 /** A state beyond the critical angle: glass to air at 53°, as `--state` reads it. */
 const BEYOND_CRITICAL = '{"w":[0.8,-0.6,0],"n":[0,1,0],"mu_i":1.5,"mu_t":1}';
 
@@ -45,11 +30,6 @@ function angles(words) {
     return found ? Number(found[1]) : null;
   };
   return { i: read('θi'), t: read('θt') };
-}
-
-/** What the page's live region says (the window's strip, for screen readers). */
-async function status(page) {
-  return page.evaluate(() => document.getElementById('status')?.textContent ?? '');
 }
 
 test('the page loads with no console error and draws the diagram', async () => {

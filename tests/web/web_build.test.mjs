@@ -92,7 +92,9 @@ test('after one visit the page loads and draws with the network off', async () =
     await ready(page);
     const picture = await pixels(page);
     assert.ok(colours(picture) > 40, 'drawn');
-    assert.ok(placesOf(picture, W_COLOUR).length > 200, 'W is drawn');
+    // Under total internal reflection W past the surface is dotted: its handle and dots.
+    const w = placesOf(picture, W_COLOUR).length;
+    assert.ok(w > 50, `W is drawn (${w} pixels of its colour)`);
     assert.match(await said(page), /TOTAL INTERNAL REFLECTION/, 'the link opens offline too');
     assert.deepEqual(page.errors, [], 'no console error');
   });

@@ -5,7 +5,9 @@
 use refraction_scene::{Path, Trace};
 
 /// `trace` up to the first surface: each source ray's first segment and the hit that ends it,
-/// no reflected ray. The counts stay those of the whole trace.
+/// no reflected ray. The counts stay those of the whole trace: the diagram's picture that asks
+/// the question (`ScenePicture::asking`) words only the source's rays and colours, since the
+/// others (reflections, total internal reflections, kernel calls) tell the answer.
 #[must_use]
 pub fn up_to_first_surface(trace: &Trace) -> Trace {
     let mut segments = Vec::new();

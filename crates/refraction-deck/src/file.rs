@@ -136,11 +136,19 @@ fn scene(spec: &Spanned<String>, folder: Option<&Path>) -> Result<String, Invali
 /// # Errors
 /// As [`Scene::load`].
 pub fn resolve_scene(name: &str, folder: Option<&Path>) -> Result<Scene, LoadError> {
-    if Scene::embedded(name).is_ok() {
-        return Scene::embedded(name);
+    match scene_file(name, folder) {
+        None => Scene::embedded(name),
+        Some(path) => Scene::load(&path.to_string_lossy()),
     }
-    let path = folder.map_or_else(|| PathBuf::from(name), |f| f.join(name));
-    Scene::load(&path.to_string_lossy())
+}
+
+/// The file the scene `name` is read from (relative to `folder`); `None` for a built-in scene.
+#[must_use]
+pub fn scene_file(name: &str, folder: Option<&Path>) -> Option<PathBuf> {
+    if Scene::embedded(name).is_ok() {
+        return None;
+    }
+    Some(folder.map_or_else(|| PathBuf::from(name), |f| f.join(name)))
 }
 
 fn step(spec: &StepSpec, folder: Option<&Path>) -> Result<Step, Invalid> {

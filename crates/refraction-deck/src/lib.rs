@@ -7,6 +7,8 @@
 //! - [`Deck::load`]: a built-in deck by name ([`builtin`]) or a deck file, read with the scene
 //!   format's `FILE:LINE:COLUMN` errors; [`Deck::to_toml`] writes it back exactly.
 //! - [`builtin::catalogue`]: the decks built in, in the current language.
+//! - [`describe::page`]: the step shown and its view in words, for a screen reader, its answer
+//!   kept out until it is revealed.
 //!
 //! It sits above the model and the scenes and below the window and the commands, so that the
 //! window steps through a deck and `render --lesson` draws its handout from the same steps.
@@ -22,12 +24,15 @@
 
 pub mod answer;
 pub mod builtin;
+pub mod describe;
 mod file;
 mod step;
 
 use std::path::PathBuf;
 
-pub use file::{MAX_DECK_FILE_BYTES, MAX_STEPS, VERSION, looks_like_deck, resolve_scene};
+pub use file::{
+    MAX_DECK_FILE_BYTES, MAX_STEPS, VERSION, looks_like_deck, resolve_scene, scene_file,
+};
 pub use step::{Effect, Light, Step, StepTool, StepView};
 
 use refraction_scene::{LoadError, Scene};
@@ -45,6 +50,22 @@ pub struct Deck {
 }
 
 impl Deck {
+    /// The scene files the deck's steps read, each once, in the order of the steps (built-in
+    /// scenes are no files): with the deck's own file, what a command that writes must never
+    /// write over.
+    #[must_use]
+    pub fn scene_files(&self) -> Vec<PathBuf> {
+        let mut files: Vec<PathBuf> = Vec::new();
+        for name in self.steps.iter().filter_map(|s| s.scene.as_deref()) {
+            if let Some(path) = scene_file(name, self.folder.as_deref())
+                && !files.contains(&path)
+            {
+                files.push(path);
+            }
+        }
+        files
+    }
+
     /// The scene `step` shows on the Scenes view, its effects with the step's added.
     ///
     /// # Errors

@@ -119,8 +119,16 @@ pub struct Overlay {
     /// The index scale is drawn (folded away by presentation's diagram-only key).
     pub index_scale: bool,
     /// The simple view, for a class that has not met the four candidates yet: the three
-    /// rejected candidates and their (a, b) labels are left out.
+    /// rejected candidates and their (a, b) labels are left out, and so is the outward-normal
+    /// bug's wrong T (the paper's formula with N as given), which is one of them.
     pub simple: bool,
+    /// Drawn for paper (a handout): no handle is drawn and the index scale is left out (the
+    /// media's labels give both indices), and a hidden answer's banner names only the
+    /// convention, where the window says how to reveal it.
+    pub paper: bool,
+    /// Handles sized for a finger (a phone's student view): each handle's grab area is at least
+    /// [`TOUCH_TARGET`](super::picture::TOUCH_TARGET) pixels across, as WCAG's target size asks.
+    pub touch: bool,
 }
 
 impl Default for Overlay {
@@ -135,6 +143,8 @@ impl Default for Overlay {
             hide_answer: false,
             index_scale: true,
             simple: false,
+            paper: false,
+            touch: false,
         }
     }
 }

@@ -105,6 +105,20 @@ pub fn summary(state: &ExplorerState, hide_answer: bool) -> String {
     }
 }
 
+/// The banner's words for `overlay`: the [`summary`], or on paper with the answer hidden the
+/// convention alone, without the sign of a it gives (a sheet has nothing to reveal with, and
+/// a question may ask for the sign).
+fn banner_words(state: &ExplorerState, overlay: &Overlay) -> String {
+    if overlay.paper && overlay.hide_answer {
+        match state.convention() {
+            Convention::TowardOrigin => t!("diagram-banner-asked-toward-origin"),
+            Convention::AlongRay => t!("diagram-banner-asked-along-ray"),
+        }
+    } else {
+        summary(state, overlay.hide_answer)
+    }
+}
+
 /// The banner's margins left and right, in label font sizes.
 const BANNER_MARGIN: f32 = 0.6;
 
@@ -136,6 +150,10 @@ fn layout_with_banner(
 
 /// How much larger than a handle its grab area is (half-side over radius).
 pub const GRAB_SCALE: f32 = 1.6;
+
+/// The least side of a handle's grab area for a finger ([`Overlay::touch`]), in pixels (CSS
+/// pixels in a browser): 44, WCAG 2.1's target size (2.5.5) and Apple's and Google's guides.
+pub const TOUCH_TARGET: f32 = 44.0;
 
 /// The shade of a medium in `palette`: lighter for lower index (clamped to [`INDEX_RANGE`]).
 #[must_use]
@@ -187,6 +205,16 @@ enum Rank {
 impl DiagramBuilder<'_> {
     fn font(&self) -> f32 {
         self.layout.font
+    }
+
+    /// A handle's radius: `radius`, or for a finger at least what gives a grab area
+    /// [`TOUCH_TARGET`] across.
+    fn handle_radius(&self, radius: f32) -> f32 {
+        if self.overlay.touch {
+            radius.max(TOUCH_TARGET * 0.5 / GRAB_SCALE)
+        } else {
+            radius
+        }
     }
 
     fn stroke(&self, width: f32, colour: Colour, dash: Dash) -> Stroke {
@@ -443,14 +471,29 @@ impl DiagramBuilder<'_> {
     }
 
     /// The surface line, the normal's axis and, when there is one, the critical angle.
+    ///
+    /// While an answer is hidden the axis stops at the surface (past it, it runs exactly where
+    /// an unbent ray would go, and is the only line there) and the critical angle is left out
+    /// (a question may ask for it, or for whether the ray is past it).
     fn guides(&mut self, normal: DVec2, toward_source: DVec2) {
         let along = normal.perp() * 10.0;
         let surface = self.stroke(2.5, self.palette.ink, Dash::Solid);
         self.segment(-along, along, surface);
         self.keep_clear_of(-along, along);
         let axis = self.stroke(1.0, self.palette.guide, Dash::Dashed);
-        self.segment(-normal * 1.15, normal * 1.15, axis);
-        if let Some(critical) = self.state.critical_angle() {
+        let far = if self.overlay.hide_answer {
+            DVec2::ZERO
+        } else {
+            -normal * 1.15
+        };
+        self.segment(far, normal * 1.15, axis);
+        // A label on the axis reads as if it named the normal.
+        self.keep_clear_of(far, normal * 1.15);
+        if let Some(critical) = self
+            .state
+            .critical_angle()
+            .filter(|_| !self.overlay.hide_answer)
+        {
             let side = if normal.perp_dot(toward_source) < 0.0 {
                 -1.0
             } else {
@@ -553,6 +596,10 @@ impl DiagramBuilder<'_> {
         let stroke = self.stroke(1.6, self.palette.n, Dash::Dashed);
         let kernel_normal = t!("diagram-kernel-normal");
         self.ray(facing, (0.75, ArrowRole::Ray), stroke, &kernel_normal, 0.8);
+        // The wrong T is the wrong-side candidate: the simple view leaves it out with them.
+        if self.overlay.simple {
+            return;
+        }
         if let Some(wrong) = seed::refract(r.w, r.n, r.mu, r.convention) {
             let stroke = self.stroke(3.0, self.palette.warning, Dash::Dashed);
             self.ray(
@@ -660,8 +707,14 @@ impl DiagramBuilder<'_> {
             (HandleId::MuT, 1.0, self.state.mu_t(), "μt"),
         ]
         .map(|(id, side, index, text)| {
-            let center = Vec2::new(scale.x + side * font * 0.8, scale.y_of(index));
-            let radius = font * 0.75;
+            let radius = self.handle_radius(font * 0.75);
+            // For a finger, apart by their grab areas' width, so that it takes the one it is on.
+            let apart = if self.overlay.touch {
+                (font * 0.8).max(radius * GRAB_SCALE)
+            } else {
+                font * 0.8
+            };
+            let center = Vec2::new(scale.x + side * apart, scale.y_of(index));
             let fill = medium_colour(&self.palette, index);
             self.shapes.push(Figure::Disc {
                 center,
@@ -769,8 +822,17 @@ impl DiagramBuilder<'_> {
             names.map_or_else(|| (own, "N".to_owned()), |n| (n.incident, n.normal));
         let w_dir = self.state.direction(HandleId::W);
         let n_dir = self.state.direction(HandleId::N);
-        let w_stroke = self.stroke(3.0, palette.w, Dash::Solid);
-        let arriving = self.overlay.hide_answer && w_dir.dot(normal) < 0.0;
+        let past_surface = w_dir.dot(normal) < 0.0;
+        // Under total internal reflection no light goes past the surface: a solid W there
+        // would be the only solid line in the second medium and read as a refracted ray, so
+        // it is dotted (no candidate nor the construction, the other dotted lines, is drawn).
+        let dash = if past_surface && r.is_tir() && !self.overlay.hide_answer {
+            Dash::Dotted
+        } else {
+            Dash::Solid
+        };
+        let w_stroke = self.stroke(3.0, palette.w, dash);
+        let arriving = self.overlay.hide_answer && past_surface;
         if arriving {
             self.arriving(Part::W, w_dir, w_stroke, &w_text);
         } else {
@@ -845,10 +907,13 @@ impl DiagramBuilder<'_> {
             .extend(layer.labels.into_iter().map(|l| (rank, l)));
     }
 
-    /// A round handle at a tip.
+    /// A round handle at a tip (on paper, none is drawn: nothing there can be dragged).
     fn tip_handle(&mut self, id: HandleId, d: DVec2, colour: Colour) -> Handle {
         let center = self.at(d);
-        let radius = self.font() * 0.6;
+        let radius = self.handle_radius(self.font() * 0.6);
+        if self.overlay.paper {
+            return Handle { id, center, radius };
+        }
         self.shapes.push(Figure::Disc {
             center,
             radius,
@@ -873,8 +938,9 @@ impl Diagram {
     pub fn with_overlay(state: &ExplorerState, size: Vec2, overlay: &Overlay) -> Self {
         let r = state.refraction();
         let face = Typeface::egui_default();
-        let summary = summary(state, overlay.hide_answer);
-        let (layout, banner) = layout_with_banner(size, &summary, &face, overlay.index_scale);
+        let summary = banner_words(state, overlay);
+        let scale = overlay.index_scale && !overlay.paper;
+        let (layout, banner) = layout_with_banner(size, &summary, &face, scale);
         let layout = layout.panned(overlay.pan_zoom);
         let palette = overlay.palette;
         let mut b = DiagramBuilder {
@@ -924,6 +990,9 @@ impl Diagram {
         let n = b.tip_handle(HandleId::N, n_dir, palette.n);
         let mut handles = vec![w, n];
         handles.extend(markers);
+        if overlay.paper {
+            handles.clear();
+        }
         let (shapes, left_out) = b.finish(&handles);
         Self {
             layout,
@@ -1098,6 +1167,109 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn a_hidden_answer_draws_no_line_past_the_surface_nor_the_critical_angle() {
+        // Snell's step 2: the dashed normal past the surface was the only line there, exactly
+        // where the unbent ray goes; the critical angle's line and label answer "at what angle
+        // does T lie along the surface?".
+        let size = Vec2::new(1000.0, 700.0);
+        let hidden = Overlay {
+            hide_answer: true,
+            ..Overlay::default()
+        };
+        let normal = refraction_model::Lesson::NormalIncidence.state();
+        let glass_to_air = {
+            let a = 41_f64.to_radians();
+            let w = DVec3::new(a.sin(), -a.cos(), 0.0);
+            ExplorerState::new(w, DVec3::Y, 1.5, 1.0, Convention::AlongRay).unwrap()
+        };
+        for state in [normal, glass_to_air] {
+            let shown = Diagram::new(&state, size);
+            let asked = Diagram::with_overlay(&state, size, &hidden);
+            let surface = asked.layout.view.to_canvas(DVec2::ZERO).y;
+            // In the drawing area (the index scale's lines cross the surface's height).
+            let past = |d: &Diagram| {
+                d.shapes.iter().any(|shape| {
+                    matches!(shape, Figure::Line { points, .. }
+                        if points.iter().any(|p| p.y > surface + 0.5
+                            && p.x < d.layout.drawing.max.x))
+                })
+            };
+            assert!(past(&shown) && !past(&asked), "{:?}", state.mu_i());
+            let critical = |d: &Diagram| texts(d).iter().any(|t| t.contains("θc"));
+            assert_eq!(critical(&shown), state.critical_angle().is_some());
+            assert!(!critical(&asked));
+        }
+    }
+
+    #[test]
+    fn under_total_internal_reflection_w_past_the_surface_is_dotted_not_a_ray() {
+        let beyond = refraction_model::Lesson::BeyondCritical.state();
+        let diagram = Diagram::new(&beyond, Vec2::new(1000.0, 700.0));
+        let w = arrows(&diagram)
+            .into_iter()
+            .find(|(_, s)| s.colour == palette::W)
+            .unwrap();
+        assert_eq!(w.1.dash, Dash::Dotted);
+        let refracting = Diagram::new(&ExplorerState::default(), Vec2::new(1000.0, 700.0));
+        let w = arrows(&refracting)
+            .into_iter()
+            .find(|(_, s)| s.colour == palette::W)
+            .unwrap();
+        assert_eq!(w.1.dash, Dash::Solid);
+    }
+
+    #[test]
+    fn on_paper_nothing_is_drawn_to_drag_and_a_hidden_answer_names_the_convention() {
+        let size = Vec2::new(700.0, 520.0);
+        let paper = Overlay {
+            paper: true,
+            hide_answer: true,
+            ..Overlay::default()
+        };
+        let state = ExplorerState::default();
+        let screen = Diagram::with_overlay(
+            &state,
+            size,
+            &Overlay {
+                hide_answer: true,
+                ..Overlay::default()
+            },
+        );
+        let sheet = Diagram::with_overlay(&state, size, &paper);
+        assert!(sheet.handles.is_empty() && sheet.layout.scale.is_none());
+        let discs = |d: &Diagram| {
+            d.shapes
+                .iter()
+                .filter(|s| matches!(s, Figure::Disc { .. }))
+                .count()
+        };
+        assert_eq!(discs(&screen), 4, "W, N and the two μ markers");
+        assert_eq!(discs(&sheet), 0);
+        assert!(screen.summary.contains("reveal"), "{}", screen.summary);
+        assert!(sheet.summary.starts_with("Section 2"), "{}", sheet.summary);
+        assert!(!texts(&sheet).iter().any(|t| t.contains("reveal")));
+    }
+
+    #[test]
+    fn the_simple_view_leaves_out_the_bug_s_wrong_t_with_the_candidates() {
+        let droplet = refraction_model::Lesson::DropletExit.state();
+        assert!(droplet.refraction().normal_flipped);
+        let size = Vec2::new(1000.0, 700.0);
+        let bug = t!("diagram-outward-normal-bug");
+        let full = Diagram::new(&droplet, size);
+        let simple = Diagram::with_overlay(
+            &droplet,
+            size,
+            &Overlay {
+                simple: true,
+                ..Overlay::default()
+            },
+        );
+        assert!(texts(&full).contains(&bug.as_str()));
+        assert!(!texts(&simple).contains(&bug.as_str()));
     }
 
     #[test]

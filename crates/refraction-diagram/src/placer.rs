@@ -17,6 +17,9 @@ use super::obstacle::Obstacle;
 use super::obstacle_grid::{Crossable, ObstacleGrid};
 use super::shapes::Label;
 
+/// The opacity of a leader line, of 255.
+const LEADER_ALPHA: u8 = 120;
+
 /// What is wrong with the texts among `primitives`, drawn in `face` on `canvas`: each text that
 /// covers another or reaches outside the canvas, in words (empty when nothing is). The views'
 /// tests and the layout audit ask it of every figure they draw.
@@ -111,12 +114,16 @@ impl Placement {
         let leaders = self
             .leaders
             .into_iter()
-            // Thin, dotted and lighter than the text: a long leader must not read as a ray.
+            // Thin, dotted and faint beside the text: a long leader must not read as a ray
+            // (the outward-normal bug's, at 170 of 255, crossed the upper medium like one).
             .map(|(from, to, colour)| Figure::Line {
                 points: vec![from, to],
                 stroke: Stroke {
                     width: 1.0,
-                    colour: Colour { a: 170, ..colour },
+                    colour: Colour {
+                        a: LEADER_ALPHA,
+                        ..colour
+                    },
                     dash: Dash::Dotted,
                 },
             });

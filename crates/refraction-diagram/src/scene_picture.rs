@@ -15,7 +15,7 @@ use super::layout::{SMALLEST_TEXT, Viewport, font_size};
 use super::numbers::number;
 use super::obstacle::Obstacle;
 use super::palette::Palette;
-use super::picture::{GRAB_SCALE, medium_colour};
+use super::picture::{GRAB_SCALE, TOUCH_TARGET, medium_colour};
 use super::placer::{Need, Placer};
 use super::shapes::{Align, ArrowRole, Dash, Figure, Label, Primitive, Stroke};
 use super::spectrum::{ray_colour, wavelength_colour};
@@ -96,9 +96,39 @@ pub struct SceneLayout {
     pub bounds: Bounds,
     /// The label font size in pixels; strokes, markers and handles scale with it.
     pub font: f32,
+    /// Handles sized for a finger ([`SceneLayout::for_touch`]).
+    pub touch: bool,
 }
 
 impl SceneLayout {
+    /// The same layout with handles for a finger (a phone's student view): each handle's grab
+    /// area at least [`TOUCH_TARGET`] across, the shapes' handles as far apart, and the world
+    /// fitted half a target inside the drawing area, so that a handle on the world's edge (the
+    /// fibre's source) keeps all its grab area on the canvas.
+    #[must_use]
+    pub fn for_touch(self) -> Self {
+        let inset = Vec2::splat((self.font * 0.5).max(TOUCH_TARGET * 0.5));
+        let inner = Rect {
+            min: self.drawing.min + inset,
+            max: (self.drawing.max - inset).max(self.drawing.min + inset + Vec2::ONE),
+        };
+        Self {
+            touch: true,
+            view: Viewport::fitted(self.bounds.min, self.bounds.max, &inner),
+            ..self
+        }
+    }
+
+    /// A handle's radius: `radius`, or for a finger at least what gives a grab area
+    /// [`TOUCH_TARGET`] across.
+    fn handle_radius(&self, radius: f32) -> f32 {
+        if self.touch {
+            radius.max(TOUCH_TARGET * 0.5 / GRAB_SCALE)
+        } else {
+            radius
+        }
+    }
+
     /// The layout that shows the world rectangle `bounds` on a canvas `size` pixels wide and
     /// high (sizes below 1 are treated as 1).
     #[must_use]
@@ -114,7 +144,12 @@ impl SceneLayout {
     pub fn for_scene(scene: &Scene, trace: &Trace, size: Vec2) -> Self {
         let layout = Self::new(trace.bounds, size);
         let face = Typeface::egui_default();
-        let rows = banner_rows(scene, trace, layout.font, &Palette::STANDARD);
+        let rows = banner_rows(
+            scene,
+            trace,
+            layout.font,
+            (&Palette::STANDARD, Told::Everything),
+        );
         let room = layout.banner_room();
         let lines: f32 = rows
             .iter()
@@ -156,6 +191,7 @@ impl SceneLayout {
             view: Viewport::fitted(bounds.min, bounds.max, &inner),
             bounds,
             font,
+            touch: false,
         }
     }
 
@@ -188,12 +224,12 @@ impl SceneLayout {
         let origin = self.at(source.origin);
         let aim = origin
             + self.view.direction(source.direction).normalize_or(Vec2::X) * (self.font * 5.0);
-        let small = self.font * 0.5;
+        let small = self.handle_radius(self.font * 0.5);
         let mut handles = vec![
             SceneHandle {
                 id: SceneHandleId::Source,
                 center: origin,
-                radius: self.font * 0.6,
+                radius: self.handle_radius(self.font * 0.6),
             },
             SceneHandle {
                 id: SceneHandleId::Aim,
@@ -201,8 +237,9 @@ impl SceneLayout {
                 radius: small,
             },
         ];
-        // Far enough apart for the two lines of a medium label beside each.
-        let step = self.font * 2.4;
+        // Far enough apart for the two lines of a medium label beside each (and for a finger,
+        // for their grab areas).
+        let step = (self.font * 2.4).max(small * GRAB_SCALE * 2.1);
         // The handles by cell of a grid `step` wide: any handle nearer than `step` is in one of
         // the nine cells around.
         let cell = |p: Vec2| ((p.x / step).floor() as i64, (p.y / step).floor() as i64);
@@ -310,16 +347,28 @@ fn flow(face: &Typeface, pieces: &[(String, Colour)], size: f32, room: f32) -> V
     lines
 }
 
+/// What a picture tells of its trace in words and marker colours.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Told {
+    /// Everything the tracer counted, and what happened at each hit.
+    Everything,
+    /// A lesson's question is asked about what happens past the first surface: only what the
+    /// class sees before it answers (the source's rays and colours; each hit by the side the
+    /// ray meets it from). The counts of reflections and of total internal reflections, the
+    /// kernel calls and the Fresnel evaluations would each give the answer away in words.
+    Asking,
+}
+
 /// The banner's rows, each with its text size: the title, the counts, the legend.
 fn banner_rows(
     scene: &Scene,
     trace: &Trace,
     font: f32,
-    p: &Palette,
+    (p, told): (&Palette, Told),
 ) -> [(Vec<(String, Colour)>, f32); 3] {
     let small = (font * 0.85).max(SMALLEST_TEXT);
-    let mut count_row = vec![(counts_text(&trace.counts), p.ink)];
-    if trace.counts.truncated {
+    let mut count_row = vec![(counts_text(&trace.counts, told), p.ink)];
+    if trace.counts.truncated && told == Told::Everything {
         count_row.push((
             format!(
                 " · {}",
@@ -331,7 +380,7 @@ fn banner_rows(
     [
         (vec![(title(scene), p.ink)], font * 1.05),
         (count_row, small),
-        (legend(scene, trace, p), small),
+        (legend(scene, trace, (p, told)), small),
     ]
 }
 
@@ -385,8 +434,16 @@ fn reference_wavelength() -> String {
     refraction_i18n::decimal(&REFERENCE_WAVELENGTH_NM.to_string())
 }
 
-/// The counts of what the tracer computed, in one line.
-fn counts_text(c: &Counts) -> String {
+/// The counts of what the tracer computed, in one line; while a question is asked, only the
+/// source's rays and colours.
+fn counts_text(c: &Counts, told: Told) -> String {
+    if told == Told::Asking {
+        return [
+            t!("diagram-count-source-rays", count = c.source_rays),
+            t!("diagram-count-wavelengths", count = c.wavelengths),
+        ]
+        .join(" · ");
+    }
     let mut parts = vec![
         t!("diagram-count-kernel-calls", count = c.kernel_calls),
         t!("diagram-count-tir", count = c.total_internal_reflections),
@@ -421,6 +478,8 @@ struct ScenePictureBuilder<'a> {
     faces: Vec<(Vec2, Vec2)>,
     face: Typeface,
     out: Vec<Primitive>,
+    /// What the banner and the hit markers tell.
+    told: Told,
 }
 
 impl ScenePictureBuilder<'_> {
@@ -699,7 +758,7 @@ impl ScenePictureBuilder<'_> {
             self.out.push(Primitive::Disc {
                 center,
                 radius,
-                fill: hit_colour(hit, &self.palette),
+                fill: HitKind::of(hit, self.told).colour(&self.palette),
                 outline_width: self.unit(),
                 outline: self.palette.ink,
             });
@@ -790,7 +849,7 @@ impl ScenePictureBuilder<'_> {
         let margin = font * BANNER_MARGIN;
         let room = self.layout.banner_room();
         let mut y = banner.min.y + font * BANNER_PAD;
-        for (pieces, size) in banner_rows(scene, trace, font, &self.palette) {
+        for (pieces, size) in banner_rows(scene, trace, font, (&self.palette, self.told)) {
             for line in flow(&self.face, &pieces, size, room) {
                 for run in line {
                     self.out.push(Primitive::Text(Label {
@@ -806,7 +865,11 @@ impl ScenePictureBuilder<'_> {
                 y += self.face.line_height(size);
             }
         }
-        format!("{}: {}", title(scene), counts_text(&trace.counts))
+        format!(
+            "{}: {}",
+            title(scene),
+            counts_text(&trace.counts, self.told)
+        )
     }
 }
 
@@ -883,11 +946,6 @@ fn starts_colour_blind(trace: &Trace, path: &Path) -> bool {
             .is_some_and(|p| p.parent_hit.is_none())
 }
 
-/// The fill of a hit's marker.
-fn hit_colour(hit: &Hit, p: &Palette) -> Colour {
-    HitKind::of(hit).colour(p)
-}
-
 /// The kinds of hit marker the picture tells apart, in the legend's order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum HitKind {
@@ -899,11 +957,15 @@ enum HitKind {
 impl HitKind {
     const ALL: [Self; 3] = [Self::Entering, Self::Leaving, Self::TotalInternalReflection];
 
-    fn of(hit: &Hit) -> Self {
+    /// The kind `hit` is shown as: while a question is asked, by the side the ray meets the
+    /// surface from only (a total internal reflection marked as such would answer it).
+    fn of(hit: &Hit, told: Told) -> Self {
         match (hit.outcome, hit.side) {
-            (Outcome::TotalInternalReflection, _) => Self::TotalInternalReflection,
-            (Outcome::Refracted, Side::Inside) => Self::Leaving,
-            (Outcome::Refracted, Side::Outside) => Self::Entering,
+            (Outcome::TotalInternalReflection, _) if told == Told::Everything => {
+                Self::TotalInternalReflection
+            }
+            (_, Side::Inside) => Self::Leaving,
+            (_, Side::Outside) => Self::Entering,
         }
     }
 
@@ -932,7 +994,7 @@ impl HitKind {
 }
 
 /// The legend row: the colours traced, what opacity means, the kinds of hit marker shown.
-fn legend(scene: &Scene, trace: &Trace, p: &Palette) -> Vec<(String, Colour)> {
+fn legend(scene: &Scene, trace: &Trace, (p, told): (&Palette, Told)) -> Vec<(String, Colour)> {
     let ink = p.ink;
     let mut pieces = vec![(format!("{} ", t!("diagram-legend-colour")), ink)];
     let colours = scene.source().colours(scene.effects().dispersion);
@@ -958,7 +1020,7 @@ fn legend(scene: &Scene, trace: &Trace, p: &Palette) -> Vec<(String, Colour)> {
     // Each kind once, told by what the hit was, never by its colour (two may share one).
     let shown = HitKind::ALL
         .into_iter()
-        .filter(|kind| trace.hits.iter().any(|h| HitKind::of(h) == *kind));
+        .filter(|kind| trace.hits.iter().any(|h| HitKind::of(h, told) == *kind));
     for (i, kind) in shown.enumerate() {
         let lead = if i == 0 {
             format!(" · {} ", t!("diagram-legend-hits"))
@@ -988,7 +1050,22 @@ impl ScenePicture {
         layout: &SceneLayout,
         palette: &Palette,
     ) -> Self {
-        let (mut b, handles) = ScenePictureBuilder::drawn(scene, trace, layout, palette);
+        Self::told(scene, trace, layout, (palette, Told::Everything))
+    }
+
+    /// The picture a lesson step shows while its question hides what happens past the first
+    /// surface: `shown` is the trace cut there (`refraction_deck::answer::up_to_first_surface`),
+    /// laid out by `layout` (the whole trace's, so that the reveal does not move the view). Its
+    /// banner and its summary count only the source's rays and colours, and each hit is marked
+    /// by the side the ray meets it from, not by what happens there: no word or colour says how
+    /// many times the light is reflected, nor whether totally.
+    #[must_use]
+    pub fn asking(scene: &Scene, shown: &Trace, layout: &SceneLayout, palette: &Palette) -> Self {
+        Self::told(scene, shown, layout, (palette, Told::Asking))
+    }
+
+    fn told(scene: &Scene, trace: &Trace, layout: &SceneLayout, look: (&Palette, Told)) -> Self {
+        let (mut b, handles) = ScenePictureBuilder::drawn(scene, trace, layout, look);
         let left_out = b.place(&handles);
         let summary = b.banner(scene, trace);
         Self {
@@ -1004,7 +1081,8 @@ impl ScenePicture {
     /// in the order the placer is given them: what the frame benchmark's placer works on.
     #[must_use]
     pub fn label_obstacles(scene: &Scene, trace: &Trace, layout: &SceneLayout) -> Vec<Obstacle> {
-        let (b, handles) = ScenePictureBuilder::drawn(scene, trace, layout, &Palette::STANDARD);
+        let look = (&Palette::STANDARD, Told::Everything);
+        let (b, handles) = ScenePictureBuilder::drawn(scene, trace, layout, look);
         b.obstacles(&handles)
     }
 }
@@ -1016,11 +1094,12 @@ impl<'a> ScenePictureBuilder<'a> {
         scene: &Scene,
         trace: &Trace,
         layout: &'a SceneLayout,
-        palette: &Palette,
+        (palette, told): (&Palette, Told),
     ) -> (Self, Vec<SceneHandle>) {
         let mut b = ScenePictureBuilder {
             layout,
             palette: *palette,
+            told,
             labels: Vec::new(),
             rays_from: 0,
             faces: Vec::new(),
@@ -1063,6 +1142,38 @@ mod tests {
     }
 
     #[test]
+    fn a_picture_asking_a_question_counts_only_the_source_and_never_names_a_reflection() {
+        let (scene, trace) = traced("fibre");
+        assert!(trace.counts.total_internal_reflections > 0);
+        let layout = SceneLayout::for_scene(&scene, &trace, Vec2::new(1200.0, 800.0));
+        let told = ScenePicture::new(&scene, &trace, &layout);
+        let asking = ScenePicture::asking(&scene, &trace, &layout, &Palette::STANDARD);
+        let words = |p: &ScenePicture| {
+            let labels: Vec<String> = texts(p).iter().map(|l| l.text.clone()).collect();
+            format!("{} {}", labels.join(" "), p.summary)
+        };
+        let tir = t!("diagram-hit-tir");
+        assert!(words(&told).contains(&tir), "{}", words(&told));
+        let asked = words(&asking);
+        for counted in [
+            "total internal",
+            "reflections spawned",
+            "kernel call",
+            "Fresnel",
+        ] {
+            assert!(!asked.contains(counted), "{counted}: {asked}");
+        }
+        assert!(asked.contains("source rays"), "{asked}");
+        let critical = palette::Palette::STANDARD.critical;
+        let marked_total = |p: &ScenePicture| {
+            p.primitives
+                .iter()
+                .any(|p| matches!(p, Primitive::Disc { fill, .. } if *fill == critical))
+        };
+        assert!(marked_total(&told) && !marked_total(&asking));
+    }
+
+    #[test]
     fn the_legend_names_each_kind_of_hit_drawn_even_when_two_kinds_share_a_colour() {
         let mut one_colour = Palette::STANDARD;
         one_colour.warning = one_colour.background;
@@ -1070,12 +1181,15 @@ mod tests {
         let mut seen_tir = false;
         for info in refraction_scene::catalogue() {
             let (scene, trace) = traced(info.name);
-            let words: String = legend(&scene, &trace, &one_colour)
+            let words: String = legend(&scene, &trace, (&one_colour, Told::Everything))
                 .into_iter()
                 .map(|(text, _)| text)
                 .collect();
             for kind in HitKind::ALL {
-                let drawn = trace.hits.iter().any(|h| HitKind::of(h) == kind);
+                let drawn = trace
+                    .hits
+                    .iter()
+                    .any(|h| HitKind::of(h, Told::Everything) == kind);
                 let named = words.contains(&kind.words(&one_colour).0);
                 assert_eq!(drawn, named, "{} {kind:?}: {words}", info.name);
                 seen_tir |= drawn && kind == HitKind::TotalInternalReflection;

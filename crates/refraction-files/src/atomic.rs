@@ -123,19 +123,70 @@ fn folder_of(path: &Path) -> io::Result<&Path> {
 /// file they will become, so that those a killed writer left can be told and cleaned.
 fn temporary_prefix(path: &Path) -> String {
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
-    format!(".refraction-{}-", name.unwrap_or_default())
+    format!("{PREFIX}{}-", name.unwrap_or_default())
 }
 
-/// How old a temporary file of ours must be to count as left by a writer that was killed
-/// (`kill -9` skips the removal): no writer takes this long between creating and renaming it.
+/// How old an unlocked temporary file of ours must be to be removed. A writer locks its
+/// temporary file as soon as it has made it and holds the lock until the file is renamed
+/// (the kernel lets go when a writer is killed), so an unlocked one is a killed writer's:
+/// the age only covers the instant between making and locking, and a writer of an older
+/// version, which did not lock.
+const UNLOCKED_STALE: core::time::Duration = core::time::Duration::from_secs(2);
+
+/// How old a temporary file of ours must be where its lock cannot be tried (a file system
+/// without locks): no writer takes this long between creating and renaming it.
 const STALE: core::time::Duration = core::time::Duration::from_mins(10);
+
+/// The start of every temporary file's name this writer makes.
+const PREFIX: &str = ".refraction-";
+
+/// The age of the file `metadata` describes (zero for one from the future).
+fn age(metadata: &fs::Metadata) -> core::time::Duration {
+    metadata
+        .modified()
+        .ok()
+        .and_then(|t| t.elapsed().ok())
+        .unwrap_or_default()
+}
+
+/// Whether the temporary file of ours at `path` was left by a writer that is gone: a regular
+/// file (not a link), unlocked and older than [`UNLOCKED_STALE`], or older than [`STALE`]
+/// where locks cannot be tried. Opened without following a link or waiting on a FIFO.
+#[cfg(unix)]
+fn is_stale(path: &Path) -> bool {
+    use rustix::fs::{Mode, OFlags};
+    let Ok(seen) = fs::symlink_metadata(path) else {
+        return false;
+    };
+    if !seen.is_file() || age(&seen) < UNLOCKED_STALE {
+        return false;
+    }
+    let flags = OFlags::RDONLY | OFlags::NOFOLLOW | OFlags::NONBLOCK | OFlags::CLOEXEC;
+    let Ok(file) = rustix::fs::open(path, flags, Mode::empty()).map(File::from) else {
+        return false;
+    };
+    if !crate::names_open_file(path, &file) || !file.metadata().is_ok_and(|m| m.is_file()) {
+        return false;
+    }
+    match file.try_lock() {
+        Ok(()) => true,
+        Err(fs::TryLockError::WouldBlock) => false,
+        Err(fs::TryLockError::Error(_)) => age(&seen) > STALE,
+    }
+}
+
+/// Whether the temporary file of ours at `path` was left by a writer that is gone: older
+/// than [`STALE`].
+#[cfg(not(unix))]
+fn is_stale(path: &Path) -> bool {
+    fs::symlink_metadata(path).is_ok_and(|m| m.is_file() && age(&m) > STALE)
+}
 
 /// Removes the temporary files in `folder` that a killed writer of ours left behind, whatever
 /// file they were to become (a numbered export is never written under the same name again):
-/// only regular files named as [`temporary_prefix`] names them and older than [`STALE`]. What
+/// only those named as [`temporary_prefix`] names them that [`is_stale`] finds left. What
 /// cannot be removed is left; the write goes on either way.
 fn clean_stale(folder: &Path) {
-    let prefix = ".refraction-";
     let Ok(entries) = fs::read_dir(folder) else {
         return;
     };
@@ -143,13 +194,8 @@ fn clean_stale(folder: &Path) {
         let name = entry.file_name().to_string_lossy().into_owned();
         // The temporary crate writes the suffix as given, in lower case.
         let ours =
-            name.starts_with(prefix) && Path::new(&name).extension().is_some_and(|e| e == "tmp");
-        let stale = entry.metadata().is_ok_and(|m| {
-            m.is_file()
-                && m.modified()
-                    .is_ok_and(|t| t.elapsed().is_ok_and(|age| age > STALE))
-        });
-        if ours && stale {
+            name.starts_with(PREFIX) && Path::new(&name).extension().is_some_and(|e| e == "tmp");
+        if ours && is_stale(&entry.path()) {
             // Best effort: a file another user owns in a shared folder stays.
             fs::remove_file(entry.path()).ok();
         }
@@ -160,6 +206,34 @@ fn clean_stale(folder: &Path) {
 /// the permissions a new file gets (0666 less the umask: the temporary crate's default is
 /// 0600).
 fn temporary_in(folder: &Path, path: &Path) -> io::Result<tempfile::NamedTempFile> {
+    // A cleaner that took the new file for a killed writer's between its making and its lock
+    // (a writer stopped for seconds there) removed it: then make another.
+    for _ in 0..3 {
+        let temporary = new_temporary(folder, path)?;
+        if locked(&temporary) {
+            return Ok(temporary);
+        }
+    }
+    Err(io::Error::other(format!(
+        "no file can be made in {}: each new one was removed at once",
+        folder.display()
+    )))
+}
+
+/// Locks `temporary` for as long as it is open, so that no other writer's cleaning takes it
+/// for a killed writer's; whether it is still there, ours and locked (or locks cannot be
+/// tried).
+fn locked(temporary: &tempfile::NamedTempFile) -> bool {
+    let file = temporary.as_file();
+    match file.try_lock() {
+        Ok(()) => crate::names_open_file(temporary.path(), file),
+        Err(fs::TryLockError::WouldBlock) => false,
+        Err(fs::TryLockError::Error(_)) => true,
+    }
+}
+
+/// A new exclusively created, unpredictably named temporary file in `folder` for `path`.
+fn new_temporary(folder: &Path, path: &Path) -> io::Result<tempfile::NamedTempFile> {
     let mut builder = tempfile::Builder::new();
     let prefix = temporary_prefix(path);
     builder.prefix(&prefix).suffix(".tmp");
@@ -356,6 +430,69 @@ mod tests {
             [".refraction-out.txt-busy.tmp", "out.txt"],
             "every stale one goes, whatever file it was for; a recent one may be another writer's"
         );
+        fs::remove_dir_all(&folder).unwrap();
+    }
+
+    #[test]
+    fn a_killed_writer_s_temporary_file_is_told_by_its_lock_and_a_live_one_s_kept() {
+        // Issue 40: kill -9 left a temporary file about once in 40, and the next write kept
+        // it for ten minutes.
+        let folder = folder("locked");
+        let a_while_ago = std::time::SystemTime::now() - 2 * UNLOCKED_STALE;
+        let made = |name: &str| {
+            let file = File::create(folder.join(name)).unwrap();
+            file.set_modified(a_while_ago).unwrap();
+            file
+        };
+        drop(made(".refraction-out.txt-killed.tmp"));
+        let writing = made(".refraction-out.txt-writing.tmp");
+        writing.lock().unwrap();
+        File::create(folder.join(".refraction-out.txt-new.tmp")).unwrap();
+        made("notes.tmp");
+        let fifo = folder.join(".refraction-out.txt-fifo.tmp");
+        assert!(
+            std::process::Command::new("mkfifo")
+                .arg(&fifo)
+                .status()
+                .unwrap()
+                .success()
+        );
+        symlink(
+            folder.join("notes.tmp"),
+            folder.join(".refraction-link.tmp"),
+        )
+        .unwrap();
+        write_atomically(&folder.join("out.txt"), b"new").unwrap();
+        assert_eq!(
+            entries(&folder),
+            [
+                ".refraction-link.tmp",
+                ".refraction-out.txt-fifo.tmp",
+                ".refraction-out.txt-new.tmp",
+                ".refraction-out.txt-writing.tmp",
+                "notes.tmp",
+                "out.txt"
+            ],
+            "the killed writer's goes; a locked, a new one, a FIFO, a link and others' stay"
+        );
+        drop(writing);
+        write_atomically(&folder.join("out.txt"), b"newer").unwrap();
+        assert!(!entries(&folder).contains(&".refraction-out.txt-writing.tmp".to_owned()));
+        fs::remove_dir_all(&folder).unwrap();
+    }
+
+    #[test]
+    fn a_writer_holds_its_temporary_file_locked_until_it_is_renamed() {
+        let folder = folder("lock-held");
+        let path = folder.join("out.txt");
+        let staged = stage(&path, None, |f| f.write_all(b"x")).unwrap();
+        let other = File::open(staged.path()).unwrap();
+        assert!(matches!(
+            other.try_lock(),
+            Err(fs::TryLockError::WouldBlock)
+        ));
+        staged.persist(&path).unwrap();
+        assert_eq!(entries(&folder), ["out.txt"]);
         fs::remove_dir_all(&folder).unwrap();
     }
 

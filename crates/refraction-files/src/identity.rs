@@ -39,6 +39,31 @@ pub fn names_open_file(_path: &Path, _open: &File) -> bool {
     false
 }
 
+/// Whether `a` and `b` name one regular file (the same device and inode, links followed,
+/// whatever the names: a hard link, `/dev/stdin` redirected from it, a bind mount), so that a
+/// command never writes over a file it reads. `false` when either names nothing, cannot be
+/// examined or is no regular file (a FIFO or a terminal can be read and written at once).
+#[cfg(unix)]
+#[must_use]
+pub fn same_regular_file(a: &Path, b: &Path) -> bool {
+    use std::os::unix::fs::MetadataExt as _;
+    match (std::fs::metadata(a), std::fs::metadata(b)) {
+        (Ok(a), Ok(b)) => a.is_file() && a.dev() == b.dev() && a.ino() == b.ino(),
+        _ => false,
+    }
+}
+
+/// Whether `a` and `b` name one regular file: where the platform gives no file identity, the
+/// same canonical path (links followed); never in a browser, whose files are not replaced.
+#[cfg(not(unix))]
+#[must_use]
+pub fn same_regular_file(a: &Path, b: &Path) -> bool {
+    match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
+        (Ok(x), Ok(y)) => x == y && std::fs::metadata(a).is_ok_and(|m| m.is_file()),
+        _ => false,
+    }
+}
+
 /// The process's standard input as a file (a duplicate of its descriptor), to compare with a
 /// path; `None` where it cannot be had.
 #[cfg(unix)]
@@ -123,6 +148,29 @@ mod tests {
         assert!(names_open_file(&folder.path().join(".").join("log"), &open));
         assert!(!names_open_file(&other, &open));
         assert!(!names_open_file(&folder.path().join("missing"), &open));
+    }
+
+    #[test]
+    fn one_regular_file_is_told_under_any_name_and_a_device_is_not_one() {
+        let folder = tempfile::tempdir().unwrap();
+        let (deck, other) = (folder.path().join("deck.pdf"), folder.path().join("other"));
+        std::fs::write(&deck, "[deck]\n").unwrap();
+        std::fs::write(&other, "[deck]\n").unwrap();
+        let alias = folder.path().join("alias.pdf");
+        std::fs::hard_link(&deck, &alias).unwrap();
+        std::os::unix::fs::symlink(&deck, folder.path().join("link")).unwrap();
+        assert!(same_regular_file(&deck, &alias));
+        assert!(same_regular_file(&folder.path().join("link"), &deck));
+        assert!(same_regular_file(
+            &folder.path().join(".").join("deck.pdf"),
+            &deck
+        ));
+        assert!(!same_regular_file(&deck, &other));
+        assert!(!same_regular_file(&deck, &folder.path().join("missing")));
+        assert!(!same_regular_file(
+            Path::new("/dev/null"),
+            Path::new("/dev/null")
+        ));
     }
 
     #[test]

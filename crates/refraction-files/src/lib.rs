@@ -26,4 +26,4 @@ pub use atomic::{check_writable, write_all_atomically, write_atomically};
 #[cfg(target_arch = "wasm32")]
 pub use browser::{check_writable, write_all_atomically, write_atomically};
 pub use capped::{read_capped, read_capped_bytes};
-pub use identity::{first_bytes, names_open_file, standard_input};
+pub use identity::{first_bytes, names_open_file, same_regular_file, standard_input};

@@ -2,7 +2,8 @@
 //! ([`ExplorerState`]: W, N, the two indices and the convention, always valid, with the
 //! kernel's answer), the lessons that start one, the angles at which something happens for a
 //! pair of media ([`SpecialAngles`]), the figures the `bench` command measures
-//! ([`report::Report`]) and those of a judged log that its failure map draws ([`log_map`]).
+//! ([`report::Report`]) and those of a judged log that its failure map draws ([`log_map`]);
+//! and the state in words for a student who cannot see the diagram ([`describe`]).
 //!
 //! It sits below the diagram, which draws it, and the tools, which read and write it (a state
 //! file is one `solve` line), so neither needs the other.
@@ -19,6 +20,7 @@
 //! # Ok::<(), refraction_kernel::InputError>(())
 //! ```
 
+pub mod describe;
 pub mod log_map;
 pub mod report;
 mod special_angles;

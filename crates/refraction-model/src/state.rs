@@ -159,7 +159,8 @@ impl HandleId {
     pub const ALL: [Self; 4] = [Self::W, Self::N, Self::MuI, Self::MuT];
 
     /// The accessible name (what a screen reader says and what tests look for), in the
-    /// current language.
+    /// current language: the control the handle is, the same on the desktop and in a browser
+    /// (W is the angle of incidence θi, N the direction of the normal, μi and μt the indices).
     #[must_use]
     pub fn label(self) -> String {
         match self {
@@ -454,6 +455,24 @@ impl ExplorerState {
     pub fn rotate(&mut self, handle: HandleId, degrees: f64) {
         let direction = DVec2::from_angle(degrees.to_radians()).rotate(self.direction(handle));
         self.point(handle, direction);
+    }
+
+    /// How far N leans from straight up in the diagram, in degrees: positive to the right
+    /// (clockwise), in (−180°, 180°].
+    #[must_use]
+    pub fn normal_tilt_degrees(&self) -> f64 {
+        let n = self.direction(HandleId::N);
+        n.x.atan2(n.y).to_degrees()
+    }
+
+    /// Turns N in the diagram to lean `degrees` from straight up, clockwise (what
+    /// [`ExplorerState::normal_tilt_degrees`] then gives, modulo 360°); a value that is not
+    /// finite is ignored.
+    pub fn set_normal_tilt_degrees(&mut self, degrees: f64) {
+        if degrees.is_finite() {
+            let (sin, cos) = degrees.to_radians().sin_cos();
+            self.point(HandleId::N, DVec2::new(sin, cos));
+        }
     }
 
     /// The critical angle θc in radians (sin θc = `μ_t/μ_i`), when there is one (`μ_i` > `μ_t`).

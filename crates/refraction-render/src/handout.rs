@@ -37,8 +37,10 @@ pub const PAGE: Vec2 = Vec2::new(595.0, 842.0);
 /// The page's margin, in points.
 const MARGIN: f32 = 40.0;
 
-/// The smallest words of a diagram on paper, in points: 9 and more, to read in a hand.
-pub const SMALLEST_LABEL_PT: f32 = 9.5;
+/// The smallest words of a diagram on paper, in points: a 10-point box, so that the type is
+/// 9.5 points and more where a label's `textLength` fits a viewer's glyphs to it (measured
+/// 9.1 points at a 9.5-point box).
+pub const SMALLEST_LABEL_PT: f32 = 10.0;
 
 /// Points on paper per pixel of the diagram's canvas.
 const PT_PER_PX: f32 = SMALLEST_LABEL_PT / SMALLEST_TEXT;
@@ -67,8 +69,13 @@ pub enum Sheet {
 }
 
 /// One page: the words, and the diagram drawn for a canvas of the size the page gives it.
+/// Every text may be of any length and hold any character: each is drawn in time linear in
+/// its length, cut where it runs past its room, its control characters as spaces.
 pub struct Page<'a> {
-    /// The line above the title: the deck and where the step is (`Snell's law · 2 / 5`).
+    /// The deck's title (may be empty), on the line above the step's title, cut with `…` to
+    /// leave room for `heading`.
+    pub deck: String,
+    /// Where the step is, after the deck's title (`2 / 5`), whole.
     pub heading: String,
     /// The step's title.
     pub title: String,
@@ -85,46 +92,148 @@ pub struct Page<'a> {
     pub link: Option<String>,
 }
 
-/// The side of a step's QR code, in points (about 30 mm: a phone reads it from the desk).
+/// The smallest side of a step's QR code, in points (about 30 mm: a phone reads it from the
+/// desk).
 const QR_SIDE: f32 = 84.0;
+
+/// The smallest module of a QR code on paper, in points (0.53 mm; 3.1 pixels of a page
+/// scanned or photographed at 150 dpi, where a phone's reader needs about 2): a longer link's
+/// code grows rather than its modules shrink.
+pub const QR_MODULE_PT: f32 = 1.5;
+
+/// The largest side of a step's QR code, in points (about 56 mm, a third of the page's
+/// height with its link): a link whose code would need more is refused.
+pub const QR_MOST_SIDE: f32 = 160.0;
 
 /// The size of the link's words beside its QR code, in points.
 const LINK_SIZE: f32 = 8.0;
 
-/// The room a page's link and its QR code take at its foot, gap included (none without one).
-fn link_room(page: &Page<'_>) -> f32 {
-    if page.link.is_some() {
-        QR_SIDE + 12.0
-    } else {
-        0.0
+/// The gap between the QR code and the link's words, and above the foot, in points.
+const FOOT_GAP: f32 = 10.0;
+
+/// A page's foot: its link's QR code and the link itself, wrapped whole beside it.
+struct Foot {
+    /// The link's QR code.
+    code: refraction_diagram::qr::Code,
+    /// The QR code's side, quiet zone included, in points.
+    side: f32,
+    /// The whole link, wrapped to the room beside the code.
+    words: String,
+    /// The foot's height, in points: the code's or the words', whichever is taller.
+    height: f32,
+}
+
+impl Foot {
+    /// The foot of a page with `link`: its code at [`QR_MODULE_PT`] or more a module.
+    ///
+    /// # Errors
+    /// The link is too long for a QR code of at most [`QR_MOST_SIDE`] points.
+    fn of(face: &Typeface, link: &str) -> Result<Self, RenderError> {
+        let too_long = || RenderError::LinkTooLong {
+            bytes: link.len(),
+            most_mm: (QR_MOST_SIDE * MM_PER_PT).round() as u32,
+        };
+        let code = refraction_diagram::qr::Code::new(link).map_err(|_too_long| too_long())?;
+        let side = (code.side_in_modules() as f32 * QR_MODULE_PT).max(QR_SIDE);
+        if side > QR_MOST_SIDE {
+            return Err(too_long());
+        }
+        let width = COLUMN - side - FOOT_GAP;
+        let words = wrap(face, &one_line(link), LINK_SIZE, width);
+        let height = side.max(face.measure(&words, LINK_SIZE).y);
+        Ok(Self {
+            code,
+            side,
+            words,
+            height,
+        })
+    }
+
+    /// The room the foot takes at the bottom of the page, gap included.
+    fn room(foot: Option<&Self>) -> f32 {
+        foot.map_or(0.0, |f| f.height + FOOT_GAP + 2.0)
+    }
+
+    /// The QR code at the page's foot, with the link beside it.
+    fn primitives(&self) -> Vec<Primitive> {
+        let top = PAGE.y - MARGIN - self.height;
+        let mut out = self.code.primitives(Vec2::new(MARGIN, top), self.side);
+        let x = MARGIN + self.side + FOOT_GAP;
+        out.push(Primitive::Text(words(
+            self.words.clone(),
+            Vec2::new(x, top + 4.0),
+            LINK_SIZE,
+        )));
+        out
     }
 }
 
-/// The QR code of the page's link at its foot, with the link beside it; nothing without a
-/// link (or for a link too long for a QR code, which then stands alone).
-fn link_block(face: &Typeface, page: &Page<'_>) -> Vec<Primitive> {
-    let Some(link) = &page.link else {
-        return Vec::new();
-    };
-    let top = PAGE.y - MARGIN - QR_SIDE;
-    let mut out = refraction_diagram::qr::Code::new(link)
-        .map(|code| code.primitives(Vec2::new(MARGIN, top), QR_SIDE))
-        .unwrap_or_default();
-    let x = MARGIN + QR_SIDE + 10.0;
-    let width = PAGE.x - MARGIN - x;
-    let text = at_most(
-        face,
-        &wrap(face, link, LINK_SIZE, width),
-        LINK_SIZE,
-        width,
-        6,
-    );
-    out.push(Primitive::Text(words(
-        text,
-        Vec2::new(x, top + 4.0),
-        LINK_SIZE,
-    )));
-    out
+/// Millimetres per point.
+const MM_PER_PT: f32 = 25.4 / 72.0;
+
+/// Whether `c` would not show as itself on a page or in a title bar: a control character, or
+/// a mark that reorders the text around it (an override, an embedding, an isolate).
+fn acts(c: char) -> bool {
+    c.is_control() || matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
+}
+
+/// `text` with every character that would not show as itself ([`acts`]) as a space: one
+/// line, for a title or a link.
+fn one_line(text: &str) -> String {
+    text.chars()
+        .map(|c| if acts(c) { ' ' } else { c })
+        .collect()
+}
+
+/// `text` as [`one_line`] gives it, but keeping its line breaks: a question or notes.
+fn paragraphs(text: &str) -> String {
+    text.lines().map(one_line).collect::<Vec<_>>().join("\n")
+}
+
+/// The first characters of the one line `text` that fit in `width` at `size`, ending in `…`
+/// when some are left out. Linear in the characters kept (widths add up: the font is
+/// measured without kerning).
+fn fit(face: &Typeface, text: &str, size: f32, width: f32) -> String {
+    if face.width(text, size) <= width {
+        return text.to_owned();
+    }
+    let room = width - face.width("…", size);
+    let (mut used, mut out) = (0.0, String::new());
+    for c in text.chars() {
+        used += face.width(c.encode_utf8(&mut [0; 4]), size);
+        if used > room {
+            break;
+        }
+        out.push(c);
+    }
+    format!("{}…", out.trim_end())
+}
+
+/// The line above the title: the deck's title, cut to leave room for where the step is.
+fn heading(face: &Typeface, page: &Page<'_>) -> String {
+    let place = one_line(&page.heading);
+    let deck = one_line(&page.deck);
+    if deck.trim().is_empty() {
+        return place;
+    }
+    let after = format!(" · {place}");
+    let room = COLUMN - face.width(&after, HEADING_SIZE);
+    format!("{}{after}", fit(face, deck.trim(), HEADING_SIZE, room))
+}
+
+/// The most characters of a handout's title in its file's metadata: a title bar's width.
+const MOST_TITLE_CHARS: usize = 200;
+
+/// The deck's title as the PDF's metadata gives it: one line, its runs of spaces and
+/// control characters as one space, at most [`MOST_TITLE_CHARS`] characters.
+fn document_title(title: &str) -> String {
+    let line = one_line(title);
+    let words = line.split_whitespace().collect::<Vec<_>>().join(" ");
+    if words.chars().count() <= MOST_TITLE_CHARS {
+        return words;
+    }
+    let kept: String = words.chars().take(MOST_TITLE_CHARS - 1).collect();
+    format!("{}…", kept.trim_end())
 }
 
 /// A label at `at` (its top left corner) in the page's ink.
@@ -173,9 +282,9 @@ struct PageLayout {
 const COLUMN: f32 = PAGE.x - 2.0 * MARGIN;
 
 impl PageLayout {
-    fn of(face: &Typeface, page: &Page<'_>) -> Self {
+    fn of(face: &Typeface, page: &Page<'_>, foot: Option<&Foot>) -> Self {
         let line = |size: f32| face.line_height(size);
-        let title = wrap(face, &page.title, TITLE_SIZE, COLUMN);
+        let title = wrap(face, &one_line(&page.title), TITLE_SIZE, COLUMN);
         let title = at_most(face, &title, TITLE_SIZE, COLUMN, 2);
         let diagram_top = MARGIN
             + line(HEADING_SIZE) * 1.4
@@ -185,7 +294,8 @@ impl PageLayout {
         let mut sections = Vec::new();
         for (label, text) in page.question.iter().chain(&page.notes) {
             if !text.trim().is_empty() {
-                sections.push((label.clone(), wrap(face, text, TEXT_SIZE, COLUMN)));
+                let text = paragraphs(text);
+                sections.push((one_line(label), wrap(face, &text, TEXT_SIZE, COLUMN)));
             }
         }
         let text_height = |sections: &[(String, String)]| -> f32 {
@@ -194,7 +304,7 @@ impl PageLayout {
                 .map(|(_, body)| line(TEXT_SIZE) * (body.lines().count() as f32 + 2.3))
                 .sum()
         };
-        let bottom = PAGE.y - MARGIN - link_room(page);
+        let bottom = PAGE.y - MARGIN - Foot::room(foot);
         // The student sheet keeps a 4:3 diagram and leaves the rest to write on; the teacher's
         // gives the diagram the height its words leave (from half its width to a bit more than it).
         let height = if page.writing_lines {
@@ -227,10 +337,15 @@ impl PageLayout {
 
 /// The page's words as labels (the heading and title across the top, the question and the
 /// notes under the diagram) and, on the student sheet, the lines to write on.
-fn page_words(face: &Typeface, page: &Page<'_>, layout: &PageLayout) -> Vec<Primitive> {
+fn page_words(
+    face: &Typeface,
+    page: &Page<'_>,
+    layout: &PageLayout,
+    foot: Option<&Foot>,
+) -> Vec<Primitive> {
     let mut out = vec![
         Primitive::Text(words(
-            page.heading.clone(),
+            heading(face, page),
             Vec2::new(MARGIN, MARGIN),
             HEADING_SIZE,
         )),
@@ -256,7 +371,7 @@ fn page_words(face: &Typeface, page: &Page<'_>, layout: &PageLayout) -> Vec<Prim
     }
     if page.writing_lines {
         let mut line_y = y + WRITING_LINE;
-        while line_y <= PAGE.y - MARGIN - link_room(page) {
+        while line_y <= PAGE.y - MARGIN - Foot::room(foot) {
             out.push(Primitive::Polyline {
                 points: vec![
                     Vec2::new(MARGIN, line_y),
@@ -272,11 +387,20 @@ fn page_words(face: &Typeface, page: &Page<'_>, layout: &PageLayout) -> Vec<Prim
 }
 
 /// The page as an SVG document, [`PAGE`] points wide and high.
-fn page_svg(face: &Typeface, page: &Page<'_>) -> String {
-    let layout = PageLayout::of(face, page);
+///
+/// # Errors
+/// The page's link is too long for a QR code a phone reads on paper.
+fn page_svg(face: &Typeface, page: &Page<'_>) -> Result<String, RenderError> {
+    let foot = page
+        .link
+        .as_deref()
+        .map(|link| Foot::of(face, link))
+        .transpose()?;
+    let foot = foot.as_ref();
+    let layout = PageLayout::of(face, page, foot);
     let canvas = layout.canvas();
     let diagram = (page.diagram)(canvas);
-    format!(
+    Ok(format!(
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" \
          width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">\n\
          <rect width=\"{w}\" height=\"{h}\" fill=\"#ffffff\"/>\n{words}\
@@ -284,7 +408,11 @@ fn page_svg(face: &Typeface, page: &Page<'_>) -> String {
          {diagram}</svg>\n{link}</svg>\n",
         w = PAGE.x,
         h = PAGE.y,
-        words = svg::elements(face, &page_words(face, page, &layout), svg::Labels::Text),
+        words = svg::elements(
+            face,
+            &page_words(face, page, &layout, foot),
+            svg::Labels::Text
+        ),
         x = MARGIN,
         y = layout.diagram_top,
         dw = layout.diagram.x,
@@ -292,8 +420,12 @@ fn page_svg(face: &Typeface, page: &Page<'_>) -> String {
         cw = canvas.x,
         ch = canvas.y,
         diagram = svg::elements(face, &diagram, svg::Labels::Text),
-        link = svg::elements(face, &link_block(face, page), svg::Labels::Text),
-    )
+        link = svg::elements(
+            face,
+            &foot.map(Foot::primitives).unwrap_or_default(),
+            svg::Labels::Text
+        ),
+    ))
 }
 
 /// The fonts the pages are set in: the diagram's own (egui's Ubuntu Light), for every family
@@ -305,10 +437,13 @@ fn fonts() -> Arc<usvg::fontdb::Database> {
     Arc::new(fonts)
 }
 
-/// `pages` as one PDF document titled `title`.
+/// `pages` as one PDF document titled `title` (in its metadata: one line of at most
+/// [`MOST_TITLE_CHARS`] characters, without control characters).
 ///
 /// # Errors
-/// A page cannot be converted (a broken build: the pages are the project's own SVG).
+/// A page's link is too long for a QR code that a phone reads on paper (its code would be
+/// wider than [`QR_MOST_SIDE`] at [`QR_MODULE_PT`] a module); a page cannot be converted (a
+/// broken build: the pages are the project's own SVG).
 pub fn pdf(title: &str, pages: &[Page<'_>]) -> Result<Vec<u8>, RenderError> {
     let face = Typeface::egui_default();
     let mut options = usvg::Options {
@@ -321,7 +456,7 @@ pub fn pdf(title: &str, pages: &[Page<'_>]) -> Result<Vec<u8>, RenderError> {
     let mut pdf = Pdf::new();
     let mut kids = Vec::new();
     for page in pages {
-        let tree = usvg::Tree::from_str(&page_svg(&face, page), &options)
+        let tree = usvg::Tree::from_str(&page_svg(&face, page)?, &options)
             .map_err(|e| RenderError::Pdf(e.to_string()))?;
         let (chunk, form) = svg2pdf::to_chunk(&tree, svg2pdf::ConversionOptions::default())
             .map_err(|e| RenderError::Pdf(e.to_string()))?;
@@ -347,7 +482,7 @@ pub fn pdf(title: &str, pages: &[Page<'_>]) -> Result<Vec<u8>, RenderError> {
     pdf.catalog(catalog).pages(page_tree);
     pdf.pages(page_tree).count(kids.len() as i32).kids(kids);
     pdf.document_info(alloc.bump())
-        .title(TextStr(title))
+        .title(TextStr(&document_title(title)))
         // untranslated: the producer's name in the file's metadata.
         .producer(TextStr("refraction-explorer (svg2pdf)"));
     Ok(sorted_resources(pdf.finish()))
@@ -435,7 +570,8 @@ mod tests {
         let face = Typeface::egui_default();
         let word = "x".repeat(200_000);
         let page = Page {
-            heading: "Deck · 1 / 1".to_owned(),
+            deck: "Deck".to_owned(),
+            heading: "1 / 1".to_owned(),
             title: word.clone(),
             question: None,
             notes: Some(("Notes".to_owned(), word)),
@@ -443,8 +579,8 @@ mod tests {
             diagram: Box::new(|_| Vec::new()),
             link: None,
         };
-        let layout = PageLayout::of(&face, &page);
-        let labels = page_words(&face, &page, &layout);
+        let layout = PageLayout::of(&face, &page, None);
+        let labels = page_words(&face, &page, &layout, None);
         for label in &labels {
             let Primitive::Text(label) = label else {
                 panic!("words are labels")
@@ -470,7 +606,8 @@ mod tests {
     fn the_diagram_fills_the_page_and_its_words_are_nine_points_or_more() {
         let face = Typeface::egui_default();
         let page = |notes: &str, writing_lines: bool| Page {
-            heading: "Deck · 1 / 2".to_owned(),
+            deck: "Deck".to_owned(),
+            heading: "1 / 2".to_owned(),
             title: "A step".to_owned(),
             question: Some(("Question".to_owned(), "Which way does it bend?".to_owned())),
             notes: (!writing_lines).then(|| ("Notes".to_owned(), notes.to_owned())),
@@ -478,7 +615,7 @@ mod tests {
             diagram: Box::new(|_| Vec::new()),
             link: None,
         };
-        let teacher = PageLayout::of(&face, &page("Short notes.", false));
+        let teacher = PageLayout::of(&face, &page("Short notes.", false), None);
         let last_word = teacher.diagram_top + teacher.diagram.y + TEXT_SIZE * 8.0;
         assert!(
             PAGE.y - MARGIN - last_word < PAGE.y / 4.0,
@@ -486,11 +623,115 @@ mod tests {
         );
         assert!(SMALLEST_TEXT * teacher.diagram.x / teacher.canvas().x >= 9.0);
         let students = page("", true);
-        let sheet = PageLayout::of(&face, &students);
-        let rules = page_words(&face, &students, &sheet)
+        let sheet = PageLayout::of(&face, &students, None);
+        let rules = page_words(&face, &students, &sheet, None)
             .iter()
             .filter(|p| matches!(p, Primitive::Polyline { .. }))
             .count();
         assert!(rules >= 6, "{rules} lines to write on");
+    }
+
+    /// A page of `deck`'s step 1 of 1 titled `title`, with `link` at its foot.
+    fn page_with(deck: &str, title: &str, link: Option<&str>) -> Page<'static> {
+        Page {
+            deck: deck.to_owned(),
+            heading: "1 / 1".to_owned(),
+            title: title.to_owned(),
+            question: Some(("Question".to_owned(), "Why\u{7}?\nSay.".to_owned())),
+            notes: None,
+            writing_lines: true,
+            diagram: Box::new(|_| Vec::new()),
+            link: link.map(str::to_owned),
+        }
+    }
+
+    /// The texts of `page`'s words, in order.
+    fn texts(face: &Typeface, page: &Page<'_>) -> Vec<String> {
+        let foot = page.link.as_deref().map(|l| Foot::of(face, l).unwrap());
+        let layout = PageLayout::of(face, page, foot.as_ref());
+        page_words(face, page, &layout, foot.as_ref())
+            .into_iter()
+            .filter_map(|p| match p {
+                Primitive::Text(label) => Some(label.text),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_deck_s_long_title_is_cut_to_one_line_that_keeps_the_step_s_place() {
+        // Issue 40: 200,000 characters of words in `[deck]`'s title held a handout for 73 s
+        // (the PDF converter lays out one line in time quadratic in its length).
+        let face = Typeface::egui_default();
+        let words = "light bends toward the normal ".repeat(7_000);
+        let heading = &texts(&face, &page_with(&words, "A step", None))[0];
+        assert!(heading.ends_with("… · 1 / 1"), "{heading}");
+        assert!(!heading.contains('\n'));
+        assert!(face.width(heading, HEADING_SIZE) <= COLUMN, "{heading}");
+        let short = &texts(&face, &page_with("Snell's law", "A step", None))[0];
+        assert_eq!(short, "Snell's law · 1 / 1");
+        let bare = &texts(&face, &page_with("", "A step", None))[0];
+        assert_eq!(bare, "1 / 1");
+    }
+
+    #[test]
+    fn control_characters_and_reordering_marks_show_as_spaces_on_the_page_and_in_the_title() {
+        let face = Typeface::egui_default();
+        let page = page_with("A\u{1}B\u{1b}[31m\u{202e}C\nD", "One\u{7}\ttwo", None);
+        let texts = texts(&face, &page);
+        assert_eq!(texts[0], "A B [31m C D · 1 / 1");
+        assert_eq!(texts[1], "One  two");
+        assert!(texts.iter().any(|t| t == "Why ?\nSay."), "{texts:?}");
+        for text in &texts {
+            assert!(!text.chars().any(|c| acts(c) && c != '\n'), "{text:?}");
+        }
+        assert_eq!(
+            document_title("My\u{0}deck\n\u{202e}one \u{7} two\u{1b}"),
+            "My deck one two"
+        );
+        let long = document_title(&"word ".repeat(1_000));
+        assert_eq!(long.chars().count(), MOST_TITLE_CHARS);
+        assert!(long.ends_with('…'), "{long}");
+        let one_word = document_title(&"x".repeat(1_000));
+        assert!(one_word.chars().count() <= MOST_TITLE_CHARS, "{one_word}");
+    }
+
+    #[test]
+    fn a_link_is_printed_whole_and_its_code_keeps_modules_a_phone_reads() {
+        // Issue 40: a long link's code shrank to 0.5 pt a module (read only at 600 dpi) and
+        // the printed link was cut with "…".
+        let face = Typeface::egui_default();
+        let base = "https://school.example/a-long-folder-name/explorer/index.html";
+        for length in [80, 230, 500, 640] {
+            let link = format!("{base}#state={}", "%22".repeat((length - base.len()) / 3));
+            let foot = Foot::of(&face, &link).unwrap();
+            let module = foot.side / foot.code.side_in_modules() as f32;
+            assert!(
+                module >= QR_MODULE_PT,
+                "{length} bytes: {module} pt a module"
+            );
+            assert!(foot.side <= QR_MOST_SIDE);
+            assert_eq!(foot.words.replace('\n', ""), link, "printed whole");
+            for line in foot.words.lines() {
+                assert!(face.width(line, LINK_SIZE) <= COLUMN - foot.side - FOOT_GAP);
+            }
+            let page = page_with("Deck", "A step", Some(&link));
+            let layout = PageLayout::of(&face, &page, Some(&foot));
+            assert!(
+                layout.diagram_top + layout.diagram.y < PAGE.y - MARGIN - foot.height,
+                "{length} bytes: the diagram stays clear of the foot"
+            );
+        }
+        let long = format!("{base}#state={}", "x".repeat(2_000));
+        let refused = Foot::of(&face, &long).err().unwrap().to_string();
+        assert!(
+            refused.contains(&format!("{} bytes", long.len())) && refused.contains("56 mm"),
+            "{refused}"
+        );
+        let page = page_with("Deck", "A step", Some(&long));
+        assert!(matches!(
+            pdf("Deck", &[page]),
+            Err(RenderError::LinkTooLong { .. })
+        ));
     }
 }

@@ -61,6 +61,17 @@ pub enum RenderError {
     /// A handout's page could not be turned into PDF; the converter's message.
     #[error("cannot write the PDF: {0}")]
     Pdf(String),
+    /// A handout's link is too long for a QR code that a phone reads on paper.
+    #[error(
+        "a step's link is {bytes} bytes, too long for a QR code that a phone reads on paper (it \
+         would be wider than {most_mm} mm): give a shorter web address"
+    )]
+    LinkTooLong {
+        /// The link's length in bytes.
+        bytes: usize,
+        /// The widest QR code a page holds, in millimetres.
+        most_mm: u32,
+    },
     /// The work was cancelled before it was done; nothing was written.
     #[error("cancelled: nothing was written")]
     Cancelled,

@@ -11,10 +11,12 @@
 //! - the file dialog is the browser's file picker and a download ([`files`]), and files dropped
 //!   on the page are read before the window sees them;
 //! - a copy the browser refuses is said in the window;
-//! - the canvas is named for screen readers with what the diagram says;
+//! - the canvas is named for screen readers with what the diagram says, and the page carries its
+//!   own controls, the window in words and the page's language for them ([`access`]);
 //! - the settings and the last state are kept in the browser's storage (eframe's);
 //! - each frame's time is a performance entry (`explorer-frame`) for the browser's profiler.
 
+mod access;
 mod crash;
 mod files;
 mod page;
@@ -22,12 +24,12 @@ mod page;
 use core::time::Duration;
 
 use refraction_i18n::t;
+use refraction_tools::link;
 use wasm_bindgen::JsCast as _;
 
 pub(super) use files::dialog;
 
 use super::{Explorer, Launch};
-use crate::TITLE;
 
 /// How often the settings and the last state are written to the browser's storage: a page
 /// can be closed at any moment, and the browser does not always say so.
@@ -47,8 +49,12 @@ struct Page {
     described: String,
     /// The page's title, last set.
     title: String,
+    /// Whether the student's view was shown, last said on the canvas.
+    student: Option<bool>,
     /// The strip's message, last said in the page's live region.
     announced: Option<String>,
+    /// The page's own controls and words for screen readers and keyboards.
+    controls: Option<access::PageControls>,
     /// The last state's link, kept for the panic overlay.
     link: crash::KeptLink,
 }
@@ -57,6 +63,9 @@ impl Page {
     /// Opens the page's fragment, if it changed since it was last opened; a link that cannot
     /// be opened is said in the window and changes nothing.
     fn follow_address(&mut self) {
+        if !page::fragment_changed() {
+            return;
+        }
         let fragment = page::fragment();
         if fragment == self.fragment {
             return;
@@ -104,29 +113,22 @@ impl Page {
         }
     }
 
-    /// Names the canvas with what the diagram says, titles the page with the deck's step
-    /// shown, and says the strip's message in the page's live region, each when it changed.
-    fn describe(&mut self) {
+    /// Names the canvas with what the diagram says, says on it which view is shown, titles
+    /// the page with the deck's step shown, and says the strip's message in the page's live
+    /// region, each when it changed.
+    fn describe(&mut self, ctx: &egui::Context) {
+        let student = self.explorer.shows_student_view(ctx);
+        if self.student != Some(student) {
+            page::show_view(&self.canvas, student);
+            self.student = Some(student);
+        }
         let hidden = self.explorer.lesson().hides_answer();
         let summary = refraction_diagram::picture::summary(self.explorer.state(), hidden);
         if summary != self.described {
             page::describe(&self.canvas, &summary);
             self.described = summary;
         }
-        let lesson = self.explorer.lesson();
-        let step = lesson
-            .current()
-            .zip(lesson.deck.as_ref())
-            .map(|((i, _), deck)| {
-                let number = (i + 1).to_string();
-                let at = t!(
-                    "deck-step-number",
-                    number = number,
-                    count = deck.steps.len().to_string()
-                );
-                format!("{TITLE} · {} · {at}", deck.title)
-            });
-        let title = step.unwrap_or_else(|| TITLE.to_owned());
+        let title = self.explorer.title();
         if title != self.title {
             page::set_title(&title);
             self.title = title;
@@ -148,12 +150,16 @@ impl eframe::App for Page {
             page::report_frame(seconds);
         }
         self.follow_address();
+        access::PageControls::take_set(&mut self.explorer);
         self.explorer.show(ui);
         self.link.follow(&self.explorer);
         self.follow_presentation(ui.ctx());
         self.follow_clipboard(ui.ctx());
         files::deliver_written();
-        self.describe();
+        self.describe(ui.ctx());
+        if let Some(controls) = &mut self.controls {
+            controls.follow(ui.ctx(), &self.explorer);
+        }
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
@@ -170,6 +176,7 @@ impl eframe::App for Page {
 /// then what the address's fragment names.
 fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement) -> Page {
     super::install_fonts(&cc.egui_ctx);
+    page::watch_fragment(&cc.egui_ctx);
     cc.egui_ctx.set_theme(egui::Theme::Light);
     let saved = |key: &str| cc.storage?.get_string(key);
     let launch = Launch {
@@ -177,11 +184,14 @@ fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement
         ..Launch::default()
     };
     let mut explorer = Explorer::launched(launch, saved);
+    // The page's own address, where it can start a link (a `file:` page's can, with a word
+    // in the QR dialog that a phone cannot open it).
     if explorer.web_base().is_empty()
-        && let Some(address) = page::address()
+        && let Some(address) = page::address().and_then(|a| link::web_base(&a).ok())
     {
         explorer.set_web_base(&address);
     }
+    let controls = access::PageControls::new(canvas.clone(), &cc.egui_ctx);
     let mut page = Page {
         explorer,
         canvas,
@@ -190,7 +200,9 @@ fn launched(cc: &eframe::CreationContext<'_>, canvas: web_sys::HtmlCanvasElement
         full_screen: false,
         described: String::new(),
         title: String::new(),
+        student: None,
         announced: None,
+        controls,
         link: crash::KeptLink::default(),
     };
     page.follow_address();

@@ -13,6 +13,37 @@ use wasm_bindgen_futures::{JsFuture, spawn_local};
 thread_local! {
     /// What the browser refused since the last frame (a copy, full screen), in words.
     static REFUSED: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+    /// Whether the address's fragment changed since it was last read ([`fragment_changed`]).
+    static FRAGMENT_CHANGED: core::cell::Cell<bool> = const { core::cell::Cell::new(true) };
+}
+
+/// Listens for the address's fragment to change (a link followed in place, or typed), so
+/// that a frame reads the fragment only then: a link can be megabytes long, too long to copy
+/// out of the browser every frame. Each change asks `ctx` for a frame.
+pub(super) fn watch_fragment(ctx: &egui::Context) {
+    let Some(window) = window() else {
+        return;
+    };
+    let ctx = ctx.clone();
+    let changed = wasm_bindgen::closure::Closure::<dyn FnMut()>::new(move || {
+        FRAGMENT_CHANGED.set(true);
+        ctx.request_repaint();
+    });
+    let listen = Reflect::get(&window, &JsValue::from_str("addEventListener"))
+        .and_then(|f| f.dyn_into::<Function>());
+    if let Ok(listen) = listen {
+        listen
+            .call2(&window, &JsValue::from_str("hashchange"), changed.as_ref())
+            .ok();
+    }
+    // The listener lives as long as the page.
+    changed.forget();
+}
+
+/// Whether the address's fragment may have changed since the last call (always, the first
+/// time).
+pub(super) fn fragment_changed() -> bool {
+    FRAGMENT_CHANGED.replace(false)
 }
 
 /// The page's window.
@@ -207,4 +238,12 @@ pub(super) fn report_frame(seconds: f32) {
 pub(super) fn describe(canvas: &web_sys::HtmlCanvasElement, summary: &str) {
     canvas.set_attribute("role", "img").ok();
     canvas.set_attribute("aria-label", summary).ok();
+}
+
+/// Says on the canvas which view the window shows (`data-view`: `student` or `teacher`), for
+/// the page's style and its tests: a canvas's pictures are not the page's elements.
+pub(super) fn show_view(canvas: &web_sys::HtmlCanvasElement, student: bool) {
+    // untranslated: an attribute's value, read by the page and its tests, never shown.
+    let view = if student { "student" } else { "teacher" };
+    canvas.set_attribute("data-view", view).ok();
 }

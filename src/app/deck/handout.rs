@@ -5,6 +5,7 @@ use std::path::Path;
 
 use glam::Vec2;
 use refraction_deck::{Deck, Step, StepView, builtin};
+use refraction_diagram::palette::Palette;
 use refraction_diagram::{Diagram, Overlay, Primitive, SceneLayout, ScenePicture};
 use refraction_i18n::t;
 use refraction_render::RenderError;
@@ -30,9 +31,18 @@ pub enum HandoutError {
     Write(std::io::Error),
 }
 
-/// The picture of `step` of `deck` on a canvas of `size` pixels, its answer shown unless
-/// `hidden` (and the step asks a question): the one interface with the step's effects, or its
-/// scene traced (up to the first surface while the answer is hidden).
+/// How a step's picture is drawn: with its answer hidden or not, for paper or a screen.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Drawn {
+    /// The answer is hidden, as before the reveal.
+    pub hidden: bool,
+    /// On paper: no handle, no index scale ([`Overlay::paper`]).
+    pub paper: bool,
+}
+
+/// The picture of `step` of `deck` on a canvas of `size` pixels, drawn as `drawn` says: the
+/// one interface with the step's effects, or its scene traced (up to the first surface while
+/// the answer is hidden).
 ///
 /// # Errors
 /// The step's scene cannot be opened.
@@ -40,13 +50,14 @@ pub fn picture(
     deck: &Deck,
     step: &Step,
     size: Vec2,
-    hidden: bool,
+    drawn: Drawn,
 ) -> Result<Vec<Primitive>, LoadError> {
-    let hidden = hidden && step.hides_answer();
+    let hidden = drawn.hidden;
     match step.view {
         StepView::One => {
             let overlay = Overlay {
                 hide_answer: hidden,
+                paper: drawn.paper,
                 ..overlay_of(step)
             };
             Ok(Diagram::with_overlay(&step.state, size, &overlay).primitives())
@@ -55,12 +66,13 @@ pub fn picture(
             let scene = deck.scene(step)?;
             let trace = scene.trace();
             let layout = SceneLayout::new(trace.bounds, size);
-            let shown = if hidden {
-                refraction_deck::answer::up_to_first_surface(&trace)
+            let picture = if hidden {
+                let shown = refraction_deck::answer::up_to_first_surface(&trace);
+                ScenePicture::asking(&scene, &shown, &layout, &Palette::STANDARD)
             } else {
-                trace
+                ScenePicture::new(&scene, &trace, &layout)
             };
-            Ok(ScenePicture::new(&scene, &shown, &layout).primitives)
+            Ok(picture.primitives)
         }
     }
 }
@@ -96,6 +108,38 @@ pub fn step_link(deck: &Deck, index: usize) -> Option<Link> {
     (step.view == StepView::One).then(|| Link::State(Box::new(step.state.clone())))
 }
 
+/// Whether the student sheet draws step `index` of `deck` with its answer hidden: a step
+/// that asks a question, and a step that explains one (no question of its own) with the same
+/// ray or scene as a step that asks: on paper a student can turn the page to it.
+fn hidden_on_sheet(deck: &Deck, index: usize) -> bool {
+    let Some(step) = deck.steps.get(index) else {
+        return false;
+    };
+    step.hides_answer()
+        || deck
+            .steps
+            .iter()
+            .filter(|other| other.hides_answer())
+            .any(|other| same_picture(step, other))
+}
+
+/// Whether two steps show the same light: the same scene, or the same ray meeting the same
+/// surface between the same media (whichever way W is written).
+fn same_picture(a: &Step, b: &Step) -> bool {
+    match (a.view, b.view) {
+        (StepView::Scenes, StepView::Scenes) => a.scene == b.scene,
+        (StepView::One, StepView::One) => {
+            let (ra, rb) = (a.state.refraction(), b.state.refraction());
+            let close = |u: glam::DVec3, v: glam::DVec3| u.distance(v) < 1e-9;
+            close(ra.travel, rb.travel)
+                && close(ra.facing_normal, rb.facing_normal)
+                && (a.state.mu_i() - b.state.mu_i()).abs() < 1e-12
+                && (a.state.mu_t() - b.state.mu_t()).abs() < 1e-12
+        }
+        _ => false,
+    }
+}
+
 /// The handout's page for step `index` of `deck`, on the teacher's handout or the student
 /// sheet, with the step's link at `web_base` if given. The step's scene is opened first, so
 /// that a page that cannot be drawn is an error.
@@ -113,14 +157,14 @@ fn page<'a>(
         number = (index + 1).to_string(),
         count = deck.steps.len().to_string()
     );
-    let heading = if deck.title.is_empty() {
-        number
-    } else {
-        format!("{} · {number}", deck.title)
-    };
     let students = sheet == Sheet::Students;
+    let drawn = Drawn {
+        hidden: students && hidden_on_sheet(deck, index),
+        paper: true,
+    };
     Ok(Page {
-        heading,
+        deck: deck.title.clone(),
+        heading: number,
         title: step.title.clone(),
         question: step
             .question
@@ -129,7 +173,7 @@ fn page<'a>(
         notes: (!students).then(|| (t!("deck-handout-notes"), step.notes.clone())),
         writing_lines: students && step.question.is_some(),
         // The scene opened above: drawing it again cannot fail.
-        diagram: Box::new(move |size| picture(deck, step, size, students).unwrap_or_default()),
+        diagram: Box::new(move |size| picture(deck, step, size, drawn).unwrap_or_default()),
         link: web_base.and_then(|base| Some(link::url(base, &step_link(deck, index)?))),
     })
 }
@@ -169,9 +213,19 @@ impl crate::app::Explorer {
         let Some(deck) = &self.lesson.deck else {
             return;
         };
-        let base = Some(self.web_base()).filter(|b| !b.is_empty());
+        // An address that cannot start a link is said, not left off the pages in silence.
+        let base = match self.web_base().trim() {
+            "" => None,
+            typed => match link::web_base(typed) {
+                Ok(base) => Some(base),
+                Err(refused) => {
+                    self.lesson.panel.status = Some(status::Status::Refused(refused.message()));
+                    return;
+                }
+            },
+        };
         let path = crate::app::file_dialog::numbered(Path::new(""), "handout", "pdf");
-        let written = write(deck, Sheet::Teacher, base, &path);
+        let written = write(deck, Sheet::Teacher, base.as_deref(), &path);
         self.lesson.panel.status = Some(status::exported(written, &path));
     }
 }

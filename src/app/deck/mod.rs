@@ -107,7 +107,7 @@ impl Lesson {
 
     /// The keys pressed this frame that ask something of the deck (see the module's
     /// [precedence](self#keys)), taken out of the input so that nothing else acts on them.
-    fn keys(ui: &Ui) -> Vec<Command> {
+    pub(super) fn keys(ui: &Ui) -> Vec<Command> {
         if ui.ctx().text_edit_focused() {
             return Vec::new();
         }
@@ -199,6 +199,44 @@ fn light(polarisation: Polarisation) -> Light {
 }
 
 impl Explorer {
+    /// The window's title (in a browser, the page's, which a screen reader says first): the
+    /// program's name, then the deck's title, the step's title and where the step is
+    /// (`… · Snell's law in ten minutes · From air into glass · 1 / 5`), or the view (and its
+    /// scene) other than the one interface. A title of a deck file is cut to a few words, as
+    /// a tab shows. Never the step's question, which the strip shows.
+    #[must_use]
+    pub fn title(&self) -> String {
+        let cut = |text: &str| {
+            refraction_tools::link::echo(text.trim(), refraction_tools::link::ECHO_CHARS)
+        };
+        let shown = if let Some(((index, step), deck)) =
+            self.lesson.current().zip(self.lesson.deck.as_ref())
+        {
+            let at = t!(
+                "deck-step-number",
+                number = (index + 1).to_string(),
+                count = deck.steps.len().to_string()
+            );
+            [cut(&deck.title), cut(&step.title), at]
+                .into_iter()
+                .filter(|part| !part.is_empty())
+                .collect::<Vec<_>>()
+                // untranslated: the title's separator, the same in every language.
+                .join(" · ")
+        } else {
+            match self.view {
+                View::Interface => return crate::TITLE.to_owned(),
+                View::Scenes => t!(
+                    "access-title-scene",
+                    view = View::Scenes.label(),
+                    scene = refraction_diagram::scene_words::title(self.scenes.scene())
+                ),
+                View::Accuracy => View::Accuracy.label(),
+            }
+        };
+        format!("{} · {shown}", crate::TITLE)
+    }
+
     /// The lesson deck shown, where it is, and its tool.
     #[must_use]
     pub fn lesson(&self) -> &Lesson {

@@ -22,12 +22,16 @@ diagram-banner-tir =
 diagram-banner-toward-origin = W zeigt zurück zum Ursprung, also a = −μ
 diagram-banner-along-ray = W ist die Ausbreitungsrichtung, also a = +μ
 diagram-banner-section = Abschnitt { $section }: { $words }
+# The banner on paper while the answer is hidden: the convention without the sign of a,
+# which a question may ask for
+diagram-banner-asked-toward-origin = Abschnitt 1: W zeigt zurück zum Ursprung
+diagram-banner-asked-along-ray = Abschnitt 2: W ist die Ausbreitungsrichtung
 diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T existiert
 diagram-critical-angle = Grenzwinkel θc = { $angle }°
 diagram-kernel-normal = −N: die Normale des Kernels
 diagram-outward-normal-bug =
-    Formel des Artikels mit N wie gegeben: Lösung der falschen Seite,
-    das falsche T des Fehlers mit äußerer Normale
+    Fehler der äußeren Normale:
+    T der Formel mit N wie gegeben
 diagram-index-scale = Index μ
 diagram-incoming-ray = einfallender Strahl
 diagram-normal-incidence = senkrechter Einfall: W, N und T liegen auf einer Linie
@@ -42,10 +46,10 @@ diagram-no-reflected-ray = { $label }: kein reflektierter Strahl
 
 ## Anfasser (was ein Bildschirmleser sagt)
 
-diagram-handle-w = W-Anfasser
-diagram-handle-n = N-Anfasser
-diagram-handle-mu-i = μi-Anfasser
-diagram-handle-mu-t = μt-Anfasser
+diagram-handle-w = Einfallswinkel θi (W)
+diagram-handle-n = Richtung der Normalen N
+diagram-handle-mu-i = Brechungsindex μi (Medium des Strahls)
+diagram-handle-mu-t = Brechungsindex μt (Medium, in das der Strahl eintritt)
 diagram-handle-source = Anfasser der Quelle
 diagram-handle-aim = Anfasser der Quellrichtung
 diagram-handle-shape = Anfasser von Form { $number } ({ $medium })

@@ -47,8 +47,8 @@ panel-hide-numbers = Zahlen ausblenden ({ $key })
 
 ## Unter dem Diagramm
 
-canvas-hint = W, N oder eine μ-Marke ziehen; eine davon (oder das Diagramm) anklicken, um die Pfeiltasten zu nutzen
-canvas-hint-ray = ←/→ dreht um 1° (Umschalt: 0,1°) · +/− μt · Tab: nächster Anfasser · ziehen zum Verschieben
+canvas-hint = W, N oder eine μ-Marke ziehen oder − und + darunter nutzen; Tab oder ein Klick wählt einen Anfasser für die Pfeiltasten
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Umschalt: 0,1°) · +/− μt · Tab: nächster Anfasser · ziehen zum Verschieben
 canvas-hint-index = ↑/↓ oder +/− ändern den Brechungsindex um 0,01 (Umschalt: 0,001) · Tab: nächster Anfasser
 
 ## Der Bereich Steuerung
@@ -184,3 +184,13 @@ accuracy-column-random = max. Fehler zufällig
 accuracy-column-hard = max. Fehler schwierig
 accuracy-column-eps-kappa = schwierig ε·κ
 accuracy-column-tir = Abweichungen Totalreflexion
+
+## Die Schüleransicht: was ein Handy (oder ein Link mit view=student) zeigt, und die Knöpfe,
+## die W, N und die Brechzahlen schrittweise ändern
+
+# $symbol: μi oder μt
+student-index = Brechzahl { $symbol }
+student-full = Ganzer Explorer
+student-full-hover = Der ganze Explorer mit seinen Werkzeugen und Leisten (für ein großes Display)
+student-view = Schüleransicht
+student-view-hover = Die Ansicht für ein Handy: die Frage, das Diagramm über die ganze Breite und Knöpfe für den Finger

@@ -19,7 +19,9 @@ link-qr-save = Als { $format } speichern
 # $bytes: die Länge des Links
 link-qr-too-long = Der Link ist zu lang für einen QR-Code ({ $bytes } Bytes): ihn stattdessen kopieren.
 link-qr-close = Q oder Esc schließt
-link-notice-close = Schließen
+# The QR code dialog: its button that takes the web address typed
+link-qr-show = QR-Code zeigen
+link-notice-close = Schließen (Esc)
 
 ## Ein Link, der sich nicht öffnen lässt ($reason: warum, wie unten)
 
@@ -71,3 +73,18 @@ web-read-failed = Der Browser konnte { $name } nicht lesen ({ $reason }).
 web-file-too-large = { $name } ist { $size } MB groß: Die Seite öffnet Dateien bis { $limit } MB.
 web-open-in-tab = ↗ In neuem Tab öffnen
 web-open-in-tab-hover = Diese Seite steckt in einer anderen Seite: den Explorer in einem eigenen Tab öffnen, für Vollbild und Kopieren
+
+# Nichts geht verloren (Issue 40): Links mit klarem Grund abgelehnt, die Webadresse an einer Stelle geprüft.
+link-part-without-name = ein Teil des Links hat keinen Namen („{ $part }“)
+link-part-twice = der Link nennt { $part } zweimal
+link-web-base-refused = Diese Webadresse ist nicht verwendbar: { $reason }.
+link-web-base-empty = es wurde keine Adresse angegeben
+link-web-base-scheme = sie beginnt mit „{ $scheme }“, nicht mit http://, https:// oder file://
+link-web-base-unseen = sie enthält { $character }, was eine Adresse nicht enthalten darf (keine Leerzeichen, Steuerzeichen oder unsichtbaren Zeichen)
+link-web-base-escape = „{ $escape }“ ist keine Prozent-Kodierung (auf % folgen zwei Hexadezimalziffern)
+link-web-base-credentials = sie enthält einen Benutzernamen oder ein Passwort, die jeder Link und jeder QR-Code zeigen würde
+link-web-base-too-long = sie ist { $bytes } Byte lang: höchstens { $most } halten die QR-Codes der Links auf Papier lesbar
+link-web-base-port = ihr Port ist keine Zahl von 0 bis 65535
+link-web-base-host = ihr Host fehlt oder ist kein gültiger Name und keine gültige IP-Adresse ({ $reason })
+storage-web-base-unusable = Die vom letzten Mal gespeicherte Webadresse wird nicht verwendet: { $reason }.
+storage-state-unreadable = Der vom letzten Mal gespeicherte Zustand ließ sich nicht lesen ({ $reason }): der Explorer beginnt mit dem Standardzustand.

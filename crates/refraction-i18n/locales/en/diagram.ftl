@@ -23,13 +23,17 @@ diagram-banner-tir =
 diagram-banner-toward-origin = W points back toward the origin, so a = −μ
 diagram-banner-along-ray = W is the direction of travel, so a = +μ
 diagram-banner-section = Section { $section }: { $words }
+# The banner on paper while the answer is hidden: the convention without the sign of a,
+# which a question may ask for
+diagram-banner-asked-toward-origin = Section 1: W points back toward the origin
+diagram-banner-asked-along-ray = Section 2: W is the direction of travel
 # The banner's second line: the angles of incidence (i) and refraction (t) and k.
 diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T exists
 diagram-critical-angle = critical angle θc = { $angle }°
 diagram-kernel-normal = −N: the normal the kernel uses
 diagram-outward-normal-bug =
-    paper's formula with un-flipped N: the wrong-side root,
-    the wrong T of the outward-normal bug
+    outward-normal bug:
+    the paper's T with N as given
 diagram-index-scale = index μ
 diagram-incoming-ray = incoming ray
 diagram-normal-incidence = normal incidence: W, N and T lie on one line
@@ -44,10 +48,10 @@ diagram-no-reflected-ray = { $label }: no reflected ray
 
 ## Handles (what a screen reader says)
 
-diagram-handle-w = W handle
-diagram-handle-n = N handle
-diagram-handle-mu-i = μi handle
-diagram-handle-mu-t = μt handle
+diagram-handle-w = Angle of incidence θi (W)
+diagram-handle-n = Direction of the normal N
+diagram-handle-mu-i = Index μi of the ray's medium
+diagram-handle-mu-t = Index μt of the medium entered
 diagram-handle-source = Source handle
 diagram-handle-aim = Source direction handle
 diagram-handle-shape = Shape { $number } handle ({ $medium })

@@ -47,8 +47,8 @@ panel-hide-numbers = Hide the numbers ({ $key })
 
 ## Under the diagram
 
-canvas-hint = Drag W, N or a μ marker; click one (or the diagram) to use the arrow keys
-canvas-hint-ray = ←/→ turn by 1° (Shift: 0.1°) · +/− μt · Tab: next handle · drag to move
+canvas-hint = Drag W, N or a μ marker, or use − and + below; Tab or a click selects one for the arrow keys
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Shift: 0.1°) · +/− μt · Tab: next handle · drag to move
 canvas-hint-index = ↑/↓ or +/− change the index by 0.01 (Shift: 0.001) · Tab: next handle
 
 ## The controls panel
@@ -185,3 +185,13 @@ accuracy-column-random = max err random
 accuracy-column-hard = max err hard
 accuracy-column-eps-kappa = hard ε·κ
 accuracy-column-tir = TIR mismatches
+
+## The student's view: what a phone (or a link with view=student) shows, and the buttons that
+## change W, N and the indices a step at a time
+
+# $symbol: μi or μt
+student-index = Index { $symbol }
+student-full = Full explorer
+student-full-hover = The whole explorer, with its tools and panels (for a large screen)
+student-view = Student view
+student-view-hover = The view for a phone: the question, the diagram across the screen and buttons a finger can take

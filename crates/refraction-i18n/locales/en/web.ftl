@@ -19,7 +19,9 @@ link-qr-save = Save as { $format }
 # $bytes: the link's length
 link-qr-too-long = The link is too long for a QR code ({ $bytes } bytes): copy it instead.
 link-qr-close = Q or Esc closes
-link-notice-close = Close
+# The QR code dialog: its button that takes the web address typed
+link-qr-show = Show the QR code
+link-notice-close = Close (Esc)
 
 ## A link that cannot be opened ($reason: why, as below)
 
@@ -71,3 +73,24 @@ web-read-failed = The browser could not read { $name } ({ $reason }).
 web-file-too-large = { $name } is { $size } MB: the page opens files of at most { $limit } MB.
 web-open-in-tab = ↗ Open in a new tab
 web-open-in-tab-hover = This page is inside another page: open the explorer in a tab of its own for full screen and copying
+
+# Nothing lost (issue 40): links refused with a clear reason, the web address checked in one place.
+# $part: the part of the link, as written
+link-part-without-name = a part of the link has no name (“{ $part }”)
+link-part-twice = the link gives { $part } twice
+# $reason: one of the link-web-base-* reasons below
+link-web-base-refused = This web address cannot be used: { $reason }.
+link-web-base-empty = no address was given
+# $scheme: what the address starts with, before its colon
+link-web-base-scheme = it starts with “{ $scheme }”, not http://, https:// or file://
+# $character: the character, escaped as in Rust source
+link-web-base-unseen = it holds { $character }, which an address cannot hold (no spaces, control characters or invisible marks)
+link-web-base-escape = “{ $escape }” is no percent escape (a % is followed by two hexadecimal digits)
+link-web-base-credentials = it holds a user name or password, which every link and QR code would show
+link-web-base-too-long = it is { $bytes } bytes long: at most { $most } keep the links' QR codes readable on paper
+link-web-base-port = its port is not a number from 0 to 65535
+# $reason: the URL parser's own words
+link-web-base-host = its host is missing or is no valid name or IP address ({ $reason })
+storage-web-base-unusable = The web address kept from last time is not used: { $reason }.
+# $reason: what reading it said
+storage-state-unreadable = The state kept from last time could not be read ({ $reason }): the explorer starts from the default state.

@@ -22,12 +22,16 @@ diagram-banner-tir =
 diagram-banner-toward-origin = W apunta de vuelta al origen, así que a = −μ
 diagram-banner-along-ray = W es la dirección de propagación, así que a = +μ
 diagram-banner-section = Sección { $section }: { $words }
+# The banner on paper while the answer is hidden: the convention without the sign of a,
+# which a question may ask for
+diagram-banner-asked-toward-origin = Sección 1: W apunta de vuelta hacia el origen
+diagram-banner-asked-along-ray = Sección 2: W es la dirección de propagación
 diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T existe
 diagram-critical-angle = ángulo límite θc = { $angle }°
 diagram-kernel-normal = −N: la normal que usa el kernel
 diagram-outward-normal-bug =
-    fórmula del artículo con N sin invertir: la raíz del lado equivocado,
-    la T errónea del fallo de la normal exterior
+    fallo de la normal exterior:
+    la T de la fórmula con N tal cual
 diagram-index-scale = índice μ
 diagram-incoming-ray = rayo incidente
 diagram-normal-incidence = incidencia normal: W, N y T están en una misma línea
@@ -42,10 +46,10 @@ diagram-no-reflected-ray = { $label }: sin rayo reflejado
 
 ## Tiradores (lo que dice un lector de pantalla)
 
-diagram-handle-w = tirador de W
-diagram-handle-n = tirador de N
-diagram-handle-mu-i = tirador de μi
-diagram-handle-mu-t = tirador de μt
+diagram-handle-w = Ángulo de incidencia θi (W)
+diagram-handle-n = Dirección de la normal N
+diagram-handle-mu-i = Índice μi del medio del rayo
+diagram-handle-mu-t = Índice μt del medio en el que entra
 diagram-handle-source = tirador de la fuente
 diagram-handle-aim = tirador de la dirección de la fuente
 diagram-handle-shape = tirador de la forma { $number } ({ $medium })

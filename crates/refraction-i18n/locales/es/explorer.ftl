@@ -47,8 +47,8 @@ panel-hide-numbers = Ocultar los números ({ $key })
 
 ## Bajo el diagrama
 
-canvas-hint = Arrastra W, N o un marcador μ; haz clic en uno (o en el diagrama) para usar las flechas del teclado
-canvas-hint-ray = ←/→ gira 1° (Mayús: 0,1°) · +/− μt · Tab: siguiente tirador · arrastra para mover
+canvas-hint = Arrastra W, N o un marcador μ, o usa − y + debajo; Tab o un clic elige uno para las flechas del teclado
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Mayús: 0,1°) · +/− μt · Tab: siguiente tirador · arrastra para mover
 canvas-hint-index = ↑/↓ o +/− cambian el índice en 0,01 (Mayús: 0,001) · Tab: siguiente tirador
 
 ## El panel de controles
@@ -184,3 +184,13 @@ accuracy-column-random = err. máx. aleatorio
 accuracy-column-hard = err. máx. difícil
 accuracy-column-eps-kappa = difícil ε·κ
 accuracy-column-tir = discrepancias en reflexión total
+
+## La vista del alumno: lo que muestra un móvil (o un enlace con view=student), y los botones
+## que cambian W, N y los índices paso a paso
+
+# $symbol: μi o μt
+student-index = Índice { $symbol }
+student-full = Explorador completo
+student-full-hover = Todo el explorador, con sus herramientas y paneles (para una pantalla grande)
+student-view = Vista del alumno
+student-view-hover = La vista para un móvil: la pregunta, el diagrama a todo el ancho y botones para el dedo

@@ -19,7 +19,9 @@ link-qr-save = Guardar como { $format }
 # $bytes: la longitud del enlace
 link-qr-too-long = El enlace es demasiado largo para un código QR ({ $bytes } bytes): cópialo en su lugar.
 link-qr-close = Q o Esc cierra
-link-notice-close = Cerrar
+# The QR code dialog: its button that takes the web address typed
+link-qr-show = Mostrar el código QR
+link-notice-close = Cerrar (Esc)
 
 ## Un enlace que no se puede abrir ($reason: por qué, como abajo)
 
@@ -71,3 +73,18 @@ web-read-failed = El navegador no pudo leer { $name } ({ $reason }).
 web-file-too-large = { $name } ocupa { $size } MB: la página abre archivos de { $limit } MB como máximo.
 web-open-in-tab = ↗ Abrir en una pestaña nueva
 web-open-in-tab-hover = Esta página está dentro de otra: abre el explorador en una pestaña propia para la pantalla completa y para copiar
+
+# Nada se pierde (issue 40): enlaces rechazados con un motivo claro, la dirección web comprobada en un solo sitio.
+link-part-without-name = una parte del enlace no tiene nombre («{ $part }»)
+link-part-twice = el enlace da { $part } dos veces
+link-web-base-refused = Esta dirección web no se puede usar: { $reason }.
+link-web-base-empty = no se dio ninguna dirección
+link-web-base-scheme = empieza por «{ $scheme }», no por http://, https:// ni file://
+link-web-base-unseen = contiene { $character }, que una dirección no puede contener (ni espacios, ni caracteres de control, ni marcas invisibles)
+link-web-base-escape = «{ $escape }» no es un escape de porcentaje (tras % van dos dígitos hexadecimales)
+link-web-base-credentials = contiene un nombre de usuario o una contraseña, que todo enlace y todo código QR mostrarían
+link-web-base-too-long = mide { $bytes } bytes: como mucho { $most } mantienen legibles en papel los códigos QR de los enlaces
+link-web-base-port = su puerto no es un número de 0 a 65535
+link-web-base-host = falta su host o no es un nombre ni una dirección IP válidos ({ $reason })
+storage-web-base-unusable = No se usa la dirección web guardada la última vez: { $reason }.
+storage-state-unreadable = No se pudo leer el estado guardado la última vez ({ $reason }): el explorador empieza en el estado predeterminado.

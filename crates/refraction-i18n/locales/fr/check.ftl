@@ -360,7 +360,7 @@ check-part-across-sign = la partie de T transverse à N a le mauvais signe (l’
 check-tally-sampled = réfléchies (tirées)
 
 # check: a log whose read lines are right but some lines could not be read (issue 40)
-check-diagnosis-unreadable = { $lines } lignes du journal n’ont pas pu être lues (chacune reçoit son erreur), et aucune ligne lue n’est fausse : ce n’est pas une réussite ; corrige ces lignes ou la façon de les lire.
+check-diagnosis-unreadable = { $lines } lignes du journal n’ont pas pu être lues (chacune reçoit son erreur), et aucune ligne lue n’est fausse : ce n’est pas une réussite ; corrige ces lignes ou la façon de les lire.
 
 # check --suggest-pattern on JSON Lines (issue 40)
-check-suggest-json-lines = le journal est en JSON Lines, dont les clés nomment les champs : il n’a pas besoin de motif
+check-suggest-json-lines = le journal est en JSON Lines, dont les clés nomment les champs : il n’a pas besoin de motif

@@ -22,12 +22,16 @@ diagram-banner-tir =
 diagram-banner-toward-origin = W pointe vers l’origine, donc a = −μ
 diagram-banner-along-ray = W est la direction de propagation, donc a = +μ
 diagram-banner-section = Section { $section } : { $words }
+# The banner on paper while the answer is hidden: the convention without the sign of a,
+# which a question may ask for
+diagram-banner-asked-toward-origin = Section 1 : W pointe vers l’origine
+diagram-banner-asked-along-ray = Section 2 : W est la direction de propagation
 diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0 : T existe
 diagram-critical-angle = angle limite θc = { $angle }°
 diagram-kernel-normal = −N : la normale qu’utilise le noyau
 diagram-outward-normal-bug =
-    formule de l’article avec N non retournée : la racine du mauvais côté,
-    le T erroné du bogue de la normale extérieure
+    bogue de la normale extérieure :
+    le T de la formule avec N tel quel
 diagram-index-scale = indice μ
 diagram-incoming-ray = rayon incident
 diagram-normal-incidence = incidence normale : W, N et T sont sur une même droite
@@ -42,10 +46,10 @@ diagram-no-reflected-ray = { $label } : pas de rayon réfléchi
 
 ## Poignées (ce que dit un lecteur d’écran)
 
-diagram-handle-w = poignée de W
-diagram-handle-n = poignée de N
-diagram-handle-mu-i = poignée de μi
-diagram-handle-mu-t = poignée de μt
+diagram-handle-w = Angle d’incidence θi (W)
+diagram-handle-n = Direction de la normale N
+diagram-handle-mu-i = Indice μi du milieu du rayon
+diagram-handle-mu-t = Indice μt du milieu où il entre
 diagram-handle-source = poignée de la source
 diagram-handle-aim = poignée de la direction de la source
 diagram-handle-shape = poignée de la forme { $number } ({ $medium })

@@ -47,8 +47,8 @@ panel-hide-numbers = Masquer les valeurs ({ $key })
 
 ## Sous le schéma
 
-canvas-hint = Fais glisser W, N ou un repère μ ; clique sur l’un d’eux (ou sur le schéma) pour utiliser les flèches du clavier
-canvas-hint-ray = ←/→ tourne de 1° (Maj : 0,1°) · +/− μt · Tab : poignée suivante · glisser pour déplacer
+canvas-hint = Fais glisser W, N ou un repère μ, ou utilise − et + en dessous ; Tab ou un clic en choisit un pour les flèches du clavier
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Maj : 0,1°) · +/− μt · Tab : poignée suivante · glisser pour déplacer
 canvas-hint-index = ↑/↓ ou +/− changent l’indice de 0,01 (Maj : 0,001) · Tab : poignée suivante
 
 ## Le panneau des commandes
@@ -184,3 +184,13 @@ accuracy-column-random = err. max aléatoire
 accuracy-column-hard = err. max difficile
 accuracy-column-eps-kappa = difficile ε·κ
 accuracy-column-tir = écarts en réflexion totale
+
+## La vue élève : ce qu’affiche un téléphone (ou un lien avec view=student), et les boutons qui
+## changent W, N et les indices pas à pas
+
+# $symbol : μi ou μt
+student-index = Indice { $symbol }
+student-full = Explorateur complet
+student-full-hover = Tout l’explorateur, avec ses outils et ses panneaux (pour un grand écran)
+student-view = Vue élève
+student-view-hover = La vue pour un téléphone : la question, le schéma sur toute la largeur et des boutons pour le doigt

@@ -52,5 +52,5 @@ diagram-failure-empty = Aucune ligne n’a été jugée.
 diagram-failure-about = Carte des erreurs. { $panels }
 
 # check --tests and Save failing lines as tests: what is at the path cannot be read, or is not a file (issue 40)
-logs-tests-unreadable = { $path } ne peut pas être lu ({ $reason }), donc pas distingué de ton propre code : il est laissé tel quel ; choisis un autre nom
-logs-tests-not-a-file = { $path } n’est pas un fichier ordinaire (un tube, un périphérique ou un lien vers l’un d’eux) : les tests ne s’écrivent que dans un fichier à eux ; choisis un autre nom
+logs-tests-unreadable = { $path } ne peut pas être lu ({ $reason }), donc pas distingué de ton propre code : il est laissé tel quel ; choisis un autre nom
+logs-tests-not-a-file = { $path } n’est pas un fichier ordinaire (un tube, un périphérique ou un lien vers l’un d’eux) : les tests ne s’écrivent que dans un fichier à eux ; choisis un autre nom

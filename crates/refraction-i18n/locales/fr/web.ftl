@@ -19,7 +19,9 @@ link-qr-save = Enregistrer en { $format }
 # $bytes : la longueur du lien
 link-qr-too-long = Le lien est trop long pour un code QR ({ $bytes } octets) : copie-le plutôt.
 link-qr-close = Q ou Échap ferme
-link-notice-close = Fermer
+# The QR code dialog: its button that takes the web address typed
+link-qr-show = Afficher le code QR
+link-notice-close = Fermer (Échap)
 
 ## Un lien qui ne s’ouvre pas ($reason : pourquoi, comme ci-dessous)
 
@@ -71,3 +73,18 @@ web-read-failed = Le navigateur n’a pas pu lire { $name } ({ $reason }).
 web-file-too-large = { $name } pèse { $size } Mo : la page ouvre des fichiers de { $limit } Mo au plus.
 web-open-in-tab = ↗ Ouvrir dans un nouvel onglet
 web-open-in-tab-hover = Cette page est dans une autre page : ouvre l’explorateur dans un onglet à lui pour le plein écran et la copie
+
+# Rien de perdu (issue 40) : liens refusés avec une raison claire, l’adresse web vérifiée en un seul endroit.
+link-part-without-name = une partie du lien n’a pas de nom (« { $part } »)
+link-part-twice = le lien donne { $part } deux fois
+link-web-base-refused = Cette adresse web ne peut pas servir : { $reason }.
+link-web-base-empty = aucune adresse n’a été donnée
+link-web-base-scheme = elle commence par « { $scheme } », et non par http://, https:// ou file://
+link-web-base-unseen = elle contient { $character }, qu’une adresse ne peut pas contenir (ni espace, ni caractère de contrôle, ni marque invisible)
+link-web-base-escape = « { $escape } » n’est pas un échappement pour cent (un % est suivi de deux chiffres hexadécimaux)
+link-web-base-credentials = elle contient un nom d’utilisateur ou un mot de passe, que chaque lien et chaque code QR montreraient
+link-web-base-too-long = elle fait { $bytes } octets : au plus { $most } gardent les codes QR des liens lisibles sur papier
+link-web-base-port = son port n’est pas un nombre de 0 à 65535
+link-web-base-host = son hôte manque ou n’est ni un nom ni une adresse IP valides ({ $reason })
+storage-web-base-unusable = L’adresse web gardée de la dernière fois n’est pas utilisée : { $reason }.
+storage-state-unreadable = L’état gardé de la dernière fois n’a pas pu être lu ({ $reason }) : l’explorateur part de l’état par défaut.

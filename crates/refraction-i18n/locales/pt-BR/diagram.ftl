@@ -22,12 +22,16 @@ diagram-banner-tir =
 diagram-banner-toward-origin = W aponta de volta para a origem, então a = −μ
 diagram-banner-along-ray = W é a direção de propagação, então a = +μ
 diagram-banner-section = Seção { $section }: { $words }
+# The banner on paper while the answer is hidden: the convention without the sign of a,
+# which a question may ask for
+diagram-banner-asked-toward-origin = Seção 1: W aponta de volta para a origem
+diagram-banner-asked-along-ray = Seção 2: W é a direção de propagação
 diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T existe
 diagram-critical-angle = ângulo limite θc = { $angle }°
 diagram-kernel-normal = −N: a normal que o kernel usa
 diagram-outward-normal-bug =
-    fórmula do artigo com N sem inverter: a raiz do lado errado,
-    o T errado do defeito da normal externa
+    defeito da normal externa:
+    o T da fórmula com N como dado
 diagram-index-scale = índice μ
 diagram-incoming-ray = raio incidente
 diagram-normal-incidence = incidência normal: W, N e T estão na mesma linha
@@ -42,10 +46,10 @@ diagram-no-reflected-ray = { $label }: sem raio refletido
 
 ## Alças (o que um leitor de tela diz)
 
-diagram-handle-w = alça de W
-diagram-handle-n = alça de N
-diagram-handle-mu-i = alça de μi
-diagram-handle-mu-t = alça de μt
+diagram-handle-w = Ângulo de incidência θi (W)
+diagram-handle-n = Direção da normal N
+diagram-handle-mu-i = Índice μi do meio do raio
+diagram-handle-mu-t = Índice μt do meio em que ele entra
 diagram-handle-source = alça da fonte
 diagram-handle-aim = alça da direção da fonte
 diagram-handle-shape = alça da forma { $number } ({ $medium })

@@ -47,8 +47,8 @@ panel-hide-numbers = Ocultar os números ({ $key })
 
 ## Abaixo do diagrama
 
-canvas-hint = Arraste W, N ou um marcador μ; clique em um deles (ou no diagrama) para usar as setas do teclado
-canvas-hint-ray = ←/→ gira 1° (Shift: 0,1°) · +/− μt · Tab: próxima alça · arraste para mover
+canvas-hint = Arraste W, N ou um marcador μ, ou use − e + abaixo; Tab ou um clique escolhe um para as setas do teclado
+canvas-hint-ray = ↑/→ +1°, ↓/← −1° (Shift: 0,1°) · +/− μt · Tab: próxima alça · arraste para mover
 canvas-hint-index = ↑/↓ ou +/− mudam o índice em 0,01 (Shift: 0,001) · Tab: próxima alça
 
 ## O painel de controles
@@ -184,3 +184,13 @@ accuracy-column-random = erro máx. aleatório
 accuracy-column-hard = erro máx. difícil
 accuracy-column-eps-kappa = difícil ε·κ
 accuracy-column-tir = divergências de reflexão total
+
+## A visão do aluno: o que um celular (ou um link com view=student) mostra, e os botões que
+## mudam W, N e os índices passo a passo
+
+# $symbol: μi ou μt
+student-index = Índice { $symbol }
+student-full = Explorador completo
+student-full-hover = O explorador inteiro, com suas ferramentas e painéis (para um monitor grande)
+student-view = Visão do aluno
+student-view-hover = A visão para um celular: a pergunta, o diagrama em toda a largura e botões para o dedo

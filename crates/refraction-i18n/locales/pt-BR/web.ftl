@@ -19,7 +19,9 @@ link-qr-save = Salvar como { $format }
 # $bytes: o comprimento do link
 link-qr-too-long = O link é longo demais para um código QR ({ $bytes } bytes): copie-o em vez disso.
 link-qr-close = Q ou Esc fecha
-link-notice-close = Fechar
+# The QR code dialog: its button that takes the web address typed
+link-qr-show = Mostrar o código QR
+link-notice-close = Fechar (Esc)
 
 ## Um link que não abre ($reason: por quê, como abaixo)
 
@@ -71,3 +73,18 @@ web-read-failed = O navegador não conseguiu ler { $name } ({ $reason }).
 web-file-too-large = { $name } tem { $size } MB: a página abre arquivos de no máximo { $limit } MB.
 web-open-in-tab = ↗ Abrir em uma nova aba
 web-open-in-tab-hover = Esta página está dentro de outra: abra o explorador em uma aba própria para apresentar em todo o monitor e para copiar
+
+# Nada se perde (issue 40): links recusados com um motivo claro, o endereço web verificado em um só lugar.
+link-part-without-name = uma parte do link não tem nome (“{ $part }”)
+link-part-twice = o link dá { $part } duas vezes
+link-web-base-refused = Este endereço web não pode ser usado: { $reason }.
+link-web-base-empty = nenhum endereço foi dado
+link-web-base-scheme = ele começa com “{ $scheme }”, não com http://, https:// ou file://
+link-web-base-unseen = ele contém { $character }, que um endereço não pode conter (nem espaços, nem caracteres de controle, nem marcas invisíveis)
+link-web-base-escape = “{ $escape }” não é um escape de porcentagem (um % é seguido de dois dígitos hexadecimais)
+link-web-base-credentials = ele contém um nome de usuário ou uma senha, que todo link e todo código QR mostrariam
+link-web-base-too-long = ele tem { $bytes } bytes: no máximo { $most } mantêm os códigos QR dos links legíveis no papel
+link-web-base-port = sua porta não é um número de 0 a 65535
+link-web-base-host = seu host falta ou não é um nome nem um endereço IP válido ({ $reason })
+storage-web-base-unusable = O endereço web guardado da última vez não é usado: { $reason }.
+storage-state-unreadable = Não foi possível ler o estado guardado da última vez ({ $reason }): o explorador começa no estado padrão.

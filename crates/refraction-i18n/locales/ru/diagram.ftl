@@ -22,12 +22,16 @@ diagram-banner-tir =
 diagram-banner-toward-origin = W направлен обратно к началу луча, поэтому a = −μ
 diagram-banner-along-ray = W — направление распространения, поэтому a = +μ
 diagram-banner-section = Раздел { $section }: { $words }
+# The banner on paper while the answer is hidden: the convention without the sign of a,
+# which a question may ask for
+diagram-banner-asked-toward-origin = Раздел 1: W направлен обратно к началу луча
+diagram-banner-asked-along-ray = Раздел 2: W — направление распространения
 diagram-banner-numbers = θi = { $i }°   θt = { $t }°   k = { $k } ≥ 0: T существует
 diagram-critical-angle = предельный угол θc = { $angle }°
 diagram-kernel-normal = −N: нормаль, которую берёт ядро
 diagram-outward-normal-bug =
-    формула статьи с неразвёрнутой N: корень не с той стороны,
-    неверный T из-за ошибки внешней нормали
+    ошибка внешней нормали:
+    T по формуле с N как есть
 diagram-index-scale = показатель μ
 diagram-incoming-ray = падающий луч
 diagram-normal-incidence = нормальное падение: W, N и T лежат на одной прямой
@@ -42,10 +46,10 @@ diagram-no-reflected-ray = { $label }: нет отражённого луча
 
 ## Маркеры (что говорит программа чтения с экрана)
 
-diagram-handle-w = маркер W
-diagram-handle-n = маркер N
-diagram-handle-mu-i = маркер μi
-diagram-handle-mu-t = маркер μt
+diagram-handle-w = Угол падения θi (W)
+diagram-handle-n = Направление нормали N
+diagram-handle-mu-i = Показатель преломления μi среды луча
+diagram-handle-mu-t = Показатель преломления μt среды, в которую входит луч
 diagram-handle-source = маркер источника
 diagram-handle-aim = маркер направления источника
 diagram-handle-shape = маркер фигуры { $number } ({ $medium })

@@ -19,7 +19,9 @@ link-qr-save = Сохранить как { $format }
 # $bytes: длина ссылки
 link-qr-too-long = Ссылка слишком длинна для QR-кода ({ $bytes } байт): скопируйте её вместо этого.
 link-qr-close = Q или Esc закрывает
-link-notice-close = Закрыть
+# The QR code dialog: its button that takes the web address typed
+link-qr-show = Показать QR-код
+link-notice-close = Закрыть (Esc)
 
 ## Ссылка, которая не открывается ($reason: почему, как ниже)
 
@@ -71,3 +73,18 @@ web-read-failed = Браузер не смог прочитать { $name } ({ $
 web-file-too-large = { $name } занимает { $size } МБ: страница открывает файлы не больше { $limit } МБ.
 web-open-in-tab = ↗ Открыть в новой вкладке
 web-open-in-tab-hover = Эта страница встроена в другую: откройте программу в отдельной вкладке для полного экрана и копирования
+
+# Ничего не теряется (issue 40): ссылки отклоняются с понятной причиной, веб-адрес проверяется в одном месте.
+link-part-without-name = у части ссылки нет имени («{ $part }»)
+link-part-twice = в ссылке { $part } указано дважды
+link-web-base-refused = Этот веб-адрес нельзя использовать: { $reason }.
+link-web-base-empty = адрес не указан
+link-web-base-scheme = он начинается с «{ $scheme }», а не с http://, https:// или file://
+link-web-base-unseen = в нём есть { $character }, чего в адресе быть не может (пробелов, управляющих символов и невидимых знаков)
+link-web-base-escape = «{ $escape }» — не процентная кодировка (после % идут две шестнадцатеричные цифры)
+link-web-base-credentials = в нём есть имя пользователя или пароль, которые показали бы все ссылки и QR-коды
+link-web-base-too-long = его длина { $bytes } байт: не больше { $most } байт, чтобы QR-коды ссылок читались на бумаге
+link-web-base-port = его порт — не число от 0 до 65535
+link-web-base-host = его хост отсутствует или не является допустимым именем или IP-адресом ({ $reason })
+storage-web-base-unusable = Веб-адрес, сохранённый в прошлый раз, не используется: { $reason }.
+storage-state-unreadable = Не удалось прочитать состояние, сохранённое в прошлый раз ({ $reason }): программа начинает с состояния по умолчанию.
