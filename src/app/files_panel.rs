@@ -1,6 +1,7 @@
 //! Nothing lost, everything shareable: save and open the state as a file (the `solve` JSON
 //! fields, written atomically), a share string that reproduces the exact state elsewhere, and
-//! the current case copied as a `solve` line, code or a unit-test vector.
+//! the current case copied as a `solve` line, code or a unit-test vector; and the link row
+//! (the web build's address, *Copy link*, *QR code*), whose QR code `super::link` shows.
 
 use std::path::{Path, PathBuf};
 
@@ -12,9 +13,9 @@ use super::file_dialog::{
 };
 use super::status::{self, Look, Status};
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
-use crate::app::link::LinkRow;
 use refraction_model::ExplorerState;
 use refraction_tools::error::RequestError;
+use refraction_tools::link;
 use refraction_tools::snippets;
 use refraction_tools::state_file::{self, LoadError};
 
@@ -273,6 +274,65 @@ impl FilesPanel {
         }
         ui.separator();
         self.share.ui(ui);
+    }
+}
+
+/// The link row of the *Save, open, share* tool: the web build's address, *Copy link*,
+/// *QR code* and the link itself, to read or select.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(super) struct LinkRow {
+    /// The web build's address, as typed (empty: none set).
+    pub base: String,
+    /// The link of what the class sees, set by the window each frame (`None` without an
+    /// address).
+    pub url: Option<String>,
+    /// Set when *QR code* is pressed, for the window to show it.
+    pub qr_asked: bool,
+    /// What the last *Copy link* said.
+    said: Option<Status>,
+}
+
+impl LinkRow {
+    /// The row: the address field, *Copy link*, *QR code*, then the link.
+    pub(super) fn ui(&mut self, ui: &mut Ui) {
+        ui.horizontal_wrapped(|ui| {
+            let name = ui.label(t!("link-web-base"));
+            ui.add(
+                TextEdit::singleline(&mut self.base)
+                    .hint_text("https://…")
+                    .desired_width(260.0),
+            )
+            .labelled_by(name.id)
+            .on_hover_text(t!("link-web-base-hover"));
+            let copy = ui.add_enabled(self.url.is_some(), egui::Button::new(t!("link-copy")));
+            if copy.on_hover_text(t!("link-copy-hover")).clicked()
+                && let Some(url) = &self.url
+            {
+                ui.ctx().copy_text(url.clone());
+                self.said = Some(Status::Done(t!("link-copied")));
+            }
+            if ui
+                .button(t!("link-qr"))
+                .on_hover_text(t!("link-qr-hover"))
+                .clicked()
+            {
+                self.qr_asked = true;
+            }
+        });
+        match &self.url {
+            Some(url) => {
+                ui.add(egui::Label::new(RichText::new(url).monospace().weak()).selectable(true));
+            }
+            None => match link::web_base(&self.base) {
+                Err(refusal) if !self.base.trim().is_empty() => {
+                    ui.label(RichText::new(refusal.message()).color(ui.visuals().warn_fg_color));
+                }
+                _ => {
+                    ui.label(RichText::new(t!("link-no-web-base")).weak());
+                }
+            },
+        }
+        status::show(ui, self.said.as_ref(), Look::Plain);
     }
 }
 

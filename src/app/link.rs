@@ -1,5 +1,5 @@
 //! The link of what the class sees, for the web build (`cargo xtask web`): *Copy link* and
-//! *QR code* in the *Save, open, share* tool ([`LinkRow`]), the QR code shown large over the
+//! *QR code* in the *Save, open, share* tool (`super::files_panel`), the QR code shown large over the
 //! diagram (Q shows or hides it), the web build's address (a setting kept between runs, or
 //! `--web-base`; in a browser the page's own address unless one is set), and opening a link
 //! ([`Explorer::open_link`]), which a browser page does with its address's fragment.
@@ -27,65 +27,6 @@ pub(super) const WEB_BASE_KEY: &str = "explorer_web_base";
 
 /// The size of the QR code's picture when saved, in pixels.
 const QR_PICTURE_SIDE: u32 = 800;
-
-/// The link row of the *Save, open, share* tool: the web build's address, *Copy link*,
-/// *QR code* and the link itself, to read or select.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub(super) struct LinkRow {
-    /// The web build's address, as typed (empty: none set).
-    pub base: String,
-    /// The link of what the class sees, set by the window each frame (`None` without an
-    /// address).
-    pub url: Option<String>,
-    /// Set when *QR code* is pressed, for the window to show it.
-    pub qr_asked: bool,
-    /// What the last *Copy link* said.
-    said: Option<Status>,
-}
-
-impl LinkRow {
-    /// The row: the address field, *Copy link*, *QR code*, then the link.
-    pub(super) fn ui(&mut self, ui: &mut Ui) {
-        ui.horizontal_wrapped(|ui| {
-            let name = ui.label(t!("link-web-base"));
-            ui.add(
-                TextEdit::singleline(&mut self.base)
-                    .hint_text("https://…")
-                    .desired_width(260.0),
-            )
-            .labelled_by(name.id)
-            .on_hover_text(t!("link-web-base-hover"));
-            let copy = ui.add_enabled(self.url.is_some(), egui::Button::new(t!("link-copy")));
-            if copy.on_hover_text(t!("link-copy-hover")).clicked()
-                && let Some(url) = &self.url
-            {
-                ui.ctx().copy_text(url.clone());
-                self.said = Some(Status::Done(t!("link-copied")));
-            }
-            if ui
-                .button(t!("link-qr"))
-                .on_hover_text(t!("link-qr-hover"))
-                .clicked()
-            {
-                self.qr_asked = true;
-            }
-        });
-        match &self.url {
-            Some(url) => {
-                ui.add(egui::Label::new(RichText::new(url).monospace().weak()).selectable(true));
-            }
-            None => match link::web_base(&self.base) {
-                Err(refusal) if !self.base.trim().is_empty() => {
-                    ui.label(RichText::new(refusal.message()).color(ui.visuals().warn_fg_color));
-                }
-                _ => {
-                    ui.label(RichText::new(t!("link-no-web-base")).weak());
-                }
-            },
-        }
-        status::show(ui, self.said.as_ref(), Look::Plain);
-    }
-}
 
 /// The window's sharing state: the QR code shown, and what a link that could not be opened
 /// (or a copy the browser refused) said.

@@ -157,7 +157,7 @@ pub struct Explorer {
     effects: EffectsMenu,
     animation_export: AnimationExport,
     /// The lesson deck and the step shown.
-    lesson: deck::Lesson,
+    lesson: deck::LessonDeck,
     /// What the last undo or redo did, in words.
     travelled: Option<String>,
     /// The language given on the command line, until one is chosen in the bar.
@@ -193,7 +193,7 @@ impl Explorer {
             panels: Panels::default(),
             effects: EffectsMenu::default(),
             animation_export: AnimationExport::default(),
-            lesson: deck::Lesson::default(),
+            lesson: deck::LessonDeck::default(),
             travelled: None,
             command_line_language: None,
             system_language: Some(refraction_i18n::locale()),

@@ -484,24 +484,26 @@ impl ScenesView {
         }
     }
 
+    /// The layout of the scene on a canvas `size` pixels across, its handles for a finger in
+    /// the student's view.
+    fn layout(&self, size: Vec2) -> SceneLayout {
+        let layout = SceneLayout::for_scene(&self.scene, &self.trace, size);
+        if self.touch {
+            layout.for_touch()
+        } else {
+            layout
+        }
+    }
+
     /// The canvas: handles dragged first (retracing), then the picture painted once; a click
     /// near a hit point returns its problem.
     fn canvas(&mut self, ui: &mut Ui, palette: &Palette) -> Option<ExplorerState> {
         let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click());
         let rect = response.rect;
         let to_screen = RectTransform::from_to(Rect::from_min_size(Pos2::ZERO, rect.size()), rect);
-        let layout = self.drag_layout.unwrap_or_else(|| {
-            let layout = SceneLayout::for_scene(
-                &self.scene,
-                &self.trace,
-                Vec2::new(rect.width(), rect.height()),
-            );
-            if self.touch {
-                layout.for_touch()
-            } else {
-                layout
-            }
-        });
+        let layout = self
+            .drag_layout
+            .unwrap_or_else(|| self.layout(Vec2::new(rect.width(), rect.height())));
         let mut clicked_at = response
             .interact_pointer_pos()
             .filter(|_| response.clicked());

@@ -12,7 +12,7 @@ use egui::{Button, Context, Panel, RichText, Role, TextStyle, Ui, Vec2, WidgetIn
 use refraction_diagram::picture::TOUCH_TARGET;
 use refraction_i18n::t;
 
-use super::deck::{Command, Lesson};
+use super::deck::{Command, LessonDeck};
 use super::{Explorer, View, canvas, steps};
 
 /// The widest screen the student's view opens on by itself, in points (CSS pixels in a
@@ -108,7 +108,7 @@ impl Explorer {
         }
         if self.lesson.current().is_some() {
             // The deck's keys still step and reveal (a laptop's keyboard); no notes here.
-            let mut asked = Lesson::keys(ui);
+            let mut asked = LessonDeck::keys(ui);
             asked.retain(|c| *c != Command::Notes);
             asked.extend(self.student_step(ui, landscape));
             for command in asked {

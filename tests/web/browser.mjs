@@ -260,3 +260,25 @@ export async function drag(page, from, dx, dy, steps = 20) {
 export async function status(page) {
   return page.evaluate(() => document.getElementById('status')?.textContent ?? '');
 }
+
+/**
+ * Opens `url` in `page`; resolves to when the first animation frame after the explorer named
+ * its canvas (which it does at the end of its first frame) came, in ms since the page started.
+ */
+export async function firstFrameAt(page, url) {
+  await page.addInitScript(() => {
+    window.firstFrame = new Promise((resolve) => {
+      const watch = () => {
+        const canvas = document.getElementById('explorer');
+        if (canvas && canvas.getAttribute('aria-label')) {
+          requestAnimationFrame(() => resolve(performance.now()));
+        } else {
+          requestAnimationFrame(watch);
+        }
+      };
+      requestAnimationFrame(watch);
+    });
+  });
+  await page.goto(url);
+  return page.evaluate(() => window.firstFrame);
+}

@@ -10,7 +10,8 @@
 //   included: the machine has no GPU).
 // Prints one JSON object with the medians over the runs.
 
-import { close, frames, launch, newPage, serve, wHandle } from './browser.mjs';
+import { close, firstFrameAt, frames, launch, newPage, serve, wHandle,
+} from './browser.mjs';
 
 const RUNS = 5;
 const MOVES = 60;
@@ -33,21 +34,7 @@ async function run(url) {
   const page = await newPage(context);
   const cdp = await context.newCDPSession(page);
   await cdp.send('Emulation.setCPUThrottlingRate', { rate: THROTTLING });
-  await page.addInitScript(() => {
-    window.firstFrame = new Promise((resolve) => {
-      const watch = () => {
-        const canvas = document.getElementById('explorer');
-        if (canvas && canvas.getAttribute('aria-label')) {
-          requestAnimationFrame(() => resolve(performance.now()));
-        } else {
-          requestAnimationFrame(watch);
-        }
-      };
-      requestAnimationFrame(watch);
-    });
-  });
-  await page.goto(url);
-  const first = await page.evaluate(() => window.firstFrame);
+  const first = await firstFrameAt(page, url);
   await frames(page, 5);
   const handle = await wHandle(page);
   await cdp.send('Performance.enable');

@@ -12,7 +12,8 @@ import path from 'node:path';
 import zlib from 'node:zlib';
 import { pathToFileURL } from 'node:url';
 
-import { WEB, close, frames, launch, newPage, serve, wHandle } from './browser.mjs';
+import { WEB, close, firstFrameAt, frames, launch, newPage, serve, wHandle,
+} from './browser.mjs';
 
 const RUNS = 5;
 const DRAG_FRAMES = 60;
@@ -29,21 +30,7 @@ function median(values) {
  */
 async function firstFrame(context, url) {
   const page = await newPage(context);
-  await page.addInitScript(() => {
-    window.firstFrame = new Promise((resolve) => {
-      const watch = () => {
-        const canvas = document.getElementById('explorer');
-        if (canvas && canvas.getAttribute('aria-label')) {
-          requestAnimationFrame(() => resolve(performance.now()));
-        } else {
-          requestAnimationFrame(watch);
-        }
-      };
-      requestAnimationFrame(watch);
-    });
-  });
-  await page.goto(url);
-  const ms = await page.evaluate(() => window.firstFrame);
+  const ms = await firstFrameAt(page, url);
   if (page.errors.length) throw new Error(page.errors.join('\n'));
   await page.close();
   return ms;

@@ -8,7 +8,9 @@ use crate::diagnosis::{Code, Summary};
 /// One call's verdict, as [`check_records`] gives it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CallResult {
-    /// Whether the call is right (a reflection read as sampled is).
+    /// Whether the call is right as the diagnosis of all the calls counts it: a reflection
+    /// read as sampled is, unless the calls show that the code never transmits there (what
+    /// `check` answers that line, `"ok": true`, was written before the log was whole).
     pub ok: bool,
     /// The call's kind as `check` counts it on stderr: `ok`, `reflected (sampled)`, a code
     /// (`eta_inverted`), codes the call alone cannot tell apart joined by `|`, `unexplained`;
@@ -70,10 +72,26 @@ pub struct Checked {
 #[must_use]
 pub fn check_records(options: &Options, records: impl IntoIterator<Item = Record>) -> Checked {
     let mut session = Session::new(*options, crate::Format::JsonLines, false, false);
-    let calls = records
+    // The sampled reflections wait for the whole log: kept with their evidence.
+    let mut sampled = Vec::new();
+    let mut calls: Vec<_> = records
         .into_iter()
-        .map(|record| session.judge(&record).map(|j| CallResult::from(&j)))
+        .enumerate()
+        .map(|(i, record)| {
+            session.judge(&record).map(|j| {
+                let call = CallResult::from(&j);
+                if call.kind == crate::SAMPLED {
+                    sampled.push((i, j.evidence()));
+                }
+                call
+            })
+        })
         .collect();
+    for (i, evidence) in sampled {
+        if let Some(Ok(call)) = calls.get_mut(i) {
+            call.ok = !session.log().counts_wrong(&evidence);
+        }
+    }
     Checked {
         calls,
         tally: session.tally().clone(),
@@ -136,6 +154,41 @@ mod tests {
         assert_ne!(
             checked.summary.diagnosis[0].code, "none",
             "the second call is wrong"
+        );
+    }
+
+    /// Mitsuba calls entering glass that logged nothing (`wo` null) at normal incidence, where
+    /// F = 4 %, and nowhere near transmit: each right on its own as a sampled reflection.
+    fn never_transmitting(count: usize) -> Vec<Record> {
+        (0..count)
+            .map(|i| {
+                let x = 0.001 * i as f64;
+                let wi = [x, 0.0, (1.0 - x * x).sqrt()];
+                let values = [
+                    ("wi", Value::Vector(wi)),
+                    ("eta", Value::Number(1.5)),
+                    ("wo", Value::Null),
+                ];
+                Record::from_values(Api::Mitsuba, values).unwrap()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn reflections_where_the_code_never_transmits_are_not_ok_once_the_log_is_whole() {
+        let mut options = Options::new(Dialect::Api(Api::Mitsuba));
+        (options.inside, options.outside) = (Some(1.5), Some(1.0));
+        let few = check_records(&options, never_transmitting(2));
+        assert!(
+            few.calls.iter().all(|c| c.as_ref().is_ok_and(|c| c.ok)),
+            "two reflections at 4 % each are likely enough as samples"
+        );
+        let many = check_records(&options, never_transmitting(20));
+        assert_eq!(many.tally.summary(), "20 reflected (sampled)");
+        assert_eq!(many.summary.ok, 0, "{:?}", many.summary);
+        assert!(
+            many.calls.iter().all(|c| c.as_ref().is_ok_and(|c| !c.ok)),
+            "a call is ok as the diagnosis counts it"
         );
     }
 

@@ -8,10 +8,11 @@ use crate::Locale;
 /// exporting (`files`), and a whole log judged in the window: opening it, its diagnosis, its
 /// failure map and its failing lines saved as tests (`logs`), and lesson decks: the tool that
 /// builds one, stepping through it, its notes and handout, the built-in decks (`decks`), and the
-/// explorer in a browser: links to it, the QR code, what a page does otherwise (`web`), and what
+/// explorer in a browser: links to it, the QR code, what a page does otherwise (`web`), what
 /// a screen reader says: the controls' names and values, the diagram in words, the step buttons
-/// and the page's own controls (`access`).
-pub const FILES: [&str; 8] = [
+/// and the page's own controls (`access`), and the Python package `refraction_check`: its
+/// arguments refused, its table of what was found (`python`).
+pub const FILES: [&str; 9] = [
     "explorer.ftl",
     "diagram.ftl",
     "check.ftl",
@@ -20,6 +21,7 @@ pub const FILES: [&str; 8] = [
     "decks.ftl",
     "web.ftl",
     "access.ftl",
+    "python.ftl",
 ];
 
 /// One language's files, in the order of [`FILES`].
@@ -34,19 +36,20 @@ macro_rules! folder {
             include_str!(concat!("../locales/", $code, "/decks.ftl")),
             include_str!(concat!("../locales/", $code, "/web.ftl")),
             include_str!(concat!("../locales/", $code, "/access.ftl")),
+            include_str!(concat!("../locales/", $code, "/python.ftl")),
         ]
     };
 }
 
-const EN: [&str; 8] = folder!("en");
-const DE: [&str; 8] = folder!("de");
-const ES: [&str; 8] = folder!("es");
-const FR: [&str; 8] = folder!("fr");
-const PT_BR: [&str; 8] = folder!("pt-BR");
-const RU: [&str; 8] = folder!("ru");
+const EN: [&str; FILES.len()] = folder!("en");
+const DE: [&str; FILES.len()] = folder!("de");
+const ES: [&str; FILES.len()] = folder!("es");
+const FR: [&str; FILES.len()] = folder!("fr");
+const PT_BR: [&str; FILES.len()] = folder!("pt-BR");
+const RU: [&str; FILES.len()] = folder!("ru");
 
 /// The text of `locale`'s files, in the order of [`FILES`].
-pub(crate) fn sources(locale: Locale) -> &'static [&'static str; 8] {
+pub(crate) fn sources(locale: Locale) -> &'static [&'static str; FILES.len()] {
     match locale {
         Locale::En => &EN,
         Locale::De => &DE,

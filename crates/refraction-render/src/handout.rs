@@ -438,7 +438,7 @@ fn fonts() -> Arc<usvg::fontdb::Database> {
 }
 
 /// `pages` as one PDF document titled `title` (in its metadata: one line of at most
-/// [`MOST_TITLE_CHARS`] characters, without control characters).
+/// 200 characters, without control characters).
 ///
 /// # Errors
 /// A page's link is too long for a QR code that a phone reads on paper (its code would be

@@ -349,7 +349,7 @@ pub fn url(base: &str, link: &Link) -> String {
 /// handles a finger can take, and nothing of the teacher's.
 pub const STUDENT_VIEW: &str = "view=student";
 
-/// [`url`] for the class's own devices (what a QR code opens): the link that also asks for
+/// [`url()`] for the class's own devices (what a QR code opens): the link that also asks for
 /// the student's view ([`STUDENT_VIEW`]).
 #[must_use]
 pub fn student_url(base: &str, link: &Link) -> String {

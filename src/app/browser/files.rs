@@ -1,163 +1,30 @@
-//! Files in a browser page: the open and save dialog becomes the browser's file picker and a
-//! download, and files dropped on the page are read before the window sees them. What is read
-//! and written goes through `refraction_files` as on a desktop, which keeps it in memory
-//! (`refraction_files::browser`): this module only moves bytes between it and the browser.
+//! Files in a browser page beside the open and save dialog (the browser's file picker,
+//! `crate::app::file_dialog`): what the window writes is downloaded, and files dropped on the
+//! page are read before the window sees them. What is read and written goes through
+//! `refraction_files` as on a desktop, which keeps it in memory (`refraction_files::browser`):
+//! this module only moves bytes between it and the browser.
 //!
-//! A file the browser cannot read, or one larger than any reader of the window takes
-//! ([`MAX_FILE_BYTES`]), is said (in the dialog, or in the window's strip for a dropped file)
-//! and not read; a download's address is released once the browser has taken it.
+//! A dropped file the browser cannot read, or one larger than any reader of the window takes,
+//! is said in the window's strip and not read; a download's address is released once the
+//! browser has taken it.
 
 use core::cell::RefCell;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-use egui::{Id, Modal, RichText, TextEdit, Ui};
 use js_sys::{Array, Uint8Array};
-use refraction_i18n::t;
 use wasm_bindgen::JsCast as _;
 use wasm_bindgen::prelude::{Closure, JsValue};
-use wasm_bindgen_futures::{JsFuture, spawn_local};
+use wasm_bindgen_futures::spawn_local;
 
-use crate::app::file_dialog::{Choice, Purpose};
-
-/// The largest file the page reads: the largest any reader of the window takes (a log, 16
-/// MiB); a bigger one would be refused after it was read whole into the page's memory.
-const MAX_FILE_BYTES: u64 = 16 * 1024 * 1024;
+use crate::app::file_dialog::picker::{read_failed, too_large};
 
 /// How long a download's address is kept: the browser has taken the bytes by then (revoked at
 /// once, some browsers lose the download).
 const DOWNLOAD_ADDRESS_MS: i32 = 60_000;
 
 thread_local! {
-    /// The file the picker gave, once read, until the dialog takes it.
-    static PICKED: RefCell<Option<PathBuf>> = const { RefCell::new(None) };
-    /// Why the file last chosen in the picker was not read, in words, until a new choice.
-    static PICK_PROBLEM: RefCell<Option<String>> = const { RefCell::new(None) };
     /// Files dropped on the page and read, to hand back to the window on the next frame.
     static DROPPED: RefCell<Vec<egui::DroppedFileHandle>> = const { RefCell::new(Vec::new()) };
-}
-
-/// Why the file `name` of `size_bytes` is not read, if it is too large.
-fn too_large(name: &str, size_bytes: f64) -> Option<String> {
-    let megabytes = |bytes: f64| format!("{:.1}", bytes / 1_048_576.0);
-    (size_bytes > MAX_FILE_BYTES as f64).then(|| {
-        t!(
-            "web-file-too-large",
-            name = name,
-            size = megabytes(size_bytes),
-            limit = (MAX_FILE_BYTES >> 20).to_string()
-        )
-    })
-}
-
-/// The browser's words for a failed read.
-fn read_failed(name: &str, reason: &str) -> String {
-    t!("web-read-failed", name = name, reason = reason)
-}
-
-/// The bytes of a browser `File`, or why they cannot be had, in words.
-async fn bytes_of(file: &web_sys::File) -> Result<Vec<u8>, String> {
-    if let Some(refusal) = too_large(&file.name(), file.size()) {
-        return Err(refusal);
-    }
-    let buffer = JsFuture::from(file.array_buffer()).await.map_err(|e| {
-        let reason = e.as_string().unwrap_or_else(|| format!("{e:?}"));
-        read_failed(&file.name(), &reason)
-    })?;
-    Ok(Uint8Array::new(&buffer).to_vec())
-}
-
-/// Opens the browser's file picker for files ending in one of `extensions`; the file chosen
-/// is read, given to `refraction_files` under its name and left for [`dialog`] to take.
-fn pick(extensions: &[&str], ctx: &egui::Context) -> Result<(), JsValue> {
-    let document = web_sys::window()
-        .and_then(|w| w.document())
-        // untranslated: for the browser's console, where a developer reads it.
-        .ok_or_else(|| JsValue::from_str("no document"))?;
-    let input: web_sys::HtmlInputElement = document.create_element("input")?.dyn_into()?;
-    input.set_type("file");
-    let accept: Vec<String> = extensions.iter().map(|e| format!(".{e}")).collect();
-    input.set_accept(&accept.join(","));
-    let (ctx, chosen) = (ctx.clone(), input.clone());
-    let changed = Closure::once_into_js(move || {
-        let Some(file) = chosen.files().and_then(|files| files.get(0)) else {
-            return;
-        };
-        spawn_local(async move {
-            match bytes_of(&file).await {
-                Ok(bytes) => {
-                    let path = PathBuf::from(file.name());
-                    refraction_files::browser::provide(&path, bytes);
-                    PICKED.with_borrow_mut(|picked| *picked = Some(path));
-                }
-                Err(problem) => PICK_PROBLEM.with_borrow_mut(|said| *said = Some(problem)),
-            }
-            ctx.request_repaint();
-        });
-    });
-    input.set_onchange(Some(changed.unchecked_ref()));
-    PICK_PROBLEM.with_borrow_mut(Option::take);
-    input.click();
-    Ok(())
-}
-
-/// The open or save dialog in a browser: *Choose a file…* opens the browser's picker (the
-/// file chosen is the dialog's choice); a save asks for the name only, and the file is
-/// downloaded.
-pub(in crate::app) fn dialog(
-    purpose: Purpose,
-    extensions: &[&str],
-    name: &mut String,
-    problem: Option<&String>,
-    ui: &Ui,
-) -> Choice {
-    if let Some(path) = PICKED.with_borrow_mut(Option::take) {
-        return Choice::Chosen(path);
-    }
-    let modal = Modal::new(Id::unique(("browser-file-dialog", purpose))).show(ui.ctx(), |ui| {
-        let (mut chosen, mut cancelled) = (false, false);
-        match purpose {
-            Purpose::Open => {
-                ui.heading(t!("files-dialog-open-title"));
-                ui.label(t!("web-open-through-picker"));
-                ui.horizontal(|ui| {
-                    if ui.button(t!("web-choose-file")).clicked()
-                        && let Err(e) = pick(extensions, ui.ctx())
-                    {
-                        web_sys::console::error_1(&e);
-                    }
-                    cancelled = ui.button(t!("files-cancel")).clicked();
-                });
-            }
-            Purpose::Save => {
-                ui.heading(t!("files-dialog-save-title"));
-                ui.horizontal(|ui| {
-                    let label = ui.label(t!("files-file-name"));
-                    ui.add(TextEdit::singleline(name).desired_width(300.0))
-                        .labelled_by(label.id);
-                });
-                ui.label(RichText::new(t!("web-saved-as-download")).weak());
-                ui.horizontal(|ui| {
-                    chosen = ui.button(t!("web-download")).clicked();
-                    cancelled = ui.button(t!("files-cancel")).clicked();
-                });
-            }
-        }
-        let picked = PICK_PROBLEM.with_borrow(Clone::clone);
-        for problem in problem.into_iter().chain(picked.as_ref()) {
-            ui.label(RichText::new(format!("⚠ {problem}")).strong());
-        }
-        (chosen, cancelled)
-    });
-    let (chosen, cancelled) = modal.inner;
-    let name = Path::new(name.trim());
-    if chosen && name.file_name().is_some() {
-        return Choice::Chosen(name.to_path_buf());
-    }
-    if cancelled || modal.should_close() {
-        PICK_PROBLEM.with_borrow_mut(Option::take);
-        return Choice::Cancelled;
-    }
-    Choice::Pending
 }
 
 /// The type a download of `path` is offered as.

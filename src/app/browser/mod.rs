@@ -8,8 +8,8 @@
 //!   another is set;
 //! - the browser's language is the system's, spoken until one is chosen;
 //! - presentation is the browser's full screen;
-//! - the file dialog is the browser's file picker and a download ([`files`]), and files dropped
-//!   on the page are read before the window sees them;
+//! - the file dialog is the browser's file picker (`super::file_dialog`) and a download
+//!   ([`files`]), and files dropped on the page are read before the window sees them;
 //! - a copy the browser refuses is said in the window;
 //! - the canvas is named for screen readers with what the diagram says, and the page carries its
 //!   own controls, the window in words and the page's language for them ([`access`]);
@@ -26,8 +26,6 @@ use core::time::Duration;
 use refraction_i18n::t;
 use refraction_tools::link;
 use wasm_bindgen::JsCast as _;
-
-pub(super) use files::dialog;
 
 use super::{Explorer, Launch};
 

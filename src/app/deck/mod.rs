@@ -1,4 +1,4 @@
-//! A lesson deck in the window: the deck being built or shown ([`Lesson`]), the step shown and
+//! A lesson deck in the window: the deck being built or shown ([`LessonDeck`]), the step shown and
 //! whether its answer is revealed, the keys a presenter's clicker sends, the strip above the
 //! diagram with the step's number, title and question, the notes window, and the *Lesson deck*
 //! tool that builds the deck ([`panel`]).
@@ -56,7 +56,7 @@ pub enum Command {
 
 /// The deck shown in the window and where it is.
 #[derive(Clone, Debug, Default)]
-pub struct Lesson {
+pub struct LessonDeck {
     /// The deck, as opened and edited (never by a drag).
     pub deck: Option<Deck>,
     /// The step shown, if any.
@@ -69,7 +69,7 @@ pub struct Lesson {
     pub panel: panel::DeckPanel,
 }
 
-impl Lesson {
+impl LessonDeck {
     /// The step shown, with its position.
     #[must_use]
     pub fn current(&self) -> Option<(usize, &Step)> {
@@ -239,7 +239,7 @@ impl Explorer {
 
     /// The lesson deck shown, where it is, and its tool.
     #[must_use]
-    pub fn lesson(&self) -> &Lesson {
+    pub fn lesson(&self) -> &LessonDeck {
         &self.lesson
     }
 
@@ -356,7 +356,7 @@ impl Explorer {
         if self.lesson.current().is_none() {
             return;
         }
-        for command in Lesson::keys(ui) {
+        for command in LessonDeck::keys(ui) {
             self.deck_command(command);
         }
         let mut asked = self.deck_strip(ui);
@@ -492,7 +492,7 @@ impl Explorer {
             return;
         }
         let presenting = self.presentation.on;
-        let Lesson {
+        let LessonDeck {
             deck,
             current,
             panel,

@@ -6,7 +6,7 @@
 use egui::{Context, RichText, ScrollArea, Ui, ViewportBuilder, ViewportId};
 use refraction_i18n::t;
 
-use super::{Command, Lesson};
+use super::{Command, LessonDeck};
 use crate::app::widgets::icon_button;
 
 /// What the notes window shows for one step.
@@ -125,7 +125,7 @@ pub(super) fn show(ctx: &Context, notes: &Notes, hidden: bool) -> (Vec<Command>,
     let id = ViewportId::from_hash_of("lesson-deck-notes");
     ctx.show_viewport_immediate(id, builder, |ui, _class| {
         let closed = ui.input(|i| i.viewport().close_requested());
-        let mut asked = Lesson::keys(ui);
+        let mut asked = LessonDeck::keys(ui);
         egui::CentralPanel::default().show(ui, |ui| {
             asked.extend(contents(ui, notes, hidden));
         });

@@ -690,6 +690,12 @@ impl Session {
         &self.books.tally
     }
 
+    /// The counts the diagnosis of the lines so far is made from.
+    #[must_use]
+    pub(crate) fn log(&self) -> &LogTally {
+        &self.books.log
+    }
+
     /// The diagnosis of the lines so far, taken as one log.
     #[must_use]
     pub fn summary(&self) -> Summary {

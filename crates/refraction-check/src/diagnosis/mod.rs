@@ -416,12 +416,23 @@ impl LogTally {
     /// sampling.
     fn failing(&self, kind: &Kind) -> bool {
         !kind.ok
-            || kind.sample.is_some_and(|band| {
-                !self
-                    .bands
-                    .get(&(kind.side, band))
-                    .is_some_and(Band::sampling)
-            })
+            || kind
+                .sample
+                .is_some_and(|band| !self.sampling(kind.side, band))
+    }
+
+    /// Whether the reflections logged on `side` in `band` are sampled (see [`Band::sampling`]).
+    fn sampling(&self, side: Option<Side>, band: u8) -> bool {
+        self.bands.get(&(side, band)).is_some_and(Band::sampling)
+    }
+
+    /// Whether the diagnosis of the whole log counts a judged line with `evidence` wrong:
+    /// judged wrong on its own, or a reflection logged where the code never transmits (the
+    /// line's own verdict waits for its band's). For a caller that reports each call once
+    /// the log is whole (`check_records`).
+    #[must_use]
+    pub(crate) fn counts_wrong(&self, evidence: &Evidence) -> bool {
+        !evidence.ok || (evidence.sample.is_some() && !self.sampling(evidence.side, evidence.band))
     }
 
     /// The ranked diagnosis for a log of `api`'s calls (`None`: any renderer's own), whose

@@ -11,7 +11,7 @@
 //! like any other part of the window.
 //!
 //! In a browser there is no file system to list: the dialog is the browser's file picker and a
-//! download (`super::browser::dialog`), and the listing goes unused.
+//! download ([`picker`]), and the listing goes unused.
 #![cfg_attr(
     target_arch = "wasm32",
     // untranslated: a lint expectation's reason, for developers.
@@ -24,6 +24,9 @@ use egui::{Id, Modal, RichText, ScrollArea, TextEdit, Ui};
 use refraction_i18n::t;
 
 use super::status::Status;
+
+#[cfg(target_arch = "wasm32")]
+pub(super) mod picker;
 
 /// What a file holds, as far as replacing it is concerned.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -491,7 +494,7 @@ impl FileDialog {
     /// file picker (open) or a download (save).
     pub(super) fn show(&mut self, ui: &Ui) -> Choice {
         #[cfg(target_arch = "wasm32")]
-        return super::browser::dialog(
+        return picker::dialog(
             self.purpose,
             self.extensions,
             &mut self.name,
