@@ -367,7 +367,7 @@ check-suggest-json-lines = das Log besteht aus JSON Lines, deren Schlüssel die 
 
 # check: calls whose printed digits cannot tell them right or wrong (issue 43, item 1)
 check-undecided = An den gedruckten Ziffern nicht zu entscheiden: so gedruckt sieht der Aufruf aus wie { $shown }, aber Zahlen innerhalb ihrer Rundung machen ihn zu einem richtigen Aufruf (ein Vorzeichen, an dem das Urteil hängt, von N·I, von k oder einer Lösung, liegt näher an null, als die Ziffern zeigen). Drucke mehr Ziffern, um ihn zu beurteilen.
-check-diagnosis-too-few-digits = An den gedruckten Ziffern nicht als richtig oder falsch zu erkennen, { $place }: jede ist so gedruckt falsch, aber richtig für Zahlen innerhalb ihrer Rundung, weil ein Vorzeichen, an dem das Urteil hängt (von N·I, von k = 1 − η²·(1 − (N·I)²) oder einer Lösung), näher an null liegt, als die Genauigkeit des Logs zeigt. Die Genauigkeit des Logs ist zu gering: { $fix }.
+check-diagnosis-too-few-digits = An den gedruckten Ziffern nicht als richtig oder falsch zu erkennen, { $place }: jede ist so gedruckt falsch, aber richtig für Zahlen innerhalb ihrer Rundung; die Ziffern des Logs reichen nicht, um es zu entscheiden (ein Vorzeichen, an dem das Urteil hängt, von N·I, von k = 1 − η²·(1 − (N·I)²) oder einer Lösung, kann näher an null liegen, als sie zeigen). Die Genauigkeit des Logs ist zu gering: { $fix }.
 check-too-few-digits-fix = drucke jede Zahl mit mindestens 6 signifikanten Ziffern (printf in C oder einem Shader: %.6g; C#: ToString("G9"), Unitys Vector3: ToString("F6"); C++-Streams: std::setprecision(9); Rust: {"{"}:?{"}"}; Python: repr)
 
 # check --suggest-pattern and a log none of whose lines is judged (issue 43, item 6)

@@ -367,7 +367,7 @@ check-suggest-json-lines = the log is JSON Lines, whose keys name the fields: it
 
 # check: calls whose printed digits cannot tell them right or wrong (issue 43, item 1)
 check-undecided = Cannot tell from the printed digits: as printed the call looks like { $shown }, but numbers within their rounding make it a right call (a sign the verdict rests on, of N·I, of k or of a root, is closer to zero than the digits show). Print more digits to judge it.
-check-diagnosis-too-few-digits = Cannot be told right or wrong from the printed digits, { $place }: each is wrong as printed but right for numbers within their rounding, because a sign the verdict rests on (of N·I, of k = 1 − η²·(1 − (N·I)²), or of a root) is closer to zero than the log's precision shows. The log's precision is too low: { $fix }.
+check-diagnosis-too-few-digits = Cannot be told right or wrong from the printed digits, { $place }: each is wrong as printed but right for numbers within their rounding; the log's digits are too few to tell (a sign the verdict rests on, of N·I, of k = 1 − η²·(1 − (N·I)²) or of a root, may be closer to zero than they show). The log's precision is too low: { $fix }.
 check-too-few-digits-fix = print every number with at least 6 significant digits (printf in C or a shader: %.6g; C#: ToString("G9"), Unity's Vector3: ToString("F6"); C++ streams: std::setprecision(9); Rust: {"{"}:?{"}"}; Python: repr)
 
 # check --suggest-pattern and a log none of whose lines is judged (issue 43, item 6)

@@ -367,7 +367,7 @@ check-suggest-json-lines = el registro es JSON Lines, cuyas claves nombran los c
 
 # check: calls whose printed digits cannot tell them right or wrong (issue 43, item 1)
 check-undecided = No se puede saber con las cifras impresas: tal como se imprimió, la llamada parece { $shown }, pero números dentro de su redondeo la hacen correcta (un signo del que depende el veredicto, de N·I, de k o de una raíz, está más cerca de cero de lo que muestran las cifras). Imprime más cifras para juzgarla.
-check-diagnosis-too-few-digits = No se puede saber si son correctas o erróneas con las cifras impresas, { $place }: cada una es errónea tal como se imprimió pero correcta para números dentro de su redondeo, porque un signo del que depende el veredicto (de N·I, de k = 1 − η²·(1 − (N·I)²) o de una raíz) está más cerca de cero de lo que muestra la precisión del registro. La precisión del registro es demasiado baja: { $fix }.
+check-diagnosis-too-few-digits = No se puede saber si son correctas o erróneas con las cifras impresas, { $place }: cada una es errónea tal como se imprimió pero correcta para números dentro de su redondeo; las cifras del registro son muy pocas para saberlo (un signo del que depende el veredicto, de N·I, de k = 1 − η²·(1 − (N·I)²) o de una raíz, puede estar más cerca de cero de lo que muestran). La precisión del registro es demasiado baja: { $fix }.
 check-too-few-digits-fix = imprime cada número con al menos 6 cifras significativas (printf en C o en un shader: %.6g; C#: ToString("G9"), el Vector3 de Unity: ToString("F6"); flujos de C++: std::setprecision(9); Rust: {"{"}:?{"}"}; Python: repr)
 
 # check --suggest-pattern and a log none of whose lines is judged (issue 43, item 6)

@@ -367,7 +367,7 @@ check-suggest-json-lines = o log é JSON Lines, cujas chaves nomeiam os campos: 
 
 # check: calls whose printed digits cannot tell them right or wrong (issue 43, item 1)
 check-undecided = Não dá para dizer pelos dígitos impressos: como foi impressa, a chamada parece { $shown }, mas números dentro do seu arredondamento a tornam uma chamada certa (um sinal de que o veredito depende, de N·I, de k ou de uma raiz, está mais perto de zero do que os dígitos mostram). Imprima mais dígitos para julgá-la.
-check-diagnosis-too-few-digits = Não dá para dizer se estão certas ou erradas pelos dígitos impressos, { $place }: cada uma está errada como foi impressa, mas certa para números dentro do seu arredondamento, porque um sinal de que o veredito depende (de N·I, de k = 1 − η²·(1 − (N·I)²) ou de uma raiz) está mais perto de zero do que a precisão do log mostra. A precisão do log é baixa demais: { $fix }.
+check-diagnosis-too-few-digits = Não dá para dizer se estão certas ou erradas pelos dígitos impressos, { $place }: cada uma está errada como foi impressa, mas certa para números dentro do seu arredondamento; os dígitos do log são poucos demais para dizer (um sinal de que o veredito depende, de N·I, de k = 1 − η²·(1 − (N·I)²) ou de uma raiz, pode estar mais perto de zero do que eles mostram). A precisão do log é baixa demais: { $fix }.
 check-too-few-digits-fix = imprima cada número com pelo menos 6 dígitos significativos (printf em C ou num shader: %.6g; C#: ToString("G9"), o Vector3 do Unity: ToString("F6"); streams de C++: std::setprecision(9); Rust: {"{"}:?{"}"}; Python: repr)
 
 # check --suggest-pattern and a log none of whose lines is judged (issue 43, item 6)
