@@ -282,3 +282,24 @@ export async function firstFrameAt(page, url) {
   await page.goto(url);
   return page.evaluate(() => window.firstFrame);
 }
+
+/**
+ * Starts keeping the window's own time for each frame (its `explorer-frame` performance
+ * measures, see app::browser::page::report_frame) in `window.frameTimes`, in ms.
+ */
+export async function recordFrameTimes(page) {
+  await page.evaluate(() => {
+    window.frameTimes = [];
+    new PerformanceObserver((list) => {
+      for (const entry of list.getEntries()) {
+        if (entry.name === 'explorer-frame') window.frameTimes.push(entry.duration);
+      }
+    }).observe({ type: 'measure' });
+  });
+}
+
+/** How long the page's main thread has been busy so far (Chromium's TaskDuration), in ms. */
+export async function mainThreadMs(cdp) {
+  const { metrics } = await cdp.send('Performance.getMetrics');
+  return metrics.find((m) => m.name === 'TaskDuration').value * 1000;
+}

@@ -10,7 +10,8 @@
 //   included: the machine has no GPU).
 // Prints one JSON object with the medians over the runs.
 
-import { close, firstFrameAt, frames, launch, newPage, serve, wHandle,
+import {
+  close, firstFrameAt, frames, launch, mainThreadMs, newPage, recordFrameTimes, serve, wHandle,
 } from './browser.mjs';
 
 const RUNS = 5;
@@ -38,24 +39,14 @@ async function run(url) {
   await frames(page, 5);
   const handle = await wHandle(page);
   await cdp.send('Performance.enable');
-  const busy = async () => {
-    const { metrics } = await cdp.send('Performance.getMetrics');
-    return metrics.find((m) => m.name === 'TaskDuration').value * 1000;
-  };
+  const busy = () => mainThreadMs(cdp);
   const point = (i) => {
     const angle = (i / MOVES) * Math.PI;
     return { x: handle.x - 70 * Math.sin(angle), y: handle.y + 40 * Math.sin(angle / 2), id: 0 };
   };
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [point(0)] });
   await frames(page, 2);
-  await page.evaluate(() => {
-    window.frameTimes = [];
-    new PerformanceObserver((list) => {
-      for (const entry of list.getEntries()) {
-        if (entry.name === 'explorer-frame') window.frameTimes.push(entry.duration);
-      }
-    }).observe({ type: 'measure' });
-  });
+  await recordFrameTimes(page);
   const start = await busy();
   for (let i = 1; i <= MOVES; i++) {
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [point(i)] });

@@ -12,7 +12,8 @@ import path from 'node:path';
 import zlib from 'node:zlib';
 import { pathToFileURL } from 'node:url';
 
-import { WEB, close, firstFrameAt, frames, launch, newPage, serve, wHandle,
+import {
+  WEB, close, firstFrameAt, frames, launch, mainThreadMs, newPage, recordFrameTimes, serve, wHandle,
 } from './browser.mjs';
 
 const RUNS = 5;
@@ -51,22 +52,11 @@ async function dragFrame(context, url) {
   const handle = await wHandle(page);
   const cdp = await context.newCDPSession(page);
   await cdp.send('Performance.enable');
-  const busy = async () => {
-    const { metrics } = await cdp.send('Performance.getMetrics');
-    return metrics.find((m) => m.name === 'TaskDuration').value * 1000;
-  };
+  const busy = () => mainThreadMs(cdp);
   await page.mouse.move(handle.x, handle.y);
   await page.mouse.down();
   await frames(page, 2);
-  // The window's own measure of each frame (see app::browser::page::report_frame).
-  await page.evaluate(() => {
-    window.frameTimes = [];
-    new PerformanceObserver((list) => {
-      for (const entry of list.getEntries()) {
-        if (entry.name === 'explorer-frame') window.frameTimes.push(entry.duration);
-      }
-    }).observe({ type: 'measure' });
-  });
+  await recordFrameTimes(page);
   const start = await busy();
   for (let i = 1; i <= DRAG_FRAMES; i++) {
     const angle = (i / DRAG_FRAMES) * Math.PI;
