@@ -21,7 +21,8 @@ pub(super) const MAX_INCIDENCE: f64 = 89.9;
 pub(super) enum Reach {
     /// For a mouse: at least 24 × 24 points (WCAG 2.5.8).
     Pointer,
-    /// For a finger: at least 44 × 44 points, CSS pixels in a browser (WCAG 2.5.5).
+    /// For a finger: at least 44 × 44 points, CSS pixels in a browser (WCAG 2.5.5): the
+    /// diagram's [`TOUCH_TARGET`](refraction_diagram::picture::TOUCH_TARGET).
     Finger,
 }
 
@@ -41,7 +42,7 @@ impl Reach {
     pub(super) fn side(self) -> f32 {
         match self {
             Self::Pointer => 24.0,
-            Self::Finger => 44.0,
+            Self::Finger => refraction_diagram::picture::TOUCH_TARGET,
         }
     }
 }
