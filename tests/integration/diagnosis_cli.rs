@@ -16,7 +16,11 @@ fn check(log: &Log, name: &str) -> Checked {
         .flat_map(|l| [l.text.as_str(), "\n"])
         .collect();
     let (inside, outside) = (log.inside.to_string(), log.outside.to_string());
-    let mut args: Vec<&str> = log.api.map_or_else(Vec::new, |api| vec!["--api", api]);
+    // smallpt's log is read without an API: its code is named for the fix's words (without
+    // it, the fix says which part of T is wrong in no renderer's variables).
+    let mut args: Vec<&str> = log
+        .api
+        .map_or_else(|| vec!["--renderer", "smallpt"], |api| vec!["--api", api]);
     args.extend([
         "--inside",
         &inside,
@@ -35,8 +39,8 @@ fn fix_names(bug: Bug) -> &'static str {
         Bug::PbrtEtaInverted => "not 1 / eta",
         Bug::PbrtNoFlipInside => "if (cosTheta_i < 0) { eta = 1 / eta;",
         Bug::PbrtNormalTermSign => "-wi / eta + (cosTheta_i / eta - cosTheta_t)",
-        Bug::SmallptNormalsSwapped => "faces the ray",
-        Bug::SmallptNntInverted => "into ? nc / nt : nt / nc",
+        Bug::SmallptNormalsSwapped => "n*((into?1:-1)*(ddn*nnt+sqrt(cos2t)))",
+        Bug::SmallptNntInverted => "nnt=into?nc/nt:nt/nc",
         Bug::RtiowRatioNotInverted => "rec.front_face ? (1.0/refraction_index)",
         Bug::RtiowOutwardNormal => "front_face ? outward_normal : -outward_normal",
         Bug::GlslOutwardNormal => "faceforward(N, I, N)",

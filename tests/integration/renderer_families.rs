@@ -116,7 +116,8 @@ pub(crate) enum Bug {
     MitsubaRefractSign,
     /// Mitsuba, `fresnel`: `cos_theta_i_abs = dr::abs(cos_theta_i)` written without `abs`:
     /// F > 1 for every ray from inside, which then always reflects (`None` on every line
-    /// from inside).
+    /// from inside, at every angle: the cosine's sign in the Fresnel code, not its test for
+    /// total internal reflection).
     MitsubaAbsDropped,
     /// Tungsten, `DielectricBsdf::sample`: `eta = wi.z() < 0.0f ? _ior : _invIor` swapped.
     TungstenTernarySwapped,
@@ -162,7 +163,7 @@ impl Bug {
                 "dr::mulsign_neg(cos_theta_t_abs, cos_theta_i)",
             ),
             Self::MitsubaRefractSign => ("across_sign", "-eta_ti * wi.x()"),
-            Self::MitsubaAbsDropped => ("false_tir", "dr::abs(cos_theta_i)"),
+            Self::MitsubaAbsDropped => ("fresnel_cos_sign", "dr::abs(cos_theta_i)"),
             Self::TungstenTernarySwapped => {
                 ("eta_inverted", "event.wi.z() < 0.0f ? _ior : _invIor")
             }

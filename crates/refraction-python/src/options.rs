@@ -45,7 +45,8 @@ const CONVENTIONS: &str = "along-ray, toward-origin";
 const PRECISIONS: &str = "f32, f64";
 /// The renderers `renderer` names, as the messages list them.
 // untranslated: the words each option takes, as the messages list them
-pub const RENDERERS: &str = "mitsuba, tungsten, cycles, threejs, pbrt, smallpt, rtiow, glsl";
+pub const RENDERERS: &str =
+    "mitsuba, tungsten, cycles, threejs, pbrt, smallpt, rtiow, glsl, glam, mitsuba-python";
 
 /// The dialect `api` names: an API's (`glsl`, `hlsl`, `pbrt`, `rtiow`, `mitsuba`...), or any
 /// renderer's own refraction when `None`.
@@ -173,6 +174,11 @@ pub fn options(dialect: Dialect, given: &Given) -> Result<Options, ArgumentError
         RENDERERS,
         Renderer::from_name,
     )?;
+    // A script calling mi.fresnel and mi.refract itself: its fix is in its own call, in
+    // Python, not in Mitsuba's C++ (`renderer="mitsuba"` asks for that).
+    if options.renderer.is_none() && dialect == Dialect::Api(Api::Mitsuba) {
+        options.renderer = Some(Renderer::MitsubaPython);
+    }
     Ok(options)
 }
 
@@ -216,6 +222,8 @@ mod tests {
         assert_eq!(o.sides(), Some((1.5, 1.0)));
         assert_eq!(o.precision, Some(Precision::F64));
         assert_eq!(o.renderer, Some(Renderer::Tungsten));
+        let unnamed = options(mitsuba, &Given::default()).unwrap();
+        assert_eq!(unnamed.renderer, Some(Renderer::MitsubaPython));
         for (inside, outside, named) in [
             (Some(f64::NAN), Some(1.0), "inside"),
             (Some(1.5), Some(0.0), "outside"),

@@ -10,10 +10,10 @@ use super::{Format, Options, Pattern, Session};
 use crate::diagnosis::Summary;
 
 /// A small deterministic generator (`SplitMix64`), so that every run sees the same log.
-struct Rng(u64);
+pub(super) struct Rng(pub(super) u64);
 
 impl Rng {
-    fn next(&mut self) -> f64 {
+    pub(super) fn next(&mut self) -> f64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -25,7 +25,7 @@ impl Rng {
     }
 
     /// A direction uniformly on the sphere.
-    fn direction(&mut self) -> DVec3 {
+    pub(super) fn direction(&mut self) -> DVec3 {
         let z = 2.0 * self.next() - 1.0;
         let phi = core::f64::consts::TAU * self.next();
         let r = (1.0 - z * z).sqrt();
@@ -35,15 +35,15 @@ impl Rng {
 
 /// One hit of a glass (n = 1.5) object in the student's right code: the incident direction,
 /// the normal turned to face it, the ratio `n_from / n_to`, and whether the ray enters.
-struct Hit {
-    incident: Vec3,
-    normal: Vec3,
-    eta: f32,
-    entering: bool,
+pub(super) struct Hit {
+    pub(super) incident: Vec3,
+    pub(super) normal: Vec3,
+    pub(super) eta: f32,
+    pub(super) entering: bool,
 }
 
 impl Hit {
-    fn random(rng: &mut Rng) -> Self {
+    pub(super) fn random(rng: &mut Rng) -> Self {
         let incident = rng.direction();
         let outward = rng.direction();
         let entering = outward.dot(incident) < 0.0;
@@ -58,7 +58,7 @@ impl Hit {
 
     /// GLSL's `refract` of these arguments in single precision, as the student's shader or
     /// C# port computes it.
-    fn refracted(&self, eta: f32) -> Vec3 {
+    pub(super) fn refracted(&self, eta: f32) -> Vec3 {
         let args = Args {
             incident: self.incident,
             normal: self.normal,
@@ -112,7 +112,12 @@ fn check_glsl(pattern: &str, log: &str) -> (Vec<Value>, Summary) {
         ..Options::new(Api::Glsl)
     };
     let pattern = Pattern::parse(Api::Glsl, pattern).unwrap();
-    let mut session = Session::new(options, Format::Pattern(pattern), false, false);
+    check_log(options, Format::Pattern(pattern), log)
+}
+
+/// The answers and the summary of `log` read in `format` with `options`.
+pub(super) fn check_log(options: Options, format: Format, log: &str) -> (Vec<Value>, Summary) {
+    let mut session = Session::new(options, format, false, false);
     let mut out = Vec::new();
     session.run(log.as_bytes(), &mut out, 1).unwrap();
     let answers = String::from_utf8(out)

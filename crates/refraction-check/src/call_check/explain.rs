@@ -153,7 +153,10 @@ fn argument_sentence(ctx: &Context<'_>, reading: &Reading, code: Code) -> String
         | Code::NormalTermSign
         | Code::OtherRoot
         | Code::FalseTir
-        | Code::AcrossSign => String::new(),
+        | Code::AcrossSign
+        | Code::RefractedTwice
+        | Code::FresnelCosSign
+        | Code::NormalsMixed => String::new(),
     }
 }
 
@@ -168,9 +171,9 @@ fn normal_sentence(call: &Call, reading: &Reading, w: &Words) -> String {
             incident = n.incident,
             dot = spoken(a.incident.dot(a.normal)),
             flipped = flipped,
+            // Not GLSL's faceforward: a glam or HLSL caller logs the same fields.
             fix = if call.api == Api::Glsl {
-                // untranslated: GLSL code
-                "faceforward(N, I, N)".to_owned()
+                t!("check-normal-fix-facing")
             } else {
                 t!("check-normal-fix-rtiow")
             }

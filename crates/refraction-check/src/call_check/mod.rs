@@ -713,6 +713,8 @@ impl Session {
 }
 
 #[cfg(test)]
+mod compound_tests;
+#[cfg(test)]
 mod ecosystem_tests;
 #[cfg(test)]
 mod tests;

@@ -225,6 +225,13 @@ fn same(yours: Option<DVec3>, t: Option<DVec3>) -> bool {
     }
 }
 
+/// Whether `yours` is the refraction `r` done twice at one crossing: μ applied twice, T
+/// refracted with μ².
+fn refracted_twice(yours: Option<DVec3>, r: &Refraction<f64>) -> bool {
+    let squared = transmitted(r.travel, r.facing_normal, r.cos_i, r.mu * r.mu, -1.0);
+    same(yours, squared)
+}
+
 /// The explanations of a line that is wrong: the mistakes whose refraction reproduces what
 /// came back, the fewest first; a missed or false total internal reflection where nothing
 /// else does; the ratio the code logged, where it is the inverse of the right one.
@@ -234,6 +241,7 @@ fn alternatives(case: &Case, r: &Refraction<f64>, verdict: &Verdict) -> Vec<Vec<
         .map(DVec3::from_array)
         .filter(|y| *y != DVec3::ZERO && !(r.is_tir() && verdict.ok));
     let leaving = case.entering == Some(false);
+    let twice = refracted_twice(yours, r);
     let mut found: Vec<Vec<Code>> = predictions(r, leaving)
         .into_iter()
         .filter(|(_, t)| same(yours, *t))
@@ -252,7 +260,7 @@ fn alternatives(case: &Case, r: &Refraction<f64>, verdict: &Verdict) -> Vec<Vec<
             found.push(vec![Code::EtaInverted]);
         }
     }
-    if found.is_empty() {
+    if found.is_empty() && !(twice && yours.is_some()) {
         let unit_length = yours.is_some_and(|y| {
             (length(y) - 1.0).abs() > candidate_check::LENGTH_TOLERANCE
                 && verdict.matches == Some(Match::Chosen)
@@ -263,6 +271,9 @@ fn alternatives(case: &Case, r: &Refraction<f64>, verdict: &Verdict) -> Vec<Vec<
             (false, None) => Code::FalseTir,
             _ => Code::NotTheApiResult,
         }]);
+    }
+    if twice && !inverse_ratio {
+        found.push(vec![Code::RefractedTwice]);
     }
     found
 }
@@ -409,7 +420,7 @@ pub(crate) fn judge(case: &Case) -> Result<Judged, LineError> {
         // Not a wrong line: counted with the lines its log cannot check.
         ok: ok || undecided,
         alternatives: if ok && sampled.is_some() {
-            vec![vec![Code::FalseTir]]
+            diagnosis::sampled_alternatives(refracted_twice(None, &r))
         } else {
             alternatives.clone()
         },
@@ -419,6 +430,7 @@ pub(crate) fn judge(case: &Case) -> Result<Judged, LineError> {
             .map(|e| if e { Side::Outside } else { Side::Inside }),
         past_critical: r.is_tir(),
         normal_outward: None,
+        normal_faces: None,
         band: diagnosis::band(log_map::incidence_deg(r.travel, r.facing_normal)),
         transmitted: matches!(logged, Outcome::Direction(_)) && !(r.is_tir() && verdict.ok),
         sample: sampled.map(f64::ln),

@@ -182,7 +182,10 @@ pub(crate) fn undo(codes: &[Code], args: Args<f64>) -> Args<f64> {
             | Code::NormalTermSign
             | Code::OtherRoot
             | Code::FalseTir
-            | Code::AcrossSign => {}
+            | Code::AcrossSign
+            | Code::RefractedTwice
+            | Code::FresnelCosSign
+            | Code::NormalsMixed => {}
         }
     }
     right

@@ -297,6 +297,26 @@ fn formula_readings(readings: &[Reading], seen: Seen, right: bool, tolerance: f6
     }
 }
 
+/// Whether what came back (`seen`) is the call refracted twice at its crossing: the API's
+/// formula with its ratio squared, within `tolerance` radians (at least [`MATCH_ANGLE`]).
+///
+/// [`MATCH_ANGLE`]: candidate_check::MATCH_ANGLE
+fn refracted_twice(call: &Call, seen: Seen, tolerance: f64) -> bool {
+    let m = call.api.meaning(call.args);
+    let squared = Situation {
+        travel: m.travel,
+        normal: m.normal,
+        mu: m.mu * m.mu,
+    };
+    let outcome = match seen {
+        Seen::Direction(v) => formula::Outcome::Direction(v),
+        Seen::Nothing(_) => formula::Outcome::Nothing,
+        Seen::NotFinite(_) => return false,
+    };
+    let tolerance = tolerance.max(candidate_check::MATCH_ANGLE);
+    formula::reproducing(&squared, outcome, tolerance) & formula::Variant::RIGHT.bit() != 0
+}
+
 /// Judges `call` in precision `S`; a call wrong as printed is looked at again with each
 /// number trusted only to its printed digits, and is undecided if that makes it right.
 fn verdict_in<S: Real>(call: &Call) -> Result<CallVerdict, LineError> {
@@ -331,11 +351,23 @@ fn judge_with<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<CallVerdict
     let sampled = sampled_reflection(call, &returns);
     let finding = finding::<S>(call, &returns, seen, sampled.is_some(), tolerance);
     let readings = readings(call, tolerance);
+    let twice = finding.is_some() && refracted_twice(call, seen, 2.0 * returns.distance);
+    // A direction nothing else explains, refracted with the ratio squared, is that.
+    let finding = finding.map(|(code, looks)| match code {
+        Code::NotTheApiResult if twice => (Code::RefractedTwice, looks),
+        _ => (code, looks),
+    });
     let right = readings
         .first()
         .map_or_else(|| call.api.meaning(call.args), |r| r.meaning);
     let (matches, t) = physical(&right, call.got);
-    let (alternatives, mistakes) = alternatives(&readings, finding.map(|(code, _)| code));
+    let (mut alternatives, mut mistakes) = alternatives(&readings, finding.map(|(code, _)| code));
+    // Nothing transmitted where the ratio squared is past its critical angle: refracting
+    // twice is as good an explanation as a false total internal reflection.
+    if twice && !mistakes.contains(&Code::RefractedTwice) {
+        alternatives.push(vec![Code::RefractedTwice]);
+        mistakes.push(Code::RefractedTwice);
+    }
     let outgoing = match (seen, call.got) {
         (Seen::Direction(v) | Seen::NotFinite(v), _) => v,
         (Seen::Nothing("the reflection"), Got::Vector(v)) => v,
@@ -411,7 +443,8 @@ pub(crate) fn evidence(call: &Call, verdict: &CallVerdict) -> Evidence {
     // A reflection read as sampled is a false total internal reflection if the log shows
     // that the code never transmits at its angles.
     let alternatives = if verdict.ok && verdict.sampled.is_some() {
-        vec![vec![Code::FalseTir]]
+        let twice = refracted_twice(call, Seen::Nothing("nothing"), 0.0);
+        diagnosis::sampled_alternatives(twice)
     } else {
         verdict.alternatives.clone()
     };
@@ -425,6 +458,7 @@ pub(crate) fn evidence(call: &Call, verdict: &CallVerdict) -> Evidence {
         normal_outward: logged_entering
             .filter(|_| either_side)
             .map(|entering| toward_origin == entering),
+        normal_faces: (!either_side).then_some(toward_origin),
         band: diagnosis::band(log_map::incidence_deg(m.travel, m.normal)),
         transmitted: verdict.transmitted,
         sample: verdict.sampled.map(f64::ln),

@@ -31,11 +31,20 @@ pub enum Code {
     /// The part of the result across the normal has the wrong sign; the part along it is right
     /// (the result mirrored across the normal).
     AcrossSign,
+    /// Refracted twice at one surface crossing: T is what refracting with μ² gives.
+    RefractedTwice,
+    /// The code never transmits, at any angle, although k > 0: the cosine's sign lost where
+    /// the Fresnel reflectance (or the choice to transmit) is computed, so F ≥ 1.
+    FresnelCosSign,
+    /// The side (entering, the ratio) decided with one normal (the geometric one) and the
+    /// normal passed to `refract` turned by it although it is another (the shading one): on
+    /// the lines where the two disagree, the normal passed does not face the ray.
+    NormalsMixed,
 }
 
 impl Code {
     /// Every code, in the order the README lists them.
-    pub const ALL: [Self; 11] = [
+    pub const ALL: [Self; 14] = [
         Self::EtaInverted,
         Self::IncidentReversed,
         Self::NormalNotFacing,
@@ -47,6 +56,9 @@ impl Code {
         Self::FalseTir,
         Self::NotUnitInput,
         Self::NotTheApiResult,
+        Self::RefractedTwice,
+        Self::FresnelCosSign,
+        Self::NormalsMixed,
     ];
 
     /// The name used in JSON and in the tally.
@@ -64,6 +76,9 @@ impl Code {
             Self::OtherRoot => "other_root",
             Self::FalseTir => "false_tir",
             Self::AcrossSign => "across_sign",
+            Self::RefractedTwice => "refracted_twice",
+            Self::FresnelCosSign => "fresnel_cos_sign",
+            Self::NormalsMixed => "normals_mixed",
         }
     }
 
@@ -83,6 +98,9 @@ impl Code {
             Self::OtherRoot => t!("check-mistake-other-root"),
             Self::FalseTir => t!("check-mistake-false-tir"),
             Self::AcrossSign => t!("check-mistake-across-sign"),
+            Self::RefractedTwice => t!("check-mistake-refracted-twice"),
+            Self::FresnelCosSign => t!("check-mistake-fresnel-cos-sign"),
+            Self::NormalsMixed => t!("check-mistake-normals-mixed"),
         }
     }
 

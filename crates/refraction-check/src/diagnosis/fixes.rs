@@ -9,7 +9,8 @@
 //! `src/kernel/svm/closure.h`, `closure/bsdf_util.h`, `closure/bsdf_microfacet.h`; three.js
 //! `transmission_pars_fragment.glsl.js` `getVolumeTransmissionRay`; smallpt `radiance()`;
 //! pbrt-v4 `src/pbrt/util/scattering.h` `Refract`; the book's `vec3.h`, `material.h`,
-//! `hittable.h`; GLSL's built-in `refract`.
+//! `hittable.h`; GLSL's built-in `refract`; glam's `Vec3::refract` (`src/f32/vec3.rs`); the
+//! Python calls of Mitsuba 3's `mi.fresnel` and `mi.refract`.
 
 use refraction_i18n::t;
 use refraction_kernel::api::Api;
@@ -115,6 +116,9 @@ fn generic_code(code: Code) -> String {
         Code::NotUnitInput => t!("check-fix-generic-not-unit-input"),
         Code::NotTheApiResult => t!("check-fix-generic-not-the-api-result"),
         Code::AcrossSign => t!("check-fix-generic-across-sign"),
+        Code::RefractedTwice => t!("check-fix-generic-refracted-twice"),
+        Code::FresnelCosSign => t!("check-fix-generic-fresnel-cos-sign"),
+        Code::NormalsMixed => t!("check-fix-generic-normals-mixed"),
     }
 }
 
@@ -146,12 +150,21 @@ enum About {
     MissedTir,
     /// Reflected where it refracts, on one side or all.
     FalseTir,
+    /// Refracted twice at one crossing.
+    Twice,
+    /// The cosine's sign lost where F (or the choice to transmit) is computed.
+    CosSign,
+    /// The side decided with one normal, `refract` given another.
+    NormalsMixed,
     /// Anything else.
     Other,
 }
 
 fn about(fix: &Fix) -> About {
     match (fix.slip, fix.code, fix.location) {
+        (_, Code::RefractedTwice, _) => About::Twice,
+        (_, Code::FresnelCosSign, _) => About::CosSign,
+        (_, Code::NormalsMixed, _) => About::NormalsMixed,
         (Some(Slip::Ratio), _, Location::Arguments)
         | (None, Code::EtaInverted, Location::Arguments) => About::RatioPassed,
         (Some(Slip::Ratio), ..) | (None, Code::EtaInverted, _) => About::RatioChosen,
@@ -184,6 +197,8 @@ fn renderer_line(
         Renderer::Pbrt => pbrt(about),
         Renderer::Rtiow => rtiow(about),
         Renderer::Glsl => glsl(about),
+        Renderer::Glam => glam(about),
+        Renderer::MitsubaPython => mitsuba_python(about),
     }
 }
 
@@ -204,7 +219,9 @@ fn mitsuba(about: About) -> Line {
         About::Normal => ("pass", "refract(si.wi, cos_theta_t, eta_ti) // about the shading frame's z axis: fresnel turns it", "SmoothDielectric::sample"),
         About::MissedTir => ("write", "Float cos_theta_t_abs = dr::safe_sqrt(cos_theta_t_sqr); // F = 1 past the critical angle: it reflects", FRESNEL),
         About::FalseTir => ("write", "Float cos_theta_i_abs = dr::abs(cos_theta_i); // F, the probability of reflecting, at most 1", FRESNEL),
-        About::Term | About::NoFlip | About::Other => return None,
+        About::Twice => ("write", "bs.wo = dr::select(selected_r, reflect(si.wi), refract(si.wi, cos_theta_t, eta_ti)); // one refract per crossing", "SmoothDielectric::sample, src/bsdfs/dielectric.cpp"),
+        About::CosSign => ("write", "Float cos_theta_i_abs = dr::abs(cos_theta_i); // F from |cos θi|, below 1 where k > 0", FRESNEL),
+        About::Term | About::NoFlip | About::NormalsMixed | About::Other => return None,
     })
 }
 
@@ -220,7 +237,8 @@ fn tungsten(about: About) -> Line {
         About::Across | About::AcrossSign | About::Root => ("write", "event.wo = Vec3f(-event.wi.x()*eta, -event.wi.y()*eta, -std::copysign(cosThetaT, event.wi.z()));", SAMPLE),
         About::MissedTir => ("write", "if (sinThetaTSq > 1.0f) { cosThetaT = 0.0f; return 1.0f; }", FRESNEL),
         About::FalseTir => ("write", "float F = Fresnel::dielectricReflectance(eta, std::abs(event.wi.z()), cosThetaT); // reflect with probability F, at most 1", SAMPLE),
-        About::IncidentPassed | About::Normal | About::Term | About::NoFlip | About::Other => return None,
+        About::CosSign => ("write", "float F = Fresnel::dielectricReflectance(eta, std::abs(event.wi.z()), cosThetaT);", SAMPLE),
+        About::IncidentPassed | About::Normal | About::Term | About::NoFlip | About::Twice | About::NormalsMixed | About::Other => return None,
     })
 }
 
@@ -238,7 +256,7 @@ fn cycles(about: About) -> Line {
         About::Normal => ("write", "if (backfacing) { sd->flag |= SD_BACKFACING; sd->Ng = -sd->Ng; sd->N = -sd->N; }", "src/kernel/geom/shader_data.h"),
         About::MissedTir => ("write", "if (eta_cos_theta_t_sq <= 0) { return one_float2(); } // total internal reflection", UTIL),
         About::FalseTir => ("write", "const bool do_refract = (rand.z >= pdf_reflect);", SAMPLE),
-        About::IncidentPassed | About::Term | About::NoFlip | About::Other => return None,
+        About::IncidentPassed | About::Term | About::NoFlip | About::Twice | About::CosSign | About::NormalsMixed | About::Other => return None,
     })
 }
 
@@ -261,7 +279,8 @@ fn smallpt(about: About) -> Line {
         About::RatioPassed | About::RatioChosen | About::Along(_) | About::Across => ("write", "double nc=1, nt=1.5, nnt=into?nc/nt:nt/nc, ddn=r.d.dot(nl), cos2t;", RADIANCE),
         About::Normal | About::Root | About::Term | About::AcrossSign | About::IncidentPassed => ("write", "Vec tdir = (r.d*nnt - n*((into?1:-1)*(ddn*nnt+sqrt(cos2t)))).norm();", RADIANCE),
         About::MissedTir | About::FalseTir => ("write", "if ((cos2t=1-nnt*nnt*(1-ddn*ddn))<0) return obj.e + f.mult(radiance(reflRay,depth,Xi));", RADIANCE),
-        About::NoFlip | About::Other => return None,
+        About::CosSign => ("write", "double a=nt-nc, b=nt+nc, R0=a*a/(b*b), c = 1-(into?-ddn:tdir.dot(n));", RADIANCE),
+        About::NoFlip | About::Twice | About::NormalsMixed | About::Other => return None,
     })
 }
 
@@ -278,7 +297,8 @@ fn pbrt(about: About) -> Line {
         About::IncidentPassed => ("pass", "Refract(-ray.d, n, eta, &etap, &wt); // wi points back where the ray came from", "the caller"),
         About::Normal => ("pass", "Refract(wo, n, eta, &etap, &wi); // n: the shape's outward normal, which Refract turns itself", "the caller"),
         About::MissedTir | About::FalseTir => ("write", "Float sin2Theta_t = sin2Theta_i / Sqr(eta); if (sin2Theta_t >= 1) return false;", REFRACT),
-        About::Other => return None,
+        About::CosSign => ("restore", "if (cosTheta_i < 0) { eta = 1 / eta; cosTheta_i = -cosTheta_i; }", "FrDielectric, src/pbrt/util/scattering.h"),
+        About::Twice | About::NormalsMixed | About::Other => return None,
     })
 }
 
@@ -293,21 +313,61 @@ fn rtiow(about: About) -> Line {
         About::Root | About::Term => ("write", "vec3 r_out_parallel = -std::sqrt(std::fabs(1.0 - r_out_perp.length_squared())) * n;", REFRACT),
         About::Across | About::AcrossSign => ("write", "vec3 r_out_perp = etai_over_etat * (uv + cos_theta*n);", REFRACT),
         About::MissedTir | About::FalseTir => ("write", "bool cannot_refract = ri * sin_theta > 1.0; // then reflect", "dielectric::scatter, material.h"),
-        About::Along(_) | About::NoFlip | About::Other => return None,
+        About::CosSign => ("write", "double cos_theta = std::fmin(dot(-unit_direction, rec.normal), 1.0);", "dielectric::scatter, material.h"),
+        About::Along(_) | About::NoFlip | About::Twice | About::NormalsMixed | About::Other => return None,
     })
 }
 
 // untranslated: each renderer's own code and the file and function it is in
 #[rustfmt::skip]
 fn glsl(about: About) -> Line {
-    const BUILT_IN: &str = "GLSL's refract";
+    const OWN: &str = "your own refract: the built-in computes it so";
     Some(match about {
         About::RatioPassed | About::RatioChosen => ("pass", "refract(I, N, entering ? 1.0 / ior : ior)", "the call"),
         About::Normal => ("pass", "refract(I, faceforward(N, I, N), eta)", "the call"),
         About::IncidentPassed => ("pass", "refract(rd, N, eta)", "the call"),
-        About::Root | About::Term | About::AcrossSign | About::Across => ("write", "eta * I - (eta * dot(N, I) + sqrt(k)) * N", BUILT_IN),
-        About::MissedTir | About::FalseTir | About::Along(_) => ("write", "float k = 1.0 - eta * eta * (1.0 - dot(N, I) * dot(N, I)); if (k < 0.0) return vec3(0.0);", BUILT_IN),
-        About::NoFlip | About::Other => return None,
+        About::Root | About::Term | About::AcrossSign | About::Across => ("write", "eta * I - (eta * dot(N, I) + sqrt(k)) * N", OWN),
+        About::MissedTir => ("write", "vec3 T = refract(I, N, eta); if (dot(T, T) == 0.0) { /* reflect */ } else { T = normalize(T); }", "the caller: refract returns vec3(0.0) past the critical angle, and normalize(vec3(0.0)) is NaN"),
+        About::FalseTir | About::Along(_) => ("write", "float k = 1.0 - eta * eta * (1.0 - dot(N, I) * dot(N, I)); if (k < 0.0) return vec3(0.0);", OWN),
+        About::Twice => ("write", "vec3 T = refract(I, N, eta); // once per crossing: trace T on, never refract(T, N, eta)", "the caller"),
+        About::NoFlip | About::CosSign | About::NormalsMixed | About::Other => return None,
+    })
+}
+
+// untranslated: each renderer's own code and the file and function it is in
+#[rustfmt::skip]
+fn glam(about: About) -> Line {
+    const CALL: &str = "the call of Vec3::refract";
+    const OWN: &str = "your own refract: glam's Vec3::refract computes it so";
+    Some(match about {
+        About::RatioPassed | About::RatioChosen => ("pass", "incident.refract(normal, if entering { 1.0 / ior } else { ior })", CALL),
+        About::Normal => ("pass", "incident.refract(if incident.dot(normal) > 0.0 { -normal } else { normal }, eta)", CALL),
+        About::IncidentPassed => ("pass", "ray.direction.normalize().refract(normal, eta)", CALL),
+        About::Root | About::Term | About::AcrossSign | About::Across => ("write", "eta * self - (eta * normal.dot(self) + k.sqrt()) * normal", OWN),
+        About::MissedTir => ("write", "let t = incident.refract(normal, eta); if t == Vec3::ZERO { /* reflect */ } else { t.normalize() }", "the caller: Vec3::refract returns Vec3::ZERO past the critical angle, and normalize() of it is NaN"),
+        About::FalseTir | About::Along(_) => ("write", "let k = 1.0 - eta * eta * (1.0 - n_dot_i * n_dot_i); if k < 0.0 { return Vec3::ZERO; }", OWN),
+        About::Twice => ("write", "let t = incident.refract(normal, eta); // once per crossing: trace t on, never t.refract(normal, eta)", "the caller"),
+        About::NoFlip | About::CosSign | About::NormalsMixed | About::Other => return None,
+    })
+}
+
+// untranslated: each renderer's own code and the file and function it is in
+#[rustfmt::skip]
+fn mitsuba_python(about: About) -> Line {
+    const FRESNEL: &str = "your call of mi.fresnel";
+    const REFRACT: &str = "your call of mi.refract";
+    Some(match about {
+        About::RatioPassed | About::RatioChosen | About::Along(Sides::Both) => ("pass", "F, cos_theta_t, eta_it, eta_ti = mi.fresnel(mi.Frame3f.cos_theta(wi), int_ior / ext_ior)", FRESNEL),
+        About::Along(_) | About::NoFlip => ("pass", "mi.fresnel(mi.Frame3f.cos_theta(wi), eta)  # the cosine with its sign, never abs(): for rays from inside fresnel must invert the ratio", FRESNEL),
+        About::Across => ("pass", "mi.refract(wi, cos_theta_t, eta_ti)  # eta_ti, fresnel's fourth value, not eta_it", REFRACT),
+        About::AcrossSign => ("write", "wo = mi.refract(wi, cos_theta_t, eta_ti)  # (-eta_ti * wi.x, -eta_ti * wi.y, cos_theta_t)", "your script, where it builds the vector by hand"),
+        About::Root => ("pass", "mi.refract(wi, cos_theta_t, eta_ti)  # cos_theta_t as mi.fresnel returns it, its sign kept", REFRACT),
+        About::IncidentPassed => ("pass", "mi.fresnel(mi.Frame3f.cos_theta(wi), eta)  # wi points away from the surface, back along the ray: -ray.d", FRESNEL),
+        About::Normal => ("pass", "mi.refract(wi, cos_theta_t, eta_ti)  # about the local frame's z axis, the outward normal: fresnel turns the side itself", REFRACT),
+        About::MissedTir => ("write", "wo = dr.select(F < 1, mi.refract(wi, cos_theta_t, eta_ti), mi.reflect(wi))  # past the critical angle mi.fresnel returns F = 1", "your script"),
+        About::FalseTir => ("write", "selected_r = sample1 <= F  # reflect with probability F, below 1 wherever k > 0", "your script"),
+        About::Twice => ("write", "wo = mi.refract(wi, cos_theta_t, eta_ti)  # once per crossing, never mi.refract of wo again", "your script"),
+        About::Term | About::CosSign | About::NormalsMixed | About::Other => return None,
     })
 }
 

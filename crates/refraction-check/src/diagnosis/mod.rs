@@ -44,6 +44,11 @@ pub use renderer::Renderer;
 /// How wide a band of angles of incidence the sampling of reflection is judged in, degrees.
 pub(crate) const BIN_DEG: f64 = 5.0;
 
+/// The bands of angles of incidence (below 15°) where no ratio of real glass, upside down or
+/// squared, makes k = 1 − μ²·sin²θi negative (μ < 3.8): a code that transmits nothing there
+/// is not wrong in its test for total internal reflection.
+pub(crate) const SMALL_ANGLE_BANDS: u8 = 3;
+
 /// Below this probability, reflections at every line of a band of angles are not sampling:
 /// the code never transmits there.
 const SAMPLING_UNLIKELY: f64 = 1e-3;
@@ -88,6 +93,9 @@ pub struct Evidence {
     /// says whether the ray enters: `Some(true)` when it does exactly when the ray enters
     /// (an outward normal), `Some(false)` when it does exactly when the ray leaves.
     pub normal_outward: Option<bool>,
+    /// Whether the normal passed to the API faces the ray (against GLSL's `I`, the book's
+    /// `uv`), for an API that needs it to; `None` for one that turns it itself.
+    pub normal_faces: Option<bool>,
     /// The band of angles of incidence the line is in ([`BIN_DEG`] wide).
     pub band: u8,
     /// Whether the code sent the ray along a direction (it transmitted).
@@ -100,6 +108,18 @@ pub struct Evidence {
     pub unchecked: Option<Missing>,
     /// The truth fields the line logged.
     pub told: Told,
+}
+
+/// The explanations of a reflection read as sampled, should the log show that the code never
+/// transmits at its angles: a false total internal reflection, or (`twice`, where the ratio
+/// squared is past its critical angle) a refraction done twice.
+#[must_use]
+pub(crate) fn sampled_alternatives(twice: bool) -> Vec<Vec<Code>> {
+    let mut sets = vec![vec![Code::FalseTir]];
+    if twice {
+        sets.push(vec![Code::RefractedTwice]);
+    }
+    sets
 }
 
 /// The band of `incidence_deg` for [`Evidence::band`].
@@ -156,6 +176,8 @@ impl Census {
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 struct Band {
     transmitted: usize,
+    /// Lines that transmitted nothing where the ray refracts.
+    refused: usize,
     log_f: f64,
 }
 
@@ -179,6 +201,9 @@ pub struct LogTally {
     normal_outward: [usize; 2],
     /// Lines that told `entering`, and `travel`.
     told: [usize; 2],
+    /// Lines whose normal passed does not face the ray (0), and does (1), for APIs that
+    /// need it to.
+    normal_faces: [usize; 2],
     /// Why the first line that could not be read as a call could not.
     first_unreadable: Option<String>,
 }
@@ -375,11 +400,15 @@ impl LogTally {
         }
         self.told[0] += usize::from(evidence.told.entering);
         self.told[1] += usize::from(evidence.told.travel);
+        if let Some(faces) = evidence.normal_faces {
+            self.normal_faces[usize::from(faces)] += 1;
+        }
         let band = self
             .bands
             .entry((evidence.side, evidence.band))
             .or_default();
         band.transmitted += usize::from(evidence.transmitted);
+        band.refused += usize::from(!evidence.transmitted && !evidence.past_critical);
         band.log_f += evidence.sample.unwrap_or(0.0);
         let kind = Kind {
             ok: evidence.ok,

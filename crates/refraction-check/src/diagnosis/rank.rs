@@ -7,7 +7,7 @@ use refraction_kernel::api::Api;
 use super::fixes::{self, Fix, Location};
 use super::hypotheses::{self, Family, Hypothesis, Sides, Slip};
 use super::{Band, Census, Finding, Kind, LogTally, Missing, NONE, TOO_FEW_DIGITS, UNCHECKED};
-use super::{Code, Renderer};
+use super::{Code, Renderer, SMALL_ANGLE_BANDS, Side};
 
 /// What is ranked: a hypothesis of the formula's mistakes, or a set of mistakes some lines
 /// were given on their own (a missed total internal reflection, inputs not unit length...).
@@ -216,6 +216,7 @@ impl Lines<'_> {
             Candidate::Formula(h) => (h.codes(), h.conditions()),
             Candidate::Line(set) => (line_codes(self.api, set, one_side), set.len()),
         };
+        let codes = self.renamed(codes, &explained);
         let mut scored = Scored {
             candidate,
             kinds,
@@ -228,6 +229,37 @@ impl Lines<'_> {
         };
         scored.penalty = self.penalty(&scored);
         scored
+    }
+
+    /// `codes` named by the compound cause the log shows, where it shows one: lines that never
+    /// transmit, down to small angles where no ratio makes k negative, are the cosine's sign
+    /// lost in the Fresnel term, not the test for total internal reflection; a normal that
+    /// does not face the ray on a few lines of both sides, where the code turns it on all the
+    /// others, was turned by a side decided with another normal.
+    fn renamed(&self, codes: Vec<Code>, explained: &Census) -> Vec<Code> {
+        match codes.as_slice() {
+            [Code::FalseTir] if self.tally.never_transmits(explained) => {
+                vec![Code::FresnelCosSign]
+            }
+            [Code::NormalNotFacing]
+                if self.family == Family::Along && self.tally.normals_mixed(explained) =>
+            {
+                vec![Code::NormalsMixed]
+            }
+            _ => codes,
+        }
+    }
+
+    /// The fix of `best`, with what to print where the log cannot tell a normal that does not
+    /// face the ray from one turned by a side decided with another normal (`entering`).
+    fn fix_text(&self, best: &Scored<'_>, renderer: Option<Renderer>) -> String {
+        let fix = fixes::fix(renderer, self.api, &self.fix_of(best));
+        let [against, facing] = self.tally.normal_faces;
+        let unsided = self.tally.told[0] < self.tally.judged.total();
+        if best.codes[0] == Code::NormalNotFacing && unsided && 2 * against < facing {
+            return format!("{fix} {}", t!("check-fix-normals-print"));
+        }
+        fix
     }
 
     /// What only many lines show against a candidate: a mistake that cannot depend on the
@@ -294,7 +326,7 @@ impl Lines<'_> {
             code: best.codes[0].name(),
             lines: best.explained.total(),
             place: self.tally.place(&best.explained),
-            fix: fixes::fix(renderer, self.api, &self.fix_of(best)),
+            fix: self.fix_text(best, renderer),
             with: best.codes[1..].iter().map(|c| c.name()).collect(),
             alike,
             tell_apart,
@@ -455,6 +487,34 @@ impl Lines<'_> {
 }
 
 impl LogTally {
+    /// Whether the code transmits nothing, at any angle, on the sides of `lines`, lines at
+    /// small angles (where no ratio makes k negative) among them.
+    fn never_transmits(&self, lines: &Census) -> bool {
+        let sides = [
+            (lines.outside, Some(Side::Outside)),
+            (lines.inside, Some(Side::Inside)),
+            (lines.unknown_side, None),
+        ];
+        let mut touched = sides
+            .iter()
+            .filter(|(n, _)| *n > 0)
+            .map(|(_, s)| *s)
+            .peekable();
+        touched.peek().is_some()
+            && touched.all(|side| {
+                let mut bands = self.bands.iter().filter(|((s, _), _)| *s == side);
+                let none = bands.clone().all(|(_, b)| b.transmitted == 0);
+                none && bands.any(|((_, band), b)| *band < SMALL_ANGLE_BANDS && b.refused > 0)
+            })
+    }
+
+    /// Whether the normal passed does not face the ray on `lines`, from both sides, while it
+    /// faces it on most lines: the code turns it, by a side decided with another normal.
+    fn normals_mixed(&self, lines: &Census) -> bool {
+        let [against, facing] = self.normal_faces;
+        lines.outside > 0 && lines.inside > 0 && against > 0 && 2 * against < facing
+    }
+
     /// Whether the normal is the outward one on every line that says which way the ray goes.
     fn normal_always_outward(&self) -> bool {
         self.normal_outward[1] > 0 && self.normal_outward[0] == 0
@@ -514,7 +574,7 @@ fn line_codes(api: Option<Api>, codes: &[Code], one_side: bool) -> Vec<Code> {
 fn prior(api: Option<Api>, code: Code) -> u32 {
     match (api, code) {
         (Some(Api::Glsl | Api::Rtiow) | None, Code::EtaInverted) => 0,
-        (Some(Api::Glsl | Api::Rtiow) | None, Code::NormalNotFacing) => 1,
+        (Some(Api::Glsl | Api::Rtiow) | None, Code::NormalNotFacing | Code::NormalsMixed) => 1,
         (Some(Api::Pbrt | Api::Mitsuba), Code::EtaInverted) => 0,
         (Some(Api::Pbrt | Api::Mitsuba), Code::IncidentReversed) => 1,
         (_, Code::NoFlipInside | Code::NormalTermSign | Code::OtherRoot | Code::AcrossSign) => 2,

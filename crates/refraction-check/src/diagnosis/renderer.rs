@@ -23,13 +23,19 @@ pub enum Renderer {
     Smallpt,
     /// Ray Tracing in One Weekend: `refract` and `dielectric::scatter`.
     Rtiow,
-    /// A GLSL (HLSL, WGSL, glm, glam) shader calling the built-in `refract`.
+    /// A GLSL (HLSL, WGSL, glm) shader calling the built-in `refract`.
     Glsl,
+    /// Rust code calling glam's `Vec3::refract` (GLSL's formula, `Vec3::ZERO` past the
+    /// critical angle).
+    Glam,
+    /// Python calling Mitsuba 3's `mi.fresnel` and `mi.refract` itself (the Python package's
+    /// `api="mitsuba"`): the fix is in the script's call, not in Mitsuba's C++.
+    MitsubaPython,
 }
 
 impl Renderer {
     /// Every renderer, in the order the docs list them.
-    pub const ALL: [Self; 8] = [
+    pub const ALL: [Self; 10] = [
         Self::Mitsuba,
         Self::Tungsten,
         Self::Cycles,
@@ -38,6 +44,8 @@ impl Renderer {
         Self::Smallpt,
         Self::Rtiow,
         Self::Glsl,
+        Self::Glam,
+        Self::MitsubaPython,
     ];
 
     /// The name on the command line.
@@ -52,6 +60,8 @@ impl Renderer {
             Self::Smallpt => "smallpt",
             Self::Rtiow => "rtiow",
             Self::Glsl => "glsl",
+            Self::Glam => "glam",
+            Self::MitsubaPython => "mitsuba-python",
         }
     }
 
@@ -62,6 +72,7 @@ impl Renderer {
         match name.as_str() {
             "three.js" | "three" => Some(Self::ThreeJs),
             "blender" => Some(Self::Cycles),
+            "mitsuba_python" | "mi" => Some(Self::MitsubaPython),
             _ => Self::ALL.into_iter().find(|r| r.name() == name),
         }
     }

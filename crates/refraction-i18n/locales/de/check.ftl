@@ -77,6 +77,7 @@ check-and = und
 check-or = oder
 check-field-from-and-to = from und to (oder entering mit --inside und --outside)
 check-normal-fix-rtiow = die Normale des Trefferdatensatzes nach set_face_normal
+check-normal-fix-facing = die Normale umgedreht, wo immer dieses Skalarprodukt positiv ist
 check-normal-inward-entering = sie zeigt ins Objekt, und der Strahl tritt ein
 check-normal-inward-leaving = sie zeigt ins Objekt, und der Strahl tritt aus
 check-looks-other-root = die andere Lösung, mit umgekehrtem Vorzeichen der Quadratwurzel ({ $hint })
@@ -310,7 +311,7 @@ check-where-some = in { $count } von { $all } geprüften Zeilen
 check-fix-pass = übergib `{ $code }`
 check-fix-write = schreib `{ $code }`
 check-fix-restore = stell `{ $code }` wieder her
-check-fix-generic-eta-inverted = verwende μ = n_from / n_to, den Brechungsindex des Mediums, das der Strahl verlässt, durch den des Mediums, in das er eintritt: Es kehrt sich um, wo der Strahl das Objekt verlässt (into ? nc / nt : nt / nc)
+check-fix-generic-eta-inverted = verwende μ = n_from / n_to, den Brechungsindex des Mediums, das der Strahl verlässt, durch den des Mediums, in das er eintritt: Es kehrt sich um, wo der Strahl das Objekt verlässt (dort μ = n_innen / n_außen; beim Eintritt μ = n_außen / n_innen)
 check-fix-generic-incident-reversed = übergib als W die Ausbreitungsrichtung des Strahls, nicht ihr Negatives
 check-fix-generic-normal-not-facing = wo der Strahl das Objekt verlässt, verwende in jedem Term die Normale, die dem Strahl zugewandt ist (die äußere, umgekehrt), oder die äußere mit umgekehrtem Vorzeichen, aber nicht beides
 check-fix-generic-no-flip-inside = kehr für einen Strahl von innen die Normale und das Verhältnis um, bevor du brichst
@@ -378,3 +379,12 @@ check-suggest-indices-assumed = --inside { $inside } --outside 1 sind Glas in Lu
 # check: vectors printed one number a line (issue 43, item 2)
 check-field-column-vector = `{ $field }` ist eine Zahl pro Zeile ausgegeben (wie Eigens cout << v einen Vektor ausgibt): die Zeilen lassen sich nicht sicher zusammenfügen; gib jeden Vektor in einer Zeile aus (Eigen: v.transpose(); nalgebra: v.transpose() oder {"{"}:?{"}"}; numpy: np.array2string(v, max_line_width=1000) oder v.tolist())
 check-suggest-column-vectors = die ersten { $lines } Zeilen geben Vektoren mit einer Zahl pro Zeile aus (wie Eigens cout << v), was kein Muster sicher zusammenfügen kann: gib jeden Vektor in einer Zeile aus (Eigen: v.transpose(); nalgebra: v.transpose() oder {"{"}:?{"}"}; numpy: v.tolist()), jeden nach seinem Namen, dann frag erneut
+
+# check: zusammengesetzte Fehler als Ursachen benannt (Issue 43, Punkt 4)
+check-mistake-refracted-twice = an einem Flächenübergang zweimal gebrochen: T ist, was das quadrierte Verhältnis (μ²) ergibt
+check-mistake-fresnel-cos-sign = der Code transmittiert nie, bei keinem Winkel, obwohl k > 0: das Vorzeichen des Kosinus ging dort verloren, wo der Fresnel-Reflexionsgrad (oder die Wahl zu transmittieren) berechnet wird
+check-mistake-normals-mixed = die Seite mit einer Normalen (der geometrischen) entschieden und refract eine andere (die Shading-Normale) übergeben, nach dieser Entscheidung gedreht: wo beide nicht übereinstimmen, zeigt die übergebene Normale nicht gegen den Strahl
+check-fix-generic-refracted-twice = ruf refract einmal pro Flächenübergang auf: T wird hier noch einmal gebrochen (oder μ zweimal angewandt), wie mit μ² = (n_von / n_nach)²; behalte das erste T und verfolge den Strahl bis zur nächsten Fläche
+check-fix-generic-fresnel-cos-sign = der Test auf Totalreflexion ist nicht die Ursache (unter 15° macht kein Verhältnis k negativ): wo F oder die Wahl zu transmittieren berechnet wird, nimm cosθi ohne Vorzeichen, |N·I| (oder −N·I mit N gegen den Strahl); ein negativer Kosinus macht F ≥ 1, also wird der Strahl immer reflektiert
+check-fix-generic-normals-mixed = entscheide die Seite (entering, das Verhältnis) und drehe die an refract übergebene Normale mit derselben Normalen: beide Male die Shading-Normale oder beide Male die geometrische (die geometrische bleibt für das Versetzen des Strahlursprungs)
+check-fix-normals-print = Wenn der Code die Seite mit einer anderen Normalen entscheidet als der übergebenen (eine geometrische neben einer Shading-Normalen), gib auch `entering` aus: dann kann die Diagnose es unterscheiden.

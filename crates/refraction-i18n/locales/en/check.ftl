@@ -77,6 +77,7 @@ check-and = and
 check-or = or
 check-field-from-and-to = from and to (or entering with --inside and --outside)
 check-normal-fix-rtiow = the hit record's normal after set_face_normal
+check-normal-fix-facing = the normal turned round wherever that dot product is positive
 check-normal-inward-entering = it points into the object, and the ray is entering
 check-normal-inward-leaving = it points into the object, and the ray is leaving
 check-looks-other-root = the other root, with the square root's sign flipped ({ $hint })
@@ -310,7 +311,7 @@ check-where-some = on { $count } of { $all } judged lines
 check-fix-pass = pass `{ $code }`
 check-fix-write = write `{ $code }`
 check-fix-restore = restore `{ $code }`
-check-fix-generic-eta-inverted = use μ = n_from / n_to, the index of the medium the ray leaves over the one it enters: it inverts where the ray leaves the object (into ? nc / nt : nt / nc)
+check-fix-generic-eta-inverted = use μ = n_from / n_to, the index of the medium the ray leaves over the one it enters: it inverts where the ray leaves the object (there μ = n_inside / n_outside; entering, μ = n_outside / n_inside)
 check-fix-generic-incident-reversed = pass the ray's direction of travel as W, not its negative
 check-fix-generic-normal-not-facing = where the ray leaves the object, use the normal that faces the ray in every term (the outward one turned round), or the outward one with its sign turned, but not both
 check-fix-generic-no-flip-inside = for a ray arriving from inside, turn the normal round and invert the ratio before refracting
@@ -378,3 +379,12 @@ check-suggest-indices-assumed = --inside { $inside } --outside 1 are glass in ai
 # check: vectors printed one number a line (issue 43, item 2)
 check-field-column-vector = `{ $field }` is printed one number a line (as Eigen's cout << v prints a vector): its lines cannot be joined for sure; print each vector on one line (Eigen: v.transpose(); nalgebra: v.transpose() or {"{"}:?{"}"}; numpy: np.array2string(v, max_line_width=1000) or v.tolist())
 check-suggest-column-vectors = the first { $lines } lines print vectors one number a line (as Eigen's cout << v does), which no pattern can join for sure: print each vector on one line (Eigen: v.transpose(); nalgebra: v.transpose() or {"{"}:?{"}"}; numpy: v.tolist()), each after its name, then ask again
+
+# check: compound bugs named as causes (issue 43, item 4)
+check-mistake-refracted-twice = refracted twice at one surface crossing: T is what the ratio squared (μ²) gives
+check-mistake-fresnel-cos-sign = the code never transmits, at any angle, although k > 0: the cosine's sign lost where the Fresnel reflectance (or the choice to transmit) is computed
+check-mistake-normals-mixed = the side decided with one normal (the geometric one) and refract given another (the shading one), turned by that decision: where the two disagree, the normal passed does not face the ray
+check-fix-generic-refracted-twice = call refract once per surface crossing: T here is refracted again (or μ applied twice), as if with μ² = (n_from / n_to)²; keep the first T and trace the ray to the next surface
+check-fix-generic-fresnel-cos-sign = the test for total internal reflection is not the cause (below 15° no ratio makes k negative): where F or the choice to transmit is computed, take cosθi with its sign off, |N·I| (or −N·I with N facing the ray); a negative cosine makes F ≥ 1, so the ray always reflects
+check-fix-generic-normals-mixed = decide the side (entering, the ratio) and turn the normal passed to refract with the same normal: the shading one for both, or the geometric one for both (keep the geometric one for offsetting the ray's origin)
+check-fix-normals-print = If the code decides the side with another normal than the one it passes (a geometric normal beside a shading one), log `entering` too: then the diagnosis can tell.

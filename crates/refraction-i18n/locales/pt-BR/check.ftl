@@ -77,6 +77,7 @@ check-and = e
 check-or = ou
 check-field-from-and-to = from e to (ou entering com --inside e --outside)
 check-normal-fix-rtiow = a normal do registro de interseção depois de set_face_normal
+check-normal-fix-facing = a normal invertida onde quer que esse produto escalar seja positivo
 check-normal-inward-entering = ela aponta para dentro do objeto, e o raio está entrando
 check-normal-inward-leaving = ela aponta para dentro do objeto, e o raio está saindo
 check-looks-other-root = a outra raiz, com o sinal da raiz quadrada trocado ({ $hint })
@@ -310,7 +311,7 @@ check-where-some = em { $count } de { $all } linhas julgadas
 check-fix-pass = passe `{ $code }`
 check-fix-write = escreva `{ $code }`
 check-fix-restore = restaure `{ $code }`
-check-fix-generic-eta-inverted = use μ = n_from / n_to, o índice do meio que o raio deixa sobre o do meio em que entra: ele se inverte onde o raio sai do objeto (into ? nc / nt : nt / nc)
+check-fix-generic-eta-inverted = use μ = n_from / n_to, o índice do meio que o raio deixa sobre o do meio em que entra: ele se inverte onde o raio sai do objeto (ali μ = n_interno / n_externo; ao entrar, μ = n_externo / n_interno)
 check-fix-generic-incident-reversed = passe como W a direção em que o raio viaja, não a oposta
 check-fix-generic-normal-not-facing = onde o raio sai do objeto, use em cada termo a normal voltada para o raio (a externa, invertida) ou a externa com o sinal trocado, mas não as duas coisas
 check-fix-generic-no-flip-inside = para um raio que chega de dentro, inverta a normal e a razão antes de refratar
@@ -378,3 +379,12 @@ check-suggest-indices-assumed = --inside { $inside } --outside 1 são vidro no a
 # check: vectors printed one number a line (issue 43, item 2)
 check-field-column-vector = `{ $field }` é impresso com um número por linha (como o cout << v do Eigen imprime um vetor): suas linhas não podem ser juntadas com segurança; imprima cada vetor em uma linha (Eigen: v.transpose(); nalgebra: v.transpose() ou {"{"}:?{"}"}; numpy: np.array2string(v, max_line_width=1000) ou v.tolist())
 check-suggest-column-vectors = as primeiras { $lines } linhas imprimem vetores com um número por linha (como o cout << v do Eigen), que nenhum padrão consegue juntar com segurança: imprima cada vetor em uma linha (Eigen: v.transpose(); nalgebra: v.transpose() ou {"{"}:?{"}"}; numpy: v.tolist()), cada um depois do seu nome, e peça de novo
+
+# check: bugs compostos nomeados como causas (issue 43, item 4)
+check-mistake-refracted-twice = refratado duas vezes em uma única travessia da superfície: T é o que a razão ao quadrado (μ²) dá
+check-mistake-fresnel-cos-sign = o código nunca transmite, em nenhum ângulo, embora k > 0: o sinal do cosseno se perdeu onde a refletância de Fresnel (ou a escolha de transmitir) é calculada
+check-mistake-normals-mixed = o lado decidido com uma normal (a geométrica) e refract recebe outra (a de shading), virada por essa decisão: onde as duas discordam, a normal passada não está voltada para o raio
+check-fix-generic-refracted-twice = chame refract uma vez por travessia da superfície: aqui T é refratado de novo (ou μ aplicado duas vezes), como com μ² = (n_origem / n_destino)²; mantenha o primeiro T e siga o raio até a próxima superfície
+check-fix-generic-fresnel-cos-sign = o teste de reflexão interna total não é a causa (abaixo de 15° nenhuma razão torna k negativo): onde F ou a escolha de transmitir é calculada, use cosθi sem o sinal, |N·I| (ou −N·I com N voltada para o raio); um cosseno negativo faz F ≥ 1, e o raio sempre reflete
+check-fix-generic-normals-mixed = decida o lado (entering, a razão) e vire a normal passada a refract com a mesma normal: a de shading para ambos, ou a geométrica para ambos (a geométrica serve para deslocar a origem do raio)
+check-fix-normals-print = Se o código decide o lado com outra normal que não a que passa (uma geométrica ao lado de uma de shading), registre também `entering`: assim o diagnóstico consegue distinguir.
