@@ -14,9 +14,16 @@ use super::{Dialect, Format, Options, Pattern};
 use crate::diagnosis::{Renderer, Summary};
 
 /// A vector as `debugPrintfEXT("(%f, %f, %f)", v.x, v.y, v.z)` prints it: C's `%f`, six
-/// decimals.
+/// decimals, `nan` for a NaN.
 fn printf_vector(v: Vec3) -> String {
-    let [x, y, z] = v.to_array().map(|c| format!("{c:.6}"));
+    let c_fixed = |c: f32| {
+        if c.is_nan() {
+            "nan".to_owned()
+        } else {
+            format!("{c:.6}")
+        }
+    };
+    let [x, y, z] = v.to_array().map(c_fixed);
     format!("({x}, {y}, {z})")
 }
 
@@ -262,4 +269,87 @@ fn without_entering_a_normal_that_faces_the_ray_on_most_lines_says_what_to_log()
         .find(|f| f.code == "normal_not_facing")
         .unwrap_or_else(|| panic!("{:?}", summary.diagnosis));
     assert!(finding.fix.contains("`entering`"), "{}", finding.fix);
+}
+
+// Item 5 of issue 43: the fix in the words of the user's own ecosystem.
+
+/// A Rust tracer's log of `count` hits, glam's `Vec3::refract(self, normal, eta)` (glam 0.30,
+/// `src/f32/vec3.rs`: GLSL's formula, `Vec3::ZERO` past the critical angle) called with the
+/// normal turned to face the ray, or, with `outward`, with the shape's outward normal on every
+/// hit; each call printed with `println!("refract I={:?} N={:?} eta={:?} entering={} -> {:?}",
+/// ...)` (glam's `Debug`: `Vec3(x, y, z)`).
+fn glam_log(count: usize, outward: bool) -> String {
+    let mut rng = Rng(4307);
+    let mut log = String::new();
+    for _ in 0..count {
+        let mut hit = Hit::random(&mut rng);
+        if outward && !hit.entering {
+            hit.normal = -hit.normal;
+        }
+        let t = hit.refracted(hit.eta);
+        let (i, n, eta, entering) = (hit.incident, hit.normal, hit.eta, hit.entering);
+        log.push_str(&format!(
+            "refract I={i:?} N={n:?} eta={eta:?} entering={entering} -> {t:?}\n"
+        ));
+    }
+    log
+}
+
+#[test]
+fn a_rust_tracer_on_glam_is_given_glam_s_words_not_glsl_s() {
+    let log = glam_log(1000, true);
+    assert!(log.starts_with("refract I=Vec3("), "{}", &log[..80]);
+    let (answers, summary) = check_shader(&log, true, None);
+    assert_named(&answers, &summary, "normal_not_facing");
+    let fix = &summary.diagnosis[0].fix;
+    assert!(fix.contains("incident.dot(normal) > 0.0"), "{fix}");
+    assert!(
+        !fix.contains("faceforward") && !fix.contains("vec3"),
+        "{fix}"
+    );
+    // The per-line explanation borrows no API's function either.
+    let first = answers.iter().find(|a| a["ok"] == false).unwrap();
+    assert!(!first.to_string().contains("faceforward"), "{first}");
+    let (answers, summary) = check_shader(&glam_log(1000, false), true, None);
+    assert_clean(&answers, &summary);
+    // A shader printing the same calls is still given GLSL's words.
+    let (_, summary) = check_shader(&outward_shader_log(), true, None);
+    assert!(summary.diagnosis[0].fix.contains("faceforward(N, I, N)"));
+}
+
+/// The glam log's calls printed by a shader (`debugPrintfEXT`) instead.
+fn outward_shader_log() -> String {
+    let mut rng = Rng(4307);
+    (0..1000)
+        .map(|_| {
+            let mut hit = Hit::random(&mut rng);
+            if !hit.entering {
+                hit.normal = -hit.normal;
+            }
+            let t = hit.refracted(hit.eta);
+            shader_line(&hit, t, true)
+        })
+        .collect()
+}
+
+#[test]
+fn a_shader_whose_normalize_hides_total_internal_reflection_is_told_to_test_before_it() {
+    // `vec3 T = normalize(refract(I, N, eta));`: normalize(vec3(0.0)) is NaN past the critical
+    // angle, printed `nan` by debugPrintfEXT.
+    let mut rng = Rng(4308);
+    let log: String = (0..1000)
+        .map(|_| {
+            let hit = Hit::random(&mut rng);
+            let t = hit.refracted(hit.eta);
+            shader_line(&hit, t / t.length(), true)
+        })
+        .collect();
+    let (answers, summary) = check_shader(&log, true, None);
+    assert_named(&answers, &summary, "missed_tir");
+    let fix = &summary.diagnosis[0].fix;
+    assert!(fix.contains("normalize(vec3(0.0)) is NaN"), "{fix}");
+    assert!(
+        !fix.contains("return vec3(0.0)"),
+        "not the built-in's code: {fix}"
+    );
 }

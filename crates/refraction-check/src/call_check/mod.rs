@@ -46,8 +46,9 @@ pub(crate) use pattern::Pattern;
 pub use record::Record;
 pub(crate) use verdict::{CallVerdict, verdict};
 
-use crate::diagnosis::{Evidence, LogTally, Summary};
+use crate::diagnosis::{Evidence, LogTally, Renderer, Summary};
 use gather::Gather;
+use refraction_kernel::api::Api;
 use refraction_tools::candidate_check::{self, Match};
 
 /// The JSON answer for one call.
@@ -330,6 +331,9 @@ struct Reader {
     format: Format,
     strict: bool,
     header: std::sync::OnceLock<Result<csv::Header, CsvError>>,
+    /// Whether a line printed a vector as Rust's glam prints one (`Vec3(x, y, z)`, `{:?}`):
+    /// the code is Rust on glam, whose fixes are in glam's words.
+    glam: std::sync::atomic::AtomicBool,
 }
 
 /// What one line holds before it is judged.
@@ -346,6 +350,10 @@ impl Reader {
     /// Reads one line's fields, as far as that can be done without the run's state.
     fn read(&self, line: &str) -> Read {
         let dialect = self.options.dialect;
+        // untranslated: glam's Debug output, `Vec3(x, y, z)` (DVec3, Vec3A alike)
+        if line.contains("Vec3(") || line.contains("Vec3A(") {
+            self.glam.store(true, std::sync::atomic::Ordering::Relaxed);
+        }
         Read::Record(match &self.format {
             Format::JsonLines => Record::from_json_line(dialect, line),
             Format::Pattern(pattern) => match pattern.capture(line) {
@@ -551,6 +559,7 @@ impl Session {
                 format,
                 strict,
                 header: std::sync::OnceLock::new(),
+                glam: std::sync::atomic::AtomicBool::new(false),
             },
             books: Books {
                 paths: paths.then(paths::Paths::new),
@@ -696,13 +705,17 @@ impl Session {
         &self.books.log
     }
 
-    /// The diagnosis of the lines so far, taken as one log.
+    /// The diagnosis of the lines so far, taken as one log, its fixes in the words of
+    /// `--renderer`, else of the language the log's lines reveal (GLSL's calls printed as glam
+    /// prints its vectors are Rust on glam), else of the API.
     #[must_use]
     pub fn summary(&self) -> Summary {
         let options = &self.reader.options;
-        self.books
-            .log
-            .summary(options.dialect.api(), options.renderer())
+        let api = options.dialect.api();
+        let glam = self.reader.glam.load(std::sync::atomic::Ordering::Relaxed);
+        let revealed = (glam && api == Some(Api::Glsl)).then_some(Renderer::Glam);
+        let renderer = options.renderer.or(revealed).or_else(|| options.renderer());
+        self.books.log.summary(api, renderer)
     }
 
     /// Whether every line so far was right and every path finished left right.

@@ -437,6 +437,71 @@ mod tests {
         assert!(chosen.contains("dr::select(outside_mask"), "{chosen}");
     }
 
+    /// Every fix a finding can be given: each slip on each side it takes, in the arguments or
+    /// the code, and each code a line names on its own.
+    fn every_fix() -> Vec<Fix> {
+        let mut all = Vec::new();
+        for location in [Location::Arguments, Location::Code] {
+            for slip in Slip::ALL {
+                for sides in [Sides::Both, Sides::Entering, Sides::Leaving] {
+                    let code = slip.code(sides);
+                    all.push(Fix {
+                        code,
+                        slip: Some(slip),
+                        sides,
+                        location,
+                    });
+                }
+            }
+            for code in Code::ALL {
+                all.push(Fix {
+                    code,
+                    slip: None,
+                    sides: Sides::Both,
+                    location,
+                });
+            }
+        }
+        all
+    }
+
+    #[test]
+    fn each_ecosystem_s_fix_uses_its_own_names_and_no_other_s() {
+        // Names only one ecosystem's code has (issue 43: a glam user was given GLSL's
+        // faceforward, an Eigen renderer smallpt's variables, a Python script Mitsuba's C++).
+        let ecosystems: [(Option<Renderer>, &[&str]); 6] = [
+            (Some(Renderer::Glsl), &["faceforward", "vec3("]),
+            (Some(Renderer::Glam), &["Vec3::", "incident.refract"]),
+            (Some(Renderer::Pbrt), &["cosTheta", "Refract("]),
+            (
+                Some(Renderer::Mitsuba),
+                &["dr::", "include/mitsuba", "si.wi"],
+            ),
+            (Some(Renderer::MitsubaPython), &["mi.fresnel", "mi.refract"]),
+            // Any renderer's own code (an Eigen renderer): the formula's terms only.
+            (None, &[]),
+        ];
+        let smallpt = ["nnt", "into?", "into ?", "nc/nt", "nc / nt"];
+        for (renderer, own) in ecosystems {
+            let mut quoted = 0;
+            for f in every_fix() {
+                let text = fix(renderer, None, &f);
+                let foreign = ecosystems
+                    .iter()
+                    .filter(|(other, _)| *other != renderer)
+                    .flat_map(|(_, names)| names.iter())
+                    .chain(&smallpt)
+                    .find(|name| text.contains(**name));
+                assert!(
+                    foreign.is_none(),
+                    "{renderer:?} {f:?}: {foreign:?} in {text}"
+                );
+                quoted += usize::from(own.iter().any(|name| text.contains(name)));
+            }
+            assert!(renderer.is_none() || quoted > 10, "{renderer:?}: {quoted}");
+        }
+    }
+
     #[test]
     fn without_a_renderer_the_fix_names_the_variable() {
         let across = of(None, Slip::RatioAcross, Sides::Both, Location::Code);
