@@ -77,6 +77,9 @@ def test_each_bug_in_the_calling_code_is_named_with_its_fix(student, code, fix, 
     assert r.verdict == code
     for words in fix:
         assert words in verdict["fix"], verdict["fix"]
+    # In the Python call's words, not Mitsuba's C++ (fresnel.h, Dr.Jit's C++ functions).
+    for cpp in ("dr::", "Float ", "fresnel.h", "si.wi"):
+        assert cpp not in verdict["fix"], verdict["fix"]
     assert not r.ok.all()
     assert verdict["lines"] == (~r.ok).sum(), "the one bug explains every wrong call"
     assert len(r.summary["diagnosis"]) == 1, r
@@ -128,7 +131,9 @@ def test_a_fresnel_that_never_transmits_is_not_passed_as_sampled_reflections():
     # own, but not all of them together.
     wi = list(calls.directions())
     r = check(wi, [None] * len(wi))
-    assert r.verdict == "false_tir", r
+    # Never, at any angle: the cosine's sign in the Fresnel term, not the test for total
+    # internal reflection.
+    assert r.verdict == "fresnel_cos_sign", r
     assert not r.ok.all()
 
 
@@ -169,3 +174,11 @@ def test_drjit_arrays_of_a_vectorised_variant_are_read_lane_by_lane():
         assert check(wi, wo).verdict == "eta_inverted"
     finally:
         mi.set_variant("scalar_rgb")
+
+
+def test_a_fix_is_in_the_script_s_words_unless_mitsuba_s_cpp_is_asked_for():
+    wi, wo = calls.calls(calls.other_root)
+    script = check(wi, wo).summary["diagnosis"][0]["fix"]
+    assert "mi.refract(wi, cos_theta_t, eta_ti)" in script, script
+    cpp = check(wi, wo, renderer="mitsuba").summary["diagnosis"][0]["fix"]
+    assert "dr::mulsign_neg(cos_theta_t_abs, cos_theta_i)" in cpp, cpp
