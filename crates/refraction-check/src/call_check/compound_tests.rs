@@ -181,7 +181,7 @@ fn check_eigen(log: &str) -> (Vec<Value>, Summary) {
     check_log(options, Format::JsonLines, log)
 }
 
-/// n_from / n_to for glass of 1.5 in air.
+/// `n_from / n_to` for glass of 1.5 in air.
 fn right_ratio(entering: bool) -> f64 {
     if entering { 1.0 / 1.5 } else { 1.5 }
 }

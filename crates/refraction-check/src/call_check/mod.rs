@@ -333,7 +333,7 @@ struct Reader {
     header: std::sync::OnceLock<Result<csv::Header, CsvError>>,
     /// Whether a line printed a vector as Rust's glam prints one (`Vec3(x, y, z)`, `{:?}`):
     /// the code is Rust on glam, whose fixes are in glam's words.
-    glam: std::sync::atomic::AtomicBool,
+    glam: core::sync::atomic::AtomicBool,
 }
 
 /// What one line holds before it is judged.
@@ -352,7 +352,7 @@ impl Reader {
         let dialect = self.options.dialect;
         // untranslated: glam's Debug output, `Vec3(x, y, z)` (DVec3, Vec3A alike)
         if line.contains("Vec3(") || line.contains("Vec3A(") {
-            self.glam.store(true, std::sync::atomic::Ordering::Relaxed);
+            self.glam.store(true, core::sync::atomic::Ordering::Relaxed);
         }
         Read::Record(match &self.format {
             Format::JsonLines => Record::from_json_line(dialect, line),
@@ -559,7 +559,7 @@ impl Session {
                 format,
                 strict,
                 header: std::sync::OnceLock::new(),
-                glam: std::sync::atomic::AtomicBool::new(false),
+                glam: core::sync::atomic::AtomicBool::new(false),
             },
             books: Books {
                 paths: paths.then(paths::Paths::new),
@@ -712,7 +712,7 @@ impl Session {
     pub fn summary(&self) -> Summary {
         let options = &self.reader.options;
         let api = options.dialect.api();
-        let glam = self.reader.glam.load(std::sync::atomic::Ordering::Relaxed);
+        let glam = self.reader.glam.load(core::sync::atomic::Ordering::Relaxed);
         let revealed = (glam && api == Some(Api::Glsl)).then_some(Renderer::Glam);
         let renderer = options.renderer.or(revealed).or_else(|| options.renderer());
         self.books.log.summary(api, renderer)
