@@ -77,7 +77,7 @@ check-and = und
 check-or = oder
 check-field-from-and-to = from und to (oder entering mit --inside und --outside)
 check-normal-fix-rtiow = die Normale des Trefferdatensatzes nach set_face_normal
-check-normal-fix-facing = die Normale umgedreht, wo immer dieses Skalarprodukt positiv ist
+check-normal-fix-facing = die Normale umgekehrt, wo immer dieses Skalarprodukt positiv ist
 check-normal-inward-entering = sie zeigt ins Objekt, und der Strahl tritt ein
 check-normal-inward-leaving = sie zeigt ins Objekt, und der Strahl tritt aus
 check-looks-other-root = die andere Lösung, mit umgekehrtem Vorzeichen der Quadratwurzel ({ $hint })
@@ -381,10 +381,10 @@ check-field-column-vector = `{ $field }` ist eine Zahl pro Zeile ausgegeben (wie
 check-suggest-column-vectors = die ersten { $lines } Zeilen geben Vektoren mit einer Zahl pro Zeile aus (wie Eigens cout << v), was kein Muster sicher zusammenfügen kann: gib jeden Vektor in einer Zeile aus (Eigen: v.transpose(); nalgebra: v.transpose() oder {"{"}:?{"}"}; numpy: v.tolist()), jeden nach seinem Namen, dann frag erneut
 
 # check: zusammengesetzte Fehler als Ursachen benannt (Issue 43, Punkt 4)
-check-mistake-refracted-twice = an einem Flächenübergang zweimal gebrochen: T ist, was das quadrierte Verhältnis (μ²) ergibt
+check-mistake-refracted-twice = bei einem Durchgang durch die Grenzfläche zweimal gebrochen: T ist, was das quadrierte Verhältnis (μ²) ergibt
 check-mistake-fresnel-cos-sign = der Code transmittiert nie, bei keinem Winkel, obwohl k > 0: das Vorzeichen des Kosinus ging dort verloren, wo der Fresnel-Reflexionsgrad (oder die Wahl zu transmittieren) berechnet wird
-check-mistake-normals-mixed = die Seite mit einer Normalen (der geometrischen) entschieden und refract eine andere (die Shading-Normale) übergeben, nach dieser Entscheidung gedreht: wo beide nicht übereinstimmen, zeigt die übergebene Normale nicht gegen den Strahl
-check-fix-generic-refracted-twice = ruf refract einmal pro Flächenübergang auf: T wird hier noch einmal gebrochen (oder μ zweimal angewandt), wie mit μ² = (n_von / n_nach)²; behalte das erste T und verfolge den Strahl bis zur nächsten Fläche
+check-mistake-normals-mixed = die Seite mit einer Normalen (der geometrischen) entschieden und refract eine andere (die Shading-Normale) übergeben, nach dieser Entscheidung umgekehrt: wo beide nicht übereinstimmen, zeigt die übergebene Normale nicht gegen den Strahl
+check-fix-generic-refracted-twice = ruf refract einmal pro Durchgang durch die Grenzfläche auf: T wird hier noch einmal gebrochen (oder μ zweimal angewandt), wie mit μ² = (n_von / n_nach)²; behalte das erste T und verfolge den Strahl bis zur nächsten Fläche
 check-fix-generic-fresnel-cos-sign = der Test auf Totalreflexion ist nicht die Ursache (unter 15° macht kein Verhältnis k negativ): wo F oder die Wahl zu transmittieren berechnet wird, nimm cosθi ohne Vorzeichen, |N·I| (oder −N·I mit N gegen den Strahl); ein negativer Kosinus macht F ≥ 1, also wird der Strahl immer reflektiert
-check-fix-generic-normals-mixed = entscheide die Seite (entering, das Verhältnis) und drehe die an refract übergebene Normale mit derselben Normalen: beide Male die Shading-Normale oder beide Male die geometrische (die geometrische bleibt für das Versetzen des Strahlursprungs)
+check-fix-generic-normals-mixed = entscheide die Seite (entering, das Verhältnis) und kehre die an refract übergebene Normale mit derselben Normalen um: beide Male die Shading-Normale oder beide Male die geometrische (die geometrische bleibt für das Versetzen des Strahlursprungs)
 check-fix-normals-print = Wenn der Code die Seite mit einer anderen Normalen entscheidet als der übergebenen (eine geometrische neben einer Shading-Normalen), gib auch `entering` aus: dann kann die Diagnose es unterscheiden.

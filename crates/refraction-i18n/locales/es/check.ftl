@@ -77,7 +77,7 @@ check-and = y
 check-or = o
 check-field-from-and-to = from y to (o entering con --inside y --outside)
 check-normal-fix-rtiow = la normal del registro de impacto tras set_face_normal
-check-normal-fix-facing = la normal girada allí donde ese producto escalar es positivo
+check-normal-fix-facing = la normal invertida allí donde ese producto escalar es positivo
 check-normal-inward-entering = apunta hacia dentro del objeto, y el rayo está entrando
 check-normal-inward-leaving = apunta hacia dentro del objeto, y el rayo está saliendo
 check-looks-other-root = la otra raíz, con el signo de la raíz cuadrada invertido ({ $hint })
@@ -383,8 +383,8 @@ check-suggest-column-vectors = las primeras { $lines } líneas imprimen vectores
 # check: errores compuestos nombrados como causas (issue 43, punto 4)
 check-mistake-refracted-twice = refractado dos veces en un mismo cruce de superficie: T es lo que da la razón al cuadrado (μ²)
 check-mistake-fresnel-cos-sign = el código nunca transmite, en ningún ángulo, aunque k > 0: el signo del coseno se perdió donde se calcula la reflectancia de Fresnel (o la decisión de transmitir)
-check-mistake-normals-mixed = el lado se decide con una normal (la geométrica) y refract recibe otra (la de sombreado), girada según esa decisión: donde ambas discrepan, la normal pasada no mira hacia el rayo
+check-mistake-normals-mixed = el lado se decide con una normal (la geométrica) y refract recibe otra (la de sombreado), invertida según esa decisión: donde ambas discrepan, la normal pasada no mira hacia el rayo
 check-fix-generic-refracted-twice = llama a refract una vez por cada cruce de superficie: aquí T se refracta otra vez (o μ se aplica dos veces), como con μ² = (n_origen / n_destino)²; conserva el primer T y sigue el rayo hasta la siguiente superficie
-check-fix-generic-fresnel-cos-sign = la prueba de reflexión total interna no es la causa (por debajo de 15° ninguna razón hace k negativo): donde se calcula F o la decisión de transmitir, toma cosθi sin su signo, |N·I| (o −N·I con N mirando hacia el rayo); un coseno negativo hace F ≥ 1, y el rayo siempre se refleja
-check-fix-generic-normals-mixed = decide el lado (entering, la razón) y gira la normal que pasas a refract con la misma normal: la de sombreado para ambos, o la geométrica para ambos (la geométrica sirve para desplazar el origen del rayo)
+check-fix-generic-fresnel-cos-sign = la prueba de reflexión total no es la causa (por debajo de 15° ninguna razón hace k negativo): donde se calcula F o la decisión de transmitir, toma cosθi sin su signo, |N·I| (o −N·I con N mirando hacia el rayo); un coseno negativo hace F ≥ 1, y el rayo siempre se refleja
+check-fix-generic-normals-mixed = decide el lado (entering, la razón) e invierte la normal que pasas a refract con la misma normal: la de sombreado para ambos, o la geométrica para ambos (la geométrica sirve para desplazar el origen del rayo)
 check-fix-normals-print = Si el código decide el lado con otra normal distinta de la que pasa (una geométrica junto a una de sombreado), registra también `entering`: así el diagnóstico puede distinguirlo.

@@ -311,7 +311,7 @@ check-where-some = sur { $count } des { $all } lignes jugées
 check-fix-pass = passe `{ $code }`
 check-fix-write = écris `{ $code }`
 check-fix-restore = rétablis `{ $code }`
-check-fix-generic-eta-inverted = utilise μ = n_from / n_to, l’indice du milieu que le rayon quitte sur celui du milieu où il entre : il s’inverse là où le rayon sort de l’objet (là μ = n_intérieur / n_extérieur ; en entrant, μ = n_extérieur / n_intérieur)
+check-fix-generic-eta-inverted = utilise μ = n_from / n_to, l’indice du milieu que le rayon quitte sur celui du milieu où il entre : il s’inverse là où le rayon sort de l’objet (là μ = n_intérieur / n_extérieur ; en entrant, μ = n_extérieur / n_intérieur)
 check-fix-generic-incident-reversed = passe comme W la direction de propagation du rayon, pas son opposée
 check-fix-generic-normal-not-facing = là où le rayon sort de l’objet, utilise dans chaque terme la normale tournée vers le rayon (l’extérieure, retournée), ou l’extérieure avec son signe changé, mais pas les deux
 check-fix-generic-no-flip-inside = pour un rayon qui arrive de l’intérieur, retourne la normale et inverse le rapport avant de réfracter
@@ -381,10 +381,10 @@ check-field-column-vector = `{ $field }` est imprimé un nombre par ligne (comme
 check-suggest-column-vectors = les { $lines } premières lignes impriment des vecteurs un nombre par ligne (comme le cout << v d’Eigen), qu’aucun motif ne peut joindre à coup sûr : imprime chaque vecteur sur une ligne (Eigen : v.transpose() ; nalgebra : v.transpose() ou {"{"}:?{"}"} ; numpy : v.tolist()), chacun après son nom, puis redemande
 
 # check : bogues composés nommés comme causes (issue 43, point 4)
-check-mistake-refracted-twice = réfracté deux fois pour une seule traversée de surface : T est ce que donne le rapport au carré (μ²)
-check-mistake-fresnel-cos-sign = le code ne transmet jamais, à aucun angle, bien que k > 0 : le signe du cosinus est perdu là où la réflectance de Fresnel (ou le choix de transmettre) est calculée
-check-mistake-normals-mixed = le côté décidé avec une normale (la géométrique) et refract reçoit une autre (celle d’ombrage), retournée selon cette décision : là où les deux divergent, la normale passée ne fait pas face au rayon
-check-fix-generic-refracted-twice = appelez refract une fois par traversée de surface : T est ici réfracté une seconde fois (ou μ appliqué deux fois), comme avec μ² = (n_départ / n_arrivée)² ; gardez le premier T et suivez le rayon jusqu’à la surface suivante
-check-fix-generic-fresnel-cos-sign = le test de réflexion totale interne n’est pas la cause (sous 15°, aucun rapport ne rend k négatif) : là où F ou le choix de transmettre est calculé, prenez cosθi sans son signe, |N·I| (ou −N·I avec N face au rayon) ; un cosinus négatif donne F ≥ 1, et le rayon est toujours réfléchi
-check-fix-generic-normals-mixed = décidez le côté (entering, le rapport) et retournez la normale passée à refract avec la même normale : celle d’ombrage pour les deux, ou la géométrique pour les deux (la géométrique sert à décaler l’origine du rayon)
-check-fix-normals-print = Si le code décide du côté avec une autre normale que celle qu’il passe (une normale géométrique à côté d’une normale d’ombrage), journalisez aussi `entering` : le diagnostic pourra alors les distinguer.
+check-mistake-refracted-twice = réfracté deux fois pour une seule traversée de surface : T est ce que donne le rapport au carré (μ²)
+check-mistake-fresnel-cos-sign = le code ne transmet jamais, à aucun angle, bien que k > 0 : le signe du cosinus est perdu là où la réflectance de Fresnel (ou le choix de transmettre) est calculée
+check-mistake-normals-mixed = le côté décidé avec une normale (la géométrique) et refract reçoit une autre (celle d’ombrage), retournée selon cette décision : là où les deux divergent, la normale passée ne fait pas face au rayon
+check-fix-generic-refracted-twice = appelez refract une fois par traversée de surface : T est ici réfracté une seconde fois (ou μ appliqué deux fois), comme avec μ² = (n_départ / n_arrivée)² ; gardez le premier T et suivez le rayon jusqu’à la surface suivante
+check-fix-generic-fresnel-cos-sign = le test de réflexion totale n’est pas la cause (sous 15°, aucun rapport ne rend k négatif) : là où F ou le choix de transmettre est calculé, prenez cosθi sans son signe, |N·I| (ou −N·I avec N face au rayon) ; un cosinus négatif donne F ≥ 1, et le rayon est toujours réfléchi
+check-fix-generic-normals-mixed = décidez le côté (entering, le rapport) et retournez la normale passée à refract avec la même normale : celle d’ombrage pour les deux, ou la géométrique pour les deux (la géométrique sert à décaler l’origine du rayon)
+check-fix-normals-print = Si le code décide du côté avec une autre normale que celle qu’il passe (une normale géométrique à côté d’une normale d’ombrage), journalisez aussi `entering` : le diagnostic pourra alors les distinguer.
