@@ -207,8 +207,8 @@ pub enum Command {
         #[arg(long, value_name = "+z|X Y Z", conflicts_with = "api", allow_hyphen_values = true, value_parser = parse_normal)]
         normal: Option<[f64; 3]>,
         /// Whose code the log comes from, so that the fix names the line to change in it:
-        /// mitsuba, tungsten, cycles, threejs, pbrt, smallpt, rtiow, glsl (with --api, the
-        /// API's by default).
+        /// mitsuba, tungsten, cycles, threejs, pbrt, smallpt, rtiow, glsl, glam, mitsuba-python
+        /// (with --api, the API's by default; glam's for a GLSL log printing glam's `Vec3(..)`).
         #[arg(long, value_name = "NAME", value_parser = parse_renderer)]
         renderer: Option<Renderer>,
         /// Read the log's first lines and print a --pattern for them (and the command that
