@@ -353,3 +353,27 @@ fn a_shader_whose_normalize_hides_total_internal_reflection_is_told_to_test_befo
         "not the built-in's code: {fix}"
     );
 }
+
+#[test]
+fn an_own_fresnel_that_never_transmits_is_named_by_its_cosine_not_its_tir_test() {
+    // The Eigen renderer's Fresnel term taken with the cosine's sign lost (`double cosi =
+    // d.dot(n);` for `-d.dot(n)`): Schlick's F = R0 + (1 − R0)(1 − cosθi)⁵ ≥ 1, so every ray
+    // reflects and the line logs `null`, also near normal incidence.
+    let right = eigen_log(1000, false, right_ratio);
+    let never: String = right
+        .lines()
+        .map(|line| {
+            let kept = &line[..line.find("\"t_yours\"").unwrap()];
+            format!("{kept}\"t_yours\": null}}\n")
+        })
+        .collect();
+    let (_, summary) = check_eigen(&never);
+    let verdict = &summary.diagnosis[0];
+    assert_eq!(verdict.code, "fresnel_cos_sign", "{:?}", summary.diagnosis);
+    assert!(
+        verdict.fix.contains("|N·I|") && !borrows(&verdict.fix),
+        "{}",
+        verdict.fix
+    );
+    assert_eq!(summary.diagnosis.len(), 1, "{:?}", summary.diagnosis);
+}
