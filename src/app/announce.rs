@@ -12,7 +12,7 @@
 use egui::accesskit::{Live, Role};
 use egui::{Context, Id, Ui};
 use refraction_deck::describe::{Shown, StepShown};
-use refraction_diagram::scene_words;
+use refraction_diagram::{scene_description, scene_title};
 use refraction_model::ExplorerState;
 use refraction_model::describe::{self, Answer};
 
@@ -76,7 +76,7 @@ pub(super) fn page_words(explorer: &Explorer) -> Vec<String> {
             count: deck.steps.len(),
         });
     let scene = explorer.scenes().scene();
-    let (title, about) = (scene_words::title(scene), scene_words::description(scene));
+    let (title, about) = (scene_title(scene), scene_description(scene));
     let accuracy = View::Accuracy.label();
     let shown = match explorer.view() {
         View::Interface => Shown::Interface,

@@ -8,7 +8,7 @@ use super::geometry::Rect;
 use refraction_model::INDEX_RANGE;
 
 /// The least and the most the diagram can be zoomed.
-pub const ZOOM_RANGE: (f32, f32) = (0.4, 4.0);
+pub(crate) const ZOOM_RANGE: (f32, f32) = (0.4, 4.0);
 
 /// How the view is moved from its fitted place: a shift of the hit point in canvas pixels and a
 /// zoom factor about it.
@@ -139,13 +139,13 @@ pub const SMALLEST_TEXT: f32 = 13.0;
 /// The label font size in pixels for a canvas `size` pixels wide and high: larger canvases
 /// (a projector, a 1080p export) get larger text, within limits.
 #[must_use]
-pub fn font_size(size: Vec2) -> f32 {
+pub(crate) fn font_size(size: Vec2) -> f32 {
     (size.min_element() / 48.0).clamp(13.0, 30.0)
 }
 
 /// The index scale's width in label font sizes: the material names (`diamond`) left of its
 /// line and the μi marker, the μt marker and the values right of it.
-pub const SCALE_WIDTH: f32 = 8.8;
+pub(crate) const SCALE_WIDTH: f32 = 8.8;
 
 /// Where everything goes on a canvas of one size.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -48,13 +48,13 @@ pub(crate) use verdict::{CallVerdict, verdict};
 
 use crate::diagnosis::{Evidence, LogTally, Summary};
 use gather::Gather;
-use refraction_tools::candidate_check::{self, Match};
+use refraction_tools::{CheckAnswer, Match};
 
 /// The JSON answer for one call.
 #[derive(Serialize)]
 struct Answer<'a> {
     #[serde(flatten)]
-    verdict: candidate_check::Answer<'a>,
+    verdict: CheckAnswer<'a>,
     api_result: &'a serde_json::Value,
     mistakes: Vec<&'static str>,
     alternatives: Vec<Vec<&'static str>>,
@@ -68,7 +68,7 @@ struct Answer<'a> {
 pub(crate) fn answer_line(call: &Call, verdict: &CallVerdict) -> String {
     let names = |codes: &[Code]| codes.iter().map(|c| c.name()).collect::<Vec<_>>();
     let answer = Answer {
-        verdict: candidate_check::Answer {
+        verdict: CheckAnswer {
             ok: verdict.ok,
             matches: verdict.matches.map(Match::name),
             explanation: &verdict.explanation,
