@@ -1,4 +1,4 @@
-//! Animations as GIF files for slides: the frames of [`refraction_diagram::animation`] drawn as
+//! Animations as GIF files for slides: the frames of [`refraction_diagram::Animation`] drawn as
 //! the PNG is, each reduced to its own 256-colour palette, looping.
 
 use std::path::Path;

@@ -37,7 +37,7 @@ const MARGIN: f32 = 40.0;
 /// The smallest words of a diagram on paper, in points: a 10-point box, so that the type is
 /// 9.5 points and more where a label's `textLength` fits a viewer's glyphs to it (measured
 /// 9.1 points at a 9.5-point box).
-pub(crate) const SMALLEST_LABEL_PT: f32 = 10.0;
+pub const SMALLEST_LABEL_PT: f32 = 10.0;
 
 /// Points on paper per pixel of the diagram's canvas.
 const PT_PER_PX: f32 = SMALLEST_LABEL_PT / SMALLEST_TEXT;
@@ -96,11 +96,11 @@ const QR_SIDE: f32 = 84.0;
 /// The smallest module of a QR code on paper, in points (0.53 mm; 3.1 pixels of a page
 /// scanned or photographed at 150 dpi, where a phone's reader needs about 2): a longer link's
 /// code grows rather than its modules shrink.
-pub(crate) const QR_MODULE_PT: f32 = 1.5;
+pub const QR_MODULE_PT: f32 = 1.5;
 
 /// The largest side of a step's QR code, in points (about 56 mm, a third of the page's
 /// height with its link): a link whose code would need more is refused.
-pub(crate) const QR_MOST_SIDE: f32 = 160.0;
+pub const QR_MOST_SIDE: f32 = 160.0;
 
 /// The size of the link's words beside its QR code, in points.
 const LINK_SIZE: f32 = 8.0;
