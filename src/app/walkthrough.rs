@@ -1,6 +1,6 @@
 //! The guided walk through the paper's derivation: one step at a time with its equations and
-//! live numbers (from [`refraction_diagram::walkthrough`]), the diagram highlighting what the step is
-//! about, and the "animate μ → 1" morph that shows why the paper picks its signs.
+//! live numbers (from [`refraction_diagram::walkthrough_steps`]), the diagram highlighting
+//! what the step is about, and the "animate μ → 1" morph that shows why the paper picks its signs.
 
 use egui::{Button, Context, RichText, Ui};
 use refraction_i18n::t;

@@ -8,7 +8,7 @@ use super::geometry::Rect;
 use refraction_model::INDEX_RANGE;
 
 /// The least and the most the diagram can be zoomed.
-pub(crate) const ZOOM_RANGE: (f32, f32) = (0.4, 4.0);
+pub const ZOOM_RANGE: (f32, f32) = (0.4, 4.0);
 
 /// How the view is moved from its fitted place: a shift of the hit point in canvas pixels and a
 /// zoom factor about it.

@@ -61,7 +61,7 @@ pub use font::Typeface;
 pub use fresnel_plot::{FresnelCurve, FresnelPlot, PlotFrame, fresnel_plot};
 pub use geometry::{Colour, Rect};
 pub use intensities::Shares;
-pub use layout::{IndexScale, Layout, PanZoom, SMALLEST_TEXT, Viewport};
+pub use layout::{IndexScale, Layout, PanZoom, SMALLEST_TEXT, Viewport, ZOOM_RANGE};
 pub use obstacle::Obstacle;
 pub use overlay::{Focus, Overlay, StudentRay, VectorNames};
 pub use picture::{Diagram, Handle, TOUCH_TARGET, diagram_summary};

@@ -421,8 +421,9 @@ pub(crate) fn wrap(face: &Typeface, text: &str, size: f32, width: f32) -> String
     wrap_lines(face, text, size, width, false)
 }
 
-/// [`wrap`], but a word wider than a line is cut into pieces that fit (a page's text, where
-/// one unbroken word must not run off the paper). Linear in the text's length: each character
+/// `text` broken into lines no wider than `width` pixels at font size `size`, as the labels
+/// wrap, but a word wider than a line is cut into pieces that fit (a page's text, where one
+/// unbroken word must not run off the paper). Linear in the text's length: each character
 /// is measured once or twice.
 #[must_use]
 pub fn wrap_breaking_words(face: &Typeface, text: &str, size: f32, width: f32) -> String {

@@ -33,7 +33,7 @@ use refraction_model::ExplorerState;
 use crate::state_file;
 
 /// The link format this version writes and reads (`v=1` may be given; it is not written).
-pub(crate) const FORMAT: u32 = 1;
+pub const FORMAT: u32 = 1;
 
 /// What a link opens.
 #[derive(Clone, Debug, PartialEq)]
@@ -73,7 +73,7 @@ const REASON_CHARS: usize = 200;
 /// reorders or hides the text around it (bidirectional overrides, embeddings, isolates and
 /// marks, zero-width characters, the byte order mark).
 #[must_use]
-pub(crate) fn is_unseen(c: char) -> bool {
+pub fn is_unseen(c: char) -> bool {
     c.is_control()
         || matches!(
             c,
@@ -347,7 +347,7 @@ pub fn url(base: &str, link: &Link) -> String {
 
 /// The part that asks for the student's view: the question, the diagram across the screen,
 /// handles a finger can take, and nothing of the teacher's.
-pub(crate) const STUDENT_VIEW: &str = "view=student";
+pub const STUDENT_VIEW: &str = "view=student";
 
 /// [`url()`] for the class's own devices (what a QR code opens): the link that also asks for
 /// the student's view ([`STUDENT_VIEW`]).

@@ -4,7 +4,7 @@
 //! etai_over_etat, refracted`, Mitsuba's `wi, n, eta, wo`, with the optional truth). The
 //! explorer opens that case, drawn in the convention in use (shown in the panel), says what is
 //! wrong and why, and draws the student's vector beside the right one. The verdicts are those of
-//! [`refraction_tools::candidate_check`] and [`refraction_check`], so the window and
+//! [`refraction_tools::check_t`] and [`refraction_check`], so the window and
 //! `check` agree.
 
 mod api;

@@ -3,7 +3,7 @@
 //! from JSON, a `--pattern` log or CSV into a [`Record`], judged on its own (a [`Judgement`]:
 //! for an API's call, its [`verdict()`]), and counted toward the diagnosis of the whole log
 //! ([`crate::diagnosis`], which names the one mistake behind all the wrong lines). Which of the
-//! four candidates a T is comes from [`refraction_tools::candidate_check`].
+//! four candidates a T is comes from [`refraction_tools::check_t`].
 //!
 //! In an API's dialect, each line carries the API's own argument names and what came back (see
 //! [`fields`]), with optional truth (`from`, `to`, `travel`, `entering`); the answer says
