@@ -52,7 +52,7 @@ impl Colour {
 
     /// The colour's relative luminance (WCAG 2): 0 for black, 1 for white; opacity ignored.
     #[must_use]
-    pub fn luminance(self) -> f32 {
+    pub(crate) fn luminance(self) -> f32 {
         let linear = |c: u8| {
             let c = f32::from(c) / 255.0;
             if c <= 0.040_45 {

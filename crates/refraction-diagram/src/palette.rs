@@ -100,7 +100,7 @@ impl Theme {
 
     /// Whether the background is dark.
     #[must_use]
-    pub fn is_dark(self) -> bool {
+    pub(crate) fn is_dark(self) -> bool {
         self == Self::HighContrastDark
     }
 }
@@ -295,7 +295,7 @@ impl Palette {
 
     /// [`Palette::text_shade`] on the fill `back` (a banner's) instead of the background.
     #[must_use]
-    pub fn text_shade_on(&self, colour: Colour, back: Colour) -> Colour {
+    pub(crate) fn text_shade_on(&self, colour: Colour, back: Colour) -> Colour {
         (7_u8..=20)
             .map(|i| colour.lerp(self.text_toward, f32::from(i) / 20.0))
             .find(|shade| shade.over(back).contrast(back) >= 4.6)

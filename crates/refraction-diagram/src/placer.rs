@@ -381,7 +381,7 @@ impl<'f> Placer<'f> {
     /// Places every label of `labels` in order, each inside the bounds given with it, as
     /// its need says.
     #[must_use]
-    pub fn place_all(
+    pub(crate) fn place_all(
         &mut self,
         labels: impl IntoIterator<Item = (Label, Rect, Need)>,
     ) -> Placement {

@@ -60,7 +60,7 @@ impl QrCode {
 
     /// Whether the module at `column`, `row` (from the top left, quiet zone excluded) is dark.
     #[must_use]
-    pub fn is_dark(&self, column: usize, row: usize) -> bool {
+    pub(crate) fn is_dark(&self, column: usize, row: usize) -> bool {
         column < self.width && row < self.width && self.dark[row * self.width + column]
     }
 

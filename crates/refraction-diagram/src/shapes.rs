@@ -242,7 +242,7 @@ fn polylines(points: &[Vec2], stroke: &Stroke, out: &mut Vec<Primitive>) {
 impl Figure {
     /// The arrowhead length for a shaft `width` pixels wide.
     #[must_use]
-    pub fn head_length(width: f32) -> f32 {
+    pub(crate) fn head_length(width: f32) -> f32 {
         (width * 4.0).max(9.0)
     }
 
