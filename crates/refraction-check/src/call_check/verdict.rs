@@ -17,9 +17,8 @@ use crate::diagnosis::Code;
 use crate::diagnosis::formula::{self, Situation};
 use crate::diagnosis::{self, Codes, Evidence, Missing, Readings, Side, Told};
 use refraction_model::log_map::{self, LinePoint};
-use refraction_tools::candidate_check::{self, Match};
-use refraction_tools::solve::{Precision, Request};
 use refraction_tools::vector_text::{angle, length};
+use refraction_tools::{MATCH_ANGLE, Match, Precision, Request, check_t};
 
 /// What a wrong result looks like.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -236,7 +235,7 @@ fn physical(meaning: &Meaning<f64>, got: Got) -> (Option<Match>, Option<[f64; 3]
         Got::Vector(v) => v.to_array(),
         Got::Nothing => [0.0; 3],
     };
-    candidate_check::check(&request, yours).map_or((None, None), |v| (v.matches, v.correct))
+    check_t(&request, yours).map_or((None, None), |v| (v.matches, v.correct))
 }
 
 /// The explanations as sets of codes, and all their codes in order.
@@ -355,7 +354,7 @@ fn judge_with<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<CallVerdict
         &readings,
         seen,
         ok && sampled.is_none(),
-        candidate_check::MATCH_ANGLE.max(2.0 * returns.distance),
+        MATCH_ANGLE.max(2.0 * returns.distance),
     );
     Ok(CallVerdict {
         ok,
