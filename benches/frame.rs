@@ -12,12 +12,9 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use egui::{Context, Event, Modifiers, PointerButton, Pos2, RawInput, Rect, Vec2};
-use refraction_diagram::font::Typeface;
-use refraction_diagram::geometry::Colour;
-use refraction_diagram::obstacle::Obstacle;
-use refraction_diagram::placer::{Need, Placer};
-use refraction_diagram::shapes::{Align, Label};
-use refraction_diagram::{SceneLayout, ScenePicture};
+use refraction_diagram::{
+    Align, Colour, Label, Need, Obstacle, Placer, SceneLayout, ScenePicture, Typeface,
+};
 use refraction_explorer::app::Explorer;
 use refraction_model::ExplorerState;
 use refraction_scene::{Scene, SourceKind, catalogue};

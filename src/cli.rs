@@ -12,13 +12,12 @@ use std::path::PathBuf;
 
 use clap::{CommandFactory as _, Parser, Subcommand, ValueEnum};
 use refraction_check::Renderer;
-use refraction_diagram::animation::Animation;
-use refraction_diagram::palette::Theme;
+use refraction_diagram::{Animation, palette::Theme};
 use refraction_i18n::Locale;
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
 use refraction_scene::DEFAULT_SCENE;
-use refraction_tools::solve::Precision;
+use refraction_tools::Precision;
 
 use crate::app::View;
 
@@ -451,7 +450,7 @@ pub enum ArgError {
     Convention(String),
     /// A `--normal` that is neither an axis nor a vector.
     #[error("--normal: {0}: expected +z, -z, +x... or three numbers")]
-    Normal(#[source] refraction_tools::error::VectorError),
+    Normal(#[source] refraction_tools::VectorError),
     /// A `--normal` of zero length or with a component that is not finite.
     #[error("--normal must be a finite vector other than zero, not {0}")]
     ZeroNormal(String),

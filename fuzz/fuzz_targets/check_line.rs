@@ -9,7 +9,7 @@ mod message;
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {
     if let Ok(line) = std::str::from_utf8(data) {
-        match refraction_tools::candidate_check::answer(line) {
+        match refraction_tools::check_line(line) {
             Ok((text, verdict)) => {
                 answer::assert_json(&text);
                 message::assert_message(&verdict.explanation, data);

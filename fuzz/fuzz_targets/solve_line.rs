@@ -8,7 +8,7 @@ mod message;
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {
     if let Ok(line) = std::str::from_utf8(data) {
-        match refraction_tools::solve::answer(line) {
+        match refraction_tools::solve_line(line) {
             Ok(text) => answer::assert_json(&text),
             Err(e) => message::assert_message(&e.to_string(), data),
         }

@@ -4,14 +4,14 @@
 #[path = "message.rs"]
 mod message;
 
-use refraction_tools::state_file;
+use refraction_tools::{parse_state, state_to_json};
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {
     if let Ok(text) = std::str::from_utf8(data) {
-        match state_file::parse(text) {
+        match parse_state(text) {
             Ok(state) => {
-                let line = state_file::to_json(&state);
-                assert_eq!(state_file::parse(&line).ok(), Some(state), "{line}");
+                let line = state_to_json(&state);
+                assert_eq!(parse_state(&line).ok(), Some(state), "{line}");
             }
             Err(e) => message::assert_message(&e.to_string(), data),
         }

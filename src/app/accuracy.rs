@@ -10,10 +10,10 @@ use egui::{Grid, ProgressBar, RichText, Ui};
 use glam::Vec2;
 
 use refraction_bench::Config;
-use refraction_diagram::accuracy_plot::{marker_positions, point_label, primitives};
-use refraction_diagram::font::Typeface;
-use refraction_diagram::numbers::number;
-use refraction_diagram::palette::Palette;
+use refraction_diagram::{
+    Typeface, accuracy_markers, accuracy_plot, accuracy_point_label, numbers::number,
+    palette::Palette,
+};
 use refraction_model::report::Report;
 
 /// What the background measurement has reached.
@@ -102,7 +102,7 @@ impl AccuracyView {
         if let Some(best) = report.fastest_accurate() {
             let verdict = t!(
                 "accuracy-verdict",
-                variant = point_label(best),
+                variant = accuracy_point_label(best),
                 time = number(best.ns_per_ray, 2),
                 error = number(best.max_err_hard_eps_kappa, 1)
             );
@@ -133,13 +133,13 @@ fn plot(ui: &mut Ui, report: &Report, palette: &Palette) {
     super::paint::paint(
         &painter,
         &to_screen,
-        &primitives(report, size, &face, palette),
+        &accuracy_plot(report, size, &face, palette),
     );
     let Some(pointer) = response.hover_pos() else {
         return;
     };
     let at = to_screen.inverse().transform_pos(pointer);
-    let nearest = marker_positions(report, size)
+    let nearest = accuracy_markers(report, size)
         .into_iter()
         .zip(&report.rows)
         .map(|(p, row)| (p.distance(Vec2::new(at.x, at.y)), row))
@@ -148,7 +148,7 @@ fn plot(ui: &mut Ui, report: &Report, palette: &Palette) {
     if let Some((_, row)) = nearest {
         response.on_hover_text(t!(
             "accuracy-hover",
-            name = point_label(row),
+            name = accuracy_point_label(row),
             time = number(row.ns_per_ray, 3),
             error = number(row.max_err_hard_eps_kappa, 3)
         ));
@@ -170,7 +170,7 @@ fn table(ui: &mut Ui, report: &Report) {
         }
         ui.end_row();
         for r in &report.rows {
-            ui.label(point_label(r));
+            ui.label(accuracy_point_label(r));
             ui.label(number(r.ns_per_ray, 2));
             ui.label(refraction_i18n::decimal(&format!(
                 "{:.2e}",

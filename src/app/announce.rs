@@ -12,9 +12,9 @@
 use egui::accesskit::{Live, Role};
 use egui::{Context, Id, Ui};
 use refraction_deck::describe::{Shown, StepShown};
-use refraction_diagram::scene_words;
+use refraction_diagram::{scene_description, scene_title};
 use refraction_model::ExplorerState;
-use refraction_model::describe::{self, Answer};
+use refraction_model::describe::{self, Disclosure};
 
 use super::{Explorer, View};
 
@@ -66,7 +66,7 @@ fn status() -> Id {
 /// view, and the diagram (or the scene) with the step's answer kept out while it is hidden.
 pub(super) fn page_words(explorer: &Explorer) -> Vec<String> {
     let lesson = explorer.lesson();
-    let answer = Answer::hidden_if(lesson.hides_answer());
+    let answer = Disclosure::hidden_if(lesson.hides_answer());
     let step = lesson
         .current()
         .zip(lesson.deck.as_ref())
@@ -76,7 +76,7 @@ pub(super) fn page_words(explorer: &Explorer) -> Vec<String> {
             count: deck.steps.len(),
         });
     let scene = explorer.scenes().scene();
-    let (title, about) = (scene_words::title(scene), scene_words::description(scene));
+    let (title, about) = (scene_title(scene), scene_description(scene));
     let accuracy = View::Accuracy.label();
     let shown = match explorer.view() {
         View::Interface => Shown::Interface,
@@ -116,7 +116,7 @@ pub(super) fn follow(ui: &Ui, explorer: &Explorer) {
             if pressed || explorer.animating() || rested < SETTLE_S {
                 ctx.request_repaint_after_secs((SETTLE_S - rested).max(0.05) as f32);
             } else {
-                let answer = Answer::hidden_if(scope.hidden);
+                let answer = Disclosure::hidden_if(scope.hidden);
                 if let Some(sentence) = describe::change(before, state, answer) {
                     spoken.say(sentence);
                 }

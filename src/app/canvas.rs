@@ -19,7 +19,7 @@ use refraction_i18n::t;
 use super::paint::{color, hover_left_out, paint};
 use super::steps::{self, Reach};
 use refraction_diagram::{Diagram, Overlay};
-use refraction_model::describe::{self, Answer};
+use refraction_model::describe::{self, Disclosure};
 use refraction_model::{ExplorerState, HandleId};
 
 /// Applies the keys pressed while `handle` has focus: the arrows move its value a step (→ and
@@ -295,7 +295,7 @@ pub(super) fn show(ui: &mut Ui, state: &mut ExplorerState, overlay: &mut Overlay
     );
     response.widget_info(|| WidgetInfo::labeled(Role::Image, true, &after.summary));
     // The diagram in words, as the describer says it, after the banner's name.
-    let answer = Answer::hidden_if(overlay.hide_answer);
+    let answer = Disclosure::hidden_if(overlay.hide_answer);
     ui.ctx().accesskit_node_builder(response.id, |node| {
         node.set_description(describe::interface(state, answer).join(" "));
     });

@@ -11,8 +11,8 @@ use egui::containers::menu::{MenuButton, MenuConfig};
 use egui::{Button, Context, PopupCloseBehavior, Ui};
 use refraction_i18n::t;
 
-use refraction_diagram::intensities::Polarisation;
-use refraction_diagram::wavefronts::WaveOptions;
+use refraction_diagram::WaveOptions;
+use refraction_model::Polarisation;
 
 /// The *Effects* menu's icon in presentation's bar.
 const EFFECTS_ICON: &str = "✨";

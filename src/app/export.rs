@@ -13,15 +13,12 @@ use egui::{ComboBox, DragValue, ProgressBar, TextEdit, Ui};
 use super::background::{self, Job as Background};
 use super::file_dialog::{self, Kind, Target, WriteRefusal};
 use super::status::{self, Look, Status, not_exported};
-use refraction_diagram::Overlay;
-use refraction_diagram::animation::Animation;
-use refraction_diagram::numbers::number;
-use refraction_diagram::overlay::PanZoom;
+use refraction_diagram::{Animation, Overlay, PanZoom, numbers::number};
 use refraction_files::check_writable;
 use refraction_i18n::t;
 use refraction_model::ExplorerState;
 use refraction_render::animation::{AnimationSpec, FPS_LIMITS, FRAME_LIMITS, export_gif};
-use refraction_render::format::{ImageFormat, UnsupportedFormat};
+use refraction_render::{ImageFormat, UnsupportedFormat};
 use refraction_render::{RenderError, SIZE_LIMITS};
 use refraction_scene::Scene;
 

@@ -14,10 +14,10 @@ use super::file_dialog::{
 use super::status::{self, Look, Status};
 use super::widgets::{OPEN_ICON, SAVE_AS_ICON, icon_button};
 use refraction_model::ExplorerState;
-use refraction_tools::error::RequestError;
-use refraction_tools::link;
-use refraction_tools::snippets;
-use refraction_tools::state_file::{self, LoadError};
+use refraction_tools::{RequestError, StateFileError, link, snippets};
+use refraction_tools::{
+    open_state_file, parse_state, save_state_file, state_request, state_to_json,
+};
 
 /// The file name offered first.
 pub(super) const DEFAULT_PATH: &str = "refraction-state.json";
@@ -26,7 +26,7 @@ pub(super) const DEFAULT_PATH: &str = "refraction-state.json";
 /// language) and how to write it.
 type Format = (
     fn() -> String,
-    fn(&refraction_tools::solve::Request) -> Result<String, RequestError>,
+    fn(&refraction_tools::Request) -> Result<String, RequestError>,
 );
 
 /// The copy buttons, in order. The programming languages' names are the same in every language.
@@ -40,13 +40,13 @@ const FORMATS: [Format; 5] = [
 
 /// What went wrong opening a state file, in the current language (the reason as the reader
 /// wrote it).
-fn open_failed(error: &LoadError) -> String {
+fn open_failed(error: &StateFileError) -> String {
     match error {
-        LoadError::Read { path, source } => {
+        StateFileError::Read { path, source } => {
             let reason = source.to_string();
             t!("files-cannot-read-state", path = path, reason = reason)
         }
-        LoadError::Refused { path, reason } => {
+        StateFileError::Refused { path, reason } => {
             t!(
                 "files-state-refused",
                 path = path,
@@ -113,7 +113,7 @@ impl FilesPanel {
 
     fn write(&mut self, state: &ExplorerState, path: &std::path::Path) {
         let shown = path.display().to_string();
-        self.status = Some(match state_file::save(state, path) {
+        self.status = Some(match save_state_file(state, path) {
             Ok(()) => Status::Done(t!("files-saved", path = &shown)),
             Err(reason) => Status::Refused(t!("files-not-saved", reason = reason.to_string())),
         });
@@ -137,7 +137,7 @@ impl FilesPanel {
     /// state as it was and says why.
     pub(super) fn open(&mut self, state: &mut ExplorerState) {
         let path = PathBuf::from(self.path.trim());
-        self.status = Some(match state_file::open(&path) {
+        self.status = Some(match open_state_file(&path) {
             Ok(opened) => {
                 *state = opened;
                 Status::Done(t!("files-opened", path = path.display().to_string()))
@@ -151,7 +151,7 @@ impl FilesPanel {
     /// A file that is not a state but a scene or a lesson deck (a TOML file picked by
     /// mistake) is opened as one, and the window shows it; anything else keeps the state's
     /// error.
-    fn open_as_what_it_is(&mut self, path: &Path, error: &LoadError) -> Status {
+    fn open_as_what_it_is(&mut self, path: &Path, error: &StateFileError) -> Status {
         let start = first_bytes(path);
         let shown = path.display().to_string();
         let not_a_state = || open_failed(error);
@@ -188,7 +188,7 @@ impl FilesPanel {
 
     /// Applies the pasted share string, or says why it cannot be.
     pub(super) fn apply_pasted(&mut self, state: &mut ExplorerState) {
-        self.status = Some(match state_file::parse(&self.pasted) {
+        self.status = Some(match parse_state(&self.pasted) {
             Ok(pasted) => {
                 *state = pasted;
                 // The share string shown was the old state's.
@@ -234,7 +234,7 @@ impl FilesPanel {
         });
         self.dialogs(ui, state);
         ui.horizontal_wrapped(|ui| {
-            let share = state_file::to_json(state);
+            let share = state_to_json(state);
             if ui
                 .button(t!("files-copy-share"))
                 .on_hover_text(t!("files-copy-share-hover"))
@@ -253,7 +253,7 @@ impl FilesPanel {
         });
         ui.horizontal_wrapped(|ui| {
             ui.label(t!("files-copy-case-as"));
-            let request = state_file::request(state);
+            let request = state_request(state);
             for (label, write) in FORMATS {
                 let label = label();
                 if ui.button(&label).clicked() {

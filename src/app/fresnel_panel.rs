@@ -12,9 +12,7 @@ use glam::Vec2;
 use refraction_i18n::t;
 
 use super::paint;
-use refraction_diagram::font::Typeface;
-use refraction_diagram::fresnel_plot::{self, FresnelPlot, PlotFrame};
-use refraction_diagram::palette::Palette;
+use refraction_diagram::{FresnelPlot, PlotFrame, Typeface, fresnel_plot, palette::Palette};
 use refraction_model::ExplorerState;
 
 /// The plot's least and most height, in points.
@@ -38,7 +36,7 @@ fn plot(ui: &mut Ui, model: &FresnelPlot, palette: &Palette) -> Option<f64> {
     let angle = refraction_diagram::numbers::number(model.cursor_deg, 1);
     let about = t!("fresnel-plot-about", angle = angle);
     let (response, painter, to_screen) = paint::figure(ui, size, Sense::click_and_drag(), &about);
-    let drawn = fresnel_plot::primitives(model, size, &face, palette);
+    let drawn = fresnel_plot(model, size, &face, palette);
     paint::paint(&painter, &to_screen, &drawn);
     if !(response.clicked() || response.dragged()) {
         return None;

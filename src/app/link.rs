@@ -12,13 +12,12 @@ use std::path::Path;
 
 use egui::{Id, Key, Modal, Panel, RichText, TextEdit, Ui};
 use refraction_deck::builtin;
-use refraction_diagram::qr::Code;
+use refraction_diagram::QrCode;
 use refraction_i18n::t;
-use refraction_render::RenderError;
-use refraction_render::format::ImageFormat;
+use refraction_render::{ImageFormat, RenderError};
 use refraction_tools::link::{self, Link, LinkError};
 
-use super::deck::{Command, handout};
+use super::deck::{DeckCommand, handout};
 use super::status::{self, Look, Status};
 use super::{Explorer, View, export, file_dialog};
 
@@ -112,7 +111,7 @@ fn base_of(base: &str) -> Option<String> {
 const NOTICE_CHARS: usize = 400;
 
 /// Why a link has no QR code, in words.
-fn too_long(error: &refraction_diagram::qr::TooLong) -> String {
+fn too_long(error: &refraction_diagram::QrTooLong) -> String {
     t!("link-qr-too-long", bytes = error.0.to_string())
 }
 
@@ -138,7 +137,7 @@ pub(super) fn storage_notice(
 fn save_qr(url: &str, format: ImageFormat) -> Status {
     let extension = format.extension();
     let path = file_dialog::numbered(Path::new(""), "refraction-qr", extension);
-    let code = match Code::new(url) {
+    let code = match QrCode::new(url) {
         Ok(code) => code,
         Err(e) => return Status::Refused(too_long(&e)),
     };
@@ -259,7 +258,7 @@ impl Explorer {
                     return Err(LinkRefusal::NoStep { name, step, count });
                 }
                 self.open_deck(deck);
-                self.deck_command(Command::GoTo(step - 1));
+                self.deck_command(DeckCommand::GoTo(step - 1));
             }
         }
         Ok(())
@@ -318,7 +317,7 @@ impl Explorer {
                 }
                 return;
             };
-            match Code::new(&url) {
+            match QrCode::new(&url) {
                 Ok(code) => {
                     let size = glam::Vec2::splat(side);
                     let (_, painter, to_screen) =

@@ -46,6 +46,7 @@ pub use fonts::install as install_fonts;
 pub use presentation::ZOOM as PRESENTATION_ZOOM;
 
 use egui::{Panel, RichText, ScrollArea, Ui};
+use refraction_tools::{parse_state, state_to_json};
 
 use accuracy::AccuracyView;
 use controls::Controls;
@@ -54,12 +55,10 @@ use export::AnimationExport;
 use history::{History, Snapshot};
 use panels::{CONTROLS, NUMBERS, Panels};
 use presentation::Presentation;
-use refraction_diagram::Overlay;
-use refraction_diagram::palette::Theme;
+use refraction_diagram::{Overlay, palette::Theme};
 use refraction_i18n::{Locale, t};
 use refraction_model::ExplorerState;
 use refraction_scene::Scene;
-use refraction_tools::state_file;
 pub use scenes::ScenesView;
 pub use status::Status;
 use tools::Tools;
@@ -213,7 +212,7 @@ impl Explorer {
         // read is said (in the window's language, once it is set) rather than dropped.
         let (restored, unreadable) = match saved(STORAGE_KEY).filter(|_| !from_state_file) {
             None => (None, None),
-            Some(json) => match state_file::parse(&json) {
+            Some(json) => match parse_state(&json) {
                 Ok(state) => (Some(state), None),
                 Err(e) => (None, Some(e.to_string())),
             },
@@ -616,7 +615,7 @@ impl eframe::App for Explorer {
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        storage.set_string(STORAGE_KEY, state_file::to_json(&self.state));
+        storage.set_string(STORAGE_KEY, state_to_json(&self.state));
         storage.set_string(LOOK_KEY, self.presentation.look());
         storage.set_string(VIEW_KEY, self.saved_view());
         storage.set_string(link::WEB_BASE_KEY, self.web_base().to_owned());

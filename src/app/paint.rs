@@ -5,11 +5,7 @@ use egui::epaint::{CircleShape, Mesh, Tessellator};
 use egui::{Align2, Color32, Context, FontId, Id, Painter, Pos2, Response, Shape, Stroke, Ui};
 use glam::Vec2;
 
-use refraction_diagram::Primitive;
-use refraction_diagram::geometry::Colour;
-use refraction_diagram::palette::Palette;
-use refraction_diagram::shapes::PAD;
-use refraction_diagram::shapes::{Align, Label};
+use refraction_diagram::{Align, Colour, LABEL_PAD, Label, Primitive, palette::Palette};
 
 /// The egui colour of a diagram colour.
 #[must_use]
@@ -119,7 +115,7 @@ pub(super) fn shapes(
                 let anchor = Align2([align(label.h), align(label.v)]);
                 let rect = anchor.anchor_size(at(label.at), galley.size());
                 if let Some(background) = label.background {
-                    let back = rect.expand(label.size * PAD);
+                    let back = rect.expand(label.size * LABEL_PAD);
                     shapes.push(Shape::rect_filled(back, 0.0, color(background)));
                 }
                 shapes.push(Shape::galley(rect.min, galley, color(label.colour)));

@@ -8,7 +8,7 @@ use egui::{
 };
 
 use super::paint::colour;
-use refraction_diagram::overlay::PanZoom;
+use refraction_diagram::PanZoom;
 use refraction_diagram::palette::{Palette, Theme};
 use refraction_i18n::{Locale, t};
 

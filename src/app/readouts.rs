@@ -5,11 +5,11 @@ use egui::{Grid, RichText, Sense, Stroke, Ui, Vec2};
 use refraction_i18n::t;
 
 use super::paint::color;
-use refraction_diagram::equations::equations;
+use refraction_diagram::Quadratic;
+use refraction_diagram::equations;
 use refraction_diagram::numbers::{number, significant_apart, vector};
 use refraction_diagram::palette::Palette;
-use refraction_diagram::quadratic::Quadratic;
-use refraction_diagram::table::{CandidateRow, rows};
+use refraction_diagram::{CandidateRow, candidate_rows};
 use refraction_kernel::{Refraction, VectorName, Warning};
 
 /// The mark for a passed (✔) or failed (✖) check.
@@ -59,7 +59,7 @@ fn quadratic(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
     let size = glam::Vec2::new(ui.available_width(), 150.0);
     let text = egui::TextStyle::Body.resolve(ui.style()).size.max(13.0);
     let (_, painter, to_screen) = super::paint::figure(ui, size, egui::Sense::hover(), &caption);
-    let drawn = refraction_diagram::quadratic::primitives(&q, size, text, palette);
+    let drawn = refraction_diagram::quadratic_plot(&q, size, text, palette);
     super::paint::paint(&painter, &to_screen, &drawn);
     ui.label(caption);
 }
@@ -160,7 +160,7 @@ fn candidate_blocks(ui: &mut Ui, rows: &[CandidateRow], palette: &Palette) {
 
 /// The four candidates with their checks.
 fn candidates(ui: &mut Ui, r: &Refraction<f64>, palette: &Palette) {
-    let rows = rows(r);
+    let rows = candidate_rows(r);
     if rows.is_empty() {
         let alarm = palette.text_shade(palette.alarm);
         ui.label(RichText::new(t!("readouts-no-candidates")).color(color(alarm)));

@@ -16,12 +16,10 @@ use super::paint::{color, hover_left_out, meshed, paint};
 use super::retrace::{Retracer, empty};
 use super::scene_files::SceneFiles;
 use super::typed::error_label;
-use refraction_diagram::layout::SMALLEST_TEXT;
-use refraction_diagram::numbers::number;
-use refraction_diagram::palette::Palette;
-use refraction_diagram::scene_words::{self, medium_name};
-use refraction_diagram::shapes::{Align, Label};
-use refraction_diagram::{Primitive, SceneLayout, ScenePicture};
+use refraction_diagram::{
+    Align, Label, Primitive, SMALLEST_TEXT, SceneLayout, ScenePicture, built_in_scene_title,
+    medium_name, numbers::number, palette::Palette, scene_description, scene_title,
+};
 use refraction_model::ExplorerState;
 use refraction_scene::{
     DEFAULT_SCENE, EditError, Hit, Scene, SceneInfo, Side, SourceKind, Stop, Trace, catalogue,
@@ -393,10 +391,10 @@ impl ScenesView {
         ui.horizontal(|ui| {
             let mut picked = self.scene.name().to_owned();
             ComboBox::from_label(t!("scenes-scene"))
-                .selected_text(scene_words::title(&self.scene))
+                .selected_text(scene_title(&self.scene))
                 .show_ui(ui, |ui| {
                     for info in &self.catalogue {
-                        let title = scene_words::built_in_title(info.name);
+                        let title = built_in_scene_title(info.name);
                         let title = title.unwrap_or_else(|| info.title.clone());
                         ui.selectable_value(&mut picked, info.name.to_owned(), title);
                     }
@@ -444,7 +442,7 @@ impl ScenesView {
             // light does (the fibre's total internal reflection, the slab's parallel exit): the
             // answer of a question asked about it, left out until it is revealed.
             if !self.answer_hidden {
-                ui.add(egui::Label::new(scene_words::description(&self.scene)).truncate());
+                ui.add(egui::Label::new(scene_description(&self.scene)).truncate());
             }
             if !self.in_lesson {
                 ui.add(egui::Label::new(RichText::new(t!("scenes-hint")).weak()).truncate());

@@ -22,7 +22,7 @@ pub(super) enum Reach {
     /// For a mouse: at least 24 × 24 points (WCAG 2.5.8).
     Pointer,
     /// For a finger: at least 44 × 44 points, CSS pixels in a browser (WCAG 2.5.5): the
-    /// diagram's [`TOUCH_TARGET`](refraction_diagram::picture::TOUCH_TARGET).
+    /// diagram's [`TOUCH_TARGET`](refraction_diagram::TOUCH_TARGET).
     Finger,
 }
 
@@ -42,7 +42,7 @@ impl Reach {
     pub(super) fn side(self) -> f32 {
         match self {
             Self::Pointer => 24.0,
-            Self::Finger => refraction_diagram::picture::TOUCH_TARGET,
+            Self::Finger => refraction_diagram::TOUCH_TARGET,
         }
     }
 }

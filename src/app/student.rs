@@ -9,10 +9,10 @@
 //! one.
 
 use egui::{Button, Context, Panel, RichText, Role, TextStyle, Ui, Vec2, WidgetInfo};
-use refraction_diagram::picture::TOUCH_TARGET;
+use refraction_diagram::TOUCH_TARGET;
 use refraction_i18n::t;
 
-use super::deck::{Command, LessonDeck};
+use super::deck::{DeckCommand, LessonDeck};
 use super::{Explorer, View, canvas, steps};
 
 /// The widest screen the student's view opens on by itself, in points (CSS pixels in a
@@ -109,7 +109,7 @@ impl Explorer {
         if self.lesson.current().is_some() {
             // The deck's keys still step and reveal (a laptop's keyboard); no notes here.
             let mut asked = LessonDeck::keys(ui);
-            asked.retain(|c| *c != Command::Notes);
+            asked.retain(|c| *c != DeckCommand::Notes);
             asked.extend(self.student_step(ui, landscape));
             for command in asked {
                 self.deck_command(command);
@@ -154,7 +154,7 @@ impl Explorer {
     /// The strip above the diagram: the deck's step buttons, *Reveal* on a step that asks,
     /// the step's title (upright; sideways, where the height is short, the question alone)
     /// and its question. Returns what its buttons asked.
-    fn student_step(&self, ui: &mut Ui, landscape: bool) -> Vec<Command> {
+    fn student_step(&self, ui: &mut Ui, landscape: bool) -> Vec<DeckCommand> {
         let Some(notes) = self.lesson.notes() else {
             return Vec::new();
         };
@@ -165,7 +165,7 @@ impl Explorer {
             ui.horizontal_wrapped(|ui| {
                 let first = notes.number > 1;
                 if big_button(ui, "⏴", &t!("deck-previous"), (first, false)) {
-                    asked.push(Command::Previous);
+                    asked.push(DeckCommand::Previous);
                 }
                 let at = t!(
                     "deck-step-number",
@@ -175,7 +175,7 @@ impl Explorer {
                 ui.label(RichText::new(at).size(QUESTION_SIZE).strong());
                 let last = notes.number < notes.count;
                 if big_button(ui, "⏵", &t!("deck-next"), (last, false)) {
-                    asked.push(Command::Next);
+                    asked.push(DeckCommand::Next);
                 }
                 if notes.question.is_some() {
                     let (icon, name) = if hidden {
@@ -185,7 +185,7 @@ impl Explorer {
                     };
                     let words = format!("{icon} {name}");
                     if big_button(ui, &words, &name, (true, !hidden)) {
-                        asked.push(Command::Reveal);
+                        asked.push(DeckCommand::Reveal);
                     }
                 }
             });

@@ -9,9 +9,7 @@ use super::check_panel::CheckPanel;
 use super::files_panel::FilesPanel;
 use super::fresnel_panel;
 use super::walkthrough::WalkThrough;
-use refraction_diagram::Focus;
-use refraction_diagram::overlay::StudentRay;
-use refraction_diagram::palette::Palette;
+use refraction_diagram::{Focus, StudentRay, palette::Palette};
 use refraction_model::ExplorerState;
 
 /// The window's width a tool takes in presentation: the diagram keeps half the window beside

@@ -1,12 +1,11 @@
 //! The guided walk through the paper's derivation: one step at a time with its equations and
-//! live numbers (from [`refraction_diagram::walkthrough`]), the diagram highlighting what the step is
-//! about, and the "animate μ → 1" morph that shows why the paper picks its signs.
+//! live numbers (from [`refraction_diagram::walkthrough_steps`]), the diagram highlighting
+//! what the step is about, and the "animate μ → 1" morph that shows why the paper picks its signs.
 
 use egui::{Button, Context, RichText, Ui};
 use refraction_i18n::t;
 
-use refraction_diagram::Focus;
-use refraction_diagram::walkthrough::steps;
+use refraction_diagram::{Focus, walkthrough_steps};
 use refraction_model::ExplorerState;
 
 /// How long the μ → 1 morph takes, in seconds.
@@ -72,7 +71,9 @@ impl WalkThrough {
     /// What the diagram highlights for the step shown.
     #[must_use]
     pub(super) fn focus(&self, state: &ExplorerState) -> Option<Focus> {
-        steps(state.refraction()).get(self.step).map(|s| s.focus)
+        walkthrough_steps(state.refraction())
+            .get(self.step)
+            .map(|s| s.focus)
     }
 
     /// Whether the μ → 1 morph is running.
@@ -103,7 +104,7 @@ impl WalkThrough {
 
     /// The step with its equations and the buttons to move on.
     pub(super) fn show(&mut self, ui: &mut Ui, state: &ExplorerState) {
-        let all = steps(state.refraction());
+        let all = walkthrough_steps(state.refraction());
         self.step = self.step.min(all.len() - 1);
         ui.horizontal_wrapped(|ui| {
             if ui

@@ -118,8 +118,8 @@ pub(crate) fn refuse_other_kinds<'a>(
 }
 
 /// The kind of file `format` writes, as [`refuse_other_kinds`] names it.
-pub(crate) fn kind_of(format: refraction_render::format::ImageFormat) -> &'static str {
-    use refraction_render::format::ImageFormat;
+pub(crate) fn kind_of(format: refraction_render::ImageFormat) -> &'static str {
+    use refraction_render::ImageFormat;
     match format {
         ImageFormat::Png => "a PNG image",
         ImageFormat::Svg => "an SVG picture",

@@ -8,9 +8,7 @@ use std::process::ExitCode;
 use glam::Vec2;
 use refraction_deck::{Deck, builtin};
 use refraction_explorer::app::handout::{Drawn, HandoutError, picture, write};
-use refraction_render::format::ImageFormat;
-use refraction_render::handout::Sheet;
-use refraction_render::{RenderError, check_size, svg};
+use refraction_render::{ImageFormat, RenderError, check_size, handout::Sheet, svg};
 use refraction_scene::LoadError;
 
 use super::inputs::{Input, OtherKind, OutputIsInput, refuse_inputs, refuse_other_kinds};

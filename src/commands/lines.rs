@@ -9,7 +9,7 @@ use refraction_check::tests_file::{self, TestLanguage};
 use refraction_check::{Dialect, Format, Options, Pattern, Session, suggest};
 use refraction_check::{MAX_SUMMARY_BYTES, Verdict, looks_like_summary};
 use refraction_i18n::t;
-use refraction_tools::{self as jsonl, LinesError, solve as solver};
+use refraction_tools::{self as jsonl, LinesError, solve_lines};
 
 use super::{fail, output, output_error};
 
@@ -23,7 +23,7 @@ fn stopped(command: &str, input: &str, error: &LinesError) -> ExitCode {
 
 /// Runs `solve` on stdin.
 pub(crate) fn solve() -> ExitCode {
-    match solver::run(io::stdin().lock(), io::stdout().lock()) {
+    match solve_lines(io::stdin().lock(), io::stdout().lock()) {
         Ok(true) => ExitCode::SUCCESS,
         Ok(false) => ExitCode::from(1),
         Err(e) => stopped("solve", "standard input", &e),

@@ -1,20 +1,18 @@
 //! `render`: the explorer's diagram or a traced scene as a PNG or an SVG, or an animation of
 //! the diagram as a GIF.
 
+use refraction_tools::{StateFileError, open_state_file};
 use std::io::{self, IsTerminal as _};
 use std::path::Path;
 use std::process::ExitCode;
 
-use refraction_diagram::Overlay;
-use refraction_diagram::animation::Animation;
+use refraction_diagram::{Animation, Overlay};
 use refraction_explorer::cli::{RenderArgs, ViewArg};
 use refraction_model::ExplorerState;
-use refraction_render::animation::AnimationSpec;
-use refraction_render::handout::Sheet;
-use refraction_render::svg::Labels;
-use refraction_render::{self as render, Picture, format::ImageFormat};
+use refraction_render::{
+    self as render, ImageFormat, Picture, animation::AnimationSpec, handout::Sheet, svg::Labels,
+};
 use refraction_scene::Scene;
-use refraction_tools::state_file;
 
 use super::inputs::{Input, OtherKind, OutputIsInput, kind_of, refuse_inputs, refuse_other_kinds};
 use super::output::ProgressLine;
@@ -29,7 +27,7 @@ pub(crate) const STILL: [ImageFormat; 2] = [ImageFormat::Png, ImageFormat::Svg];
 pub(crate) enum RenderFailure {
     /// The path's extension names no format written.
     #[error(transparent)]
-    Format(#[from] refraction_render::format::UnsupportedFormat),
+    Format(#[from] refraction_render::UnsupportedFormat),
     /// A format written, but not by this option.
     #[error(
         "{option} {path}: `.{extension}` ({name}) is not written here; give a name ending in \
@@ -73,7 +71,7 @@ pub(crate) enum RenderFailure {
     },
     /// The state file cannot be read.
     #[error(transparent)]
-    State(#[from] state_file::LoadError),
+    State(#[from] StateFileError),
     /// The scene cannot be loaded.
     #[error(transparent)]
     Scene(#[from] refraction_scene::LoadError),
@@ -203,7 +201,7 @@ impl<'a> Destination<'a> {
 }
 
 fn initial_state(path: Option<&Path>) -> Result<ExplorerState, RenderFailure> {
-    Ok(path.map_or_else(|| Ok(ExplorerState::default()), state_file::open)?)
+    Ok(path.map_or_else(|| Ok(ExplorerState::default()), open_state_file)?)
 }
 
 /// The picture asked for, as the bytes of a `format` file: `scene` traced, or else the state

@@ -1,13 +1,13 @@
 //! The explorer's window as the command line opens it: a state file or a lesson deck that
 //! cannot be read is refused before any window opens.
 
+use refraction_tools::open_state_file;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 use refraction_diagram::palette::Theme;
 use refraction_explorer::app::{self, Launch, View};
 use refraction_i18n::Locale;
-use refraction_tools::state_file;
 
 use super::fail;
 
@@ -35,7 +35,7 @@ pub(crate) fn open(window: &Window) -> ExitCode {
     if let Some(Err(e)) = window.lesson.as_deref().map(refraction_deck::Deck::load) {
         return fail("", &e);
     }
-    let state = match window.state.as_deref().map(state_file::open).transpose() {
+    let state = match window.state.as_deref().map(open_state_file).transpose() {
         Ok(state) => state,
         Err(e) => return fail("", &e),
     };

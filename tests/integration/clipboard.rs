@@ -8,12 +8,12 @@
 //! Where they are missing it says so and passes, unless `REFRACTION_X11_TESTS=1` (set by
 //! `.ci/run`) asks that it run.
 
+use refraction_tools::state_to_json;
 use std::io::{BufRead as _, BufReader, Write as _};
 use std::process::{Child, Command, Stdio};
 
 use egui_kittest::kittest::Queryable as _;
 use refraction_model::ExplorerState;
-use refraction_tools::state_file;
 
 use crate::common::{click, harness, paste_log, reach};
 
@@ -37,7 +37,7 @@ fn a_copied_share_string_goes_to_the_system_clipboard() {
             _ => None,
         })
         .collect();
-    assert_eq!(copied, [&state_file::to_json(&state)]);
+    assert_eq!(copied, [&state_to_json(&state)]);
 }
 
 #[test]
@@ -226,7 +226,7 @@ fn the_x_clipboard_the_window_uses_carries_text_both_ways() {
     let server = Xvfb::start().expect("Xvfb starts on a free display");
     let display = server.display.clone();
     // What the window copies, another program (xclip, a terminal) pastes.
-    let share = state_file::to_json(&ExplorerState::default());
+    let share = state_to_json(&ExplorerState::default());
     let mut copier = peer(&display, &format!("copy:{share}"));
     read_until(&mut copier, "copied:");
     assert_eq!(xclip_read(&display), share);

@@ -132,7 +132,7 @@ fn run(example: &Example, folder: &Path, subcommands: &[String]) -> Option<Strin
         // arguments before it have been read) and the state file loaded.
         command.arg("--help");
         if let Some(state) = example.args.iter().skip_while(|a| *a != "--state").nth(1)
-            && let Err(e) = refraction_tools::state_file::open(&folder.join(state))
+            && let Err(e) = refraction_tools::open_state_file(&folder.join(state))
         {
             return Some(format!("{}: {e}", example.place));
         }

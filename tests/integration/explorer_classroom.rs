@@ -82,8 +82,8 @@ fn presentation_mode_zooms_the_ui_and_the_themes_change_panels_and_diagram() {
     assert!(h.query_by_label("Flip N").is_some());
 }
 
-fn glam_colour(code: u32) -> refraction_diagram::geometry::Colour {
-    refraction_diagram::geometry::Colour::hex(code)
+fn glam_colour(code: u32) -> refraction_diagram::Colour {
+    refraction_diagram::Colour::hex(code)
 }
 
 #[test]

@@ -74,7 +74,7 @@ fn the_share_string_reproduces_the_state_and_the_case_copies_as_code() {
     let mut h = harness(leaving_glass());
     click(&mut h, "💾 Save, open, share");
     click(&mut h, "🔗 Copy share string");
-    let share = refraction_tools::state_file::to_json(h.state().state());
+    let share = refraction_tools::state_to_json(h.state().state());
     assert!(h.query_by_label(&share).is_some());
     let shared = h.state().state().clone();
     click(&mut h, "Flip N");

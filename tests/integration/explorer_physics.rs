@@ -10,11 +10,10 @@ use egui::{Role, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use glam::{DVec3, Vec2 as GVec2};
-use refraction_diagram::Diagram;
-use refraction_diagram::intensities::{Polarisation, Shares};
-use refraction_diagram::shapes::Figure;
+use refraction_diagram::{Diagram, Figure, Shares};
 use refraction_explorer::app::Explorer;
 use refraction_model::ExplorerState;
+use refraction_model::Polarisation;
 
 const FRESNEL: &str = "📈 Fresnel";
 const EFFECTS: &str = "Effects";
@@ -346,7 +345,7 @@ fn the_brewster_preset_shows_brewster_s_angle_with_p_light() {
         &h.state().overlay(),
     );
     let primitives = diagram.primitives();
-    let words = refraction_diagram::shapes::texts(&primitives);
+    let words = refraction_diagram::primitive_texts(&primitives);
     assert!(
         words.iter().any(|w| w.contains("no reflected ray")),
         "{words:?}"

@@ -22,11 +22,9 @@ use egui::{Rect as EguiRect, Role, Shape};
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT as _, Queryable as _};
 use glam::{DVec3, Vec2 as GVec2};
-use refraction_diagram::font::Typeface;
-use refraction_diagram::geometry::Rect;
-use refraction_diagram::palette::Theme;
-use refraction_diagram::shapes::{Figure, Label};
-use refraction_diagram::{Diagram, Primitive, SceneLayout, ScenePicture};
+use refraction_diagram::{
+    Diagram, Figure, Label, Primitive, Rect, SceneLayout, ScenePicture, Typeface, palette::Theme,
+};
 use refraction_explorer::app::Explorer;
 use refraction_i18n::{Locale, t};
 use refraction_kernel::Convention;
@@ -287,7 +285,7 @@ fn check_squeezed<S>(h: &Harness<'_, S>, what: &str, problems: &mut Vec<String>)
 fn check_contrast(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>) -> f32 {
     let colour = |c: egui::Color32| {
         let [r, g, b, a] = c.to_srgba_unmultiplied();
-        refraction_diagram::geometry::Colour { r, g, b, a }
+        refraction_diagram::Colour { r, g, b, a }
     };
     let fill = colour(h.ctx.global_style().visuals.panel_fill);
     let canvas = canvas_rect(h);
@@ -390,7 +388,7 @@ struct Obstacles {
     heads: Vec<(String, Vec<GVec2>)>,
     discs: Vec<(String, GVec2, f32)>,
     /// The rays' shafts: what no label may lie on.
-    shafts: Vec<(String, refraction_diagram::obstacle::Obstacle)>,
+    shafts: Vec<(String, refraction_diagram::Obstacle)>,
 }
 
 fn check_labels(
@@ -441,7 +439,7 @@ fn check_labels(
 fn check_label_contrast(
     what: &str,
     primitives: &[Primitive],
-    behind: refraction_diagram::geometry::Colour,
+    behind: refraction_diagram::Colour,
     problems: &mut Vec<String>,
 ) {
     // A marker's words sit on its disc.
@@ -489,8 +487,8 @@ fn audit_diagram(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<Strin
             role,
         } = shape
         {
-            if *role == refraction_diagram::shapes::ArrowRole::Vector {
-                let shaft = refraction_diagram::obstacle::Obstacle::Shaft {
+            if *role == refraction_diagram::ArrowRole::Vector {
+                let shaft = refraction_diagram::Obstacle::Shaft {
                     a: *from,
                     b: *to,
                     half_width: stroke.width * 0.5,
@@ -596,7 +594,7 @@ fn audit_scene(h: &Harness<'_, Explorer>, what: &str, problems: &mut Vec<String>
         .iter()
         .filter(|s| s.intensity.is_none_or(|i| i >= 0.05))
         .map(|s| {
-            let shaft = refraction_diagram::obstacle::Obstacle::Shaft {
+            let shaft = refraction_diagram::Obstacle::Shaft {
                 a: layout.at(s.from),
                 b: layout.at(s.to),
                 half_width: 0.5,
@@ -943,7 +941,7 @@ fn the_audit_finds_what_it_looks_for() {
         discs: vec![("W handle".to_owned(), GVec2::new(20.0, 20.0), 5.0)],
         shafts: vec![(
             "T's shaft".to_owned(),
-            refraction_diagram::obstacle::Obstacle::Shaft {
+            refraction_diagram::Obstacle::Shaft {
                 a: GVec2::new(150.0, 80.0),
                 b: GVec2::new(250.0, 95.0),
                 half_width: 1.0,
@@ -1153,16 +1151,6 @@ const HIDDEN_STEP_LAYOUTS: [(&str, (f32, f32), bool); 3] = [
     ("phone", (390.0, 844.0), false),
 ];
 
-/// The light a step's *Intensities* draws for.
-fn polarisation_of(light: refraction_deck::Light) -> refraction_diagram::intensities::Polarisation {
-    use refraction_diagram::intensities::Polarisation;
-    match light {
-        refraction_deck::Light::Unpolarised => Polarisation::Unpolarised,
-        refraction_deck::Light::S => Polarisation::S,
-        refraction_deck::Light::P => Polarisation::P,
-    }
-}
-
 /// The words that give a hidden step's answer away. On the one interface: every line of the
 /// revealed diagram's labels that gives θt, the critical angle, a candidate's (a, b), a·W,
 /// a share of the light or the discriminant k, and under total internal reflection its words
@@ -1182,7 +1170,7 @@ fn answer_words(deck: &refraction_deck::Deck, step: &refraction_deck::Step) -> V
             t!("diagram-count-tir", count = c.total_internal_reflections),
             t!("diagram-count-reflections", count = c.reflections_spawned),
             t!("diagram-count-fresnel", count = c.fresnel_evaluations),
-            refraction_diagram::scene_words::description(&scene),
+            refraction_diagram::scene_description(&scene),
         ]);
         if c.total_internal_reflections > 0 {
             words.push(t!("diagram-hit-tir"));
@@ -1190,9 +1178,7 @@ fn answer_words(deck: &refraction_deck::Deck, step: &refraction_deck::Step) -> V
         return words;
     }
     let overlay = refraction_diagram::Overlay {
-        intensities: step
-            .has(Effect::Intensities)
-            .then(|| polarisation_of(step.light)),
+        intensities: step.has(Effect::Intensities).then_some(step.light),
         ..refraction_diagram::Overlay::default()
     };
     let revealed = Diagram::with_overlay(&step.state, GVec2::new(1280.0, 720.0), &overlay);

@@ -14,7 +14,9 @@ use refraction_check::{Format, Options, Pattern, Session};
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
 use refraction_model::ExplorerState;
-use refraction_tools::{candidate_check, solve, state_file};
+use refraction_tools::{
+    check_line, open_state_file, parse_state, parse_t, solve_line, solve_lines, state_to_json,
+};
 use serde_json::Value;
 
 const CASES: u32 = 384;
@@ -189,7 +191,7 @@ proptest! {
 
     #[test]
     fn a_solve_line_is_answered_with_finite_json_or_an_error(line in any_line()) {
-        match solve::answer(&line) {
+        match solve_line(&line) {
             Ok(text) => assert_finite_solve_answer(&text, &line),
             // Not checked for words: an error message quotes what it refuses (`"inf, 0, 0"`).
             Err(message) => prop_assert!(!message.to_string().is_empty()),
@@ -198,7 +200,7 @@ proptest! {
 
     #[test]
     fn a_check_line_is_judged_with_finite_json_or_an_error(line in any_line()) {
-        match candidate_check::answer(&line) {
+        match check_line(&line) {
             Ok((text, verdict)) => {
                 let answer: Value = serde_json::from_str(&text).expect("the answer is JSON");
                 if !answer["t"].is_null() {
@@ -219,7 +221,7 @@ proptest! {
             prop::collection::vec(number(), 0..5).prop_map(|v| format!("vec3({})", v.join(", "))),
         ]
     ) {
-        if let Err(message) = candidate_check::parse_vector(&text) {
+        if let Err(message) = parse_t(&text) {
             prop_assert!(!message.to_string().is_empty());
         }
     }
@@ -242,7 +244,7 @@ proptest! {
             .filter(|line| core::str::from_utf8(line).map_or(true, |t| !t.trim().is_empty()))
             .count();
         let mut output = Vec::new();
-        solve::run(&input[..], &mut output).expect("writing to memory cannot fail");
+        solve_lines(&input[..], &mut output).expect("writing to memory cannot fail");
         let text = String::from_utf8(output).expect("the output is UTF-8");
         prop_assert_eq!(text.lines().count(), expected);
         for line in text.lines() {
@@ -267,8 +269,8 @@ proptest! {
         ) else {
             return Ok(());
         };
-        let share = state_file::to_json(&state);
-        prop_assert!(state_file::parse(&share) == Ok(state.clone()));
+        let share = state_to_json(&state);
+        prop_assert!(parse_state(&share) == Ok(state.clone()));
         let (at, c, how) = mutation;
         let mut chars: Vec<char> = share.chars().collect();
         let i = at.index(chars.len());
@@ -278,8 +280,8 @@ proptest! {
             _ => chars[i] = c,
         }
         let pasted: String = chars.into_iter().collect();
-        if let Ok(back) = state_file::parse(&pasted) {
-            prop_assert!(state_file::parse(&state_file::to_json(&back)) == Ok(back));
+        if let Ok(back) = parse_state(&pasted) {
+            prop_assert!(parse_state(&state_to_json(&back)) == Ok(back));
         }
     }
 }
@@ -298,10 +300,10 @@ proptest! {
         let path = std::env::temp_dir()
             .join(format!("parsers-fuzz-{}-{:?}.json", std::process::id(), std::thread::current().id()));
         std::fs::File::create(&path).and_then(|mut f| f.write_all(&bytes)).unwrap();
-        let loaded = state_file::open(&path).map_err(|e| e.to_string());
+        let loaded = open_state_file(&path).map_err(|e| e.to_string());
         std::fs::remove_file(&path).unwrap();
         match loaded {
-            Ok(state) => prop_assert!(state_file::parse(&state_file::to_json(&state)) == Ok(state)),
+            Ok(state) => prop_assert!(parse_state(&state_to_json(&state)) == Ok(state)),
             Err(message) => prop_assert!(message.contains(&path.display().to_string()), "{}", message),
         }
     }

@@ -5,7 +5,7 @@ use crate::cli;
 use cli::render;
 use std::path::PathBuf;
 
-use refraction_diagram::spectrum::wavelength_colour;
+use refraction_diagram::wavelength_colour;
 
 fn folder(name: &str) -> PathBuf {
     cli::folder("render-cli", name)

@@ -11,7 +11,7 @@
 //! - a judged call or a log's failing lines as unit tests in the student's language
 //!   ([`call_test`], [`tests_file`]).
 //!
-//! Which of the four candidates a T is comes from `refraction_tools::candidate_check`, which the
+//! Which of the four candidates a T is comes from `refraction_tools::check_t`, which the
 //! window's *Check my T* uses too.
 
 mod call_check;

@@ -9,7 +9,8 @@ use refraction_kernel::Convention;
 use refraction_model::{ExplorerState, Lesson, MATERIALS};
 
 use super::Deck;
-use super::step::{Effect, Light, Step, StepTool};
+use super::step::{Effect, Step, StepTool};
+use refraction_model::Polarisation;
 
 /// The indices of air, water and glass, as the lessons use them.
 const AIR: f64 = MATERIALS[1].index;
@@ -167,13 +168,13 @@ fn fresnel_brewster() -> Deck {
             Step::new(t!("deck-fresnel-3-title"), Lesson::Brewster.state())
                 .tool(StepTool::Fresnel)
                 .effects(&intensities)
-                .light(Light::P)
+                .light(Polarisation::P)
                 .question(t!("deck-fresnel-3-question"))
                 .notes(t!("deck-fresnel-3-notes")),
             Step::new(t!("deck-fresnel-4-title"), Lesson::Brewster.state())
                 .tool(StepTool::Fresnel)
                 .effects(&intensities)
-                .light(Light::S)
+                .light(Polarisation::S)
                 .notes(t!("deck-fresnel-4-notes")),
             Step::new(t!("deck-fresnel-5-title"), Lesson::AirToGlass.state())
                 .scene("slab")

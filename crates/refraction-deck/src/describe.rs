@@ -9,11 +9,11 @@
 //! ```
 //! use refraction_deck::Deck;
 //! use refraction_deck::describe::{Shown, StepShown, page};
-//! use refraction_model::describe::Answer;
+//! use refraction_model::describe::Disclosure;
 //! let deck = Deck::load("snell")?;
 //! let step = &deck.steps[0];
 //! let at = StepShown { step, number: 1, count: deck.steps.len() };
-//! let said = page(&step.state, Shown::Interface, Some(at), Answer::Hidden).join(" ");
+//! let said = page(&step.state, Shown::Interface, Some(at), Disclosure::Hidden).join(" ");
 //! assert!(said.starts_with("Step 1 of 5: From air into glass."));
 //! assert!(said.contains("Does it bend toward the normal or away from it?"));
 //! assert!(!said.contains("bends toward"), "the answer stays hidden: {said}");
@@ -22,7 +22,7 @@
 
 use refraction_i18n::t;
 use refraction_model::ExplorerState;
-use refraction_model::describe::{self, Answer};
+use refraction_model::describe::{self, Disclosure};
 
 use crate::Step;
 
@@ -77,7 +77,7 @@ pub fn page(
     state: &ExplorerState,
     shown: Shown<'_>,
     step: Option<StepShown<'_>>,
-    answer: Answer,
+    answer: Disclosure,
 ) -> Vec<String> {
     let mut said = Vec::new();
     if let Some(step) = step {
@@ -97,8 +97,8 @@ pub fn page(
             said.push(t!("access-view", view = t!("view-scenes")));
             said.push(t!("access-scene", title = title));
             said.push(match answer {
-                Answer::Shown => about.to_owned(),
-                Answer::Hidden => t!("access-scene-hidden"),
+                Disclosure::Shown => about.to_owned(),
+                Disclosure::Hidden => t!("access-scene-hidden"),
             });
         }
         Shown::Other { name } => said.push(t!("access-view", view = name)),
@@ -134,7 +134,8 @@ mod tests {
             number,
             count,
         };
-        [Answer::Hidden, Answer::Shown].map(|answer| page(&step.state, shown, Some(at), answer))
+        [Disclosure::Hidden, Disclosure::Shown]
+            .map(|answer| page(&step.state, shown, Some(at), answer))
     }
 
     #[test]
@@ -209,7 +210,7 @@ mod tests {
                 name: "Accuracy vs time",
             },
             None,
-            Answer::Shown,
+            Disclosure::Shown,
         );
         assert_eq!(accuracy, ["View: Accuracy vs time."]);
     }

@@ -15,8 +15,9 @@ use refraction_kernel::{Convention, IndexName, InputError, VectorName};
 use refraction_model::ExplorerState;
 use refraction_scene::{Invalid, LoadError, Numbers, Scene, invalid, parse_toml, toml_text};
 
-use super::step::{Effect, Light, Step, StepTool, StepView};
+use super::step::{Effect, Step, StepTool, StepView};
 use super::{Deck, builtin};
+use refraction_model::Polarisation;
 
 /// The version of the deck format this explorer reads and writes.
 pub const VERSION: u32 = 1;
@@ -60,7 +61,7 @@ struct StepSpec {
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     effects: Vec<Spanned<Effect>>,
     #[serde(default)]
-    light: Light,
+    light: Polarisation,
 }
 
 /// A deck file as written.

@@ -33,7 +33,7 @@ use std::path::PathBuf;
 pub use file::{
     MAX_DECK_FILE_BYTES, MAX_STEPS, VERSION, looks_like_deck, resolve_scene, scene_file,
 };
-pub use step::{Effect, Light, Step, StepTool, StepView};
+pub use step::{Effect, Step, StepTool, StepView};
 
 use refraction_scene::{LoadError, Scene};
 

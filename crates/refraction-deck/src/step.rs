@@ -3,7 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use refraction_model::ExplorerState;
+use refraction_model::{ExplorerState, Polarisation};
 use refraction_scene::{DEFAULT_SCENE, Effects};
 
 /// The view a step shows.
@@ -68,19 +68,6 @@ impl Effect {
     ];
 }
 
-/// The light the *Intensities* switch draws the rays for.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Light {
-    /// Half s, half p.
-    #[default]
-    Unpolarised,
-    /// Polarised across the plane of incidence.
-    S,
-    /// Polarised in the plane of incidence.
-    P,
-}
-
 /// One step: a title, the state shown, the teacher's notes and, optionally, a question for the
 /// class. A step with a question opens with its answer hidden ([`Step::hides_answer`]).
 #[derive(Clone, Debug, PartialEq)]
@@ -103,7 +90,7 @@ pub struct Step {
     /// The effects turned on, each once, in [`Effect::ALL`]'s order.
     pub effects: Vec<Effect>,
     /// The light *Intensities* draws for.
-    pub light: Light,
+    pub light: Polarisation,
 }
 
 impl Step {
@@ -119,7 +106,7 @@ impl Step {
             scene: None,
             tool: None,
             effects: Vec::new(),
-            light: Light::default(),
+            light: Polarisation::default(),
         }
     }
 
@@ -172,7 +159,7 @@ impl Step {
 
     /// The step drawing the intensities for `light`.
     #[must_use]
-    pub fn light(self, light: Light) -> Self {
+    pub fn light(self, light: Polarisation) -> Self {
         Self { light, ..self }
     }
 

@@ -1,8 +1,9 @@
 //! A deck goes through its file and comes back equal: every built-in deck in every language,
 //! and a hand-written deck that uses every field; a file's errors name their line and column.
 
-use refraction_deck::{Deck, Effect, Light, StepTool, StepView, builtin};
+use refraction_deck::{Deck, Effect, StepTool, StepView, builtin};
 use refraction_i18n::{Locale, set_locale};
+use refraction_model::Polarisation;
 
 /// A deck file that sets every field of a step, and one step that sets none it may leave out.
 const EVERY_FIELD: &str = r#"
@@ -43,7 +44,7 @@ fn a_deck_that_sets_every_field_comes_back_from_its_file_equal() {
     assert_eq!(deck.title, "Prisms, my way");
     assert_eq!(step.view, StepView::Scenes);
     assert_eq!(step.tool, Some(StepTool::Fresnel));
-    assert_eq!(step.light, Light::P);
+    assert_eq!(step.light, Polarisation::P);
     assert_eq!(
         step.effects,
         Effect::ALL,

@@ -18,14 +18,14 @@ use refraction_i18n::t;
 use refraction_model::report::{Report, Row};
 
 /// The default kernel's documented bound, drawn as a reference line: 32·ε·κ.
-pub const BOUND: f64 = 32.0;
+pub(crate) const BOUND: f64 = 32.0;
 
 /// Errors below this many ε·κ are drawn at it (an exact answer would sit at −∞ on a log axis).
-pub const FLOOR: f64 = 0.1;
+pub(crate) const FLOOR: f64 = 0.1;
 
 /// A base-10 logarithmic axis over whole decades that cover some values.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LogAxis {
+pub(crate) struct LogAxis {
     /// log10 of the lowest value shown.
     pub low: f64,
     /// log10 of the highest value shown.
@@ -37,7 +37,7 @@ impl LogAxis {
     /// `floor`) with a little room at both ends; one decade either side of 1 when there is
     /// none.
     #[must_use]
-    pub fn covering(values: impl IntoIterator<Item = f64>, floor: f64) -> Self {
+    pub(crate) fn covering(values: impl IntoIterator<Item = f64>, floor: f64) -> Self {
         let logs: Vec<f64> = values
             .into_iter()
             .filter(|v| v.is_finite())
@@ -63,13 +63,13 @@ impl LogAxis {
     /// Where `value` sits from 0 (low end) to 1 (high end); values at or below zero sit at the
     /// low end.
     #[must_use]
-    pub fn fraction(&self, value: f64) -> f64 {
+    pub(crate) fn fraction(&self, value: f64) -> f64 {
         let log = if value > 0.0 { value.log10() } else { self.low };
         ((log - self.low) / (self.high - self.low)).clamp(0.0, 1.0)
     }
 
     /// The powers of ten from low to high, as their exponents.
-    pub fn decades(&self) -> impl Iterator<Item = i32> {
+    pub(crate) fn decades(&self) -> impl Iterator<Item = i32> {
         (self.low as i32)..=(self.high as i32)
     }
 }
@@ -77,7 +77,7 @@ impl LogAxis {
 /// A power of ten as a label: `1`, `10`, `100`, `1000`, then `1e4`, … and `0.1`, `0.01`,
 /// `1e-3`, ….
 #[must_use]
-pub fn decade_label(exponent: i32) -> String {
+pub(crate) fn decade_label(exponent: i32) -> String {
     match exponent {
         0..=3 => format!("{}", 10_i64.pow(exponent.unsigned_abs())),
         -2..=-1 => format!("{}", 10f64.powi(exponent)),
@@ -89,7 +89,7 @@ pub fn decade_label(exponent: i32) -> String {
 /// the diagram's rays); the SIMD peer, ultraviolet, in ink, so that it stands apart from this
 /// project's own variants.
 #[must_use]
-pub fn variant_colour(variant: &str, palette: &Palette) -> Colour {
+pub(crate) fn variant_colour(variant: &str, palette: &Palette) -> Colour {
     let series = match variant {
         "stable" => 1,
         "glam" => 2,
@@ -102,11 +102,11 @@ pub fn variant_colour(variant: &str, palette: &Palette) -> Colour {
     palette.series[series]
 }
 
-pub use super::plot::Marker;
+pub(crate) use super::plot::Marker;
 
 /// The marker of a variant: each kernel variant and the peer its own.
 #[must_use]
-pub fn variant_marker(variant: &str) -> Marker {
+pub(crate) fn variant_marker(variant: &str) -> Marker {
     match variant {
         "stable" => Marker::Circle,
         "batch" => Marker::Square,
@@ -119,7 +119,7 @@ pub fn variant_marker(variant: &str) -> Marker {
 
 /// One marker's label: variant and precision.
 #[must_use]
-pub fn point_label(row: &Row) -> String {
+pub fn accuracy_point_label(row: &Row) -> String {
     format!("{} {}", row.variant, row.precision)
 }
 
@@ -159,7 +159,7 @@ fn text(text: String, at: Vec2, (h, v): (Align, Align), size: f32, colour: Colou
 /// The plot's axes: time per ray (x) and largest hard-set error in ε·κ (y, with room for the
 /// [`BOUND`] line), each over the whole decades its values need.
 #[must_use]
-pub fn axes(report: &Report) -> (LogAxis, LogAxis) {
+pub(crate) fn axes(report: &Report) -> (LogAxis, LogAxis) {
     let rows = &report.rows;
     (
         LogAxis::covering(rows.iter().map(|r| r.ns_per_ray), 1e-3),
@@ -173,7 +173,7 @@ pub fn axes(report: &Report) -> (LogAxis, LogAxis) {
 /// The report's plot on a canvas of `size` pixels in `palette`'s colours, as primitives for
 /// any backend.
 #[must_use]
-pub fn primitives(
+pub fn accuracy_plot(
     report: &Report,
     size: Vec2,
     face: &Typeface,
@@ -207,7 +207,7 @@ pub fn primitives(
 /// Where each row of `report` is marked on a canvas of `size`, in the order of its rows: what
 /// the window hovers over.
 #[must_use]
-pub fn marker_positions(report: &Report, size: Vec2) -> Vec<Vec2> {
+pub fn accuracy_markers(report: &Report, size: Vec2) -> Vec<Vec2> {
     let plot = Plot::new(report, size, &Palette::STANDARD);
     report
         .rows
@@ -375,7 +375,7 @@ impl<'a> Plot<'a> {
             };
             shapes.extend(style.figures(*p, radius, self.palette.background));
             let label = Label {
-                text: point_label(row),
+                text: accuracy_point_label(row),
                 at: *p + Vec2::new(size * 0.8, 0.0),
                 h: Align::Start,
                 v: Align::Center,
@@ -454,7 +454,7 @@ mod tests {
         ]);
         let face = Typeface::egui_default();
         let dark = Palette::new(crate::palette::Theme::HighContrastDark, true);
-        let shapes = primitives(&report, Vec2::new(800.0, 500.0), &face, &dark);
+        let shapes = accuracy_plot(&report, Vec2::new(800.0, 500.0), &face, &dark);
         assert!(
             matches!(&shapes[0], Primitive::Polygon { colour, .. } if *colour == dark.background)
         );
@@ -507,7 +507,7 @@ mod tests {
                 Vec2::new(1600.0, 1000.0),
                 Vec2::new(760.0, 420.0),
             ] {
-                let drawn = primitives(&report, size, &face, &Palette::STANDARD);
+                let drawn = accuracy_plot(&report, size, &face, &Palette::STANDARD);
                 let canvas = Rect::from_min_size(Vec2::ZERO, size);
                 let problems = crate::placer::text_problems(&drawn, &face, &canvas);
                 assert!(problems.is_empty(), "{locale:?} {size}: {problems:?}");

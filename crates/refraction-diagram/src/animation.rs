@@ -13,9 +13,9 @@ use super::wavefronts::WaveOptions;
 use refraction_model::{ExplorerState, HandleId};
 
 /// The frames an animation has when none are asked for.
-pub const DEFAULT_FRAMES: usize = 36;
+pub const ANIMATION_FRAMES: usize = 36;
 /// The frames per second when none are asked for.
-pub const DEFAULT_FPS: u32 = 12;
+pub const ANIMATION_FPS: u32 = 12;
 
 /// The largest angle of incidence the sweep reaches, in degrees: grazing, but not so exactly
 /// that rounding decides which side the ray is on.
@@ -23,7 +23,7 @@ const SWEEP_END_DEG: f64 = 89.5;
 
 /// Smoothstep: starts and ends gently, so the class sees both ends of a morph.
 #[must_use]
-pub fn ease(s: f32) -> f32 {
+pub(crate) fn ease(s: f32) -> f32 {
     let s = if s.is_nan() { 0.0 } else { s.clamp(0.0, 1.0) };
     s * s * (3.0 - 2.0 * s)
 }
@@ -72,7 +72,7 @@ impl Animation {
 
     /// Frame `index` of `count` (at least 1) starting from `start`.
     #[must_use]
-    pub fn frame(self, start: &ExplorerState, index: usize, count: usize) -> Frame {
+    pub fn frame(self, start: &ExplorerState, index: usize, count: usize) -> AnimationFrame {
         let last = count.max(2) - 1;
         let s = index.min(last) as f64 / last as f64;
         match self {
@@ -84,13 +84,13 @@ impl Animation {
                 state
                     .set_mu_t(if index >= last { start.mu_i() } else { mu_t })
                     .ok();
-                Frame { state, waves: None }
+                AnimationFrame { state, waves: None }
             }
-            Self::Sweep => Frame {
+            Self::Sweep => AnimationFrame {
                 state: swept(start, s * SWEEP_END_DEG),
                 waves: None,
             },
-            Self::Wavefronts => Frame {
+            Self::Wavefronts => AnimationFrame {
                 state: start.clone(),
                 waves: Some(WaveOptions {
                     // `count` frames over one period: the frame after the last is the first.
@@ -133,14 +133,14 @@ fn swept(start: &ExplorerState, degrees: f64) -> ExplorerState {
 
 /// One frame: the state drawn and, for the wavefronts, where they are.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Frame {
+pub struct AnimationFrame {
     /// The state of this frame.
     pub state: ExplorerState,
     /// The wavefronts drawn, if any.
     pub waves: Option<WaveOptions>,
 }
 
-impl Frame {
+impl AnimationFrame {
     /// The frame drawn on a canvas of `size` with `overlay`, back to front: the diagram with
     /// this frame's wavefronts (if any, else the overlay's) over the media and under
     /// everything else; Huygens's construction is drawn when the overlay asks for it.

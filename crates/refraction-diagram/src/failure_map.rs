@@ -10,16 +10,13 @@ use refraction_model::log_map::{LinePoint, Side};
 
 use super::font::Typeface;
 use super::geometry::Rect;
+use super::layout::SMALLEST_TEXT;
 use super::palette::Palette;
 use super::plot::{Axis, Chart, LegendEntry, Marker, MarkerStyle, Sample, legend_row};
 use super::shapes::{Align, Figure, Label, Primitive, lower_all};
 
 /// The sides a map has a panel for, in order, where some line arrives from it.
 const SIDES: [Option<Side>; 3] = [Some(Side::Outside), Some(Side::Inside), None];
-
-/// The smallest text the map draws, in canvas pixels (points on screen): the projector rules'
-/// least at zoom 1.
-pub const SMALLEST_TEXT: f32 = 13.0;
 
 /// How a line's marker is drawn: hollow in the normal's colour when right, filled in the
 /// alarm colour when wrong; a square where the right answer is total internal reflection.
@@ -92,7 +89,7 @@ fn sides_of(points: &[LinePoint]) -> Vec<Option<Side>> {
 
 /// How many panels the map of `points` has: one per side some line arrives from.
 #[must_use]
-pub fn sides(points: &[LinePoint]) -> usize {
+pub(crate) fn sides(points: &[LinePoint]) -> usize {
     sides_of(points).len()
 }
 
@@ -112,7 +109,7 @@ pub fn describe(points: &[LinePoint]) -> String {
 
 /// The text size of a map `width` pixels wide: a line of a panel's title fits.
 #[must_use]
-pub fn text_size(width: f32) -> f32 {
+pub(crate) fn text_size(width: f32) -> f32 {
     (width / 45.0).clamp(SMALLEST_TEXT, 20.0)
 }
 
@@ -235,7 +232,7 @@ fn panel(chart: &Chart, mine: &[&LinePoint], palette: &Palette) -> Vec<Figure> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shapes::texts;
+    use crate::shapes::primitive_texts;
 
     fn point(incidence_deg: f64, error_deg: f64, side: Side, ok: bool) -> LinePoint {
         LinePoint {
@@ -262,7 +259,7 @@ mod tests {
         let face = Typeface::egui_default();
         let size = Vec2::new(480.0, height(&points, 480.0));
         let drawn = primitives(&points, size, &face, &Palette::STANDARD);
-        let words = texts(&drawn);
+        let words = primitive_texts(&drawn);
         assert!(
             words.contains(&"Arriving from outside: 30 lines, none wrong"),
             "{words:?}"
@@ -306,6 +303,6 @@ mod tests {
     fn a_log_without_judged_lines_says_so() {
         let face = Typeface::egui_default();
         let drawn = primitives(&[], Vec2::new(300.0, 200.0), &face, &Palette::STANDARD);
-        assert_eq!(texts(&drawn), ["No line was judged."]);
+        assert_eq!(primitive_texts(&drawn), ["No line was judged."]);
     }
 }

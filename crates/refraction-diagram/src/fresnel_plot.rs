@@ -20,7 +20,7 @@ use refraction_model::{ExplorerState, SpecialAngles};
 
 /// Where the formula comes from, in words (in the current language), shown under the plot.
 #[must_use]
-pub fn source() -> String {
+pub(crate) fn source() -> String {
     t!("diagram-fresnel-source")
 }
 
@@ -39,7 +39,7 @@ fn sample_angles(critical_deg: Option<f64>) -> Vec<f64> {
 
 /// The kernel's Fresnel fractions for μ = `μ_i/μ_t` at `degrees` (0 to 90) from the normal.
 #[must_use]
-pub fn fresnel_at(mu: f64, degrees: f64) -> Fresnel<f64> {
+pub(crate) fn fresnel_at(mu: f64, degrees: f64) -> Fresnel<f64> {
     let (sin, cos) = degrees.to_radians().sin_cos();
     let facing = refract_facing(DVec3::new(sin, -cos, 0.0), DVec3::Y, mu);
     facing.transmitted.map_or(Fresnel::TOTAL_REFLECTION, |t| {
@@ -49,7 +49,7 @@ pub fn fresnel_at(mu: f64, degrees: f64) -> Fresnel<f64> {
 
 /// One curve of the plot.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Curve {
+pub struct FresnelCurve {
     /// Its name in the legend, in the current language.
     pub name: String,
     /// (θi in degrees, fraction) from 0° to 90°.
@@ -77,7 +77,7 @@ pub struct FresnelPlot {
     /// Brewster's and the critical angle.
     pub angles: SpecialAngles,
     /// Rs, Rp, unpolarised R and T against θi, in that order.
-    pub curves: Vec<Curve>,
+    pub curves: Vec<FresnelCurve>,
     /// The current angle of incidence, in degrees.
     pub cursor_deg: f64,
     /// The fractions at the cursor (the kernel's, for the state's own W and N).
@@ -96,7 +96,7 @@ impl FresnelPlot {
             .collect();
         let curves = CURVES
             .iter()
-            .map(|(name, take)| Curve {
+            .map(|(name, take)| FresnelCurve {
                 name: name(),
                 points: samples.iter().map(|(deg, f)| (*deg, take(f))).collect(),
             })
@@ -274,7 +274,7 @@ impl PlotFrame {
 /// The style of each curve, in the order of [`FresnelPlot::curves`], for text `text` pixels
 /// high: colour, dash and width, so that they differ without colour too.
 #[must_use]
-pub fn curve_strokes(palette: &Palette, text: f32) -> [Stroke; 4] {
+pub(crate) fn curve_strokes(palette: &Palette, text: f32) -> [Stroke; 4] {
     let width = (text / 7.0).max(2.0);
     [
         (palette.reflected, Dash::Solid, width),
@@ -473,7 +473,7 @@ impl PlotPainter<'_> {
 /// the landmarks named above the plot, the curves, the cursor with the values there, the
 /// legend (beside the plot on a wide canvas, under it on a narrow one) and the source.
 #[must_use]
-pub fn primitives(
+pub fn fresnel_plot(
     plot: &FresnelPlot,
     size: Vec2,
     face: &Typeface,
@@ -515,7 +515,7 @@ pub fn primitives(
 mod tests {
     use super::*;
     use crate::palette::Theme;
-    use crate::shapes::texts;
+    use crate::shapes::primitive_texts;
 
     fn state(w: DVec3, mu_i: f64, mu_t: f64) -> ExplorerState {
         let mut s = ExplorerState::default();
@@ -580,7 +580,7 @@ mod tests {
                 Vec2::new(1200.0, 330.0),
                 Vec2::new(1280.0, 720.0),
             ] {
-                let drawn = primitives(&plot, size, &face, &Palette::STANDARD);
+                let drawn = fresnel_plot(&plot, size, &face, &Palette::STANDARD);
                 let canvas = Rect::from_min_size(Vec2::ZERO, size);
                 let problems = crate::placer::text_problems(&drawn, &face, &canvas);
                 assert!(problems.is_empty(), "{locale:?} {size}: {problems:?}");
@@ -598,8 +598,8 @@ mod tests {
         let plot = FresnelPlot::of(&state(DVec3::new(0.3, -0.9, 0.0), 1.5, 1.0));
         let size = Vec2::new(1280.0, 720.0);
         let face = Typeface::egui_default();
-        let primitives = primitives(&plot, size, &face, &Palette::new(Theme::Standard, false));
-        let texts = texts(&primitives);
+        let primitives = fresnel_plot(&plot, size, &face, &Palette::new(Theme::Standard, false));
+        let texts = primitive_texts(&primitives);
         for wanted in [
             "Brewster's angle θB = 33.7°",
             "critical angle θc = 41.8°",

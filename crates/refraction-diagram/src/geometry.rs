@@ -52,7 +52,7 @@ impl Colour {
 
     /// The colour's relative luminance (WCAG 2): 0 for black, 1 for white; opacity ignored.
     #[must_use]
-    pub fn luminance(self) -> f32 {
+    pub(crate) fn luminance(self) -> f32 {
         let linear = |c: u8| {
             let c = f32::from(c) / 255.0;
             if c <= 0.040_45 {
@@ -145,7 +145,7 @@ impl Rect {
 
 /// The convex polygon `rect ∩ {p : (p − through)·normal ≥ 0}` (empty when they do not meet).
 #[must_use]
-pub fn clip_rect_to_half_plane(rect: &Rect, through: Vec2, normal: Vec2) -> Vec<Vec2> {
+pub(crate) fn clip_rect_to_half_plane(rect: &Rect, through: Vec2, normal: Vec2) -> Vec<Vec2> {
     let side = |p: Vec2| (p - through).dot(normal);
     let corners = rect.corners();
     let mut out = Vec::with_capacity(5);
@@ -172,7 +172,7 @@ fn turn(a: Vec2, b: Vec2, c: Vec2) -> f32 {
 /// triangles of ear clipping. A repeated closing point is ignored; fewer than three corners give
 /// nothing. A self-intersecting outline gives triangles that cover it only roughly, never a panic.
 #[must_use]
-pub fn convex_pieces(points: &[Vec2]) -> Vec<Vec<Vec2>> {
+pub(crate) fn convex_pieces(points: &[Vec2]) -> Vec<Vec<Vec2>> {
     let mut corners = points.to_vec();
     if corners.len() > 1 && corners.first() == corners.last() {
         corners.pop();
@@ -222,7 +222,7 @@ pub fn convex_pieces(points: &[Vec2]) -> Vec<Vec<Vec2>> {
 
 /// The part of the segment `a`–`b` inside `rect` (Liang–Barsky), or `None`.
 #[must_use]
-pub fn clip_segment(a: Vec2, b: Vec2, rect: &Rect) -> Option<(Vec2, Vec2)> {
+pub(crate) fn clip_segment(a: Vec2, b: Vec2, rect: &Rect) -> Option<(Vec2, Vec2)> {
     let d = b - a;
     let (mut t0, mut t1) = (0.0_f32, 1.0_f32);
     for (p, q) in [
@@ -250,7 +250,7 @@ pub fn clip_segment(a: Vec2, b: Vec2, rect: &Rect) -> Option<(Vec2, Vec2)> {
 /// Splits a polyline into the drawn pieces of a dash `pattern` (on, off, on, off… lengths in
 /// pixels). An empty or non-positive pattern returns the polyline whole.
 #[must_use]
-pub fn dash(points: &[Vec2], pattern: &[f32]) -> Vec<Vec<Vec2>> {
+pub(crate) fn dash(points: &[Vec2], pattern: &[f32]) -> Vec<Vec<Vec2>> {
     let period: f32 = pattern.iter().sum();
     if !pattern.iter().all(|l| l.is_finite() && *l >= 0.0) || period <= 0.0 {
         return vec![points.to_vec()];
@@ -290,7 +290,7 @@ pub fn dash(points: &[Vec2], pattern: &[f32]) -> Vec<Vec<Vec2>> {
 /// Points along the circular arc around `center` of `radius`, from the direction `from` turning
 /// the short way to the direction `to` (both canvas directions, any non-zero length).
 #[must_use]
-pub fn arc(center: Vec2, radius: f32, from: Vec2, to: Vec2) -> Vec<Vec2> {
+pub(crate) fn arc(center: Vec2, radius: f32, from: Vec2, to: Vec2) -> Vec<Vec2> {
     let start = from.y.atan2(from.x);
     let mut sweep = to.y.atan2(to.x) - start;
     if sweep > core::f32::consts::PI {
@@ -310,7 +310,7 @@ pub fn arc(center: Vec2, radius: f32, from: Vec2, to: Vec2) -> Vec<Vec2> {
 /// The triangle of an arrowhead whose tip is at `tip`, pointing along `direction`, `length`
 /// long and `length`·0.7 wide. Empty when `direction` is zero.
 #[must_use]
-pub fn arrowhead(tip: Vec2, direction: Vec2, length: f32) -> Vec<Vec2> {
+pub(crate) fn arrowhead(tip: Vec2, direction: Vec2, length: f32) -> Vec<Vec2> {
     let Some(d) = direction.try_normalize() else {
         return Vec::new();
     };

@@ -5,38 +5,11 @@
 use super::geometry::Colour;
 use super::numbers::percent;
 use super::shapes::Stroke;
-use refraction_i18n::t;
 use refraction_kernel::{Fresnel, Refraction};
+use refraction_model::Polarisation;
 
 /// A share below this is not drawn at all: the ray has vanished (p light at Brewster's angle).
-pub const VANISHED: f64 = 1e-4;
-
-/// The light the shares are computed for.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Polarisation {
-    /// Polarised perpendicular to the plane of incidence.
-    S,
-    /// Polarised in the plane of incidence: not reflected at all at Brewster's angle.
-    P,
-    /// The mean of s and p, as from a lamp or the sun.
-    #[default]
-    Unpolarised,
-}
-
-impl Polarisation {
-    /// Every choice, in the order of the menu.
-    pub const ALL: [Self; 3] = [Self::Unpolarised, Self::S, Self::P];
-
-    /// The name in the menu and in the labels, in the current language.
-    #[must_use]
-    pub fn label(self) -> String {
-        match self {
-            Self::S => t!("diagram-light-s"),
-            Self::P => t!("diagram-light-p"),
-            Self::Unpolarised => t!("diagram-light-unpolarised"),
-        }
-    }
-}
+pub(crate) const VANISHED: f64 = 1e-4;
 
 /// The fractions of the incoming power that leave by the reflected and the transmitted ray.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -77,7 +50,7 @@ impl Shares {
 /// strength: width and opacity grow with √share (so that 4 % is still seen), and a share below
 /// [`VANISHED`] is not drawn (`None`).
 #[must_use]
-pub fn stroke_for(full: Stroke, share: f64) -> Option<Stroke> {
+pub(crate) fn stroke_for(full: Stroke, share: f64) -> Option<Stroke> {
     if share.is_nan() || share < VANISHED {
         return None;
     }

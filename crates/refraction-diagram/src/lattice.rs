@@ -11,7 +11,7 @@ use glam::Vec2;
 
 use super::buckets;
 use super::geometry::Rect;
-use super::shapes::{Label, PAD};
+use super::shapes::{LABEL_PAD, Label};
 
 /// The lattice over `bounds` for a label of `size`: its step and how many steps it spans
 /// along each side.
@@ -42,10 +42,10 @@ impl Shape {
     pub(crate) fn spots(&self, bounds: &Rect, squares: &Squares) -> Vec<(Vec2, Rect)> {
         let label = &self.label;
         let (step, columns, rows) = lattice(bounds, label.size);
-        let side = self.extent + Vec2::splat(2.0 * label.size * PAD);
+        let side = self.extent + Vec2::splat(2.0 * label.size * LABEL_PAD);
         let whole = ((side - Vec2::splat(0.01)) / step).max(Vec2::ZERO);
         let whole = (whole.x as usize, whole.y as usize);
-        let offset = Vec2::splat(label.size * PAD)
+        let offset = Vec2::splat(label.size * LABEL_PAD)
             + self.extent * Vec2::new(label.h.fraction(), label.v.fraction());
         let anchor = |(column, row): (usize, usize)| {
             bounds.min + Vec2::new(column as f32, row as f32) * step + offset

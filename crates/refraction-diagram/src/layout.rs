@@ -112,7 +112,7 @@ pub struct IndexScale {
 impl IndexScale {
     /// The y of an index (clamped to the scale).
     #[must_use]
-    pub fn y_of(&self, index: f64) -> f32 {
+    pub(crate) fn y_of(&self, index: f64) -> f32 {
         let (low, high) = INDEX_RANGE;
         let t = ((index - low) / (high - low)).clamp(0.0, 1.0) as f32;
         self.bottom + (self.top - self.bottom) * t
@@ -120,7 +120,7 @@ impl IndexScale {
 
     /// The index at height `y` (clamped to [`INDEX_RANGE`]), rounded to 0.001.
     #[must_use]
-    pub fn index_at(&self, y: f32) -> f64 {
+    pub(crate) fn index_at(&self, y: f32) -> f64 {
         let (low, high) = INDEX_RANGE;
         let t = f64::from((y - self.bottom) / (self.top - self.bottom));
         let t = if t.is_finite() {
@@ -139,13 +139,13 @@ pub const SMALLEST_TEXT: f32 = 13.0;
 /// The label font size in pixels for a canvas `size` pixels wide and high: larger canvases
 /// (a projector, a 1080p export) get larger text, within limits.
 #[must_use]
-pub fn font_size(size: Vec2) -> f32 {
+pub(crate) fn font_size(size: Vec2) -> f32 {
     (size.min_element() / 48.0).clamp(13.0, 30.0)
 }
 
 /// The index scale's width in label font sizes: the material names (`diamond`) left of its
 /// line and the μi marker, the μt marker and the values right of it.
-pub const SCALE_WIDTH: f32 = 8.8;
+pub(crate) const SCALE_WIDTH: f32 = 8.8;
 
 /// Where everything goes on a canvas of one size.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -156,7 +156,7 @@ pub struct Layout {
     pub banner: Rect,
     /// The area of the interface diagram (canvas minus banner and scale).
     pub drawing: Rect,
-    /// The index scale, unless it is folded away ([`Layout::without_scale`]).
+    /// The index scale, unless it is folded away (presentation's diagram-only key).
     pub scale: Option<IndexScale>,
     /// The world↔canvas map.
     pub view: Viewport,
@@ -176,14 +176,14 @@ impl Layout {
     /// The same canvas with a banner `height` pixels high (at most half the canvas), the
     /// drawing area and the index scale (if it has one) below it.
     #[must_use]
-    pub fn with_banner_height(self, height: f32) -> Self {
+    pub(crate) fn with_banner_height(self, height: f32) -> Self {
         Self::with_banner(self.canvas.size(), height, self.scale.is_some())
     }
 
     /// The same canvas with the index scale folded away: the drawing takes its width too
     /// (presentation's diagram-only key).
     #[must_use]
-    pub fn without_scale(self) -> Self {
+    pub(crate) fn without_scale(self) -> Self {
         Self::with_banner(self.canvas.size(), self.banner.size().y, false)
     }
 
@@ -235,7 +235,7 @@ impl Layout {
 
     /// The size in pixels of text `scale` times the label font, never below [`SMALLEST_TEXT`].
     #[must_use]
-    pub fn text_size(&self, scale: f32) -> f32 {
+    pub(crate) fn text_size(&self, scale: f32) -> f32 {
         (self.font * scale).max(SMALLEST_TEXT)
     }
 }

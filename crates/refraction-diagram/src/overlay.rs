@@ -3,9 +3,9 @@
 //! about. Kept in the diagram model, not in the window, so that the PNG export shows them too.
 
 use glam::DVec3;
+use refraction_model::Polarisation;
 
-use super::intensities::Polarisation;
-pub use super::layout::{PanZoom, ZOOM_RANGE};
+use super::layout::PanZoom;
 use super::palette::Palette;
 use super::wavefronts::WaveOptions;
 use refraction_kernel::Rejection;
@@ -35,7 +35,7 @@ pub struct VectorNames {
 
 /// A part of the diagram that a walk-through step can highlight.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Part {
+pub(crate) enum Part {
     /// The incoming ray.
     Incoming,
     /// W.
@@ -76,7 +76,7 @@ pub enum Focus {
 impl Focus {
     /// The parts this focus highlights.
     #[must_use]
-    pub fn parts(self) -> &'static [Part] {
+    pub(crate) fn parts(self) -> &'static [Part] {
         use Part::{AngleI, AngleT, Candidate, Decomposition, Incoming, N, T, W};
         use Rejection::{Reversed, WrongBend, WrongSide};
         match self {
@@ -152,7 +152,7 @@ impl Default for Overlay {
 impl Overlay {
     /// Whether `part` is highlighted.
     #[must_use]
-    pub fn highlights(&self, part: Part) -> bool {
+    pub(crate) fn highlights(&self, part: Part) -> bool {
         self.focus.is_some_and(|f| f.parts().contains(&part))
     }
 }

@@ -16,9 +16,9 @@ pub const BACKGROUND: Colour = Colour::hex(0xFFFFFF);
 /// Dark text and the surface line.
 pub const INK: Colour = Colour::hex(0x202020);
 /// Reference lines (the normal's axis, the index scale).
-pub const GUIDE: Colour = Colour::hex(0x8A8A8A);
+pub(crate) const GUIDE: Colour = Colour::hex(0x8A8A8A);
 /// The incoming ray.
-pub const INCOMING: Colour = Colour::hex(0x555555);
+pub(crate) const INCOMING: Colour = Colour::hex(0x555555);
 /// W.
 pub const W: Colour = Colour::hex(0xE69F00);
 /// N.
@@ -26,32 +26,32 @@ pub const N: Colour = Colour::hex(0x009E73);
 /// T, the refracted ray.
 pub const T: Colour = Colour::hex(0x0072B2);
 /// The reflected ray.
-pub const REFLECTED: Colour = Colour::hex(0xCC79A7);
+pub(crate) const REFLECTED: Colour = Colour::hex(0xCC79A7);
 /// The rejected candidates.
-pub const REJECTED: Colour = Colour::hex(0x6E6E6E);
+pub(crate) const REJECTED: Colour = Colour::hex(0x6E6E6E);
 /// The paper's formula with the un-flipped normal (the bug's wrong T) and other warnings.
-pub const WARNING: Colour = Colour::hex(0xD55E00);
+pub(crate) const WARNING: Colour = Colour::hex(0xD55E00);
 /// The critical-angle line.
-pub const CRITICAL: Colour = Colour::hex(0x7B3294);
+pub(crate) const CRITICAL: Colour = Colour::hex(0x7B3294);
 /// The total-internal-reflection banner.
-pub const ALARM: Colour = Colour::hex(0xB00020);
+pub(crate) const ALARM: Colour = Colour::hex(0xB00020);
 /// The ordinary banner.
-pub const CALM: Colour = Colour::hex(0xEEF2F6);
+pub(crate) const CALM: Colour = Colour::hex(0xEEF2F6);
 /// A medium with index 1.
-pub const THIN_MEDIUM: Colour = Colour::hex(0xF6F9FC);
+pub(crate) const THIN_MEDIUM: Colour = Colour::hex(0xF6F9FC);
 /// A medium with the index at the top of the scale.
-pub const DENSE_MEDIUM: Colour = Colour::hex(0x8DB6DC);
+pub(crate) const DENSE_MEDIUM: Colour = Colour::hex(0x8DB6DC);
 /// White light traced at one wavelength (no dispersion asked for): neutral on the light canvas.
-pub const WHITE_LIGHT: Colour = Colour::hex(0x767676);
+pub(crate) const WHITE_LIGHT: Colour = Colour::hex(0x767676);
 /// Beyond the world rectangle of a scene, where no ray goes.
-pub const OUTSIDE_WORLD: Colour = Colour::hex(0xE2E5E9);
+pub(crate) const OUTSIDE_WORLD: Colour = Colour::hex(0xE2E5E9);
 /// Behind labels.
-pub const LABEL_BACKGROUND: Colour = Colour::hex(0xFFFFFF).with_alpha(210);
+pub(crate) const LABEL_BACKGROUND: Colour = Colour::hex(0xFFFFFF).with_alpha(210);
 
 /// The student's T drawn beside the right one.
-pub const STUDENT: Colour = Colour::hex(0x000000);
+pub(crate) const STUDENT: Colour = Colour::hex(0x000000);
 /// The halo behind what a walk-through step is about.
-pub const HIGHLIGHT: Colour = Colour::hex(0xF0E442).with_alpha(170);
+pub(crate) const HIGHLIGHT: Colour = Colour::hex(0xF0E442).with_alpha(170);
 
 /// The diagram's themes: the standard look and the two high-contrast ones for a projector.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -100,7 +100,7 @@ impl Theme {
 
     /// Whether the background is dark.
     #[must_use]
-    pub fn is_dark(self) -> bool {
+    pub(crate) fn is_dark(self) -> bool {
         self == Self::HighContrastDark
     }
 }
@@ -295,7 +295,7 @@ impl Palette {
 
     /// [`Palette::text_shade`] on the fill `back` (a banner's) instead of the background.
     #[must_use]
-    pub fn text_shade_on(&self, colour: Colour, back: Colour) -> Colour {
+    pub(crate) fn text_shade_on(&self, colour: Colour, back: Colour) -> Colour {
         (7_u8..=20)
             .map(|i| colour.lerp(self.text_toward, f32::from(i) / 20.0))
             .find(|shade| shade.over(back).contrast(back) >= 4.6)

@@ -97,7 +97,7 @@ fn banner_text(r: &Refraction<f64>) -> String {
 /// angles, or total internal reflection), or that the answer is hidden: its [`Diagram::summary`]
 /// without laying it out.
 #[must_use]
-pub fn summary(state: &ExplorerState, hide_answer: bool) -> String {
+pub fn diagram_summary(state: &ExplorerState, hide_answer: bool) -> String {
     if hide_answer {
         t!("deck-answer-hidden")
     } else {
@@ -115,7 +115,7 @@ fn banner_words(state: &ExplorerState, overlay: &Overlay) -> String {
             Convention::AlongRay => t!("diagram-banner-asked-along-ray"),
         }
     } else {
-        summary(state, overlay.hide_answer)
+        diagram_summary(state, overlay.hide_answer)
     }
 }
 
@@ -149,7 +149,7 @@ fn layout_with_banner(
 }
 
 /// How much larger than a handle its grab area is (half-side over radius).
-pub const GRAB_SCALE: f32 = 1.6;
+pub(crate) const GRAB_SCALE: f32 = 1.6;
 
 /// The least side of a handle's grab area for a finger ([`Overlay::touch`]), in pixels (CSS
 /// pixels in a browser): 44, WCAG 2.1's target size (2.5.5) and Apple's and Google's guides.
@@ -157,7 +157,7 @@ pub const TOUCH_TARGET: f32 = 44.0;
 
 /// The shade of a medium in `palette`: lighter for lower index (clamped to [`INDEX_RANGE`]).
 #[must_use]
-pub fn medium_colour(palette: &Palette, index: f64) -> Colour {
+pub(crate) fn medium_colour(palette: &Palette, index: f64) -> Colour {
     let (low, high) = INDEX_RANGE;
     palette
         .thin_medium

@@ -22,9 +22,9 @@ const LEADER_ALPHA: u8 = 120;
 
 /// What is wrong with the texts among `primitives`, drawn in `face` on `canvas`: each text that
 /// covers another or reaches outside the canvas, in words (empty when nothing is). The views'
-/// tests and the layout audit ask it of every figure they draw.
-#[must_use]
-pub fn text_problems(
+/// tests ask it of every figure they draw.
+#[cfg(test)]
+pub(crate) fn text_problems(
     primitives: &[crate::Primitive],
     face: &Typeface,
     canvas: &Rect,
@@ -381,7 +381,7 @@ impl<'f> Placer<'f> {
     /// Places every label of `labels` in order, each inside the bounds given with it, as
     /// its need says.
     #[must_use]
-    pub fn place_all(
+    pub(crate) fn place_all(
         &mut self,
         labels: impl IntoIterator<Item = (Label, Rect, Need)>,
     ) -> Placement {
@@ -417,12 +417,13 @@ fn segments_cross(p0: Vec2, p1: Vec2, q0: Vec2, q1: Vec2) -> bool {
 /// only (a word wider than `width` gets a line of its own). Existing line breaks are kept.
 /// Linear in the text's length.
 #[must_use]
-pub fn wrap(face: &Typeface, text: &str, size: f32, width: f32) -> String {
+pub(crate) fn wrap(face: &Typeface, text: &str, size: f32, width: f32) -> String {
     wrap_lines(face, text, size, width, false)
 }
 
-/// [`wrap`], but a word wider than a line is cut into pieces that fit (a page's text, where
-/// one unbroken word must not run off the paper). Linear in the text's length: each character
+/// `text` broken into lines no wider than `width` pixels at font size `size`, as the labels
+/// wrap, but a word wider than a line is cut into pieces that fit (a page's text, where one
+/// unbroken word must not run off the paper). Linear in the text's length: each character
 /// is measured once or twice.
 #[must_use]
 pub fn wrap_breaking_words(face: &Typeface, text: &str, size: f32, width: f32) -> String {

@@ -12,7 +12,7 @@ use super::shapes::{Align, Dash, Figure, Label, Stroke};
 
 /// The shape of a series' markers, so that no two series differ by colour alone.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Marker {
+pub(crate) enum Marker {
     /// A circle.
     Circle,
     /// A square.
@@ -30,7 +30,7 @@ pub enum Marker {
 /// How one marker is drawn: its shape, colour and whether it is filled (hollow markers are
 /// filled with the background).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct MarkerStyle {
+pub(crate) struct MarkerStyle {
     /// The shape.
     pub shape: Marker,
     /// The outline's (and a filled marker's) colour.
@@ -43,7 +43,7 @@ impl MarkerStyle {
     /// The figures of this marker at `center`, `radius` pixels from centre to edge, over a
     /// `background`.
     #[must_use]
-    pub fn figures(&self, center: Vec2, radius: f32, background: Colour) -> Vec<Figure> {
+    pub(crate) fn figures(&self, center: Vec2, radius: f32, background: Colour) -> Vec<Figure> {
         let outline = Stroke {
             width: (radius / 3.0).max(1.5),
             colour: self.colour,
@@ -112,7 +112,7 @@ impl MarkerStyle {
 
 /// A linear axis: the values at its two ends and the step between its ticks.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Axis {
+pub(crate) struct Axis {
     /// The value at the start (left or bottom).
     pub min: f64,
     /// The value at the end (right or top).
@@ -125,7 +125,7 @@ impl Axis {
     /// An axis from 0 to a round value at least `largest` (and at least `least`), in at most
     /// `most` steps (and at least two where `most` allows), 1, 2 or 5 times a power of ten.
     #[must_use]
-    pub fn from_zero(largest: f64, least: f64, most: usize) -> Self {
+    pub(crate) fn from_zero(largest: f64, least: f64, most: usize) -> Self {
         let largest = if largest.is_finite() {
             largest.max(least)
         } else {
@@ -148,7 +148,7 @@ impl Axis {
     /// An axis covering `low` to `high` (any order), its ends on whole steps, in at most
     /// `most` steps of 1, 2 or 5 times a power of ten.
     #[must_use]
-    pub fn covering(low: f64, high: f64, most: usize) -> Self {
+    pub(crate) fn covering(low: f64, high: f64, most: usize) -> Self {
         let (low, high) = (low.min(high), low.max(high));
         let span = Self::from_zero(
             high - low,
@@ -166,7 +166,7 @@ impl Axis {
 
     /// The fraction of the way from `min` to `max` that `value` lies, clamped to [0, 1].
     #[must_use]
-    pub fn fraction(&self, value: f64) -> f32 {
+    pub(crate) fn fraction(&self, value: f64) -> f32 {
         let span = self.max - self.min;
         if span > 0.0 {
             ((value - self.min) / span).clamp(0.0, 1.0) as f32
@@ -177,7 +177,7 @@ impl Axis {
 
     /// The tick values from `min` to `max`.
     #[must_use]
-    pub fn ticks(&self) -> Vec<f64> {
+    pub(crate) fn ticks(&self) -> Vec<f64> {
         let count = ((self.max - self.min) / self.step).round().max(0.0) as usize;
         (0..=count)
             .map(|i| self.min + self.step * i as f64)
@@ -186,7 +186,7 @@ impl Axis {
 
     /// The decimals a tick label needs to tell the ticks apart.
     #[must_use]
-    pub fn decimals(&self) -> usize {
+    pub(crate) fn decimals(&self) -> usize {
         let places = -self.step.log10().floor();
         if places > 0.0 { places as usize } else { 0 }
     }
@@ -194,7 +194,7 @@ impl Axis {
 
 /// A plot's area on a canvas, its axes and its text size.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Chart {
+pub(crate) struct Chart {
     /// The plotting area, in canvas pixels.
     pub area: Rect,
     /// The horizontal axis.
@@ -208,7 +208,7 @@ pub struct Chart {
 impl Chart {
     /// The canvas point of the value (`x`, `y`), clamped to the area.
     #[must_use]
-    pub fn at(&self, x: f64, y: f64) -> Vec2 {
+    pub(crate) fn at(&self, x: f64, y: f64) -> Vec2 {
         let (min, max) = (self.area.min, self.area.max);
         Vec2::new(
             min.x + (max.x - min.x) * self.x.fraction(x),
@@ -219,7 +219,7 @@ impl Chart {
     /// The grid, the frame and the tick labels with their `unit` suffixes (`°`, ` %`), in
     /// `palette`'s colours.
     #[must_use]
-    pub fn axes(&self, units: (&str, &str), palette: &Palette) -> Vec<Figure> {
+    pub(crate) fn axes(&self, units: (&str, &str), palette: &Palette) -> Vec<Figure> {
         let grid = Stroke {
             width: 1.0,
             colour: palette.guide.with_alpha(90),
@@ -273,7 +273,7 @@ impl Chart {
 
 /// What a legend entry shows of its series: a marker or a short piece of its line.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Sample {
+pub(crate) enum Sample {
     /// A marker of this style.
     Marker(MarkerStyle),
     /// A line drawn with this stroke.
@@ -307,7 +307,7 @@ impl Sample {
 
 /// One entry of a legend: its sample and its words.
 #[derive(Clone, Debug, PartialEq)]
-pub struct LegendEntry {
+pub(crate) struct LegendEntry {
     /// The sample drawn before the words.
     pub sample: Sample,
     /// The words.
@@ -317,7 +317,7 @@ pub struct LegendEntry {
 impl LegendEntry {
     /// The entry's width with text `size` pixels high.
     #[must_use]
-    pub fn width(&self, size: f32, face: &Typeface) -> f32 {
+    pub(crate) fn width(&self, size: f32, face: &Typeface) -> f32 {
         self.sample.width(size) + size * 0.4 + face.width(&self.text, size)
     }
 
@@ -340,7 +340,7 @@ impl LegendEntry {
 /// The legend of `entries` as a row from `at` (its top left), wrapped at `width`; its figures
 /// and its height.
 #[must_use]
-pub fn legend_row(
+pub(crate) fn legend_row(
     entries: &[LegendEntry],
     at: Vec2,
     width: f32,
@@ -380,7 +380,7 @@ pub fn legend_row(
 
 /// The legend of `entries` as a column from `at` (its top left); its figures and its height.
 #[must_use]
-pub fn legend_column(
+pub(crate) fn legend_column(
     entries: &[LegendEntry],
     at: Vec2,
     size: f32,

@@ -5,43 +5,43 @@
 //! projector or a printed page survives a smudge of 15 %).
 
 use glam::Vec2;
-use qrcode::{Color, EcLevel, QrCode};
+use qrcode::{Color, EcLevel};
 
 use crate::geometry::Colour;
 use crate::shapes::Primitive;
 
 /// The modules of light margin around the code (the standard's quiet zone).
-pub const QUIET_ZONE: usize = 4;
+pub(crate) const QUIET_ZONE: usize = 4;
 
 /// The dark modules' colour.
-pub const DARK: Colour = Colour::hex(0x000000);
+pub(crate) const DARK: Colour = Colour::hex(0x000000);
 
 /// The light square's colour.
-pub const LIGHT: Colour = Colour::hex(0xffffff);
+pub(crate) const LIGHT: Colour = Colour::hex(0xffffff);
 
 /// Why a text has no QR code.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 // untranslated: for developers; the window says `link-qr-too-long`.
 #[error("the link is too long for a QR code ({0} bytes)")]
-pub struct TooLong(pub usize);
+pub struct QrTooLong(pub usize);
 
 /// A QR code: a square of modules, each dark or light.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Code {
+pub struct QrCode {
     /// Modules per side, without the quiet zone.
     width: usize,
     /// Row after row, `true` for a dark module.
     dark: Vec<bool>,
 }
 
-impl Code {
+impl QrCode {
     /// The QR code of `text` (a link: its bytes as they are).
     ///
     /// # Errors
     /// The text is longer than the largest code holds at level M (about 2,300 bytes).
-    pub fn new(text: &str) -> Result<Self, TooLong> {
-        let code = QrCode::with_error_correction_level(text.as_bytes(), EcLevel::M)
-            .map_err(|_data_too_long| TooLong(text.len()))?;
+    pub fn new(text: &str) -> Result<Self, QrTooLong> {
+        let code = qrcode::QrCode::with_error_correction_level(text.as_bytes(), EcLevel::M)
+            .map_err(|_data_too_long| QrTooLong(text.len()))?;
         Ok(Self {
             width: code.width(),
             dark: code
@@ -60,7 +60,7 @@ impl Code {
 
     /// Whether the module at `column`, `row` (from the top left, quiet zone excluded) is dark.
     #[must_use]
-    pub fn is_dark(&self, column: usize, row: usize) -> bool {
+    pub(crate) fn is_dark(&self, column: usize, row: usize) -> bool {
         column < self.width && row < self.width && self.dark[row * self.width + column]
     }
 
@@ -118,7 +118,7 @@ mod tests {
     #[test]
     fn a_link_becomes_a_square_of_modules_in_a_quiet_zone() {
         let link = "https://school.example/explorer/#lesson=snell&step=2";
-        let code = Code::new(link).unwrap();
+        let code = QrCode::new(link).unwrap();
         assert_eq!((code.width - 17) % 4, 0, "a QR version's size: 17 + 4v");
         // The three finder patterns: dark 7×7 corners.
         for (c, r) in [(0, 0), (code.width - 7, 0), (0, code.width - 7)] {
@@ -150,6 +150,6 @@ mod tests {
             (dark - counted).abs() < 0.01,
             "{dark} modules drawn, {counted} dark"
         );
-        assert_eq!(Code::new(&"x".repeat(5000)), Err(TooLong(5000)));
+        assert_eq!(QrCode::new(&"x".repeat(5000)), Err(QrTooLong(5000)));
     }
 }

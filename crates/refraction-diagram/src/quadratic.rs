@@ -84,7 +84,7 @@ impl Quadratic {
 /// The parabola of `q` on a canvas of `size` with text `text` pixels high, in `palette`'s
 /// colours: the zero line, the curve over its window and the kernel's roots on it.
 #[must_use]
-pub fn primitives(q: &Quadratic, size: Vec2, text: f32, palette: &Palette) -> Vec<Primitive> {
+pub fn quadratic_plot(q: &Quadratic, size: Vec2, text: f32, palette: &Palette) -> Vec<Primitive> {
     let ((x0, x1), (y0, y1)) = q.window();
     let rows = (size.y / (text * 2.2)).floor().clamp(1.0, 5.0) as usize;
     let chart = Chart {

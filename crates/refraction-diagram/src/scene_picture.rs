@@ -4,7 +4,7 @@
 //! [`Primitive`]s directly (no dashes to lower), because a scene of a thousand rays is rebuilt
 //! on every frame of a drag.
 
-use crate::scene_words::{medium_name, title};
+use crate::scene_words::{medium_name, scene_title};
 use std::collections::{HashMap, HashSet};
 
 use glam::{DVec2, Vec2};
@@ -378,7 +378,7 @@ fn banner_rows(
         ));
     }
     [
-        (vec![(title(scene), p.ink)], font * 1.05),
+        (vec![(scene_title(scene), p.ink)], font * 1.05),
         (count_row, small),
         (legend(scene, trace, (p, told)), small),
     ]
@@ -867,7 +867,7 @@ impl ScenePictureBuilder<'_> {
         }
         format!(
             "{}: {}",
-            title(scene),
+            scene_title(scene),
             counts_text(&trace.counts, self.told)
         )
     }

@@ -58,7 +58,7 @@ fn file_words(name: &str) -> Option<&'static [String; 2]> {
 
 /// The title of the built-in scene `name`, in the current language.
 #[must_use]
-pub fn built_in_title(name: &str) -> Option<String> {
+pub fn built_in_scene_title(name: &str) -> Option<String> {
     built_in_words(name).map(|[title, _]| title)
 }
 
@@ -75,13 +75,13 @@ fn words(scene: &Scene, part: usize) -> String {
 
 /// `scene`'s title, in the current language where it is a built-in scene's own.
 #[must_use]
-pub fn title(scene: &Scene) -> String {
+pub fn scene_title(scene: &Scene) -> String {
     words(scene, TITLE)
 }
 
 /// `scene`'s description, in the current language where it is a built-in scene's own.
 #[must_use]
-pub fn description(scene: &Scene) -> String {
+pub fn scene_description(scene: &Scene) -> String {
     words(scene, DESCRIPTION)
 }
 
@@ -120,8 +120,8 @@ mod tests {
             for info in catalogue() {
                 let scene = Scene::embedded(info.name).unwrap();
                 let words = [
-                    (title(&scene), scene.title()),
-                    (description(&scene), scene.description()),
+                    (scene_title(&scene), scene.title()),
+                    (scene_description(&scene), scene.description()),
                 ];
                 for (words, english) in words {
                     assert!(!words.starts_with('['), "{locale}: {words}");
@@ -151,9 +151,9 @@ mod tests {
         let source = own.to_toml().unwrap().replace("Glass slab", "My bench");
         own = Scene::from_toml(&source, "test", "slab").unwrap();
         let words = (
-            title(&own),
+            scene_title(&own),
             medium_name("crown"),
-            title(&Scene::embedded("slab").unwrap()),
+            scene_title(&Scene::embedded("slab").unwrap()),
         );
         refraction_i18n::set_locale(Locale::En);
         assert_eq!((words.0.as_str(), words.1.as_str()), ("My bench", "crown"));

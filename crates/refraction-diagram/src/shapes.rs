@@ -111,14 +111,14 @@ pub struct Label {
 
 /// The margin drawn around a label's text (its background box), as a fraction of its size: the
 /// painters draw the background this much larger than the text.
-pub const PAD: f32 = 0.2;
+pub const LABEL_PAD: f32 = 0.2;
 
 impl Label {
     /// The box the label covers with its anchor at `at`, when its text measures `extent`: the
-    /// text and the background's margin ([`PAD`]).
+    /// text and the background's margin ([`LABEL_PAD`]).
     #[must_use]
     pub fn boxed(&self, extent: Vec2, at: Vec2) -> Rect {
-        let pad = Vec2::splat(self.size * PAD);
+        let pad = Vec2::splat(self.size * LABEL_PAD);
         let min = at - extent * Vec2::new(self.h.fraction(), self.v.fraction()) - pad;
         Rect {
             min,
@@ -219,7 +219,7 @@ pub enum Primitive {
 
 /// The words of every text among `primitives`, in drawing order.
 #[must_use]
-pub fn texts(primitives: &[Primitive]) -> Vec<&str> {
+pub fn primitive_texts(primitives: &[Primitive]) -> Vec<&str> {
     primitives
         .iter()
         .filter_map(|p| match p {
@@ -242,7 +242,7 @@ fn polylines(points: &[Vec2], stroke: &Stroke, out: &mut Vec<Primitive>) {
 impl Figure {
     /// The arrowhead length for a shaft `width` pixels wide.
     #[must_use]
-    pub fn head_length(width: f32) -> f32 {
+    pub(crate) fn head_length(width: f32) -> f32 {
         (width * 4.0).max(9.0)
     }
 
@@ -288,7 +288,7 @@ impl Figure {
 
 /// The primitives of `shapes`, in drawing order.
 #[must_use]
-pub fn lower_all(shapes: &[Figure]) -> Vec<Primitive> {
+pub(crate) fn lower_all(shapes: &[Figure]) -> Vec<Primitive> {
     let mut out = Vec::new();
     for shape in shapes {
         shape.lower(&mut out);

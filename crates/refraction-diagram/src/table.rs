@@ -31,7 +31,7 @@ pub struct CandidateRow {
 
 /// The role of a candidate, as the table names it in the current language.
 #[must_use]
-pub fn role(rejection: Option<Rejection>) -> String {
+pub(crate) fn role(rejection: Option<Rejection>) -> String {
     match rejection {
         None => t!("diagram-role-chosen"),
         Some(Rejection::WrongSide) => t!("diagram-role-wrong-side"),
@@ -43,7 +43,7 @@ pub fn role(rejection: Option<Rejection>) -> String {
 /// The rule a rejected candidate breaks, in a sentence in the current language (the kernel's
 /// [`Rejection::rule`] in English).
 #[must_use]
-pub fn rule(rejection: Rejection) -> String {
+pub(crate) fn rule(rejection: Rejection) -> String {
     match rejection {
         Rejection::WrongSide => t!("diagram-rule-wrong-side"),
         Rejection::WrongBend => t!("diagram-rule-wrong-bend"),
@@ -54,7 +54,7 @@ pub fn rule(rejection: Rejection) -> String {
 /// The rows for the kernel's four candidates, in the paper's order (empty on total internal
 /// reflection, where there are none).
 #[must_use]
-pub fn rows(r: &Refraction<f64>) -> Vec<CandidateRow> {
+pub fn candidate_rows(r: &Refraction<f64>) -> Vec<CandidateRow> {
     let tolerance = r.tolerance();
     r.candidates
         .iter()
@@ -82,7 +82,7 @@ mod tests {
 
     #[test]
     fn all_four_keep_the_squared_laws_and_only_t_keeps_the_rest() {
-        let rows = rows(ExplorerState::default().refraction());
+        let rows = candidate_rows(ExplorerState::default().refraction());
         assert_eq!(rows.len(), 4);
         for row in &rows {
             assert!(row.unit && row.squared_snell, "{row:?}");

@@ -9,7 +9,7 @@ use refraction_kernel::{Convention, Refraction};
 
 /// One step of the walk-through.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Step {
+pub struct WalkthroughStep {
     /// A short title in the current language, e.g. `The two roots for a`.
     pub title: String,
     /// The paper's equations for this step, with numbers.
@@ -125,12 +125,12 @@ fn wording(convention: Convention) -> &'static Wording {
 
 /// Every step for the refraction `r`, in the paper's order.
 #[must_use]
-pub fn steps(r: &Refraction<f64>) -> Vec<Step> {
+pub fn walkthrough_steps(r: &Refraction<f64>) -> Vec<WalkthroughStep> {
     let mut all = equations(r);
     all.extend(other_equations(r));
     STEPS
         .iter()
-        .map(|step| Step {
+        .map(|step| WalkthroughStep {
             title: (step.title)(),
             equations: step
                 .cites
@@ -276,7 +276,7 @@ mod tests {
     #[test]
     fn the_steps_follow_the_source_with_live_numbers() {
         let mut state = ExplorerState::default();
-        let along = steps(state.refraction());
+        let along = walkthrough_steps(state.refraction());
         assert_eq!(along.len(), 8);
         let numbers: Vec<&str> = along
             .iter()
@@ -297,12 +297,12 @@ mod tests {
         assert!(along[5].explanation.contains("a = +μ"));
         assert!(along[5].explanation.contains("a = −μ solution"));
         state.set_convention(Convention::TowardOrigin);
-        let toward = steps(state.refraction());
+        let toward = walkthrough_steps(state.refraction());
         assert_eq!(toward[5].equations[0].formula, "a = −μ");
         assert!(toward[5].explanation.contains("direction of travel, −W"));
         state.flip_normal();
         assert!(
-            steps(state.refraction())[7]
+            walkthrough_steps(state.refraction())[7]
                 .explanation
                 .contains("outward normal")
         );
@@ -314,15 +314,15 @@ mod tests {
         state.set_mu_i(1.5).unwrap();
         state.set_mu_t(1.0).unwrap();
         state.rotate(refraction_model::HandleId::W, 40.0);
-        let all = steps(state.refraction());
+        let all = walkthrough_steps(state.refraction());
         assert!(all[0].equations[0].substituted.contains("> 1: no angle θt"));
         assert!(all[3].equations[0].substituted.contains("no real (a, b)"));
     }
 
     /// The steps of `state` in `locale`; the thread speaks English again after.
-    fn steps_in(locale: Locale, state: &ExplorerState) -> Vec<Step> {
+    fn steps_in(locale: Locale, state: &ExplorerState) -> Vec<WalkthroughStep> {
         set_locale(locale);
-        let all = steps(state.refraction());
+        let all = walkthrough_steps(state.refraction());
         set_locale(Locale::En);
         all
     }

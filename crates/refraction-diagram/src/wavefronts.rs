@@ -20,7 +20,7 @@ use refraction_i18n::t;
 use refraction_model::ExplorerState;
 
 /// How far from the hit point the fronts are drawn, in world units (W, N and T are 1 long).
-pub const EXTENT: f64 = 1.3;
+pub(crate) const EXTENT: f64 = 1.3;
 
 /// The distance between B and A in Huygens's construction, in world units.
 const HUYGENS_BASE: f64 = 0.8;
@@ -41,7 +41,7 @@ pub struct WaveOptions {
 
 /// Huygens's construction at the hit point: B at the hit point, A on the surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Huygens {
+pub(crate) struct Huygens {
     /// Where the front reaches the surface first (the hit point).
     pub b: DVec2,
     /// Where the same front reaches the surface Δt later.
@@ -57,7 +57,7 @@ pub struct Huygens {
 
 /// One family of parallel fronts.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Fronts {
+pub(crate) struct Fronts {
     /// The unit direction the fronts move in (their normal), in diagram coordinates.
     pub normal: DVec2,
     /// The distance between neighbouring fronts, in world units: λ/μ of the medium.
@@ -70,7 +70,7 @@ pub struct Fronts {
 
 /// The waves of one refraction, in diagram coordinates (the hit point at the origin).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Waves {
+pub(crate) struct Waves {
     /// The unit normal of the surface, facing the incoming ray.
     pub surface_normal: DVec2,
     /// The arriving fronts.
@@ -87,7 +87,7 @@ pub struct Waves {
 impl Waves {
     /// The waves of `state`'s refraction.
     #[must_use]
-    pub fn of(state: &ExplorerState) -> Self {
+    pub(crate) fn of(state: &ExplorerState) -> Self {
         let r = state.refraction();
         let flat = |v| state.plane().project(v).normalize_or(DVec2::X);
         let n = flat(r.facing_normal);
@@ -176,7 +176,7 @@ fn chord(normal: DVec2, offset: f64, surface_normal: DVec2, side: f64) -> Option
 
 /// The figures and labels of the *Wavefronts* switch.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct WaveLayer {
+pub(crate) struct WaveLayer {
     /// The fronts and the construction, to draw under the rays.
     pub shapes: Vec<Figure>,
     /// What they are, to place with the diagram's other labels.
@@ -289,7 +289,7 @@ impl Painter<'_> {
 
 /// The *Wavefronts* layer for `state` on `layout`, in `palette`, with `options`.
 #[must_use]
-pub fn layer(
+pub(crate) fn layer(
     state: &ExplorerState,
     layout: &Layout,
     palette: &Palette,

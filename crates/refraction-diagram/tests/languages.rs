@@ -2,8 +2,7 @@
 //! the chosen language and write numbers with its decimal separator.
 
 use glam::Vec2;
-use refraction_diagram::shapes::Figure;
-use refraction_diagram::{Diagram, walkthrough};
+use refraction_diagram::{Diagram, Figure, walkthrough_steps};
 use refraction_i18n::{Locale, set_locale, t};
 use refraction_model::Lesson;
 
@@ -122,7 +121,7 @@ fn counts_take_each_languages_plural_forms() {
 fn the_walk_through_speaks_german_with_the_kernels_numbers() {
     let state = refraction_model::ExplorerState::default();
     set_locale(Locale::De);
-    let steps = walkthrough::steps(state.refraction());
+    let steps = walkthrough_steps(state.refraction());
     set_locale(Locale::En);
     assert_eq!(steps[0].title, "Brechungsgesetz von Snellius");
     assert!(

@@ -5,17 +5,17 @@
 //!
 //! Every function here is a pure function of the state, in the current language
 //! ([`refraction_i18n::locale`]), and says nothing a hidden answer would give away: while a
-//! lesson step hides its answer ([`Answer::Hidden`]) the sentences keep to what the diagram
+//! lesson step hides its answer ([`Disclosure::Hidden`]) the sentences keep to what the diagram
 //! shows then (the media, W, N and θi), never T, its angle, the bend, the reflected ray, total
 //! internal reflection, the critical angle or the convention's sign of a.
 //!
 //! ```
 //! use refraction_model::ExplorerState;
-//! use refraction_model::describe::{self, Answer};
+//! use refraction_model::describe::{self, Disclosure};
 //! let state = ExplorerState::default(); // 40° from air into glass
-//! let said = describe::interface(&state, Answer::Shown).join(" ");
+//! let said = describe::interface(&state, Disclosure::Shown).join(" ");
 //! assert!(said.contains("bends toward the normal, 25.4° from it"));
-//! let hidden = describe::interface(&state, Answer::Hidden).join(" ");
+//! let hidden = describe::interface(&state, Disclosure::Hidden).join(" ");
 //! assert!(!hidden.contains("25.4"));
 //! ```
 
@@ -26,15 +26,15 @@ use crate::state::{ExplorerState, HandleId, material_of};
 
 /// Whether the answer of the lesson step shown may be said.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Answer {
+pub enum Disclosure {
     /// No question is open, or its answer was revealed: everything the diagram shows is said.
     Shown,
     /// A question waits for the class's prediction: T and what gives it away are not said.
     Hidden,
 }
 
-impl Answer {
-    /// [`Answer::Hidden`] when `hidden`, else [`Answer::Shown`].
+impl Disclosure {
+    /// [`Disclosure::Hidden`] when `hidden`, else [`Disclosure::Shown`].
     #[must_use]
     pub fn hidden_if(hidden: bool) -> Self {
         if hidden { Self::Hidden } else { Self::Shown }
@@ -182,7 +182,7 @@ fn section(state: &ExplorerState) -> String {
 /// critical angle), the reflected ray, the critical angle where there is one, a flipped
 /// normal, and the section's convention.
 #[must_use]
-pub fn interface(state: &ExplorerState, answer: Answer) -> Vec<String> {
+pub fn interface(state: &ExplorerState, answer: Disclosure) -> Vec<String> {
     let theta_i = state.incidence_degrees();
     let mut said = vec![
         t!(
@@ -197,7 +197,7 @@ pub fn interface(state: &ExplorerState, answer: Answer) -> Vec<String> {
         },
         t!("access-normal-sentence", direction = normal_value(state)),
     ];
-    if answer == Answer::Hidden {
+    if answer == Disclosure::Hidden {
         said.push(t!("deck-answer-hidden"));
         return said;
     }
@@ -252,7 +252,7 @@ fn consequence(before: &ExplorerState, after: &ExplorerState) -> Option<String> 
 /// the answer shown, the sentence goes on with what became of T: total internal reflection
 /// is said when it begins and when it ends, not at every step in between.
 #[must_use]
-pub fn change(before: &ExplorerState, after: &ExplorerState, answer: Answer) -> Option<String> {
+pub fn change(before: &ExplorerState, after: &ExplorerState, answer: Disclosure) -> Option<String> {
     let mut parts: Vec<String> = [
         changed("θi", incidence_value(before), incidence_value(after)),
         changed("N", normal_value(before), normal_value(after)),
@@ -262,7 +262,7 @@ pub fn change(before: &ExplorerState, after: &ExplorerState, answer: Answer) -> 
     .into_iter()
     .flatten()
     .collect();
-    if answer == Answer::Shown && before.convention() != after.convention() {
+    if answer == Disclosure::Shown && before.convention() != after.convention() {
         parts.push(section(after).trim_end_matches('.').to_owned());
     }
     if parts.is_empty() {
@@ -270,7 +270,7 @@ pub fn change(before: &ExplorerState, after: &ExplorerState, answer: Answer) -> 
     }
     // untranslated: a list separator between the changed values, the same in every language.
     let changes = parts.join(", ");
-    let outcome = (answer == Answer::Shown)
+    let outcome = (answer == Disclosure::Shown)
         .then(|| consequence(before, after))
         .flatten();
     Some(match outcome {
@@ -288,8 +288,8 @@ mod tests {
     /// Every sentence of `state` with the answer shown and hidden, in `locale`.
     fn both(state: &ExplorerState, locale: Locale) -> (String, String) {
         set_locale(locale);
-        let shown = interface(state, Answer::Shown).join(" ");
-        let hidden = interface(state, Answer::Hidden).join(" ");
+        let shown = interface(state, Disclosure::Shown).join(" ");
+        let hidden = interface(state, Disclosure::Hidden).join(" ");
         set_locale(Locale::En);
         (shown, hidden)
     }
@@ -313,7 +313,7 @@ mod tests {
     fn every_lesson_is_said_as_a_sighted_student_sees_it() {
         let said: Vec<String> = Lesson::ALL
             .iter()
-            .map(|l| interface(&l.state(), Answer::Shown).join(" "))
+            .map(|l| interface(&l.state(), Disclosure::Shown).join(" "))
             .collect();
         let [glass, beyond, normal, brewster, droplet] = &said[..] else {
             unreachable!("five lessons")
@@ -408,16 +408,16 @@ mod tests {
         let mut after = before.clone();
         after.set_incidence_degrees(43.0).unwrap();
         assert_eq!(
-            change(&before, &after, Answer::Shown).unwrap(),
+            change(&before, &after, Disclosure::Shown).unwrap(),
             "θi 41° → 43°: now past the critical angle 41.8°; all light is reflected."
         );
         let mut further = after.clone();
         further.set_incidence_degrees(44.0).unwrap();
         assert_eq!(
-            change(&after, &further, Answer::Shown).unwrap(),
+            change(&after, &further, Disclosure::Shown).unwrap(),
             "θi 43° → 44°."
         );
-        let back = change(&further, &before, Answer::Shown).unwrap();
+        let back = change(&further, &before, Disclosure::Shown).unwrap();
         assert!(
             back.starts_with(
                 "θi 44° → 41°: now short of the critical angle 41.8°; T leaves at 79."
@@ -426,17 +426,17 @@ mod tests {
         );
         let mut denser = before.clone();
         denser.set_mu_t(1.1).unwrap();
-        let bent = change(&before, &denser, Answer::Shown).unwrap();
+        let bent = change(&before, &denser, Disclosure::Shown).unwrap();
         assert!(bent.starts_with("μt 1.000293 → 1.1: T at "), "{bent}");
         assert_eq!(
-            change(&before, &after, Answer::Hidden).unwrap(),
+            change(&before, &after, Disclosure::Hidden).unwrap(),
             "θi 41° → 43°."
         );
-        assert_eq!(change(&before, &before, Answer::Shown), None);
+        assert_eq!(change(&before, &before, Disclosure::Shown), None);
         let mut turned = before.clone();
         turned.set_convention(Convention::TowardOrigin);
-        let section = change(&before, &turned, Answer::Shown).unwrap();
+        let section = change(&before, &turned, Disclosure::Shown).unwrap();
         assert!(section.starts_with("Section 1"), "{section}");
-        assert_eq!(change(&before, &turned, Answer::Hidden), None);
+        assert_eq!(change(&before, &turned, Disclosure::Hidden), None);
     }
 }

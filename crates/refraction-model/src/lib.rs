@@ -22,10 +22,12 @@
 
 pub mod describe;
 pub mod log_map;
+mod polarisation;
 pub mod report;
 mod special_angles;
 mod state;
 
+pub use polarisation::Polarisation;
 pub use special_angles::SpecialAngles;
 pub use state::{
     AngleError, ExplorerState, HandleId, INDEX_RANGE, Lesson, MATERIALS, Material, Plane,

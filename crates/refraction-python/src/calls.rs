@@ -9,7 +9,7 @@ use crate::arrays::Column;
 
 /// Python's spelling of the field `from`, a word Python keeps for itself.
 // untranslated: a keyword's name
-pub const FROM_KEYWORD: &str = "from_";
+pub(crate) const FROM_KEYWORD: &str = "from_";
 
 /// The field keyword `argument` names in `dialect`, with its kind: a field of the dialect's
 /// lines (`wi`, `eta`, `entering`, the book's `front_face`...), `from_` for `from`.

@@ -19,7 +19,7 @@
 //!   `convention`, `precision`, `renderer`) into [`refraction_check::Options`];
 //! - [`calls`]: the columns into one [`refraction_check::Record`] per call, judged by
 //!   [`refraction_check::check_records`];
-//! - [`report`]: what was found, as Python shows it: a short text and a notebook's table;
+//! - [`Report`]: what was found, as Python shows it: a short text and a notebook's table;
 //! - `module` (with the `extension-module` feature, which only maturin turns on): the Python
 //!   module itself, `PyO3` and numpy.
 //!
@@ -32,6 +32,7 @@ mod error;
 #[cfg(feature = "extension-module")]
 mod module;
 pub mod options;
-pub mod report;
+mod report;
 
 pub use error::ArgumentError;
+pub use report::Report;

@@ -7,7 +7,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use refraction_check::fields::Kind;
 use refraction_check::{Dialect, Value};
-use refraction_tools::solve::Precision;
+use refraction_tools::Precision;
 
 use crate::ArgumentError;
 use crate::arrays::{self, Array, Column};

@@ -5,8 +5,7 @@
 use refraction_check::{Dialect, Options, Renderer};
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
-use refraction_tools::solve::Precision;
-use refraction_tools::vector_text::parse_vector;
+use refraction_tools::{Precision, vector_text::parse_vector};
 
 use crate::ArgumentError;
 
@@ -45,7 +44,7 @@ const CONVENTIONS: &str = "along-ray, toward-origin";
 const PRECISIONS: &str = "f32, f64";
 /// The renderers `renderer` names, as the messages list them.
 // untranslated: the words each option takes, as the messages list them
-pub const RENDERERS: &str =
+pub(crate) const RENDERERS: &str =
     "mitsuba, tungsten, cycles, threejs, pbrt, smallpt, rtiow, glsl, glam, mitsuba-python";
 
 /// The dialect `api` names: an API's (`glsl`, `hlsl`, `pbrt`, `rtiow`, `mitsuba`...), or any

@@ -7,10 +7,10 @@ use refraction_i18n::t;
 
 /// A call that could not be judged, as `check`'s tally counts it.
 // untranslated: the tally's name, as `check` counts it on stderr
-pub const UNREADABLE: &str = "unreadable";
+pub(crate) const UNREADABLE: &str = "unreadable";
 
 /// The most wrong calls the notebook's table lists.
-pub const WRONG_SHOWN: usize = 5;
+pub(crate) const WRONG_SHOWN: usize = 5;
 
 /// What [`refraction_check::check_records`] found, read as Python reads it.
 #[derive(Clone, Debug)]

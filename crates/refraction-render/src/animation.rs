@@ -1,4 +1,4 @@
-//! Animations as GIF files for slides: the frames of [`refraction_diagram::animation`] drawn as
+//! Animations as GIF files for slides: the frames of [`refraction_diagram::Animation`] drawn as
 //! the PNG is, each reduced to its own 256-colour palette, looping.
 
 use std::path::Path;
@@ -6,8 +6,7 @@ use std::path::Path;
 use gif::{Encoder, Frame, Repeat};
 use tiny_skia::Pixmap;
 
-use refraction_diagram::Overlay;
-use refraction_diagram::animation::{Animation, DEFAULT_FPS, DEFAULT_FRAMES};
+use refraction_diagram::{ANIMATION_FPS, ANIMATION_FRAMES, Animation, Overlay};
 use refraction_model::ExplorerState;
 
 use crate::{RenderError, check_size, draw_primitives};
@@ -43,8 +42,8 @@ impl AnimationSpec {
     pub fn new(animation: Animation, size: (u32, u32)) -> Self {
         Self {
             animation,
-            frames: DEFAULT_FRAMES,
-            fps: DEFAULT_FPS,
+            frames: ANIMATION_FRAMES,
+            fps: ANIMATION_FPS,
             size,
         }
     }

@@ -11,7 +11,7 @@
 //! handout all come from [`Primitive`]s.
 //!
 //! The diagram is drawn for a canvas sized so that its smallest words
-//! ([`refraction_diagram::layout::SMALLEST_TEXT`] pixels) are [`SMALLEST_LABEL_PT`] points on
+//! ([`refraction_diagram::SMALLEST_TEXT`] pixels) are [`SMALLEST_LABEL_PT`] points on
 //! paper, and the teacher's page gives it the height its words leave, so that no page has an
 //! empty third.
 
@@ -22,17 +22,14 @@ use glam::Vec2;
 use pdf_writer::{Content, Finish as _, Name, Pdf, Rect, Ref, TextStr};
 use svg2pdf::usvg;
 
-use refraction_diagram::Primitive;
-use refraction_diagram::font::Typeface;
-use refraction_diagram::geometry::Colour;
-use refraction_diagram::layout::SMALLEST_TEXT;
-use refraction_diagram::placer::wrap_breaking_words as wrap;
-use refraction_diagram::shapes::{Align, Label};
+use refraction_diagram::{
+    Align, Colour, Label, Primitive, SMALLEST_TEXT, Typeface, wrap_breaking_words as wrap,
+};
 
 use crate::{RenderError, svg};
 
 /// A page's size in PDF points: A4, portrait.
-pub const PAGE: Vec2 = Vec2::new(595.0, 842.0);
+pub(crate) const PAGE: Vec2 = Vec2::new(595.0, 842.0);
 
 /// The page's margin, in points.
 const MARGIN: f32 = 40.0;
@@ -114,7 +111,7 @@ const FOOT_GAP: f32 = 10.0;
 /// A page's foot: its link's QR code and the link itself, wrapped whole beside it.
 struct Foot {
     /// The link's QR code.
-    code: refraction_diagram::qr::Code,
+    code: refraction_diagram::QrCode,
     /// The QR code's side, quiet zone included, in points.
     side: f32,
     /// The whole link, wrapped to the room beside the code.
@@ -133,7 +130,7 @@ impl Foot {
             bytes: link.len(),
             most_mm: (QR_MOST_SIDE * MM_PER_PT).round() as u32,
         };
-        let code = refraction_diagram::qr::Code::new(link).map_err(|_too_long| too_long())?;
+        let code = refraction_diagram::QrCode::new(link).map_err(|_too_long| too_long())?;
         let side = (code.side_in_modules() as f32 * QR_MODULE_PT).max(QR_SIDE);
         if side > QR_MOST_SIDE {
             return Err(too_long());

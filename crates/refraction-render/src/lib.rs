@@ -1,24 +1,25 @@
 //! The diagram off screen. A [`Picture`] (the interface's diagram, a traced scene, a plot, or
 //! any primitives) is drawn by [`pixmap`] with tiny-skia, its labels in egui's own font
-//! ([`text`]); [`still`] gives it as PNG or SVG ([`svg`]) bytes and [`write()`] writes it. Animations
+//! outlined; [`still`] gives it as PNG or SVG ([`svg`]) bytes and [`write()`] writes it. Animations
 //! are GIFs ([`animation`]) and a lesson's handout a PDF ([`handout`]); every file is written
 //! atomically ([`refraction_files::write_atomically`]).
 
 pub mod animation;
-pub mod format;
+mod format;
 pub mod handout;
 pub mod svg;
-pub mod text;
+mod text;
+
+pub use format::{FORMATS, ImageFormat, UnsupportedFormat};
 
 use std::path::Path;
 
 use glam::Vec2;
 use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Transform};
 
-use crate::format::ImageFormat;
-use refraction_diagram::font::Typeface;
-use refraction_diagram::geometry::Colour;
-use refraction_diagram::{Diagram, Overlay, Primitive, SceneLayout, ScenePicture};
+use refraction_diagram::{
+    Colour, Diagram, Overlay, Primitive, SceneLayout, ScenePicture, Typeface,
+};
 use refraction_files::write_atomically;
 use refraction_model::ExplorerState;
 use refraction_model::report::Report;
@@ -240,11 +241,11 @@ impl Picture<'_> {
                 ScenePicture::new(scene, &trace, &SceneLayout::new(trace.bounds, size)).primitives
             }
             Self::AccuracyPlot(report) => {
-                refraction_diagram::accuracy_plot::primitives(report, size, face, &palette)
+                refraction_diagram::accuracy_plot(report, size, face, &palette)
             }
             Self::FresnelPlot(state) => {
-                let plot = refraction_diagram::fresnel_plot::FresnelPlot::of(state);
-                refraction_diagram::fresnel_plot::primitives(&plot, size, face, &palette)
+                let plot = refraction_diagram::FresnelPlot::of(state);
+                refraction_diagram::fresnel_plot(&plot, size, face, &palette)
             }
             Self::Drawn(draw) => draw(size, face),
         }
@@ -347,7 +348,7 @@ mod tests {
                 .source()
                 .colours(scene.effects().dispersion)
                 .into_iter()
-                .map(refraction_diagram::spectrum::ray_colour)
+                .map(refraction_diagram::ray_colour)
                 .collect();
             // Rays are translucent where the scene computes intensities: count pixels near a
             // ray colour rather than equal to it.
@@ -384,8 +385,8 @@ mod tests {
 
     #[test]
     fn the_extension_picks_the_format_and_the_effects_switched_on_are_exported() {
-        use refraction_diagram::intensities::Polarisation;
-        use refraction_diagram::wavefronts::WaveOptions;
+        use refraction_diagram::WaveOptions;
+        use refraction_model::Polarisation;
         let state = ExplorerState::default();
         let overlay = Overlay {
             intensities: Some(Polarisation::P),

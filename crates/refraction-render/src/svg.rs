@@ -3,7 +3,7 @@
 //!
 //! Fills and strokes become `<path>`s and `<circle>`s with the PNG's colours (opacity as
 //! `fill-opacity`/`stroke-opacity`), widths, round caps and joins. Dashes are already cut into
-//! pieces by the diagram ([`refraction_diagram::shapes::Dash`]), so the pieces of one dashed
+//! pieces by the diagram ([`refraction_diagram::Dash`]), so the pieces of one dashed
 //! line (consecutive polylines of one width and colour) become the subpaths of one `<path>`:
 //! one object to recolour in a slide, with the PNG's dash pattern exactly. Labels become
 //! `<text>` in the PNG's font (egui's Ubuntu Light) and size, one `<tspan>` per line at the
@@ -22,16 +22,13 @@
 use glam::Vec2;
 use skrifa::outline::OutlinePen;
 
-use refraction_diagram::Primitive;
-use refraction_diagram::font::Typeface;
-use refraction_diagram::geometry::Colour;
-use refraction_diagram::shapes::Label;
+use refraction_diagram::{Colour, Label, Primitive, Typeface};
 
 use crate::{RenderError, check_size};
 
 /// The font the labels ask for: the PNG's (Ubuntu Light, named both ways font tables name
 /// it), then any sans-serif where it is not installed.
-pub const FONT_FAMILY: &str = "'Ubuntu Light', Ubuntu, sans-serif";
+pub(crate) const FONT_FAMILY: &str = "'Ubuntu Light', Ubuntu, sans-serif";
 
 /// The weight of Ubuntu Light.
 const FONT_WEIGHT: u16 = 300;
@@ -363,7 +360,7 @@ pub fn elements(face: &Typeface, primitives: &[Primitive], labels: Labels) -> St
 #[cfg(test)]
 mod tests {
     use super::*;
-    use refraction_diagram::shapes::Align;
+    use refraction_diagram::Align;
 
     fn label(text: &str) -> Label {
         Label {

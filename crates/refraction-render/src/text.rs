@@ -5,7 +5,7 @@ use glam::Vec2;
 use skrifa::outline::OutlinePen;
 use tiny_skia::{Path, PathBuilder};
 
-use refraction_diagram::font::Typeface;
+use refraction_diagram::Typeface;
 
 /// Collects outlines into a tiny-skia path.
 struct Collect(PathBuilder);
@@ -35,7 +35,7 @@ impl OutlinePen for Collect {
 /// The outlines of `text` with its box's top-left corner at `top_left`, or `None` for text
 /// without ink (spaces only).
 #[must_use]
-pub fn outline(face: &Typeface, text: &str, top_left: Vec2, size: f32) -> Option<Path> {
+pub(crate) fn outline(face: &Typeface, text: &str, top_left: Vec2, size: f32) -> Option<Path> {
     let mut pen = Collect(PathBuilder::new());
     face.outline(text, top_left, size, &mut pen);
     pen.0.finish()

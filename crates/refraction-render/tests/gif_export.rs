@@ -1,8 +1,7 @@
 //! The animations as GIF files: each decodes with the requested size and frame count, loops,
 //! and moves.
 
-use refraction_diagram::Overlay;
-use refraction_diagram::animation::{Animation, DEFAULT_FRAMES};
+use refraction_diagram::{ANIMATION_FRAMES, Animation, Overlay};
 use refraction_model::ExplorerState;
 use refraction_render::animation::{AnimationSpec, export_gif, gif};
 
@@ -29,7 +28,7 @@ fn decode(bytes: &[u8]) -> (u16, u16, Vec<DecodedFrame>) {
 
 #[test]
 fn every_animation_decodes_with_the_requested_size_and_frame_count() {
-    const { assert!(DEFAULT_FRAMES >= 24) };
+    const { assert!(ANIMATION_FRAMES >= 24) };
     for animation in Animation::ALL {
         let spec = AnimationSpec {
             frames: 24,

@@ -22,7 +22,7 @@ use tiny_skia::{IntSize, Pixmap};
 
 use refraction_diagram::{Diagram, Overlay, Primitive};
 use refraction_model::ExplorerState;
-use refraction_render::format::ImageFormat;
+use refraction_render::ImageFormat;
 use refraction_render::svg::{self, Labels};
 use refraction_render::{Picture, RenderError, pixmap, still};
 use refraction_scene::Scene;
@@ -236,7 +236,7 @@ fn on_a_machine_without_the_font_the_labels_keep_their_widths() {
     let tree = usvg::Tree::from_str(&document, &options).unwrap();
     let mut widths = Vec::new();
     laid_out_widths(tree.root(), &mut widths);
-    let face = refraction_diagram::font::Typeface::egui_default();
+    let face = refraction_diagram::Typeface::egui_default();
     let expected: Vec<(String, f32)> = Diagram::with_overlay(&state, size, &overlay)
         .primitives()
         .iter()

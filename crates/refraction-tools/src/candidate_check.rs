@@ -48,7 +48,7 @@ impl Match {
 
 /// The verdict on one student's T.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Verdict {
+pub struct TVerdict {
     /// Whether the student's T is right (the physical ray, unit length; or a correct answer to
     /// total internal reflection).
     pub ok: bool,
@@ -77,7 +77,10 @@ fn wide<S: Real>(v: S::Vec3) -> glam::DVec3 {
     glam::DVec3::from_array(v.to_array().map(Real::to_f64))
 }
 
-fn verdict_in<S: Real>(incidence: &Incidence<S>, yours: [f64; 3]) -> Result<Verdict, RequestError> {
+fn verdict_in<S: Real>(
+    incidence: &Incidence<S>,
+    yours: [f64; 3],
+) -> Result<TVerdict, RequestError> {
     let r = refract(incidence)?;
     let (ok, matches, explanation) = if yours.iter().any(|c| !c.is_finite()) {
         (false, None, not_finite(r.is_tir()))
@@ -86,7 +89,7 @@ fn verdict_in<S: Real>(incidence: &Incidence<S>, yours: [f64; 3]) -> Result<Verd
     } else {
         refracted::<S>(incidence, &r, glam::DVec3::from_array(yours))
     };
-    Ok(Verdict {
+    Ok(TVerdict {
         ok,
         matches,
         explanation,
@@ -204,7 +207,7 @@ fn why_unmatched<S: Real>(
 ///
 /// # Errors
 /// The request cannot be refracted (see [`Request::incidence`] and [`refract`]).
-pub fn check(request: &Request, yours: [f64; 3]) -> Result<Verdict, RequestError> {
+pub fn check_t(request: &Request, yours: [f64; 3]) -> Result<TVerdict, RequestError> {
     match request.precision {
         Precision::F32 => verdict_in(&request.incidence::<f32>()?, yours),
         Precision::F64 => verdict_in(&request.incidence::<f64>()?, yours),
@@ -217,18 +220,18 @@ pub fn check(request: &Request, yours: [f64; 3]) -> Result<Verdict, RequestError
 ///
 /// # Errors
 /// A message saying what was found instead of three numbers.
-pub fn parse_vector(text: &str) -> Result<[f64; 3], VectorError> {
+pub fn parse_t(text: &str) -> Result<[f64; 3], VectorError> {
     vector_text::parse_vector(text).map(|v| v.value)
 }
 
 /// Reads the student's T from a JSON value: an array of 3 numbers (`null` entries count as NaN,
-/// as loggers write it) or a string in any form [`parse_vector`] accepts.
+/// as loggers write it) or a string in any form [`parse_t`] accepts.
 ///
 /// # Errors
 /// A message naming what was found instead.
-pub fn vector_from_json(value: &Value) -> Result<[f64; 3], VectorError> {
+pub(crate) fn vector_from_json(value: &Value) -> Result<[f64; 3], VectorError> {
     match value {
-        Value::String(text) => parse_vector(text),
+        Value::String(text) => parse_t(text),
         Value::Array(items) if items.len() == 3 => {
             let mut out = [0.0; 3];
             for (i, (slot, item)) in out.iter_mut().zip(items).enumerate() {
@@ -252,7 +255,7 @@ pub fn vector_from_json(value: &Value) -> Result<[f64; 3], VectorError> {
 /// The JSON answer of the `check` command for one verdict (also the first fields of a
 /// `check --api` answer).
 #[derive(Serialize)]
-pub struct Answer<'a> {
+pub struct CheckAnswer<'a> {
     /// Whether the T is the right one.
     pub ok: bool,
     /// The candidate it is (`chosen`, `wrong_side`, ...), or `None` when it is none of them.
@@ -267,7 +270,7 @@ pub struct Answer<'a> {
 ///
 /// # Errors
 /// Malformed JSON, or a missing or ill-typed field; the message names it.
-pub fn parse_line(line: &str) -> Result<(Request, [f64; 3]), CheckError> {
+pub fn parse_check_line(line: &str) -> Result<(Request, [f64; 3]), CheckError> {
     let fields = fields::read::<Given>(line)?;
     let request = Request::from_fields(&fields)?;
     let yours = fields
@@ -293,10 +296,10 @@ impl<'de> Deserialize<'de> for Given {
 ///
 /// # Errors
 /// Why the line cannot be judged (malformed JSON, a missing or ill-typed field, bad input).
-pub fn answer(line: &str) -> Result<(String, Verdict), CheckError> {
-    let (request, yours) = parse_line(line)?;
-    let verdict = check(&request, yours)?;
-    let answer = Answer {
+pub fn check_line(line: &str) -> Result<(String, TVerdict), CheckError> {
+    let (request, yours) = parse_check_line(line)?;
+    let verdict = check_t(&request, yours)?;
+    let answer = CheckAnswer {
         ok: verdict.ok,
         matches: verdict.matches.map(Match::name),
         explanation: &verdict.explanation,
@@ -323,24 +326,19 @@ mod tests {
             "(0.1f, -0.9f, 0.0f);",
             "glm::vec3(0.1, -0.9, 0)",
         ] {
-            assert_eq!(parse_vector(text), Ok([0.1, -0.9, 0.0]), "{text}");
+            assert_eq!(parse_t(text), Ok([0.1, -0.9, 0.0]), "{text}");
         }
-        assert!(parse_vector("nan, 0, 1").unwrap()[0].is_nan());
+        assert!(parse_t("nan, 0, 1").unwrap()[0].is_nan());
+        assert!(parse_t("1, 2").unwrap_err().to_string().contains("found 2"));
         assert!(
-            parse_vector("1, 2")
-                .unwrap_err()
-                .to_string()
-                .contains("found 2")
-        );
-        assert!(
-            parse_vector("1, x, 2")
+            parse_t("1, x, 2")
                 .unwrap_err()
                 .to_string()
                 .contains("\"x\" is not a number")
         );
     }
 
-    fn along_ray(yours: [f64; 3]) -> Verdict {
+    fn along_ray(yours: [f64; 3]) -> TVerdict {
         let request = Request {
             w: [0.6, -0.8, 0.0],
             n: [0.0, 1.0, 0.0],
@@ -349,12 +347,12 @@ mod tests {
             convention: refraction_kernel::Convention::AlongRay,
             precision: Precision::F64,
         };
-        check(&request, yours).unwrap()
+        check_t(&request, yours).unwrap()
     }
 
     #[test]
     fn vectors_of_any_length_are_judged_by_direction() {
-        assert_eq!(parse_vector("inf, 0, 0"), Ok([f64::INFINITY, 0.0, 0.0]));
+        assert_eq!(parse_t("inf, 0, 0"), Ok([f64::INFINITY, 0.0, 0.0]));
         let right = glam::DVec3::from_array(along_ray([0.4, -0.9, 0.0]).correct.unwrap());
         // 6e-6 rad off and 1e201 long: near the refracted ray, not 90 degrees from it.
         let off = (right + glam::DVec3::new(right.y, -right.x, 0.0) * 6e-6) * 1e201;
@@ -422,7 +420,7 @@ mod tests {
                 convention: refraction_kernel::Convention::AlongRay,
                 precision: Precision::F64,
             };
-            let verdict = check(&request, [0.0, 0.0, 1.0 + f64::from(k) * 1e-3]).unwrap();
+            let verdict = check_t(&request, [0.0, 0.0, 1.0 + f64::from(k) * 1e-3]).unwrap();
             assert!(
                 !verdict.explanation.contains("NaN"),
                 "{}",

@@ -1,22 +1,33 @@
 //! The refraction explorer's tools, with no window: the JSON Lines of the `solve` command and
 //! the loop every JSON Lines command shares ([`answer_lines`]: one answer per non-empty input
 //! line, in order, streaming, with bad lines answered rather than fatal); one T checked against
-//! the four candidates ([`candidate_check`], in the physics convention W, N, μ: the window's
-//! *Check my T* and each line of `check`); vectors as programs print them ([`vector_text`]); the
-//! explorer's state file (one `solve` line, [`state_file`]), its links ([`link`]) and the case as
-//! code to paste elsewhere ([`snippets`]).
+//! the four candidates ([`check_t`], in the physics convention W, N, μ: the window's *Check my
+//! T* and each line of `check`); vectors as programs print them ([`vector_text`]); the
+//! explorer's state file (one `solve` line, [`open_state_file`]), its links ([`link`]) and the
+//! case as code to paste elsewhere ([`snippets`]).
 //!
 //! The diagnosis of a renderer's whole log (`check`, `check --api`) is the crate
 //! `refraction-check`, built on this one.
 
-pub mod candidate_check;
-pub mod error;
+mod candidate_check;
+mod error;
 mod fields;
 pub mod link;
 pub mod snippets;
-pub mod solve;
-pub mod state_file;
+mod solve;
+mod state_file;
 pub mod vector_text;
+
+pub use candidate_check::{
+    CheckAnswer, LENGTH_TOLERANCE, MATCH_ANGLE, Match, TVerdict, check_line, check_t,
+    parse_check_line, parse_t,
+};
+pub use error::{CheckError, JsonError, RequestError, VectorError};
+pub use solve::{Precision, Request, solve_line, solve_lines};
+pub use state_file::{
+    MAX_STATE_FILE_BYTES, StateFileError, open_state_file, parse_state, save_state_file,
+    state_request, state_to_json,
+};
 
 use std::io::{self, BufRead, Read, Write};
 

@@ -410,7 +410,7 @@ fn step_of(value: Option<&String>) -> Result<usize, LinkError> {
 /// and a field this version does not read comes from a newer one (a state file may carry
 /// more, as a `solve` line may; a link is all this version's or refused).
 fn state_of(json: &str) -> Result<ExplorerState, LinkError> {
-    let state = state_file::parse(json).map_err(|e| {
+    let state = state_file::parse_state(json).map_err(|e| {
         if json.trim_end().ends_with('}') {
             LinkError::Malformed(echo(&e.to_string(), REASON_CHARS))
         } else {
@@ -523,7 +523,7 @@ mod tests {
             (1.000_293, Convention::TowardOrigin)
         );
         // The plain form, as `--state` reads it, fully encoded or not encoded at all.
-        let json = state_file::to_json(&state);
+        let json = state_file::state_to_json(&state);
         let every_byte = json.bytes().fold(String::new(), |mut out, b| {
             out.push_str(&format!("%{b:02x}"));
             out
@@ -563,7 +563,7 @@ mod tests {
 
     #[test]
     fn broken_links_say_why_and_open_nothing() {
-        let json = state_file::to_json(&beyond_critical());
+        let json = state_file::state_to_json(&beyond_critical());
         let encoded = fragment(&Link::State(Box::new(beyond_critical())));
         for cut in [
             &encoded[..encoded.len() - 1],
@@ -726,7 +726,7 @@ mod tests {
             Err(LinkError::Malformed(_))
         ));
         // A field of the state this version does not read: a newer version's link.
-        let json = state_file::to_json(&beyond_critical());
+        let json = state_file::state_to_json(&beyond_critical());
         let more = format!("state={}", encode(&json.replace('}', ",\"zoom\":2}")));
         assert_eq!(parse(&more), Err(LinkError::Newer("zoom".to_owned())));
         // A 20,000-character part is quoted by its first 60 characters.

@@ -287,7 +287,7 @@ fn answer_in<S: Real + Serialize>(request: &Request) -> Result<String, RequestEr
 ///
 /// # Errors
 /// Why the line cannot be solved, naming the offending field or value.
-pub fn answer(line: &str) -> Result<String, RequestError> {
+pub fn solve_line(line: &str) -> Result<String, RequestError> {
     let request = Request::parse(line)?;
     match request.precision {
         Precision::F32 => answer_in::<f32>(&request),
@@ -301,8 +301,8 @@ pub fn answer(line: &str) -> Result<String, RequestError> {
 ///
 /// # Errors
 /// Reading `input` or writing `output` failed.
-pub fn run(input: impl Read, output: impl Write) -> Result<bool, crate::LinesError> {
-    crate::answer_lines(input, output, crate::threads(), answer, |_, r| r, || {})
+pub fn solve_lines(input: impl Read, output: impl Write) -> Result<bool, crate::LinesError> {
+    crate::answer_lines(input, output, crate::threads(), solve_line, |_, r| r, || {})
 }
 
 #[cfg(test)]
@@ -310,7 +310,7 @@ mod tests {
     use super::*;
 
     fn error_of(line: &str) -> String {
-        answer(line).unwrap_err().to_string()
+        solve_line(line).unwrap_err().to_string()
     }
 
     #[test]
@@ -364,7 +364,7 @@ mod tests {
     #[test]
     fn answers_carry_the_fresnel_fractions_and_the_angles_that_matter() {
         let into_glass: Value = serde_json::from_str(
-            &answer(r#"{"w":[0,-1,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5}"#).unwrap(),
+            &solve_line(r#"{"w":[0,-1,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5}"#).unwrap(),
         )
         .unwrap();
         let f = &into_glass["fresnel"];
@@ -380,7 +380,7 @@ mod tests {
         assert!(into_glass["critical_deg"].is_null());
         // Out of glass past the critical angle, in f32: all reflected.
         let tir: Value = serde_json::from_str(
-            &answer(r#"{"w":[0.8,-0.6,0],"n":[0,1,0],"mu_i":1.5,"mu_t":1,"precision":"f32"}"#)
+            &solve_line(r#"{"w":[0.8,-0.6,0],"n":[0,1,0],"mu_i":1.5,"mu_t":1,"precision":"f32"}"#)
                 .unwrap(),
         )
         .unwrap();
@@ -388,7 +388,7 @@ mod tests {
         assert_eq!(tir["fresnel"]["t_s"], 0.0);
         assert!((tir["critical_deg"].as_f64().unwrap() - 41.81).abs() < 1e-2);
         let same: Value = serde_json::from_str(
-            &answer(r#"{"w":[0.8,-0.6,0],"n":[0,1,0],"mu_i":1.5,"mu_t":1.5}"#).unwrap(),
+            &solve_line(r#"{"w":[0.8,-0.6,0],"n":[0,1,0],"mu_i":1.5,"mu_t":1.5}"#).unwrap(),
         )
         .unwrap();
         assert!(same["brewster_deg"].is_null() && same["critical_deg"].is_null());
@@ -399,7 +399,7 @@ mod tests {
     fn run_answers_every_line_in_order_and_skips_blank_ones() {
         let input = b"{\"w\":[0,-1,0],\"n\":[0,1,0],\"mu_i\":1,\"mu_t\":1.5}\n\nnot json\n\xff\n";
         let mut out = Vec::new();
-        assert!(!run(&input[..], &mut out).unwrap());
+        assert!(!solve_lines(&input[..], &mut out).unwrap());
         let lines: Vec<Value> = String::from_utf8(out)
             .unwrap()
             .lines()

@@ -15,7 +15,7 @@ use refraction_model::ExplorerState;
 /// # Errors
 /// Malformed JSON, a missing or ill-typed field, or input the kernel refuses; the message names
 /// what was wrong.
-pub fn parse(text: &str) -> Result<ExplorerState, RequestError> {
+pub fn parse_state(text: &str) -> Result<ExplorerState, RequestError> {
     // Not trimmed: JSON allows the white space around it, and a leading blank line would shift
     // the line numbers of malformed JSON. A byte order mark some editors write is not JSON.
     let request = Request::parse(text.strip_prefix('\u{feff}').unwrap_or(text))?;
@@ -33,13 +33,13 @@ pub fn parse(text: &str) -> Result<ExplorerState, RequestError> {
     .map_err(RequestError::from)
 }
 
-/// The largest state file [`open`] reads: 1 MiB (a state is one line of about 150 bytes).
+/// The largest state file [`open_state_file`] reads: 1 MiB (a state is one line of about 150 bytes).
 pub const MAX_STATE_FILE_BYTES: u64 = 1 << 20;
 
 /// Why a state file could not be opened: kept apart so that the window can say it in the
 /// user's language around the reader's own reason.
 #[derive(Debug, thiserror::Error)]
-pub enum LoadError {
+pub enum StateFileError {
     /// The file cannot be read, is too long or is not UTF-8.
     #[error("cannot read state file {path}: {source}")]
     Read {
@@ -48,12 +48,12 @@ pub enum LoadError {
         /// What reading it said.
         source: std::io::Error,
     },
-    /// The file was read and [`parse`] refused it.
+    /// The file was read and [`parse_state`] refused it.
     #[error("state file {path}: {reason}")]
     Refused {
         /// The file, as displayed.
         path: String,
-        /// Why [`parse`] refused it (malformed JSON names its line and column).
+        /// Why [`parse_state`] refused it (malformed JSON names its line and column).
         reason: RequestError,
     },
 }
@@ -61,17 +61,17 @@ pub enum LoadError {
 /// Reads a state from a JSON file of at most [`MAX_STATE_FILE_BYTES`].
 ///
 /// # Errors
-/// [`LoadError::Read`] when the file cannot be read or is too long, [`LoadError::Refused`]
-/// when [`parse`] refuses it.
-pub fn open(path: &Path) -> Result<ExplorerState, LoadError> {
+/// [`StateFileError::Read`] when the file cannot be read or is too long, [`StateFileError::Refused`]
+/// when [`parse_state`] refuses it.
+pub fn open_state_file(path: &Path) -> Result<ExplorerState, StateFileError> {
     let shown = || path.display().to_string();
     let text = refraction_files::read_capped(path, MAX_STATE_FILE_BYTES, "a state file").map_err(
-        |source| LoadError::Read {
+        |source| StateFileError::Read {
             path: shown(),
             source,
         },
     )?;
-    parse(&text).map_err(|reason| LoadError::Refused {
+    parse_state(&text).map_err(|reason| StateFileError::Refused {
         path: shown(),
         reason,
     })
@@ -79,7 +79,7 @@ pub fn open(path: &Path) -> Result<ExplorerState, LoadError> {
 
 /// The state as a `solve` request (in f64, the explorer's precision).
 #[must_use]
-pub fn request(state: &ExplorerState) -> Request {
+pub fn state_request(state: &ExplorerState) -> Request {
     Request {
         w: state.w().to_array(),
         n: state.n().to_array(),
@@ -90,11 +90,11 @@ pub fn request(state: &ExplorerState) -> Request {
     }
 }
 
-/// The state as one line of JSON that [`parse`] (and `solve`) read back bit for bit: numbers
+/// The state as one line of JSON that [`parse_state`] (and `solve`) read back bit for bit: numbers
 /// are written in their shortest form that reads back to the same bits.
 #[must_use]
-pub fn to_json(state: &ExplorerState) -> String {
-    request(state).to_json_line()
+pub fn state_to_json(state: &ExplorerState) -> String {
+    state_request(state).to_json_line()
 }
 
 /// Writes the state to `path` as one line of JSON, atomically: a failed write leaves no
@@ -102,8 +102,8 @@ pub fn to_json(state: &ExplorerState) -> String {
 ///
 /// # Errors
 /// The file cannot be written (see [`refraction_files::write_atomically`]).
-pub fn save(state: &ExplorerState, path: &Path) -> std::io::Result<()> {
-    let text = format!("{}\n", to_json(state));
+pub fn save_state_file(state: &ExplorerState, path: &Path) -> std::io::Result<()> {
+    let text = format!("{}\n", state_to_json(state));
     refraction_files::write_atomically(path, text.as_bytes())
 }
 
@@ -116,36 +116,36 @@ mod tests {
     fn states_round_trip_and_bad_files_are_named() {
         let mut state = ExplorerState::default();
         state.set_convention(Convention::TowardOrigin);
-        assert_eq!(parse(&to_json(&state)).unwrap(), state);
+        assert_eq!(parse_state(&state_to_json(&state)).unwrap(), state);
         // Issue 23: `render --state` took what `solve` refuses in f32.
         let huge = r#"{"w":[1e300,-1,0],"n":[0,1,0],"mu_i":1,"mu_t":1.5,"precision":"f32"}"#;
         assert!(
-            parse(huge)
+            parse_state(huge)
                 .unwrap_err()
                 .to_string()
                 .contains("too large for f32"),
             "{huge}"
         );
-        assert!(parse(&huge.replace("f32", "f64")).is_ok());
-        let marked = format!("\u{feff}{}", to_json(&state));
+        assert!(parse_state(&huge.replace("f32", "f64")).is_ok());
+        let marked = format!("\u{feff}{}", state_to_json(&state));
         assert_eq!(
-            parse(&marked).unwrap(),
+            parse_state(&marked).unwrap(),
             state,
             "a byte order mark is read past"
         );
         assert_eq!(
-            parse(r#"{"w":[1,0,0]}"#).unwrap_err(),
+            parse_state(r#"{"w":[1,0,0]}"#).unwrap_err(),
             RequestError::Missing("n".into())
         );
-        let err = parse(r#"{"w":[1,-1,0],"n":[0,1,0],"mu_i":-1,"mu_t":1}"#)
+        let err = parse_state(r#"{"w":[1,-1,0],"n":[0,1,0],"mu_i":-1,"mu_t":1}"#)
             .unwrap_err()
             .to_string();
         assert!(err.starts_with("mu_i is -1"), "{err}");
-        let err = open(Path::new("/nonexistent/state.json"))
+        let err = open_state_file(Path::new("/nonexistent/state.json"))
             .unwrap_err()
             .to_string();
         assert!(err.starts_with("cannot read state file /nonexistent/state.json"));
-        let err = save(&state, Path::new("/nonexistent/state.json"))
+        let err = save_state_file(&state, Path::new("/nonexistent/state.json"))
             .unwrap_err()
             .to_string();
         assert!(err.contains("/nonexistent/state.json"), "{err}");
@@ -161,18 +161,18 @@ mod tests {
             "\n{\n  \"w\": [0.6, -0.8, 0],\n  \"n\": [0, 1 0],\n  \"mu_i\": 1, \"mu_t\": 1.5\n}\n",
         )
         .unwrap();
-        let err = open(&path).unwrap_err().to_string();
+        let err = open_state_file(&path).unwrap_err().to_string();
         assert!(
             err.contains("state.json: malformed JSON at line 4, column 14"),
             "{err}"
         );
         std::fs::write(&path, " ".repeat(2 << 20)).unwrap();
-        let err = open(&path).unwrap_err().to_string();
+        let err = open_state_file(&path).unwrap_err().to_string();
         assert!(
             err.contains("state.json") && err.contains("larger than 1 MiB"),
             "{err}"
         );
-        let err = open(&folder).unwrap_err().to_string();
+        let err = open_state_file(&folder).unwrap_err().to_string();
         assert!(err.contains(&folder.display().to_string()), "{err}");
         std::fs::remove_dir_all(&folder).unwrap();
     }
@@ -190,8 +190,8 @@ mod tests {
         .unwrap();
         let path =
             std::env::temp_dir().join(format!("state-file-test-{}.json", std::process::id()));
-        save(&state, &path).unwrap();
-        let back = open(&path).unwrap();
+        save_state_file(&state, &path).unwrap();
+        let back = open_state_file(&path).unwrap();
         std::fs::remove_file(&path).unwrap();
         assert_eq!(back, state);
         assert_eq!(back.w().z.to_bits(), state.w().z.to_bits());

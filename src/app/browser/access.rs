@@ -24,7 +24,7 @@ use wasm_bindgen::JsCast as _;
 use wasm_bindgen::prelude::Closure;
 use web_sys::{Document, Element, HtmlCanvasElement, HtmlElement, HtmlInputElement};
 
-use super::super::deck::Command;
+use super::super::deck::DeckCommand;
 use super::super::{Explorer, announce, steps};
 use super::page;
 use crate::web_page::CONTROLS_ID;
@@ -36,7 +36,7 @@ thread_local! {
     /// Values set in the page's controls since the last frame, in order.
     static SET: RefCell<Vec<(HandleId, f64)>> = const { RefCell::new(Vec::new()) };
     /// What the page's deck buttons asked since the last frame, in order.
-    static ASKED: RefCell<Vec<Command>> = const { RefCell::new(Vec::new()) };
+    static ASKED: RefCell<Vec<DeckCommand>> = const { RefCell::new(Vec::new()) };
     /// Whether a widget of the window had the keyboard at the end of the last frame (the
     /// page's Shift+Tab listener asks).
     static WINDOW_FOCUS: Cell<bool> = const { Cell::new(false) };
@@ -388,7 +388,7 @@ struct DeckButtons {
 fn deck_button(
     document: &Document,
     parent: &Element,
-    command: Command,
+    command: DeckCommand,
     ctx: &egui::Context,
 ) -> Option<Element> {
     let button = child(document, parent, "button", "")?;
@@ -411,9 +411,9 @@ impl DeckButtons {
         let group = child(document, parent, "div", "")?;
         group.set_attribute("hidden", "").ok()?;
         Some(Self {
-            previous: deck_button(document, &group, Command::Previous, ctx)?,
-            next: deck_button(document, &group, Command::Next, ctx)?,
-            reveal: deck_button(document, &group, Command::Reveal, ctx)?,
+            previous: deck_button(document, &group, DeckCommand::Previous, ctx)?,
+            next: deck_button(document, &group, DeckCommand::Next, ctx)?,
+            reveal: deck_button(document, &group, DeckCommand::Reveal, ctx)?,
             group,
             shown: None,
         })

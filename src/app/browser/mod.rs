@@ -121,7 +121,7 @@ impl Page {
             self.student = Some(student);
         }
         let hidden = self.explorer.lesson().hides_answer();
-        let summary = refraction_diagram::picture::summary(self.explorer.state(), hidden);
+        let summary = refraction_diagram::diagram_summary(self.explorer.state(), hidden);
         if summary != self.described {
             page::describe(&self.canvas, &summary);
             self.described = summary;

@@ -17,13 +17,13 @@ use refraction_check::Value;
 use refraction_check::fields::{self, Kind, names};
 use refraction_check::{ApiCase, Language};
 use refraction_check::{Call, CallVerdict, Options, Record, check_record};
-use refraction_diagram::overlay::{StudentRay, VectorNames};
+use refraction_diagram::{StudentRay, VectorNames};
 use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::{Api, Args};
 use refraction_model::ExplorerState;
 use refraction_model::INDEX_RANGE;
-use refraction_tools::state_file;
+use refraction_tools::state_request;
 use refraction_tools::vector_text::{spoken, spoken_vector};
 use serde_json::Value as Json;
 
@@ -292,7 +292,7 @@ impl ApiFields {
     /// Fills `api`'s argument fields and the indices from the explorer's case, in the API's
     /// convention, and the API's usual precision; the result is left for the student to fill.
     fn take_case(&mut self, api: Api, state: &ExplorerState) {
-        let r = state_file::request(state);
+        let r = state_request(state);
         let w = DVec3::from_array(r.w);
         let travel = match r.convention {
             Convention::AlongRay => w,

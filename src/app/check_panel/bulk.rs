@@ -19,8 +19,7 @@ use refraction_check::{
     SKIPPED, Session, Tally, fields,
 };
 use refraction_check::{Failing, MAX_TESTS};
-use refraction_diagram::font::Typeface;
-use refraction_diagram::{Primitive, failure_map};
+use refraction_diagram::{Primitive, Typeface, failure_map};
 use refraction_i18n::t;
 use refraction_model::log_map::LinePoint;
 

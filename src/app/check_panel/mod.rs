@@ -4,7 +4,7 @@
 //! etai_over_etat, refracted`, Mitsuba's `wi, n, eta, wo`, with the optional truth). The
 //! explorer opens that case, drawn in the convention in use (shown in the panel), says what is
 //! wrong and why, and draws the student's vector beside the right one. The verdicts are those of
-//! [`refraction_tools::candidate_check`] and [`refraction_check`], so the window and
+//! [`refraction_tools::check_t`] and [`refraction_check`], so the window and
 //! `check` agree.
 
 mod api;
@@ -18,15 +18,14 @@ use glam::DVec3;
 use super::paint::verdict_colour;
 use super::typed::error_label;
 use refraction_check::{Case, Dialect, Record};
-use refraction_diagram::numbers::vector;
-use refraction_diagram::overlay::StudentRay;
+use refraction_diagram::{StudentRay, numbers::vector};
 use refraction_i18n::t;
 use refraction_kernel::Convention;
 use refraction_kernel::api::Api;
 use refraction_model::ExplorerState;
-use refraction_tools::candidate_check::{self, Match, Verdict};
-use refraction_tools::solve::{Precision, Request};
-use refraction_tools::state_file;
+use refraction_tools::{
+    Match, Precision, Request, TVerdict, check_t, parse_check_line, parse_t, state_request,
+};
 use refusal::Refusal;
 
 /// Whose fields the panel reads.
@@ -60,7 +59,7 @@ fn source_label(source: Source) -> String {
 #[derive(Clone, Debug, PartialEq)]
 enum Shown {
     /// The verdict on a T in this project's fields.
-    Own(Verdict),
+    Own(TVerdict),
     /// The verdict on an API call.
     Api(Box<api::Judged>),
 }
@@ -100,7 +99,7 @@ pub(super) struct CheckPanel {
 }
 
 /// What a verdict's match is called on the diagram and in the headline.
-fn match_words(verdict: &Verdict) -> String {
+fn match_words(verdict: &TVerdict) -> String {
     match verdict.matches {
         Some(Match::Chosen) if verdict.ok => t!("check-match-refracted"),
         Some(Match::Chosen) => t!("check-match-not-unit"),
@@ -144,7 +143,7 @@ fn number(text: &str, name: &str) -> Result<f64, Refusal> {
 
 /// Reads a vector typed into the field named `name`.
 fn vector_field(text: &str, name: &str) -> Result<[f64; 3], Refusal> {
-    candidate_check::parse_vector(text).map_err(|error| Refusal::Vector {
+    parse_t(text).map_err(|error| Refusal::Vector {
         field: name.to_owned(),
         error,
     })
@@ -211,7 +210,7 @@ impl Own {
     /// separate fields in the panel's convention.
     fn read(&self) -> Result<(Request, [f64; 3]), Refusal> {
         if self.yours.trim_start().starts_with(JSON_LINE_START) {
-            return Ok(candidate_check::parse_line(self.yours.trim())?);
+            return Ok(parse_check_line(self.yours.trim())?);
         }
         let request = Request {
             w: vector_field(&self.w, "W")?,
@@ -230,7 +229,7 @@ impl Own {
     /// Checks the T in the fields; the case to open and the verdict.
     fn check(&mut self) -> Result<Checked, Refusal> {
         let (request, yours) = self.read()?;
-        let verdict = candidate_check::check(&request, yours)?;
+        let verdict = check_t(&request, yours)?;
         let [w, n] = [request.w, request.n].map(DVec3::from_array);
         let case = ExplorerState::new(w, n, request.mu_i, request.mu_t, request.convention)?;
         self.fill(&request);
@@ -276,7 +275,7 @@ impl Own {
                 .on_hover_text(t!("check-use-current-case-own-hover"))
                 .clicked()
             {
-                self.fill(&state_file::request(state));
+                self.fill(&state_request(state));
             }
         });
         ui.horizontal_wrapped(|ui| {
@@ -289,7 +288,7 @@ impl Own {
 }
 
 /// Shows a verdict on a T in this project's fields.
-fn own_verdict(ui: &mut Ui, v: &Verdict) {
+fn own_verdict(ui: &mut Ui, v: &TVerdict) {
     headline(
         ui,
         v.ok,
@@ -409,7 +408,7 @@ impl CheckPanel {
             .iter()
             .all(|f| f.is_empty())
         {
-            self.own.fill(&state_file::request(state));
+            self.own.fill(&state_request(state));
         }
         self.selector(ui);
         let asked = match self.source {

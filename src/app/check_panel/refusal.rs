@@ -6,8 +6,7 @@ use refraction_check::tests_file::TargetError;
 use refraction_check::{LineError, PatternError};
 use refraction_i18n::t;
 use refraction_kernel::InputError;
-use refraction_tools::error::{CheckError, RequestError, VectorError};
-use refraction_tools::vector_text::spoken;
+use refraction_tools::{CheckError, RequestError, VectorError, vector_text::spoken};
 
 /// Why the panel refused a case, a call, a log or a test file.
 #[derive(Clone, Debug, PartialEq)]

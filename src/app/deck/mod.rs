@@ -26,10 +26,8 @@ mod notes;
 pub(super) mod panel;
 
 use egui::{Key, Modifiers, Panel, RichText, Ui};
-use refraction_deck::{Deck, Effect, Light, Step, StepTool, StepView};
-use refraction_diagram::Overlay;
-use refraction_diagram::intensities::Polarisation;
-use refraction_diagram::wavefronts::WaveOptions;
+use refraction_deck::{Deck, Effect, Step, StepTool, StepView};
+use refraction_diagram::{Overlay, WaveOptions};
 use refraction_i18n::t;
 use refraction_scene::Scene;
 
@@ -41,7 +39,7 @@ use super::{Explorer, View};
 
 /// What a key or a button asks of the deck.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Command {
+pub enum DeckCommand {
     /// Show the next step.
     Next,
     /// Show the previous step.
@@ -107,29 +105,33 @@ impl LessonDeck {
 
     /// The keys pressed this frame that ask something of the deck (see the module's
     /// [precedence](self#keys)), taken out of the input so that nothing else acts on them.
-    pub(super) fn keys(ui: &Ui) -> Vec<Command> {
+    pub(super) fn keys(ui: &Ui) -> Vec<DeckCommand> {
         if ui.ctx().text_edit_focused() {
             return Vec::new();
         }
         let focused = ui.memory(|m| m.focused().is_some());
         let mut commands = Vec::new();
-        let mut take = |keys: &[Key], command: Command, always: bool| {
+        let mut take = |keys: &[Key], command: DeckCommand, always: bool| {
             for &key in keys {
                 if (always || !focused) && ui.input_mut(|i| i.consume_key(Modifiers::NONE, key)) {
                     commands.push(command);
                 }
             }
         };
-        take(&[Key::PageDown], Command::Next, true);
-        take(&[Key::PageUp], Command::Previous, true);
+        take(&[Key::PageDown], DeckCommand::Next, true);
+        take(&[Key::PageUp], DeckCommand::Previous, true);
         take(
             &[Key::ArrowRight, Key::ArrowDown, Key::Space],
-            Command::Next,
+            DeckCommand::Next,
             false,
         );
-        take(&[Key::ArrowLeft, Key::ArrowUp], Command::Previous, false);
-        take(&[Key::R, Key::B, Key::Period], Command::Reveal, true);
-        take(&[Key::N], Command::Notes, true);
+        take(
+            &[Key::ArrowLeft, Key::ArrowUp],
+            DeckCommand::Previous,
+            false,
+        );
+        take(&[Key::R, Key::B, Key::Period], DeckCommand::Reveal, true);
+        take(&[Key::N], DeckCommand::Notes, true);
         commands
     }
 }
@@ -165,36 +167,18 @@ fn step_tool(tool: Tool) -> Option<StepTool> {
     }
 }
 
-fn polarisation(light: Light) -> Polarisation {
-    match light {
-        Light::Unpolarised => Polarisation::Unpolarised,
-        Light::S => Polarisation::S,
-        Light::P => Polarisation::P,
-    }
-}
-
 /// What is drawn over `step`'s diagram: the effects it turns on, the standard palette, its
 /// answer shown. The handout and a step's picture draw with it; the window sets its own
 /// switches from the step.
 #[must_use]
 pub(super) fn overlay_of(step: &Step) -> Overlay {
     Overlay {
-        intensities: step
-            .has(Effect::Intensities)
-            .then(|| polarisation(step.light)),
+        intensities: step.has(Effect::Intensities).then_some(step.light),
         waves: step.has(Effect::Wavefronts).then(|| WaveOptions {
             phase: 0.0,
             huygens: step.has(Effect::Huygens),
         }),
         ..Overlay::default()
-    }
-}
-
-fn light(polarisation: Polarisation) -> Light {
-    match polarisation {
-        Polarisation::Unpolarised => Light::Unpolarised,
-        Polarisation::S => Light::S,
-        Polarisation::P => Light::P,
     }
 }
 
@@ -229,7 +213,7 @@ impl Explorer {
                 View::Scenes => t!(
                     "access-title-scene",
                     view = View::Scenes.label(),
-                    scene = refraction_diagram::scene_words::title(self.scenes.scene())
+                    scene = refraction_diagram::scene_title(self.scenes.scene())
                 ),
                 View::Accuracy => View::Accuracy.label(),
             }
@@ -265,14 +249,14 @@ impl Explorer {
 
     /// Carries out `command`: moves to a step (shown as it was saved in the deck, its answer
     /// hidden again if it asks a question), reveals the answer or opens the notes.
-    pub fn deck_command(&mut self, command: Command) {
+    pub fn deck_command(&mut self, command: DeckCommand) {
         let current = self.lesson.current.unwrap_or(0);
         match command {
-            Command::Next => self.show_step(current + 1),
-            Command::Previous => self.show_step(current.saturating_sub(1)),
-            Command::GoTo(index) => self.show_step(index),
-            Command::Reveal => self.lesson.revealed = !self.lesson.revealed,
-            Command::Notes => self.lesson.notes_open = !self.lesson.notes_open,
+            DeckCommand::Next => self.show_step(current + 1),
+            DeckCommand::Previous => self.show_step(current.saturating_sub(1)),
+            DeckCommand::GoTo(index) => self.show_step(index),
+            DeckCommand::Reveal => self.lesson.revealed = !self.lesson.revealed,
+            DeckCommand::Notes => self.lesson.notes_open = !self.lesson.notes_open,
         }
     }
 
@@ -315,7 +299,7 @@ impl Explorer {
         self.effects.waves = step.has(Effect::Wavefronts);
         self.effects.moving = step.has(Effect::Moving);
         self.effects.huygens = step.has(Effect::Huygens);
-        self.effects.polarisation = polarisation(step.light);
+        self.effects.polarisation = step.light;
     }
 
     /// The window as it is now as a step titled `title`: the state, the view, the scene (by
@@ -346,7 +330,7 @@ impl Explorer {
             && (view == StepView::Scenes || name != refraction_scene::DEFAULT_SCENE))
             .then(|| name.to_owned());
         step.tool = tool.and_then(step_tool);
-        step.light = light(menu.polarisation);
+        step.light = menu.polarisation;
         step
     }
 
@@ -378,7 +362,7 @@ impl Explorer {
     /// The strip above the view: the step's number and title, its question and whether the
     /// answer is shown, and the buttons for a mouse; none while the deck's tool (which shows
     /// the step in its fields) is open. Returns what its buttons asked.
-    fn deck_strip(&self, ui: &mut Ui) -> Vec<Command> {
+    fn deck_strip(&self, ui: &mut Ui) -> Vec<DeckCommand> {
         let Some(notes) = self
             .lesson
             .notes()

@@ -6,7 +6,7 @@
 use egui::{Context, RichText, ScrollArea, Ui, ViewportBuilder, ViewportId};
 use refraction_i18n::t;
 
-use super::{Command, LessonDeck};
+use super::{DeckCommand, LessonDeck};
 use crate::app::widgets::icon_button;
 
 /// What the notes window shows for one step.
@@ -31,7 +31,7 @@ pub struct Notes {
 /// The buttons that step with a mouse: previous, next, reveal (on a step with a question) and
 /// the notes window; only their icons when `compact` (the strip above a projector's diagram),
 /// their names then their accessible names and hovers. Returns what was clicked.
-pub(super) fn buttons(ui: &mut Ui, notes: &Notes, hidden: bool, compact: bool) -> Vec<Command> {
+pub(super) fn buttons(ui: &mut Ui, notes: &Notes, hidden: bool, compact: bool) -> Vec<DeckCommand> {
     let keys = t!("deck-keys");
     let reveal = if hidden {
         t!("deck-reveal")
@@ -44,14 +44,14 @@ pub(super) fn buttons(ui: &mut Ui, notes: &Notes, hidden: bool, compact: bool) -
             t!("deck-previous"),
             keys.clone(),
             (notes.number > 1, false),
-            Command::Previous,
+            DeckCommand::Previous,
         ),
         (
             "⏵",
             t!("deck-next"),
             keys,
             (notes.number < notes.count, false),
-            Command::Next,
+            DeckCommand::Next,
         ),
         // Only a step with a question has an answer to reveal; shown, the button stays
         // pressed, so the class sees which state the step is in.
@@ -60,19 +60,19 @@ pub(super) fn buttons(ui: &mut Ui, notes: &Notes, hidden: bool, compact: bool) -
             reveal,
             t!("deck-hidden-hint"),
             (notes.question.is_some(), !hidden),
-            Command::Reveal,
+            DeckCommand::Reveal,
         ),
         (
             "📝",
             t!("deck-notes-window"),
             t!("deck-notes-window-hover"),
             (true, false),
-            Command::Notes,
+            DeckCommand::Notes,
         ),
     ];
     let mut asked = Vec::new();
     for (icon, name, hover, state, command) in buttons {
-        if command == Command::Reveal && notes.question.is_none() {
+        if command == DeckCommand::Reveal && notes.question.is_none() {
             continue;
         }
         if icon_button(ui, (icon, name, hover), state, compact) {
@@ -84,7 +84,7 @@ pub(super) fn buttons(ui: &mut Ui, notes: &Notes, hidden: bool, compact: bool) -
 
 /// The notes window's contents: the step, its question and notes, the next step's title and
 /// the buttons.
-fn contents(ui: &mut Ui, notes: &Notes, hidden: bool) -> Vec<Command> {
+fn contents(ui: &mut Ui, notes: &Notes, hidden: bool) -> Vec<DeckCommand> {
     let number = t!(
         "deck-step-number",
         number = notes.number.to_string(),
@@ -116,7 +116,7 @@ fn contents(ui: &mut Ui, notes: &Notes, hidden: bool) -> Vec<Command> {
 
 /// Shows the notes window for `notes` and reads the deck's keys pressed in it. Returns what
 /// its keys and buttons asked, and whether the window was closed.
-pub(super) fn show(ctx: &Context, notes: &Notes, hidden: bool) -> (Vec<Command>, bool) {
+pub(super) fn show(ctx: &Context, notes: &Notes, hidden: bool) -> (Vec<DeckCommand>, bool) {
     let title = t!("deck-notes-title", title = &notes.deck);
     let builder = ViewportBuilder::default()
         .with_title(title)
@@ -130,8 +130,8 @@ pub(super) fn show(ctx: &Context, notes: &Notes, hidden: bool) -> (Vec<Command>,
             asked.extend(contents(ui, notes, hidden));
         });
         // The notes' own button closes the window as its close box does.
-        let closed = closed || asked.contains(&Command::Notes);
-        asked.retain(|c| *c != Command::Notes);
+        let closed = closed || asked.contains(&DeckCommand::Notes);
+        asked.retain(|c| *c != DeckCommand::Notes);
         (asked, closed)
     })
 }

@@ -10,7 +10,7 @@ use super::error::{LineError, Role};
 use super::fields::{self, Dialect, names};
 use super::record::{Record, Value};
 use crate::diagnosis::Renderer;
-use refraction_tools::solve::Precision;
+use refraction_tools::Precision;
 
 /// What the command line adds to every line.
 #[derive(Clone, Copy, Debug, PartialEq)]

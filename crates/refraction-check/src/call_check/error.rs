@@ -9,7 +9,7 @@ use refraction_kernel::api::Api;
 
 use super::fields::{self, Dialect};
 use super::pattern::{MAX_PATTERN_BYTES, MAX_PATTERN_LINES, MAX_PLACEHOLDERS};
-use refraction_tools::error::{JsonError, RequestError, VectorError};
+use refraction_tools::{JsonError, RequestError, VectorError};
 
 /// Why a `--pattern` cannot be used.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]

@@ -3,7 +3,7 @@
 
 use refraction_kernel::api::Api;
 
-use refraction_tools::solve::Precision;
+use refraction_tools::Precision;
 
 /// Whose fields a line carries: a call of a named API, or any renderer's own refraction,
 /// judged against the physics (`check` without `--api`).

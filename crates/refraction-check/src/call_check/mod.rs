@@ -3,7 +3,7 @@
 //! from JSON, a `--pattern` log or CSV into a [`Record`], judged on its own (a [`Judgement`]:
 //! for an API's call, its [`verdict()`]), and counted toward the diagnosis of the whole log
 //! ([`crate::diagnosis`], which names the one mistake behind all the wrong lines). Which of the
-//! four candidates a T is comes from [`refraction_tools::candidate_check`].
+//! four candidates a T is comes from [`refraction_tools::check_t`].
 //!
 //! In an API's dialect, each line carries the API's own argument names and what came back (see
 //! [`fields`]), with optional truth (`from`, `to`, `travel`, `entering`); the answer says
@@ -49,13 +49,13 @@ pub(crate) use verdict::{CallVerdict, verdict};
 use crate::diagnosis::{Evidence, LogTally, Renderer, Summary};
 use gather::Gather;
 use refraction_kernel::api::Api;
-use refraction_tools::candidate_check::{self, Match};
+use refraction_tools::{CheckAnswer, Match};
 
 /// The JSON answer for one call.
 #[derive(Serialize)]
 struct Answer<'a> {
     #[serde(flatten)]
-    verdict: candidate_check::Answer<'a>,
+    verdict: CheckAnswer<'a>,
     api_result: &'a serde_json::Value,
     mistakes: Vec<&'static str>,
     alternatives: Vec<Vec<&'static str>>,
@@ -69,7 +69,7 @@ struct Answer<'a> {
 pub(crate) fn answer_line(call: &Call, verdict: &CallVerdict) -> String {
     let names = |codes: &[Code]| codes.iter().map(|c| c.name()).collect::<Vec<_>>();
     let answer = Answer {
-        verdict: candidate_check::Answer {
+        verdict: CheckAnswer {
             ok: verdict.ok,
             matches: verdict.matches.map(Match::name),
             explanation: &verdict.explanation,

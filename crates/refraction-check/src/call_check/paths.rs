@@ -14,7 +14,7 @@ use super::call::Call;
 use super::error::LineError;
 use super::verdict::CallVerdict;
 use crate::diagnosis::Code;
-use refraction_tools::candidate_check::MATCH_ANGLE;
+use refraction_tools::MATCH_ANGLE;
 use refraction_tools::vector_text::{angle, short, short_vector, unit};
 
 /// Hits kept per path for the sphere retrace; longer paths are retraced through their surfaces.

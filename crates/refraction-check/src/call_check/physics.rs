@@ -22,9 +22,10 @@ use crate::diagnosis::Code;
 use crate::diagnosis::formula::{self, Outcome, Situation};
 use crate::diagnosis::{self, Codes, Evidence, Missing, Readings, Side, Told};
 use refraction_model::log_map::{self, LinePoint};
-use refraction_tools::candidate_check::{self, MATCH_ANGLE, Match, Verdict};
-use refraction_tools::solve::{Precision, Request};
 use refraction_tools::vector_text::{angle, length, spoken};
+use refraction_tools::{
+    CheckAnswer, LENGTH_TOLERANCE, MATCH_ANGLE, Match, Precision, Request, TVerdict, check_t,
+};
 
 /// One line of any renderer's log, ready to judge.
 #[derive(Clone, Debug, PartialEq)]
@@ -235,7 +236,7 @@ fn refracted_twice(yours: Option<DVec3>, r: &Refraction<f64>) -> bool {
 /// The explanations of a line that is wrong: the mistakes whose refraction reproduces what
 /// came back, the fewest first; a missed or false total internal reflection where nothing
 /// else does; the ratio the code logged, where it is the inverse of the right one.
-fn alternatives(case: &Case, r: &Refraction<f64>, verdict: &Verdict) -> Vec<Vec<Code>> {
+fn alternatives(case: &Case, r: &Refraction<f64>, verdict: &TVerdict) -> Vec<Vec<Code>> {
     let yours = case
         .yours
         .map(DVec3::from_array)
@@ -262,8 +263,7 @@ fn alternatives(case: &Case, r: &Refraction<f64>, verdict: &Verdict) -> Vec<Vec<
     }
     if found.is_empty() && !(twice && yours.is_some()) {
         let unit_length = yours.is_some_and(|y| {
-            (length(y) - 1.0).abs() > candidate_check::LENGTH_TOLERANCE
-                && verdict.matches == Some(Match::Chosen)
+            (length(y) - 1.0).abs() > LENGTH_TOLERANCE && verdict.matches == Some(Match::Chosen)
         });
         found.push(vec![match (r.is_tir(), yours) {
             _ if unit_length => Code::NotTheApiResult,
@@ -282,7 +282,7 @@ fn alternatives(case: &Case, r: &Refraction<f64>, verdict: &Verdict) -> Vec<Vec<
 #[derive(Clone, Debug, PartialEq)]
 pub struct Judged {
     /// `check`'s verdict: the candidate the T is, or why it is none.
-    pub verdict: Verdict,
+    pub verdict: TVerdict,
     /// The mistakes that explain it, each set a reading, the likeliest first (empty when
     /// right).
     pub alternatives: Vec<Vec<Code>>,
@@ -366,7 +366,7 @@ fn logged(case: &Case) -> Outcome {
 /// is right), the mistakes that would give the wrong line (`first`, the likeliest), or the
 /// verdict's own words.
 fn explanation(
-    verdict: &Verdict,
+    verdict: &TVerdict,
     ok: bool,
     first: Option<&Vec<Code>>,
     sampled: Option<f64>,
@@ -389,7 +389,7 @@ fn explanation(
 /// The problem cannot be refracted (a zero vector, an index that is not positive).
 pub(crate) fn judge(case: &Case) -> Result<Judged, LineError> {
     let nothing = [0.0; 3];
-    let verdict = candidate_check::check(&case.request, case.yours.unwrap_or(nothing))?;
+    let verdict = check_t(&case.request, case.yours.unwrap_or(nothing))?;
     let r = refract(&Incidence::<f64> {
         w: DVec3::from_array(case.request.w),
         n: DVec3::from_array(case.request.n),
@@ -448,7 +448,7 @@ pub(crate) fn judge(case: &Case) -> Result<Judged, LineError> {
     let point = map_point(case, &r, &evidence);
     let readings = readings(case, &r, ok && sampled.is_none(), logged);
     Ok(Judged {
-        verdict: Verdict {
+        verdict: TVerdict {
             ok,
             explanation,
             matches: if ok && sampled.is_some() {
@@ -519,7 +519,7 @@ fn digits_allow(case: &Case, logged: Outcome) -> bool {
 #[derive(Serialize)]
 struct Answer<'a> {
     #[serde(flatten)]
-    verdict: candidate_check::Answer<'a>,
+    verdict: CheckAnswer<'a>,
     mistakes: Vec<&'static str>,
     alternatives: Vec<Vec<&'static str>>,
 }
@@ -529,7 +529,7 @@ struct Answer<'a> {
 pub(crate) fn answer_line(judged: &Judged) -> String {
     let v = &judged.verdict;
     let answer = Answer {
-        verdict: candidate_check::Answer {
+        verdict: CheckAnswer {
             ok: v.ok,
             matches: v.matches.map(Match::name),
             explanation: &v.explanation,

@@ -275,7 +275,7 @@ pub(crate) fn readings(call: &Call, tolerance: &Tolerance) -> Vec<Reading> {
 mod tests {
     use super::*;
     use crate::call_check::call::{Got, Truth};
-    use refraction_tools::solve::Precision;
+    use refraction_tools::Precision;
 
     fn glsl(i: DVec3, n: DVec3, eta: f64, truth: Truth) -> Call {
         Call {

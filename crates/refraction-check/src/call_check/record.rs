@@ -312,7 +312,7 @@ impl Record {
     pub fn from_json_line(dialect: impl Into<Dialect>, line: &str) -> Result<Self, LineError> {
         let dialect = dialect.into();
         let object: Object =
-            serde_json::from_str(line).map_err(|e| refraction_tools::error::JsonError::from(&e))?;
+            serde_json::from_str(line).map_err(|e| refraction_tools::JsonError::from(&e))?;
         let object = object.0.ok_or(LineError::NotAnObject { dialect })?;
         Self::from_object(dialect, &object)
     }

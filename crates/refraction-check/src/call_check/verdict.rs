@@ -17,9 +17,8 @@ use crate::diagnosis::Code;
 use crate::diagnosis::formula::{self, Situation};
 use crate::diagnosis::{self, Codes, Evidence, Missing, Readings, Side, Told};
 use refraction_model::log_map::{self, LinePoint};
-use refraction_tools::candidate_check::{self, Match};
-use refraction_tools::solve::{Precision, Request};
 use refraction_tools::vector_text::{angle, length};
+use refraction_tools::{MATCH_ANGLE, Match, Precision, Request, check_t};
 
 /// What a wrong result looks like.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -236,7 +235,7 @@ fn physical(meaning: &Meaning<f64>, got: Got) -> (Option<Match>, Option<[f64; 3]
         Got::Vector(v) => v.to_array(),
         Got::Nothing => [0.0; 3],
     };
-    candidate_check::check(&request, yours).map_or((None, None), |v| (v.matches, v.correct))
+    check_t(&request, yours).map_or((None, None), |v| (v.matches, v.correct))
 }
 
 /// The explanations as sets of codes, and all their codes in order.
@@ -299,8 +298,6 @@ fn formula_readings(readings: &[Reading], seen: Seen, right: bool, tolerance: f6
 
 /// Whether what came back (`seen`) is the call refracted twice at its crossing: the API's
 /// formula with its ratio squared, within `tolerance` radians (at least [`MATCH_ANGLE`]).
-///
-/// [`MATCH_ANGLE`]: candidate_check::MATCH_ANGLE
 fn refracted_twice(call: &Call, seen: Seen, tolerance: f64) -> bool {
     let m = call.api.meaning(call.args);
     let squared = Situation {
@@ -313,7 +310,7 @@ fn refracted_twice(call: &Call, seen: Seen, tolerance: f64) -> bool {
         Seen::Nothing(_) => formula::Outcome::Nothing,
         Seen::NotFinite(_) => return false,
     };
-    let tolerance = tolerance.max(candidate_check::MATCH_ANGLE);
+    let tolerance = tolerance.max(MATCH_ANGLE);
     formula::reproducing(&squared, outcome, tolerance) & formula::Variant::RIGHT.bit() != 0
 }
 
@@ -387,7 +384,7 @@ fn judge_with<S: Real>(call: &Call, tolerance: &Tolerance) -> Result<CallVerdict
         &readings,
         seen,
         ok && sampled.is_none(),
-        candidate_check::MATCH_ANGLE.max(2.0 * returns.distance),
+        MATCH_ANGLE.max(2.0 * returns.distance),
     );
     Ok(CallVerdict {
         ok,

@@ -12,7 +12,7 @@ use serde_json::Value as Json;
 use super::{literal, vector};
 use crate::call_check::fields::names;
 use crate::call_check::{Call, CallVerdict, Code};
-use refraction_tools::solve::Precision;
+use refraction_tools::Precision;
 
 /// The language a test is written in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

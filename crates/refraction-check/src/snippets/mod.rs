@@ -6,9 +6,8 @@ pub(crate) mod api;
 pub mod tests_file;
 
 use refraction_kernel::{Convention, refract};
-use refraction_tools::error::RequestError;
 use refraction_tools::snippets::{literal, vector};
-use refraction_tools::solve::{Precision, Request};
+use refraction_tools::{Precision, Request, RequestError};
 
 /// The language a test of any renderer's own refraction is written in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
