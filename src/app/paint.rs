@@ -178,7 +178,7 @@ pub(super) fn meshed(painter: &Painter, shapes: Vec<Shape>) -> KeptShapes {
 }
 
 /// Adds `shapes` to `kept`, clipped to the rectangle they cover within `painter`'s clip (a
-/// pixel more each way: the renderer rounds the clip rectangle to whole pixels).
+/// point more each way: the renderer rounds the clip rectangle to whole pixels).
 fn keep(painter: &Painter, kept: &mut KeptShapes, shapes: Vec<Shape>) {
     let covered = shapes
         .iter()
