@@ -4,6 +4,14 @@
 //! its shapes into meshes; what is left for a GPU is uploading them. Measured at rest and while
 //! the source is dragged, where every frame also retraces the scene (a draft of one ray in k
 //! for a scene of more than 2,000 segments: see `src/app/scenes.rs`). The target is 4 ms.
+//! At rest the view keeps what the window's own frames at rest keep (nothing changed): the
+//! picture and its rays tessellated into meshes. What every frame does afresh is measured: the
+//! UI pass, and egui's output, allocated anew each frame, into which the kept meshes are
+//! copied. That copy is why this case once disagreed with itself (1.6 ms in one run, 8 to 11 ms
+//! in others): the droplet's mesh grew the panel's output mesh by doubling, into 9 MB that the
+//! system handed over page by page whenever the allocator had given the last frame's back (which
+//! depends on what the process freed before, not on this code); each kept mesh now has a clip
+//! rectangle of its own and is copied once, at its exact size.
 //! And the same for One interface while W's handle is dragged, the figure the web build's is
 //! set beside (docs/web.md), at 1280×720 and at 1920×1080 in presentation; and the label
 //! placer's worst case: the droplet's 1,000 rays, and one label that must be shown with no

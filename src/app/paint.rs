@@ -2,7 +2,9 @@
 
 use egui::emath::RectTransform;
 use egui::epaint::{CircleShape, Mesh, Tessellator};
-use egui::{Align2, Color32, Context, FontId, Id, Painter, Pos2, Response, Shape, Stroke, Ui};
+use egui::{
+    Align2, Color32, Context, FontId, Id, Painter, Pos2, Rect, Response, Shape, Stroke, Ui,
+};
 use glam::Vec2;
 
 use refraction_diagram::{Align, Colour, LABEL_PAD, Label, Primitive, palette::Palette};
@@ -125,30 +127,68 @@ pub(super) fn shapes(
     shapes
 }
 
+/// Shapes kept between frames, each with the clip rectangle it is painted with (see
+/// [`meshed`]).
+pub(super) type KeptShapes = Vec<(Shape, Rect)>;
+
 /// `shapes` with each run of lines and polygons (a scene's thousands of rays) tessellated
-/// once, into one mesh for `ctx`'s pixels per point; discs and text are kept as they are, in
-/// their places. Shapes kept between frames are then painted without tessellating every ray
-/// again: egui only copies a mesh.
-pub(super) fn meshed(ctx: &Context, shapes: Vec<Shape>) -> Vec<Shape> {
+/// once, into one mesh for `painter`'s pixels per point; discs and text are kept as they are,
+/// in their places. Shapes kept between frames are then painted ([`paint_kept`]) without
+/// tessellating every ray again: egui only copies a mesh.
+///
+/// Each mesh, and each run of other shapes between them, is clipped to the rectangle it covers
+/// (within `painter`'s clip): no pixel changes, but a mesh is never followed by a shape of the
+/// same clip rectangle. egui's tessellator appends every shape to the output mesh of the shape
+/// before it when their clip rectangles are equal: the droplet's discs after its mesh of
+/// 160,000 vertices (1,000 rays per colour) grew that mesh by doubling, copying it twice a
+/// frame into 9 MB of memory that the system had to hand over afresh at every frame
+/// (`cargo bench --bench frame`). Now it is copied once, into an output mesh of its exact size.
+pub(super) fn meshed(painter: &Painter, shapes: Vec<Shape>) -> KeptShapes {
+    let ctx = painter.ctx();
     let options = ctx.tessellation_options(|o| *o);
     // No text is tessellated here, so no font texture's size is needed.
     let mut tessellator = Tessellator::new(ctx.pixels_per_point(), options, [1, 1], Vec::new());
-    let mut out = Vec::new();
+    let mut kept = Vec::new();
     let mut run = Mesh::default();
+    let mut others = Vec::new();
     for shape in shapes {
         if matches!(shape, Shape::LineSegment { .. } | Shape::Path(_)) {
+            keep(painter, &mut kept, core::mem::take(&mut others));
             tessellator.tessellate_shape(shape, &mut run);
-            continue;
+        } else {
+            if !run.is_empty() {
+                keep(
+                    painter,
+                    &mut kept,
+                    vec![Shape::mesh(core::mem::take(&mut run))],
+                );
+            }
+            others.push(shape);
         }
-        if !run.is_empty() {
-            out.push(Shape::mesh(core::mem::take(&mut run)));
-        }
-        out.push(shape);
     }
     if !run.is_empty() {
-        out.push(Shape::mesh(run));
+        others.push(Shape::mesh(run));
     }
-    out
+    keep(painter, &mut kept, others);
+    kept
+}
+
+/// Adds `shapes` to `kept`, clipped to the rectangle they cover within `painter`'s clip (a
+/// point more each way: the renderer rounds the clip rectangle to whole pixels).
+fn keep(painter: &Painter, kept: &mut KeptShapes, shapes: Vec<Shape>) {
+    let covered = shapes
+        .iter()
+        .fold(Rect::NOTHING, |r, s| r.union(s.visual_bounding_rect()));
+    let clip = covered.expand(1.0).intersect(painter.clip_rect());
+    kept.extend(shapes.into_iter().map(|shape| (shape, clip)));
+}
+
+/// Paints shapes kept by [`meshed`] with `painter`, each run of them with its clip rectangle.
+pub(super) fn paint_kept(painter: &Painter, kept: &KeptShapes) {
+    for run in kept.chunk_by(|a, b| a.1 == b.1) {
+        let shapes = run.iter().map(|(shape, _)| shape.clone());
+        painter.with_clip_rect(run[0].1).extend(shapes);
+    }
 }
 
 /// Room for a figure of the diagram crate's across `size` points of `ui`, named `about` for

@@ -12,7 +12,7 @@ use refraction_i18n::t;
 
 use glam::{DVec2, Vec2};
 
-use super::paint::{color, hover_left_out, meshed, paint};
+use super::paint::{KeptShapes, color, hover_left_out, meshed, paint, paint_kept};
 use super::retrace::{Retracer, empty};
 use super::scene_files::SceneFiles;
 use super::typed::error_label;
@@ -87,7 +87,7 @@ struct Kept {
     /// Its egui shapes, its rays tessellated into one mesh, with where on the screen they were
     /// laid out and at how many pixels per point (none while a handle is dragged: the picture
     /// changes every frame then).
-    shapes: Option<(Rect, f32, Vec<egui::Shape>)>,
+    shapes: Option<(Rect, f32, KeptShapes)>,
 }
 
 impl Kept {
@@ -107,10 +107,10 @@ impl Kept {
             .is_none_or(|(r, p, _)| (*r, *p) != (rect, ppp))
         {
             let shapes = super::paint::shapes(painter, to_screen, &self.picture.primitives);
-            self.shapes = Some((rect, ppp, meshed(painter.ctx(), shapes)));
+            self.shapes = Some((rect, ppp, meshed(painter, shapes)));
         }
         if let Some((.., shapes)) = &self.shapes {
-            painter.extend(shapes.iter().cloned());
+            paint_kept(painter, shapes);
         }
     }
 }

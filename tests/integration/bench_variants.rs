@@ -1,8 +1,8 @@
 //! The variants agree where they should, the batch kernel equals the scalar one bit for bit, and
 //! `bench --json --quick` reports every row. No test here asserts a time.
 
-use refraction_bench::accuracy::{Prepared, errors, prepare};
 use refraction_bench::sets;
+use refraction_bench::{Prepared, errors, prepare};
 use refraction_kernel::batch::{Transmissions, transmit_batch};
 use refraction_kernel::{Real, Variant, transmit};
 

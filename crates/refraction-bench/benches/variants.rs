@@ -5,8 +5,8 @@
 
 use core::hint::black_box;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use refraction_bench::accuracy::prepare;
-use refraction_bench::peer::Packed;
+use refraction_bench::Packed;
+use refraction_bench::prepare;
 use refraction_bench::sets;
 use refraction_kernel::batch::{Build, RayBatch, Transmissions, transmit_batch_with};
 use refraction_kernel::{Real, Variant};

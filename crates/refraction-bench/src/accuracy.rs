@@ -91,7 +91,7 @@ pub fn errors<S: Real>(variant: Variant, prepared: &Prepared<S>) -> Errors {
 /// # Panics
 /// If `out` has fewer answers than `prepared` has rays.
 #[must_use]
-pub fn errors_of<S: Real>(out: &Transmissions<S>, prepared: &Prepared<S>) -> Errors {
+pub(crate) fn errors_of<S: Real>(out: &Transmissions<S>, prepared: &Prepared<S>) -> Errors {
     let eps = S::EPSILON.to_f64();
     let mut angles = Vec::with_capacity(out.len());
     let mut max_eps_kappa = 0.0_f64;

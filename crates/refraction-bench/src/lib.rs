@@ -2,20 +2,25 @@
 //! and measured against the double-double oracle. Run by the `bench` command and by the
 //! explorer's "Accuracy vs time" panel.
 
-pub mod accuracy;
+mod accuracy;
 pub mod oracle;
 #[cfg(not(target_arch = "wasm32"))]
-pub mod peer;
+mod peer;
 pub mod sets;
-pub mod timing;
+mod timing;
 
-use accuracy::{Prepared, errors_of, prepare};
+pub use accuracy::{Errors, Prepared, errors, prepare};
+#[cfg(not(target_arch = "wasm32"))]
+pub use peer::Packed;
+pub use timing::Pass;
+
+use accuracy::errors_of;
 #[cfg(target_arch = "x86_64")]
 use refraction_kernel::batch::Build;
 use refraction_kernel::batch::{RayBatch, Transmissions};
 use refraction_kernel::{Real, Variant};
 use refraction_model::report::{Report, Row};
-use timing::{Pass, medians_ns_per_ray, streaming, variant_pass};
+use timing::{medians_ns_per_ray, streaming, variant_pass};
 
 /// What a row of the report measures: a kernel [`Variant`], or a peer library
 /// (`peer::Ultraviolet`, on a desktop) run on the same rays.

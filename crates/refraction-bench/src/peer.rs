@@ -19,7 +19,7 @@ use crate::timing::Pass;
 
 /// ultraviolet's `Vec3x8::refracted` as a row of the report (f32 only: `Vec3x8` is f32).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Ultraviolet;
+pub(crate) struct Ultraviolet;
 
 impl Subject<f32> for Ultraviolet {
     fn name(&self) -> &'static str {

@@ -30,7 +30,7 @@ fn repeats(pass: &mut Pass<'_>) -> u32 {
 /// in turn (A, B, C, A, B, C, ...), so that a change in the machine's speed during the run
 /// (other work starting or stopping) touches every pass alike and their ratios stay meaningful.
 #[must_use]
-pub fn medians_ns_per_ray(len: usize, samples: usize, passes: &mut [Pass<'_>]) -> Vec<f64> {
+pub(crate) fn medians_ns_per_ray(len: usize, samples: usize, passes: &mut [Pass<'_>]) -> Vec<f64> {
     let repeats: Vec<u32> = passes.iter_mut().map(repeats).collect();
     let mut per_ray = vec![Vec::with_capacity(samples.max(1)); passes.len()];
     for _ in 0..samples.max(1) {
@@ -54,7 +54,7 @@ pub fn medians_ns_per_ray(len: usize, samples: usize, passes: &mut [Pass<'_>]) -
 
 /// A timed pass of `variant` over `rays` into an output of its own.
 #[must_use]
-pub fn variant_pass<S: Real>(variant: Variant, rays: &RayBatch<S>) -> Pass<'_> {
+pub(crate) fn variant_pass<S: Real>(variant: Variant, rays: &RayBatch<S>) -> Pass<'_> {
     let mut out = Transmissions::for_batch(rays);
     Box::new(move || {
         variant.transmit_all(black_box(rays), &mut out);
@@ -79,7 +79,7 @@ fn move_bytes(rays: &RayBatch<f32>, out: &mut Transmissions<f32>) {
 
 /// Times the f32 batch kernel and the memory limit on `rays`, `samples` times each, in turn.
 #[must_use]
-pub fn streaming(rays: &RayBatch<f32>, samples: usize) -> Streaming {
+pub(crate) fn streaming(rays: &RayBatch<f32>, samples: usize) -> Streaming {
     let mut out = Transmissions::for_batch(rays);
     let memory_limit: Pass<'_> = Box::new(move || {
         move_bytes(black_box(rays), &mut out);
