@@ -195,24 +195,6 @@ fn circles(files: &[(String, String)]) -> Vec<String> {
     knots.into_iter().map(|knot| knot.join(" ↔ ")).collect()
 }
 
-/// Circles known and left for now, each with why: (the crate's folder, the circle as
-/// [`circles`] words it, why it stays). An entry no longer found fails the test, so the list
-/// only shrinks.
-const KNOWN_CIRCLES: &[(&str, &str, &str)] = &[
-    (
-        "crates/refraction-check/src",
-        "call_check::error ↔ call_check::pattern ↔ call_check::record",
-        "call_check is being reworked by another engineer (issue 43); moving its modules \
-         apart here would collide with that work",
-    ),
-    (
-        "crates/refraction-check/src",
-        "call_check::explain ↔ call_check::verdict",
-        "call_check is being reworked by another engineer (issue 43); moving its modules \
-         apart here would collide with that work",
-    ),
-];
-
 #[test]
 fn no_crate_has_a_module_circle() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -221,28 +203,19 @@ fn no_crate_has_a_module_circle() {
         crates.push(entry.unwrap().path().join("src"));
     }
     assert!(crates.len() > 8, "read {crates:?}");
-    let mut found = BTreeSet::new();
+    let mut found = Vec::new();
     for src in &crates {
         let mut files = Vec::new();
         sources(src, src, &mut files);
         let folder = src.strip_prefix(root).unwrap();
         let folder = folder.to_string_lossy().replace('\\', "/");
-        found.extend(circles(&files).into_iter().map(|c| (folder.clone(), c)));
+        found.extend(
+            circles(&files)
+                .into_iter()
+                .map(|c| format!("{folder}: {c}")),
+        );
     }
-    let known: BTreeSet<(String, String)> = KNOWN_CIRCLES
-        .iter()
-        .map(|(folder, circle, _)| (folder.to_string(), circle.to_string()))
-        .collect();
-    let new: Vec<String> = found
-        .difference(&known)
-        .map(|(folder, circle)| format!("{folder}: {circle}"))
-        .collect();
-    assert!(new.is_empty(), "module circles:\n{}", new.join("\n"));
-    let gone: Vec<&(String, String)> = known.difference(&found).collect();
-    assert!(
-        gone.is_empty(),
-        "circles listed as known but no longer found (drop them): {gone:?}"
-    );
+    assert!(found.is_empty(), "module circles:\n{}", found.join("\n"));
 }
 
 #[test]

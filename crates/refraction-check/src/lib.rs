@@ -20,7 +20,8 @@ mod records;
 mod snippets;
 
 pub use call_check::call::Got;
-pub use call_check::pattern::{MAX_PATTERN_BYTES, MAX_PATTERN_LINES, MAX_PLACEHOLDERS, Pattern};
+pub use call_check::limits::{MAX_PATTERN_BYTES, MAX_PATTERN_LINES, MAX_PLACEHOLDERS};
+pub use call_check::pattern::Pattern;
 pub use call_check::physics::Case;
 pub use call_check::record::Value;
 pub use call_check::verdict::CallVerdict;

@@ -8,7 +8,7 @@ use refraction_i18n::{decimal, t};
 use refraction_kernel::api::Api;
 
 use super::fields::{self, Dialect};
-use super::pattern::{MAX_PATTERN_BYTES, MAX_PATTERN_LINES, MAX_PLACEHOLDERS};
+use super::limits::{MAX_PATTERN_BYTES, MAX_PATTERN_LINES, MAX_PLACEHOLDERS};
 use refraction_tools::{JsonError, RequestError, VectorError};
 
 /// Why a `--pattern` cannot be used.

@@ -8,7 +8,7 @@
 //! a pattern with line breaks (`wi: {w}\nN: {n}\nwo: {t_yours}`) is matched against that many
 //! consecutive (joined) lines, joined with line breaks; when they do not match, the first of
 //! them is skipped and the window moves on by one line. Each line is in at most
-//! [`super::MAX_PATTERN_LINES`] windows, so the work stays linear in the log's length.
+//! [`super::limits::MAX_PATTERN_LINES`] windows, so the work stays linear in the log's length.
 
 use std::collections::VecDeque;
 
@@ -39,7 +39,7 @@ fn depth(text: &str) -> i64 {
 
 /// Whether `line` starts a value printed over several lines.
 fn opens(line: &str) -> bool {
-    depth(line) > 0 && line.trim_end().ends_with(['[', '(', '{', ','])
+    depth(line) > 0 && line.trim_end().ends_with(|c| "[({,".contains(c))
 }
 
 /// `lines` with each value printed over several lines joined into one line (the first step

@@ -25,6 +25,7 @@ pub(crate) mod error;
 mod explain;
 pub mod fields;
 pub(crate) mod gather;
+pub(crate) mod limits;
 pub(crate) mod paths;
 pub(crate) mod pattern;
 pub(crate) mod physics;

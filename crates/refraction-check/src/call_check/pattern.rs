@@ -13,19 +13,9 @@
 //! piece at the same place twice: its time and memory grow linearly with the line's length.
 
 use super::error::PatternError;
-
 use super::fields::{self, Dialect, Kind};
+use super::limits::{MAX_PATTERN_BYTES, MAX_PATTERN_LINES, MAX_PLACEHOLDERS};
 use super::record::accepts;
-
-/// The most placeholders (`{field}` and `{_}`) a pattern may hold: each of a dialect's fields
-/// once, and a few `{_}` for what the renderer prints between them.
-pub const MAX_PLACEHOLDERS: usize = 32;
-
-/// The longest pattern, in bytes: a printf line is a few hundred.
-pub const MAX_PATTERN_BYTES: usize = 4096;
-
-/// The most lines a record may be printed over: one vector a line, and a few lines between.
-pub const MAX_PATTERN_LINES: usize = 16;
 
 /// The longest text a field can take: a vector in its longest printed form fits easily.
 const MAX_FIELD: usize = 512;

@@ -9,7 +9,8 @@ use refraction_i18n::t;
 
 use super::fields::{self, Dialect, Kind};
 use super::gather;
-use super::pattern::{MAX_PATTERN_LINES, Pattern};
+use super::limits::MAX_PATTERN_LINES;
+use super::pattern::Pattern;
 use refraction_tools::vector_text::{parse_number, parse_vector};
 
 /// The most lines of a log read for a suggestion.
@@ -194,7 +195,7 @@ fn group_end(line: &str, open: usize) -> Option<usize> {
 /// The end of the word (a number's text) starting at `at`.
 fn word_end(line: &str, at: usize) -> usize {
     line[at..]
-        .find(|c: char| c.is_whitespace() || matches!(c, ',' | ';' | ')' | ']' | '}' | '|'))
+        .find(|c: char| c.is_whitespace() || ",;)]}|".contains(c))
         .map_or(line.len(), |i| at + i)
 }
 
@@ -214,7 +215,7 @@ fn bracketed(line: &str, at: usize) -> Option<usize> {
             open = line.len() - after.len();
         }
     }
-    if !line[open..].starts_with(['(', '[', '{']) {
+    if !line[open..].starts_with(|c| "([{".contains(c)) {
         return None;
     }
     let end = group_end(line, open)?;
@@ -496,6 +497,9 @@ pub enum Index {
     Several,
 }
 
+/// How a JSON line starts: such a line is read as it is, with no pattern.
+const JSON_OBJECT: char = '{';
+
 /// The pattern for the first record found in `lines` (a log's first lines): a record on one
 /// line, else over up to [`MAX_PATTERN_LINES`] consecutive lines (values printed over several
 /// lines, as Node prints a typed array, are joined first).
@@ -508,7 +512,7 @@ pub fn suggest(dialect: Dialect, lines: &[&str]) -> Option<Suggestion> {
         .filter(|l| !l.trim().is_empty())
         .collect();
     for first in 0..logical.len() {
-        if logical[first].trim_start().starts_with('{') {
+        if logical[first].trim_start().starts_with(JSON_OBJECT) {
             continue; // a JSON line needs no pattern
         }
         for count in 1..=MAX_PATTERN_LINES.min(logical.len() - first) {

@@ -12,51 +12,13 @@ use super::call::{Call, Got};
 use super::error::LineError;
 use super::explain;
 use super::readings::{Reading, Tolerance, readings, undo};
-use super::result::{Returns, Seen, returns, transmitted_by};
+use super::result::{Resemblance, Returns, Seen, returns, transmitted_by};
 use crate::diagnosis::Code;
 use crate::diagnosis::formula::{self, Situation};
 use crate::diagnosis::{self, Codes, Evidence, Missing, Readings, Side, Told};
 use refraction_model::log_map::{self, LinePoint};
 use refraction_tools::vector_text::{angle, length};
 use refraction_tools::{MATCH_ANGLE, Match, Precision, Request, check_t};
-
-/// What a wrong result looks like.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum Resemblance {
-    /// The other root: the API's answer mirrored across the surface.
-    OtherRoot,
-    /// The API's answer mirrored across the normal.
-    WrongBend,
-    /// Minus the API's answer.
-    Reversed,
-    /// The API's direction with this length ratio.
-    Length(f64),
-    /// The mirror reflection, although the ray refracts.
-    Reflection,
-    /// What the API returns with this argument mistake.
-    Variant(Code),
-    /// An answer that nothing is transmitted, although the API refracts.
-    Nothing(&'static str),
-    /// NaN or infinite components.
-    NotFinite,
-    /// None of these: this many degrees from the API's answer.
-    Off(f64),
-    /// Past the critical angle: the API formula's own vector (the book's and Mitsuba's refract).
-    Formula,
-    /// Past the critical angle: some other direction.
-    Direction,
-    /// The API's answer with the part along the normal negated: μ·d − b·n for μ·d + b·n.
-    NormalTerm,
-    /// What the API's formula gives without its flip for a ray from the normal's far side.
-    NoFlip,
-    /// The right direction, but a relative index other than the one the API used.
-    Etap {
-        /// The index logged.
-        logged: f64,
-        /// The index the API used.
-        used: f64,
-    },
-}
 
 /// The verdict on one API call, as [`check_record`](crate::check_record) gives it (the whole
 /// log's mistake is the diagnosis's to name).
