@@ -8,7 +8,7 @@
 
 use core::ops::RangeInclusive;
 
-use egui::{Button, Role, Slider, Ui, Vec2, WidgetInfo};
+use egui::{Button, Role, Slider, SliderClamping, Ui, Vec2, WidgetInfo};
 use refraction_i18n::t;
 use refraction_model::describe;
 use refraction_model::{ExplorerState, HandleId, INDEX_RANGE};
@@ -225,7 +225,10 @@ fn slider(ui: &mut Ui, state: &mut ExplorerState, handle: HandleId) -> bool {
     let moved = ui.add(
         Slider::new(&mut target, bounds(state, handle))
             .show_value(false)
-            .step_by(step(handle)),
+            .step_by(step(handle))
+            // Only what the finger sets is stepped: egui's default would round a shown index
+            // to the step (air's 1.000293 to 1) and write it back, unasked.
+            .clamping(SliderClamping::Edits),
     );
     let name = t!("student-index", symbol = symbol(handle));
     moved.widget_info(|| WidgetInfo::slider(true, target, &name));

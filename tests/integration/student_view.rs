@@ -164,6 +164,17 @@ fn the_step_buttons_turn_w_and_n_and_change_the_indices() {
 }
 
 #[test]
+fn opening_a_step_on_a_phone_keeps_its_indices_as_the_deck_gives_them() {
+    // Air's 1.000293 is no multiple of the sliders' 0.01: showing them must not round it.
+    let h = opened("#lesson=snell&step=2", PHONE);
+    let deck = h.state().lesson().deck.clone().unwrap();
+    let given = &deck.steps[1].state;
+    let shown = h.state().state();
+    assert_eq!((shown.mu_i(), shown.mu_t()), (given.mu_i(), given.mu_t()));
+    assert!((shown.mu_i() - 1.000_293).abs() < 1e-9, "{}", shown.mu_i());
+}
+
+#[test]
 fn a_finger_on_w_s_handle_turns_w() {
     let mut h = opened("#lesson=snell&step=1", PHONE);
     let before = h.state().state().w();
