@@ -137,14 +137,13 @@ pub(super) type KeptShapes = Vec<(Shape, Rect)>;
 /// tessellating every ray again: egui only copies a mesh.
 ///
 /// Each mesh, and each run of other shapes between them, is clipped to the rectangle it covers
-/// (within `painter`'s clip): no pixel changes, but a mesh is never followed by a shape of the
+/// (and, when painted, to the painter's clip): no pixel changes, but a mesh is never followed by a shape of the
 /// same clip rectangle. egui's tessellator appends every shape to the output mesh of the shape
 /// before it when their clip rectangles are equal: the droplet's discs after its mesh of
 /// 160,000 vertices (1,000 rays per colour) grew that mesh by doubling, copying it twice a
 /// frame into 9 MB of memory that the system had to hand over afresh at every frame
 /// (`cargo bench --bench frame`). Now it is copied once, into an output mesh of its exact size.
-pub(super) fn meshed(painter: &Painter, shapes: Vec<Shape>) -> KeptShapes {
-    let ctx = painter.ctx();
+pub(super) fn meshed(ctx: &Context, shapes: Vec<Shape>) -> KeptShapes {
     let options = ctx.tessellation_options(|o| *o);
     // No text is tessellated here, so no font texture's size is needed.
     let mut tessellator = Tessellator::new(ctx.pixels_per_point(), options, [1, 1], Vec::new());
@@ -153,15 +152,11 @@ pub(super) fn meshed(painter: &Painter, shapes: Vec<Shape>) -> KeptShapes {
     let mut others = Vec::new();
     for shape in shapes {
         if matches!(shape, Shape::LineSegment { .. } | Shape::Path(_)) {
-            keep(painter, &mut kept, core::mem::take(&mut others));
+            keep(&mut kept, core::mem::take(&mut others));
             tessellator.tessellate_shape(shape, &mut run);
         } else {
             if !run.is_empty() {
-                keep(
-                    painter,
-                    &mut kept,
-                    vec![Shape::mesh(core::mem::take(&mut run))],
-                );
+                keep(&mut kept, vec![Shape::mesh(core::mem::take(&mut run))]);
             }
             others.push(shape);
         }
@@ -169,21 +164,22 @@ pub(super) fn meshed(painter: &Painter, shapes: Vec<Shape>) -> KeptShapes {
     if !run.is_empty() {
         others.push(Shape::mesh(run));
     }
-    keep(painter, &mut kept, others);
+    keep(&mut kept, others);
     kept
 }
 
-/// Adds `shapes` to `kept`, clipped to the rectangle they cover within `painter`'s clip (a
-/// point more each way: the renderer rounds the clip rectangle to whole pixels).
-fn keep(painter: &Painter, kept: &mut KeptShapes, shapes: Vec<Shape>) {
+/// Adds `shapes` to `kept`, clipped to the rectangle they cover (a point more each way: the
+/// renderer rounds the clip rectangle to whole pixels).
+fn keep(kept: &mut KeptShapes, shapes: Vec<Shape>) {
     let covered = shapes
         .iter()
         .fold(Rect::NOTHING, |r, s| r.union(s.visual_bounding_rect()));
-    let clip = covered.expand(1.0).intersect(painter.clip_rect());
+    let clip = covered.expand(1.0);
     kept.extend(shapes.into_iter().map(|shape| (shape, clip)));
 }
 
-/// Paints shapes kept by [`meshed`] with `painter`, each run of them with its clip rectangle.
+/// Paints shapes kept by [`meshed`] with `painter`, each run of them with its clip rectangle
+/// within the painter's.
 pub(super) fn paint_kept(painter: &Painter, kept: &KeptShapes) {
     for run in kept.chunk_by(|a, b| a.1 == b.1) {
         let shapes = run.iter().map(|(shape, _)| shape.clone());

@@ -107,7 +107,7 @@ impl Kept {
             .is_none_or(|(r, p, _)| (*r, *p) != (rect, ppp))
         {
             let shapes = super::paint::shapes(painter, to_screen, &self.picture.primitives);
-            self.shapes = Some((rect, ppp, meshed(painter, shapes)));
+            self.shapes = Some((rect, ppp, meshed(painter.ctx(), shapes)));
         }
         if let Some((.., shapes)) = &self.shapes {
             paint_kept(painter, shapes);
